@@ -1,0 +1,32 @@
+// An exact validator for Delaunay triangulations, independent of the triangulator's code
+// (it shares only the exact predicates).
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "ridt/ridt.hpp"
+
+namespace ridt {
+
+/// The verdict of check().
+struct CheckResult {
+  bool valid = false;
+  std::string message;       ///< one line: what was checked, or the first problem found
+  std::size_t problems = 0;  ///< number of problems found
+};
+
+/// Checks with exact arithmetic that `triangles` (#T by 3, 0-based indices into `points`) is a
+/// Delaunay triangulation of the distinct points:
+///  - every index is in range; every triangle is counter-clockwise and not degenerate;
+///  - each directed edge is used at most once;
+///  - each interior edge is locally Delaunay (the opposite vertex is not strictly inside);
+///  - the boundary edges are exactly the convex hull of the distinct points (collinear hull
+///    points included as vertices);
+///  - every distinct point is a vertex, exactly once (no two vertices coincide);
+///  - Euler: #T = 2V - 2 - H for V vertices and H of them on the hull.
+/// An empty triangle list is valid only when there are fewer than three distinct points or
+/// all of them are collinear. Points must be finite.
+CheckResult check(std::span<const Point> points, std::span<const VertexId> triangles);
+
+}  // namespace ridt

@@ -1,0 +1,108 @@
+// ridt: exact 2D Delaunay triangulation by randomized incremental insertion.
+//
+// One call, plain data out:
+//
+//   std::vector<ridt::Point> pts = ...;
+//   ridt::Triangulation t = ridt::triangulate(pts);
+//   // t.triangles: #T by 3 vertex indices into pts, counter-clockwise
+//   // t.neighbors: #T by 3 triangle indices, neighbours[3*k+i] across from vertex i, -1 on the hull
+//
+// Preconditions: every coordinate is finite (NaN or infinity throws ridt::InputError).
+// Postconditions: the triangles are exactly the Delaunay triangulation of the distinct input
+// points (cocircular ties broken by a fixed symbolic perturbation, so the result is unique and
+// does not depend on the seed, the method or the input order); the boundary is the convex hull;
+// every distinct point is a vertex; duplicates are reported and left out.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ridt {
+
+/// A point in the plane.
+struct Point {
+  double x = 0;
+  double y = 0;
+  friend bool operator==(const Point&, const Point&) = default;
+};
+
+using VertexId = std::uint32_t;
+using TriangleId = std::uint32_t;
+/// Marks "no triangle" in neighbour lists of the result (a hull edge).
+inline constexpr std::int32_t kNoNeighbor = -1;
+
+/// Who drives the insertion kernel.
+enum class Method {
+  Serial,  ///< one thread, the paper's Fig. 4
+};
+
+/// The starting triangle that encloses every point.
+enum class Bounding {
+  Symbolic,  ///< vertices at infinity, decided combinatorially: the hull is always complete
+  Finite,    ///< the paper's (K,0), (0,K), (-K,-K) around the box centre, K = k * box size
+};
+
+/// Options of a triangulation.
+struct Options {
+  Method method = Method::Serial;
+  std::uint64_t seed = 1;  ///< seed of the random insertion order
+  Bounding bounding = Bounding::Symbolic;
+  double k = 10.0;  ///< K = k * M for Bounding::Finite; k >= 2 keeps every point strictly inside
+  /// Rotate each triangle so its smallest vertex index comes first and sort the triangles:
+  /// the output is then byte-identical for every seed and method. Costs a sort.
+  bool canonical_order = false;
+  /// Time the phases of insertion (locate, split, legalize): the paper's Fig. 8.
+  bool profile = false;
+};
+
+/// Counters and timings of one run.
+struct Stats {
+  std::uint64_t points = 0;      ///< input points
+  std::uint64_t distinct = 0;    ///< distinct points
+  std::uint64_t duplicates = 0;  ///< input points dropped as duplicates
+  std::uint64_t dag_nodes = 0;   ///< triangle records made (each one a node of the history DAG)
+  std::uint64_t flips = 0;       ///< edge flips during legalization
+  std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits)
+  double time_triangulate_s = 0;
+  double time_locate_s = 0;      ///< only with Options::profile
+  double time_split_s = 0;       ///< only with Options::profile
+  double time_legalize_s = 0;    ///< only with Options::profile
+};
+
+/// A dropped duplicate input point and the input index that stands for it (the smallest
+/// index among the equal points).
+struct Duplicate {
+  VertexId dropped;
+  VertexId kept;
+};
+
+/// The result: flat arrays, as plain data.
+struct Triangulation {
+  std::vector<VertexId> triangles;     ///< #T by 3, counter-clockwise
+  std::vector<std::int32_t> neighbors; ///< #T by 3, neighbour i across from vertex i, -1 on the hull
+  std::vector<VertexId> hull;          ///< convex hull, counter-clockwise, collinear hull points included
+  std::vector<Duplicate> duplicates;   ///< sorted by `dropped`
+  /// Why the triangulation is empty ("fewer than three distinct points", "all points are
+  /// collinear"), or a problem of Bounding::Finite ("hull edge lost"); empty when all is well.
+  std::string warning;
+  Stats stats;
+
+  std::size_t size() const { return triangles.size() / 3; }
+};
+
+/// Thrown for input that cannot be triangulated (a NaN or infinite coordinate, a bad option).
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Triangulates `points`; the library copies what it keeps.
+Triangulation triangulate(std::span<const Point> points, const Options& options = {});
+
+/// The same for a flat array x0, y0, x1, y1, ... (its size must be even).
+Triangulation triangulate(std::span<const double> xy, const Options& options = {});
+
+}  // namespace ridt

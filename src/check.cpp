@@ -1,0 +1,188 @@
+// The validator: independent of the triangulator beyond the predicates. It builds its own
+// edge table and its own convex hull (Andrew's monotone chain with exact orientation).
+#include "ridt/check.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+#include <vector>
+
+#include "predicates.hpp"
+
+namespace ridt {
+namespace {
+
+using detail::incircle;
+using detail::orient2d;
+
+std::uint64_t edge_key(VertexId a, VertexId b) { return (std::uint64_t{a} << 32) | b; }
+
+class Report {
+ public:
+  template <typename... Args>
+  void problem(const Args&... args) {
+    if (problems_++ == 0) {
+      std::ostringstream s;
+      (s << ... << args);
+      first_ = s.str();
+    }
+  }
+  std::size_t problems() const { return problems_; }
+  const std::string& first() const { return first_; }
+
+ private:
+  std::size_t problems_ = 0;
+  std::string first_;
+};
+
+// The convex hull, counter-clockwise, with points on its edges kept, over distinct points
+// given as indices sorted lexicographically. Requires at least three non-collinear points.
+std::vector<VertexId> hull_with_collinear(std::span<const Point> pts,
+                                          const std::vector<VertexId>& sorted) {
+  std::vector<VertexId> h;
+  auto chain = [&](auto begin, auto end) {
+    const std::size_t base = h.size();
+    for (auto it = begin; it != end; ++it) {
+      while (h.size() >= base + 2 && orient2d(pts[h[h.size() - 2]], pts[h.back()], pts[*it]) < 0)
+        h.pop_back();
+      h.push_back(*it);
+    }
+    h.pop_back();  // the last point starts the other chain
+  };
+  chain(sorted.begin(), sorted.end());
+  chain(sorted.rbegin(), sorted.rend());
+  return h;
+}
+
+}  // namespace
+
+CheckResult check(std::span<const Point> pts, std::span<const VertexId> tris) {
+  Report report;
+  const std::size_t n = pts.size();
+  const std::size_t count = tris.size() / 3;
+  if (tris.size() % 3 != 0) report.problem("the triangle list is not a multiple of 3 long");
+
+  // Distinct points: sort, then group equal coordinates.
+  std::vector<VertexId> sorted(n);
+  std::iota(sorted.begin(), sorted.end(), VertexId{0});
+  std::sort(sorted.begin(), sorted.end(), [&](VertexId a, VertexId b) {
+    return detail::lex_less(pts[a], pts[b]) || (pts[a] == pts[b] && a < b);
+  });
+  std::vector<VertexId> distinct;  // first index of each group, in lexicographic order
+  for (std::size_t i = 0; i < n; ++i)
+    if (i == 0 || !(pts[sorted[i]] == pts[sorted[i - 1]])) distinct.push_back(sorted[i]);
+
+  bool collinear = true;
+  for (std::size_t i = 2; collinear && i < distinct.size(); ++i)
+    collinear = orient2d(pts[distinct[0]], pts[distinct[1]], pts[distinct[i]]) == 0;
+  const bool degenerate = distinct.size() < 3 || collinear;
+
+  // Triangles: indices, orientation, directed edges.
+  std::unordered_map<std::uint64_t, std::uint32_t> edges;  // directed edge -> triangle
+  edges.reserve(3 * count);
+  std::vector<std::uint8_t> used(n, 0);
+  for (std::size_t t = 0; t < count; ++t) {
+    const VertexId* v = &tris[3 * t];
+    if (v[0] >= n || v[1] >= n || v[2] >= n) {
+      report.problem("triangle ", t, " has a vertex index out of range");
+      continue;
+    }
+    if (orient2d(pts[v[0]], pts[v[1]], pts[v[2]]) <= 0)
+      report.problem("triangle ", t, " (", v[0], " ", v[1], " ", v[2],
+                     ") is not counter-clockwise or is degenerate");
+    for (int i = 0; i < 3; ++i) {
+      used[v[i]] = 1;
+      const VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
+      if (!edges.emplace(edge_key(a, b), static_cast<std::uint32_t>(t)).second)
+        report.problem("edge ", a, "->", b, " is used by two triangles");
+    }
+  }
+  if (report.problems() > 0) {
+    std::ostringstream s;
+    s << "invalid: " << report.first() << " (" << report.problems() << " problems)";
+    return {false, s.str(), report.problems()};
+  }
+
+  // Local Delaunay on interior edges; boundary edges collected.
+  std::vector<std::pair<VertexId, VertexId>> boundary;
+  for (const auto& [key, t] : edges) {
+    const auto a = static_cast<VertexId>(key >> 32), b = static_cast<VertexId>(key);
+    const auto twin = edges.find(edge_key(b, a));
+    if (twin == edges.end()) {
+      boundary.emplace_back(a, b);
+      continue;
+    }
+    if (a > b) continue;  // test each interior edge once
+    const VertexId* v = &tris[3 * t];
+    const VertexId* w = &tris[3 * twin->second];
+    const VertexId opposite = w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
+    if (incircle(pts[v[0]], pts[v[1]], pts[v[2]], pts[opposite]) > 0)
+      report.problem("edge ", a, "-", b, " is not locally Delaunay (vertex ", opposite,
+                     " lies inside the circle of triangle ", t, ")");
+  }
+
+  // Vertices: every distinct point exactly once.
+  std::size_t vertices = 0;
+  for (std::size_t i = 0, g = 0; i < n; i = g) {
+    std::size_t in_use = 0;
+    for (g = i; g < n && pts[sorted[g]] == pts[sorted[i]]; ++g) in_use += used[sorted[g]];
+    vertices += in_use > 0;
+    if (count > 0 && in_use == 0)
+      report.problem("point ", sorted[i], " is not a vertex of any triangle");
+    if (in_use > 1) report.problem("point ", sorted[i], " appears as ", in_use, " vertices");
+  }
+
+  if (degenerate) {
+    if (count > 0)
+      report.problem("the points are ", distinct.size() < 3 ? "fewer than three" : "collinear",
+                     " but there are triangles");
+  } else if (count == 0) {
+    report.problem("no triangles for ", distinct.size(), " non-collinear points");
+  } else {
+    // Boundary = convex hull.
+    const std::vector<VertexId> hull = hull_with_collinear(pts, distinct);
+    std::vector<std::pair<VertexId, VertexId>> expected;
+    for (std::size_t i = 0; i < hull.size(); ++i)
+      expected.emplace_back(hull[i], hull[(i + 1) % hull.size()]);
+    // The triangulation may name another index of a duplicate group: compare by coordinates.
+    auto canonical = [&](VertexId v) {
+      return *std::lower_bound(distinct.begin(), distinct.end(), v, [&](VertexId a, VertexId b) {
+        return detail::lex_less(pts[a], pts[b]);
+      });
+    };
+    for (auto& e : boundary) e = {canonical(e.first), canonical(e.second)};
+    std::sort(expected.begin(), expected.end());
+    std::sort(boundary.begin(), boundary.end());
+    if (boundary != expected) {
+      std::vector<std::pair<VertexId, VertexId>> missing;
+      std::set_difference(expected.begin(), expected.end(), boundary.begin(), boundary.end(),
+                          std::back_inserter(missing));
+      if (!missing.empty())
+        report.problem("convex hull edge ", missing[0].first, "->", missing[0].second,
+                       " is missing (", missing.size(), " hull edges missing)");
+      else
+        report.problem("the boundary has ", boundary.size(), " edges, the convex hull ",
+                       expected.size());
+    }
+    // Euler.
+    const std::size_t h = hull.size();
+    if (count != 2 * vertices - 2 - h)
+      report.problem(count, " triangles, but ", vertices, " vertices with ", h,
+                     " on the hull need ", 2 * vertices - 2 - h);
+  }
+
+  std::ostringstream s;
+  if (report.problems() > 0) {
+    s << "invalid: " << report.first() << " (" << report.problems() << " problem"
+      << (report.problems() == 1 ? "" : "s") << ")";
+    return {false, s.str(), report.problems()};
+  }
+  s << "valid: " << count << " triangles, " << vertices << " vertices of " << n << " points ("
+    << distinct.size() << " distinct), exactly Delaunay";
+  if (degenerate) s << " (no triangle: " << (distinct.size() < 3 ? "fewer than three distinct points" : "all points collinear") << ")";
+  return {true, s.str(), 0};
+}
+
+}  // namespace ridt

@@ -1,0 +1,28 @@
+// What the methods share: the set-up of a run and its finish.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "kernel.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt::detail {
+
+/// A point dropped during insertion and the mesh vertex it coincides with.
+struct DuplicateHit {
+  VertexId dropped;
+  VertexId vertex;
+};
+
+/// Serial insertion of vertices 0 .. n-1 in that order (the paper's Fig. 4, lines 5-23).
+void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
+                   Stats& stats);
+
+/// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
+/// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
+/// point input_index[v].
+Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
+                     const std::vector<DuplicateHit>& duplicates, const Options& options);
+
+}  // namespace ridt::detail

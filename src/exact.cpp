@@ -1,0 +1,182 @@
+// Exact evaluation of the predicates with integers.
+//
+// Every double is an integer multiple of its unit in the last place; within one predicate call
+// all coordinates are integer multiples of the smallest such unit U = 2^emin among them. The
+// determinants are homogeneous polynomials in coordinate differences, so their sign equals the
+// sign of the same polynomial evaluated on the integers x / U. Those integers have at most
+// 2098 bits (2^1024 / 2^-1074), so a degree-4 polynomial fits in 140 limbs of 64 bits. In the
+// common case (coordinates of similar size) the integers have one or two limbs and the
+// evaluation is cheap; only wildly different magnitudes in one call make it long.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "predicates.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// Sign-magnitude integer with a fixed capacity and no heap use.
+class BigInt {
+ public:
+  static constexpr int kCap = 140;  // 4 * 34 limbs for a degree-4 product, plus carries
+
+  BigInt() {}  // the limbs are left uninitialized on purpose: only [0, n_) is ever read
+
+  // x / 2^emin, where x is an integer multiple of 2^emin.
+  static BigInt from_double(double x, int emin) {
+    BigInt r;
+    if (x == 0) return r;
+    int e = 0;
+    const double f = std::frexp(std::fabs(x), &e);  // |x| = f * 2^e, f in [0.5, 1)
+    auto mant = static_cast<std::uint64_t>(std::ldexp(f, 53));
+    const int shift = e - 53 - emin;  // >= 0 by the choice of emin
+    const int limb = shift / 64, bit = shift % 64;
+    for (int i = 0; i < limb; ++i) r.w_[i] = 0;
+    r.w_[limb] = mant << bit;
+    r.n_ = limb + 1;
+    if (bit != 0 && (mant >> (64 - bit)) != 0) r.w_[r.n_++] = mant >> (64 - bit);
+    r.neg_ = x < 0;
+    return r;
+  }
+
+  int sign() const { return n_ == 0 ? 0 : (neg_ ? -1 : 1); }
+
+  friend BigInt operator+(const BigInt& a, const BigInt& b) { return add(a, b, b.neg_); }
+  friend BigInt operator-(const BigInt& a, const BigInt& b) { return add(a, b, !b.neg_); }
+
+  friend BigInt operator*(const BigInt& a, const BigInt& b) {
+    BigInt r;
+    if (a.n_ == 0 || b.n_ == 0) return r;
+    r.n_ = a.n_ + b.n_;
+    std::fill(r.w_, r.w_ + r.n_, 0);
+    for (int i = 0; i < a.n_; ++i) {
+      unsigned __int128 carry = 0;
+      for (int j = 0; j < b.n_; ++j) {
+        carry += static_cast<unsigned __int128>(a.w_[i]) * b.w_[j] + r.w_[i + j];
+        r.w_[i + j] = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+      r.w_[i + b.n_] = static_cast<std::uint64_t>(carry);
+    }
+    r.trim();
+    r.neg_ = a.neg_ != b.neg_;
+    return r;
+  }
+
+ private:
+  void trim() {
+    while (n_ > 0 && w_[n_ - 1] == 0) --n_;
+    if (n_ == 0) neg_ = false;
+  }
+
+  static int compare_magnitude(const BigInt& a, const BigInt& b) {
+    if (a.n_ != b.n_) return a.n_ < b.n_ ? -1 : 1;
+    for (int i = a.n_ - 1; i >= 0; --i)
+      if (a.w_[i] != b.w_[i]) return a.w_[i] < b.w_[i] ? -1 : 1;
+    return 0;
+  }
+
+  // a + (b with sign b_neg)
+  static BigInt add(const BigInt& a, const BigInt& b, bool b_neg) {
+    BigInt r;
+    if (a.neg_ == b_neg) {
+      const BigInt& big = a.n_ >= b.n_ ? a : b;
+      const BigInt& small = a.n_ >= b.n_ ? b : a;
+      std::uint64_t carry = 0;
+      for (int i = 0; i < big.n_; ++i) {
+        const std::uint64_t s = big.w_[i] + carry;
+        carry = s < carry;
+        const std::uint64_t t = i < small.n_ ? s + small.w_[i] : s;
+        carry += t < s;
+        r.w_[i] = t;
+      }
+      r.n_ = big.n_;
+      if (carry) r.w_[r.n_++] = carry;
+      r.neg_ = a.neg_;
+      return r;
+    }
+    const int cmp = compare_magnitude(a, b);
+    if (cmp == 0) return r;
+    const BigInt& big = cmp > 0 ? a : b;
+    const BigInt& small = cmp > 0 ? b : a;
+    std::uint64_t borrow = 0;
+    for (int i = 0; i < big.n_; ++i) {
+      const std::uint64_t sub = (i < small.n_ ? small.w_[i] : 0);
+      const std::uint64_t t = big.w_[i] - sub - borrow;
+      borrow = (big.w_[i] < sub) || (big.w_[i] - sub < borrow);
+      r.w_[i] = t;
+    }
+    r.n_ = big.n_;
+    r.neg_ = cmp > 0 ? a.neg_ : b_neg;
+    r.trim();
+    return r;
+  }
+
+  std::uint64_t w_[kCap];
+  int n_ = 0;
+  bool neg_ = false;
+};
+
+// Exponent of the unit in the last place of x (x != 0): x is an integer multiple of 2^result.
+int ulp_exponent(double x) {
+  int e = 0;
+  std::frexp(x, &e);
+  return e - 53;
+}
+
+int min_ulp_exponent(std::initializer_list<double> values) {
+  int emin = 1 << 20;
+  for (double v : values)
+    if (v != 0) emin = std::min(emin, ulp_exponent(v));
+  return emin;
+}
+
+}  // namespace
+
+int orient2d_exact(const Point& a, const Point& b, const Point& c) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y});
+  const BigInt cx = BigInt::from_double(c.x, e), cy = BigInt::from_double(c.y, e);
+  const BigInt acx = BigInt::from_double(a.x, e) - cx, acy = BigInt::from_double(a.y, e) - cy;
+  const BigInt bcx = BigInt::from_double(b.x, e) - cx, bcy = BigInt::from_double(b.y, e) - cy;
+  return (acx * bcy - acy * bcx).sign();
+}
+
+int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y});
+  const BigInt dx = BigInt::from_double(d.x, e), dy = BigInt::from_double(d.y, e);
+  const BigInt adx = BigInt::from_double(a.x, e) - dx, ady = BigInt::from_double(a.y, e) - dy;
+  const BigInt bdx = BigInt::from_double(b.x, e) - dx, bdy = BigInt::from_double(b.y, e) - dy;
+  const BigInt cdx = BigInt::from_double(c.x, e) - dx, cdy = BigInt::from_double(c.y, e) - dy;
+  const BigInt alift = adx * adx + ady * ady;
+  const BigInt blift = bdx * bdx + bdy * bdy;
+  const BigInt clift = cdx * cdx + cdy * cdy;
+  const BigInt det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+                     clift * (adx * bdy - bdx * ady);
+  return det.sign();
+}
+
+int incircle_sos(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int s = incircle(a, b, c, d);
+  if (s != 0) return s;
+  // Cofactors of the lifted coordinate in rows a, b, c, d of det[x y z 1].
+  struct Row {
+    const Point* p;
+    int which;
+  };
+  Row rows[4] = {{&a, 0}, {&b, 1}, {&c, 2}, {&d, 3}};
+  std::sort(rows, rows + 4, [](const Row& l, const Row& r) { return lex_less(*r.p, *l.p); });
+  for (const Row& row : rows) {
+    int cofactor = 0;
+    switch (row.which) {
+      case 0: cofactor = orient2d(b, c, d); break;
+      case 1: cofactor = -orient2d(a, c, d); break;
+      case 2: cofactor = orient2d(a, b, d); break;
+      default: cofactor = -orient2d(a, b, c); break;
+    }
+    if (cofactor != 0) return cofactor;
+  }
+  return 0;  // only for a degenerate (a, b, c), which callers never pass
+}
+
+}  // namespace ridt::detail

@@ -1,0 +1,159 @@
+// Fig. 4, line 24: remove the bounding vertices and everything incident to them; then number
+// the remaining triangles compactly, give neighbours across the hull as -1, trace the hull and
+// resolve duplicates so the output names the smallest input index of each group of equal points.
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+#include "driver.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
+// neighbours: the output no longer depends on the order of insertion.
+void canonicalize(Triangulation& out) {
+  const std::size_t count = out.size();
+  auto& tv = out.triangles;
+  auto& tn = out.neighbors;
+  for (std::size_t t = 0; t < count; ++t) {
+    VertexId* v = &tv[3 * t];
+    std::int32_t* n = &tn[3 * t];
+    const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    std::rotate(v, v + s, v + 3);
+    std::rotate(n, n + s, n + 3);
+  }
+  std::vector<std::uint32_t> order(count);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::lexicographical_compare(&tv[3 * a], &tv[3 * a + 3], &tv[3 * b], &tv[3 * b + 3]);
+  });
+  std::vector<std::int32_t> rank(count);
+  for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
+  std::vector<VertexId> v2(3 * count);
+  std::vector<std::int32_t> n2(3 * count);
+  for (std::size_t i = 0; i < count; ++i)
+    for (int k = 0; k < 3; ++k) {
+      v2[3 * i + k] = tv[3 * order[i] + k];
+      const std::int32_t nb = tn[3 * order[i] + k];
+      n2[3 * i + k] = nb < 0 ? kNoNeighbor : rank[nb];
+    }
+  tv.swap(v2);
+  tn.swap(n2);
+}
+
+}  // namespace
+
+Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
+                     const std::vector<DuplicateHit>& duplicates, const Options& options) {
+  Triangulation out;
+  const std::uint32_t n = kernel.n();
+  TriangleStore& tris = kernel.triangles_for_finish();
+  const std::uint32_t records = tris.size();
+
+  // Duplicates: the smallest input index of each group stands for all of them.
+  std::unordered_map<VertexId, VertexId> keep;  // mesh vertex -> standing index
+  for (const DuplicateHit& d : duplicates) {
+    const VertexId v = input_index[d.vertex];
+    auto [it, fresh] = keep.try_emplace(v, v);
+    it->second = std::min(it->second, input_index[d.dropped]);
+  }
+  for (const DuplicateHit& d : duplicates) {
+    const VertexId v = input_index[d.vertex], dropped = input_index[d.dropped];
+    const VertexId kept = keep[v];
+    if (dropped != kept) out.duplicates.push_back({dropped, kept});
+    if (v != kept) out.duplicates.push_back({v, kept});
+  }
+  std::sort(out.duplicates.begin(), out.duplicates.end(),
+            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
+  out.duplicates.erase(std::unique(out.duplicates.begin(), out.duplicates.end(),
+                                   [](const Duplicate& a, const Duplicate& b) {
+                                     return a.dropped == b.dropped;
+                                   }),
+                       out.duplicates.end());
+  for (auto it = keep.begin(); it != keep.end();)
+    it = it->first == it->second ? keep.erase(it) : std::next(it);
+  auto standing = [&](VertexId mesh_vertex) {
+    const VertexId v = input_index[mesh_vertex];
+    if (keep.empty()) return v;
+    const auto it = keep.find(v);
+    return it == keep.end() ? v : it->second;
+  };
+
+  // Pass 1: the child links are dead now; a kept triangle's link becomes its new id + 1.
+  std::uint32_t count = 0;
+  for (TriangleId t = 0; t < records; ++t) {
+    Triangle& r = tris[t];
+    const bool leaf = r.child == 0;  // single-threaded now: plain reads and writes
+    const bool finite = r.v[0] < n && r.v[1] < n && r.v[2] < n;
+    r.child = leaf && finite ? ++count : 0;
+  }
+
+  // Pass 2: vertices, neighbours, hull edges.
+  out.triangles.resize(3 * std::size_t{count});
+  out.neighbors.resize(3 * std::size_t{count});
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
+  for (TriangleId t = 0; t < records; ++t) {
+    const Triangle& r = tris[t];
+    const std::uint32_t id = r.child;
+    if (id == 0) continue;
+    const std::size_t base = 3 * std::size_t{id - 1};
+    for (int i = 0; i < 3; ++i) {
+      out.triangles[base + i] = standing(r.v[i]);
+      const TriangleId nb = r.n[i];
+      const std::uint32_t nid = nb == kNone ? 0 : tris[nb].child;
+      out.neighbors[base + i] = nid == 0 ? kNoNeighbor : static_cast<std::int32_t>(nid - 1);
+      if (nid == 0) hull_edges.emplace_back(standing(r.v[next(i)]), standing(r.v[prev(i)]));
+    }
+  }
+
+  // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
+  // from the smallest vertex index.
+  if (!hull_edges.empty()) {
+    std::sort(hull_edges.begin(), hull_edges.end());
+    auto from = [&](VertexId v) {
+      auto it = std::lower_bound(hull_edges.begin(), hull_edges.end(), std::pair{v, VertexId{0}});
+      return it != hull_edges.end() && it->first == v ? it->second : kNone;
+    };
+    const VertexId start = hull_edges.front().first;
+    VertexId v = start;
+    do {
+      out.hull.push_back(v);
+      v = from(v);
+    } while (v != kNone && v != start && out.hull.size() <= hull_edges.size());
+  }
+
+  // Stats and warnings.
+  Stats& s = out.stats;
+  s.points = n;
+  s.duplicates = out.duplicates.size();
+  s.distinct = n - s.duplicates;
+  s.dag_nodes = records;
+  s.flips = kernel.flips();
+  s.edge_splits = kernel.edge_splits();
+  if (s.distinct < 3) {
+    out.warning = "fewer than three distinct points: no triangle";
+  } else if (count == 0) {
+    out.warning = "all points are collinear: no triangle";
+  } else if (options.bounding == Bounding::Finite) {
+    // The paper's finite bounding triangle can leave a reflex boundary or drop points.
+    std::vector<Point> pts(n);
+    for (VertexId v = 0; v < n; ++v) pts[input_index[v]] = kernel.point(v);
+    const std::size_t h = out.hull.size();
+    bool convex = h == hull_edges.size();
+    for (std::size_t i = 0; convex && i < h; ++i)
+      convex = orient2d(pts[out.hull[i]], pts[out.hull[(i + 1) % h]],
+                        pts[out.hull[(i + 2) % h]]) >= 0;
+    // Euler: a triangulation of all distinct points with h boundary vertices has 2d - 2 - h.
+    const bool complete = count == 2 * s.distinct - 2 - h;
+    if (!convex || !complete)
+      out.warning =
+          "finite bounding triangle (k = " + std::to_string(options.k) +
+          ") lost convex hull edges: the result is not the Delaunay triangulation of the "
+          "points; use the symbolic bounding triangle";
+  }
+  if (options.canonical_order) canonicalize(out);
+  return out;
+}
+
+}  // namespace ridt::detail

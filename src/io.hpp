@@ -1,0 +1,56 @@
+// Point and triangle files, chosen by extension.
+//
+// Points in:  .node (Triangle's format: "n 2 attributes markers" then "i x y ..."; its first
+//             index, 0 or 1, is kept), .bin (raw little-endian float64 x, y pairs), anything
+//             else text (one point a line, "x y" or "x,y", '#' starts a comment).
+// Points out: .node, .bin, anything else text ("x y" with the shortest exact decimal form).
+// Triangles:  .ele (Triangle's format, numbered from the input .node's first index, else 0),
+//             .neigh (Triangle's neighbour file, -1 on the hull), .off, .obj, .svg (a drawing),
+//             .bin (little-endian uint32 triples). Every file is written to a temporary
+//             name beside the target and renamed, so a failure never leaves half a file.
+#pragma once
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ridt/ridt.hpp"
+
+namespace ridt::io {
+
+/// A file that cannot be read or written, or malformed content; the message names the file
+/// and, for text, the line.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct PointFile {
+  std::vector<Point> points;
+  int first_index = 0;  ///< numbering of a .node file (0 or 1); 0 for other formats
+};
+
+/// Reads points; throws IoError on a missing file, a malformed line, a NaN or infinite
+/// coordinate, or a .node count that does not match.
+PointFile read_points(const std::string& path);
+
+/// Writes points (format by extension).
+void write_points(const std::string& path, std::span<const Point> points);
+
+/// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;
+/// `first_index` is the numbering of .ele and text files.
+std::vector<VertexId> read_triangles(const std::string& path, int first_index);
+
+/// Throws IoError unless `path` has an extension that write_triangulation knows.
+void check_triangulation_extension(const std::string& path);
+
+/// Writes a triangulation (format by extension); indices start at `first_index` in .ele,
+/// .neigh and .off/.obj keep their own conventions (0-based and 1-based).
+void write_triangulation(const std::string& path, std::span<const Point> points,
+                         const Triangulation& t, int first_index);
+
+/// The largest triangulation that write_triangulation draws as .svg.
+inline constexpr std::size_t kSvgMaxTriangles = 200000;
+
+}  // namespace ridt::io

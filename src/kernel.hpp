@@ -1,0 +1,151 @@
+// The insertion kernel of randomized incremental Delaunay triangulation (de Berg et al.,
+// Computational Geometry, ch. 9; the paper's Figs. 4 and 5): locate in the history DAG, split
+// 1->3 or 2->4, legalize by flips. Every method drives this one kernel.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "memory.hpp"
+#include "mesh.hpp"
+#include "predicates.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt::detail {
+
+/// The bounding vertices have ids n, n + 1, n + 2 (B0, B1, B2, counter-clockwise).
+///
+/// Symbolic mode places them infinitely far away, at B0 = (R, r), B1 = (-r, R^2),
+/// B2 = (-r, -R^3), with 1 << r << R. Every predicate that involves them is then a polynomial
+/// in R and r whose leading coefficient is a plain comparison of coordinates; those rules are
+/// in orient_symbolic and incircle_symbolic, and tests check them against a concrete far-away
+/// instance with exact integers. No coordinate is huge, the predicates never tie on a bounding
+/// vertex, and removing B0, B1, B2 leaves exactly the Delaunay triangulation of the points with
+/// its whole convex hull.
+class Kernel {
+ public:
+  /// `points` holds n points (vertex v is points[v]) followed by three bounding vertices
+  /// (their coordinates are used only when `symbolic` is false).
+  Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic);
+
+  enum class Where { Inside, OnEdge, OnVertex };
+  struct Location {
+    TriangleId t;
+    Where where;
+    int i;  // OnEdge: the edge opposite v[i]; OnVertex: the vertex v[i]
+  };
+
+  /// Descends the DAG from `t` to the leaf whose closure contains point p.
+  TriangleId descend(TriangleId t, VertexId p) const;
+
+  /// One level of the descent: the child of t whose closure contains p, or t for a leaf.
+  /// An internal node keeps what the choice needs in its dead neighbour slots (see
+  /// set_separator), so one record is read a level.
+  TriangleId step(TriangleId t, VertexId p) const {
+    // acquire: pairs with the release store that published the children (mesh.hpp).
+    const Triangle& r = tris_[t];
+    const std::uint32_t c = r.load_child();
+    if (c == 0) return t;
+    const TriangleId first = c & kIdMask;
+    if (c & kThreeChildren) {
+      // Children (q, v1, v2), (q, v2, v0), (q, v0, v1) fill the wedges between the rays
+      // q->v1, q->v2, q->v0; two orientation tests pick the wedge holding p.
+      const VertexId q = r.n[0];
+      if (orient(q, r.v[0], p) >= 0) return orient(q, r.v[1], p) > 0 ? first : first + 2;
+      return orient(q, r.v[2], p) >= 0 ? first + 1 : first;
+    }
+    // Two children split by the edge n[0] -> n[1]; the first lies to its left.
+    return orient(r.n[0], r.n[1], p) >= 0 ? first : first + 1;
+  }
+  /// Where p lies in leaf t (whose closure contains p).
+  Location classify(TriangleId t, VertexId p) const;
+
+  /// Inserts p. Returns kNone, or the vertex that p duplicates.
+  VertexId insert(VertexId p) { return insert_at(classify(descend(kRoot, p), p), p); }
+  /// The same from a known location (the profiled and threaded drivers time the steps).
+  VertexId insert_at(const Location& where, VertexId p) {
+    if (where.where == Where::OnVertex) return tris_[where.t].v[where.i];
+    if (where.where == Where::Inside)
+      split_triangle(where.t, p);
+    else
+      split_edge(where.t, where.i, p);
+    legalize(p);
+    return kNone;
+  }
+  void split_at(const Location& where, VertexId p) {
+    if (where.where == Where::Inside)
+      split_triangle(where.t, p);
+    else
+      split_edge(where.t, where.i, p);
+  }
+  void legalize(VertexId p);
+
+  int orient(VertexId a, VertexId b, VertexId c) const {
+    if (symbolic_ && (a >= n_ || b >= n_ || c >= n_)) return orient_symbolic(a, b, c);
+    return orient2d(points_[a], points_[b], points_[c]);
+  }
+  /// +1 if finite point p lies inside the circle of the counter-clockwise triangle (a, b, c),
+  /// -1 outside; never 0 (symbolic perturbation).
+  int incircle(VertexId a, VertexId b, VertexId c, VertexId p) const {
+    if (symbolic_ && (a >= n_ || b >= n_ || c >= n_)) return incircle_symbolic(a, b, c, p);
+    return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
+  }
+
+  void prefetch(TriangleId t) const { __builtin_prefetch(&tris_[t]); }
+  /// Prefetches what inserting into leaf t will read: its neighbours and its vertices.
+  void prefetch_around(TriangleId t) const {
+    const Triangle& r = tris_[t];
+    for (int i = 0; i < 3; ++i) {
+      if (r.n[i] != kNone) __builtin_prefetch(&tris_[r.n[i]]);
+      __builtin_prefetch(&points_[r.v[i]]);
+    }
+  }
+
+  const TriangleStore& triangles() const { return tris_; }
+  /// For the finish only: it reuses the child links, dead by then, as scratch.
+  TriangleStore& triangles_for_finish() { return tris_; }
+  const Point& point(VertexId v) const { return points_[v]; }
+  std::uint32_t n() const { return n_; }
+  bool is_bounding(VertexId v) const { return v >= n_; }
+  std::uint64_t flips() const { return flips_; }
+  std::uint64_t edge_splits() const { return edge_splits_; }
+
+  static constexpr TriangleId kRoot = 0;
+
+ private:
+  int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
+  int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
+
+  void split_triangle(TriangleId t, VertexId p);
+  void split_edge(TriangleId t, int i, VertexId p);
+  void flip(TriangleId t, TriangleId u, int j);
+  // Neighbour u of `old` now borders `now` instead.
+  void relink(TriangleId u, TriangleId old, TriangleId now) {
+    if (u == kNone) return;
+    Triangle& r = tris_[u];
+    r.n[r.n[0] == old ? 0 : (r.n[1] == old ? 1 : 2)] = now;
+  }
+  // The two children of t are split by the directed edge a -> b, the first on its left.
+  void set_separator(TriangleId t, VertexId a, VertexId b) {
+    tris_[t].n[0] = a;
+    tris_[t].n[1] = b;
+  }
+  void make(TriangleId t, VertexId a, VertexId b, VertexId c, TriangleId na, TriangleId nb,
+            TriangleId nc) {
+    Triangle& r = tris_[t];
+    r.v[0] = a, r.v[1] = b, r.v[2] = c;
+    r.n[0] = na, r.n[1] = nb, r.n[2] = nc;
+    r.child = 0;  // published by the parent's release store
+  }
+
+  std::unique_ptr<Point[], FreeDeleter> points_;
+  std::uint32_t n_;
+  bool symbolic_;
+  TriangleStore tris_;
+  std::vector<TriangleId> stack_;  // edges still to legalize: triangles with p at v[0]
+  std::uint64_t flips_ = 0;
+  std::uint64_t edge_splits_ = 0;
+};
+
+}  // namespace ridt::detail

@@ -1,0 +1,92 @@
+// Triangle records: the live mesh and the history DAG in one.
+//
+// Conventions, used everywhere:
+//   t  a triangle id, v a vertex id, i a local index 0..2;
+//   v[i] counter-clockwise; n[i] is the neighbour across the edge opposite v[i], that is the
+//   edge v[next(i)] -> v[prev(i)]; kNone where there is none (the outer edges of the
+//   bounding triangle).
+//   child: 0 while the triangle is a leaf (a current triangle). Otherwise the id of its first
+//   child, with kThreeChildren set when it has three (a 1->3 split) and two otherwise (a 2->4
+//   split or a flip). Children are allocated consecutively, so one id names them all. Id 0 is
+//   the root, never a child, which frees 0 to mean "leaf".
+// See docs/mesh.md for drawings.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <type_traits>
+
+#include "memory.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt::detail {
+
+inline constexpr std::uint32_t kNone = 0xffffffffu;
+inline constexpr std::uint32_t kThreeChildren = 0x80000000u;
+inline constexpr std::uint32_t kIdMask = 0x7fffffffu;
+
+constexpr int next(int i) { return i == 2 ? 0 : i + 1; }
+constexpr int prev(int i) { return i == 0 ? 2 : i - 1; }
+
+struct Triangle {
+  VertexId v[3];
+  // While a leaf: the neighbours. Once internal they are dead, and the descent keeps what it
+  // needs to choose a child here: the split point in n[0] (three children), or the separating
+  // edge n[0] -> n[1] (two children, the first on its left).
+  TriangleId n[3];
+  // Written once, when the triangle stops being a leaf. Stored with release after the children
+  // are complete, read with acquire (child_link), so a thread that sees the link sees the
+  // children whole. A plain integer under std::atomic_ref keeps the record trivial: chunks are
+  // then allocated without being zeroed first.
+  std::uint32_t child;
+
+  std::atomic_ref<std::uint32_t> child_link() { return std::atomic_ref<std::uint32_t>(child); }
+  std::uint32_t load_child() const {
+    // atomic_ref needs a non-const object; the load itself does not modify it.
+    return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(child))
+        .load(std::memory_order_acquire);
+  }
+};
+static_assert(std::is_trivial_v<Triangle>);
+static_assert(sizeof(Triangle) == 28, "a record should stay small: it is most of the memory");
+
+/// Records in fixed-size chunks that never move, so an id stays valid while the store grows.
+class TriangleStore {
+ public:
+  // 2^19 records of 28 bytes fill exactly 7 huge pages of 2 MiB (memory.hpp).
+  static constexpr int kChunkBits = 19;
+  static constexpr std::uint32_t kChunkSize = 1u << kChunkBits;
+  static constexpr std::uint32_t kMaxChunks = (kIdMask + 1u) >> kChunkBits;
+
+  TriangleStore() : chunks_(new std::unique_ptr<Triangle[], FreeDeleter>[kMaxChunks]) {}
+
+  Triangle& operator[](TriangleId t) { return chunks_[t >> kChunkBits][t & (kChunkSize - 1)]; }
+  const Triangle& operator[](TriangleId t) const {
+    return chunks_[t >> kChunkBits][t & (kChunkSize - 1)];
+  }
+
+  /// Reserves `count` consecutive ids.
+  TriangleId allocate(std::uint32_t count) {
+    const TriangleId first = size_;
+    const std::uint64_t end = std::uint64_t{size_} + count;
+    if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
+    while (capacity_ < end) {
+      chunks_[capacity_ >> kChunkBits] = allocate_huge<Triangle>(kChunkSize);
+      capacity_ += kChunkSize;
+    }
+    size_ = static_cast<std::uint32_t>(end);
+    return first;
+  }
+
+  std::uint32_t size() const { return size_; }
+
+ private:
+  std::unique_ptr<std::unique_ptr<Triangle[], FreeDeleter>[]> chunks_;
+  std::uint32_t size_ = 0;
+  std::uint64_t capacity_ = 0;
+};
+
+}  // namespace ridt::detail

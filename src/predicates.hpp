@@ -1,0 +1,95 @@
+// Exact geometric predicates: orient2d and incircle.
+//
+// Each predicate first evaluates its determinant in double precision together with a bound on
+// the rounding error (the forward error analysis of Shewchuk, "Adaptive Precision
+// Floating-Point Arithmetic and Fast Robust Geometric Predicates", 1997, extended here with an
+// absolute term for underflow). When the value is farther from zero than the bound the sign is
+// certain; otherwise the determinant is evaluated exactly with integers (exact.cpp).
+//
+// These functions must be compiled with -ffp-contract=off and without -ffast-math: a fused
+// multiply-add or a reassociated sum changes the rounding that the error bounds describe.
+#pragma once
+
+#include <cmath>
+
+#include "ridt/ridt.hpp"
+
+namespace ridt::detail {
+
+// Unit roundoff of double: every +, -, * is exact up to a factor (1 + d), |d| <= kEps.
+inline constexpr double kEps = 0x1p-53;
+// orient2d: the computed det = l - r with l, r products of rounded differences. Each difference
+// and each product adds a relative error kEps, the subtraction one more; collecting terms gives
+// |det - exact| <= (3 kEps + 16 kEps^2) (|l| + |r|) (Shewchuk, section 4.3, ccwerrboundA).
+inline constexpr double kOrientBound = (3.0 + 16.0 * kEps) * kEps;
+// incircle: degree-4 polynomial in the differences; the same analysis gives
+// (10 kEps + 96 kEps^2) times the permanent (Shewchuk, iccerrboundA).
+inline constexpr double kIncircleBound = (10.0 + 96.0 * kEps) * kEps;
+// A product that underflows loses up to half the smallest subnormal, 2^-1075, absolutely;
+// sums of doubles never do. orient2d has two products and one subtraction: 2^-1073 covers them.
+inline constexpr double kOrientUnderflow = 0x1p-1073;
+
+int orient2d_exact(const Point& a, const Point& b, const Point& c);
+int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& d);
+
+/// Sign of the orientation of (a, b, c): +1 if counter-clockwise, -1 if clockwise, 0 if
+/// collinear. Exact for every finite input.
+inline int orient2d(const Point& a, const Point& b, const Point& c) {
+  const double acx = a.x - c.x, bcx = b.x - c.x;
+  const double acy = a.y - c.y, bcy = b.y - c.y;
+  const double l = acx * bcy;
+  const double r = acy * bcx;
+  const double det = l - r;
+  const double bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  // NaN from an overflow fails both tests and lands here too.
+  return orient2d_exact(a, b, c);
+}
+
+/// Sign of the incircle determinant: +1 if d lies strictly inside the circle through the
+/// counter-clockwise triangle (a, b, c), -1 if strictly outside, 0 if on it. Exact.
+inline int incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double adx = a.x - d.x, ady = a.y - d.y;
+  const double bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  const double bc = bdx * cdy - cdx * bdy;
+  const double ca = cdx * ady - adx * cdy;
+  const double ab = adx * bdy - bdx * ady;
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * bc + blift * ca + clift * ab;
+  const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * alift +
+                           (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * blift +
+                           (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * clift;
+  // Underflow: a degree-2 product that underflows (absolute error <= 2^-1075) is later
+  // multiplied by a degree-2 factor of size <= 2 m^2 (m the largest difference); there are at
+  // most 12 such products and 3 final ones, so 2^-1075 (32 m^2 + 4) = 2^-1070 (m^2 + 1/8)
+  // bounds the total. An overflow makes m^2 infinite and sends us to the exact path.
+  const double m = std::fmax(std::fmax(std::fmax(std::fabs(adx), std::fabs(ady)),
+                                       std::fmax(std::fabs(bdx), std::fabs(bdy))),
+                             std::fmax(std::fabs(cdx), std::fabs(cdy)));
+  const double bound = kIncircleBound * permanent + 0x1p-1070 * (m * m + 0.125);
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  return incircle_exact(a, b, c, d);
+}
+
+/// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.
+inline bool lex_less(const Point& a, const Point& b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+/// incircle with Simulation of Simplicity: never 0 when (a, b, c) is a proper
+/// counter-clockwise triangle and d differs from a, b and c.
+///
+/// Each point p is lifted to z = x^2 + y^2 + eps_p, where the lexicographically larger point
+/// gets the infinitely larger eps (Edelsbrunner and Muecke; Devillers and Teillaud for
+/// Delaunay). The incircle value is the 4x4 determinant with rows (x, y, z, 1); perturbing z_p
+/// adds eps_p times its cofactor, so when the exact value is 0 the sign is that of the
+/// cofactor of the largest point whose cofactor is not 0. The cofactor of d, -orient(a, b, c),
+/// is never 0, so the answer is always decided.
+int incircle_sos(const Point& a, const Point& b, const Point& c, const Point& d);
+
+}  // namespace ridt::detail

@@ -1,0 +1,81 @@
+// The public entry point: checks the input, sets up the bounding triangle, runs the chosen
+// method and finishes.
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "driver.hpp"
+#include "order.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt {
+
+Triangulation triangulate(std::span<const Point> points, const Options& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  // Three bounding vertices follow the points, and ids must stay below kIdMask.
+  if (points.size() > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
+  const auto n = static_cast<std::uint32_t>(points.size());
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
+      throw InputError("point " + std::to_string(i) + " has a " +
+                       (std::isnan(points[i].x) || std::isnan(points[i].y) ? "NaN" : "infinite") +
+                       " coordinate");
+  const bool symbolic = options.bounding == Bounding::Symbolic;
+  if (!symbolic && !(options.k >= 2))
+    throw InputError("the finite bounding triangle needs k >= 2 (got " +
+                     std::to_string(options.k) + ")");
+
+  // The mesh numbers vertices in insertion order: vertex v is input point order[v]. Then the
+  // points met near the root of the DAG, inserted early, lie close together in memory.
+  const std::vector<std::uint32_t> order = detail::random_permutation(n, options.seed);
+  auto pts = detail::allocate_huge<Point>(std::size_t{n} + 3);
+  for (std::uint32_t v = 0; v < n; ++v) pts[v] = points[order[v]];
+  if (symbolic) {
+    pts[n] = pts[n + 1] = pts[n + 2] = Point{};  // never read: decided combinatorially
+  } else {
+    // The paper's (K, 0), (0, K), (-K, -K) around the centre of the bounding box, K = k * M.
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    if (n > 0) x0 = x1 = pts[0].x, y0 = y1 = pts[0].y;
+    for (std::uint32_t v = 0; v < n; ++v) {
+      x0 = std::fmin(x0, pts[v].x), x1 = std::fmax(x1, pts[v].x);
+      y0 = std::fmin(y0, pts[v].y), y1 = std::fmax(y1, pts[v].y);
+    }
+    double m = std::fmax(x1 - x0, y1 - y0);
+    if (m == 0) m = 1;  // all points equal: any triangle around them will do
+    const double cx = x0 / 2 + x1 / 2, cy = y0 / 2 + y1 / 2, k = options.k * m;
+    const Point b[3] = {{cx + k, cy}, {cx, cy + k}, {cx - k, cy - k}};
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(b[i].x) || !std::isfinite(b[i].y))
+        throw InputError("the finite bounding triangle overflows for these coordinates");
+      pts[n + i] = b[i];
+    }
+  }
+
+  detail::Kernel kernel(std::move(pts), n, symbolic);
+  std::vector<detail::DuplicateHit> duplicates;
+  Stats stats;
+  switch (options.method) {
+    case Method::Serial:
+      detail::insert_serial(kernel, options.profile, duplicates, stats);
+      break;
+  }
+  Triangulation out = detail::finish(kernel, order, duplicates, options);
+  out.stats.time_locate_s = stats.time_locate_s;
+  out.stats.time_split_s = stats.time_split_s;
+  out.stats.time_legalize_s = stats.time_legalize_s;
+  out.stats.time_triangulate_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+Triangulation triangulate(std::span<const double> xy, const Options& options) {
+  if (xy.size() % 2 != 0)
+    throw InputError("a flat coordinate array needs an even size (got " +
+                     std::to_string(xy.size()) + ")");
+  std::vector<Point> points(xy.size() / 2);
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = {xy[2 * i], xy[2 * i + 1]};
+  return triangulate(std::span<const Point>(points), options);
+}
+
+}  // namespace ridt

@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# The tool end to end: generate, triangulate, check, every output format, and every bad input
+# with its exit status and without a stray output file.
+set -u
+ridt=$1
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+fails=0 passes=0
+pass() { passes=$((passes + 1)); }
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+# expect STATUS DESCRIPTION -- command...
+expect() {
+  local want=$1 what=$2; shift 3
+  "$@" >"$dir/out" 2>"$dir/err"
+  local got=$?
+  if [ "$got" -eq "$want" ]; then pass; else fail "$what: exit $got, wanted $want"; cat "$dir/err"; fi
+}
+stderr_has() { if grep -q -- "$1" "$dir/err"; then pass; else fail "stderr lacks '$1'"; cat "$dir/err"; fi; }
+stdout_has() { if grep -q -- "$1" "$dir/out"; then pass; else fail "stdout lacks '$1'"; cat "$dir/out"; fi; }
+absent() { if [ ! -e "$1" ]; then pass; else fail "$1 should not exist"; fi; }
+
+# Every distribution, every point format, checked.
+for d in uniform normal grid clusters; do
+  for ext in txt node bin; do
+    expect 0 "generate $d.$ext" -- "$ridt" generate --dist "$d" -n 2000 --seed 3 -o "$dir/$d.$ext"
+    expect 0 "triangulate $d.$ext" -- "$ridt" triangulate "$dir/$d.$ext" -o "$dir/$d.$ext.ele"
+    expect 0 "check $d.$ext" -- "$ridt" check "$dir/$d.$ext" "$dir/$d.$ext.ele"
+    stdout_has "^valid"
+  done
+done
+# Same points in every format give the same file.
+cmp -s "$dir/uniform.txt.ele" "$dir/uniform.bin.ele" && pass || fail "txt and bin inputs differ"
+# The seed changes nothing in the output (canonical order).
+expect 0 "seed 7" -- "$ridt" triangulate "$dir/grid.txt" --seed 7 -o "$dir/grid7.ele"
+cmp -s "$dir/grid.txt.ele" "$dir/grid7.ele" && pass || fail "seed changed the output"
+# Same file for the same seed on every run.
+expect 0 "regenerate" -- "$ridt" generate --dist normal -n 2000 --seed 3 -o "$dir/again.txt"
+cmp -s "$dir/normal.txt" "$dir/again.txt" && pass || fail "generate is not reproducible"
+
+# Output formats.
+for ext in ele neigh off obj svg bin; do
+  expect 0 "write .$ext" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/u.$ext"
+  [ -s "$dir/u.$ext" ] && pass || fail "empty .$ext"
+done
+expect 0 "check .bin triangles" -- "$ridt" check "$dir/uniform.txt" "$dir/u.bin"
+head -c 4 "$dir/u.svg" | grep -q '<' && pass || fail "svg does not start with a tag"
+
+# 1-based .node keeps its numbering in .ele.
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1.5\n' >"$dir/one.node"
+expect 0 "1-based node" -- "$ridt" triangulate "$dir/one.node" -o "$dir/one.ele"
+awk 'NR > 1 { for (i = 2; i <= 4; i++) if ($i < 1 || $i > 4) exit 1 }' "$dir/one.ele" && pass || fail "1-based .ele out of range"
+expect 0 "check 1-based" -- "$ridt" check "$dir/one.node" "$dir/one.ele"
+
+# --stats is one JSON object with the promised keys; --profile adds Fig. 8's.
+expect 0 "stats" -- "$ridt" triangulate "$dir/uniform.txt" --stats --profile
+for key in method threads seed points distinct duplicates triangles hull dag_nodes flips \
+  time_read_s time_triangulate_s time_write_s peak_rss_bytes time_locate_s time_split_s time_legalize_s; do
+  stdout_has "\"$key\": "
+done
+[ "$(wc -l <"$dir/out")" -eq 1 ] && pass || fail "stats is not one line"
+if command -v /usr/bin/python3 >/dev/null; then
+  /usr/bin/python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$dir/out" && pass || fail "stats is not JSON"
+fi
+expect 0 "stats table" -- "$ridt" triangulate "$dir/uniform.txt" --stats=table
+stdout_has "^triangles "
+
+# Degenerate input: exit 0, empty output, a warning that says why.
+printf '0 0\n1 1\n2 2\n3 3\n' >"$dir/line.txt"
+expect 0 "collinear" -- "$ridt" triangulate "$dir/line.txt" -o "$dir/line.ele"
+stderr_has "collinear"
+expect 0 "check collinear" -- "$ridt" check "$dir/line.txt" "$dir/line.ele"
+printf '1 1\n1 1\n' >"$dir/two.txt"
+expect 0 "two points" -- "$ridt" triangulate "$dir/two.txt"
+stderr_has "fewer than three"
+
+# The paper's finite bounding triangle with k = 3 loses a hull edge: warned, and check says so.
+printf '0 0\n1 0\n0.5 0.03\n0.5 1\n' >"$dir/flat.txt"
+expect 0 "finite k 3" -- "$ridt" triangulate "$dir/flat.txt" --bounding finite --k 3 -o "$dir/flat.ele"
+stderr_has "lost convex hull edges"
+expect 1 "check finite k 3" -- "$ridt" check "$dir/flat.txt" "$dir/flat.ele"
+stdout_has "^invalid: convex hull edge"
+expect 0 "finite k 10" -- "$ridt" triangulate "$dir/flat.txt" --bounding finite --k 10 -o "$dir/flat10.ele"
+expect 0 "check finite k 10" -- "$ridt" check "$dir/flat.txt" "$dir/flat10.ele"
+
+# Bad input: exit 2, a clear message, no output file created or truncated.
+expect 2 "missing file" -- "$ridt" triangulate "$dir/nope.txt" -o "$dir/bad1.ele"
+stderr_has "cannot read"; absent "$dir/bad1.ele"
+printf '0 0\n1 0\n0 1 oops\n' >"$dir/malformed.txt"
+expect 2 "malformed line" -- "$ridt" triangulate "$dir/malformed.txt" -o "$dir/bad2.ele"
+stderr_has "malformed.txt:3"; absent "$dir/bad2.ele"
+printf '0 0\n1 0\nnan 1\n' >"$dir/nan.txt"
+expect 2 "NaN" -- "$ridt" triangulate "$dir/nan.txt" -o "$dir/bad3.ele"
+stderr_has "NaN"; absent "$dir/bad3.ele"
+printf '0 0\ninf 0\n0 1\n' >"$dir/inf.txt"
+expect 2 "infinity" -- "$ridt" triangulate "$dir/inf.txt" -o "$dir/bad4.ele"
+stderr_has "infinite"; absent "$dir/bad4.ele"
+printf '5 2 0 0\n0 0 0\n1 1 0\n2 0 1\n' >"$dir/short.node"
+expect 2 ".node count" -- "$ridt" triangulate "$dir/short.node" -o "$dir/bad5.ele"
+stderr_has "5"; absent "$dir/bad5.ele"
+expect 2 "unknown option" -- "$ridt" triangulate "$dir/uniform.txt" --frobnicate
+expect 2 "unknown method" -- "$ridt" triangulate "$dir/uniform.txt" --method magic
+stderr_has "unknown method"
+expect 2 "unknown bounding" -- "$ridt" triangulate "$dir/uniform.txt" --bounding huge
+expect 2 "unknown output extension" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/out.xyz"
+stderr_has "unknown output extension"; absent "$dir/out.xyz"
+expect 2 "unknown distribution" -- "$ridt" generate --dist zipf -n 10 -o "$dir/z.txt"
+absent "$dir/z.txt"
+expect 2 "small k" -- "$ridt" triangulate "$dir/uniform.txt" --bounding finite --k 1
+expect 2 "no subcommand" -- "$ridt"
+# An existing output is left untouched when the input is bad.
+echo keep >"$dir/keep.ele"
+expect 2 "bad input keeps old output" -- "$ridt" triangulate "$dir/nan.txt" -o "$dir/keep.ele"
+[ "$(cat "$dir/keep.ele")" = keep ] && pass || fail "old output was touched"
+# SVG refuses politely above its size limit.
+expect 0 "big points" -- "$ridt" generate --dist uniform -n 150000 -o "$dir/big.bin"
+expect 2 "svg too big" -- "$ridt" triangulate "$dir/big.bin" -o "$dir/big.svg"
+stderr_has "too many"; absent "$dir/big.svg"
+
+echo "cli: $passes passed, $fails failed"
+[ "$fails" -eq 0 ]

@@ -1,0 +1,87 @@
+// The validator must reject what is wrong, each for the right reason.
+#include <gtest/gtest.h>
+
+#include "ridt/check.hpp"
+
+namespace ridt {
+namespace {
+
+// A convex quadrilateral whose only Delaunay diagonal is 1-3: the square's far corner pushed
+// out to (2.5, 2.5), outside the circle through the other three.
+const std::vector<Point> kQuad = {{0, 0}, {2, 0}, {2.5, 2.5}, {0, 2}};
+
+TEST(Check, AcceptsTheDelaunayDiagonal) {
+  // (2.5, 2.5) lies outside the circle through (0,0), (2,0), (0,2): diagonal 1-3 is Delaunay.
+  const CheckResult r = check(kQuad, std::vector<VertexId>{0, 1, 3, 1, 2, 3});
+  EXPECT_TRUE(r.valid) << r.message;
+}
+
+TEST(Check, RejectsTheOtherDiagonal) {
+  const CheckResult r = check(kQuad, std::vector<VertexId>{0, 1, 2, 0, 2, 3});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("not locally Delaunay"), std::string::npos) << r.message;
+}
+
+TEST(Check, RejectsClockwiseTriangles) {
+  const CheckResult r = check(kQuad, std::vector<VertexId>{0, 3, 1, 1, 3, 2});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("counter-clockwise"), std::string::npos) << r.message;
+}
+
+TEST(Check, RejectsAMissingTriangle) {
+  const CheckResult r = check(kQuad, std::vector<VertexId>{0, 1, 3});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("not a vertex"), std::string::npos) << r.message;
+}
+
+TEST(Check, RejectsAMissingHullEdge) {
+  // Five points; leaving out the triangle on hull edge 0-1 keeps every point a vertex.
+  const std::vector<Point> pts = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 1}};
+  const CheckResult full = check(pts, std::vector<VertexId>{0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4});
+  ASSERT_TRUE(full.valid) << full.message;
+  const CheckResult r = check(pts, std::vector<VertexId>{1, 2, 4, 2, 3, 4, 3, 0, 4});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("hull edge"), std::string::npos) << r.message;
+}
+
+TEST(Check, RejectsAnEdgeUsedTwice) {
+  const CheckResult r = check(kQuad, std::vector<VertexId>{0, 1, 3, 0, 1, 3, 1, 2, 3});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("used by two"), std::string::npos) << r.message;
+}
+
+TEST(Check, RejectsIndicesOutOfRange) {
+  EXPECT_FALSE(check(kQuad, std::vector<VertexId>{0, 1, 7}).valid);
+}
+
+TEST(Check, RejectsADegenerateTriangle) {
+  const std::vector<Point> pts = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
+  EXPECT_FALSE(check(pts, std::vector<VertexId>{0, 1, 2}).valid);
+}
+
+TEST(Check, EmptyIsValidOnlyForDegenerateSets) {
+  EXPECT_TRUE(check(std::vector<Point>{{0, 0}, {1, 1}, {2, 2}}, {}).valid);
+  EXPECT_TRUE(check(std::vector<Point>{{0, 0}, {0, 0}}, {}).valid);
+  EXPECT_FALSE(check(kQuad, {}).valid);
+}
+
+TEST(Check, AcceptsEitherDiagonalOfACocircularSquare) {
+  const std::vector<Point> sq = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  EXPECT_TRUE(check(sq, std::vector<VertexId>{0, 1, 2, 0, 2, 3}).valid);
+  EXPECT_TRUE(check(sq, std::vector<VertexId>{0, 1, 3, 1, 2, 3}).valid);
+}
+
+TEST(Check, DuplicatesMayBeUnusedButNotBothUsed) {
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
+  EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 1, 2}).valid);
+  EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 3, 2}).valid);
+}
+
+TEST(Check, CollinearHullPointsMustBeVertices) {
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {2, 0}, {1, 1}};
+  EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 1, 3, 1, 2, 3}).valid);
+  EXPECT_FALSE(check(pts, std::vector<VertexId>{0, 2, 3}).valid);
+}
+
+}  // namespace
+}  // namespace ridt

@@ -1,0 +1,517 @@
+// Point and triangle files: exact round trips, every error with its message, and writes that
+// never leave a partial or stray file behind.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io.hpp"
+
+namespace ridt::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class IoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("ridt_io_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  void write_file(const std::string& name, const std::string& content) const {
+    std::ofstream f(path(name), std::ios::binary);
+    f << content;
+    ASSERT_TRUE(f.good());
+  }
+
+  std::string read_file(const std::string& name) const {
+    std::ifstream f(path(name), std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+  }
+
+  /// Names of the files in the directory (to catch stray temporaries).
+  std::vector<std::string> listing() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  /// The message of the IoError that `f` throws ("" and a failure if it throws none).
+  template <class F>
+  static std::string error_of(F&& f) {
+    try {
+      f();
+    } catch (const IoError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no IoError thrown";
+    return "";
+  }
+
+  fs::path dir_;
+};
+
+/// `text` contains `part` (gtest without gmock).
+::testing::AssertionResult Has(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" lacks \"" << part << "\"";
+}
+
+std::vector<Point> tricky_points() {
+  const double two53 = 9007199254740992.0;  // 2^53
+  return {
+      {0.1, 0.2},
+      {1e-300, -1e-300},
+      {-0.0, 0.0},
+      {two53 + 2, -(two53 + 2)},
+      {std::nextafter(two53, 0.0), std::nextafter(1.0, 2.0)},
+      {std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()},
+      {std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min()},
+      {1.0 / 3.0, 123456789.123456789},
+      {-2.5, 1e22},
+      {3.141592653589793, 2.718281828459045},
+  };
+}
+
+/// Equal bit for bit (so -0.0 differs from 0.0).
+void expect_same_bits(const std::vector<Point>& a, const std::vector<Point>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(std::memcmp(&a[i].x, &b[i].x, sizeof(double)), 0) << "point " << i << " x";
+    EXPECT_EQ(std::memcmp(&a[i].y, &b[i].y, sizeof(double)), 0) << "point " << i << " y";
+  }
+}
+
+TEST_F(IoTest, PointRoundTripEveryFormat) {
+  const std::vector<Point> pts = tricky_points();
+  for (const char* name : {"p.txt", "p.xy", "p.node", "p.bin", "noextension"}) {
+    SCOPED_TRACE(name);
+    write_points(path(name), pts);
+    const PointFile back = read_points(path(name));
+    EXPECT_EQ(back.first_index, 0);
+    expect_same_bits(back.points, pts);
+    EXPECT_TRUE(std::signbit(back.points[2].x));
+  }
+  EXPECT_EQ(fs::file_size(path("p.bin")), 16 * pts.size());
+  EXPECT_EQ(listing(), (std::vector<std::string>{"noextension", "p.bin", "p.node", "p.txt", "p.xy"}));
+}
+
+TEST_F(IoTest, WrittenPointFormats) {
+  const std::vector<Point> pts = {{0.1, -2}, {1e-300, 3.5}};
+  write_points(path("p.txt"), pts);
+  EXPECT_EQ(read_file("p.txt"), "0.1 -2\n1e-300 3.5\n");
+  write_points(path("p.node"), pts);
+  EXPECT_EQ(read_file("p.node"), "2 2 0 0\n0 0.1 -2\n1 1e-300 3.5\n");
+  write_points(path("p.bin"), pts);
+  const std::string bin = read_file("p.bin");
+  ASSERT_EQ(bin.size(), 32u);
+  // Little-endian float64: the last byte of -2.0 (0xC000000000000000) is 0xC0.
+  EXPECT_EQ(static_cast<unsigned char>(bin[15]), 0xC0);
+  EXPECT_EQ(static_cast<unsigned char>(bin[8]), 0x00);
+}
+
+TEST_F(IoTest, EmptyPointFiles) {
+  write_points(path("e.txt"), {});
+  write_points(path("e.node"), {});
+  write_points(path("e.bin"), {});
+  EXPECT_EQ(read_file("e.node"), "0 2 0 0\n");
+  for (const char* name : {"e.txt", "e.node", "e.bin"}) EXPECT_TRUE(read_points(path(name)).points.empty());
+}
+
+TEST_F(IoTest, TextCommasCommentsBlankLines) {
+  write_file("c.txt",
+             "# a header comment\n"
+             "\n"
+             "1,2\n"
+             "  3 , 4  # trailing comment\n"
+             "5 ,6\r\n"
+             "\t7,\t8\n"
+             "   \n"
+             "+9 -1e3\n"
+             "1.5e-3 .25");  // no final newline
+  const PointFile f = read_points(path("c.txt"));
+  EXPECT_EQ(f.first_index, 0);
+  EXPECT_EQ(f.points, (std::vector<Point>{{1, 2}, {3, 4}, {5, 6}, {7, 8}, {9, -1000}, {0.0015, 0.25}}));
+}
+
+TEST_F(IoTest, NodeFirstIndexOne) {
+  write_file("one.node",
+             "# Triangle's format\n"
+             "3 2 1 1  # points, dimension, attributes, markers\n"
+             "1 0.5 1.5 7.25 0\n"
+             "\n"
+             "2 -1 2 0 1\n"
+             "3 4 5 1e3 0 # last\n");
+  const PointFile f = read_points(path("one.node"));
+  EXPECT_EQ(f.first_index, 1);
+  EXPECT_EQ(f.points, (std::vector<Point>{{0.5, 1.5}, {-1, 2}, {4, 5}}));
+}
+
+TEST_F(IoTest, NodeFirstIndexZeroAndShortHeader) {
+  write_file("zero.node", "2 2\n0 1 2\n1 3 4\n");
+  const PointFile f = read_points(path("zero.node"));
+  EXPECT_EQ(f.first_index, 0);
+  EXPECT_EQ(f.points, (std::vector<Point>{{1, 2}, {3, 4}}));
+  write_file("empty.node", "0 2 0 0\n");
+  EXPECT_TRUE(read_points(path("empty.node")).points.empty());
+}
+
+TEST_F(IoTest, MissingFile) {
+  const std::string msg = error_of([&] { read_points(path("nope.txt")); });
+  EXPECT_TRUE(Has(msg, "cannot read " + path("nope.txt") + ": "));
+  EXPECT_TRUE(Has(msg, std::strerror(ENOENT)));
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("nope.ele"), 0); }), "cannot read"));
+  EXPECT_TRUE(Has(error_of([&] { read_points(dir_.string()); }), "cannot read"));
+}
+
+TEST_F(IoTest, MalformedTextLineNamesFileAndLine) {
+  write_file("points.txt", "0 0\n# comment\n1.5 abc\n");
+  EXPECT_EQ(error_of([&] { read_points(path("points.txt")); }),
+            path("points.txt") + ":3: expected two numbers \"x y\" or \"x,y\", got \"1.5 abc\"");
+  for (const char* bad : {"1", "1 2 3", "1,2,", ",1 2", "1,,2", "1;2", "1 2x", "0x1 2", "1 - 2",
+                          "1e 2", "+-1 2", "1..2 3"}) {
+    SCOPED_TRACE(bad);
+    write_file("bad.txt", std::string("0 0\n\n") + bad + "\n4 4\n");
+    const std::string msg = error_of([&] { read_points(path("bad.txt")); });
+    EXPECT_TRUE(Has(msg, "bad.txt:3: expected two numbers"));
+    EXPECT_TRUE(Has(msg, std::string("\"") + bad + "\""));
+  }
+}
+
+TEST_F(IoTest, NanAndInfinityRejectedInText) {
+  write_file("n.txt", "0 0\n1 1\nnan 2\n");
+  EXPECT_EQ(error_of([&] { read_points(path("n.txt")); }), path("n.txt") + ":3: coordinate is NaN");
+  write_file("i.txt", "0 0\n1 -inf\n");
+  EXPECT_EQ(error_of([&] { read_points(path("i.txt")); }),
+            path("i.txt") + ":2: coordinate is infinite");
+  write_file("r.txt", "1e400 0\n");
+  EXPECT_EQ(error_of([&] { read_points(path("r.txt")); }),
+            path("r.txt") + ":1: coordinate \"1e400\" is out of range");
+  write_file("n.node", "2 2 0 0\n0 0 0\n1 NaN 1\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("n.node")); }), "n.node:3: coordinate is NaN"));
+  write_file("i.node", "1 2\n0 1 infinity\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("i.node")); }), "i.node:2: coordinate is infinite"));
+}
+
+TEST_F(IoTest, NanAndInfinityRejectedInBin) {
+  std::vector<Point> pts(20, Point{1, 2});
+  pts[12].y = std::numeric_limits<double>::quiet_NaN();
+  // write_points does not judge the values; the reader does.
+  write_points(path("n.bin"), pts);
+  EXPECT_EQ(error_of([&] { read_points(path("n.bin")); }),
+            path("n.bin") + ": point 12 has a NaN coordinate");
+  pts[12].y = 0;
+  pts[3].x = -std::numeric_limits<double>::infinity();
+  write_points(path("i.bin"), pts);
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("i.bin")); }), "point 3 has an infinite coordinate"));
+}
+
+TEST_F(IoTest, BinSizeNotMultipleOf16) {
+  write_file("odd.bin", std::string(17, '\0'));
+  const std::string msg = error_of([&] { read_points(path("odd.bin")); });
+  EXPECT_TRUE(Has(msg, path("odd.bin") + ": "));
+  EXPECT_TRUE(Has(msg, "17"));
+  EXPECT_TRUE(Has(msg, "multiple of 16"));
+  write_file("eight.bin", std::string(8, '\0'));
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("eight.bin")); }), "multiple of 16"));
+}
+
+TEST_F(IoTest, NodeCountMismatch) {
+  write_file("short.node", "5 2 0 0\n0 0 0\n1 1 0\n2 0 1\n");
+  EXPECT_EQ(error_of([&] { read_points(path("short.node")); }),
+            path("short.node") + ": header says 5 points but the file has 3");
+  write_file("long.node", "1 2 0 0\n0 0 0\n1 1 0\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("long.node")); }), "header says 1 points but the file has 2"));
+}
+
+TEST_F(IoTest, NodeBadIndices) {
+  write_file("first.node", "2 2 0 0\n2 0 0\n3 1 0\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("first.node")); }), "first.node:2: the first point index must be 0 or 1, got 2"));
+  write_file("gap.node", "# c\n3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("gap.node")); }), "gap.node:5: expected point index 3, got 4"));
+  write_file("notint.node", "1 2 0 0\n0.5 0 0\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("notint.node")); }), "notint.node:2: "));
+}
+
+TEST_F(IoTest, NodeBadHeaderAndFieldCounts) {
+  write_file("dim.node", "1 3 0 0\n0 0 0 0\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("dim.node")); }), "dim.node:1: dimension is 3"));
+  write_file("hdr.node", "1\n0 0 0\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("hdr.node")); }), "hdr.node:1: expected a header"));
+  write_file("none.node", "# only a comment\n\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("none.node")); }), "none.node: "));
+  write_file("markers.node", "1 2 0 2\n0 0 0 1\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("markers.node")); }), "markers.node:1: "));
+  // Header 1 attribute + marker: 5 fields a line, no more and no fewer.
+  write_file("few.node", "2 2 1 1\n0 0 0 1.5 0\n1 1 1 2.5\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("few.node")); }), "few.node:3: expected 5 fields \"index x y attributes marker\", got \"1 1 1 2.5\""));
+  write_file("many.node", "1 2 0 0\n0 0 0 9\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("many.node")); }), "many.node:2: expected 3 fields"));
+  write_file("word.node", "1 2 0 0\n0 1 abc\n");
+  EXPECT_EQ(error_of([&] { read_points(path("word.node")); }),
+            path("word.node") + ":2: coordinate \"abc\" is not a number");
+  write_file("comma.node", "1 2 0 0\n0 1,2\n");
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("comma.node")); }), "comma.node:2: "));
+}
+
+TEST_F(IoTest, ReadTrianglesEle) {
+  write_file("t.ele", "# triangles\n2 3 0\n1 1 2 3\n2 3 4 1  # c\n");
+  EXPECT_EQ(read_triangles(path("t.ele"), 1), (std::vector<VertexId>{0, 1, 2, 2, 3, 0}));
+  EXPECT_EQ(read_triangles(path("t.ele"), 0), (std::vector<VertexId>{1, 2, 3, 3, 4, 1}));
+  write_file("attr.ele", "1 3 1\n0 0 1 2 0.5\n");
+  EXPECT_EQ(read_triangles(path("attr.ele"), 0), (std::vector<VertexId>{0, 1, 2}));
+  write_file("two.ele", "1 3\n0 5 6 7\n");
+  EXPECT_EQ(read_triangles(path("two.ele"), 0), (std::vector<VertexId>{5, 6, 7}));
+}
+
+TEST_F(IoTest, ReadTrianglesEleErrors) {
+  write_file("neg.ele", "2 3 0\n1 1 2 3\n2 3 0 1\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("neg.ele"), 1); }), "neg.ele:3: vertex index 0 is below the first index 1"));
+  write_file("count.ele", "3 3 0\n0 0 1 2\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("count.ele"), 0); }), "header says 3 triangles but the file has 1"));
+  write_file("gap.ele", "2 3 0\n0 0 1 2\n2 0 1 2\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("gap.ele"), 0); }), "gap.ele:3: "));
+  write_file("six.ele", "1 6 0\n0 0 1 2 3 4 5\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("six.ele"), 0); }), "six.ele:1: "));
+  write_file("field.ele", "1 3 0\n0 0 1\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("field.ele"), 0); }), "field.ele:2: expected 4 fields"));
+  write_file("big.ele", "1 3 0\n0 0 1 99999999999\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("big.ele"), 0); }), "big.ele:2: "));
+}
+
+TEST_F(IoTest, ReadTrianglesBinAndText) {
+  const std::vector<VertexId> tris = {0, 1, 2, 4000000000u, 7, 3};
+  {
+    std::ofstream f(path("t.bin"), std::ios::binary);
+    for (VertexId v : tris) {
+      const unsigned char b[4] = {static_cast<unsigned char>(v), static_cast<unsigned char>(v >> 8),
+                                  static_cast<unsigned char>(v >> 16), static_cast<unsigned char>(v >> 24)};
+      f.write(reinterpret_cast<const char*>(b), 4);
+    }
+  }
+  EXPECT_EQ(read_triangles(path("t.bin"), 0), tris);
+  EXPECT_EQ(read_triangles(path("t.bin"), 1), tris);  // .bin is always 0-based
+  write_file("odd.bin", std::string(13, '\0'));
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("odd.bin"), 0); }), "multiple of 12"));
+
+  write_file("t.txt", "# a b c\n1 2 3\n\n4 5 6 # c\n");
+  EXPECT_EQ(read_triangles(path("t.txt"), 1), (std::vector<VertexId>{0, 1, 2, 3, 4, 5}));
+  EXPECT_EQ(read_triangles(path("t.txt"), 0), (std::vector<VertexId>{1, 2, 3, 4, 5, 6}));
+  write_file("bad.txt", "0 1 2\n0 1\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("bad.txt"), 0); }), "bad.txt:2: expected three vertex indices \"a b c\", got \"0 1\""));
+  write_file("frac.txt", "0 1 2.5\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("frac.txt"), 0); }), "frac.txt:1: "));
+  write_file("neg.txt", "0 1 2\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("neg.txt"), 1); }), "neg.txt:1: vertex index 0 is below the first index 1"));
+  write_file("minus.txt", "0 -1 2\n");
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("minus.txt"), 0); }), "minus.txt:1: "));
+}
+
+/// The unit square split along 0-2, with a duplicate of point 0 at the end (not a vertex).
+struct Square {
+  std::vector<Point> points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+  Triangulation t;
+  Square() {
+    t.triangles = {0, 1, 2, 0, 2, 3};
+    // Triangle 0 (0,1,2): across 0 is edge 1-2 (hull), across 1 is edge 2-0 (triangle 1),
+    // across 2 is edge 0-1 (hull). Triangle 1 (0,2,3): across 2 is edge 0-2 (triangle 0).
+    t.neighbors = {-1, 1, -1, -1, -1, 0};
+    t.hull = {0, 1, 2, 3};
+    t.duplicates = {{4, 0}};
+  }
+};
+
+TEST_F(IoTest, WriteEleReadsBack) {
+  const Square s;
+  write_triangulation(path("z.ele"), s.points, s.t, 0);
+  EXPECT_EQ(read_file("z.ele"), "2 3 0\n0 0 1 2\n1 0 2 3\n");
+  EXPECT_EQ(read_triangles(path("z.ele"), 0), s.t.triangles);
+  write_triangulation(path("o.ele"), s.points, s.t, 1);
+  EXPECT_EQ(read_file("o.ele"), "2 3 0\n1 1 2 3\n2 1 3 4\n");
+  EXPECT_EQ(read_triangles(path("o.ele"), 1), s.t.triangles);
+}
+
+TEST_F(IoTest, WriteBinReadsBack) {
+  const Square s;
+  write_triangulation(path("t.bin"), s.points, s.t, 1);  // first_index does not apply to .bin
+  EXPECT_EQ(fs::file_size(path("t.bin")), 24u);
+  EXPECT_EQ(read_triangles(path("t.bin"), 0), s.t.triangles);
+  const std::string raw = read_file("t.bin");
+  EXPECT_EQ(raw.substr(12, 4), std::string("\0\0\0\0", 4));
+  EXPECT_EQ(raw.substr(16, 4), std::string("\x02\0\0\0", 4));
+}
+
+TEST_F(IoTest, WriteNeigh) {
+  const Square s;
+  write_triangulation(path("z.neigh"), s.points, s.t, 0);
+  EXPECT_EQ(read_file("z.neigh"), "2 3\n0 -1 1 -1\n1 -1 -1 0\n");
+  write_triangulation(path("o.neigh"), s.points, s.t, 1);
+  EXPECT_EQ(read_file("o.neigh"), "2 3\n1 -1 2 -1\n2 -1 -1 1\n");
+}
+
+TEST_F(IoTest, WriteOffAndObj) {
+  Square s;
+  s.points[1] = {0.1, -0.0};
+  write_triangulation(path("t.off"), s.points, s.t, 1);  // 0-based whatever the input numbering
+  EXPECT_EQ(read_file("t.off"),
+            "OFF\n5 2 0\n0 0 0\n0.1 -0 0\n1 1 0\n0 1 0\n0 0 0\n3 0 1 2\n3 0 2 3\n");
+  write_triangulation(path("t.obj"), s.points, s.t, 0);  // always 1-based
+  EXPECT_EQ(read_file("t.obj"),
+            "v 0 0 0\nv 0.1 -0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nf 1 2 3\nf 1 3 4\n");
+}
+
+TEST_F(IoTest, WriteSvg) {
+  const Square s;
+  write_triangulation(path("t.svg"), s.points, s.t, 0);
+  const std::string svg = read_file("t.svg");
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_TRUE(Has(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\""));
+  EXPECT_TRUE(Has(svg, "</svg>\n"));
+  EXPECT_TRUE(Has(svg, "<path "));
+  EXPECT_TRUE(Has(svg, "<polygon "));
+  std::size_t circles = 0;
+  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1))
+    ++circles;
+  EXPECT_EQ(circles, s.points.size());
+  // Each of the 5 edges is drawn once: 5 moves in the path.
+  const std::size_t d = svg.find(" d=\"");
+  ASSERT_NE(d, std::string::npos);
+  const std::string path_data = svg.substr(d, svg.find('"', d + 4) - d);
+  EXPECT_EQ(std::count(path_data.begin(), path_data.end(), 'M'), 5);
+  // y is flipped: point (0, 1) is at the top (y = 0), point (0, 0) at the bottom (y = 1000).
+  EXPECT_TRUE(Has(svg, "<circle cx=\"0\" cy=\"0\""));
+  EXPECT_TRUE(Has(svg, "<circle cx=\"0\" cy=\"1000\""));
+}
+
+TEST_F(IoTest, WriteSvgDegenerateInputs) {
+  Triangulation empty;
+  write_triangulation(path("none.svg"), std::vector<Point>{}, empty, 0);
+  EXPECT_TRUE(Has(read_file("none.svg"), "</svg>"));
+  const double big = std::numeric_limits<double>::max();
+  write_triangulation(path("wide.svg"), std::vector<Point>{{-big, -big}, {big, big}, {5, 5}}, empty, 0);
+  EXPECT_EQ(read_file("wide.svg").find("inf"), std::string::npos);
+  EXPECT_EQ(read_file("wide.svg").find("nan"), std::string::npos);
+}
+
+TEST_F(IoTest, SvgRefusesTooManyTrianglesAndCreatesNothing) {
+  Triangulation t;
+  t.triangles.assign(3 * (kSvgMaxTriangles + 1), 0);
+  const std::vector<Point> pts = {{0, 0}};
+  const std::string msg = error_of([&] { write_triangulation(path("big.svg"), pts, t, 0); });
+  EXPECT_EQ(msg, path("big.svg") + ": " + std::to_string(kSvgMaxTriangles + 1) +
+                     " triangles are too many to draw usefully (at most 200000); write .off or .ele "
+                     "instead");
+  EXPECT_FALSE(fs::exists(path("big.svg")));
+  EXPECT_TRUE(listing().empty());
+  // An existing target is left untouched.
+  write_file("big.svg", "keep");
+  EXPECT_THROW(write_triangulation(path("big.svg"), pts, t, 0), IoError);
+  EXPECT_EQ(read_file("big.svg"), "keep");
+  EXPECT_EQ(listing(), std::vector<std::string>{"big.svg"});
+}
+
+TEST_F(IoTest, TriangulationExtensions) {
+  for (const char* ok : {"a.ele", "a.neigh", "a.off", "a.obj", "a.svg", "a.bin", "dir.x/b.c.ele"})
+    EXPECT_NO_THROW(check_triangulation_extension(ok)) << ok;
+  EXPECT_EQ(error_of([] { check_triangulation_extension("out.xyz"); }),
+            "unknown output extension '.xyz' (use .ele, .neigh, .off, .obj, .svg or .bin)");
+  for (const char* bad : {"out", "out.ELE", "out.txt", "out.node", "ele", "dir.ele/out"}) {
+    SCOPED_TRACE(bad);
+    EXPECT_TRUE(Has(error_of([&] { check_triangulation_extension(bad); }), "unknown output extension"));
+  }
+  const Square s;
+  EXPECT_THROW(write_triangulation(path("t.xyz"), s.points, s.t, 0), IoError);
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(IoTest, MissingDirectoryCreatesNothing) {
+  const Square s;
+  const std::string missing = path("no/such/dir");
+  for (const char* name : {"t.ele", "t.neigh", "t.off", "t.obj", "t.svg", "t.bin"}) {
+    SCOPED_TRACE(name);
+    const std::string target = missing + "/" + name;
+    const std::string msg = error_of([&] { write_triangulation(target, s.points, s.t, 0); });
+    EXPECT_TRUE(Has(msg, "cannot write " + target + ": "));
+    EXPECT_FALSE(fs::exists(target));
+  }
+  for (const char* name : {"p.txt", "p.node", "p.bin"}) {
+    SCOPED_TRACE(name);
+    const std::string target = missing + "/" + name;
+    EXPECT_TRUE(Has(error_of([&] { write_points(target, s.points); }), "cannot write " + target));
+  }
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(IoTest, WriteReplacesTargetAndLeavesNoTemporary) {
+  const Square s;
+  write_file("t.ele", "old content that is longer than the new one ............................\n");
+  write_triangulation(path("t.ele"), s.points, s.t, 0);
+  EXPECT_EQ(read_file("t.ele"), "2 3 0\n0 0 1 2\n1 0 2 3\n");
+  write_points(path("p.txt"), s.points);
+  write_points(path("p.txt"), std::vector<Point>{{1, 2}});
+  EXPECT_EQ(read_file("p.txt"), "1 2\n");
+  EXPECT_EQ(listing(), (std::vector<std::string>{"p.txt", "t.ele"}));
+}
+
+TEST_F(IoTest, BadTriangulationsAreRefused) {
+  Square s;
+  Triangulation no_neighbors = s.t;
+  no_neighbors.neighbors.clear();
+  EXPECT_THROW(write_triangulation(path("t.neigh"), s.points, no_neighbors, 0), IoError);
+  Triangulation out_of_range = s.t;
+  out_of_range.triangles[4] = 9;
+  for (const char* name : {"t.off", "t.obj", "t.svg"})
+    EXPECT_THROW(write_triangulation(path(name), s.points, out_of_range, 0), IoError) << name;
+  EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(IoTest, LargeRoundTrip) {
+  // A quarter of a million points and half a million triangles through every format.
+  std::vector<Point> pts;
+  std::uint64_t state = 12345;
+  const auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) * 0x1p-53 * 2000 - 1000;
+  };
+  for (int i = 0; i < 250000; ++i) pts.push_back({next(), next()});
+  for (const char* name : {"big.txt", "big.node", "big.bin"}) {
+    write_points(path(name), pts);
+    EXPECT_EQ(read_points(path(name)).points, pts) << name;
+  }
+  Triangulation t;
+  for (VertexId k = 0; k < 500000; ++k) {
+    t.triangles.insert(t.triangles.end(), {k % 250000, (k * 7 + 1) % 250000, (k * 13 + 2) % 250000});
+  }
+  for (int first : {0, 1}) {
+    write_triangulation(path("big.ele"), pts, t, first);
+    EXPECT_EQ(read_triangles(path("big.ele"), first), t.triangles);
+  }
+  write_triangulation(path("big.bin"), pts, t, 0);
+  EXPECT_EQ(read_triangles(path("big.bin"), 0), t.triangles);
+}
+
+}  // namespace
+}  // namespace ridt::io

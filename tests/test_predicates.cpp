@@ -1,0 +1,143 @@
+// Predicates on hard cases: near-collinear, exactly and nearly cocircular, extreme scales,
+// integers near 2^53, and the symbolic perturbation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "predicates.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// Exact orientation for points whose coordinates are integers times 2^-53 below 2^53 in
+// magnitude: the determinant fits in 128-bit integers.
+int orient_reference(Point a, Point b, Point c) {
+  auto i = [](double v) { return static_cast<__int128>(std::ldexp(v, 53)); };
+  const __int128 det = (i(a.x) - i(c.x)) * (i(b.y) - i(c.y)) - (i(a.y) - i(c.y)) * (i(b.x) - i(c.x));
+  return (det > 0) - (det < 0);
+}
+
+TEST(Orient2d, SimpleSigns) {
+  EXPECT_EQ(orient2d({0, 0}, {1, 0}, {0, 1}), 1);
+  EXPECT_EQ(orient2d({0, 0}, {0, 1}, {1, 0}), -1);
+  EXPECT_EQ(orient2d({0, 0}, {1, 1}, {2, 2}), 0);
+}
+
+// Shewchuk's classic: a 256 x 256 grid of points one ulp apart near (0.5, 0.5) against the
+// line through (12, 12) and (24, 24); naive evaluation gets many of these wrong.
+TEST(Orient2d, NearCollinearGridMatchesExactReference) {
+  const double ulp = std::ldexp(1.0, -53);
+  const Point b{12, 12}, c{24, 24};
+  int zeros = 0, checked = 0;
+  for (int i = 0; i < 256; ++i)
+    for (int j = 0; j < 256; ++j) {
+      const Point a{0.5 + i * ulp, 0.5 + j * ulp};
+      const int s = orient2d(a, b, c);
+      ASSERT_EQ(s, orient_reference(a, b, c)) << i << " " << j;
+      zeros += s == 0;
+      ++checked;
+    }
+  EXPECT_EQ(zeros, 256);  // exactly the diagonal i == j is collinear
+  EXPECT_EQ(checked, 65536);
+}
+
+TEST(Orient2d, ExtremeScalesArePowerOfTwoInvariant) {
+  const Point a{0.1, 0.3}, b{0.7, 0.2}, c{0.4, 0.9};
+  const Point p{0.3, 0.3}, q{0.6, 0.6}, r{0.9, 0.9 + std::ldexp(1.0, -52)};
+  for (int e : {-1000, -500, -150, 0, 150, 500, 900}) {
+    auto s = [e](Point v) { return Point{std::ldexp(v.x, e), std::ldexp(v.y, e)}; };
+    EXPECT_EQ(orient2d(s(a), s(b), s(c)), orient2d(a, b, c)) << e;
+    EXPECT_EQ(orient2d(s(p), s(q), s(r)), 1) << e;
+    EXPECT_EQ(orient2d(s(p), s(q), s({1.2, 1.2})), 0) << e;
+  }
+}
+
+TEST(Orient2d, MixedMagnitudes) {
+  // A point 1e-300 off a line through points of size 1e300: only exact arithmetic sees it.
+  EXPECT_EQ(orient2d({-1e300, 0}, {1e300, 0}, {0, 1e-300}), 1);
+  EXPECT_EQ(orient2d({-1e300, 0}, {1e300, 0}, {5, -1e-300}), -1);
+  EXPECT_EQ(orient2d({-1e300, 0}, {1e300, 0}, {1e-300, 0}), 0);
+  // Products overflow double here; the sign is still exact.
+  EXPECT_EQ(orient2d({1e200, 1e200}, {-1e200, 1e200}, {0, 1e200 * (1 - 1e-16)}), 1);
+}
+
+TEST(Orient2d, IntegersNear2To53) {
+  const double c = std::ldexp(1.0, 53) - 16;
+  EXPECT_EQ(orient2d({c, c}, {c + 3, c + 3}, {c + 7, c + 7}), 0);
+  EXPECT_EQ(orient2d({c, c}, {c + 3, c + 3}, {c + 7, c + 8}), 1);
+  EXPECT_EQ(orient2d({c, c}, {c + 3, c + 3}, {c + 8, c + 7}), -1);
+}
+
+TEST(Incircle, UnitCircleExactAndOneUlpOff) {
+  const Point a{1, 0}, b{0, 1}, c{-1, 0};
+  EXPECT_EQ(incircle(a, b, c, {0, -1}), 0);
+  EXPECT_EQ(incircle(a, b, c, {0, std::nextafter(-1.0, 0.0)}), 1);
+  EXPECT_EQ(incircle(a, b, c, {0, std::nextafter(-1.0, -2.0)}), -1);
+  EXPECT_EQ(incircle(a, b, c, {0, 0}), 1);
+  EXPECT_EQ(incircle(a, b, c, {5, 5}), -1);
+}
+
+TEST(Incircle, CocircularIntegerPointsNear2To53) {
+  // Points at distance 5 from (c, c): (3,4), (-3,4), (5,0), (0,-5) and so on.
+  for (double c : {0.0, 1e15, std::ldexp(1.0, 52), std::ldexp(1.0, 53) - 16}) {
+    const Point a{c + 5, c}, b{c + 3, c + 4}, d{c - 3, c + 4};
+    EXPECT_EQ(incircle(a, b, d, {c, c - 5}), 0) << c;
+    EXPECT_EQ(incircle(a, b, d, {c - 4, c - 3}), 0) << c;
+    EXPECT_EQ(incircle(a, b, d, {c + 5, c + 1}), -1) << c;  // 26 > 25
+    EXPECT_EQ(incircle(a, b, d, {c + 4, c - 2}), 1) << c;   // 20 < 25
+  }
+}
+
+TEST(Incircle, ExtremeScales) {
+  const Point a{1, 0}, b{0, 1}, c{-1, 0}, on{0, -1}, in{0.5, 0.5}, out{1, 1};
+  for (int e : {-1070, -1000, -600, -500, -150, 150, 500, 600, 1000}) {
+    auto s = [e](Point v) { return Point{std::ldexp(v.x, e), std::ldexp(v.y, e)}; };
+    EXPECT_EQ(incircle(s(a), s(b), s(c), s(on)), 0) << e;
+    EXPECT_EQ(incircle(s(a), s(b), s(c), s(in)), 1) << e;
+    EXPECT_EQ(incircle(s(a), s(b), s(c), s(out)), -1) << e;
+  }
+}
+
+TEST(Incircle, NearlyCocircularAfterShift) {
+  // Shifted by 1e15, the unit square's corners stay exact and cocircular; moving the fourth
+  // corner by one unit in the last place decides the sign.
+  const double s = 1e15;
+  const Point a{s, s}, b{s + 1, s}, c{s + 1, s + 1};
+  EXPECT_EQ(incircle(a, b, c, {s, s + 1}), 0);
+  EXPECT_EQ(incircle(a, b, c, {s, std::nextafter(s + 1, 0.0)}), 1);
+  EXPECT_EQ(incircle(a, b, c, {s, std::nextafter(s + 1, 2 * s)}), -1);
+}
+
+TEST(IncircleSos, NeverZeroAndConsistentOnCocircularQuads) {
+  // Corners of squares and of the 3-4-5 circle, in counter-clockwise order.
+  const Point quads[][4] = {
+      {{0, 0}, {1, 0}, {1, 1}, {0, 1}},
+      {{5, 0}, {3, 4}, {-3, 4}, {0, -5}},
+      {{1e15, 1e15}, {1e15 + 2, 1e15}, {1e15 + 2, 1e15 + 2}, {1e15, 1e15 + 2}},
+  };
+  for (const auto& q : quads) {
+    for (int r = 0; r < 4; ++r) {
+      const Point& a = q[r];
+      const Point& b = q[(r + 1) % 4];
+      const Point& c = q[(r + 2) % 4];
+      const Point& d = q[(r + 3) % 4];
+      ASSERT_EQ(incircle(a, b, c, d), 0);
+      const int s = incircle_sos(a, b, c, d);
+      EXPECT_NE(s, 0);
+      // The same circle test under rotation of the triangle.
+      EXPECT_EQ(s, incircle_sos(b, c, a, d));
+      EXPECT_EQ(s, incircle_sos(c, a, b, d));
+      // Exactly one diagonal of the quad is legal: a c is legal iff b d is not.
+      EXPECT_EQ(s, -incircle_sos(b, c, d, a));
+    }
+  }
+}
+
+TEST(IncircleSos, AgreesWithExactWhenNotCocircular) {
+  const Point a{0, 0}, b{4, 0}, c{0, 3};
+  EXPECT_EQ(incircle_sos(a, b, c, {1, 1}), 1);
+  EXPECT_EQ(incircle_sos(a, b, c, {9, 9}), -1);
+}
+
+}  // namespace
+}  // namespace ridt::detail

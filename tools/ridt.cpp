@@ -1,0 +1,193 @@
+// ridt: the command-line tool.
+//   ridt triangulate INPUT [-o OUTPUT] [--seed S] [--bounding symbolic|finite] [--k K]
+//                          [--stats[=json|table]] [--profile]
+//   ridt generate --dist uniform|normal|grid|clusters -n N [--seed S] -o FILE
+//   ridt check POINTS TRIANGLES
+// Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage.
+#include <sys/resource.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "generate.hpp"
+#include "io.hpp"
+#include "ridt/check.hpp"
+#include "ridt/ridt.hpp"
+
+namespace {
+
+constexpr int kExitInvalid = 1;
+constexpr int kExitUsage = 2;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+long long peak_rss_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<long long>(u.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+struct TriangulateArgs {
+  std::string input, output, bounding = "symbolic", method = "serial", stats;
+  std::uint64_t seed = 1;
+  double k = 10;
+  bool profile = false;
+};
+
+void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double t_read,
+                 double t_write, bool table) {
+  const ridt::Stats& s = t.stats;
+  struct Field {
+    const char* key;
+    std::string value;
+  };
+  auto num = [](double v) {
+    std::ostringstream o;
+    o.precision(6);
+    o << v;
+    return o.str();
+  };
+  std::vector<Field> f = {
+      {"method", "\"" + a.method + "\""},
+      {"threads", "1"},
+      {"seed", std::to_string(a.seed)},
+      {"bounding", "\"" + a.bounding + "\""},
+      {"points", std::to_string(s.points)},
+      {"distinct", std::to_string(s.distinct)},
+      {"duplicates", std::to_string(s.duplicates)},
+      {"triangles", std::to_string(t.size())},
+      {"hull", std::to_string(t.hull.size())},
+      {"dag_nodes", std::to_string(s.dag_nodes)},
+      {"flips", std::to_string(s.flips)},
+      {"edge_splits", std::to_string(s.edge_splits)},
+      {"time_read_s", num(t_read)},
+      {"time_triangulate_s", num(s.time_triangulate_s)},
+      {"time_write_s", num(t_write)},
+  };
+  if (a.profile) {
+    f.push_back({"time_locate_s", num(s.time_locate_s)});
+    f.push_back({"time_split_s", num(s.time_split_s)});
+    f.push_back({"time_legalize_s", num(s.time_legalize_s)});
+  }
+  f.push_back({"peak_rss_bytes", std::to_string(peak_rss_bytes())});
+  if (table) {
+    for (const Field& x : f) std::printf("%-20s %s\n", x.key, x.value.c_str());
+    return;
+  }
+  std::printf("{");
+  for (std::size_t i = 0; i < f.size(); ++i)
+    std::printf("%s\"%s\": %s", i ? ", " : "", f[i].key, f[i].value.c_str());
+  std::printf("}\n");
+}
+
+int run_triangulate(const TriangulateArgs& a) {
+  ridt::Options o;
+  o.seed = a.seed;
+  o.k = a.k;
+  o.profile = a.profile;
+  o.canonical_order = !a.output.empty();  // files are identical for every seed and method
+  if (a.bounding == "symbolic") {
+    o.bounding = ridt::Bounding::Symbolic;
+  } else if (a.bounding == "finite") {
+    o.bounding = ridt::Bounding::Finite;
+  } else {
+    throw ridt::InputError("unknown bounding '" + a.bounding + "' (use symbolic or finite)");
+  }
+  if (a.method != "serial") throw ridt::InputError("unknown method '" + a.method + "' (use serial)");
+  if (a.stats != "" && a.stats != "json" && a.stats != "table")
+    throw ridt::InputError("unknown stats format '" + a.stats + "' (use json or table)");
+  if (!a.output.empty()) ridt::io::check_triangulation_extension(a.output);
+
+  auto t0 = std::chrono::steady_clock::now();
+  const ridt::io::PointFile in = ridt::io::read_points(a.input);
+  const double t_read = seconds_since(t0);
+  const ridt::Triangulation t = ridt::triangulate(in.points, o);
+  if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
+  t0 = std::chrono::steady_clock::now();
+  if (!a.output.empty()) ridt::io::write_triangulation(a.output, in.points, t, in.first_index);
+  const double t_write = seconds_since(t0);
+  if (!a.stats.empty() || a.profile) print_stats(a, t, t_read, t_write, a.stats == "table");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
+  app.require_subcommand(1);
+
+  TriangulateArgs ta;
+  CLI::App* tri = app.add_subcommand("triangulate", "triangulate a point file");
+  tri->add_option("input", ta.input, "points: .node, .bin (float64 pairs) or text")->required();
+  tri->add_option("-o,--output", ta.output, "triangles: .ele, .neigh, .off, .obj, .svg or .bin");
+  tri->add_option("--seed", ta.seed, "seed of the random insertion order");
+  tri->add_option("--method", ta.method, "serial");
+  tri->add_option("--bounding", ta.bounding, "symbolic (default) or finite");
+  tri->add_option("--k", ta.k, "finite bounding triangle: K = k * box size (default 10)");
+  CLI::Option* stats = tri->add_option("--stats", ta.stats, "print counters and times: json (default) or table")
+                           ->expected(0, 1);
+  tri->add_flag("--profile", ta.profile, "time location, split and legalization (Fig. 8)");
+
+  std::string dist, gen_out;
+  std::uint32_t gen_n = 0;
+  std::uint64_t gen_seed = 1;
+  CLI::App* gen = app.add_subcommand("generate", "write points of one of the paper's distributions");
+  gen->add_option("--dist", dist, "uniform, normal, grid or clusters")->required();
+  gen->add_option("-n", gen_n, "number of points")->required();
+  gen->add_option("--seed", gen_seed, "seed");
+  gen->add_option("-o,--output", gen_out, "output: .node, .bin or text")->required();
+
+  std::string check_points, check_tris;
+  CLI::App* chk = app.add_subcommand("check", "validate a triangulation exactly");
+  chk->add_option("points", check_points, "the points")->required();
+  chk->add_option("triangles", check_tris, "the triangles: .ele, .bin or text")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "ridt: error: %s\nrun 'ridt --help' for usage\n", e.what());
+    return kExitUsage;
+  }
+
+  try {
+    if (*tri) {
+      if (*stats && ta.stats.empty()) ta.stats = "json";
+      return run_triangulate(ta);
+    }
+    if (*gen) {
+      const auto d = ridt::parse_distribution(dist);
+      if (!d)
+        throw ridt::InputError("unknown distribution '" + dist +
+                               "' (use uniform, normal, grid or clusters)");
+      ridt::io::write_points(gen_out, ridt::generate(*d, gen_n, gen_seed));
+      return 0;
+    }
+    if (*chk) {
+      const ridt::io::PointFile p = ridt::io::read_points(check_points);
+      const auto t = ridt::io::read_triangles(check_tris, p.first_index);
+      const ridt::CheckResult r = ridt::check(p.points, t);
+      std::printf("%s\n", r.message.c_str());
+      return r.valid ? 0 : kExitInvalid;
+    }
+  } catch (const ridt::io::IoError& e) {
+    std::fprintf(stderr, "ridt: error: %s\n", e.what());
+    return kExitUsage;
+  } catch (const ridt::InputError& e) {
+    std::fprintf(stderr, "ridt: error: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ridt: internal error: %s\n", e.what());
+    return 3;
+  }
+  return kExitUsage;
+}
