@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what building and testing ridt needs from Debian 12, if it is missing.
+# Usage: scripts/deps.sh [build|test]
+set -euo pipefail
+packages=(g++ cmake ninja-build libcli11-dev)
+if [ "${1:-build}" = test ]; then
+  packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

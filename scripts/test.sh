@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
+# and UndefinedBehaviorSanitizer, and a consumer project that uses find_package(ridt).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/deps.sh test
+jobs=$(nproc)
+
+echo "== Release build and tests"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$jobs"
+ctest --test-dir build -j "$jobs" --output-on-failure
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer"
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=address,undefined \
+  -DRIDT_BUILD_BENCH=OFF >/dev/null
+cmake --build build-asan -j "$jobs"
+UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
+  ctest --test-dir build-asan -j "$jobs" --output-on-failure
+
+echo "== Install and find_package(ridt)"
+rm -rf build/install build/consumer
+cmake --install build --prefix build/install >/dev/null
+cmake -S tests/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
+cmake --build build/consumer
+build/consumer/consumer
+echo "all tests passed"
