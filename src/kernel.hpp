@@ -93,6 +93,21 @@ class Kernel {
   }
 
   void prefetch(TriangleId t) const { __builtin_prefetch(&tris_[t]); }
+  /// Prefetches the second ring around leaf t, once its neighbours are in cache: the
+  /// neighbours' far vertices and their other neighbours, which the first flips read.
+  void prefetch_ring(TriangleId t) const {
+    const Triangle& r = tris_[t];
+    if (r.load_child() != 0) return;  // split since: its n[] no longer names neighbours
+    for (int i = 0; i < 3; ++i) {
+      if (r.n[i] == kNone) continue;
+      const Triangle& u = tris_[r.n[i]];
+      if (u.load_child() != 0) continue;  // split since: the insertion will find out
+      for (int j = 0; j < 3; ++j) {
+        __builtin_prefetch(&points_[u.v[j]]);
+        if (u.n[j] != kNone && u.n[j] != t) __builtin_prefetch(&tris_[u.n[j]]);
+      }
+    }
+  }
   /// Prefetches what inserting into leaf t will read: its neighbours and its vertices.
   void prefetch_around(TriangleId t) const {
     const Triangle& r = tris_[t];

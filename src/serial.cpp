@@ -23,14 +23,19 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
     // instead of following one another. The order of insertion, and so the result, is the
     // paper's; only the memory traffic changes.
     constexpr VertexId kWindow = 128;  // well above the DAG's mean depth, 46 for 10^6 points
-    enum State : std::uint8_t { kDescending, kAtLeaf };
+    enum State : std::uint8_t { kDescending, kAtLeaf, kDone };
     TriangleId hint[kWindow];
     State state[kWindow];
     for (VertexId k = 0; k < kWindow; ++k) hint[k] = Kernel::kRoot, state[k] = kDescending;
     for (VertexId p = 0; p < n; ++p) {
       for (VertexId q = p + 1; q < p + kWindow && q < n; ++q) {
         const VertexId k = q % kWindow;
-        if (state[k] == kAtLeaf) continue;
+        if (state[k] == kDone) continue;
+        if (state[k] == kAtLeaf) {
+          kernel.prefetch_ring(hint[k]);
+          state[k] = kDone;
+          continue;
+        }
         const TriangleId next = kernel.step(hint[k], q);
         if (next == hint[k]) {
           kernel.prefetch_around(next);  // what the insertion into this leaf will read
