@@ -17,7 +17,8 @@ bool between(const Point& p, const Point& a, const Point& b) {
 }  // namespace
 
 Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic)
-    : points_(std::move(points)), n_(n), symbolic_(symbolic) {
+    : points_(std::move(points)), n_(n), symbolic_(symbolic),
+      tris_(std::uint64_t{n} * 9 + 16) {  // about 9 records a point: 3 from the split, 2 a flip
   const TriangleId root = tris_.allocate(1);
   make(root, n, n + 1, n + 2, kNone, kNone, kNone);
   stack_.reserve(64);

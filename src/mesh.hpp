@@ -61,7 +61,8 @@ class TriangleStore {
   static constexpr std::uint32_t kChunkSize = 1u << kChunkBits;
   static constexpr std::uint32_t kMaxChunks = (kIdMask + 1u) >> kChunkBits;
 
-  TriangleStore() : chunks_(new std::unique_ptr<Triangle[], FreeDeleter>[kMaxChunks]) {}
+  /// `expected`: about how many records will be made.
+  explicit TriangleStore(std::uint64_t expected = kChunkSize) : expected_(expected), chunks_(new std::unique_ptr<Triangle[], FreeDeleter>[kMaxChunks]) {}
 
   Triangle& operator[](TriangleId t) { return chunks_[t >> kChunkBits][t & (kChunkSize - 1)]; }
   const Triangle& operator[](TriangleId t) const {
@@ -74,7 +75,9 @@ class TriangleStore {
     const std::uint64_t end = std::uint64_t{size_} + count;
     if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
     while (capacity_ < end) {
-      chunks_[capacity_ >> kChunkBits] = allocate_huge<Triangle>(kChunkSize);
+      // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
+      chunks_[capacity_ >> kChunkBits] =
+          allocate_huge<Triangle>(kChunkSize, capacity_ > 0 || expected_ >= kChunkSize / 4);
       capacity_ += kChunkSize;
     }
     size_ = static_cast<std::uint32_t>(end);
@@ -84,6 +87,7 @@ class TriangleStore {
   std::uint32_t size() const { return size_; }
 
  private:
+  std::uint64_t expected_;
   std::unique_ptr<std::unique_ptr<Triangle[], FreeDeleter>[]> chunks_;
   std::uint32_t size_ = 0;
   std::uint64_t capacity_ = 0;

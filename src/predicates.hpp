@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
 
 #include "ridt/ridt.hpp"
 
@@ -31,6 +33,22 @@ inline constexpr double kIncircleBound = (10.0 + 96.0 * kEps) * kEps;
 inline constexpr double kOrientUnderflow = 0x1p-1073;
 
 int orient2d_exact(const Point& a, const Point& b, const Point& c);
+
+/// True when x is an integer of magnitude below 2^52: differences of such numbers are exact.
+inline bool small_integer(double x) {
+  return std::fabs(x) < 0x1p52 && static_cast<double>(static_cast<std::int64_t>(x)) == x;
+}
+
+/// When the filter cannot decide, integer points with small differences (grids) still have
+/// an exact floating-point determinant: every difference, product and sum is an integer below
+/// 2^53. `limit` bounds the differences for that: 2^25 for orient2d (|det| <= 2 * 2^50),
+/// 2^12 for incircle (|det| <= 12 * 2^48).
+inline bool exact_in_double(std::initializer_list<double> coords, double m, double limit) {
+  if (!(m <= limit)) return false;
+  for (double x : coords)
+    if (!small_integer(x)) return false;
+  return true;
+}
 int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& d);
 
 /// Sign of the orientation of (a, b, c): +1 if counter-clockwise, -1 if clockwise, 0 if
@@ -45,6 +63,8 @@ inline int orient2d(const Point& a, const Point& b, const Point& c) {
   if (det > bound) return 1;
   if (det < -bound) return -1;
   // NaN from an overflow fails both tests and lands here too.
+  const double m = std::max({std::fabs(acx), std::fabs(bcx), std::fabs(acy), std::fabs(bcy)});
+  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y}, m, 0x1p25)) return (det > 0) - (det < 0);
   return orient2d_exact(a, b, c);
 }
 
@@ -74,6 +94,8 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
   const double bound = kIncircleBound * permanent + 0x1p-1070 * (m * m + 0.125);
   if (det > bound) return 1;
   if (det < -bound) return -1;
+  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, m, 0x1p12))
+    return (det > 0) - (det < 0);
   return incircle_exact(a, b, c, d);
 }
 
