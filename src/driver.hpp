@@ -25,4 +25,8 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
                      const std::vector<DuplicateHit>& duplicates, const Options& options);
 
+/// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
+/// neighbours: the output no longer depends on the order of insertion.
+void canonicalize(Triangulation& out);
+
 }  // namespace ridt::detail

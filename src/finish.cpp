@@ -8,10 +8,6 @@
 #include "driver.hpp"
 
 namespace ridt::detail {
-namespace {
-
-// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
-// neighbours: the output no longer depends on the order of insertion.
 void canonicalize(Triangulation& out) {
   const std::size_t count = out.size();
   auto& tv = out.triangles;
@@ -41,8 +37,6 @@ void canonicalize(Triangulation& out) {
   tv.swap(v2);
   tn.swap(n2);
 }
-
-}  // namespace
 
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
                      const std::vector<DuplicateHit>& duplicates, const Options& options) {
@@ -152,7 +146,6 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
           ") lost convex hull edges: the result is not the Delaunay triangulation of the "
           "points; use the symbolic bounding triangle";
   }
-  if (options.canonical_order) canonicalize(out);
   return out;
 }
 

@@ -52,15 +52,20 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
     }
   }
 
-  detail::Kernel kernel(std::move(pts), n, symbolic);
-  std::vector<detail::DuplicateHit> duplicates;
+  Triangulation out;
   Stats stats;
-  switch (options.method) {
-    case Method::Serial:
-      detail::insert_serial(kernel, options.profile, duplicates, stats);
-      break;
+  {
+    detail::Kernel kernel(std::move(pts), n, symbolic);
+    std::vector<detail::DuplicateHit> duplicates;
+    switch (options.method) {
+      case Method::Serial:
+        detail::insert_serial(kernel, options.profile, duplicates, stats);
+        break;
+    }
+    out = detail::finish(kernel, order, duplicates, options);
   }
-  Triangulation out = detail::finish(kernel, order, duplicates, options);
+  // After the DAG is gone, so that the sort's copies do not raise the peak.
+  if (options.canonical_order) detail::canonicalize(out);
   out.stats.time_locate_s = stats.time_locate_s;
   out.stats.time_split_s = stats.time_split_s;
   out.stats.time_legalize_s = stats.time_legalize_s;
