@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
-# and UndefinedBehaviorSanitizer, and a consumer project that uses find_package(ridt).
+# and UndefinedBehaviorSanitizer, the threaded tests under ThreadSanitizer, and a consumer
+# project that uses find_package(ridt).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh test
@@ -17,6 +18,12 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANIT
 cmake --build build-asan -j "$jobs"
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure
+
+echo "== ThreadSanitizer: the threaded tests"
+cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=thread \
+  -DRIDT_BUILD_BENCH=OFF -DRIDT_BUILD_TOOLS=OFF >/dev/null
+cmake --build build-tsan -j "$jobs" --target ridt_thread_tests
+TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/ridt_thread_tests
 
 echo "== Install and find_package(ridt)"
 rm -rf build/install build/consumer

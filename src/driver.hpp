@@ -19,6 +19,10 @@ struct DuplicateHit {
 void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
                    Stats& stats);
 
+/// The paper's Fig. 10 with `threads` workers (pessimistic.cpp).
+void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
+                        std::vector<DuplicateHit>& duplicates, Stats& stats);
+
 /// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
 /// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
 /// point input_index[v].

@@ -2,6 +2,7 @@
 #include <chrono>
 
 #include "driver.hpp"
+#include "lookahead.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -16,40 +17,11 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
                    Stats& stats) {
   const VertexId n = kernel.n();
   if (!profile) {
-    // Location with look-ahead. A DAG node's region never changes, so a point may start its
-    // descent early and stop at any node: the descent resumes from there when the point's
-    // turn comes, whatever was inserted meanwhile. The next kWindow points each go one level
-    // down per insertion and prefetch the record they reach, so their cache misses overlap
-    // instead of following one another. The order of insertion, and so the result, is the
-    // paper's; only the memory traffic changes.
-    constexpr VertexId kWindow = 128;  // well above the DAG's mean depth, 46 for 10^6 points
-    enum State : std::uint8_t { kDescending, kAtLeaf, kDone };
-    TriangleId hint[kWindow];
-    State state[kWindow];
-    for (VertexId k = 0; k < kWindow; ++k) hint[k] = Kernel::kRoot, state[k] = kDescending;
+    LookAhead ahead(kernel, 0, 1, n, /*ring=*/true);
     for (VertexId p = 0; p < n; ++p) {
-      for (VertexId q = p + 1; q < p + kWindow && q < n; ++q) {
-        const VertexId k = q % kWindow;
-        if (state[k] == kDone) continue;
-        if (state[k] == kAtLeaf) {
-          kernel.prefetch_ring(hint[k]);
-          state[k] = kDone;
-          continue;
-        }
-        const TriangleId next = kernel.step(hint[k], q);
-        if (next == hint[k]) {
-          kernel.prefetch_around(next);  // what the insertion into this leaf will read
-          state[k] = kAtLeaf;
-        } else {
-          kernel.prefetch(next);
-          hint[k] = next;
-        }
-      }
-      const VertexId k = p % kWindow;
-      const Kernel::Location where = kernel.classify(kernel.descend(hint[k], p), p);
-      const VertexId hit = kernel.insert_at(where, p);
+      const TriangleId start = ahead.take(p).node;
+      const VertexId hit = kernel.insert_at(kernel.classify(kernel.descend(start, p), p), p);
       if (hit != kNone) duplicates.push_back({p, hit});
-      hint[k] = Kernel::kRoot, state[k] = kDescending;  // the slot passes to point p + kWindow
     }
     return;
   }

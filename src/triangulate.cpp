@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <thread>
+#include <algorithm>
 
 #include "driver.hpp"
 #include "order.hpp"
@@ -22,6 +24,13 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
                        (std::isnan(points[i].x) || std::isnan(points[i].y) ? "NaN" : "infinite") +
                        " coordinate");
   const bool symbolic = options.bounding == Bounding::Symbolic;
+  unsigned threads = 1;
+  if (options.method != Method::Serial) {
+    threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    if (threads > 1024) throw InputError("at most 1024 threads (got " + std::to_string(threads) + ")");
+  }
+  if (options.profile && options.method != Method::Serial)
+    throw InputError("profiling (Fig. 8) times the serial method only");
   if (!symbolic && !(options.k >= 2))
     throw InputError("the finite bounding triangle needs k >= 2 (got " +
                      std::to_string(options.k) + ")");
@@ -57,15 +66,29 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   {
     detail::Kernel kernel(std::move(pts), n, symbolic);
     std::vector<detail::DuplicateHit> duplicates;
+    const auto t_insert = std::chrono::steady_clock::now();
     switch (options.method) {
       case Method::Serial:
         detail::insert_serial(kernel, options.profile, duplicates, stats);
         break;
+      case Method::Pessimistic:
+        stats.threads = threads;
+        detail::insert_pessimistic(kernel, threads, options.paper_locking, options.time_threads,
+                                   duplicates, stats);
+        break;
     }
+    stats.time_insert_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_insert).count();
+    if (stats.per_thread.empty()) stats.per_thread.push_back({n, stats.time_insert_s, 0, 0});
     out = detail::finish(kernel, order, duplicates, options);
   }
   // After the DAG is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out);
+  out.stats.threads = stats.threads;
+  out.stats.time_insert_s = stats.time_insert_s;
+  out.stats.time_critical_s = stats.time_critical_s;
+  out.stats.time_wait_s = stats.time_wait_s;
+  out.stats.per_thread = std::move(stats.per_thread);
   out.stats.time_locate_s = stats.time_locate_s;
   out.stats.time_split_s = stats.time_split_s;
   out.stats.time_legalize_s = stats.time_legalize_s;

@@ -37,7 +37,8 @@ struct TriangulateArgs {
   std::string input, output, bounding = "symbolic", method = "serial", stats;
   std::uint64_t seed = 1;
   double k = 10;
-  bool profile = false;
+  unsigned threads = 0;
+  bool profile = false, paper_locking = false, no_thread_timing = false;
 };
 
 void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double t_read,
@@ -55,7 +56,7 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
   };
   std::vector<Field> f = {
       {"method", "\"" + a.method + "\""},
-      {"threads", "1"},
+      {"threads", std::to_string(s.threads)},
       {"seed", std::to_string(a.seed)},
       {"bounding", "\"" + a.bounding + "\""},
       {"points", std::to_string(s.points)},
@@ -68,6 +69,9 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
       {"edge_splits", std::to_string(s.edge_splits)},
       {"time_read_s", num(t_read)},
       {"time_triangulate_s", num(s.time_triangulate_s)},
+      {"time_insert_s", num(s.time_insert_s)},
+      {"time_critical_s", num(s.time_critical_s)},
+      {"time_wait_s", num(s.time_wait_s)},
       {"time_write_s", num(t_write)},
   };
   if (a.profile) {
@@ -78,8 +82,27 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
   f.push_back({"peak_rss_bytes", std::to_string(peak_rss_bytes())});
   if (table) {
     for (const Field& x : f) std::printf("%-20s %s\n", x.key, x.value.c_str());
+    std::printf("\n%6s %10s %14s %16s %12s\n", "thread", "points", "insertion [s]",
+                "critical [s]", "waiting [s]");
+    for (std::size_t i = 0; i < s.per_thread.size(); ++i) {
+      const ridt::ThreadStats& p = s.per_thread[i];
+      std::printf("%6zu %10llu %14.6f %16.6f %12.6f\n", i, static_cast<unsigned long long>(p.points),
+                  p.time_insert_s, p.time_critical_s, p.time_wait_s);
+    }
+    std::printf("%6s %10llu %14.6f %16.6f %12.6f\n", "all", static_cast<unsigned long long>(s.points),
+                s.time_insert_s, s.time_critical_s, s.time_wait_s);
     return;
   }
+  std::string per_thread = "[";
+  for (std::size_t i = 0; i < s.per_thread.size(); ++i) {
+    const ridt::ThreadStats& p = s.per_thread[i];
+    per_thread += (i ? ", " : "") + std::string("{\"thread\": ") + std::to_string(i) +
+                  ", \"points\": " + std::to_string(p.points) +
+                  ", \"time_insert_s\": " + num(p.time_insert_s) +
+                  ", \"time_critical_s\": " + num(p.time_critical_s) +
+                  ", \"time_wait_s\": " + num(p.time_wait_s) + "}";
+  }
+  f.push_back({"per_thread", per_thread + "]"});
   std::printf("{");
   for (std::size_t i = 0; i < f.size(); ++i)
     std::printf("%s\"%s\": %s", i ? ", " : "", f[i].key, f[i].value.c_str());
@@ -99,7 +122,16 @@ int run_triangulate(const TriangulateArgs& a) {
   } else {
     throw ridt::InputError("unknown bounding '" + a.bounding + "' (use symbolic or finite)");
   }
-  if (a.method != "serial") throw ridt::InputError("unknown method '" + a.method + "' (use serial)");
+  if (a.method == "serial") {
+    o.method = ridt::Method::Serial;
+  } else if (a.method == "pessimistic") {
+    o.method = ridt::Method::Pessimistic;
+  } else {
+    throw ridt::InputError("unknown method '" + a.method + "' (use serial or pessimistic)");
+  }
+  o.threads = a.threads;
+  o.paper_locking = a.paper_locking;
+  o.time_threads = !a.no_thread_timing;
   if (a.stats != "" && a.stats != "json" && a.stats != "table")
     throw ridt::InputError("unknown stats format '" + a.stats + "' (use json or table)");
   if (!a.output.empty()) ridt::io::check_triangulation_extension(a.output);
@@ -127,7 +159,12 @@ int main(int argc, char** argv) {
   tri->add_option("input", ta.input, "points: .node, .bin (float64 pairs) or text")->required();
   tri->add_option("-o,--output", ta.output, "triangles: .ele, .neigh, .off, .obj, .svg or .bin");
   tri->add_option("--seed", ta.seed, "seed of the random insertion order");
-  tri->add_option("--method", ta.method, "serial");
+  tri->add_option("--method", ta.method, "serial (default) or pessimistic");
+  tri->add_option("--threads", ta.threads, "worker threads of a threaded method (0: all hardware threads)");
+  tri->add_flag("--paper-locking", ta.paper_locking,
+                "pessimistic: lock from the leaves' parents, as the paper does");
+  tri->add_flag("--no-thread-timing", ta.no_thread_timing,
+                "threaded methods: do not time critical sections and waiting");
   tri->add_option("--bounding", ta.bounding, "symbolic (default) or finite");
   tri->add_option("--k", ta.k, "finite bounding triangle: K = k * box size (default 10)");
   CLI::Option* stats = tri->add_option("--stats", ta.stats, "print counters and times: json (default) or table")

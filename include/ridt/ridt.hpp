@@ -36,7 +36,8 @@ inline constexpr std::int32_t kNoNeighbor = -1;
 
 /// Who drives the insertion kernel.
 enum class Method {
-  Serial,  ///< one thread, the paper's Fig. 4
+  Serial,       ///< one thread, the paper's Fig. 4
+  Pessimistic,  ///< threads share one triangulation; one critical section for the leaf step (Fig. 10)
 };
 
 /// The starting triangle that encloses every point.
@@ -48,6 +49,15 @@ enum class Bounding {
 /// Options of a triangulation.
 struct Options {
   Method method = Method::Serial;
+  /// Worker threads of a threaded method; 0 = the machine's hardware threads.
+  unsigned threads = 0;
+  /// Pessimistic: descend outside the lock only to the parents of leaves, as the paper does.
+  /// Off (the default), a worker descends to a leaf outside the lock and, inside, continues
+  /// only if that leaf has been split meanwhile.
+  bool paper_locking = false;
+  /// Threaded methods: time each thread's insertion, critical section and waiting (Tables 2
+  /// and 3). Three clock reads a point.
+  bool time_threads = true;
   std::uint64_t seed = 1;  ///< seed of the random insertion order
   Bounding bounding = Bounding::Symbolic;
   double k = 10.0;  ///< K = k * M for Bounding::Finite; k >= 2 keeps every point strictly inside
@@ -58,15 +68,28 @@ struct Options {
   bool profile = false;
 };
 
+/// What one worker thread did (the paper's Tables 2 and 3, per thread).
+struct ThreadStats {
+  std::uint64_t points = 0;     ///< points it inserted (duplicates included)
+  double time_insert_s = 0;     ///< from its start to its end
+  double time_critical_s = 0;   ///< holding the lock
+  double time_wait_s = 0;       ///< waiting for the lock
+};
+
 /// Counters and timings of one run.
 struct Stats {
+  unsigned threads = 1;          ///< threads that inserted points
   std::uint64_t points = 0;      ///< input points
   std::uint64_t distinct = 0;    ///< distinct points
   std::uint64_t duplicates = 0;  ///< input points dropped as duplicates
   std::uint64_t dag_nodes = 0;   ///< triangle records made (each one a node of the history DAG)
   std::uint64_t flips = 0;       ///< edge flips during legalization
   std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits)
-  double time_triangulate_s = 0;
+  double time_triangulate_s = 0; ///< the whole call: set-up, insertion, finish
+  double time_insert_s = 0;      ///< wall time of the insertion phase
+  double time_critical_s = 0;    ///< summed over threads (threaded methods, time_threads)
+  double time_wait_s = 0;        ///< summed over threads (threaded methods, time_threads)
+  std::vector<ThreadStats> per_thread;
   double time_locate_s = 0;      ///< only with Options::profile
   double time_split_s = 0;       ///< only with Options::profile
   double time_legalize_s = 0;    ///< only with Options::profile

@@ -1,0 +1,139 @@
+// Threaded methods return exactly the serial triangle set, for every thread count, seed and
+// input; their statistics add up. These tests also run under ThreadSanitizer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "generate.hpp"
+#include "helpers.hpp"
+
+namespace ridt::test {
+namespace {
+
+struct Variant {
+  Method method;
+  bool paper;
+  const char* name;
+};
+constexpr Variant kVariants[] = {{Method::Pessimistic, false, "pessimistic"},
+                                  {Method::Pessimistic, true, "pessimistic_paper"}};
+constexpr unsigned kThreadCounts[] = {1, 2, 3, 4, 8};
+
+// Smaller under sanitizers, which run these tests many times slower.
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+constexpr int kN = 4000;
+#else
+constexpr int kN = 30000;
+#endif
+
+std::vector<std::pair<std::string, std::vector<Point>>> inputs() {
+  std::vector<std::pair<std::string, std::vector<Point>>> sets;
+  for (Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid,
+                         Distribution::Clusters})
+    sets.emplace_back(to_string(d), generate(d, kN, 17));
+  std::vector<Point> dup = generate(Distribution::Uniform, 2000, 3);
+  for (int i = 0; i < 500; ++i) dup.push_back(dup[i * 3]);
+  sets.emplace_back("duplicates", dup);
+  std::vector<Point> lines;
+  for (int i = 0; i < 1000; ++i) lines.push_back({double(i), 0}), lines.push_back({i + 0.5, 3});
+  sets.emplace_back("two_lines", lines);
+  std::vector<Point> circle;
+  for (int i = 0; i < 1000; ++i)
+    circle.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000)});
+  sets.emplace_back("polygon", circle);
+  sets.emplace_back("one_line", std::vector<Point>{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {5, 5}});
+  sets.emplace_back("tiny", std::vector<Point>{{0, 0}, {1, 0}});
+  return sets;
+}
+
+class Threaded : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(Threaded, SameTrianglesAsSerialForEveryThreadCount) {
+  const Variant v = GetParam();
+  for (const auto& [name, pts] : inputs()) {
+    const Triangulation serial = triangulate(pts);
+    const TriangleSet expected = canonical(serial.triangles);
+    for (unsigned threads : kThreadCounts) {
+      Options o;
+      o.method = v.method;
+      o.paper_locking = v.paper;
+      o.threads = threads;
+      o.seed = threads;  // other seeds too: the set must not change
+      const Triangulation t = triangulate(pts, o);
+      EXPECT_EQ(canonical(t.triangles), expected) << name << ", " << threads << " threads";
+      EXPECT_EQ(t.hull.size(), serial.hull.size()) << name;
+      ASSERT_EQ(t.duplicates.size(), serial.duplicates.size()) << name;
+      for (std::size_t i = 0; i < t.duplicates.size(); ++i) {
+        EXPECT_EQ(t.duplicates[i].dropped, serial.duplicates[i].dropped);
+        EXPECT_EQ(t.duplicates[i].kept, serial.duplicates[i].kept);
+      }
+    }
+  }
+}
+
+TEST_P(Threaded, ResultPassesTheValidator) {
+  Options o;
+  o.method = GetParam().method;
+  o.paper_locking = GetParam().paper;
+  o.threads = 4;
+  triangulate_checked(generate(Distribution::Uniform, kN, 5), o);
+}
+
+TEST_P(Threaded, StatisticsAddUp) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, kN, 8);
+  Options o;
+  o.method = GetParam().method;
+  o.paper_locking = GetParam().paper;
+  o.threads = 3;
+  const Stats s = triangulate(pts, o).stats;
+  EXPECT_EQ(s.threads, 3u);
+  ASSERT_EQ(s.per_thread.size(), 3u);
+  std::uint64_t points = 0;
+  double critical = 0, wait = 0;
+  for (const ThreadStats& p : s.per_thread) {
+    points += p.points;
+    critical += p.time_critical_s;
+    wait += p.time_wait_s;
+    EXPECT_GT(p.time_critical_s, 0);
+    EXPECT_LE(p.time_critical_s + p.time_wait_s, p.time_insert_s * 1.0001 + 1e-6);
+    EXPECT_LE(p.time_insert_s, s.time_insert_s * 1.0001 + 1e-6);
+  }
+  EXPECT_EQ(points, pts.size());
+  EXPECT_DOUBLE_EQ(critical, s.time_critical_s);
+  EXPECT_DOUBLE_EQ(wait, s.time_wait_s);
+  EXPECT_LE(s.time_insert_s, s.time_triangulate_s);
+
+  o.time_threads = false;
+  const Stats quiet = triangulate(pts, o).stats;
+  EXPECT_EQ(quiet.time_critical_s, 0);
+  EXPECT_EQ(quiet.time_wait_s, 0);
+}
+
+TEST(Threaded, ZeroThreadsMeansTheHardware) {
+  Options o;
+  o.method = Method::Pessimistic;
+  o.threads = 0;
+  const Stats s = triangulate(generate(Distribution::Uniform, 1000, 1), o).stats;
+  EXPECT_GE(s.threads, 1u);
+  EXPECT_EQ(s.per_thread.size(), s.threads);
+}
+
+TEST(Threaded, SerialReportsOneThread) {
+  const Stats s = triangulate(generate(Distribution::Uniform, 1000, 1)).stats;
+  EXPECT_EQ(s.threads, 1u);
+  ASSERT_EQ(s.per_thread.size(), 1u);
+  EXPECT_EQ(s.per_thread[0].points, 1000u);
+}
+
+TEST(Threaded, ProfilingIsSerialOnly) {
+  Options o;
+  o.method = Method::Pessimistic;
+  o.profile = true;
+  EXPECT_THROW(triangulate(generate(Distribution::Uniform, 100, 1), o), InputError);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace ridt::test
