@@ -25,9 +25,10 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed
 
 /// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
 /// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
-/// point input_index[v].
+/// point input_index[v]. Uses up to `threads` threads.
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
-                     const std::vector<DuplicateHit>& duplicates, const Options& options);
+                     const std::vector<DuplicateHit>& duplicates, const Options& options,
+                     unsigned threads);
 
 /// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
 /// neighbours: the output no longer depends on the order of insertion.

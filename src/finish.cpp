@@ -3,6 +3,7 @@
 // resolve duplicates so the output names the smallest input index of each group of equal points.
 #include <algorithm>
 #include <numeric>
+#include <thread>
 #include <unordered_map>
 
 #include "driver.hpp"
@@ -39,7 +40,8 @@ void canonicalize(Triangulation& out) {
 }
 
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
-                     const std::vector<DuplicateHit>& duplicates, const Options& options) {
+                     const std::vector<DuplicateHit>& duplicates, const Options& options,
+                     unsigned threads) {
   Triangulation out;
   const std::uint32_t n = kernel.n();
   TriangleStore& tris = kernel.triangles_for_finish();
@@ -74,32 +76,60 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     return it == keep.end() ? v : it->second;
   };
 
+  // The two passes run on `threads` threads, each over its own range of records.
+  const unsigned workers = std::max(1u, std::min(threads, records / 65536 + 1));
+  auto range = [&](unsigned w) {
+    return std::pair<TriangleId, TriangleId>(TriangleId(std::uint64_t{records} * w / workers),
+                                             TriangleId(std::uint64_t{records} * (w + 1) / workers));
+  };
+  auto in_parallel = [&](auto&& body) {
+    std::vector<std::jthread> pool;
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(body, w);
+    body(0u);
+  };  // the pool joins on leaving
+
   // Pass 1: the child links are dead now; a kept triangle's link becomes its new id + 1.
-  std::uint32_t count = 0;
-  for (TriangleId t = 0; t < records; ++t) {
-    Triangle& r = tris[t];
-    const bool leaf = r.child == 0;  // single-threaded now: plain reads and writes
-    const bool finite = r.v[0] < n && r.v[1] < n && r.v[2] < n;
-    r.child = leaf && finite ? ++count : 0;
-  }
+  auto kept = [&](const Triangle& r) {
+    return r.child == 0 && r.v[0] < n && r.v[1] < n && r.v[2] < n;
+  };
+  std::vector<std::uint32_t> first_id(workers + 1, 0);
+  in_parallel([&](unsigned w) {
+    std::uint32_t c = 0;
+    for (TriangleId t = range(w).first; t < range(w).second; ++t) c += kept(tris[t]);
+    first_id[w + 1] = c;
+  });
+  for (unsigned w = 0; w < workers; ++w) first_id[w + 1] += first_id[w];
+  const std::uint32_t count = first_id[workers];
+  in_parallel([&](unsigned w) {
+    std::uint32_t id = first_id[w];
+    for (TriangleId t = range(w).first; t < range(w).second; ++t) {
+      Triangle& r = tris[t];
+      r.child = kept(r) ? ++id : 0;
+    }
+  });
 
   // Pass 2: vertices, neighbours, hull edges.
   out.triangles.resize(3 * std::size_t{count});
   out.neighbors.resize(3 * std::size_t{count});
-  std::vector<std::pair<VertexId, VertexId>> hull_edges;
-  for (TriangleId t = 0; t < records; ++t) {
-    const Triangle& r = tris[t];
-    const std::uint32_t id = r.child;
-    if (id == 0) continue;
-    const std::size_t base = 3 * std::size_t{id - 1};
-    for (int i = 0; i < 3; ++i) {
-      out.triangles[base + i] = standing(r.v[i]);
-      const TriangleId nb = r.n[i];
-      const std::uint32_t nid = nb == kNone ? 0 : tris[nb].child;
-      out.neighbors[base + i] = nid == 0 ? kNoNeighbor : static_cast<std::int32_t>(nid - 1);
-      if (nid == 0) hull_edges.emplace_back(standing(r.v[next(i)]), standing(r.v[prev(i)]));
+  std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
+  in_parallel([&](unsigned w) {
+    for (TriangleId t = range(w).first; t < range(w).second; ++t) {
+      const Triangle& r = tris[t];
+      const std::uint32_t id = r.child;
+      if (id == 0) continue;
+      const std::size_t base = 3 * std::size_t{id - 1};
+      for (int i = 0; i < 3; ++i) {
+        out.triangles[base + i] = standing(r.v[i]);
+        const TriangleId nb = r.n[i];
+        const std::uint32_t nid = nb == kNone ? 0 : tris[nb].child;
+        out.neighbors[base + i] = nid == 0 ? kNoNeighbor : static_cast<std::int32_t>(nid - 1);
+        if (nid == 0)
+          hull_parts[w].emplace_back(standing(r.v[next(i)]), standing(r.v[prev(i)]));
+      }
     }
-  }
+  });
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
+  for (const auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
 
   // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
   // from the smallest vertex index.

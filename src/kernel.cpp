@@ -122,7 +122,7 @@ void Kernel::split_triangle(TriangleId t, VertexId p) {
   relink(n0, t, c);
   relink(n1, t, c + 1);
   relink(n2, t, c + 2);
-  tris_[t].n[0] = p;  // t's neighbours are dead now; the descent reads the split point here
+  store_link(tris_[t].n[0], p);  // t's neighbours are dead now; the descent reads p here
   // release: the children above are complete before a locating thread can reach them.
   tris_[t].child_link().store(c | kThreeChildren, std::memory_order_release);
   stack_.push_back(c);

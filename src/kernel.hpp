@@ -95,6 +95,7 @@ class Kernel {
   void prefetch(TriangleId t) const { __builtin_prefetch(&tris_[t]); }
   /// Prefetches the second ring around leaf t, once its neighbours are in cache: the
   /// neighbours' far vertices and their other neighbours, which the first flips read.
+  /// Single-threaded only: it reads whole records that another thread may be writing.
   void prefetch_ring(TriangleId t) const {
     const Triangle& r = tris_[t];
     if (r.load_child() != 0) return;  // split since: its n[] no longer names neighbours
@@ -108,11 +109,13 @@ class Kernel {
       }
     }
   }
-  /// Prefetches what inserting into leaf t will read: its neighbours and its vertices.
+  /// Prefetches what inserting into leaf t will read: its neighbours and its vertices. Safe
+  /// while other threads change the mesh: t's vertices never change, its links are read
+  /// atomically, and a stale link only prefetches the wrong line.
   void prefetch_around(TriangleId t) const {
     const Triangle& r = tris_[t];
     for (int i = 0; i < 3; ++i) {
-      if (r.n[i] != kNone) __builtin_prefetch(&tris_[r.n[i]]);
+      tris_.prefetch(load_link(r.n[i]));
       __builtin_prefetch(&points_[r.v[i]]);
     }
   }
@@ -139,18 +142,18 @@ class Kernel {
   void relink(TriangleId u, TriangleId old, TriangleId now) {
     if (u == kNone) return;
     Triangle& r = tris_[u];
-    r.n[r.n[0] == old ? 0 : (r.n[1] == old ? 1 : 2)] = now;
+    store_link(r.n[r.n[0] == old ? 0 : (r.n[1] == old ? 1 : 2)], now);
   }
   // The two children of t are split by the directed edge a -> b, the first on its left.
   void set_separator(TriangleId t, VertexId a, VertexId b) {
-    tris_[t].n[0] = a;
-    tris_[t].n[1] = b;
+    store_link(tris_[t].n[0], a);
+    store_link(tris_[t].n[1], b);
   }
   void make(TriangleId t, VertexId a, VertexId b, VertexId c, TriangleId na, TriangleId nb,
             TriangleId nc) {
     Triangle& r = tris_[t];
     r.v[0] = a, r.v[1] = b, r.v[2] = c;
-    r.n[0] = na, r.n[1] = nb, r.n[2] = nc;
+    store_link(r.n[0], na), store_link(r.n[1], nb), store_link(r.n[2], nc);
     r.child = 0;  // published by the parent's release store
   }
 

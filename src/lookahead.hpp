@@ -22,9 +22,9 @@ class LookAhead {
     TriangleId parent;  // the node before it on the path (the root for the root)
   };
 
-  /// The sequence first, first + stride, ... below end. `ring`: once a point reaches a leaf,
-  /// also prefetch the leaf's surroundings, which reads the neighbour links of leaves; only a
-  /// single thread may do that, since other threads rewrite them.
+  /// The sequence first, first + stride, ... below end. A point that reaches a leaf prefetches
+  /// the leaf's neighbours; with `ring` also the ring beyond them, which reads whole records
+  /// and so is for a single thread only.
   LookAhead(const Kernel& kernel, VertexId first, VertexId stride, VertexId end, bool ring)
       : kernel_(kernel), first_(first), stride_(stride), ring_(ring) {
     count_ = end > first ? (end - first + stride - 1) / stride : 0;
@@ -62,7 +62,7 @@ class LookAhead {
       case State::kDescending: {
         const TriangleId next = kernel_.step(s.node, p);
         if (next == s.node) {
-          if (ring_) kernel_.prefetch_around(next);  // what the insertion into the leaf reads
+          kernel_.prefetch_around(next);  // what the insertion into the leaf reads
           s.state = State::kAtLeaf;
         } else {
           kernel_.prefetch(next);

@@ -62,11 +62,30 @@ class TriangleStore {
   static constexpr std::uint32_t kMaxChunks = (kIdMask + 1u) >> kChunkBits;
 
   /// `expected`: about how many records will be made.
-  explicit TriangleStore(std::uint64_t expected = kChunkSize) : expected_(expected), chunks_(new std::unique_ptr<Triangle[], FreeDeleter>[kMaxChunks]) {}
+  explicit TriangleStore(std::uint64_t expected = kChunkSize)
+      : expected_(expected), chunks_(new std::atomic<Triangle*>[kMaxChunks]) {
+    for (std::uint32_t i = 0; i < kMaxChunks; ++i) chunks_[i].store(nullptr, std::memory_order_relaxed);
+  }
+  ~TriangleStore() {
+    for (std::uint32_t i = 0; i < kMaxChunks; ++i) std::free(chunks_[i].load(std::memory_order_relaxed));
+  }
+  TriangleStore(const TriangleStore&) = delete;
+  TriangleStore& operator=(const TriangleStore&) = delete;
 
-  Triangle& operator[](TriangleId t) { return chunks_[t >> kChunkBits][t & (kChunkSize - 1)]; }
+  // relaxed: a thread holds an id only through a child link read with acquire, or under the
+  // lock, and either orders the chunk's allocation before the read.
+  Triangle& operator[](TriangleId t) {
+    return chunks_[t >> kChunkBits].load(std::memory_order_relaxed)[t & (kChunkSize - 1)];
+  }
   const Triangle& operator[](TriangleId t) const {
-    return chunks_[t >> kChunkBits][t & (kChunkSize - 1)];
+    return chunks_[t >> kChunkBits].load(std::memory_order_relaxed)[t & (kChunkSize - 1)];
+  }
+
+  /// Prefetches record t if it may exist: t may come from a racy, possibly stale read.
+  void prefetch(TriangleId t) const {
+    if (t > kIdMask) return;
+    const Triangle* chunk = chunks_[t >> kChunkBits].load(std::memory_order_relaxed);
+    if (chunk != nullptr) __builtin_prefetch(chunk + (t & (kChunkSize - 1)));
   }
 
   /// Reserves `count` consecutive ids.
@@ -76,8 +95,9 @@ class TriangleStore {
     if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
     while (capacity_ < end) {
       // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
-      chunks_[capacity_ >> kChunkBits] =
-          allocate_huge<Triangle>(kChunkSize, capacity_ > 0 || expected_ >= kChunkSize / 4);
+      auto chunk = allocate_huge<Triangle>(kChunkSize, capacity_ > 0 || expected_ >= kChunkSize / 4);
+      // release: pairs with prefetch's racy load (the others are ordered as said above).
+      chunks_[capacity_ >> kChunkBits].store(chunk.release(), std::memory_order_release);
       capacity_ += kChunkSize;
     }
     size_ = static_cast<std::uint32_t>(end);
@@ -88,9 +108,19 @@ class TriangleStore {
 
  private:
   std::uint64_t expected_;
-  std::unique_ptr<std::unique_ptr<Triangle[], FreeDeleter>[]> chunks_;
+  std::unique_ptr<std::atomic<Triangle*>[]> chunks_;
   std::uint32_t size_ = 0;
   std::uint64_t capacity_ = 0;
 };
+
+/// Neighbour links are written and, outside the lock, read through these: a worker that
+/// prefetches around its leaf reads them while the lock holder may rewrite them. Relaxed
+/// atomics on aligned 32-bit words are plain moves on x86 and cost nothing.
+inline void store_link(TriangleId& slot, TriangleId value) {
+  std::atomic_ref<TriangleId>(slot).store(value, std::memory_order_relaxed);
+}
+inline TriangleId load_link(const TriangleId& slot) {
+  return std::atomic_ref<TriangleId>(const_cast<TriangleId&>(slot)).load(std::memory_order_relaxed);
+}
 
 }  // namespace ridt::detail

@@ -66,7 +66,7 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
           Worker& out) {
   const auto t_start = Clock::now();
   Clock::duration critical{}, waiting{};
-  // No ring prefetch: it reads the neighbour links of leaves, which other threads rewrite.
+  // No ring prefetch: it reads whole records that the lock holder may be writing.
   LookAhead ahead(kernel, first, stride, kernel.n(), /*ring=*/false);
   for (VertexId i = 0; i < ahead.count(); ++i) {
     const VertexId p = ahead.point(i);
@@ -76,13 +76,13 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
     TriangleId node = hint.node, parent = hint.parent;
     for (TriangleId next; (next = kernel.step(node, p)) != node;) parent = node, node = next;
     const TriangleId start = paper ? parent : node;
+    kernel.prefetch_around(node);  // its neighbours arrive while we wait for the lock
     Clock::time_point t0, t1;
     if constexpr (kTimed) t0 = Clock::now();
     {
       const std::lock_guard<SpinLock> guard(lock);  // the one critical section of Fig. 10
       if constexpr (kTimed) t1 = Clock::now();
       const TriangleId leaf = kernel.descend(start, p);
-      kernel.prefetch_around(leaf);  // safe under the lock: overlaps the misses that follow
       const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p);
       if (hit != kNone) out.duplicates.push_back({p, hit});
       if constexpr (kTimed) critical += Clock::now() - t1;

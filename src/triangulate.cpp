@@ -80,7 +80,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
     stats.time_insert_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t_insert).count();
     if (stats.per_thread.empty()) stats.per_thread.push_back({n, stats.time_insert_s, 0, 0});
-    out = detail::finish(kernel, order, duplicates, options);
+    out = detail::finish(kernel, order, duplicates, options, threads);
   }
   // After the DAG is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out);

@@ -37,6 +37,20 @@ cmp -s "$dir/grid.txt.ele" "$dir/grid7.ele" && pass || fail "seed changed the ou
 expect 0 "regenerate" -- "$ridt" generate --dist normal -n 2000 --seed 3 -o "$dir/again.txt"
 cmp -s "$dir/normal.txt" "$dir/again.txt" && pass || fail "generate is not reproducible"
 
+# The pessimistic method writes the same file as the serial one, for any thread count.
+for t in 1 2 3 8; do
+  expect 0 "pessimistic $t" -- "$ridt" triangulate "$dir/grid.txt" --method pessimistic --threads "$t" -o "$dir/grid_p$t.ele"
+  cmp -s "$dir/grid.txt.ele" "$dir/grid_p$t.ele" && pass || fail "pessimistic with $t threads differs"
+done
+expect 0 "pessimistic paper" -- "$ridt" triangulate "$dir/clusters.txt" --method pessimistic --threads 2 --paper-locking -o "$dir/c_paper.ele"
+cmp -s "$dir/clusters.txt.ele" "$dir/c_paper.ele" && pass || fail "paper locking differs"
+expect 0 "pessimistic stats" -- "$ridt" triangulate "$dir/uniform.txt" --method pessimistic --threads 2 --stats
+for key in time_insert_s time_critical_s time_wait_s per_thread; do stdout_has "\"$key\": "; done
+stdout_has '"threads": 2'
+expect 0 "pessimistic table" -- "$ridt" triangulate "$dir/uniform.txt" --method pessimistic --threads 2 --stats=table
+stdout_has "^ *all "
+expect 2 "profile is serial only" -- "$ridt" triangulate "$dir/uniform.txt" --method pessimistic --profile
+
 # Output formats.
 for ext in ele neigh off obj svg bin; do
   expect 0 "write .$ext" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/u.$ext"
