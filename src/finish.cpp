@@ -153,8 +153,6 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   s.duplicates = out.duplicates.size();
   s.distinct = n - s.duplicates;
   s.dag_nodes = records;
-  s.flips = kernel.flips();
-  s.edge_splits = kernel.edge_splits();
   if (s.distinct < 3) {
     out.warning = "fewer than three distinct points: no triangle";
   } else if (count == 0) {

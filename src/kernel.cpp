@@ -21,7 +21,6 @@ Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bo
       tris_(std::uint64_t{n} * 9 + 16) {  // about 9 records a point: 3 from the split, 2 a flip
   const TriangleId root = tris_.allocate(1);
   make(root, n, n + 1, n + 2, kNone, kNone, kNone);
-  stack_.reserve(64);
 }
 
 // orient(p, q, Bk) for finite p, q is R^e * cross(q - p, Bk) + lower terms; its sign is the
@@ -111,7 +110,7 @@ Kernel::Location Kernel::classify(TriangleId t, VertexId p) const {
  *         v0 ----------- v1
  *                n2
  */
-void Kernel::split_triangle(TriangleId t, VertexId p) {
+void Kernel::split_triangle(TriangleId t, VertexId p, Scratch& s) {
   const TriangleId c = tris_.allocate(3);
   const Triangle& r = tris_[t];
   const VertexId v0 = r.v[0], v1 = r.v[1], v2 = r.v[2];
@@ -125,9 +124,9 @@ void Kernel::split_triangle(TriangleId t, VertexId p) {
   store_link(tris_[t].n[0], p);  // t's neighbours are dead now; the descent reads p here
   // release: the children above are complete before a locating thread can reach them.
   tris_[t].child_link().store(c | kThreeChildren, std::memory_order_release);
-  stack_.push_back(c);
-  stack_.push_back(c + 1);
-  stack_.push_back(c + 2);
+  s.stack.push_back(c);
+  s.stack.push_back(c + 1);
+  s.stack.push_back(c + 2);
 }
 
 /*
@@ -143,8 +142,8 @@ void Kernel::split_triangle(TriangleId t, VertexId p) {
  *            \ | /
  *              d
  */
-void Kernel::split_edge(TriangleId t, int i, VertexId p) {
-  ++edge_splits_;
+void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
+  ++s.edge_splits;
   const Triangle& rt = tris_[t];
   const VertexId a = rt.v[i], b = rt.v[next(i)], c = rt.v[prev(i)];
   const TriangleId u = rt.n[i];
@@ -167,10 +166,10 @@ void Kernel::split_edge(TriangleId t, int i, VertexId p) {
   set_separator(u, p, d);
   tris_[t].child_link().store(t0, std::memory_order_release);  // release: as in split_triangle
   tris_[u].child_link().store(u0, std::memory_order_release);
-  stack_.push_back(t0);
-  stack_.push_back(t1);
-  stack_.push_back(u0);
-  stack_.push_back(u1);
+  s.stack.push_back(t0);
+  s.stack.push_back(t1);
+  s.stack.push_back(u0);
+  s.stack.push_back(u1);
 }
 
 // Flip the edge a b between t = (p, a, b) and u = (q, b, a) (q = u.v[j]).
@@ -184,8 +183,8 @@ void Kernel::split_edge(TriangleId t, int i, VertexId p) {
 //    tb   \  |  /   uqb         tb   \ n2  /  uqb
 //          \ | /                      \   /
 //            b                          b
-void Kernel::flip(TriangleId t, TriangleId u, int j) {
-  ++flips_;
+void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
+  ++s.flips;
   const Triangle& rt = tris_[t];
   const Triangle& ru = tris_[u];
   const VertexId p = rt.v[0], a = rt.v[1], b = rt.v[2];
@@ -204,22 +203,22 @@ void Kernel::flip(TriangleId t, TriangleId u, int j) {
   set_separator(u, p, q);
   tris_[t].child_link().store(n2, std::memory_order_release);  // release: as in split_triangle
   tris_[u].child_link().store(n2, std::memory_order_release);
-  stack_.push_back(n1);
-  stack_.push_back(n2);
+  s.stack.push_back(n1);
+  s.stack.push_back(n2);
 }
 
 // Fig. 5 with an explicit stack: each entry is a triangle (p, a, b) whose edge a b must be
 // tested against the triangle on its other side.
-void Kernel::legalize(VertexId p) {
-  while (!stack_.empty()) {
-    const TriangleId t = stack_.back();
-    stack_.pop_back();
+void Kernel::legalize(VertexId p, Scratch& s) {
+  while (!s.stack.empty()) {
+    const TriangleId t = s.stack.back();
+    s.stack.pop_back();
     const TriangleId u = tris_[t].n[0];
     if (u == kNone) continue;  // an edge of the bounding triangle
     const Triangle& ru = tris_[u];
     if (incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0) {
       const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
-      flip(t, u, j);
+      flip(t, u, j, s);
     }
   }
 }

@@ -23,6 +23,14 @@ namespace ridt::detail {
 /// instance with exact integers. No coordinate is huge, the predicates never tie on a bounding
 /// vertex, and removing B0, B1, B2 leaves exactly the Delaunay triangulation of the points with
 /// its whole convex hull.
+/// What one inserting thread keeps to itself, on its own cache lines: the edges still to
+/// legalize (triangles with the new point at v[0]) and counters.
+struct alignas(64) Scratch {
+  std::vector<TriangleId> stack;
+  std::uint64_t flips = 0;
+  std::uint64_t edge_splits = 0;
+};
+
 class Kernel {
  public:
   /// `points` holds n points (vertex v is points[v]) followed by three bounding vertices
@@ -61,25 +69,20 @@ class Kernel {
   /// Where p lies in leaf t (whose closure contains p).
   Location classify(TriangleId t, VertexId p) const;
 
-  /// Inserts p. Returns kNone, or the vertex that p duplicates.
-  VertexId insert(VertexId p) { return insert_at(classify(descend(kRoot, p), p), p); }
-  /// The same from a known location (the profiled and threaded drivers time the steps).
-  VertexId insert_at(const Location& where, VertexId p) {
+  /// Inserts p from a known location. Returns kNone, or the vertex that p duplicates.
+  VertexId insert_at(const Location& where, VertexId p, Scratch& s) {
     if (where.where == Where::OnVertex) return tris_[where.t].v[where.i];
-    if (where.where == Where::Inside)
-      split_triangle(where.t, p);
-    else
-      split_edge(where.t, where.i, p);
-    legalize(p);
+    split_at(where, p, s);
+    legalize(p, s);
     return kNone;
   }
-  void split_at(const Location& where, VertexId p) {
+  void split_at(const Location& where, VertexId p, Scratch& s) {
     if (where.where == Where::Inside)
-      split_triangle(where.t, p);
+      split_triangle(where.t, p, s);
     else
-      split_edge(where.t, where.i, p);
+      split_edge(where.t, where.i, p, s);
   }
-  void legalize(VertexId p);
+  void legalize(VertexId p, Scratch& s);
 
   int orient(VertexId a, VertexId b, VertexId c) const {
     if (symbolic_ && (a >= n_ || b >= n_ || c >= n_)) return orient_symbolic(a, b, c);
@@ -126,8 +129,6 @@ class Kernel {
   const Point& point(VertexId v) const { return points_[v]; }
   std::uint32_t n() const { return n_; }
   bool is_bounding(VertexId v) const { return v >= n_; }
-  std::uint64_t flips() const { return flips_; }
-  std::uint64_t edge_splits() const { return edge_splits_; }
 
   static constexpr TriangleId kRoot = 0;
 
@@ -135,9 +136,9 @@ class Kernel {
   int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
   int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
 
-  void split_triangle(TriangleId t, VertexId p);
-  void split_edge(TriangleId t, int i, VertexId p);
-  void flip(TriangleId t, TriangleId u, int j);
+  void split_triangle(TriangleId t, VertexId p, Scratch& s);
+  void split_edge(TriangleId t, int i, VertexId p, Scratch& s);
+  void flip(TriangleId t, TriangleId u, int j, Scratch& s);
   // Neighbour u of `old` now borders `now` instead.
   void relink(TriangleId u, TriangleId old, TriangleId now) {
     if (u == kNone) return;
@@ -161,9 +162,6 @@ class Kernel {
   std::uint32_t n_;
   bool symbolic_;
   TriangleStore tris_;
-  std::vector<TriangleId> stack_;  // edges still to legalize: triangles with p at v[0]
-  std::uint64_t flips_ = 0;
-  std::uint64_t edge_splits_ = 0;
 };
 
 }  // namespace ridt::detail

@@ -108,8 +108,10 @@ class TriangleStore {
 
  private:
   std::uint64_t expected_;
-  std::unique_ptr<std::atomic<Triangle*>[]> chunks_;
-  std::uint32_t size_ = 0;
+  std::unique_ptr<std::atomic<Triangle*>[]> chunks_;  // read by every thread at every step
+  // Written at every allocation, by whichever thread holds the lock: a line of their own, or
+  // each write would evict the line above from the other threads' caches.
+  alignas(64) std::uint32_t size_ = 0;
   std::uint64_t capacity_ = 0;
 };
 

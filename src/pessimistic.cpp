@@ -56,7 +56,8 @@ using Clock = std::chrono::steady_clock;
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-struct Worker {
+struct alignas(64) Worker {  // each on its own cache lines
+  Scratch scratch;
   std::vector<DuplicateHit> duplicates;
   ThreadStats stats;
 };
@@ -83,7 +84,7 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
       const std::lock_guard<SpinLock> guard(lock);  // the one critical section of Fig. 10
       if constexpr (kTimed) t1 = Clock::now();
       const TriangleId leaf = kernel.descend(start, p);
-      const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p);
+      const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
       if (hit != kNone) out.duplicates.push_back({p, hit});
       if constexpr (kTimed) critical += Clock::now() - t1;
     }
@@ -114,6 +115,8 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed
   }  // the master waits for every worker (Fig. 10, line 6)
   for (Worker& w : workers) {
     duplicates.insert(duplicates.end(), w.duplicates.begin(), w.duplicates.end());
+    stats.flips += w.scratch.flips;
+    stats.edge_splits += w.scratch.edge_splits;
     stats.time_critical_s += w.stats.time_critical_s;
     stats.time_wait_s += w.stats.time_wait_s;
     stats.per_thread.push_back(w.stats);

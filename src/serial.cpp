@@ -16,11 +16,17 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
                    Stats& stats) {
   const VertexId n = kernel.n();
+  Scratch scratch;
+  struct Totals {  // the counters reach the stats however the loop ends
+    Scratch& s;
+    Stats& stats;
+    ~Totals() { stats.flips += s.flips, stats.edge_splits += s.edge_splits; }
+  } totals{scratch, stats};
   if (!profile) {
     LookAhead ahead(kernel, 0, 1, n, /*ring=*/true);
     for (VertexId p = 0; p < n; ++p) {
       const TriangleId start = ahead.take(p).node;
-      const VertexId hit = kernel.insert_at(kernel.classify(kernel.descend(start, p), p), p);
+      const VertexId hit = kernel.insert_at(kernel.classify(kernel.descend(start, p), p), p, scratch);
       if (hit != kNone) duplicates.push_back({p, hit});
     }
     return;
@@ -36,10 +42,10 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
       duplicates.push_back({p, kernel.triangles()[where.t].v[where.i]});
       continue;
     }
-    kernel.split_at(where, p);
+    kernel.split_at(where, p, scratch);
     const auto t2 = Clock::now();
     stats.time_split_s += std::chrono::duration<double>(t2 - t1).count();
-    kernel.legalize(p);
+    kernel.legalize(p, scratch);
     stats.time_legalize_s += seconds_since(t2);
   }
 }

@@ -85,6 +85,8 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   // After the DAG is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out);
   out.stats.threads = stats.threads;
+  out.stats.flips = stats.flips;
+  out.stats.edge_splits = stats.edge_splits;
   out.stats.time_insert_s = stats.time_insert_s;
   out.stats.time_critical_s = stats.time_critical_s;
   out.stats.time_wait_s = stats.time_wait_s;
