@@ -97,18 +97,20 @@ class Kernel {
 
   void prefetch(TriangleId t) const { __builtin_prefetch(&tris_[t]); }
   /// Prefetches the second ring around leaf t, once its neighbours are in cache: the
-  /// neighbours' far vertices and their other neighbours, which the first flips read.
-  /// Single-threaded only: it reads whole records that another thread may be writing.
+  /// neighbours' far vertices and their other neighbours, which the first flips read. Safe
+  /// while another thread changes the mesh: every word is read atomically, and a stale or
+  /// half-made record only sends a prefetch to the wrong line.
   void prefetch_ring(TriangleId t) const {
     const Triangle& r = tris_[t];
     if (r.load_child() != 0) return;  // split since: its n[] no longer names neighbours
     for (int i = 0; i < 3; ++i) {
-      if (r.n[i] == kNone) continue;
-      const Triangle& u = tris_[r.n[i]];
-      if (u.load_child() != 0) continue;  // split since: the insertion will find out
+      const Triangle* u = tris_.find(load_link(r.n[i]));
+      if (u == nullptr || u->load_child() != 0) continue;  // none, or split since
       for (int j = 0; j < 3; ++j) {
-        __builtin_prefetch(&points_[u.v[j]]);
-        if (u.n[j] != kNone && u.n[j] != t) __builtin_prefetch(&tris_[u.n[j]]);
+        const VertexId v = load_word(u->v[j]);
+        if (v < n_ + 3) __builtin_prefetch(&points_[v]);
+        const TriangleId w = load_link(u->n[j]);
+        if (w != t) tris_.prefetch(w);
       }
     }
   }
@@ -153,7 +155,7 @@ class Kernel {
   void make(TriangleId t, VertexId a, VertexId b, VertexId c, TriangleId na, TriangleId nb,
             TriangleId nc) {
     Triangle& r = tris_[t];
-    r.v[0] = a, r.v[1] = b, r.v[2] = c;
+    store_word(r.v[0], a), store_word(r.v[1], b), store_word(r.v[2], c);
     store_link(r.n[0], na), store_link(r.n[1], nb), store_link(r.n[2], nc);
     r.child = 0;  // published by the parent's release store
   }

@@ -81,6 +81,13 @@ class TriangleStore {
     return chunks_[t >> kChunkBits].load(std::memory_order_relaxed)[t & (kChunkSize - 1)];
   }
 
+  /// Record t if its chunk exists, else null: for ids from a racy, possibly stale read.
+  const Triangle* find(TriangleId t) const {
+    if (t > kIdMask) return nullptr;
+    const Triangle* chunk = chunks_[t >> kChunkBits].load(std::memory_order_acquire);
+    return chunk == nullptr ? nullptr : chunk + (t & (kChunkSize - 1));
+  }
+
   /// Prefetches record t if it may exist: t may come from a racy, possibly stale read.
   void prefetch(TriangleId t) const {
     if (t > kIdMask) return;
@@ -115,14 +122,21 @@ class TriangleStore {
   std::uint64_t capacity_ = 0;
 };
 
-/// Neighbour links are written and, outside the lock, read through these: a worker that
-/// prefetches around its leaf reads them while the lock holder may rewrite them. Relaxed
-/// atomics on aligned 32-bit words are plain moves on x86 and cost nothing.
+/// Neighbour links and vertices are written, and outside the lock read, through these: a
+/// worker that prefetches around its leaf reads them while the lock holder may rewrite them.
+/// On x86 these atomics are plain moves and cost nothing. Links are stored with release and
+/// loaded with acquire: a triangle is complete before a link to it is stored.
 inline void store_link(TriangleId& slot, TriangleId value) {
-  std::atomic_ref<TriangleId>(slot).store(value, std::memory_order_relaxed);
+  std::atomic_ref<TriangleId>(slot).store(value, std::memory_order_release);
 }
 inline TriangleId load_link(const TriangleId& slot) {
-  return std::atomic_ref<TriangleId>(const_cast<TriangleId&>(slot)).load(std::memory_order_relaxed);
+  return std::atomic_ref<TriangleId>(const_cast<TriangleId&>(slot)).load(std::memory_order_acquire);
+}
+inline void store_word(std::uint32_t& slot, std::uint32_t value) {
+  std::atomic_ref<std::uint32_t>(slot).store(value, std::memory_order_relaxed);
+}
+inline std::uint32_t load_word(const std::uint32_t& slot) {
+  return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(slot)).load(std::memory_order_relaxed);
 }
 
 }  // namespace ridt::detail

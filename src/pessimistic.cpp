@@ -67,8 +67,7 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
           Worker& out) {
   const auto t_start = Clock::now();
   Clock::duration critical{}, waiting{};
-  // No ring prefetch: it reads whole records that the lock holder may be writing.
-  LookAhead ahead(kernel, first, stride, kernel.n(), /*ring=*/false);
+  LookAhead ahead(kernel, first, stride, kernel.n(), /*ring=*/stride == 1);
   for (VertexId i = 0; i < ahead.count(); ++i) {
     const VertexId p = ahead.point(i);
     const LookAhead::Hint hint = ahead.take(i);
