@@ -16,6 +16,7 @@
 // and, inside, continues only if that leaf has been split since.
 #include <chrono>
 #include <atomic>
+#include <exception>
 #include <mutex>
 #include <thread>
 
@@ -24,6 +25,15 @@
 
 namespace ridt::detail {
 namespace {
+
+// Tells the core we are spinning (frees resources for the other hardware thread).
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
 
 // The critical section lasts about a microsecond: a thread that finds the lock taken spins
 // (reading, not writing, so the line stays shared) instead of sleeping in the kernel, which
@@ -36,7 +46,7 @@ class SpinLock {
       if (!locked_.exchange(true, std::memory_order_acquire)) return;
       while (locked_.load(std::memory_order_relaxed)) {
         if (++spins < kSpinsBeforeYield) {
-          __builtin_ia32_pause();
+          cpu_relax();
         } else {
           std::this_thread::yield();
           spins = 0;
@@ -60,15 +70,17 @@ struct alignas(64) Worker {  // each on its own cache lines
   Scratch scratch;
   std::vector<DuplicateHit> duplicates;
   ThreadStats stats;
+  std::exception_ptr error;  // what stopped it, rethrown by the master
 };
 
 template <bool kTimed>
 void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool paper,
-          Worker& out) {
+          const std::atomic<bool>& stop, Worker& out) {
   const auto t_start = Clock::now();
   Clock::duration critical{}, waiting{};
   LookAhead ahead(kernel, first, stride, kernel.n(), /*ring=*/stride == 1);
   for (VertexId i = 0; i < ahead.count(); ++i) {
+    if (stop.load(std::memory_order_relaxed)) break;  // another worker failed
     const VertexId p = ahead.point(i);
     const LookAhead::Hint hint = ahead.take(i);
     // Unlocked: down to a leaf; the paper's variant then backs up to the leaf's parent and
@@ -100,18 +112,26 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
 void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
                         std::vector<DuplicateHit>& duplicates, Stats& stats) {
   SpinLock lock;
+  std::atomic<bool> stop{false};
   std::vector<Worker> workers(threads);
   {
     std::vector<std::jthread> pool;
     pool.reserve(threads);
     for (unsigned w = 0; w < threads; ++w)
       pool.emplace_back([&, w] {
-        if (timed)
-          work<true>(kernel, lock, w, threads, paper, workers[w]);
-        else
-          work<false>(kernel, lock, w, threads, paper, workers[w]);
+        try {
+          if (timed)
+            work<true>(kernel, lock, w, threads, paper, stop, workers[w]);
+          else
+            work<false>(kernel, lock, w, threads, paper, stop, workers[w]);
+        } catch (...) {
+          workers[w].error = std::current_exception();
+          stop.store(true, std::memory_order_relaxed);
+        }
       });
   }  // the master waits for every worker (Fig. 10, line 6)
+  for (Worker& w : workers)
+    if (w.error) std::rethrow_exception(w.error);
   for (Worker& w : workers) {
     duplicates.insert(duplicates.end(), w.duplicates.begin(), w.duplicates.end());
     stats.flips += w.scratch.flips;
