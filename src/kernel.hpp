@@ -130,7 +130,6 @@ class Kernel {
   TriangleStore& triangles_for_finish() { return tris_; }
   const Point& point(VertexId v) const { return points_[v]; }
   std::uint32_t n() const { return n_; }
-  bool is_bounding(VertexId v) const { return v >= n_; }
 
   static constexpr TriangleId kRoot = 0;
 

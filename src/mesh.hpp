@@ -90,9 +90,7 @@ class TriangleStore {
 
   /// Prefetches record t if it may exist: t may come from a racy, possibly stale read.
   void prefetch(TriangleId t) const {
-    if (t > kIdMask) return;
-    const Triangle* chunk = chunks_[t >> kChunkBits].load(std::memory_order_relaxed);
-    if (chunk != nullptr) __builtin_prefetch(chunk + (t & (kChunkSize - 1)));
+    if (const Triangle* r = find(t)) __builtin_prefetch(r);
   }
 
   /// Reserves `count` consecutive ids.
@@ -103,7 +101,7 @@ class TriangleStore {
     while (capacity_ < end) {
       // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
       auto chunk = allocate_huge<Triangle>(kChunkSize, capacity_ > 0 || expected_ >= kChunkSize / 4);
-      // release: pairs with prefetch's racy load (the others are ordered as said above).
+      // release: pairs with find's racy load (the others are ordered as said above).
       chunks_[capacity_ >> kChunkBits].store(chunk.release(), std::memory_order_release);
       capacity_ += kChunkSize;
     }
