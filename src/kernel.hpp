@@ -66,6 +66,12 @@ class Kernel {
     // Two children split by the edge n[0] -> n[1]; the first lies to its left.
     return orient(r.n[0], r.n[1], p) >= 0 ? first : first + 1;
   }
+  /// Whether the closed region of node t (a triangle ever made) holds point p.
+  bool holds(TriangleId t, VertexId p) const {
+    const Triangle& r = tris_[t];
+    return orient(r.v[1], r.v[2], p) >= 0 && orient(r.v[2], r.v[0], p) >= 0 &&
+           orient(r.v[0], r.v[1], p) >= 0;
+  }
   /// Where p lies in leaf t (whose closure contains p).
   Location classify(TriangleId t, VertexId p) const;
 
@@ -95,7 +101,23 @@ class Kernel {
     return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
   }
 
-  void prefetch(TriangleId t) const { __builtin_prefetch(&tris_[t]); }
+  void prefetch(TriangleId t) const { prefetch_record(&tris_[t]); }
+  /// Prefetches the points that step(t, p) compares p with, once t's record is in cache, so
+  /// that the step after it finds them there. Returns false for a leaf (nothing to step).
+  /// Safe while other threads change the mesh: an internal node never changes after its
+  /// child link is published, and that link is read with acquire.
+  bool prefetch_step(TriangleId t) const {
+    const Triangle& r = tris_[t];
+    const std::uint32_t c = r.load_child();
+    if (c == 0) return false;
+    __builtin_prefetch(&points_[r.n[0]]);
+    if (c & kThreeChildren) {
+      for (int i = 0; i < 3; ++i) __builtin_prefetch(&points_[r.v[i]]);
+    } else {
+      __builtin_prefetch(&points_[r.n[1]]);
+    }
+    return true;
+  }
   /// Prefetches the second ring around leaf t, once its neighbours are in cache: the
   /// neighbours' far vertices and their other neighbours, which the first flips read. Safe
   /// while another thread changes the mesh: every word is read atomically, and a stale or

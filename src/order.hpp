@@ -4,10 +4,20 @@
 #include <cstdint>
 #include <vector>
 
+#include "ridt/ridt.hpp"
+
 namespace ridt::detail {
 
 /// A uniformly random permutation of 0 .. n-1 from `seed` (Fisher-Yates), the same on every
 /// machine.
 std::vector<std::uint32_t> random_permutation(std::uint32_t n, std::uint64_t seed);
+
+/// Position of (x, y), both in [0, 2^16), along the Hilbert curve of order 16: a 32-bit key.
+/// Points close on the curve are close in the plane.
+std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
+
+/// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box (a
+/// radix sort on hilbert_key: linear time, no comparison).
+std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);
 
 }  // namespace ridt::detail

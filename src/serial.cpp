@@ -1,8 +1,11 @@
 // The serial driver: the paper's Fig. 4 (randomized incremental insertion), made exact.
+// Points are inserted in the random order; their location is scheduled in rounds
+// (rounds.hpp) so that the descents of the DAG run mostly in cache.
 #include <chrono>
 
 #include "driver.hpp"
 #include "lookahead.hpp"
+#include "rounds.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -40,12 +43,23 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
   if (profile) {
     insert_profiled(kernel, scratch, duplicates, stats);
   } else {
-    const VertexId n = kernel.n();
-    LookAhead ahead(kernel, 0, 1, n, /*ring=*/true);
-    for (VertexId p = 0; p < n; ++p) {
-      const TriangleId leaf = kernel.descend(ahead.take(p).node, p);
-      const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
-      if (hit != kNone) duplicates.push_back({p, hit});
+    // Rounds (rounds.hpp): each round's points first descend the DAG along a Hilbert curve
+    // and keep the leaf they reach; then they are inserted in the random order, each
+    // finishing its descent from that leaf, with look-ahead over the next kWindow points.
+    constexpr VertexId kWindow = 16;  // enough: only about two levels are left to descend
+    RoundLocator rounds(kernel);
+    std::vector<TriangleId> hint;
+    for (std::size_t r = 0; r < rounds.rounds(); ++r) {
+      const VertexId first = rounds.first(r), end = rounds.first(r + 1);
+      hint.resize(end - first);
+      rounds.locate(r, hint.data());
+      LookAhead ahead(kernel, first, 1, end, /*ring=*/true, hint.data(), kWindow);
+      for (VertexId i = 0; i < ahead.count(); ++i) {
+        const VertexId p = first + i;
+        const TriangleId leaf = kernel.descend(ahead.take(i).node, p);
+        const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
+        if (hit != kNone) duplicates.push_back({p, hit});
+      }
     }
   }
   stats.flips += scratch.flips;

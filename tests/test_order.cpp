@@ -1,0 +1,68 @@
+// Insertion orders and the Hilbert curve that schedules location in rounds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+#include "generate.hpp"
+#include "order.hpp"
+
+namespace ridt::detail {
+namespace {
+
+TEST(RandomPermutation, IsAPermutationAndDependsOnTheSeed) {
+  const auto a = random_permutation(1000, 1), b = random_permutation(1000, 2);
+  auto sorted = a;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::uint32_t i = 0; i < 1000; ++i) ASSERT_EQ(sorted[i], i);
+  EXPECT_NE(a, b);
+  EXPECT_EQ(a, random_permutation(1000, 1));
+}
+
+// On the cells of a 2^k x 2^k subgrid (coordinates multiples of 2^(16-k)) the order-16 curve
+// visits the cells of the order-k curve: sorted by key, consecutive cells share a side, and
+// the keys are distinct.
+TEST(HilbertKey, ConsecutiveCellsAreNeighbours) {
+  for (int k : {1, 2, 3, 6}) {
+    const std::uint32_t side = 1u << k, step = 1u << (16 - k);
+    std::vector<std::pair<std::uint32_t, std::pair<int, int>>> cells;
+    for (std::uint32_t x = 0; x < side; ++x)
+      for (std::uint32_t y = 0; y < side; ++y)
+        cells.push_back({hilbert_key(x * step, y * step), {int(x), int(y)}});
+    std::sort(cells.begin(), cells.end());
+    EXPECT_EQ(cells.front().second, std::make_pair(0, 0)) << k;
+    for (std::size_t i = 1; i < cells.size(); ++i) {
+      ASSERT_NE(cells[i].first, cells[i - 1].first) << k;
+      const int d = std::abs(cells[i].second.first - cells[i - 1].second.first) +
+                    std::abs(cells[i].second.second - cells[i - 1].second.second);
+      ASSERT_EQ(d, 1) << "k=" << k << " at " << i;
+    }
+  }
+  EXPECT_EQ(hilbert_key(0, 0), 0u);
+  EXPECT_EQ(hilbert_key(0xffff, 0), 0xffffffffu);  // the curve ends at the lower right
+}
+
+TEST(HilbertOrder, SortsByKeyAndKeepsEveryIndex) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 5000, 4);
+  const std::vector<std::uint32_t> order = hilbert_order(pts.data(), 5000);
+  EXPECT_EQ(std::set<std::uint32_t>(order.begin(), order.end()).size(), 5000u);
+  // Neighbours along the curve are close: the mean step is far below the mean distance of
+  // two random points in the unit square (about 0.52).
+  double sum = 0;
+  for (std::size_t i = 1; i < order.size(); ++i)
+    sum += std::hypot(pts[order[i]].x - pts[order[i - 1]].x, pts[order[i]].y - pts[order[i - 1]].y);
+  EXPECT_LT(sum / 4999, 0.05);
+}
+
+TEST(HilbertOrder, SurvivesExtremeAndDegenerateBoxes) {
+  const std::vector<Point> huge = {{-1.7e308, -1.7e308}, {1.7e308, 1.7e308}, {0, 0}, {1.7e308, -1.7e308}};
+  EXPECT_EQ(hilbert_order(huge.data(), 4).size(), 4u);
+  const std::vector<Point> same(10, Point{3, 3});
+  EXPECT_EQ(hilbert_order(same.data(), 10).size(), 10u);
+  EXPECT_TRUE(hilbert_order(nullptr, 0).empty());
+}
+
+}  // namespace
+}  // namespace ridt::detail
