@@ -113,7 +113,19 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   out.neighbors.resize(3 * std::size_t{count});
   std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
   in_parallel([&](unsigned w) {
-    for (TriangleId t = range(w).first; t < range(w).second; ++t) {
+    // The records are read in order, their neighbours and the input numbers of their
+    // vertices at random: prefetch those of a record kAhead places on, so the misses overlap.
+    constexpr TriangleId kAhead = 64;
+    const auto [begin, end] = range(w);
+    for (TriangleId t = begin; t < end; ++t) {
+      if (t + kAhead < end) {
+        const Triangle& a = tris[t + kAhead];
+        if (a.child != 0) {
+          for (const TriangleId nb : a.n)
+            if (nb != kNone) tris.prefetch(nb);
+          for (const VertexId v : a.v) __builtin_prefetch(&input_index[v]);
+        }
+      }
       const Triangle& r = tris[t];
       const std::uint32_t id = r.child;
       if (id == 0) continue;

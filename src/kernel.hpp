@@ -102,6 +102,12 @@ class Kernel {
   }
 
   void prefetch(TriangleId t) const { prefetch_record(&tris_[t]); }
+  void prefetch_point(VertexId v) const { __builtin_prefetch(&points_[v]); }
+  /// Prefetches the vertices of node t, whose record is in cache (holds reads them).
+  void prefetch_vertices(TriangleId t) const {
+    const Triangle& r = tris_[t];
+    for (int i = 0; i < 3; ++i) __builtin_prefetch(&points_[load_word(r.v[i])]);
+  }
   /// Prefetches the points that step(t, p) compares p with, once t's record is in cache, so
   /// that the step after it finds them there. Returns false for a leaf (nothing to step).
   /// Safe while other threads change the mesh: an internal node never changes after its
@@ -133,6 +139,27 @@ class Kernel {
         if (v < n_ + 3) __builtin_prefetch(&points_[v]);
         const TriangleId w = load_link(u->n[j]);
         if (w != t) tris_.prefetch(w);
+      }
+    }
+  }
+  /// Prefetches the vertices of the second ring around leaf t, once prefetch_ring has brought
+  /// its records: a flip exposes the edges of the second ring, and testing them reads those
+  /// vertices. Safe under threads for the same reasons as prefetch_ring.
+  void prefetch_ring_points(TriangleId t) const {
+    const Triangle& r = tris_[t];
+    if (r.load_child() != 0) return;
+    for (int i = 0; i < 3; ++i) {
+      const Triangle* u = tris_.find(load_link(r.n[i]));
+      if (u == nullptr || u->load_child() != 0) continue;
+      for (int j = 0; j < 3; ++j) {
+        const TriangleId w = load_link(u->n[j]);
+        if (w == t) continue;
+        const Triangle* x = tris_.find(w);
+        if (x == nullptr) continue;
+        for (int k = 0; k < 3; ++k) {
+          const VertexId v = load_word(x->v[k]);
+          if (v < n_ + 3) __builtin_prefetch(&points_[v]);
+        }
       }
     }
   }

@@ -54,7 +54,9 @@ class LookAhead {
   // A level takes two steps: kDescending prefetches the points that the node's test reads
   // (its record was prefetched the step before), kStepping takes the step and prefetches the
   // record reached. Both kinds of miss then overlap with the other points' work.
-  enum class State : std::uint8_t { kDescending, kStepping, kAtLeaf, kDone };
+  // At the leaf, two more steps prefetch the first ring (records), then the second ring
+  // (records, then vertices), which legalization reads.
+  enum class State : std::uint8_t { kDescending, kStepping, kAtLeaf, kAtRing, kDone };
   struct Slot {
     TriangleId node, parent;
     State state;
@@ -72,6 +74,10 @@ class LookAhead {
         return;
       case State::kAtLeaf:
         if (ring_) kernel_.prefetch_ring(s.node);
+        s.state = ring_ ? State::kAtRing : State::kDone;
+        return;
+      case State::kAtRing:
+        kernel_.prefetch_ring_points(s.node);
         s.state = State::kDone;
         return;
       case State::kDescending:
