@@ -1,6 +1,7 @@
 #include "order.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <utility>
@@ -17,21 +18,44 @@ std::vector<std::uint32_t> random_permutation(std::uint32_t n, std::uint64_t see
   return order;
 }
 
-std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
-  // From the coarsest level down: the quadrant of (x, y) gives two bits of the key; then the
-  // coordinates are mapped into that quadrant's frame (a reflection and a swap), so that the
-  // curve inside each quadrant is again the standard one.
-  std::uint32_t key = 0;
-  for (std::uint32_t half = 1u << 15; half != 0; half >>= 1) {
-    const std::uint32_t right = (x & half) ? 1 : 0, up = (y & half) ? 1 : 0;
-    key += half * half * ((3 * right) ^ up);  // quadrants in curve order: 0 (0,0), 1 (0,1), 2 (1,1), 3 (1,0)
-    if (up == 0) {
-      if (right == 1) {  // lower right: reflect across the anti-diagonal
-        x = ~x & 0xffffu;
-        y = ~y & 0xffffu;
+namespace {
+
+// The Hilbert curve as a state machine. Going down one level, the quadrant of (x, y) gives two
+// bits of the key, and the curve inside that quadrant is the standard one after a swap of the
+// axes and/or a reflection of both: two bits of state, and the two operations commute. The
+// table takes four levels at a time: index (state, 4 bits of x, 4 bits of y), entry (8 bits of
+// key, next state).
+struct HilbertStep {
+  std::uint8_t key, state;
+};
+constexpr std::array<HilbertStep, 1024> hilbert_table() {
+  std::array<HilbertStep, 1024> table{};
+  for (unsigned state = 0; state < 4; ++state)
+    for (unsigned x = 0; x < 16; ++x)
+      for (unsigned y = 0; y < 16; ++y) {
+        unsigned s = state, key = 0;
+        for (int bit = 3; bit >= 0; --bit) {
+          unsigned right = (x >> bit) & 1, up = (y >> bit) & 1;
+          if (s & 2) right ^= 1, up ^= 1;  // reflected
+          if (s & 1) std::swap(right, up);  // axes swapped
+          // Quadrants in curve order: 0 (0,0), 1 (0,1), 2 (1,1), 3 (1,0).
+          key = key << 2 | ((3 * right) ^ up);
+          if (up == 0) s ^= right == 1 ? 3 : 1;  // lower right: reflect and swap; lower left: swap
+        }
+        table[state << 8 | x << 4 | y] = {static_cast<std::uint8_t>(key), static_cast<std::uint8_t>(s)};
       }
-      std::swap(x, y);  // lower quadrants: transpose
-    }
+  return table;
+}
+constexpr std::array<HilbertStep, 1024> kHilbert = hilbert_table();
+
+}  // namespace
+
+std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t key = 0, state = 0;
+  for (int shift = 12; shift >= 0; shift -= 4) {
+    const HilbertStep step = kHilbert[state << 8 | ((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
+    key = key << 8 | step.key;
+    state = step.state;
   }
   return key;
 }

@@ -21,6 +21,29 @@ TEST(RandomPermutation, IsAPermutationAndDependsOnTheSeed) {
   EXPECT_EQ(a, random_permutation(1000, 1));
 }
 
+// The curve one level at a time, the textbook way: the table-driven key must agree.
+std::uint32_t hilbert_key_by_levels(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t key = 0;
+  for (std::uint32_t half = 1u << 15; half != 0; half >>= 1) {
+    const std::uint32_t right = (x & half) ? 1 : 0, up = (y & half) ? 1 : 0;
+    key += half * half * ((3 * right) ^ up);
+    if (up == 0) {
+      if (right == 1) x = ~x & 0xffffu, y = ~y & 0xffffu;
+      std::swap(x, y);
+    }
+  }
+  return key;
+}
+
+TEST(HilbertKey, AgreesWithTheCurveLevelByLevel) {
+  std::uint64_t z = 12345;
+  for (int i = 0; i < 200000; ++i) {
+    z = z * 6364136223846793005ULL + 1442695040888963407ULL;
+    const auto x = static_cast<std::uint32_t>(z >> 48), y = static_cast<std::uint32_t>((z >> 32) & 0xffff);
+    ASSERT_EQ(hilbert_key(x, y), hilbert_key_by_levels(x, y)) << x << " " << y;
+  }
+}
+
 // On the cells of a 2^k x 2^k subgrid (coordinates multiples of 2^(16-k)) the order-16 curve
 // visits the cells of the order-k curve: sorted by key, consecutive cells share a side, and
 // the keys are distinct.
