@@ -23,6 +23,14 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
 void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
                         std::vector<DuplicateHit>& duplicates, Stats& stats);
 
+/// The optimistic method with `threads` workers (optimistic.cpp).
+void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
+                       std::vector<DuplicateHit>& duplicates, Stats& stats);
+
+/// The batch method: threads - 1 locators and one modifier (batch.cpp).
+void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
+                  Stats& stats);
+
 /// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
 /// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
 /// point input_index[v]. Uses up to `threads` threads.

@@ -90,13 +90,19 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
 
   // Pass 1: the child links are dead now; a kept triangle's link becomes its new id + 1.
   auto kept = [&](const Triangle& r) {
-    return r.child == 0 && r.v[0] < n && r.v[1] < n && r.v[2] < n;
+    return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n;
   };
   std::vector<std::uint32_t> first_id(workers + 1, 0);
+  std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
   in_parallel([&](unsigned w) {
     std::uint32_t c = 0;
-    for (TriangleId t = range(w).first; t < range(w).second; ++t) c += kept(tris[t]);
+    std::uint64_t m = 0;
+    for (TriangleId t = range(w).first; t < range(w).second; ++t) {
+      c += kept(tris[t]);
+      m += tris[t].v[0] != kNone;
+    }
     first_id[w + 1] = c;
+    made[w] = m;
   });
   for (unsigned w = 0; w < workers; ++w) first_id[w + 1] += first_id[w];
   const std::uint32_t count = first_id[workers];
@@ -164,7 +170,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   s.points = n;
   s.duplicates = out.duplicates.size();
   s.distinct = n - s.duplicates;
-  s.dag_nodes = records;
+  s.dag_nodes = std::accumulate(made.begin(), made.end(), std::uint64_t{0});
   if (s.distinct < 3) {
     out.warning = "fewer than three distinct points: no triangle";
   } else if (count == 0) {

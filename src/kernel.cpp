@@ -1,5 +1,6 @@
 #include "kernel.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <stdexcept>
 
@@ -18,9 +19,21 @@ bool between(const Point& p, const Point& a, const Point& b) {
 
 Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic)
     : points_(std::move(points)), n_(n), symbolic_(symbolic),
-      tris_(std::uint64_t{n} * 9 + 16) {  // about 9 records a point: 3 from the split, 2 a flip
-  const TriangleId root = tris_.allocate(1);
-  make(root, n, n + 1, n + 2, kNone, kNone, kNone);
+      tris_(std::uint64_t{n} * 9 + kFirstChild) {  // about 9 records a point: 3 from the split, 2 a flip
+  Scratch s;
+  const TriangleId root = tris_.allocate(kFirstChild);
+  make(root, n, n + 1, n + 2, kNone, kNone, kNone, s);
+  // Ids 1 .. kMaxOwner are never triangles (mesh.hpp).
+  for (TriangleId t = root + 1; t < kFirstChild; ++t) make(t, kNone, kNone, kNone, kNone, kNone, kNone, s);
+}
+
+void Kernel::retire_pool(Scratch& s) {
+  for (; s.pool_next < s.pool_end; ++s.pool_next) {
+    Triangle& r = tris_[s.pool_next];
+    r.v[0] = r.v[1] = r.v[2] = kNone;  // the finish keeps only triangles of real vertices
+    r.n[0] = r.n[1] = r.n[2] = kNone;
+    r.child = 0;
+  }
 }
 
 // orient(p, q, Bk) for finite p, q is R^e * cross(q - p, Bk) + lower terms; its sign is the
@@ -111,19 +124,19 @@ Kernel::Location Kernel::classify(TriangleId t, VertexId p) const {
  *                n2
  */
 void Kernel::split_triangle(TriangleId t, VertexId p, Scratch& s) {
-  const TriangleId c = tris_.allocate(3);
+  const TriangleId c = allocate(3, s);
   const Triangle& r = tris_[t];
   const VertexId v0 = r.v[0], v1 = r.v[1], v2 = r.v[2];
   const TriangleId n0 = r.n[0], n1 = r.n[1], n2 = r.n[2];
-  make(c, p, v1, v2, n0, c + 1, c + 2);
-  make(c + 1, p, v2, v0, n1, c + 2, c);
-  make(c + 2, p, v0, v1, n2, c, c + 1);
-  relink(n0, t, c);
-  relink(n1, t, c + 1);
-  relink(n2, t, c + 2);
+  make(c, p, v1, v2, n0, c + 1, c + 2, s);
+  make(c + 1, p, v2, v0, n1, c + 2, c, s);
+  make(c + 2, p, v0, v1, n2, c, c + 1, s);
+  relink(n0, t, c, s);
+  relink(n1, t, c + 1, s);
+  relink(n2, t, c + 2, s);
+  require_owned(t, s);
   store_link(tris_[t].n[0], p);  // t's neighbours are dead now; the descent reads p here
-  // release: the children above are complete before a locating thread can reach them.
-  tris_[t].child_link().store(c | kThreeChildren, std::memory_order_release);
+  publish_children(t, c | kThreeChildren, s);
   s.stack.push_back(c);
   s.stack.push_back(c + 1);
   s.stack.push_back(c + 2);
@@ -153,19 +166,19 @@ void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
   const VertexId d = ru.v[j];
   const TriangleId un_c = ru.n[next(j)], un_b = ru.n[prev(j)];
 
-  const TriangleId t0 = tris_.allocate(4), t1 = t0 + 1, u0 = t0 + 2, u1 = t0 + 3;
-  make(t0, p, a, b, tn_c, u1, t1);
-  make(t1, p, c, a, tn_b, t0, u0);
-  make(u0, p, d, c, un_b, t1, u1);
-  make(u1, p, b, d, un_c, u0, t0);
-  relink(tn_c, t, t0);
-  relink(tn_b, t, t1);
-  relink(un_b, u, u0);
-  relink(un_c, u, u1);
-  set_separator(t, p, a);
-  set_separator(u, p, d);
-  tris_[t].child_link().store(t0, std::memory_order_release);  // release: as in split_triangle
-  tris_[u].child_link().store(u0, std::memory_order_release);
+  const TriangleId t0 = allocate(4, s), t1 = t0 + 1, u0 = t0 + 2, u1 = t0 + 3;
+  make(t0, p, a, b, tn_c, u1, t1, s);
+  make(t1, p, c, a, tn_b, t0, u0, s);
+  make(u0, p, d, c, un_b, t1, u1, s);
+  make(u1, p, b, d, un_c, u0, t0, s);
+  relink(tn_c, t, t0, s);
+  relink(tn_b, t, t1, s);
+  relink(un_b, u, u0, s);
+  relink(un_c, u, u1, s);
+  set_separator(t, p, a, s);
+  set_separator(u, p, d, s);
+  publish_children(t, t0, s);
+  publish_children(u, u0, s);
   s.stack.push_back(t0);
   s.stack.push_back(t1);
   s.stack.push_back(u0);
@@ -192,17 +205,17 @@ void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
   const TriangleId tb = rt.n[1], ta = rt.n[2];
   const TriangleId uaq = ru.n[next(j)], uqb = ru.n[prev(j)];
 
-  const TriangleId n2 = tris_.allocate(2), n1 = n2 + 1;
-  make(n2, p, q, b, uqb, tb, n1);
-  make(n1, p, a, q, uaq, n2, ta);
-  relink(uqb, u, n2);
-  relink(tb, t, n2);
-  relink(uaq, u, n1);
-  relink(ta, t, n1);
-  set_separator(t, p, q);
-  set_separator(u, p, q);
-  tris_[t].child_link().store(n2, std::memory_order_release);  // release: as in split_triangle
-  tris_[u].child_link().store(n2, std::memory_order_release);
+  const TriangleId n2 = allocate(2, s), n1 = n2 + 1;
+  make(n2, p, q, b, uqb, tb, n1, s);
+  make(n1, p, a, q, uaq, n2, ta, s);
+  relink(uqb, u, n2, s);
+  relink(tb, t, n2, s);
+  relink(uaq, u, n1, s);
+  relink(ta, t, n1, s);
+  set_separator(t, p, q, s);
+  set_separator(u, p, q, s);
+  publish_children(t, n2, s);
+  publish_children(u, n2, s);
   s.stack.push_back(n1);
   s.stack.push_back(n2);
 }
@@ -216,7 +229,10 @@ void Kernel::legalize(VertexId p, Scratch& s) {
     const TriangleId u = tris_[t].n[0];
     if (u == kNone) continue;  // an edge of the bounding triangle
     const Triangle& ru = tris_[u];
-    if (incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0) {
+    const bool illegal = s.cavity != nullptr
+                             ? std::find(s.cavity->begin(), s.cavity->end(), u) != s.cavity->end()
+                             : incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0;
+    if (illegal) {
       const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
       flip(t, u, j, s);
     }

@@ -29,6 +29,18 @@ struct alignas(64) Scratch {
   std::vector<TriangleId> stack;
   std::uint64_t flips = 0;
   std::uint64_t edge_splits = 0;
+  // The optimistic method only. `owner` (1 .. kMaxOwner) marks the records this thread makes
+  // and must own before each write (0: no ownership is kept); `made` lists them, to be
+  // released after the insertion. Records come from the thread's own block of ids,
+  // [pool_next, pool_end), when `pooled`.
+  std::uint32_t owner = 0;
+  std::vector<TriangleId> made;
+  // When set: the triangles whose circumcircle holds the point being inserted, found by the
+  // caller with the same incircle test. Every triangle legalization tests is one that existed
+  // before the insertion, so it flips exactly these, and the test need not run twice.
+  const std::vector<TriangleId>* cavity = nullptr;
+  bool pooled = false;
+  TriangleId pool_next = 0, pool_end = 0;
 };
 
 class Kernel {
@@ -54,7 +66,7 @@ class Kernel {
     // acquire: pairs with the release store that published the children (mesh.hpp).
     const Triangle& r = tris_[t];
     const std::uint32_t c = r.load_child();
-    if (c == 0) return t;
+    if (is_leaf(c)) return t;
     const TriangleId first = c & kIdMask;
     if (c & kThreeChildren) {
       // Children (q, v1, v2), (q, v2, v0), (q, v0, v1) fill the wedges between the rays
@@ -115,7 +127,7 @@ class Kernel {
   bool prefetch_step(TriangleId t) const {
     const Triangle& r = tris_[t];
     const std::uint32_t c = r.load_child();
-    if (c == 0) return false;
+    if (is_leaf(c)) return false;
     __builtin_prefetch(&points_[r.n[0]]);
     if (c & kThreeChildren) {
       for (int i = 0; i < 3; ++i) __builtin_prefetch(&points_[r.v[i]]);
@@ -130,10 +142,10 @@ class Kernel {
   /// half-made record only sends a prefetch to the wrong line.
   void prefetch_ring(TriangleId t) const {
     const Triangle& r = tris_[t];
-    if (r.load_child() != 0) return;  // split since: its n[] no longer names neighbours
+    if (!is_leaf(r.load_child())) return;  // split since: its n[] no longer names neighbours
     for (int i = 0; i < 3; ++i) {
       const Triangle* u = tris_.find(load_link(r.n[i]));
-      if (u == nullptr || u->load_child() != 0) continue;  // none, or split since
+      if (u == nullptr || !is_leaf(u->load_child())) continue;  // none, or split since
       for (int j = 0; j < 3; ++j) {
         const VertexId v = load_word(u->v[j]);
         if (v < n_ + 3) __builtin_prefetch(&points_[v]);
@@ -147,10 +159,10 @@ class Kernel {
   /// vertices. Safe under threads for the same reasons as prefetch_ring.
   void prefetch_ring_points(TriangleId t) const {
     const Triangle& r = tris_[t];
-    if (r.load_child() != 0) return;
+    if (!is_leaf(r.load_child())) return;
     for (int i = 0; i < 3; ++i) {
       const Triangle* u = tris_.find(load_link(r.n[i]));
-      if (u == nullptr || u->load_child() != 0) continue;
+      if (u == nullptr || !is_leaf(u->load_child())) continue;
       for (int j = 0; j < 3; ++j) {
         const TriangleId w = load_link(u->n[j]);
         if (w == t) continue;
@@ -174,6 +186,32 @@ class Kernel {
     }
   }
 
+  // Ownership, for the optimistic method: the one-word lock of each leaf is its child word
+  // (mesh.hpp), 0 when free and the owner's number while owned. Only leaves are ever owned.
+
+  /// Takes leaf t for `me` if nobody has it. False if another thread owns it or t is no
+  /// longer a leaf (then its child word is a link, and the caller descends on from it).
+  bool try_acquire(TriangleId t, std::uint32_t me) {
+    std::uint32_t expected = 0;
+    // acquire: what the last owner wrote to t (its links) happens before our reads of it.
+    return tris_[t].child_link().compare_exchange_strong(expected, me, std::memory_order_acquire,
+                                                         std::memory_order_relaxed);
+  }
+  /// Gives t back, if `me` still owns it: a triangle killed meanwhile holds its child link
+  /// now, published by us, and stays as it is.
+  void release(TriangleId t, std::uint32_t me) {
+    auto word = tris_[t].child_link();
+    // Only the owner writes an owned word, so reading then storing cannot race.
+    // release: our writes to t happen before the next owner's reads.
+    if (word.load(std::memory_order_relaxed) == me) word.store(0, std::memory_order_release);
+  }
+  bool owns(TriangleId t, std::uint32_t me) const {
+    return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(tris_[t].child))
+               .load(std::memory_order_relaxed) == me;
+  }
+  /// Marks the unused rest of a pooled thread's block as no triangle, for the finish.
+  void retire_pool(Scratch& s);
+
   const TriangleStore& triangles() const { return tris_; }
   /// For the finish only: it reuses the child links, dead by then, as scratch.
   TriangleStore& triangles_for_finish() { return tris_; }
@@ -186,26 +224,58 @@ class Kernel {
   int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
   int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
 
+  /// `count` consecutive new ids: from the shared store, or from the thread's pool.
+  TriangleId allocate(std::uint32_t count, Scratch& s) {
+    if (!s.pooled) return tris_.allocate(count);
+    if (s.pool_end - s.pool_next < count) {
+      retire_pool(s);
+      s.pool_next = tris_.allocate_shared(kPoolBlock);
+      s.pool_end = s.pool_next + kPoolBlock;
+    }
+    const TriangleId first = s.pool_next;
+    s.pool_next += count;
+    return first;
+  }
+  // Ids a pooled thread takes at once: one shared atomic add per some 450 insertions.
+  static constexpr std::uint32_t kPoolBlock = 4096;
+
+  /// Before every write to an existing triangle: with ownership kept, the writer must own it.
+  /// A failure here is a broken locking protocol, never bad input.
+  void require_owned(TriangleId t, const Scratch& s) const {
+    if (s.owner != 0 && !owns(t, s.owner))
+      throw std::logic_error("ridt: a thread wrote a triangle it does not own");
+  }
+
   void split_triangle(TriangleId t, VertexId p, Scratch& s);
   void split_edge(TriangleId t, int i, VertexId p, Scratch& s);
   void flip(TriangleId t, TriangleId u, int j, Scratch& s);
   // Neighbour u of `old` now borders `now` instead.
-  void relink(TriangleId u, TriangleId old, TriangleId now) {
+  void relink(TriangleId u, TriangleId old, TriangleId now, const Scratch& s) {
     if (u == kNone) return;
+    require_owned(u, s);
     Triangle& r = tris_[u];
     store_link(r.n[r.n[0] == old ? 0 : (r.n[1] == old ? 1 : 2)], now);
   }
   // The two children of t are split by the directed edge a -> b, the first on its left.
-  void set_separator(TriangleId t, VertexId a, VertexId b) {
+  void set_separator(TriangleId t, VertexId a, VertexId b, const Scratch& s) {
+    require_owned(t, s);
     store_link(tris_[t].n[0], a);
     store_link(tris_[t].n[1], b);
   }
+  // t's children are complete: make them reachable. This also ends t's ownership.
+  void publish_children(TriangleId t, std::uint32_t link, const Scratch& s) {
+    require_owned(t, s);
+    // release: the children are complete before a locating thread can reach them.
+    tris_[t].child_link().store(link, std::memory_order_release);
+  }
+  // A new triangle, owned from birth by the thread that makes it (if it keeps ownership).
   void make(TriangleId t, VertexId a, VertexId b, VertexId c, TriangleId na, TriangleId nb,
-            TriangleId nc) {
+            TriangleId nc, Scratch& s) {
     Triangle& r = tris_[t];
     store_word(r.v[0], a), store_word(r.v[1], b), store_word(r.v[2], c);
     store_link(r.n[0], na), store_link(r.n[1], nb), store_link(r.n[2], nc);
-    r.child = 0;  // published by the parent's release store
+    r.child = s.owner;  // published by the parent's release store
+    if (s.owner != 0) s.made.push_back(t);
   }
 
   std::unique_ptr<Point[], FreeDeleter> points_;

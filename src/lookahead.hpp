@@ -23,8 +23,8 @@ class LookAhead {
     TriangleId parent;  // the node before it on the path (the node itself where the path began)
   };
 
-  /// The sequence first, first + stride, ... below end; the i-th point of it starts its
-  /// descent at start[i], or at the root without `start`. `window` (a power of two at most
+  /// The sequence first, first + stride, ... below end; point v of it starts its descent at
+  /// start[v - first], or at the root without `start`. `window` (a power of two at most
   /// kMaxWindow): how many points ahead are advanced. A point that reaches a leaf prefetches
   /// the leaf's neighbours and, with `ring`, the ring beyond them. The ring pays on one
   /// thread; with several it pulls in lines that the lock holder may be writing, and is left
@@ -63,7 +63,7 @@ class LookAhead {
   };
 
   void enter(VertexId j) {
-    const TriangleId t = start_ != nullptr ? start_[j] : Kernel::kRoot;
+    const TriangleId t = start_ != nullptr ? start_[j * stride_] : Kernel::kRoot;
     kernel_.prefetch(t);  // read at its first step
     slots_[j & mask_] = {t, t, State::kDescending};
   }

@@ -5,16 +5,19 @@
 //   v[i] counter-clockwise; n[i] is the neighbour across the edge opposite v[i], that is the
 //   edge v[next(i)] -> v[prev(i)]; kNone where there is none (the outer edges of the
 //   bounding triangle).
-//   child: 0 while the triangle is a leaf (a current triangle). Otherwise the id of its first
-//   child, with kThreeChildren set when it has three (a 1->3 split) and two otherwise (a 2->4
-//   split or a flip). Children are allocated consecutively, so one id names them all. Id 0 is
-//   the root, never a child, which frees 0 to mean "leaf".
+//   child: at most kMaxOwner while the triangle is a leaf (a current triangle): 0, or the
+//   thread that owns it (the optimistic method's per-triangle lock, kernel.hpp). Otherwise the
+//   id of its first child, with kThreeChildren set when it has three (a 1->3 split) and two
+//   otherwise (a 2->4 split or a flip). Children are allocated consecutively, so one id names
+//   them all. Id 0 is the root and ids 1 .. kMaxOwner are never used, which frees the small
+//   values to mean "leaf". Publishing a triangle's children thus also ends its ownership.
 // See docs/mesh.md for drawings.
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <type_traits>
@@ -27,6 +30,12 @@ namespace ridt::detail {
 inline constexpr std::uint32_t kNone = 0xffffffffu;
 inline constexpr std::uint32_t kThreeChildren = 0x80000000u;
 inline constexpr std::uint32_t kIdMask = 0x7fffffffu;
+
+/// The most threads that can own triangles; ids 1 .. kMaxOwner are left unused (see above).
+inline constexpr std::uint32_t kMaxOwner = 1024;
+inline constexpr TriangleId kFirstChild = kMaxOwner + 1;
+/// Whether a child word (Triangle::child) belongs to a leaf.
+constexpr bool is_leaf(std::uint32_t child_word) { return child_word <= kMaxOwner; }
 
 constexpr int next(int i) { return i == 2 ? 0 : i + 1; }
 constexpr int prev(int i) { return i == 0 ? 2 : i - 1; }
@@ -104,31 +113,53 @@ class TriangleStore {
     if (const Triangle* r = find(t)) prefetch_record(r);
   }
 
-  /// Reserves `count` consecutive ids.
+  /// Reserves `count` consecutive ids. One thread at a time (the serial method, or whoever
+  /// holds the pessimistic lock).
   TriangleId allocate(std::uint32_t count) {
-    const TriangleId first = size_;
-    const std::uint64_t end = std::uint64_t{size_} + count;
+    const TriangleId first = size_.load(std::memory_order_relaxed);
+    const std::uint64_t end = std::uint64_t{first} + count;
     if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
-    while (capacity_ < end) {
-      // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
-      auto chunk = allocate_huge<Triangle>(kChunkSize, capacity_ > 0 || expected_ >= kChunkSize / 4);
-      // release: pairs with find's racy load (the others are ordered as said above).
-      chunks_[capacity_ >> kChunkBits].store(chunk.release(), std::memory_order_release);
-      capacity_ += kChunkSize;
-    }
-    size_ = static_cast<std::uint32_t>(end);
+    if (end > capacity_.load(std::memory_order_relaxed)) grow(end);
+    size_.store(static_cast<std::uint32_t>(end), std::memory_order_relaxed);
     return first;
   }
 
-  std::uint32_t size() const { return size_; }
+  /// The same, safe for several threads at once: for blocks that each thread then hands out
+  /// on its own (the optimistic method's pools).
+  TriangleId allocate_shared(std::uint32_t count) {
+    // relaxed: the ids need only be distinct; the records are reached through links published
+    // later with release.
+    const std::uint64_t first = size_.fetch_add(count, std::memory_order_relaxed);
+    const std::uint64_t end = first + count;
+    if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
+    // acquire: pairs with grow's release, so the chunks below capacity are seen.
+    if (end > capacity_.load(std::memory_order_acquire)) grow(end);
+    return static_cast<TriangleId>(first);
+  }
+
+  std::uint32_t size() const { return size_.load(std::memory_order_relaxed); }
 
  private:
+  void grow(std::uint64_t end) {
+    const std::lock_guard<std::mutex> guard(grow_);
+    std::uint64_t capacity = capacity_.load(std::memory_order_relaxed);
+    while (capacity < end) {
+      // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
+      auto chunk = allocate_huge<Triangle>(kChunkSize, capacity > 0 || expected_ >= kChunkSize / 4);
+      // release: pairs with find's racy load (the others are ordered as said above).
+      chunks_[capacity >> kChunkBits].store(chunk.release(), std::memory_order_release);
+      capacity += kChunkSize;
+      capacity_.store(capacity, std::memory_order_release);
+    }
+  }
+
   std::uint64_t expected_;
   std::unique_ptr<std::atomic<Triangle*>[]> chunks_;  // read by every thread at every step
-  // Written at every allocation, by whichever thread holds the lock: a line of their own, or
-  // each write would evict the line above from the other threads' caches.
-  alignas(64) std::uint32_t size_ = 0;
-  std::uint64_t capacity_ = 0;
+  // Written at every allocation: a line of their own, or each write would evict the line
+  // above from the other threads' caches.
+  alignas(64) std::atomic<std::uint32_t> size_{0};
+  std::atomic<std::uint64_t> capacity_{0};
+  std::mutex grow_;
 };
 
 /// Neighbour links and vertices are written, and outside the lock read, through these: a

@@ -60,26 +60,28 @@ std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
   return key;
 }
 
-std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
-  std::vector<std::uint32_t> order(n);
-  if (n == 0) return order;
+std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n) {
+  std::vector<std::uint32_t> key(n);
+  if (n == 0) return key;
   double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
   for (std::uint32_t i = 1; i < n; ++i) {
     x0 = std::min(x0, points[i].x), x1 = std::max(x1, points[i].x);
     y0 = std::min(y0, points[i].y), y1 = std::max(y1, points[i].y);
   }
-  // One scale for both axes keeps the curve's cells square. Halving first keeps x1 - x0
-  // finite for coordinates near the largest double.
+  // Halving first keeps x1 - x0 finite for coordinates near the largest double.
   const double extent = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
   const double scale = extent > 0 ? 32767.0 / extent : 0.0;  // 65535 / (2 * extent)
-  std::vector<std::uint32_t> key(n), key2(n), order2(n);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const auto cell = [&](double v, double lo) {
-      return static_cast<std::uint32_t>(std::clamp((v / 2 - lo / 2) * scale, 0.0, 65535.0));
-    };
-    key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
-    order[i] = i;
-  }
+  const auto cell = [&](double v, double lo) {
+    return static_cast<std::uint32_t>(std::clamp((v / 2 - lo / 2) * scale, 0.0, 65535.0));
+  };
+  for (std::uint32_t i = 0; i < n; ++i) key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
+  return key;
+}
+
+std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
+  std::vector<std::uint32_t> key = hilbert_keys(points, n);
+  std::vector<std::uint32_t> order(n), key2(n), order2(n);
+  std::iota(order.begin(), order.end(), 0u);
   // Least significant digit first, 11 bits a pass: three stable counting passes.
   constexpr int kBits = 11;
   std::vector<std::uint32_t> count(std::size_t{1} << kBits);

@@ -16,6 +16,10 @@ std::vector<std::uint32_t> random_permutation(std::uint32_t n, std::uint64_t see
 /// Points close on the curve are close in the plane.
 std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
 
+/// hilbert_key of each point, over the bounding box of the n points (one scale for both axes,
+/// so the curve's cells are square).
+std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n);
+
 /// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box (a
 /// radix sort on hilbert_key: linear time, no comparison).
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);

@@ -2,9 +2,11 @@
 // by Randomized Incremental Insertion", section 3).
 //
 // The master has made the random permutation (vertex v is the v-th point of it); worker w of T
-// inserts the points w, w + T, w + 2T, ... into the one shared triangulation. A worker
-// descends the DAG without the lock; the rest of location, the split and the legalization
-// run inside one critical section, so only one thread ever changes the mesh.
+// inserts the points w, w + T, w + 2T, ... of each round into the one shared triangulation. A
+// worker descends the DAG without the lock; the rest of location, the split and the
+// legalization run inside one critical section, so only one thread ever changes the mesh.
+// Before each round the workers locate its points together (threads.hpp, rounds.hpp), so a
+// descent during insertion starts from a leaf of the round's beginning.
 //
 // Why the descent needs no lock: the records a descent reads (vertices, the split point or
 // separating edge of an internal node, the child link) are all written before the child link
@@ -14,78 +16,34 @@
 // Two variants: the paper's stops the unlocked descent at the parent of a leaf and finishes
 // it inside the lock (Options::paper_locking); the default goes to a leaf outside the lock
 // and, inside, continues only if that leaf has been split since.
-#include <chrono>
-#include <atomic>
-#include <exception>
 #include <mutex>
-#include <thread>
 
 #include "driver.hpp"
 #include "lookahead.hpp"
+#include "threads.hpp"
 
 namespace ridt::detail {
 namespace {
-
-// Tells the core we are spinning (frees resources for the other hardware thread).
-inline void cpu_relax() {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#elif defined(__aarch64__)
-  asm volatile("yield");
-#endif
-}
-
-// The critical section lasts about a microsecond: a thread that finds the lock taken spins
-// (reading, not writing, so the line stays shared) instead of sleeping in the kernel, which
-// costs more than the wait. After a while it yields, so oversubscribed runs still progress.
-class SpinLock {
- public:
-  void lock() {
-    for (int spins = 0;; ++spins) {
-      // acquire: the holder's changes to the mesh happen before ours.
-      if (!locked_.exchange(true, std::memory_order_acquire)) return;
-      while (locked_.load(std::memory_order_relaxed)) {
-        if (++spins < kSpinsBeforeYield) {
-          cpu_relax();
-        } else {
-          std::this_thread::yield();
-          spins = 0;
-        }
-      }
-    }
-  }
-  // release: our changes to the mesh happen before the next holder's.
-  void unlock() { locked_.store(false, std::memory_order_release); }
-
- private:
-  static constexpr int kSpinsBeforeYield = 4096;  // a few microseconds of pause instructions
-  alignas(64) std::atomic<bool> locked_{false};   // its own cache line
-};
-
-using Clock = std::chrono::steady_clock;
-
-double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 struct alignas(64) Worker {  // each on its own cache lines
   Scratch scratch;
   std::vector<DuplicateHit> duplicates;
   ThreadStats stats;
-  std::exception_ptr error;  // what stopped it, rethrown by the master
+  Clock::duration critical{}, waiting{};
 };
 
+// Worker w's share of the round [first, end): the points first + w, first + w + T, ...
 template <bool kTimed>
-void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool paper,
-          const std::atomic<bool>& stop, Worker& out) {
-  const auto t_start = Clock::now();
-  Clock::duration critical{}, waiting{};
-  LookAhead ahead(kernel, first, stride, kernel.n(), /*ring=*/stride == 1);
+void insert_round(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, unsigned w,
+                  unsigned threads, const TriangleId* hint, bool paper, Worker& out) {
+  constexpr VertexId kWindow = 16;  // as in the serial driver: about two levels are left
+  LookAhead ahead(kernel, first + w, threads, end, /*ring=*/threads == 1, hint + w, kWindow);
   for (VertexId i = 0; i < ahead.count(); ++i) {
-    if (stop.load(std::memory_order_relaxed)) break;  // another worker failed
     const VertexId p = ahead.point(i);
-    const LookAhead::Hint hint = ahead.take(i);
+    const LookAhead::Hint h = ahead.take(i);
     // Unlocked: down to a leaf; the paper's variant then backs up to the leaf's parent and
     // leaves the last step of location to the critical section.
-    TriangleId node = hint.node, parent = hint.parent;
+    TriangleId node = h.node, parent = h.parent;
     for (TriangleId next; (next = kernel.step(node, p)) != node;) parent = node, node = next;
     const TriangleId start = paper ? parent : node;
     kernel.prefetch_around(node);  // its neighbours arrive while we wait for the lock
@@ -97,14 +55,11 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
       const TriangleId leaf = kernel.descend(start, p);
       const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
       if (hit != kNone) out.duplicates.push_back({p, hit});
-      if constexpr (kTimed) critical += Clock::now() - t1;
+      if constexpr (kTimed) out.critical += Clock::now() - t1;
     }
-    if constexpr (kTimed) waiting += t1 - t0;
+    if constexpr (kTimed) out.waiting += t1 - t0;
   }
-  out.stats.points = ahead.count();
-  out.stats.time_insert_s = seconds(Clock::now() - t_start);
-  out.stats.time_critical_s = seconds(critical);
-  out.stats.time_wait_s = seconds(waiting);
+  out.stats.points += ahead.count();
 }
 
 }  // namespace
@@ -112,33 +67,29 @@ void work(Kernel& kernel, SpinLock& lock, VertexId first, VertexId stride, bool 
 void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
                         std::vector<DuplicateHit>& duplicates, Stats& stats) {
   SpinLock lock;
-  std::atomic<bool> stop{false};
   std::vector<Worker> workers(threads);
-  {
-    std::vector<std::jthread> pool;
-    pool.reserve(threads);
-    for (unsigned w = 0; w < threads; ++w)
-      pool.emplace_back([&, w] {
-        try {
-          if (timed)
-            work<true>(kernel, lock, w, threads, paper, stop, workers[w]);
-          else
-            work<false>(kernel, lock, w, threads, paper, stop, workers[w]);
-        } catch (...) {
-          workers[w].error = std::current_exception();
-          stop.store(true, std::memory_order_relaxed);
-        }
-      });
-  }  // the master waits for every worker (Fig. 10, line 6)
-  for (Worker& w : workers)
-    if (w.error) std::rethrow_exception(w.error);
-  for (Worker& w : workers) {
-    duplicates.insert(duplicates.end(), w.duplicates.begin(), w.duplicates.end());
-    stats.flips += w.scratch.flips;
-    stats.edge_splits += w.scratch.edge_splits;
-    stats.time_critical_s += w.stats.time_critical_s;
-    stats.time_wait_s += w.stats.time_wait_s;
-    stats.per_thread.push_back(w.stats);
+  std::vector<Clock::duration> barrier_wait;
+  const auto t_start = Clock::now();
+  run_in_rounds(kernel, threads, barrier_wait,
+                [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
+                  if (timed)
+                    insert_round<true>(kernel, lock, first, end, w, threads, hint, paper, workers[w]);
+                  else
+                    insert_round<false>(kernel, lock, first, end, w, threads, hint, paper, workers[w]);
+                });
+  const double total = seconds(Clock::now() - t_start);
+  for (unsigned w = 0; w < threads; ++w) {
+    Worker& worker = workers[w];
+    duplicates.insert(duplicates.end(), worker.duplicates.begin(), worker.duplicates.end());
+    stats.flips += worker.scratch.flips;
+    stats.edge_splits += worker.scratch.edge_splits;
+    worker.stats.time_insert_s = total;
+    worker.stats.time_critical_s = seconds(worker.critical);
+    // Waiting for the lock, and at the ends of rounds for the other workers.
+    worker.stats.time_wait_s = seconds(worker.waiting + (timed ? barrier_wait[w] : Clock::duration{}));
+    stats.time_critical_s += worker.stats.time_critical_s;
+    stats.time_wait_s += worker.stats.time_wait_s;
+    stats.per_thread.push_back(worker.stats);
   }
 }
 

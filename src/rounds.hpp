@@ -27,6 +27,77 @@
 
 namespace ridt::detail {
 
+/// Descends the DAG for each point of `points` (count of them, best in an order along a
+/// curve) and calls sink(v, leaf) with a leaf whose closed region holds v. Each descent starts
+/// from the deepest node of the previous path that still holds its point: for neighbours on a
+/// curve that saves most of the path, and what is left of it is in cache. The list is cut into
+/// kLanes stretches descended side by side, one step each in turn: a step prefetches what the
+/// lane's next step reads, and the misses of the lanes overlap.
+template <class Sink>
+void descend_along(const Kernel& kernel, const VertexId* points, VertexId count, Sink&& sink) {
+  // Enough lanes to cover the latency of a miss (about 200 ns here) with other lanes' steps.
+  constexpr unsigned kLanes = 16;
+  enum class State : std::uint8_t { kStart, kClimb, kFetch, kStep, kDone };
+  struct Lane {
+    VertexId next, stop;           // the lane's stretch of the list still to locate
+    VertexId v;                    // the point descending
+    State state;
+    std::vector<TriangleId> path;  // the lane's last descent, root first
+  };
+  // Short lists do not pay for the lanes' set-up.
+  const unsigned used = std::clamp<unsigned>(count / 64, 1, kLanes);
+  Lane lanes[kLanes];
+  unsigned active = 0;
+  for (unsigned l = 0; l < used; ++l) {
+    Lane& lane = lanes[l];
+    lane.next = static_cast<VertexId>(std::uint64_t{count} * l / used);
+    lane.stop = static_cast<VertexId>(std::uint64_t{count} * (l + 1) / used);
+    lane.path.assign(1, Kernel::kRoot);
+    lane.state = lane.next < lane.stop ? State::kStart : State::kDone;
+    active += lane.state != State::kDone;
+  }
+  while (active > 0) {
+    for (unsigned l = 0; l < used; ++l) {
+      Lane& lane = lanes[l];
+      switch (lane.state) {
+        case State::kDone:
+          break;
+        case State::kStart:
+          // Neighbours on the curve are numbered at random: v's coordinates are a miss, and
+          // so are the vertices of the last leaf, which the climb tests first.
+          lane.v = points[lane.next++];
+          kernel.prefetch_point(lane.v);
+          kernel.prefetch_vertices(lane.path.back());
+          lane.state = State::kClimb;
+          break;
+        case State::kClimb:
+          // The root holds everything; below it, climb to the deepest node that holds v.
+          // The rest of the path was read by the last descent and is in cache.
+          while (lane.path.size() > 1 && !kernel.holds(lane.path.back(), lane.v)) lane.path.pop_back();
+          lane.state = State::kFetch;
+          [[fallthrough]];
+        case State::kFetch:
+          // The record at the end of the path was prefetched; now the points its test reads.
+          if (kernel.prefetch_step(lane.path.back())) {
+            lane.state = State::kStep;
+          } else {  // a leaf: the descent of v is done
+            sink(lane.v, lane.path.back());
+            lane.state = lane.next < lane.stop ? State::kStart : State::kDone;
+            active -= lane.state == State::kDone;
+          }
+          break;
+        case State::kStep: {
+          const TriangleId t = kernel.step(lane.path.back(), lane.v);
+          kernel.prefetch(t);
+          lane.path.push_back(t);
+          lane.state = State::kFetch;
+          break;
+        }
+      }
+    }
+  }
+}
+
 class RoundLocator {
  public:
   /// Rounds shorter than this are not worth sorting: the DAG is small and stays in cache.
@@ -48,74 +119,28 @@ class RoundLocator {
 
   /// The number of rounds and the vertices [first(r), first(r + 1)) of round r.
   std::size_t rounds() const { return first_.size() - 1; }
+  /// The most points in one round.
+  VertexId largest() const {
+    VertexId m = 0;
+    for (std::size_t r = 0; r < rounds(); ++r) m = std::max(m, first_[r + 1] - first_[r]);
+    return m;
+  }
   VertexId first(std::size_t r) const { return first_[r]; }
 
   /// Descends the DAG as it stands for every point of round r, along the curve, and writes
-  /// in hint[v - first(r)] a leaf whose closed region holds point v. The curve is cut into
-  /// kLanes stretches descended side by side, one step each in turn: a step prefetches what
-  /// the lane's next step reads, and the misses of the lanes overlap.
-  void locate(std::size_t r, TriangleId* hint) { locate(r, 0, 1, hint); }
+  /// in hint[v - first(r)] a leaf whose closed region holds point v.
+  void locate(std::size_t r, TriangleId* hint) const { locate(r, 0, 1, hint); }
 
   /// The same for part `part` of `parts` equal stretches of round r's curve: each of
   /// `parts` threads can locate its own part while the DAG is read by all (descents read only
   /// what was published, mesh.hpp).
-  void locate(std::size_t r, unsigned part, unsigned parts, TriangleId* hint) {
+  void locate(std::size_t r, unsigned part, unsigned parts, TriangleId* hint) const {
     const VertexId base = first_[r];
     const std::uint64_t count = first_[r + 1] - base;
     const VertexId begin = base + static_cast<VertexId>(count * part / parts);
     const VertexId end = base + static_cast<VertexId>(count * (part + 1) / parts);
-    // Short stretches do not pay for the lanes' set-up.
-    const unsigned lanes = std::clamp<unsigned>((end - begin) / 64, 1, kLanes);
-    unsigned active = 0;
-    for (unsigned l = 0; l < lanes; ++l) {
-      Lane& lane = lanes_[l];
-      lane.next = begin + static_cast<VertexId>(std::uint64_t{end - begin} * l / lanes);
-      lane.stop = begin + static_cast<VertexId>(std::uint64_t{end - begin} * (l + 1) / lanes);
-      lane.path.assign(1, Kernel::kRoot);
-      lane.state = lane.next < lane.stop ? State::kStart : State::kDone;
-      active += lane.state != State::kDone;
-    }
-    while (active > 0) {
-      for (unsigned l = 0; l < lanes; ++l) {
-        Lane& lane = lanes_[l];
-        switch (lane.state) {
-          case State::kDone:
-            break;
-          case State::kStart:
-            // v comes in curve order but is numbered at random: its coordinates are a miss,
-            // and so are the vertices of the last leaf, which the climb tests first.
-            lane.v = by_round_[lane.next++];
-            kernel_.prefetch_point(lane.v);
-            kernel_.prefetch_vertices(lane.path.back());
-            lane.state = State::kClimb;
-            break;
-          case State::kClimb: {
-            // The root holds everything; below it, climb to the deepest node that holds v.
-            // The rest of the path was read by the last descent and is in cache.
-            while (lane.path.size() > 1 && !kernel_.holds(lane.path.back(), lane.v)) lane.path.pop_back();
-            lane.state = State::kFetch;
-            [[fallthrough]];
-          }
-          case State::kFetch:
-            // The record at the end of the path was prefetched; now the points its test reads.
-            if (kernel_.prefetch_step(lane.path.back())) {
-              lane.state = State::kStep;
-            } else {  // a leaf: the descent of v is done
-              hint[lane.v - base] = lane.path.back();
-              lane.state = lane.next < lane.stop ? State::kStart : State::kDone;
-              active -= lane.state == State::kDone;
-            }
-            break;
-          case State::kStep: {
-            const TriangleId t = kernel_.step(lane.path.back(), lane.v);
-            kernel_.prefetch(t);
-            lane.path.push_back(t);
-            lane.state = State::kFetch;
-            break;
-          }
-        }
-      }
-    }
+    descend_along(kernel_, by_round_.data() + begin, end - begin,
+                  [&](VertexId v, TriangleId leaf) { hint[v - base] = leaf; });
   }
 
  private:
@@ -125,20 +150,9 @@ class RoundLocator {
   // Round 0 is [0, kFirst); round r > 0 is [kFirst 2^(r-1), kFirst 2^r).
   static std::size_t round_of(VertexId v) { return std::bit_width(v / kFirst); }
 
-  // Enough lanes to cover the latency of a miss (about 200 ns here) with other lanes' steps.
-  static constexpr unsigned kLanes = 16;
-  enum class State : std::uint8_t { kStart, kClimb, kFetch, kStep, kDone };
-  struct Lane {
-    VertexId next, stop;          // the lane's stretch of the curve still to locate
-    VertexId v;                   // the point descending
-    State state;
-    std::vector<TriangleId> path;  // the lane's last descent, root first
-  };
-
   const Kernel& kernel_;
   std::vector<VertexId> first_;     // first vertex of each round, then n
   std::vector<VertexId> by_round_;  // each round's vertices along the curve
-  Lane lanes_[kLanes];
 };
 
 }  // namespace ridt::detail

@@ -27,7 +27,10 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   unsigned threads = 1;
   if (options.method != Method::Serial) {
     threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    if (threads > 1024) throw InputError("at most 1024 threads (got " + std::to_string(threads) + ")");
+    // Optimistic owners are numbered 1 .. kMaxOwner (mesh.hpp).
+    if (threads > detail::kMaxOwner)
+      throw InputError("at most " + std::to_string(detail::kMaxOwner) + " threads (got " +
+                       std::to_string(threads) + ")");
   }
   if (options.profile && options.method != Method::Serial)
     throw InputError("profiling (Fig. 8) times the serial method only");
@@ -76,10 +79,20 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
         detail::insert_pessimistic(kernel, threads, options.paper_locking, options.time_threads,
                                    duplicates, stats);
         break;
+      case Method::Optimistic:
+        stats.threads = threads;
+        detail::insert_optimistic(kernel, threads, options.time_threads, duplicates, stats);
+        break;
+      case Method::Batch:
+        stats.threads = threads;
+        detail::insert_batch(kernel, threads, duplicates, stats);
+        break;
     }
     stats.time_insert_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t_insert).count();
-    if (stats.per_thread.empty()) stats.per_thread.push_back({n, stats.time_insert_s, 0, 0});
+    if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
+    for (ThreadStats& t : stats.per_thread)
+      if (t.time_insert_s == 0) t.time_insert_s = stats.time_insert_s;
     out = detail::finish(kernel, order, duplicates, options, threads);
   }
   // After the DAG is gone, so that the sort's copies do not raise the peak.
@@ -90,6 +103,11 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   out.stats.time_insert_s = stats.time_insert_s;
   out.stats.time_critical_s = stats.time_critical_s;
   out.stats.time_wait_s = stats.time_wait_s;
+  out.stats.retries = stats.retries;
+  out.stats.time_idle_s = stats.time_idle_s;
+  out.stats.time_stall_s = stats.time_stall_s;
+  out.stats.queue_depth_mean = stats.queue_depth_mean;
+  out.stats.stale_hints = stats.stale_hints;
   out.stats.per_thread = std::move(stats.per_thread);
   out.stats.time_locate_s = stats.time_locate_s;
   out.stats.time_split_s = stats.time_split_s;

@@ -16,7 +16,9 @@ struct Variant {
   const char* name;
 };
 constexpr Variant kVariants[] = {{Method::Pessimistic, false, "pessimistic"},
-                                  {Method::Pessimistic, true, "pessimistic_paper"}};
+                                  {Method::Pessimistic, true, "pessimistic_paper"},
+                                  {Method::Optimistic, false, "optimistic"},
+                                  {Method::Batch, false, "batch"}};
 constexpr unsigned kThreadCounts[] = {1, 2, 3, 4, 8};
 
 // Smaller under sanitizers, which run these tests many times slower.
@@ -79,7 +81,10 @@ TEST_P(Threaded, ResultPassesTheValidator) {
   triangulate_checked(generate(Distribution::Uniform, kN, 5), o);
 }
 
-TEST_P(Threaded, StatisticsAddUp) {
+// Methods whose threads are all workers (batch has roles: Batch.StatisticsAddUp).
+class Workers : public ::testing::TestWithParam<Variant> {};
+
+TEST_P(Workers, StatisticsAddUp) {
   const std::vector<Point> pts = generate(Distribution::Uniform, kN, 8);
   Options o;
   o.method = GetParam().method;
@@ -109,6 +114,58 @@ TEST_P(Threaded, StatisticsAddUp) {
   EXPECT_EQ(quiet.time_wait_s, 0);
 }
 
+// Many threads on few points: insertions collide often, and every retry must leave the mesh
+// as it was. Repeated, since collisions depend on timing.
+TEST(Optimistic, CollisionsLeaveNoTrace) {
+  for (Distribution d : {Distribution::Uniform, Distribution::Grid}) {
+    const std::vector<Point> pts = generate(d, 3000, 21);
+    const TriangleSet expected = canonical(triangulate(pts).triangles);
+    for (int run = 0; run < 10; ++run) {
+      Options o;
+      o.method = Method::Optimistic;
+      o.threads = 8;
+      o.seed = run;
+      const Triangulation t = triangulate(pts, o);
+      ASSERT_EQ(canonical(t.triangles), expected) << to_string(d) << " run " << run;
+      std::uint64_t retries = 0;
+      for (const ThreadStats& p : t.stats.per_thread) retries += p.retries;
+      EXPECT_EQ(retries, t.stats.retries);
+    }
+  }
+}
+
+TEST(Batch, StatisticsAddUp) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, kN, 8);
+  Options o;
+  o.method = Method::Batch;
+  o.threads = 3;
+  const Stats s = triangulate(pts, o).stats;
+  EXPECT_EQ(s.threads, 3u);
+  ASSERT_EQ(s.per_thread.size(), 3u);  // one modifier, two locators
+  EXPECT_EQ(s.per_thread[0].role, "modifier");
+  EXPECT_EQ(s.per_thread[0].points, pts.size());
+  std::uint64_t located = 0;
+  double stalled = 0;
+  for (std::size_t i = 1; i < 3; ++i) {
+    EXPECT_EQ(s.per_thread[i].role, "locator");
+    located += s.per_thread[i].points;
+    stalled += s.per_thread[i].time_wait_s;
+  }
+  EXPECT_EQ(located, pts.size());
+  EXPECT_DOUBLE_EQ(stalled, s.time_stall_s);
+  EXPECT_DOUBLE_EQ(s.per_thread[0].time_wait_s, s.time_idle_s);
+  EXPECT_LE(s.stale_hints, pts.size());
+  EXPECT_GE(s.queue_depth_mean, 0);
+  EXPECT_LE(s.queue_depth_mean, 65536);
+  EXPECT_LE(s.time_idle_s, s.time_insert_s * 1.0001 + 1e-6);
+
+  o.threads = 1;  // no locator: the one thread locates and modifies
+  const Stats one = triangulate(pts, o).stats;
+  ASSERT_EQ(one.per_thread.size(), 1u);
+  EXPECT_EQ(one.per_thread[0].role, "modifier");
+  EXPECT_EQ(one.stale_hints, 0u);
+}
+
 TEST(Threaded, ZeroThreadsMeansTheHardware) {
   Options o;
   o.method = Method::Pessimistic;
@@ -133,6 +190,8 @@ TEST(Threaded, ProfilingIsSerialOnly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
+                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Methods, Workers, ::testing::ValuesIn(kVariants, kVariants + 3),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

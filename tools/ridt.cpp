@@ -74,6 +74,13 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
       {"time_wait_s", num(s.time_wait_s)},
       {"time_write_s", num(t_write)},
   };
+  if (a.method == "optimistic") f.push_back({"retries", std::to_string(s.retries)});
+  if (a.method == "batch") {
+    f.push_back({"time_idle_s", num(s.time_idle_s)});
+    f.push_back({"time_stall_s", num(s.time_stall_s)});
+    f.push_back({"queue_depth_mean", num(s.queue_depth_mean)});
+    f.push_back({"stale_hints", std::to_string(s.stale_hints)});
+  }
   if (a.profile) {
     f.push_back({"time_locate_s", num(s.time_locate_s)});
     f.push_back({"time_split_s", num(s.time_split_s)});
@@ -82,22 +89,26 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
   f.push_back({"peak_rss_bytes", std::to_string(peak_rss_bytes())});
   if (table) {
     for (const Field& x : f) std::printf("%-20s %s\n", x.key, x.value.c_str());
-    std::printf("\n%6s %10s %14s %16s %12s\n", "thread", "points", "insertion [s]",
-                "critical [s]", "waiting [s]");
+    std::printf("\n%6s %-9s %10s %14s %16s %12s %8s\n", "thread", "role", "points",
+                "insertion [s]", "critical [s]", "waiting [s]", "retries");
     for (std::size_t i = 0; i < s.per_thread.size(); ++i) {
       const ridt::ThreadStats& p = s.per_thread[i];
-      std::printf("%6zu %10llu %14.6f %16.6f %12.6f\n", i, static_cast<unsigned long long>(p.points),
-                  p.time_insert_s, p.time_critical_s, p.time_wait_s);
+      std::printf("%6zu %-9s %10llu %14.6f %16.6f %12.6f %8llu\n", i, p.role.c_str(),
+                  static_cast<unsigned long long>(p.points), p.time_insert_s, p.time_critical_s,
+                  p.time_wait_s, static_cast<unsigned long long>(p.retries));
     }
-    std::printf("%6s %10llu %14.6f %16.6f %12.6f\n", "all", static_cast<unsigned long long>(s.points),
-                s.time_insert_s, s.time_critical_s, s.time_wait_s);
+    std::printf("%6s %-9s %10llu %14.6f %16.6f %12.6f %8llu\n", "all", "",
+                static_cast<unsigned long long>(s.points), s.time_insert_s, s.time_critical_s,
+                s.time_wait_s, static_cast<unsigned long long>(s.retries));
     return;
   }
   std::string per_thread = "[";
   for (std::size_t i = 0; i < s.per_thread.size(); ++i) {
     const ridt::ThreadStats& p = s.per_thread[i];
     per_thread += (i ? ", " : "") + std::string("{\"thread\": ") + std::to_string(i) +
+                  ", \"role\": \"" + p.role + "\"" +
                   ", \"points\": " + std::to_string(p.points) +
+                  ", \"retries\": " + std::to_string(p.retries) +
                   ", \"time_insert_s\": " + num(p.time_insert_s) +
                   ", \"time_critical_s\": " + num(p.time_critical_s) +
                   ", \"time_wait_s\": " + num(p.time_wait_s) + "}";
@@ -126,8 +137,13 @@ int run_triangulate(const TriangulateArgs& a) {
     o.method = ridt::Method::Serial;
   } else if (a.method == "pessimistic") {
     o.method = ridt::Method::Pessimistic;
+  } else if (a.method == "optimistic") {
+    o.method = ridt::Method::Optimistic;
+  } else if (a.method == "batch") {
+    o.method = ridt::Method::Batch;
   } else {
-    throw ridt::InputError("unknown method '" + a.method + "' (use serial or pessimistic)");
+    throw ridt::InputError("unknown method '" + a.method +
+                           "' (use serial, pessimistic, optimistic or batch)");
   }
   o.threads = a.threads;
   o.paper_locking = a.paper_locking;
@@ -159,8 +175,10 @@ int main(int argc, char** argv) {
   tri->add_option("input", ta.input, "points: .node, .bin (float64 pairs) or text")->required();
   tri->add_option("-o,--output", ta.output, "triangles: .ele, .neigh, .off, .obj, .svg or .bin");
   tri->add_option("--seed", ta.seed, "seed of the random insertion order");
-  tri->add_option("--method", ta.method, "serial (default) or pessimistic");
-  tri->add_option("--threads", ta.threads, "worker threads of a threaded method (0: all hardware threads)");
+  tri->add_option("--method", ta.method, "serial (default), pessimistic, optimistic or batch");
+  tri->add_option("--threads", ta.threads,
+                  "threads of a threaded method (0: all hardware threads; batch: threads - 1 "
+                  "locators and one modifier)");
   tri->add_flag("--paper-locking", ta.paper_locking,
                 "pessimistic: lock from the leaves' parents, as the paper does");
   tri->add_flag("--no-thread-timing", ta.no_thread_timing,

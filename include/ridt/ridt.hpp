@@ -38,6 +38,8 @@ inline constexpr std::int32_t kNoNeighbor = -1;
 enum class Method {
   Serial,       ///< one thread, the paper's Fig. 4
   Pessimistic,  ///< threads share one triangulation; one critical section for the leaf step (Fig. 10)
+  Optimistic,   ///< threads lock only the triangles an insertion changes (try-lock, back off)
+  Batch,        ///< threads - 1 locators queue DAG nodes for one modifier thread
 };
 
 /// The starting triangle that encloses every point.
@@ -49,7 +51,8 @@ enum class Bounding {
 /// Options of a triangulation.
 struct Options {
   Method method = Method::Serial;
-  /// Worker threads of a threaded method; 0 = the machine's hardware threads.
+  /// Threads of a threaded method; 0 = the machine's hardware threads. Batch: threads - 1
+  /// locators and one modifier.
   unsigned threads = 0;
   /// Pessimistic: descend outside the lock only to the parents of leaves, as the paper does.
   /// Off (the default), a worker descends to a leaf outside the lock and, inside, continues
@@ -68,12 +71,17 @@ struct Options {
   bool profile = false;
 };
 
-/// What one worker thread did (the paper's Tables 2 and 3, per thread).
+/// What one thread did (the paper's Tables 2 and 3, per thread).
 struct ThreadStats {
-  std::uint64_t points = 0;     ///< points it inserted (duplicates included)
+  std::string role = "worker";  ///< "worker"; batch: "modifier" or "locator"
+  std::uint64_t points = 0;     ///< points it inserted (a locator: located; duplicates included)
   double time_insert_s = 0;     ///< from its start to its end
-  double time_critical_s = 0;   ///< holding the lock
-  double time_wait_s = 0;       ///< waiting for the lock
+  double time_critical_s = 0;   ///< pessimistic: holding the lock; optimistic: holding triangles
+  /// Pessimistic: waiting for the lock; optimistic: backing off after a failed try-lock; both
+  /// also waiting for the others at the end of a round. Batch: the modifier waiting for a
+  /// hint, a locator waiting for room in the queue.
+  double time_wait_s = 0;
+  std::uint64_t retries = 0;    ///< optimistic: insertions restarted after a failed try-lock
 };
 
 /// Counters and timings of one run.
@@ -89,6 +97,11 @@ struct Stats {
   double time_insert_s = 0;      ///< wall time of the insertion phase
   double time_critical_s = 0;    ///< summed over threads (threaded methods, time_threads)
   double time_wait_s = 0;        ///< summed over threads (threaded methods, time_threads)
+  std::uint64_t retries = 0;     ///< optimistic: insertions restarted after a failed try-lock
+  double time_idle_s = 0;        ///< batch: the modifier waiting for hints
+  double time_stall_s = 0;       ///< batch: locators waiting for room in the queue, summed
+  double queue_depth_mean = 0;   ///< batch: hints queued ahead of the modifier, on average
+  std::uint64_t stale_hints = 0; ///< batch: hints no longer a leaf when the modifier took them
   std::vector<ThreadStats> per_thread;
   double time_locate_s = 0;      ///< only with Options::profile
   double time_split_s = 0;       ///< only with Options::profile

@@ -1,0 +1,189 @@
+// The optimistic method: the paper's proposal (section 3, "2. Optimistic method"): no global
+// lock; only the triangles an insertion changes are locked, each by its own one-word lock.
+//
+// Ownership (kernel.hpp: try_acquire, release, owns) lives in a leaf's child word, which the
+// descent reads anyway. An insertion of p, after a lock-free descent to a leaf t:
+//   1. takes t; if t was split meanwhile, descends on from it;
+//   2. takes the whole region the insertion will touch before changing anything: the
+//      triangles whose circumcircle holds p (the cavity: exactly those that the split and the
+//      flips of legalization destroy, for the flip algorithm and Bowyer-Watson build the same
+//      triangulation) and the triangles across the cavity's boundary, whose neighbour links
+//      change;
+//   3. splits and legalizes with the serial kernel, which checks before every write that the
+//      thread owns what it writes (Kernel::require_owned); its new triangles are its own from
+//      birth;
+//   4. releases everything.
+// Every take is a try: on the first failure the insertion releases all it holds and retries
+// after a randomized back-off. A thread never waits while holding a triangle, so no deadlock
+// can arise and nothing needs detecting; a change is made only once all it needs is held, so
+// no other thread ever sees half of one. Geogram's parallel Delaunay (Lévy) works this way.
+//
+// The points are shared as in the pessimistic method: the rounds of rounds.hpp, located by
+// all workers together, then worker w inserts the points w, w + T, ... of each round.
+#include <algorithm>
+
+#include "driver.hpp"
+#include "lookahead.hpp"
+#include "threads.hpp"
+
+namespace ridt::detail {
+namespace {
+
+struct alignas(64) Worker {  // each on its own cache lines
+  explicit Worker(std::uint64_t seed) : backoff(seed) {}
+  Scratch scratch;
+  std::vector<DuplicateHit> duplicates;
+  ThreadStats stats;
+  std::vector<TriangleId> held;    // taken in this attempt
+  std::vector<TriangleId> cavity;  // held triangles whose circumcircle holds p
+  Backoff backoff;
+  Clock::duration holding{}, backing_off{};
+};
+
+class Inserter {
+ public:
+  Inserter(Kernel& kernel, Worker& w) : kernel_(kernel), w_(w), me_(w.scratch.owner) {}
+
+  /// Inserts p, starting the descent at `start` (a node whose region holds p).
+  template <bool kTimed>
+  void insert(VertexId p, TriangleId start) {
+    TriangleId t = start;
+    for (;;) {
+      t = kernel_.descend(t, p);
+      if (!kernel_.try_acquire(t, me_)) {
+        // Split since the descent (descend on from it), or owned by another thread.
+        if (is_leaf(kernel_.triangles()[t].load_child())) back_off<kTimed>();
+        continue;
+      }
+      Clock::time_point t0;
+      if constexpr (kTimed) t0 = Clock::now();
+      w_.held.assign(1, t);
+      const Kernel::Location where = kernel_.classify(t, p);
+      if (where.where == Kernel::Where::OnVertex) {
+        w_.duplicates.push_back({p, kernel_.triangles()[t].v[where.i]});
+        release_all();
+        if constexpr (kTimed) w_.holding += Clock::now() - t0;
+        return;
+      }
+      if (!acquire_region(where, p)) {
+        release_all();
+        if constexpr (kTimed) w_.holding += Clock::now() - t0;
+        back_off<kTimed>();
+        continue;  // t may still be the leaf: the descent then stops at once
+      }
+      w_.scratch.cavity = &w_.cavity;
+      kernel_.split_at(where, p, w_.scratch);
+      kernel_.legalize(p, w_.scratch);
+      w_.scratch.cavity = nullptr;
+      release_all();
+      if constexpr (kTimed) w_.holding += Clock::now() - t0;
+      w_.backoff.reset();
+      return;
+    }
+  }
+
+ private:
+  // Takes the cavity of p and its boundary (see the top of this file), starting from the
+  // held leaf holding p (and, for a point on an edge, the leaf across it). A neighbour of a
+  // held triangle is a leaf: changing it would relink the held one, which needs that one.
+  bool acquire_region(const Kernel::Location& where, VertexId p) {
+    const TriangleStore& tris = kernel_.triangles();
+    w_.cavity.assign(1, where.t);
+    if (where.where == Kernel::Where::OnEdge) {
+      const TriangleId u = tris[where.t].n[where.i];
+      if (!take(u)) return false;
+      w_.cavity.push_back(u);  // p lies on its edge, so inside its circumcircle
+    }
+    for (std::size_t k = 0; k < w_.cavity.size(); ++k) {
+      const Triangle& r = tris[w_.cavity[k]];
+      for (const TriangleId u : r.n) {
+        if (u == kNone || std::find(w_.held.begin(), w_.held.end(), u) != w_.held.end()) continue;
+        if (!take(u)) return false;
+        const Triangle& ru = tris[u];
+        // The same test as legalization, so the region is exactly what it will touch.
+        if (kernel_.incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0) w_.cavity.push_back(u);
+      }
+    }
+    return true;
+  }
+
+  bool take(TriangleId u) {
+    if (!kernel_.try_acquire(u, me_)) return false;
+    w_.held.push_back(u);
+    return true;
+  }
+
+  // Gives back what this attempt took and the triangles it made (a triangle it killed holds
+  // its child link and stays as it is).
+  void release_all() {
+    for (const TriangleId t : w_.held) kernel_.release(t, me_);
+    for (const TriangleId t : w_.scratch.made) kernel_.release(t, me_);
+    w_.held.clear();
+    w_.scratch.made.clear();
+  }
+
+  template <bool kTimed>
+  void back_off() {
+    ++w_.stats.retries;
+    Clock::time_point t0;
+    if constexpr (kTimed) t0 = Clock::now();
+    w_.backoff.pause();
+    if constexpr (kTimed) w_.backing_off += Clock::now() - t0;
+  }
+
+  Kernel& kernel_;
+  Worker& w_;
+  const std::uint32_t me_;
+};
+
+template <bool kTimed>
+void insert_round(Kernel& kernel, VertexId first, VertexId end, unsigned w, unsigned threads,
+                  const TriangleId* hint, Worker& worker) {
+  constexpr VertexId kWindow = 16;  // as in the serial driver: about two levels are left
+  LookAhead ahead(kernel, first + w, threads, end, /*ring=*/true, hint + w, kWindow);
+  Inserter inserter(kernel, worker);
+  for (VertexId i = 0; i < ahead.count(); ++i)
+    inserter.insert<kTimed>(ahead.point(i), ahead.take(i).node);
+  worker.stats.points += ahead.count();
+}
+
+}  // namespace
+
+void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
+                       std::vector<DuplicateHit>& duplicates, Stats& stats) {
+  std::vector<Worker> workers;
+  workers.reserve(threads);
+  for (unsigned w = 0; w < threads; ++w) {
+    workers.emplace_back(w + 1);
+    workers[w].scratch.owner = w + 1;  // 0 means "free" (mesh.hpp)
+    workers[w].scratch.pooled = true;
+  }
+  std::vector<Clock::duration> barrier_wait;
+  const auto t_start = Clock::now();
+  run_in_rounds(kernel, threads, barrier_wait,
+                [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
+                  if (timed)
+                    insert_round<true>(kernel, first, end, w, threads, hint, workers[w]);
+                  else
+                    insert_round<false>(kernel, first, end, w, threads, hint, workers[w]);
+                });
+  const double total = seconds(Clock::now() - t_start);
+  for (unsigned w = 0; w < threads; ++w) {
+    Worker& worker = workers[w];
+    kernel.retire_pool(worker.scratch);
+    duplicates.insert(duplicates.end(), worker.duplicates.begin(), worker.duplicates.end());
+    stats.flips += worker.scratch.flips;
+    stats.edge_splits += worker.scratch.edge_splits;
+    stats.retries += worker.stats.retries;
+    worker.stats.time_insert_s = total;
+    worker.stats.time_critical_s = seconds(worker.holding);
+    // Backing off after a failed take, and at the ends of rounds waiting for the others.
+    worker.stats.time_wait_s =
+        seconds(worker.backing_off + (timed ? barrier_wait[w] : Clock::duration{}));
+    stats.time_critical_s += worker.stats.time_critical_s;
+    stats.time_wait_s += worker.stats.time_wait_s;
+    stats.per_thread.push_back(worker.stats);
+  }
+}
+
+}  // namespace ridt::detail

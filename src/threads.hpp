@@ -1,0 +1,129 @@
+// What the threaded methods share: a spin lock, a back-off, per-thread timing, and a driver
+// that takes the workers through the rounds of rounds.hpp.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <barrier>
+#include <chrono>
+#include <cstdint>
+#include <exception>
+#include <thread>
+#include <vector>
+
+#include "kernel.hpp"
+#include "random.hpp"
+#include "rounds.hpp"
+
+namespace ridt::detail {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+/// Tells the core we are spinning (frees resources for the other hardware thread).
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+/// The pessimistic critical section lasts about a microsecond: a thread that finds the lock
+/// taken spins (reading, not writing, so the line stays shared) instead of sleeping in the
+/// kernel, which costs more than the wait. After a while it yields, so oversubscribed runs
+/// still progress.
+class SpinLock {
+ public:
+  void lock() {
+    for (int spins = 0;; ++spins) {
+      // acquire: the holder's changes to the mesh happen before ours.
+      if (!locked_.exchange(true, std::memory_order_acquire)) return;
+      while (locked_.load(std::memory_order_relaxed)) {
+        if (++spins < kSpinsBeforeYield) {
+          cpu_relax();
+        } else {
+          std::this_thread::yield();
+          spins = 0;
+        }
+      }
+    }
+  }
+  // release: our changes to the mesh happen before the next holder's.
+  void unlock() { locked_.store(false, std::memory_order_release); }
+
+ private:
+  static constexpr int kSpinsBeforeYield = 4096;  // a few microseconds of pause instructions
+  alignas(64) std::atomic<bool> locked_{false};   // its own cache line
+};
+
+/// Randomized exponential back-off after a failed try-lock: two threads that collided wait
+/// different times, so they do not collide again in step. Yields once the wait is long, so an
+/// oversubscribed machine lets the owner run.
+class Backoff {
+ public:
+  explicit Backoff(std::uint64_t seed) : rng_(seed, /*stream=*/7) {}
+  void pause() {
+    const std::uint64_t spins = 1 + rng_.below(std::uint64_t{1} << exponent_);
+    if (exponent_ < kMaxExponent) ++exponent_;
+    if (exponent_ >= kYieldExponent) std::this_thread::yield();
+    for (std::uint64_t i = 0; i < spins; ++i) cpu_relax();
+  }
+  void reset() { exponent_ = kMinExponent; }
+
+ private:
+  // 2^4 pauses (tens of nanoseconds) first: most conflicts end within one insertion, about a
+  // microsecond; 2^12 at most.
+  static constexpr int kMinExponent = 4, kYieldExponent = 10, kMaxExponent = 12;
+  Rng rng_;
+  int exponent_ = kMinExponent;
+};
+
+/// Runs `threads` workers through the rounds: in each round every worker first locates its
+/// stretch of the round's curve (the DAG is only read then; rounds.hpp), all wait, then
+/// insert_round(w, first, end, hint) inserts worker w's share of the round's points [first,
+/// end), with hint[v - first] a leaf holding point v when the round began; all wait again.
+/// `wait[w]` receives the time worker w spent waiting for the others. The first exception of
+/// any worker is rethrown once all have stopped; the others stop at the next round.
+template <class InsertRound>
+void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::duration>& wait,
+                   InsertRound&& insert_round) {
+  const RoundLocator rounds(kernel);
+  std::vector<TriangleId> hint(rounds.largest());
+  std::barrier<> sync(static_cast<std::ptrdiff_t>(threads));
+  std::atomic<bool> stop{false};
+  std::vector<std::exception_ptr> errors(threads);
+  wait.assign(threads, Clock::duration{});
+  {
+    std::vector<std::jthread> pool;
+    pool.reserve(threads);
+    for (unsigned w = 0; w < threads; ++w)
+      pool.emplace_back([&, w] {
+        auto arrive = [&] {
+          const auto t0 = Clock::now();
+          sync.arrive_and_wait();
+          wait[w] += Clock::now() - t0;
+        };
+        try {
+          for (std::size_t r = 0; r < rounds.rounds(); ++r) {
+            if (!stop.load(std::memory_order_relaxed)) rounds.locate(r, w, threads, hint.data());
+            arrive();
+            if (!stop.load(std::memory_order_relaxed))
+              insert_round(w, rounds.first(r), rounds.first(r + 1), hint.data());
+            arrive();
+          }
+        } catch (...) {
+          // Thrown inside a phase, before this worker arrived: leaving the barrier lets the
+          // others finish their rounds without it.
+          errors[w] = std::current_exception();
+          stop.store(true, std::memory_order_relaxed);
+          sync.arrive_and_drop();
+        }
+      });
+  }
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace ridt::detail
