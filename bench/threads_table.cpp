@@ -1,13 +1,20 @@
-// The paper's Tables 2 and 3 for the pessimistic method: per thread count, the total time,
-// the time for insertion, the time in the critical section and the waiting time (summed over
-// threads), medians of --reps runs; plus serial ridt in the same run, and the paper's locking
-// variant beside ridt's. Writes a CSV for bench/plot_threads.py (Figs. 11 and 14).
+// The paper's Tables 2 and 3 for every threaded method: per method and thread count, the total
+// time, the time for insertion, the time in critical sections (pessimistic: the lock;
+// optimistic: holding triangles) and the waiting time, summed over threads; retries
+// (optimistic); idle, stall, queue depth and stale hints (batch). Serial ridt runs in the same
+// repetition as every configuration: each repetition runs serial, then each configuration
+// once, so a drift of the machine's speed hits all alike, and each speedup is the median of
+// the per-repetition ratios serial / method. Writes a CSV for bench/plot_threads.py.
 //
-//   ridt_bench_threads [--max-n N] [--reps R] [--threads 1,2,4,6,8] [--csv FILE]
+//   ridt_bench_threads [--n 1000,10000,100000,1000000] [--dist uniform,grid] [--reps R]
+//                      [--threads 1,2,3,4,8] [--methods pessimistic,paper,optimistic,batch]
+//                      [--csv FILE]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -23,78 +30,129 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
-struct Row {
-  double total, insert, critical, wait;
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream ss(list);
+  for (std::string t; std::getline(ss, t, ',');) out.push_back(t);
+  return out;
+}
+
+struct Config {
+  std::string method;  // serial, pessimistic, paper, optimistic, batch
+  unsigned threads;
 };
 
-Row measure(const std::vector<ridt::Point>& pts, ridt::Options o, int reps) {
-  std::vector<double> total, insert, critical, wait;
-  for (int r = 0; r < reps; ++r) {
-    o.seed = 1 + r;
-    const ridt::Stats s = ridt::triangulate(pts, o).stats;
-    total.push_back(s.time_triangulate_s);
-    insert.push_back(s.time_insert_s);
-    critical.push_back(s.time_critical_s);
-    wait.push_back(s.time_wait_s);
-  }
-  return {median(total), median(insert), median(critical), median(wait)};
+ridt::Options options_for(const Config& c) {
+  ridt::Options o;
+  o.threads = c.threads;
+  if (c.method == "serial") o.method = ridt::Method::Serial;
+  if (c.method == "pessimistic" || c.method == "paper") o.method = ridt::Method::Pessimistic;
+  if (c.method == "paper") o.paper_locking = true;
+  if (c.method == "optimistic") o.method = ridt::Method::Optimistic;
+  if (c.method == "batch") o.method = ridt::Method::Batch;
+  return o;
 }
+
+struct Samples {
+  std::vector<double> total, insert, critical, wait, speedup, retries, idle, stall, depth, stale;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::uint32_t max_n = 1000000;
+  std::string n_list = "1000,10000,100000,1000000", dist_list = "uniform,grid";
+  std::string thread_list = "1,2,3,4,8", method_list = "pessimistic,paper,optimistic,batch", csv;
   int reps = 5;
-  std::string csv, thread_list = "1,2,4,6,8";
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--max-n") && i + 1 < argc) max_n = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) thread_list = argv[++i];
-    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
+    auto arg = [&](const char* name) { return !std::strcmp(argv[i], name) && i + 1 < argc; };
+    if (arg("--n")) n_list = argv[++i];
+    else if (arg("--dist")) dist_list = argv[++i];
+    else if (arg("--reps")) reps = std::atoi(argv[++i]);
+    else if (arg("--threads")) thread_list = argv[++i];
+    else if (arg("--methods")) method_list = argv[++i];
+    else if (arg("--csv")) csv = argv[++i];
     else {
-      std::fprintf(stderr, "usage: %s [--max-n N] [--reps R] [--threads 1,2,4] [--csv FILE]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--n N,N,...] [--dist uniform,grid] [--reps R] [--threads 1,2,...]\n"
+                   "          [--methods pessimistic,paper,optimistic,batch] [--csv FILE]\n",
+                   argv[0]);
       return 2;
     }
   }
-  std::vector<unsigned> thread_counts;
-  std::stringstream ss(thread_list);
-  for (std::string t; std::getline(ss, t, ',');) thread_counts.push_back(std::stoul(t));
+  std::vector<Config> configs;
+  for (const std::string& m : split(method_list))
+    for (const std::string& t : split(thread_list)) {
+      if (m == "paper" && std::stoul(t) > 2) continue;  // the locking variants: 1 and 2 threads
+      configs.push_back({m, static_cast<unsigned>(std::stoul(t))});
+    }
   const unsigned cores = std::thread::hardware_concurrency();
 
   FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
-  if (out) std::fprintf(out, "distribution,n,variant,threads,total_s,insert_s,critical_s,wait_s\n");
-  std::printf("Pessimistic method, seconds, medians of %d runs; %u hardware threads%s\n", reps,
-              cores, " (runs with more threads are oversubscribed)");
-  for (ridt::Distribution d : {ridt::Distribution::Uniform, ridt::Distribution::Grid}) {
-    std::printf("\n%s\n%9s %-8s %7s %9s %9s %9s %9s %8s\n", ridt::to_string(d), "n", "variant",
-                "threads", "total", "insert", "critical", "waiting", "speedup");
-    for (std::uint32_t n : {100u, 1000u, 10000u, 50000u, 100000u, 500000u, 1000000u}) {
-      if (n > max_n) break;
+  if (out)
+    std::fprintf(out, "distribution,n,method,threads,total_s,insert_s,critical_s,wait_s,speedup,"
+                      "retries,idle_s,stall_s,queue_depth,stale_hints\n");
+  std::printf("Seconds, medians of %d repetitions; speedup = serial / method, the median of the\n"
+              "per-repetition ratios. %u hardware threads: runs with more threads are "
+              "oversubscribed.\n", reps, cores);
+  for (const std::string& dist_name : split(dist_list)) {
+    const std::optional<ridt::Distribution> parsed = ridt::parse_distribution(dist_name);
+    if (!parsed) {
+      std::fprintf(stderr, "unknown distribution '%s'\n", dist_name.c_str());
+      return 2;
+    }
+    const ridt::Distribution d = *parsed;
+    std::printf("\n%s\n%10s %-11s %7s %9s %9s %9s %9s %8s %8s %9s %9s %8s %8s\n", dist_name.c_str(),
+                "n", "method", "threads", "total", "insert", "critical", "waiting", "speedup",
+                "retries", "idle", "stall", "depth", "stale");
+    for (const std::string& n_text : split(n_list)) {
+      const auto n = static_cast<std::uint32_t>(std::stoul(n_text));
       const std::vector<ridt::Point> pts = ridt::generate(d, n, 1);
-      const Row serial = measure(pts, {}, reps);
-      std::printf("%9u %-8s %7s %9.4f %9.4f %9s %9s\n", n, "serial", "-", serial.total,
-                  serial.insert, "-", "-");
-      if (out)
-        std::fprintf(out, "%s,%u,serial,1,%.6f,%.6f,0,0\n", ridt::to_string(d), n, serial.total, serial.insert);
-      for (bool paper : {false, true}) {
-        double one = 0;
-        for (unsigned t : thread_counts) {
-          if (paper && t > 2) continue;  // the variants are compared at 1 and 2 threads
-          ridt::Options o;
-          o.method = ridt::Method::Pessimistic;
-          o.threads = t;
-          o.paper_locking = paper;
-          const Row r = measure(pts, o, reps);
-          if (t == 1) one = r.total;
-          const char* name = paper ? "paper" : "leaf";
-          std::printf("%9u %-8s %7u %9.4f %9.4f %9.4f %9.4f %8.2f\n", n, name, t, r.total,
-                      r.insert, r.critical, r.wait, one > 0 ? one / r.total : 0.0);
-          if (out)
-            std::fprintf(out, "%s,%u,%s,%u,%.6f,%.6f,%.6f,%.6f\n", ridt::to_string(d), n, name, t,
-                         r.total, r.insert, r.critical, r.wait);
-          std::fflush(stdout);
+      Samples serial;
+      std::map<std::size_t, Samples> by_config;
+      for (int r = 0; r < reps; ++r) {
+        ridt::Options so;
+        so.seed = 1 + r;
+        const ridt::Stats s0 = ridt::triangulate(pts, so).stats;
+        serial.total.push_back(s0.time_triangulate_s);
+        serial.insert.push_back(s0.time_insert_s);
+        for (std::size_t c = 0; c < configs.size(); ++c) {
+          ridt::Options o = options_for(configs[c]);
+          o.seed = 1 + r;
+          const ridt::Stats s = ridt::triangulate(pts, o).stats;
+          Samples& m = by_config[c];
+          m.total.push_back(s.time_triangulate_s);
+          m.insert.push_back(s.time_insert_s);
+          m.critical.push_back(s.time_critical_s);
+          m.wait.push_back(s.time_wait_s);
+          m.speedup.push_back(s0.time_triangulate_s / s.time_triangulate_s);
+          m.retries.push_back(static_cast<double>(s.retries));
+          m.idle.push_back(s.time_idle_s);
+          m.stall.push_back(s.time_stall_s);
+          m.depth.push_back(s.queue_depth_mean);
+          m.stale.push_back(static_cast<double>(s.stale_hints));
         }
       }
+      std::printf("%10u %-11s %7s %9.4f %9.4f\n", n, "serial", "1", median(serial.total),
+                  median(serial.insert));
+      if (out)
+        std::fprintf(out, "%s,%u,serial,1,%.6f,%.6f,0,0,1,0,0,0,0,0\n", dist_name.c_str(), n,
+                     median(serial.total), median(serial.insert));
+      for (std::size_t c = 0; c < configs.size(); ++c) {
+        const Samples& m = by_config[c];
+        std::printf("%10u %-11s %7u %9.4f %9.4f %9.4f %9.4f %8.2f %8.0f %9.4f %9.4f %8.0f %8.0f\n",
+                    n, configs[c].method.c_str(), configs[c].threads, median(m.total),
+                    median(m.insert), median(m.critical), median(m.wait), median(m.speedup),
+                    median(m.retries), median(m.idle), median(m.stall), median(m.depth),
+                    median(m.stale));
+        if (out)
+          std::fprintf(out, "%s,%u,%s,%u,%.6f,%.6f,%.6f,%.6f,%.4f,%.0f,%.6f,%.6f,%.1f,%.0f\n",
+                       dist_name.c_str(), n, configs[c].method.c_str(), configs[c].threads,
+                       median(m.total), median(m.insert), median(m.critical), median(m.wait),
+                       median(m.speedup), median(m.retries), median(m.idle), median(m.stall),
+                       median(m.depth), median(m.stale));
+      }
+      std::fflush(stdout);
+      if (out) std::fflush(out);
     }
   }
   if (out) std::fclose(out);

@@ -150,7 +150,7 @@ class Kernel {
         const VertexId v = load_word(u->v[j]);
         if (v < n_ + 3) __builtin_prefetch(&points_[v]);
         const TriangleId w = load_link(u->n[j]);
-        if (w != t) tris_.prefetch(w);
+        if (w != t) tris_.prefetch</*kForWrite=*/true>(w);  // relinked if u flips
       }
     }
   }
@@ -181,7 +181,7 @@ class Kernel {
   void prefetch_around(TriangleId t) const {
     const Triangle& r = tris_[t];
     for (int i = 0; i < 3; ++i) {
-      tris_.prefetch(load_link(r.n[i]));
+      tris_.prefetch</*kForWrite=*/true>(load_link(r.n[i]));  // relinked by the split
       __builtin_prefetch(&points_[r.v[i]]);
     }
   }
@@ -226,16 +226,25 @@ class Kernel {
 
   /// `count` consecutive new ids: from the shared store, or from the thread's pool.
   TriangleId allocate(std::uint32_t count, Scratch& s) {
-    if (!s.pooled) return tris_.allocate(count);
-    if (s.pool_end - s.pool_next < count) {
-      retire_pool(s);
-      s.pool_next = tris_.allocate_shared(kPoolBlock);
-      s.pool_end = s.pool_next + kPoolBlock;
+    TriangleId first;
+    if (!s.pooled) {
+      first = tris_.allocate(count);
+    } else {
+      if (s.pool_end - s.pool_next < count) {
+        retire_pool(s);
+        s.pool_next = tris_.allocate_shared(kPoolBlock);
+        s.pool_end = s.pool_next + kPoolBlock;
+      }
+      first = s.pool_next;
+      s.pool_next += count;
     }
-    const TriangleId first = s.pool_next;
-    s.pool_next += count;
+    // Records are handed out in order: ask for the lines of those a few allocations on, so
+    // the writes to new records do not wait for memory (and an atomic operation behind them,
+    // which waits for earlier writes, does not either).
+    if (const Triangle* ahead = tris_.find(first + kWriteAhead)) prefetch_record<true>(ahead);
     return first;
   }
+  static constexpr std::uint32_t kWriteAhead = 32;  // records: some ten allocations on
   // Ids a pooled thread takes at once: one shared atomic add per some 450 insertions.
   static constexpr std::uint32_t kPoolBlock = 4096;
 

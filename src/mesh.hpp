@@ -14,6 +14,7 @@
 // See docs/mesh.md for drawings.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -64,13 +65,17 @@ static_assert(sizeof(Triangle) == 28, "a record should stay small: it is most of
 
 /// Prefetches both cache lines a record may span: 28-byte records packed back to back straddle
 /// a line boundary 6 times in 16, and the child link, read first, is then in the second line.
+/// `for_write`: the record is about to be written (a leaf near an insertion), so the line is
+/// asked for in exclusive state; an atomic read-modify-write on a line not held that way
+/// stalls until the line arrives, and keeps other misses from overlapping it.
 /// (GCC folds a second prefetch at a small constant offset into the first, so the address of
 /// the last byte goes through an integer.)
+template <bool kForWrite = false>
 inline void prefetch_record(const Triangle* r) {
   const auto first = reinterpret_cast<std::uintptr_t>(r);
-  __builtin_prefetch(r);
+  __builtin_prefetch(r, kForWrite);
   const auto last = (first + sizeof(Triangle) - 1) & ~std::uintptr_t{63};
-  if (last != (first & ~std::uintptr_t{63})) __builtin_prefetch(reinterpret_cast<const void*>(last));
+  if (last != (first & ~std::uintptr_t{63})) __builtin_prefetch(reinterpret_cast<const void*>(last), kForWrite);
 }
 
 /// Records in fixed-size chunks that never move, so an id stays valid while the store grows.
@@ -85,6 +90,11 @@ class TriangleStore {
   explicit TriangleStore(std::uint64_t expected = kChunkSize)
       : expected_(expected), chunks_(new std::atomic<Triangle*>[kMaxChunks]) {
     for (std::uint32_t i = 0; i < kMaxChunks; ++i) chunks_[i].store(nullptr, std::memory_order_relaxed);
+    // The chunks a run will need, at once and from the calling thread: worker threads then
+    // rarely take the growth lock, and every method gets its memory from the same heap (the
+    // caller's; a thread's own malloc arena would hand out fresh pages where the caller's
+    // heap reuses pages a previous run touched). Untouched pages cost nothing.
+    grow(std::min<std::uint64_t>(expected, kIdMask));
   }
   ~TriangleStore() {
     for (std::uint32_t i = 0; i < kMaxChunks; ++i) std::free(chunks_[i].load(std::memory_order_relaxed));
@@ -109,8 +119,9 @@ class TriangleStore {
   }
 
   /// Prefetches record t if it may exist: t may come from a racy, possibly stale read.
+  template <bool kForWrite = false>
   void prefetch(TriangleId t) const {
-    if (const Triangle* r = find(t)) prefetch_record(r);
+    if (const Triangle* r = find(t)) prefetch_record<kForWrite>(r);
   }
 
   /// Reserves `count` consecutive ids. One thread at a time (the serial method, or whoever

@@ -97,7 +97,8 @@ class Inserter {
     for (std::size_t k = 0; k < w_.cavity.size(); ++k) {
       const Triangle& r = tris[w_.cavity[k]];
       for (const TriangleId u : r.n) {
-        if (u == kNone || std::find(w_.held.begin(), w_.held.end(), u) != w_.held.end()) continue;
+        // Held already? Before the split the thread owns exactly what it took in this attempt.
+        if (u == kNone || kernel_.owns(u, me_)) continue;
         if (!take(u)) return false;
         const Triangle& ru = tris[u];
         // The same test as legalization, so the region is exactly what it will touch.

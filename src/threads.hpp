@@ -95,11 +95,7 @@ void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::du
   std::atomic<bool> stop{false};
   std::vector<std::exception_ptr> errors(threads);
   wait.assign(threads, Clock::duration{});
-  {
-    std::vector<std::jthread> pool;
-    pool.reserve(threads);
-    for (unsigned w = 0; w < threads; ++w)
-      pool.emplace_back([&, w] {
+  auto worker = [&](unsigned w) {
         auto arrive = [&] {
           const auto t0 = Clock::now();
           sync.arrive_and_wait();
@@ -120,7 +116,13 @@ void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::du
           stop.store(true, std::memory_order_relaxed);
           sync.arrive_and_drop();
         }
-      });
+  };
+  {
+    // Worker 0 is the calling thread: one thread then runs where the serial method runs.
+    std::vector<std::jthread> pool;
+    pool.reserve(threads - 1);
+    for (unsigned w = 1; w < threads; ++w) pool.emplace_back(worker, w);
+    worker(0);
   }
   for (const std::exception_ptr& e : errors)
     if (e) std::rethrow_exception(e);
