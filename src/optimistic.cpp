@@ -37,7 +37,7 @@ struct alignas(64) Worker {  // each on its own cache lines
   std::vector<TriangleId> held;    // taken in this attempt
   std::vector<TriangleId> cavity;  // held triangles whose circumcircle holds p
   Backoff backoff;
-  Clock::duration holding{}, backing_off{};
+  std::uint64_t holding = 0, backing_off = 0;  // ticks (threads.hpp)
 };
 
 class Inserter {
@@ -55,19 +55,19 @@ class Inserter {
         if (is_leaf(kernel_.triangles()[t].load_child())) back_off<kTimed>();
         continue;
       }
-      Clock::time_point t0;
-      if constexpr (kTimed) t0 = Clock::now();
+      std::uint64_t t0 = 0;
+      if constexpr (kTimed) t0 = ticks();
       w_.held.assign(1, t);
       const Kernel::Location where = kernel_.classify(t, p);
       if (where.where == Kernel::Where::OnVertex) {
         w_.duplicates.push_back({p, kernel_.triangles()[t].v[where.i]});
         release_all();
-        if constexpr (kTimed) w_.holding += Clock::now() - t0;
+        if constexpr (kTimed) w_.holding += ticks() - t0;
         return;
       }
       if (!acquire_region(where, p)) {
         release_all();
-        if constexpr (kTimed) w_.holding += Clock::now() - t0;
+        if constexpr (kTimed) w_.holding += ticks() - t0;
         back_off<kTimed>();
         continue;  // t may still be the leaf: the descent then stops at once
       }
@@ -76,7 +76,7 @@ class Inserter {
       kernel_.legalize(p, w_.scratch);
       w_.scratch.cavity = nullptr;
       release_all();
-      if constexpr (kTimed) w_.holding += Clock::now() - t0;
+      if constexpr (kTimed) w_.holding += ticks() - t0;
       w_.backoff.reset();
       return;
     }
@@ -126,10 +126,10 @@ class Inserter {
   template <bool kTimed>
   void back_off() {
     ++w_.stats.retries;
-    Clock::time_point t0;
-    if constexpr (kTimed) t0 = Clock::now();
+    std::uint64_t t0 = 0;
+    if constexpr (kTimed) t0 = ticks();
     w_.backoff.pause();
-    if constexpr (kTimed) w_.backing_off += Clock::now() - t0;
+    if constexpr (kTimed) w_.backing_off += ticks() - t0;
   }
 
   Kernel& kernel_;
@@ -161,6 +161,7 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
   }
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
+  const TickRate rate;
   run_in_rounds(kernel, threads, barrier_wait,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   if (timed)
@@ -169,6 +170,7 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
                     insert_round<false>(kernel, first, end, w, threads, hint, workers[w]);
                 });
   const double total = seconds(Clock::now() - t_start);
+  const double tick = rate.seconds_per_tick();
   for (unsigned w = 0; w < threads; ++w) {
     Worker& worker = workers[w];
     kernel.retire_pool(worker.scratch);
@@ -177,10 +179,10 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
     stats.edge_splits += worker.scratch.edge_splits;
     stats.retries += worker.stats.retries;
     worker.stats.time_insert_s = total;
-    worker.stats.time_critical_s = seconds(worker.holding);
+    worker.stats.time_critical_s = static_cast<double>(worker.holding) * tick;
     // Backing off after a failed take, and at the ends of rounds waiting for the others.
-    worker.stats.time_wait_s =
-        seconds(worker.backing_off + (timed ? barrier_wait[w] : Clock::duration{}));
+    worker.stats.time_wait_s = static_cast<double>(worker.backing_off) * tick +
+                               (timed ? seconds(barrier_wait[w]) : 0.0);
     stats.time_critical_s += worker.stats.time_critical_s;
     stats.time_wait_s += worker.stats.time_wait_s;
     stats.per_thread.push_back(worker.stats);

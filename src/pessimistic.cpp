@@ -29,7 +29,7 @@ struct alignas(64) Worker {  // each on its own cache lines
   Scratch scratch;
   std::vector<DuplicateHit> duplicates;
   ThreadStats stats;
-  Clock::duration critical{}, waiting{};
+  std::uint64_t critical = 0, waiting = 0;  // ticks (threads.hpp)
 };
 
 // Worker w's share of the round [first, end): the points first + w, first + w + T, ...
@@ -47,15 +47,15 @@ void insert_round(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, 
     for (TriangleId next; (next = kernel.step(node, p)) != node;) parent = node, node = next;
     const TriangleId start = paper ? parent : node;
     kernel.prefetch_around(node);  // its neighbours arrive while we wait for the lock
-    Clock::time_point t0, t1;
-    if constexpr (kTimed) t0 = Clock::now();
+    std::uint64_t t0 = 0, t1 = 0;
+    if constexpr (kTimed) t0 = ticks();
     {
       const std::lock_guard<SpinLock> guard(lock);  // the one critical section of Fig. 10
-      if constexpr (kTimed) t1 = Clock::now();
+      if constexpr (kTimed) t1 = ticks();
       const TriangleId leaf = kernel.descend(start, p);
       const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
       if (hit != kNone) out.duplicates.push_back({p, hit});
-      if constexpr (kTimed) out.critical += Clock::now() - t1;
+      if constexpr (kTimed) out.critical += ticks() - t1;
     }
     if constexpr (kTimed) out.waiting += t1 - t0;
   }
@@ -70,6 +70,7 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed
   std::vector<Worker> workers(threads);
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
+  const TickRate rate;
   run_in_rounds(kernel, threads, barrier_wait,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   if (timed)
@@ -78,15 +79,17 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed
                     insert_round<false>(kernel, lock, first, end, w, threads, hint, paper, workers[w]);
                 });
   const double total = seconds(Clock::now() - t_start);
+  const double tick = rate.seconds_per_tick();
   for (unsigned w = 0; w < threads; ++w) {
     Worker& worker = workers[w];
     duplicates.insert(duplicates.end(), worker.duplicates.begin(), worker.duplicates.end());
     stats.flips += worker.scratch.flips;
     stats.edge_splits += worker.scratch.edge_splits;
     worker.stats.time_insert_s = total;
-    worker.stats.time_critical_s = seconds(worker.critical);
+    worker.stats.time_critical_s = static_cast<double>(worker.critical) * tick;
     // Waiting for the lock, and at the ends of rounds for the other workers.
-    worker.stats.time_wait_s = seconds(worker.waiting + (timed ? barrier_wait[w] : Clock::duration{}));
+    worker.stats.time_wait_s = static_cast<double>(worker.waiting) * tick +
+                               (timed ? seconds(barrier_wait[w]) : 0.0);
     stats.time_critical_s += worker.stats.time_critical_s;
     stats.time_wait_s += worker.stats.time_wait_s;
     stats.per_thread.push_back(worker.stats);
