@@ -19,7 +19,7 @@
 // no other thread ever sees half of one. Geogram's parallel Delaunay (Lévy) works this way.
 //
 // The points are shared as in the pessimistic method: the rounds of rounds.hpp, located by
-// all workers together, then worker w inserts the points w, w + T, ... of each round.
+// all workers together, then inserted in chunks taken from a shared counter.
 #include <algorithm>
 
 #include "driver.hpp"
@@ -137,11 +137,12 @@ class Inserter {
   const std::uint32_t me_;
 };
 
+// The points [first, end), a chunk of a round; hint[v - first] holds point v.
 template <bool kTimed>
-void insert_round(Kernel& kernel, VertexId first, VertexId end, unsigned w, unsigned threads,
-                  const TriangleId* hint, Worker& worker) {
+void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId* hint,
+                  Worker& worker) {
   constexpr VertexId kWindow = 16;  // as in the serial driver: about two levels are left
-  LookAhead ahead(kernel, first + w, threads, end, /*ring=*/true, hint + w, kWindow);
+  LookAhead ahead(kernel, first, 1, end, /*ring=*/true, hint, kWindow);
   Inserter inserter(kernel, worker);
   for (VertexId i = 0; i < ahead.count(); ++i)
     inserter.insert<kTimed>(ahead.point(i), ahead.take(i).node);
@@ -165,9 +166,9 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
   run_in_rounds(kernel, threads, barrier_wait,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   if (timed)
-                    insert_round<true>(kernel, first, end, w, threads, hint, workers[w]);
+                    insert_chunk<true>(kernel, first, end, hint, workers[w]);
                   else
-                    insert_round<false>(kernel, first, end, w, threads, hint, workers[w]);
+                    insert_chunk<false>(kernel, first, end, hint, workers[w]);
                 });
   const double total = seconds(Clock::now() - t_start);
   const double tick = rate.seconds_per_tick();

@@ -1,12 +1,14 @@
 // The pessimistic method: the paper's Fig. 10 ("Pessimistic Threaded Delaunay Triangulation
 // by Randomized Incremental Insertion", section 3).
 //
-// The master has made the random permutation (vertex v is the v-th point of it); worker w of T
-// inserts the points w, w + T, w + 2T, ... of each round into the one shared triangulation. A
-// worker descends the DAG without the lock; the rest of location, the split and the
-// legalization run inside one critical section, so only one thread ever changes the mesh.
-// Before each round the workers locate its points together (threads.hpp, rounds.hpp), so a
-// descent during insertion starts from a leaf of the round's beginning.
+// The master has made the random permutation (vertex v is the v-th point of it); the workers
+// insert it into the one shared triangulation, each taking chunks of 256 consecutive points
+// from a shared counter (the paper gives each thread a fixed subset; chunks taken on demand
+// keep a thread on a busier core from holding the others up). A worker descends the DAG
+// without the lock; the rest of location, the split and the legalization run inside one
+// critical section, so only one thread ever changes the mesh. Before each round the workers
+// locate its points together (threads.hpp, rounds.hpp), so a descent during insertion starts
+// from a leaf of the round's beginning.
 //
 // Why the descent needs no lock: the records a descent reads (vertices, the split point or
 // separating edge of an internal node, the child link) are all written before the child link
@@ -32,12 +34,12 @@ struct alignas(64) Worker {  // each on its own cache lines
   std::uint64_t critical = 0, waiting = 0;  // ticks (threads.hpp)
 };
 
-// Worker w's share of the round [first, end): the points first + w, first + w + T, ...
+// The points [first, end), a chunk of a round; hint[v - first] holds point v.
 template <bool kTimed>
-void insert_round(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, unsigned w,
-                  unsigned threads, const TriangleId* hint, bool paper, Worker& out) {
+void insert_chunk(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, bool ring,
+                  const TriangleId* hint, bool paper, Worker& out) {
   constexpr VertexId kWindow = 16;  // as in the serial driver: about two levels are left
-  LookAhead ahead(kernel, first + w, threads, end, /*ring=*/threads == 1, hint + w, kWindow);
+  LookAhead ahead(kernel, first, 1, end, ring, hint, kWindow);
   for (VertexId i = 0; i < ahead.count(); ++i) {
     const VertexId p = ahead.point(i);
     const LookAhead::Hint h = ahead.take(i);
@@ -73,10 +75,13 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed
   const TickRate rate;
   run_in_rounds(kernel, threads, barrier_wait,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
+                  // The ring pays on one thread; with several it pulls in lines that the lock
+                  // holder may be writing.
+                  const bool ring = threads == 1;
                   if (timed)
-                    insert_round<true>(kernel, lock, first, end, w, threads, hint, paper, workers[w]);
+                    insert_chunk<true>(kernel, lock, first, end, ring, hint, paper, workers[w]);
                   else
-                    insert_round<false>(kernel, lock, first, end, w, threads, hint, paper, workers[w]);
+                    insert_chunk<false>(kernel, lock, first, end, ring, hint, paper, workers[w]);
                 });
   const double total = seconds(Clock::now() - t_start);
   const double tick = rate.seconds_per_tick();

@@ -129,17 +129,16 @@ class RoundLocator {
 
   /// Descends the DAG as it stands for every point of round r, along the curve, and writes
   /// in hint[v - first(r)] a leaf whose closed region holds point v.
-  void locate(std::size_t r, TriangleId* hint) const { locate(r, 0, 1, hint); }
+  void locate(std::size_t r, TriangleId* hint) const {
+    locate(r, 0, first_[r + 1] - first_[r], hint);
+  }
 
-  /// The same for part `part` of `parts` equal stretches of round r's curve: each of
-  /// `parts` threads can locate its own part while the DAG is read by all (descents read only
-  /// what was published, mesh.hpp).
-  void locate(std::size_t r, unsigned part, unsigned parts, TriangleId* hint) const {
+  /// The same for positions [begin, end) of round r's curve (0 is its first): each of
+  /// several threads can locate its own stretch while the DAG is read by all (descents read
+  /// only what was published, mesh.hpp).
+  void locate(std::size_t r, VertexId begin, VertexId end, TriangleId* hint) const {
     const VertexId base = first_[r];
-    const std::uint64_t count = first_[r + 1] - base;
-    const VertexId begin = base + static_cast<VertexId>(count * part / parts);
-    const VertexId end = base + static_cast<VertexId>(count * (part + 1) / parts);
-    descend_along(kernel_, by_round_.data() + begin, end - begin,
+    descend_along(kernel_, by_round_.data() + base + begin, end - begin,
                   [&](VertexId v, TriangleId leaf) { hint[v - base] = leaf; });
   }
 

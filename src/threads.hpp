@@ -108,45 +108,65 @@ class Backoff {
   int exponent_ = kMinExponent;
 };
 
-/// Runs `threads` workers through the rounds: in each round every worker first locates its
-/// stretch of the round's curve (the DAG is only read then; rounds.hpp), all wait, then
-/// insert_round(w, first, end, hint) inserts worker w's share of the round's points [first,
-/// end), with hint[v - first] a leaf holding point v when the round began; all wait again.
-/// `wait[w]` receives the time worker w spent waiting for the others. The first exception of
-/// any worker is rethrown once all have stopped; the others stop at the next round.
-template <class InsertRound>
+/// Runs `threads` workers through the rounds: in each round the workers first locate the
+/// round's points along the curve (the DAG is only read then; rounds.hpp), all wait, then
+/// they insert the round's points [first, end) in the random order; all wait again. Work is
+/// handed out in chunks from a counter, so a worker on a faster (or less shared) core takes
+/// more of it and nobody waits long at the end of a round: insert_chunk(w, begin, end, hint)
+/// inserts the points [begin, end), hint[v - begin] being a leaf that held point v when the
+/// round began. Worker 0 is the calling thread. `wait[w]` receives the time worker w spent
+/// waiting for the others. The first exception of any worker is rethrown once all have
+/// stopped; the others stop at the next phase.
+template <class InsertChunk>
 void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::duration>& wait,
-                   InsertRound&& insert_round) {
+                   InsertChunk&& insert_chunk) {
   const RoundLocator rounds(kernel);
   std::vector<TriangleId> hint(rounds.largest());
+  // Per round, the next position to locate (along the curve) and to insert (in the order).
+  std::vector<std::atomic<VertexId>> located(rounds.rounds()), inserted(rounds.rounds());
+  for (std::size_t r = 0; r < rounds.rounds(); ++r) {
+    located[r].store(rounds.first(r), std::memory_order_relaxed);
+    inserted[r].store(rounds.first(r), std::memory_order_relaxed);
+  }
   std::barrier<> sync(static_cast<std::ptrdiff_t>(threads));
   std::atomic<bool> stop{false};
   std::vector<std::exception_ptr> errors(threads);
   wait.assign(threads, Clock::duration{});
   auto worker = [&](unsigned w) {
-        auto arrive = [&] {
-          const auto t0 = Clock::now();
-          sync.arrive_and_wait();
-          wait[w] += Clock::now() - t0;
-        };
-        try {
-          for (std::size_t r = 0; r < rounds.rounds(); ++r) {
-            if (!stop.load(std::memory_order_relaxed)) rounds.locate(r, w, threads, hint.data());
-            arrive();
-            if (!stop.load(std::memory_order_relaxed))
-              insert_round(w, rounds.first(r), rounds.first(r + 1), hint.data());
-            arrive();
-          }
-        } catch (...) {
-          // Thrown inside a phase, before this worker arrived: leaving the barrier lets the
-          // others finish their rounds without it.
-          errors[w] = std::current_exception();
-          stop.store(true, std::memory_order_relaxed);
-          sync.arrive_and_drop();
+    auto arrive = [&] {
+      const auto t0 = Clock::now();
+      sync.arrive_and_wait();
+      wait[w] += Clock::now() - t0;
+    };
+    try {
+      for (std::size_t r = 0; r < rounds.rounds(); ++r) {
+        const VertexId first = rounds.first(r), end = rounds.first(r + 1);
+        // Chunks: enough of them that the workers finish together, each still long enough
+        // for the lanes of the descent and the look-ahead of the insertion to get going.
+        const VertexId size = end - first;
+        const VertexId locate_chunk = std::clamp<VertexId>(size / (8 * threads), 256, 4096);
+        constexpr VertexId kInsertChunk = 256;
+        for (VertexId b; !stop.load(std::memory_order_relaxed) &&
+                         (b = located[r].fetch_add(locate_chunk, std::memory_order_relaxed)) < end;)
+          rounds.locate(r, b - first, std::min<std::uint64_t>(end, std::uint64_t{b} + locate_chunk) - first,
+                        hint.data());
+        arrive();
+        for (VertexId b; !stop.load(std::memory_order_relaxed) &&
+                         (b = inserted[r].fetch_add(kInsertChunk, std::memory_order_relaxed)) < end;) {
+          const VertexId e = std::min<std::uint64_t>(end, std::uint64_t{b} + kInsertChunk);
+          insert_chunk(w, b, e, hint.data() + (b - first));
         }
+        arrive();
+      }
+    } catch (...) {
+      // Thrown inside a phase, before this worker arrived: leaving the barrier lets the
+      // others finish their rounds without it.
+      errors[w] = std::current_exception();
+      stop.store(true, std::memory_order_relaxed);
+      sync.arrive_and_drop();
+    }
   };
   {
-    // Worker 0 is the calling thread: one thread then runs where the serial method runs.
     std::vector<std::jthread> pool;
     pool.reserve(threads - 1);
     for (unsigned w = 1; w < threads; ++w) pool.emplace_back(worker, w);
