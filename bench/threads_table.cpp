@@ -2,9 +2,9 @@
 // time, the time for insertion, the time in critical sections (pessimistic: the lock;
 // optimistic: holding triangles) and the waiting time, summed over threads; retries
 // (optimistic); idle, stall, queue depth and stale hints (batch). Serial ridt runs in the same
-// repetition as every configuration: each repetition runs serial, then each configuration
-// once, so a drift of the machine's speed hits all alike, and each speedup is the median of
-// the per-repetition ratios serial / method. Writes a CSV for bench/plot_threads.py.
+// repetition as every configuration: each repetition runs serial and each configuration once,
+// in a shuffled order, so a drift of the machine's speed and the state one run leaves for the
+// next hit all alike; each speedup is the median of the per-repetition ratios serial / method. Writes a CSV for bench/plot_threads.py.
 //
 //   ridt_bench_threads [--n 1000,10000,100000,1000000] [--dist uniform,grid] [--reps R]
 //                      [--threads 1,2,3,4,8] [--methods pessimistic,paper,optimistic,batch]
@@ -14,6 +14,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <numeric>
+#include <random>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -109,16 +111,24 @@ int main(int argc, char** argv) {
       const std::vector<ridt::Point> pts = ridt::generate(d, n, 1);
       Samples serial;
       std::map<std::size_t, Samples> by_config;
+      std::mt19937 shuffle(7);  // seeded: the same orders in every run of this build
       for (int r = 0; r < reps; ++r) {
-        ridt::Options so;
-        so.seed = 1 + r;
-        const ridt::Stats s0 = ridt::triangulate(pts, so).stats;
+        // Serial and each configuration once, in an order shuffled anew for each repetition:
+        // a run's speed depends on what the run before it left in memory and in the caches.
+        std::vector<std::size_t> order(configs.size() + 1);  // configs.size() stands for serial
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::shuffle(order.begin(), order.end(), shuffle);
+        std::vector<ridt::Stats> stats(configs.size() + 1);
+        for (const std::size_t c : order) {
+          ridt::Options o = c == configs.size() ? ridt::Options{} : options_for(configs[c]);
+          o.seed = 1 + r;
+          stats[c] = ridt::triangulate(pts, o).stats;
+        }
+        const ridt::Stats& s0 = stats[configs.size()];
         serial.total.push_back(s0.time_triangulate_s);
         serial.insert.push_back(s0.time_insert_s);
         for (std::size_t c = 0; c < configs.size(); ++c) {
-          ridt::Options o = options_for(configs[c]);
-          o.seed = 1 + r;
-          const ridt::Stats s = ridt::triangulate(pts, o).stats;
+          const ridt::Stats& s = stats[c];
           Samples& m = by_config[c];
           m.total.push_back(s.time_triangulate_s);
           m.insert.push_back(s.time_insert_s);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <thread>
 #include <utility>
 
 #include "random.hpp"
@@ -60,7 +61,7 @@ std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
   return key;
 }
 
-std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n) {
+std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, unsigned threads) {
   std::vector<std::uint32_t> key(n);
   if (n == 0) return key;
   double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
@@ -74,30 +75,46 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n) {
   const auto cell = [&](double v, double lo) {
     return static_cast<std::uint32_t>(std::clamp((v / 2 - lo / 2) * scale, 0.0, 65535.0));
   };
-  for (std::uint32_t i = 0; i < n; ++i) key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
+  auto part = [&](unsigned t, unsigned parts) {
+    const auto begin = static_cast<std::uint32_t>(std::uint64_t{n} * t / parts);
+    const auto end = static_cast<std::uint32_t>(std::uint64_t{n} * (t + 1) / parts);
+    for (std::uint32_t i = begin; i < end; ++i)
+      key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
+  };
+  const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(part, t, parts);
+    part(0, parts);
+  }
   return key;
 }
 
-std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
-  std::vector<std::uint32_t> key = hilbert_keys(points, n);
-  std::vector<std::uint32_t> order(n), key2(n), order2(n);
-  std::iota(order.begin(), order.end(), 0u);
-  // Least significant digit first, 11 bits a pass: three stable counting passes.
+void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t* scratch,
+                 std::uint32_t count) {
+  // Least significant digit first, 11 bits a pass: three stable counting passes between `ids`
+  // and `scratch`; three is odd, so the result is copied back at the end.
   constexpr int kBits = 11;
-  std::vector<std::uint32_t> count(std::size_t{1} << kBits);
+  constexpr std::uint32_t kMask = (1u << kBits) - 1;
+  std::vector<std::uint32_t> at(std::size_t{1} << kBits);
+  std::uint32_t* from = ids;
+  std::uint32_t* to = scratch;
   for (int shift = 0; shift < 32; shift += kBits) {
-    std::fill(count.begin(), count.end(), 0u);
-    for (std::uint32_t i = 0; i < n; ++i) ++count[(key[i] >> shift) & ((1u << kBits) - 1)];
+    std::fill(at.begin(), at.end(), 0u);
+    for (std::uint32_t i = 0; i < count; ++i) ++at[(key[from[i]] >> shift) & kMask];
     std::uint32_t sum = 0;
-    for (std::uint32_t& c : count) sum += std::exchange(c, sum);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      const std::uint32_t at = count[(key[i] >> shift) & ((1u << kBits) - 1)]++;
-      key2[at] = key[i];
-      order2[at] = order[i];
-    }
-    key.swap(key2);
-    order.swap(order2);
+    for (std::uint32_t& c : at) sum += std::exchange(c, sum);
+    for (std::uint32_t i = 0; i < count; ++i) to[at[(key[from[i]] >> shift) & kMask]++] = from[i];
+    std::swap(from, to);
   }
+  if (from != ids) std::copy(from, from + count, ids);
+}
+
+std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
+  const std::vector<std::uint32_t> key = hilbert_keys(points, n);
+  std::vector<std::uint32_t> order(n), scratch(n);
+  std::iota(order.begin(), order.end(), 0u);
+  sort_by_key(key.data(), order.data(), scratch.data(), n);
   return order;
 }
 

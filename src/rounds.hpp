@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <numeric>
+#include <thread>
 #include <vector>
 
 #include "kernel.hpp"
@@ -104,17 +106,37 @@ class RoundLocator {
   static constexpr VertexId kFirst = 1024;
   static_assert(std::has_single_bit(kFirst));
 
-  /// Sorts the points of each round of vertices 0 .. n-1 along the Hilbert curve.
-  explicit RoundLocator(const Kernel& kernel) : kernel_(kernel) {
+  /// Sorts the points of each round of vertices 0 .. n-1 along the Hilbert curve, with up to
+  /// `threads` threads.
+  explicit RoundLocator(const Kernel& kernel, unsigned threads = 1) : kernel_(kernel) {
     const VertexId n = kernel.n();
-    // Round r holds the vertices [begin(r), begin(r + 1)); a stable counting pass by round
-    // over the Hilbert order of all points sorts each round along the curve.
+    // Round r holds the vertices [first(r), first(r + 1)), consecutive numbers: each round is
+    // sorted on its own, and the rounds are shared among the threads, the largest first, each
+    // to the thread with the least work so far (with two threads: the last round, half of all
+    // points, against all the others).
     for (VertexId b = 0; b < n; b = end_of_round(b)) first_.push_back(b);
     first_.push_back(n);
-    const std::vector<VertexId> curve = hilbert_order(&kernel.point(0), n);
-    std::vector<VertexId> at(first_.begin(), first_.end() - 1);
+    const std::vector<std::uint32_t> key = hilbert_keys(&kernel.point(0), n, threads);
     by_round_.resize(n);
-    for (const VertexId v : curve) by_round_[at[round_of(v)]++] = v;
+    std::iota(by_round_.begin(), by_round_.end(), VertexId{0});
+    const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
+    std::vector<std::vector<std::size_t>> share(parts);
+    std::vector<std::uint64_t> load(parts, 0);
+    for (std::size_t r = rounds(); r-- > 0;) {
+      const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+      share[least].push_back(r);
+      load[least] += first_[r + 1] - first_[r];
+    }
+    auto sort_rounds = [&](unsigned t) {
+      std::vector<std::uint32_t> scratch;
+      for (const std::size_t r : share[t]) {
+        scratch.resize(first_[r + 1] - first_[r]);
+        sort_by_key(key.data(), by_round_.data() + first_[r], scratch.data(), first_[r + 1] - first_[r]);
+      }
+    };
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_rounds, t);
+    sort_rounds(0);
   }
 
   /// The number of rounds and the vertices [first(r), first(r + 1)) of round r.
@@ -146,8 +168,6 @@ class RoundLocator {
   static VertexId end_of_round(VertexId b) {
     return b < kFirst ? kFirst : 2 * b;  // n < 2^31 (triangulate), so no overflow
   }
-  // Round 0 is [0, kFirst); round r > 0 is [kFirst 2^(r-1), kFirst 2^r).
-  static std::size_t round_of(VertexId v) { return std::bit_width(v / kFirst); }
 
   const Kernel& kernel_;
   std::vector<VertexId> first_;     // first vertex of each round, then n

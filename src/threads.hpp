@@ -120,7 +120,7 @@ class Backoff {
 template <class InsertChunk>
 void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::duration>& wait,
                    InsertChunk&& insert_chunk) {
-  const RoundLocator rounds(kernel);
+  const RoundLocator rounds(kernel, threads);
   std::vector<TriangleId> hint(rounds.largest());
   // Per round, the next position to locate (along the curve) and to insert (in the order).
   std::vector<std::atomic<VertexId>> located(rounds.rounds()), inserted(rounds.rounds());
