@@ -88,6 +88,8 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     body(0u);
   };  // the pool joins on leaving
 
+  // Ids 1 .. kMaxOwner are never written (mesh.hpp).
+  auto unused = [](TriangleId t) { return t != 0 && t < kFirstChild; };
   // Pass 1: the child links are dead now; a kept triangle's link becomes its new id + 1.
   auto kept = [&](const Triangle& r) {
     return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n;
@@ -98,6 +100,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     std::uint32_t c = 0;
     std::uint64_t m = 0;
     for (TriangleId t = range(w).first; t < range(w).second; ++t) {
+      if (unused(t)) continue;
       c += kept(tris[t]);
       m += tris[t].v[0] != kNone;
     }
@@ -109,6 +112,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   in_parallel([&](unsigned w) {
     std::uint32_t id = first_id[w];
     for (TriangleId t = range(w).first; t < range(w).second; ++t) {
+      if (unused(t)) continue;
       Triangle& r = tris[t];
       r.child = kept(r) ? ++id : 0;
     }
@@ -124,7 +128,8 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     constexpr TriangleId kAhead = 64;
     const auto [begin, end] = range(w);
     for (TriangleId t = begin; t < end; ++t) {
-      if (t + kAhead < end) {
+      if (unused(t)) continue;
+      if (t + kAhead < end && !unused(t + kAhead)) {
         const Triangle& a = tris[t + kAhead];
         if (a.child != 0) {
           for (const TriangleId nb : a.n)

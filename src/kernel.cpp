@@ -21,10 +21,9 @@ Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bo
     : points_(std::move(points)), n_(n), symbolic_(symbolic),
       tris_(std::uint64_t{n} * 9 + kFirstChild) {  // about 9 records a point: 3 from the split, 2 a flip
   Scratch s;
+  // Ids 1 .. kMaxOwner are never triangles (mesh.hpp), nor written: the finish skips them.
   const TriangleId root = tris_.allocate(kFirstChild);
   make(root, n, n + 1, n + 2, kNone, kNone, kNone, s);
-  // Ids 1 .. kMaxOwner are never triangles (mesh.hpp).
-  for (TriangleId t = root + 1; t < kFirstChild; ++t) make(t, kNone, kNone, kNone, kNone, kNone, kNone, s);
 }
 
 void Kernel::retire_pool(Scratch& s) {

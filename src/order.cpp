@@ -90,31 +90,31 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
   return key;
 }
 
-void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t* scratch,
-                 std::uint32_t count) {
-  // Least significant digit first, 11 bits a pass: three stable counting passes between `ids`
-  // and `scratch`; three is odd, so the result is copied back at the end.
+void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t count) {
+  // Each id travels with its key, packed in 64 bits, so every pass reads its input in order
+  // (looking the key up through the id would read the key array at random, twice a pass).
+  // Least significant digit first, 11 bits a pass: three stable counting passes on the key.
+  std::vector<std::uint64_t> a(count), b(count);
+  for (std::uint32_t i = 0; i < count; ++i) a[i] = std::uint64_t{key[ids[i]]} << 32 | ids[i];
   constexpr int kBits = 11;
-  constexpr std::uint32_t kMask = (1u << kBits) - 1;
+  constexpr std::uint64_t kMask = (1u << kBits) - 1;
   std::vector<std::uint32_t> at(std::size_t{1} << kBits);
-  std::uint32_t* from = ids;
-  std::uint32_t* to = scratch;
-  for (int shift = 0; shift < 32; shift += kBits) {
+  for (int shift = 32; shift < 64; shift += kBits) {
     std::fill(at.begin(), at.end(), 0u);
-    for (std::uint32_t i = 0; i < count; ++i) ++at[(key[from[i]] >> shift) & kMask];
+    for (std::uint32_t i = 0; i < count; ++i) ++at[(a[i] >> shift) & kMask];
     std::uint32_t sum = 0;
     for (std::uint32_t& c : at) sum += std::exchange(c, sum);
-    for (std::uint32_t i = 0; i < count; ++i) to[at[(key[from[i]] >> shift) & kMask]++] = from[i];
-    std::swap(from, to);
+    for (std::uint32_t i = 0; i < count; ++i) b[at[(a[i] >> shift) & kMask]++] = a[i];
+    a.swap(b);
   }
-  if (from != ids) std::copy(from, from + count, ids);
+  for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(a[i]);
 }
 
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
   const std::vector<std::uint32_t> key = hilbert_keys(points, n);
-  std::vector<std::uint32_t> order(n), scratch(n);
+  std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  sort_by_key(key.data(), order.data(), scratch.data(), n);
+  sort_by_key(key.data(), order.data(), n);
   return order;
 }
 

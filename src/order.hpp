@@ -20,10 +20,8 @@ std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
 /// so the curve's cells are square), computed by up to `threads` threads.
 std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, unsigned threads = 1);
 
-/// Sorts ids[0 .. count) by key[id], stably: a radix sort, three passes of 11 bits. `scratch`
-/// must hold count entries.
-void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t* scratch,
-                 std::uint32_t count);
+/// Sorts ids[0 .. count) by key[id], stably: a radix sort, three passes of 11 bits.
+void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t count);
 
 /// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box (a
 /// radix sort on hilbert_key: linear time, no comparison).

@@ -128,11 +128,8 @@ class RoundLocator {
       load[least] += first_[r + 1] - first_[r];
     }
     auto sort_rounds = [&](unsigned t) {
-      std::vector<std::uint32_t> scratch;
-      for (const std::size_t r : share[t]) {
-        scratch.resize(first_[r + 1] - first_[r]);
-        sort_by_key(key.data(), by_round_.data() + first_[r], scratch.data(), first_[r + 1] - first_[r]);
-      }
+      for (const std::size_t r : share[t])
+        sort_by_key(key.data(), by_round_.data() + first_[r], first_[r + 1] - first_[r]);
     };
     std::vector<std::jthread> pool;
     for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_rounds, t);

@@ -37,11 +37,20 @@ cmp -s "$dir/grid.txt.ele" "$dir/grid7.ele" && pass || fail "seed changed the ou
 expect 0 "regenerate" -- "$ridt" generate --dist normal -n 2000 --seed 3 -o "$dir/again.txt"
 cmp -s "$dir/normal.txt" "$dir/again.txt" && pass || fail "generate is not reproducible"
 
-# The pessimistic method writes the same file as the serial one, for any thread count.
-for t in 1 2 3 8; do
-  expect 0 "pessimistic $t" -- "$ridt" triangulate "$dir/grid.txt" --method pessimistic --threads "$t" -o "$dir/grid_p$t.ele"
-  cmp -s "$dir/grid.txt.ele" "$dir/grid_p$t.ele" && pass || fail "pessimistic with $t threads differs"
+# Every threaded method writes the same file as the serial one, for any thread count.
+for m in pessimistic optimistic batch; do
+  for t in 1 2 3 8; do
+    expect 0 "$m $t" -- "$ridt" triangulate "$dir/grid.txt" --method "$m" --threads "$t" -o "$dir/grid_${m}_$t.ele"
+    cmp -s "$dir/grid.txt.ele" "$dir/grid_${m}_$t.ele" && pass || fail "$m with $t threads differs"
+  done
 done
+expect 0 "optimistic stats" -- "$ridt" triangulate "$dir/uniform.txt" --method optimistic --threads 2 --stats
+for key in retries time_critical_s per_thread; do stdout_has "\"$key\": "; done
+expect 0 "batch stats" -- "$ridt" triangulate "$dir/uniform.txt" --method batch --threads 3 --stats
+for key in time_idle_s time_stall_s queue_depth_mean stale_hints; do stdout_has "\"$key\": "; done
+stdout_has '"role": "locator"'
+expect 0 "batch table" -- "$ridt" triangulate "$dir/uniform.txt" --method batch --threads 2 --stats=table
+stdout_has "modifier"
 expect 0 "pessimistic paper" -- "$ridt" triangulate "$dir/clusters.txt" --method pessimistic --threads 2 --paper-locking -o "$dir/c_paper.ele"
 cmp -s "$dir/clusters.txt.ele" "$dir/c_paper.ele" && pass || fail "paper locking differs"
 expect 0 "pessimistic stats" -- "$ridt" triangulate "$dir/uniform.txt" --method pessimistic --threads 2 --stats
