@@ -172,21 +172,12 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
                 });
   const double total = seconds(Clock::now() - t_start);
   const double tick = rate.seconds_per_tick();
+  // Waiting: backing off after a failed take, and at the ends of rounds for the others.
   for (unsigned w = 0; w < threads; ++w) {
     Worker& worker = workers[w];
     kernel.retire_pool(worker.scratch);
-    duplicates.insert(duplicates.end(), worker.duplicates.begin(), worker.duplicates.end());
-    stats.flips += worker.scratch.flips;
-    stats.edge_splits += worker.scratch.edge_splits;
-    stats.retries += worker.stats.retries;
-    worker.stats.time_insert_s = total;
-    worker.stats.time_critical_s = static_cast<double>(worker.holding) * tick;
-    // Backing off after a failed take, and at the ends of rounds waiting for the others.
-    worker.stats.time_wait_s = static_cast<double>(worker.backing_off) * tick +
-                               (timed ? seconds(barrier_wait[w]) : 0.0);
-    stats.time_critical_s += worker.stats.time_critical_s;
-    stats.time_wait_s += worker.stats.time_wait_s;
-    stats.per_thread.push_back(worker.stats);
+    add_worker(worker.scratch, worker.duplicates, worker.stats, worker.holding, worker.backing_off,
+               tick, barrier_wait[w], timed, total, duplicates, stats);
   }
 }
 

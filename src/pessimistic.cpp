@@ -85,19 +85,11 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed
                 });
   const double total = seconds(Clock::now() - t_start);
   const double tick = rate.seconds_per_tick();
+  // Waiting: for the lock, and at the ends of rounds for the others.
   for (unsigned w = 0; w < threads; ++w) {
-    Worker& worker = workers[w];
-    duplicates.insert(duplicates.end(), worker.duplicates.begin(), worker.duplicates.end());
-    stats.flips += worker.scratch.flips;
-    stats.edge_splits += worker.scratch.edge_splits;
-    worker.stats.time_insert_s = total;
-    worker.stats.time_critical_s = static_cast<double>(worker.critical) * tick;
-    // Waiting for the lock, and at the ends of rounds for the other workers.
-    worker.stats.time_wait_s = static_cast<double>(worker.waiting) * tick +
-                               (timed ? seconds(barrier_wait[w]) : 0.0);
-    stats.time_critical_s += worker.stats.time_critical_s;
-    stats.time_wait_s += worker.stats.time_wait_s;
-    stats.per_thread.push_back(worker.stats);
+    const Worker& worker = workers[w];
+    add_worker(worker.scratch, worker.duplicates, worker.stats, worker.critical, worker.waiting,
+               tick, barrier_wait[w], timed, total, duplicates, stats);
   }
 }
 
