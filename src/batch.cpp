@@ -15,6 +15,7 @@
 // One thread has no locator: it locates and modifies, the serial method.
 #include <algorithm>
 #include <memory>
+#include <numeric>
 
 #include "driver.hpp"
 #include "order.hpp"
@@ -62,7 +63,6 @@ void wait_until(Ready&& ready, const std::atomic<bool>& stop) {
 
 void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& q, Locator& me) {
   const VertexId n = kernel.n();
-  std::vector<std::uint64_t> sorted;
   std::vector<VertexId> along;
   const auto t_start = Clock::now();
   for (;;) {
@@ -77,11 +77,9 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
       wait_until(fits, q.stop);
       me.stalled += Clock::now() - t0;
     }
-    sorted.clear();
-    for (VertexId v = begin; v < end; ++v) sorted.push_back(std::uint64_t{key[v]} << 32 | v);
-    std::sort(sorted.begin(), sorted.end());
-    along.clear();
-    for (const std::uint64_t kv : sorted) along.push_back(static_cast<VertexId>(kv));
+    along.resize(end - begin);
+    std::iota(along.begin(), along.end(), begin);
+    sort_by_key(key.data(), along.data(), end - begin);
     descend_along(kernel, along.data(), end - begin, [&](VertexId v, TriangleId leaf) {
       Slot& slot = q.slots[v % kCapacity];
       slot.node = leaf;
@@ -99,12 +97,9 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
 void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
                   Stats& stats) {
   if (threads == 1) {
+    const auto t_start = Clock::now();
     insert_serial(kernel, /*profile=*/false, duplicates, stats);
-    ThreadStats modifier;
-    modifier.role = "modifier";
-    modifier.points = kernel.n();
-    modifier.time_insert_s = 0;  // filled in by triangulate
-    stats.per_thread.push_back(modifier);
+    stats.per_thread.push_back({"modifier", kernel.n(), seconds(Clock::now() - t_start), 0, 0, 0});
     return;
   }
   const VertexId n = kernel.n();

@@ -205,10 +205,7 @@ class Kernel {
     // release: our writes to t happen before the next owner's reads.
     if (word.load(std::memory_order_relaxed) == me) word.store(0, std::memory_order_release);
   }
-  bool owns(TriangleId t, std::uint32_t me) const {
-    return std::atomic_ref<std::uint32_t>(const_cast<std::uint32_t&>(tris_[t].child))
-               .load(std::memory_order_relaxed) == me;
-  }
+  bool owns(TriangleId t, std::uint32_t me) const { return tris_[t].load_child() == me; }
   /// Marks the unused rest of a pooled thread's block as no triangle, for the finish.
   void retire_pool(Scratch& s);
 

@@ -7,7 +7,6 @@
 // of following one another. The order of insertion, and so the result, does not change.
 #pragma once
 
-#include <bit>
 #include <cstdint>
 
 #include "kernel.hpp"
@@ -16,37 +15,37 @@ namespace ridt::detail {
 
 class LookAhead {
  public:
-  static constexpr VertexId kMaxWindow = 128;  // above twice the DAG's mean depth, 46 for 10^6 points
+  // Points advanced ahead of the one being inserted. Starting from the leaves the rounds
+  // found (rounds.hpp), a point has about two levels left: some six steps with the ring,
+  // well within 16.
+  static constexpr VertexId kWindow = 16;
 
   struct Hint {
     TriangleId node;    // a node whose closed region holds the point
     TriangleId parent;  // the node before it on the path (the node itself where the path began)
   };
 
-  /// The sequence first, first + stride, ... below end; point v of it starts its descent at
-  /// start[v - first], or at the root without `start`. `window` (a power of two at most
-  /// kMaxWindow): how many points ahead are advanced. A point that reaches a leaf prefetches
-  /// the leaf's neighbours and, with `ring`, the ring beyond them. The ring pays on one
-  /// thread; with several it pulls in lines that the lock holder may be writing, and is left
-  /// off there.
-  LookAhead(const Kernel& kernel, VertexId first, VertexId stride, VertexId end, bool ring,
-            const TriangleId* start = nullptr, VertexId window = kMaxWindow)
-      : kernel_(kernel), first_(first), stride_(stride), ring_(ring), start_(start),
-        mask_(window - 1) {
-    count_ = end > first ? (end - first + stride - 1) / stride : 0;
-    for (VertexId j = 0; j < window && j < count_; ++j) enter(j);
+  /// The points first, first + 1, ... below end; point v starts its descent at start[v -
+  /// first], a node whose region holds it. A point that reaches a leaf prefetches the leaf's
+  /// neighbours and, with `ring`, the ring beyond them and its vertices (the caller decides:
+  /// the pessimistic method leaves the ring off with several threads, since it pulls in lines
+  /// the lock holder may be writing).
+  LookAhead(const Kernel& kernel, VertexId first, VertexId end, bool ring, const TriangleId* start)
+      : kernel_(kernel), first_(first), count_(end > first ? end - first : 0), ring_(ring),
+        start_(start) {
+    for (VertexId j = 0; j < kWindow && j < count_; ++j) enter(j);
   }
 
   VertexId count() const { return count_; }
-  VertexId point(VertexId i) const { return first_ + i * stride_; }
+  VertexId point(VertexId i) const { return first_ + i; }
 
   /// Advances the points after the i-th one step each and hands out where the i-th stands.
   /// Call with i = 0, 1, 2, ... in turn.
   Hint take(VertexId i) {
-    for (VertexId j = i + 1; j <= i + mask_ && j < count_; ++j) advance(slots_[j & mask_], point(j));
-    const Slot& s = slots_[i & mask_];
+    for (VertexId j = i + 1; j < i + kWindow && j < count_; ++j) advance(slots_[j % kWindow], point(j));
+    const Slot& s = slots_[i % kWindow];
     const Hint h{s.node, s.parent};
-    if (i + mask_ + 1 < count_) enter(i + mask_ + 1);  // the slot passes on
+    if (i + kWindow < count_) enter(i + kWindow);  // the slot passes on
     return h;
   }
 
@@ -63,9 +62,9 @@ class LookAhead {
   };
 
   void enter(VertexId j) {
-    const TriangleId t = start_ != nullptr ? start_[j * stride_] : Kernel::kRoot;
+    const TriangleId t = start_[j];
     kernel_.prefetch(t);  // read at its first step
-    slots_[j & mask_] = {t, t, State::kDescending};
+    slots_[j % kWindow] = {t, t, State::kDescending};
   }
 
   void advance(Slot& s, VertexId p) {
@@ -99,11 +98,10 @@ class LookAhead {
   }
 
   const Kernel& kernel_;
-  VertexId first_, stride_, count_;
+  VertexId first_, count_;
   bool ring_;
   const TriangleId* start_;
-  VertexId mask_;
-  Slot slots_[kMaxWindow];
+  Slot slots_[kWindow];
 };
 
 }  // namespace ridt::detail

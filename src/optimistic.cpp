@@ -20,8 +20,6 @@
 //
 // The points are shared as in the pessimistic method: the rounds of rounds.hpp, located by
 // all workers together, then inserted in chunks taken from a shared counter.
-#include <algorithm>
-
 #include "driver.hpp"
 #include "lookahead.hpp"
 #include "threads.hpp"
@@ -141,8 +139,7 @@ class Inserter {
 template <bool kTimed>
 void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId* hint,
                   Worker& worker) {
-  constexpr VertexId kWindow = 16;  // as in the serial driver: about two levels are left
-  LookAhead ahead(kernel, first, 1, end, /*ring=*/true, hint, kWindow);
+  LookAhead ahead(kernel, first, end, /*ring=*/true, hint);
   Inserter inserter(kernel, worker);
   for (VertexId i = 0; i < ahead.count(); ++i)
     inserter.insert<kTimed>(ahead.point(i), ahead.take(i).node);

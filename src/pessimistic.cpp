@@ -38,8 +38,7 @@ struct alignas(64) Worker {  // each on its own cache lines
 template <bool kTimed>
 void insert_chunk(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, bool ring,
                   const TriangleId* hint, bool paper, Worker& out) {
-  constexpr VertexId kWindow = 16;  // as in the serial driver: about two levels are left
-  LookAhead ahead(kernel, first, 1, end, ring, hint, kWindow);
+  LookAhead ahead(kernel, first, end, ring, hint);
   for (VertexId i = 0; i < ahead.count(); ++i) {
     const VertexId p = ahead.point(i);
     const LookAhead::Hint h = ahead.take(i);

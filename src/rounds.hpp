@@ -18,7 +18,6 @@
 #pragma once
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <numeric>
 #include <thread>
@@ -104,7 +103,6 @@ class RoundLocator {
  public:
   /// Rounds shorter than this are not worth sorting: the DAG is small and stays in cache.
   static constexpr VertexId kFirst = 1024;
-  static_assert(std::has_single_bit(kFirst));
 
   /// Sorts the points of each round of vertices 0 .. n-1 along the Hilbert curve, with up to
   /// `threads` threads.

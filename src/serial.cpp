@@ -45,15 +45,14 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
   } else {
     // Rounds (rounds.hpp): each round's points first descend the DAG along a Hilbert curve
     // and keep the leaf they reach; then they are inserted in the random order, each
-    // finishing its descent from that leaf, with look-ahead over the next kWindow points.
-    constexpr VertexId kWindow = 16;  // enough: only about two levels are left to descend
+    // finishing its descent from that leaf, with look-ahead over the next points.
     RoundLocator rounds(kernel);
     std::vector<TriangleId> hint;
     for (std::size_t r = 0; r < rounds.rounds(); ++r) {
       const VertexId first = rounds.first(r), end = rounds.first(r + 1);
       hint.resize(end - first);
       rounds.locate(r, hint.data());
-      LookAhead ahead(kernel, first, 1, end, /*ring=*/true, hint.data(), kWindow);
+      LookAhead ahead(kernel, first, end, /*ring=*/true, hint.data());
       for (VertexId i = 0; i < ahead.count(); ++i) {
         const VertexId p = first + i;
         const TriangleId leaf = kernel.descend(ahead.take(i).node, p);

@@ -91,27 +91,16 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
     stats.time_insert_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t_insert).count();
     if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
-    for (ThreadStats& t : stats.per_thread)
-      if (t.time_insert_s == 0) t.time_insert_s = stats.time_insert_s;
     out = detail::finish(kernel, order, duplicates, options, threads);
   }
   // After the DAG is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out);
-  out.stats.threads = stats.threads;
-  out.stats.flips = stats.flips;
-  out.stats.edge_splits = stats.edge_splits;
-  out.stats.time_insert_s = stats.time_insert_s;
-  out.stats.time_critical_s = stats.time_critical_s;
-  out.stats.time_wait_s = stats.time_wait_s;
-  out.stats.retries = stats.retries;
-  out.stats.time_idle_s = stats.time_idle_s;
-  out.stats.time_stall_s = stats.time_stall_s;
-  out.stats.queue_depth_mean = stats.queue_depth_mean;
-  out.stats.stale_hints = stats.stale_hints;
-  out.stats.per_thread = std::move(stats.per_thread);
-  out.stats.time_locate_s = stats.time_locate_s;
-  out.stats.time_split_s = stats.time_split_s;
-  out.stats.time_legalize_s = stats.time_legalize_s;
+  // The finish counts the points, duplicates and DAG nodes; the insertion, everything else.
+  stats.points = out.stats.points;
+  stats.distinct = out.stats.distinct;
+  stats.duplicates = out.stats.duplicates;
+  stats.dag_nodes = out.stats.dag_nodes;
+  out.stats = std::move(stats);
   out.stats.time_triangulate_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
