@@ -5,7 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh build
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=OFF >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=OFF \
+  -DRIDT_BUILD_TOOLS=ON -DRIDT_SANITIZE= >/dev/null
 cmake --build build --target ridt_tool
 mkdir -p build/demo
 build/ridt generate --dist uniform -n 1000000 --seed 1 -o build/demo/uniform.bin
