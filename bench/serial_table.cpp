@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
       std::vector<double> ours, theirs, loc, split, leg;
       for (int r = 0; r < reps; ++r) {
         ridt::Options o;
+        o.order = ridt::Order::Random;  // the paper's Table 1; bench/peers_table.cpp has BRIO
         o.seed = 1 + r;
         ours.push_back(ridt::triangulate(pts, o).stats.time_triangulate_s);
         theirs.push_back(cgal_seconds(pts));

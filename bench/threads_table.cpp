@@ -8,7 +8,8 @@
 //
 //   ridt_bench_threads [--n 1000,10000,100000,1000000] [--dist uniform,grid] [--reps R]
 //                      [--threads 1,2,3,4,8] [--methods pessimistic,paper,optimistic,batch]
-//                      [--csv FILE]
+//                      [--order random|brio] [--csv FILE]
+// --order: the insertion order of every run, serial included (random, the paper's, by default).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -65,6 +66,7 @@ int main(int argc, char** argv) {
   std::string n_list = "1000,10000,100000,1000000", dist_list = "uniform,grid";
   std::string thread_list = "1,2,3,4,8", method_list = "pessimistic,paper,optimistic,batch", csv;
   int reps = 5;
+  ridt::Order order_kind = ridt::Order::Random;
   for (int i = 1; i < argc; ++i) {
     auto arg = [&](const char* name) { return !std::strcmp(argv[i], name) && i + 1 < argc; };
     if (arg("--n")) n_list = argv[++i];
@@ -73,10 +75,13 @@ int main(int argc, char** argv) {
     else if (arg("--threads")) thread_list = argv[++i];
     else if (arg("--methods")) method_list = argv[++i];
     else if (arg("--csv")) csv = argv[++i];
+    else if (arg("--order") && !std::strcmp(argv[i + 1], "random")) order_kind = ridt::Order::Random, ++i;
+    else if (arg("--order") && !std::strcmp(argv[i + 1], "brio")) order_kind = ridt::Order::Brio, ++i;
     else {
       std::fprintf(stderr,
                    "usage: %s [--n N,N,...] [--dist uniform,grid] [--reps R] [--threads 1,2,...]\n"
-                   "          [--methods pessimistic,paper,optimistic,batch] [--csv FILE]\n",
+                   "          [--methods pessimistic,paper,optimistic,batch] [--order random|brio]\n"
+                   "          [--csv FILE]\n",
                    argv[0]);
       return 2;
     }
@@ -122,6 +127,7 @@ int main(int argc, char** argv) {
         for (const std::size_t c : order) {
           ridt::Options o = c == configs.size() ? ridt::Options{} : options_for(configs[c]);
           o.seed = 1 + r;
+          o.order = order_kind;
           stats[c] = ridt::triangulate(pts, o).stats;
         }
         const ridt::Stats& s0 = stats[configs.size()];

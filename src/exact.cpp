@@ -156,8 +156,23 @@ int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& 
   return det.sign();
 }
 
-int incircle_sos(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const int s = incircle(a, b, c, d);
+int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double m = std::max({std::fabs(a.x - d.x), std::fabs(a.y - d.y), std::fabs(b.x - d.x),
+                             std::fabs(b.y - d.y), std::fabs(c.x - d.x), std::fabs(c.y - d.y)});
+  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, m, 0x1p12)) {
+    // Every difference, product and sum below is an exact integer.
+    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+    const double cdx = c.x - d.x, cdy = c.y - d.y;
+    const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                       (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                       (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+    return (det > 0) - (det < 0);
+  }
+  return incircle_exact(a, b, c, d);
+}
+
+int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int s = incircle_hard(a, b, c, d);
   if (s != 0) return s;
   // Cofactors of the lifted coordinate in rows a, b, c, d of det[x y z 1].
   struct Row {

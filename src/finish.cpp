@@ -118,7 +118,9 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     }
   });
 
-  // Pass 2: vertices, neighbours, hull edges.
+  // Pass 2: vertices, neighbours, hull edges. The points are no longer needed (but for the
+  // finite bounding triangle's check below): their copy goes before the output is made.
+  if (options.bounding == Bounding::Symbolic) kernel.release_points();
   out.triangles.resize(3 * std::size_t{count});
   out.neighbors.resize(3 * std::size_t{count});
   std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
@@ -175,7 +177,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   s.points = n;
   s.duplicates = out.duplicates.size();
   s.distinct = n - s.duplicates;
-  s.dag_nodes = std::accumulate(made.begin(), made.end(), std::uint64_t{0});
+  s.dag_nodes = kernel.history() ? std::accumulate(made.begin(), made.end(), std::uint64_t{0}) : 0;
   if (s.distinct < 3) {
     out.warning = "fewer than three distinct points: no triangle";
   } else if (count == 0) {

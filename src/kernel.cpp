@@ -17,9 +17,11 @@ bool between(const Point& p, const Point& a, const Point& b) {
 
 }  // namespace
 
-Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic)
-    : points_(std::move(points)), n_(n), symbolic_(symbolic),
-      tris_(std::uint64_t{n} * 9 + kFirstChild) {  // about 9 records a point: 3 from the split, 2 a flip
+Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic,
+               bool brio, bool history)
+    : points_(std::move(points)), n_(n), symbolic_(symbolic), brio_(brio), history_(history),
+      // With history about 9 records a point: 3 from the split, 2 a flip. Without, 2 a point.
+      tris_(std::uint64_t{n} * (history ? 9 : 2) + kFirstChild + 8) {
   Scratch s;
   // Ids 1 .. kMaxOwner are never triangles (mesh.hpp), nor written: the finish skips them.
   const TriangleId root = tris_.allocate(kFirstChild);
@@ -219,6 +221,63 @@ void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
   s.stack.push_back(n2);
 }
 
+// Without history the split keeps t as the first child and makes two more; the edge split keeps
+// t and u as t0 and u0; a flip turns t into n2 and u into n1. Only the neighbours that now
+// border a different record are relinked.
+void Kernel::split_triangle_in_place(TriangleId t, VertexId p, Scratch& s) {
+  const TriangleId c1 = allocate(2, s), c2 = c1 + 1;
+  const Triangle r = tris_[t];
+  make(t, p, r.v[1], r.v[2], r.n[0], c1, c2, s);
+  make(c1, p, r.v[2], r.v[0], r.n[1], c2, t, s);
+  make(c2, p, r.v[0], r.v[1], r.n[2], t, c1, s);
+  relink(r.n[1], t, c1, s);
+  relink(r.n[2], t, c2, s);
+  s.stack.push_back(t);
+  s.stack.push_back(c1);
+  s.stack.push_back(c2);
+}
+
+void Kernel::split_edge_in_place(TriangleId t, int i, VertexId p, Scratch& s) {
+  ++s.edge_splits;
+  const Triangle rt = tris_[t];
+  const VertexId a = rt.v[i], b = rt.v[next(i)], c = rt.v[prev(i)];
+  const TriangleId u = rt.n[i];
+  const TriangleId tn_b = rt.n[next(i)], tn_c = rt.n[prev(i)];
+  const Triangle ru = tris_[u];
+  const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
+  const VertexId d = ru.v[j];
+  const TriangleId un_c = ru.n[next(j)], un_b = ru.n[prev(j)];
+
+  const TriangleId t1 = allocate(2, s), u1 = t1 + 1;
+  make(t, p, a, b, tn_c, u1, t1, s);
+  make(t1, p, c, a, tn_b, t, u, s);
+  make(u, p, d, c, un_b, t1, u1, s);
+  make(u1, p, b, d, un_c, u, t, s);
+  relink(tn_b, t, t1, s);
+  relink(un_c, u, u1, s);
+  s.stack.push_back(t);
+  s.stack.push_back(t1);
+  s.stack.push_back(u);
+  s.stack.push_back(u1);
+}
+
+void Kernel::flip_in_place(TriangleId t, TriangleId u, int j, Scratch& s) {
+  ++s.flips;
+  const Triangle& rt = tris_[t];
+  const Triangle& ru = tris_[u];
+  const VertexId p = rt.v[0], a = rt.v[1], b = rt.v[2];
+  const VertexId q = ru.v[j];
+  const TriangleId tb = rt.n[1], ta = rt.n[2];
+  const TriangleId uaq = ru.n[next(j)], uqb = ru.n[prev(j)];
+
+  make(t, p, q, b, uqb, tb, u, s);  // n2
+  make(u, p, a, q, uaq, t, ta, s);  // n1
+  relink(uqb, u, t, s);
+  relink(ta, t, u, s);
+  s.stack.push_back(u);
+  s.stack.push_back(t);
+}
+
 // Fig. 5 with an explicit stack: each entry is a triangle (p, a, b) whose edge a b must be
 // tested against the triangle on its other side.
 void Kernel::legalize(VertexId p, Scratch& s) {
@@ -233,7 +292,10 @@ void Kernel::legalize(VertexId p, Scratch& s) {
                              : incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0;
     if (illegal) {
       const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
-      flip(t, u, j, s);
+      if (history_)
+        flip(t, u, j, s);
+      else
+        flip_in_place(t, u, j, s);
     }
   }
 }

@@ -46,8 +46,12 @@ struct alignas(64) Scratch {
 class Kernel {
  public:
   /// `points` holds n points (vertex v is points[v]) followed by three bounding vertices
-  /// (their coordinates are used only when `symbolic` is false).
-  Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic);
+  /// (their coordinates are used only when `symbolic` is false). `brio`: the vertices come in
+  /// the BRIO order (order.hpp), each round already along the curve. `history`: keep the DAG;
+  /// without it a split or flip rewrites the records it replaces, points are located by
+  /// walking (walk), and a third of the memory goes.
+  Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic,
+         bool brio = false, bool history = true);
 
   enum class Where { Inside, OnEdge, OnVertex };
   struct Location {
@@ -87,6 +91,31 @@ class Kernel {
   /// Where p lies in leaf t (whose closure contains p).
   Location classify(TriangleId t, VertexId p) const;
 
+  /// Without history: walks from triangle t to one whose closure contains p. Each step leaves
+  /// through an edge that has p strictly on its far side, never the one it came in by, trying
+  /// the edges from one chosen at random (`rng`, any state): the remembering stochastic walk
+  /// of Devillers, Pion and Teillaud, which ends with probability 1 on any triangulation.
+  TriangleId walk(TriangleId t, VertexId p, std::uint32_t& rng) const {
+    TriangleId from = kNone;
+    for (;;) {
+      const TriangleId to = walk_step(t, from, p, rng);
+      if (to == t) return t;
+      from = t;
+      t = to;
+    }
+  }
+  /// One step of the walk: the triangle across an edge of t that has p strictly on its far
+  /// side, other than the edge to `from`; t itself when there is none.
+  TriangleId walk_step(TriangleId t, TriangleId from, VertexId p, std::uint32_t& rng) const {
+    const Triangle& r = tris_[t];
+    rng = rng * 1664525u + 1013904223u;
+    for (int k = 0, i = static_cast<int>((rng >> 16) % 3); k < 3; ++k, i = next(i)) {
+      if (r.n[i] == from) continue;  // p lies on this side of the edge just crossed
+      if (orient(r.v[next(i)], r.v[prev(i)], p) < 0) return r.n[i];
+    }
+    return t;
+  }
+
   /// Inserts p from a known location. Returns kNone, or the vertex that p duplicates.
   VertexId insert_at(const Location& where, VertexId p, Scratch& s) {
     if (where.where == Where::OnVertex) return tris_[where.t].v[where.i];
@@ -95,10 +124,17 @@ class Kernel {
     return kNone;
   }
   void split_at(const Location& where, VertexId p, Scratch& s) {
-    if (where.where == Where::Inside)
-      split_triangle(where.t, p, s);
-    else
-      split_edge(where.t, where.i, p, s);
+    if (where.where == Where::Inside) {
+      if (history_)
+        split_triangle(where.t, p, s);
+      else
+        split_triangle_in_place(where.t, p, s);
+    } else {
+      if (history_)
+        split_edge(where.t, where.i, p, s);
+      else
+        split_edge_in_place(where.t, where.i, p, s);
+    }
   }
   void legalize(VertexId p, Scratch& s);
 
@@ -213,7 +249,11 @@ class Kernel {
   /// For the finish only: it reuses the child links, dead by then, as scratch.
   TriangleStore& triangles_for_finish() { return tris_; }
   const Point& point(VertexId v) const { return points_[v]; }
+  /// For the finish, once no predicate runs: frees the points' copy, to lower the peak.
+  void release_points() { points_.reset(); }
   std::uint32_t n() const { return n_; }
+  bool brio() const { return brio_; }
+  bool history() const { return history_; }
 
   static constexpr TriangleId kRoot = 0;
 
@@ -255,6 +295,10 @@ class Kernel {
   void split_triangle(TriangleId t, VertexId p, Scratch& s);
   void split_edge(TriangleId t, int i, VertexId p, Scratch& s);
   void flip(TriangleId t, TriangleId u, int j, Scratch& s);
+  // The same without history: the replaced records are rewritten in place.
+  void split_triangle_in_place(TriangleId t, VertexId p, Scratch& s);
+  void split_edge_in_place(TriangleId t, int i, VertexId p, Scratch& s);
+  void flip_in_place(TriangleId t, TriangleId u, int j, Scratch& s);
   // Neighbour u of `old` now borders `now` instead.
   void relink(TriangleId u, TriangleId old, TriangleId now, const Scratch& s) {
     if (u == kNone) return;
@@ -287,6 +331,8 @@ class Kernel {
   std::unique_ptr<Point[], FreeDeleter> points_;
   std::uint32_t n_;
   bool symbolic_;
+  bool brio_;
+  bool history_;
   TriangleStore tris_;
 };
 

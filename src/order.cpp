@@ -110,6 +110,29 @@ void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t cou
   for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(a[i]);
 }
 
+std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
+                                      unsigned threads) {
+  std::vector<std::uint32_t> order = random_permutation(n, seed);
+  const std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
+  std::vector<std::uint32_t> first;
+  for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
+  first.push_back(n);
+  // The last round is half of the points, and the others together the other half: with two
+  // threads, one sorts the last round and the other the rest.
+  const std::size_t rounds = first.size() - 1;
+  auto sort_rounds = [&](std::size_t from, std::size_t to) {
+    for (std::size_t r = from; r < to; ++r)
+      sort_by_key(key.data(), order.data() + first[r], first[r + 1] - first[r]);
+  };
+  if (threads > 1 && n >= 65536) {
+    std::jthread last(sort_rounds, rounds - 1, rounds);
+    sort_rounds(0, rounds - 1);
+  } else {
+    sort_rounds(0, rounds);
+  }
+  return order;
+}
+
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
   const std::vector<std::uint32_t> key = hilbert_keys(points, n);
   std::vector<std::uint32_t> order(n);

@@ -23,6 +23,21 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
 /// Sorts ids[0 .. count) by key[id], stably: a radix sort, three passes of 11 bits.
 void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t count);
 
+/// Insertions come in rounds of doubling size: [0, kFirstRound), [kFirstRound, 2 kFirstRound),
+/// [2 kFirstRound, 4 kFirstRound), ... Round sizes below kFirstRound are not worth sorting: the
+/// mesh is small and stays in cache.
+inline constexpr std::uint32_t kFirstRound = 1024;
+/// The end of the round that starts at b (b < 2^31, so no overflow).
+constexpr std::uint32_t round_end(std::uint32_t b) { return b < kFirstRound ? kFirstRound : 2 * b; }
+
+/// A biased randomized insertion order (Amenta, Choi and Rote, "Incremental constructions con
+/// BRIO", 2003): the random permutation from `seed`, cut into the rounds above, each round
+/// sorted along the Hilbert curve. A point lands in the last round with probability 1/2, in the
+/// one before with 1/4, ..., as a random sample should; within a round, successive insertions
+/// are close in the plane and touch nearby memory. Up to `threads` threads.
+std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
+                                      unsigned threads = 1);
+
 /// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box (a
 /// radix sort on hilbert_key: linear time, no comparison).
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);

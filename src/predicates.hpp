@@ -68,9 +68,9 @@ inline int orient2d(const Point& a, const Point& b, const Point& c) {
   return orient2d_exact(a, b, c);
 }
 
-/// Sign of the incircle determinant: +1 if d lies strictly inside the circle through the
-/// counter-clockwise triangle (a, b, c), -1 if strictly outside, 0 if on it. Exact.
-inline int incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+/// The sign of the incircle determinant where double precision settles it (nearly always):
+/// +1 inside, -1 outside, 0 when it cannot tell.
+inline int incircle_filter(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double adx = a.x - d.x, ady = a.y - d.y;
   const double bdx = b.x - d.x, bdy = b.y - d.y;
   const double cdx = c.x - d.x, cdy = c.y - d.y;
@@ -81,9 +81,6 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
   const double blift = bdx * bdx + bdy * bdy;
   const double clift = cdx * cdx + cdy * cdy;
   const double det = alift * bc + blift * ca + clift * ab;
-  const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * alift +
-                           (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * blift +
-                           (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * clift;
   // Underflow: a degree-2 product that underflows (absolute error <= 2^-1075) is later
   // multiplied by a degree-2 factor of size <= 2 m^2 (m the largest difference); there are at
   // most 12 such products and 3 final ones, so 2^-1075 (32 m^2 + 4) = 2^-1070 (m^2 + 1/8)
@@ -91,12 +88,30 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
   // std::max, not std::fmax: no NaN can occur (finite inputs), and it inlines to one instruction.
   const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(bdx), std::fabs(bdy),
                              std::fabs(cdx), std::fabs(cdy)});
-  const double bound = kIncircleBound * permanent + 0x1p-1070 * (m * m + 0.125);
+  const double m2 = m * m;
+  const double tiny = 0x1p-1070 * (m2 + 0.125);
+  // First a cheap bound: the permanent below is at most 3 (2 m^2)(2 m^2) = 12 m^4 exactly, and
+  // 13 m2 m2 exceeds 12 m^4 even with the three roundings of its products.
+  const double rough = kIncircleBound * 13.0 * (m2 * m2) + tiny;
+  if (det > rough) return 1;
+  if (det < -rough) return -1;
+  const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * alift +
+                           (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * blift +
+                           (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * clift;
+  const double bound = kIncircleBound * permanent + tiny;
   if (det > bound) return 1;
   if (det < -bound) return -1;
-  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, m, 0x1p12))
-    return (det > 0) - (det < 0);
-  return incircle_exact(a, b, c, d);
+  return 0;
+}
+
+/// incircle when the filter cannot tell: exact (exact.cpp).
+int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d);
+
+/// Sign of the incircle determinant: +1 if d lies strictly inside the circle through the
+/// counter-clockwise triangle (a, b, c), -1 if strictly outside, 0 if on it. Exact.
+inline int incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int s = incircle_filter(a, b, c, d);
+  return s != 0 ? s : incircle_hard(a, b, c, d);
 }
 
 /// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.
@@ -113,6 +128,10 @@ inline bool lex_less(const Point& a, const Point& b) {
 /// adds eps_p times its cofactor, so when the exact value is 0 the sign is that of the
 /// cofactor of the largest point whose cofactor is not 0. The cofactor of d, -orient(a, b, c),
 /// is never 0, so the answer is always decided.
-int incircle_sos(const Point& a, const Point& b, const Point& c, const Point& d);
+int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Point& d);
+inline int incircle_sos(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int s = incircle_filter(a, b, c, d);
+  return s != 0 ? s : incircle_sos_hard(a, b, c, d);
+}
 
 }  // namespace ridt::detail

@@ -3,8 +3,8 @@
 // The points are inserted in the paper's random order, vertex 0, 1, 2, ...; that order, the
 // DAG and every split and flip stay as they are. What changes is when each descent happens. A
 // DAG node's region never changes, so a descent may stop at any node and resume from it later.
-// The points are cut into rounds of doubling size, [0, kFirst), [kFirst, 2 kFirst),
-// [2 kFirst, 4 kFirst), ... Before a round is inserted, all its points descend the DAG as it
+// The points are cut into rounds of doubling size, [0, kFirstRound), [kFirstRound, 2 kFirstRound),
+// [2 kFirstRound, 4 kFirstRound), ... Before a round is inserted, all its points descend the DAG as it
 // stands, one after the other along a Hilbert curve: neighbours on the curve follow nearly the
 // same path, so the path of one is in cache for the next, and each descent starts from the
 // deepest node of the previous path that still holds its point. Each point keeps the leaf it
@@ -14,7 +14,8 @@
 //
 // The idea is that of biased randomized insertion orders (Amenta, Choi and Rote, "Incremental
 // constructions con BRIO", 2003) turned around: BRIO sorts the insertions within a round; here
-// only the location is sorted, and the insertions keep their random order.
+// only the location is sorted, and the insertions keep their random order. In the BRIO order
+// itself (order.hpp) both are sorted, and the same schedule serves it unchanged.
 #pragma once
 
 #include <algorithm>
@@ -101,22 +102,20 @@ void descend_along(const Kernel& kernel, const VertexId* points, VertexId count,
 
 class RoundLocator {
  public:
-  /// Rounds shorter than this are not worth sorting: the DAG is small and stays in cache.
-  static constexpr VertexId kFirst = 1024;
-
-  /// Sorts the points of each round of vertices 0 .. n-1 along the Hilbert curve, with up to
-  /// `threads` threads.
+  /// Sorts the points of each round of vertices 0 .. n-1 (order.hpp) along the Hilbert curve,
+  /// with up to `threads` threads; in the BRIO order (Kernel::brio) they already are.
   explicit RoundLocator(const Kernel& kernel, unsigned threads = 1) : kernel_(kernel) {
     const VertexId n = kernel.n();
     // Round r holds the vertices [first(r), first(r + 1)), consecutive numbers: each round is
     // sorted on its own, and the rounds are shared among the threads, the largest first, each
     // to the thread with the least work so far (with two threads: the last round, half of all
     // points, against all the others).
-    for (VertexId b = 0; b < n; b = end_of_round(b)) first_.push_back(b);
+    for (VertexId b = 0; b < n; b = round_end(b)) first_.push_back(b);
     first_.push_back(n);
-    const std::vector<std::uint32_t> key = hilbert_keys(&kernel.point(0), n, threads);
     by_round_.resize(n);
     std::iota(by_round_.begin(), by_round_.end(), VertexId{0});
+    if (kernel.brio()) return;
+    const std::vector<std::uint32_t> key = hilbert_keys(&kernel.point(0), n, threads);
     const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
     std::vector<std::vector<std::size_t>> share(parts);
     std::vector<std::uint64_t> load(parts, 0);
@@ -160,10 +159,6 @@ class RoundLocator {
   }
 
  private:
-  static VertexId end_of_round(VertexId b) {
-    return b < kFirst ? kFirst : 2 * b;  // n < 2^31 (triangulate), so no overflow
-  }
-
   const Kernel& kernel_;
   std::vector<VertexId> first_;     // first vertex of each round, then n
   std::vector<VertexId> by_round_;  // each round's vertices along the curve

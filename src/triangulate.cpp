@@ -34,13 +34,25 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   }
   if (options.profile && options.method != Method::Serial)
     throw InputError("profiling (Fig. 8) times the serial method only");
+  const bool walk = options.locate == Locate::Walk;
+  if (walk && options.method != Method::Serial)
+    throw InputError("walking location works with the serial method only: the threaded methods "
+                     "locate points while others insert, by descending the history DAG, whose "
+                     "nodes never change (use --locate dag)");
+  if (walk && options.order != Order::Brio)
+    throw InputError("walking location needs the BRIO order: in random order each walk "
+                     "crosses about sqrt(n) triangles (use --order brio)");
   if (!symbolic && !(options.k >= 2))
     throw InputError("the finite bounding triangle needs k >= 2 (got " +
                      std::to_string(options.k) + ")");
 
   // The mesh numbers vertices in insertion order: vertex v is input point order[v]. Then the
-  // points met near the root of the DAG, inserted early, lie close together in memory.
-  const std::vector<std::uint32_t> order = detail::random_permutation(n, options.seed);
+  // points met near the root of the DAG, inserted early, lie close together in memory, and in
+  // the BRIO order successive points too.
+  const bool brio = options.order == Order::Brio;
+  const std::vector<std::uint32_t> order =
+      brio ? detail::brio_order(points.data(), n, options.seed, threads)
+           : detail::random_permutation(n, options.seed);
   auto pts = detail::allocate_huge<Point>(std::size_t{n} + 3);
   for (std::uint32_t v = 0; v < n; ++v) pts[v] = points[order[v]];
   if (symbolic) {
@@ -67,7 +79,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   Triangulation out;
   Stats stats;
   {
-    detail::Kernel kernel(std::move(pts), n, symbolic);
+    detail::Kernel kernel(std::move(pts), n, symbolic, brio, /*history=*/!walk);
     std::vector<detail::DuplicateHit> duplicates;
     const auto t_insert = std::chrono::steady_clock::now();
     switch (options.method) {

@@ -121,6 +121,22 @@ printf '5 2 0 0\n0 0 0\n1 1 0\n2 0 1\n' >"$dir/short.node"
 expect 2 ".node count" -- "$ridt" triangulate "$dir/short.node" -o "$dir/bad5.ele"
 stderr_has "5"; absent "$dir/bad5.ele"
 expect 2 "unknown option" -- "$ridt" triangulate "$dir/uniform.txt" --frobnicate
+# Every order and location writes the same file; the combinations that cannot work say why.
+for mode in "--order random" "--order brio" "--locate walk" "--order brio --locate walk"; do
+  expect 0 "mode $mode" -- "$ridt" triangulate "$dir/clusters.txt" $mode -o "$dir/c_mode.ele"
+  cmp -s "$dir/clusters.txt.ele" "$dir/c_mode.ele" && pass || fail "$mode changed the output"
+done
+expect 0 "walk stats" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --stats
+stdout_has '"locate": "walk"'
+stdout_has '"dag_nodes": 0'
+expect 2 "walk with a threaded method" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --method optimistic
+stderr_has "serial method only"
+expect 2 "walk in random order" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --order random
+stderr_has "needs the BRIO order"
+expect 2 "unknown order" -- "$ridt" triangulate "$dir/uniform.txt" --order sorted
+stderr_has "unknown order"
+expect 2 "unknown location" -- "$ridt" triangulate "$dir/uniform.txt" --locate jump
+stderr_has "unknown location"
 expect 2 "unknown method" -- "$ridt" triangulate "$dir/uniform.txt" --method magic
 stderr_has "unknown method"
 expect 2 "unknown bounding" -- "$ridt" triangulate "$dir/uniform.txt" --bounding huge

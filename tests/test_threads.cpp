@@ -56,18 +56,22 @@ TEST_P(Threaded, SameTrianglesAsSerialForEveryThreadCount) {
     const Triangulation serial = triangulate(pts);
     const TriangleSet expected = canonical(serial.triangles);
     for (unsigned threads : kThreadCounts) {
-      Options o;
-      o.method = v.method;
-      o.paper_locking = v.paper;
-      o.threads = threads;
-      o.seed = threads;  // other seeds too: the set must not change
-      const Triangulation t = triangulate(pts, o);
-      EXPECT_EQ(canonical(t.triangles), expected) << name << ", " << threads << " threads";
-      EXPECT_EQ(t.hull.size(), serial.hull.size()) << name;
-      ASSERT_EQ(t.duplicates.size(), serial.duplicates.size()) << name;
-      for (std::size_t i = 0; i < t.duplicates.size(); ++i) {
-        EXPECT_EQ(t.duplicates[i].dropped, serial.duplicates[i].dropped);
-        EXPECT_EQ(t.duplicates[i].kept, serial.duplicates[i].kept);
+      for (Order order : {Order::Brio, Order::Random}) {
+        Options o;
+        o.order = order;
+        o.method = v.method;
+        o.paper_locking = v.paper;
+        o.threads = threads;
+        o.seed = threads;  // other seeds too: the set must not change
+        const Triangulation t = triangulate(pts, o);
+        EXPECT_EQ(canonical(t.triangles), expected)
+            << name << ", " << threads << " threads, " << (order == Order::Brio ? "brio" : "random");
+        EXPECT_EQ(t.hull.size(), serial.hull.size()) << name;
+        ASSERT_EQ(t.duplicates.size(), serial.duplicates.size()) << name;
+        for (std::size_t i = 0; i < t.duplicates.size(); ++i) {
+          EXPECT_EQ(t.duplicates[i].dropped, serial.duplicates[i].dropped);
+          EXPECT_EQ(t.duplicates[i].kept, serial.duplicates[i].kept);
+        }
       }
     }
   }

@@ -1,5 +1,6 @@
 // ridt: the command-line tool.
-//   ridt triangulate INPUT [-o OUTPUT] [--seed S] [--bounding symbolic|finite] [--k K]
+//   ridt triangulate INPUT [-o OUTPUT] [--seed S] [--order brio|random] [--locate dag|walk]
+//                          [--method M] [--threads N] [--bounding symbolic|finite] [--k K]
 //                          [--stats[=json|table]] [--profile]
 //   ridt generate --dist uniform|normal|grid|clusters -n N [--seed S] -o FILE
 //   ridt check POINTS TRIANGLES
@@ -35,6 +36,7 @@ long long peak_rss_bytes() {
 
 struct TriangulateArgs {
   std::string input, output, bounding = "symbolic", method = "serial", stats;
+  std::string order = "brio", locate = "dag";
   std::uint64_t seed = 1;
   double k = 10;
   unsigned threads = 0;
@@ -58,6 +60,8 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
       {"method", "\"" + a.method + "\""},
       {"threads", std::to_string(s.threads)},
       {"seed", std::to_string(a.seed)},
+      {"order", "\"" + a.order + "\""},
+      {"locate", "\"" + a.locate + "\""},
       {"bounding", "\"" + a.bounding + "\""},
       {"points", std::to_string(s.points)},
       {"distinct", std::to_string(s.distinct)},
@@ -145,6 +149,20 @@ int run_triangulate(const TriangulateArgs& a) {
     throw ridt::InputError("unknown method '" + a.method +
                            "' (use serial, pessimistic, optimistic or batch)");
   }
+  if (a.order == "brio") {
+    o.order = ridt::Order::Brio;
+  } else if (a.order == "random") {
+    o.order = ridt::Order::Random;
+  } else {
+    throw ridt::InputError("unknown order '" + a.order + "' (use brio or random)");
+  }
+  if (a.locate == "dag") {
+    o.locate = ridt::Locate::Dag;
+  } else if (a.locate == "walk") {
+    o.locate = ridt::Locate::Walk;
+  } else {
+    throw ridt::InputError("unknown location '" + a.locate + "' (use dag or walk)");
+  }
   o.threads = a.threads;
   o.paper_locking = a.paper_locking;
   o.time_threads = !a.no_thread_timing;
@@ -175,6 +193,12 @@ int main(int argc, char** argv) {
   tri->add_option("input", ta.input, "points: .node, .bin (float64 pairs) or text")->required();
   tri->add_option("-o,--output", ta.output, "triangles: .ele, .neigh, .off, .obj, .svg or .bin");
   tri->add_option("--seed", ta.seed, "seed of the random insertion order");
+  tri->add_option("--order", ta.order,
+                  "insertion order: brio (default; random rounds, each along a Hilbert curve) or "
+                  "random (the paper's)");
+  tri->add_option("--locate", ta.locate,
+                  "point location: dag (default; the history DAG) or walk (from the last "
+                  "insertion, no DAG: less memory; serial method and brio order only)");
   tri->add_option("--method", ta.method, "serial (default), pessimistic, optimistic or batch");
   tri->add_option("--threads", ta.threads,
                   "threads of a threaded method (0: all hardware threads; batch: threads - 1 "

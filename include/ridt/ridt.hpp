@@ -42,6 +42,18 @@ enum class Method {
   Batch,        ///< threads - 1 locators queue DAG nodes for one modifier thread
 };
 
+/// The order in which points are inserted.
+enum class Order {
+  Random,  ///< a uniformly random permutation: the paper's order
+  Brio,    ///< biased randomized: random rounds of doubling size, each along a Hilbert curve
+};
+
+/// How an insertion finds the triangle that holds its point.
+enum class Locate {
+  Dag,   ///< descend the history DAG (every method)
+  Walk,  ///< walk from the last insertion; keeps no DAG (serial method, BRIO order)
+};
+
 /// The starting triangle that encloses every point.
 enum class Bounding {
   Symbolic,  ///< vertices at infinity, decided combinatorially: the hull is always complete
@@ -62,6 +74,8 @@ struct Options {
   /// and 3). Three clock reads a point.
   bool time_threads = true;
   std::uint64_t seed = 1;  ///< seed of the random insertion order
+  Order order = Order::Brio;
+  Locate locate = Locate::Dag;
   Bounding bounding = Bounding::Symbolic;
   double k = 10.0;  ///< K = k * M for Bounding::Finite; k >= 2 keeps every point strictly inside
   /// Rotate each triangle so its smallest vertex index comes first and sort the triangles:
@@ -90,7 +104,7 @@ struct Stats {
   std::uint64_t points = 0;      ///< input points
   std::uint64_t distinct = 0;    ///< distinct points
   std::uint64_t duplicates = 0;  ///< input points dropped as duplicates
-  std::uint64_t dag_nodes = 0;   ///< triangle records made (each one a node of the history DAG)
+  std::uint64_t dag_nodes = 0;   ///< triangle records made (each one a node of the history DAG); 0 when walking
   std::uint64_t flips = 0;       ///< edge flips during legalization
   std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits)
   double time_triangulate_s = 0; ///< the whole call: set-up, insertion, finish
