@@ -1,10 +1,17 @@
 #!/usr/bin/env bash
 # Installs what building and testing ridt needs from Debian 12, if it is missing.
-# Usage: scripts/deps.sh [build|test]
+# Usage: scripts/deps.sh [build|test|bench]
+#   bench: also Qhull and node, and delaunator from npm into build/peers/node_modules (for
+#   build/ridt_bench_peers --node-modules build/peers/node_modules).
 set -euo pipefail
 packages=(g++ cmake ninja-build libcli11-dev)
-if [ "${1:-build}" = test ]; then
+if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
+fi
+if [ "${1:-build}" = bench ]; then
+  packages+=(libqhull-dev)
+  command -v node >/dev/null || packages+=(nodejs)
+  command -v npm >/dev/null || packages+=(npm)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -16,4 +23,8 @@ if [ "${#missing[@]}" -gt 0 ]; then
   [ "$(id -u)" -ne 0 ] && sudo=sudo
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+if [ "${1:-build}" = bench ] && [ ! -d build/peers/node_modules/delaunator ]; then
+  mkdir -p build/peers
+  npm install --silent --prefix build/peers delaunator@5
 fi
