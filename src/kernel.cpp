@@ -156,16 +156,18 @@ void Kernel::split_triangle(TriangleId t, VertexId p, Scratch& s) {
  *            \ | /
  *              d
  */
-void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
-  ++s.edge_splits;
+Kernel::EdgeSplit Kernel::read_edge_split(TriangleId t, int i) const {
   const Triangle& rt = tris_[t];
-  const VertexId a = rt.v[i], b = rt.v[next(i)], c = rt.v[prev(i)];
   const TriangleId u = rt.n[i];
-  const TriangleId tn_b = rt.n[next(i)], tn_c = rt.n[prev(i)];
   const Triangle& ru = tris_[u];
   const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
-  const VertexId d = ru.v[j];
-  const TriangleId un_c = ru.n[next(j)], un_b = ru.n[prev(j)];
+  return {u, rt.v[i], rt.v[next(i)], rt.v[prev(i)], ru.v[j],
+          rt.n[next(i)], rt.n[prev(i)], ru.n[prev(j)], ru.n[next(j)]};
+}
+
+void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
+  ++s.edge_splits;
+  const auto [u, a, b, c, d, tn_b, tn_c, un_b, un_c] = read_edge_split(t, i);
 
   const TriangleId t0 = allocate(4, s), t1 = t0 + 1, u0 = t0 + 2, u1 = t0 + 3;
   make(t0, p, a, b, tn_c, u1, t1, s);
@@ -197,14 +199,15 @@ void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
 //    tb   \  |  /   uqb         tb   \ n2  /  uqb
 //          \ | /                      \   /
 //            b                          b
-void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
-  ++s.flips;
+Kernel::Flip Kernel::read_flip(TriangleId t, TriangleId u, int j) const {
   const Triangle& rt = tris_[t];
   const Triangle& ru = tris_[u];
-  const VertexId p = rt.v[0], a = rt.v[1], b = rt.v[2];
-  const VertexId q = ru.v[j];
-  const TriangleId tb = rt.n[1], ta = rt.n[2];
-  const TriangleId uaq = ru.n[next(j)], uqb = ru.n[prev(j)];
+  return {rt.v[0], rt.v[1], rt.v[2], ru.v[j], rt.n[2], rt.n[1], ru.n[next(j)], ru.n[prev(j)]};
+}
+
+void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
+  ++s.flips;
+  const auto [p, a, b, q, ta, tb, uaq, uqb] = read_flip(t, u, j);
 
   const TriangleId n2 = allocate(2, s), n1 = n2 + 1;
   make(n2, p, q, b, uqb, tb, n1, s);
@@ -239,14 +242,7 @@ void Kernel::split_triangle_in_place(TriangleId t, VertexId p, Scratch& s) {
 
 void Kernel::split_edge_in_place(TriangleId t, int i, VertexId p, Scratch& s) {
   ++s.edge_splits;
-  const Triangle rt = tris_[t];
-  const VertexId a = rt.v[i], b = rt.v[next(i)], c = rt.v[prev(i)];
-  const TriangleId u = rt.n[i];
-  const TriangleId tn_b = rt.n[next(i)], tn_c = rt.n[prev(i)];
-  const Triangle ru = tris_[u];
-  const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
-  const VertexId d = ru.v[j];
-  const TriangleId un_c = ru.n[next(j)], un_b = ru.n[prev(j)];
+  const auto [u, a, b, c, d, tn_b, tn_c, un_b, un_c] = read_edge_split(t, i);
 
   const TriangleId t1 = allocate(2, s), u1 = t1 + 1;
   make(t, p, a, b, tn_c, u1, t1, s);
@@ -263,12 +259,7 @@ void Kernel::split_edge_in_place(TriangleId t, int i, VertexId p, Scratch& s) {
 
 void Kernel::flip_in_place(TriangleId t, TriangleId u, int j, Scratch& s) {
   ++s.flips;
-  const Triangle& rt = tris_[t];
-  const Triangle& ru = tris_[u];
-  const VertexId p = rt.v[0], a = rt.v[1], b = rt.v[2];
-  const VertexId q = ru.v[j];
-  const TriangleId tb = rt.n[1], ta = rt.n[2];
-  const TriangleId uaq = ru.n[next(j)], uqb = ru.n[prev(j)];
+  const auto [p, a, b, q, ta, tb, uaq, uqb] = read_flip(t, u, j);
 
   make(t, p, q, b, uqb, tb, u, s);  // n2
   make(u, p, a, q, uaq, t, ta, s);  // n1

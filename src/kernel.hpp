@@ -292,6 +292,20 @@ class Kernel {
       throw std::logic_error("ridt: a thread wrote a triangle it does not own");
   }
 
+  // What an edge split and a flip read before they write (the names of the drawings in
+  // kernel.cpp), shared by the versions with and without history.
+  struct EdgeSplit {
+    TriangleId u;
+    VertexId a, b, c, d;
+    TriangleId tn_b, tn_c, un_b, un_c;
+  };
+  EdgeSplit read_edge_split(TriangleId t, int i) const;
+  struct Flip {
+    VertexId p, a, b, q;
+    TriangleId ta, tb, uaq, uqb;
+  };
+  Flip read_flip(TriangleId t, TriangleId u, int j) const;
+
   void split_triangle(TriangleId t, VertexId p, Scratch& s);
   void split_edge(TriangleId t, int i, VertexId p, Scratch& s);
   void flip(TriangleId t, TriangleId u, int j, Scratch& s);

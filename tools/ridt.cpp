@@ -10,9 +10,11 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <initializer_list>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "generate.hpp"
 #include "io.hpp"
@@ -124,45 +126,35 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
   std::printf("}\n");
 }
 
+// The value named `name` among `choices`, or an error that lists them.
+template <typename T>
+T pick(const char* what, const std::string& name,
+       std::initializer_list<std::pair<const char*, T>> choices) {
+  std::string list;
+  std::size_t i = 0;
+  for (const auto& [text, value] : choices) {
+    if (name == text) return value;
+    if (i > 0) list += i + 1 == choices.size() ? " or " : ", ";
+    list += text;
+    ++i;
+  }
+  throw ridt::InputError("unknown " + std::string(what) + " '" + name + "' (use " + list + ")");
+}
+
 int run_triangulate(const TriangulateArgs& a) {
   ridt::Options o;
   o.seed = a.seed;
   o.k = a.k;
   o.profile = a.profile;
   o.canonical_order = !a.output.empty();  // files are identical for every seed and method
-  if (a.bounding == "symbolic") {
-    o.bounding = ridt::Bounding::Symbolic;
-  } else if (a.bounding == "finite") {
-    o.bounding = ridt::Bounding::Finite;
-  } else {
-    throw ridt::InputError("unknown bounding '" + a.bounding + "' (use symbolic or finite)");
-  }
-  if (a.method == "serial") {
-    o.method = ridt::Method::Serial;
-  } else if (a.method == "pessimistic") {
-    o.method = ridt::Method::Pessimistic;
-  } else if (a.method == "optimistic") {
-    o.method = ridt::Method::Optimistic;
-  } else if (a.method == "batch") {
-    o.method = ridt::Method::Batch;
-  } else {
-    throw ridt::InputError("unknown method '" + a.method +
-                           "' (use serial, pessimistic, optimistic or batch)");
-  }
-  if (a.order == "brio") {
-    o.order = ridt::Order::Brio;
-  } else if (a.order == "random") {
-    o.order = ridt::Order::Random;
-  } else {
-    throw ridt::InputError("unknown order '" + a.order + "' (use brio or random)");
-  }
-  if (a.locate == "dag") {
-    o.locate = ridt::Locate::Dag;
-  } else if (a.locate == "walk") {
-    o.locate = ridt::Locate::Walk;
-  } else {
-    throw ridt::InputError("unknown location '" + a.locate + "' (use dag or walk)");
-  }
+  using ridt::Bounding, ridt::Locate, ridt::Method, ridt::Order;
+  o.bounding = pick<Bounding>("bounding", a.bounding,
+                              {{"symbolic", Bounding::Symbolic}, {"finite", Bounding::Finite}});
+  o.method = pick<Method>("method", a.method,
+                          {{"serial", Method::Serial}, {"pessimistic", Method::Pessimistic},
+                           {"optimistic", Method::Optimistic}, {"batch", Method::Batch}});
+  o.order = pick<Order>("order", a.order, {{"brio", Order::Brio}, {"random", Order::Random}});
+  o.locate = pick<Locate>("location", a.locate, {{"dag", Locate::Dag}, {"walk", Locate::Walk}});
   o.threads = a.threads;
   o.paper_locking = a.paper_locking;
   o.time_threads = !a.no_thread_timing;
