@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Installs what building and testing ridt needs from Debian 12, if it is missing.
-# Usage: scripts/deps.sh [build|test|bench]
+# Usage: scripts/deps.sh [build|test|bench|fuzz]
 #   bench: also Qhull and node, and delaunator from npm into build/peers/node_modules (for
 #   build/ridt_bench_peers --node-modules build/peers/node_modules).
 set -euo pipefail
 packages=(g++ cmake ninja-build libcli11-dev)
 if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
+fi
+if [ "${1:-build}" = test ] || [ "${1:-build}" = fuzz ]; then
+  packages+=(clang libclang-rt-14-dev)  # libFuzzer
 fi
 if [ "${1:-build}" = bench ]; then
   packages+=(libqhull-dev)

@@ -773,12 +773,13 @@ void write_svg(const std::string& path, std::span<const Point> points, const Tri
 
 // ---------------------------------------------------------------------------------------------
 
-PointFile read_points(const std::string& path) {
-  const std::string data = read_file(path);
-  const std::string ext = extension_of(path);
-  if (ext == ".node") return read_node(path, data);
-  if (ext == ".bin") return read_bin_points(path, data);
-  return read_text_points(path, data);
+PointFile read_points(const std::string& path) { return parse_points(read_file(path), path); }
+
+PointFile parse_points(std::string_view data, const std::string& name) {
+  const std::string ext = extension_of(name);
+  if (ext == ".node") return read_node(name, data);
+  if (ext == ".bin") return read_bin_points(name, data);
+  return read_text_points(name, data);
 }
 
 void write_points(const std::string& path, std::span<const Point> points) {
@@ -812,11 +813,15 @@ void write_points(const std::string& path, std::span<const Point> points) {
 }
 
 std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
-  const std::string data = read_file(path);
-  const std::string ext = extension_of(path);
-  if (ext == ".ele") return read_ele(path, data, first_index);
-  if (ext == ".bin") return read_bin_triangles(path, data);
-  return read_text_triangles(path, data, first_index);
+  return parse_triangles(read_file(path), path, first_index);
+}
+
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,
+                                      int first_index) {
+  const std::string ext = extension_of(name);
+  if (ext == ".ele") return read_ele(name, data, first_index);
+  if (ext == ".bin") return read_bin_triangles(name, data);
+  return read_text_triangles(name, data, first_index);
 }
 
 void check_triangulation_extension(const std::string& path) {

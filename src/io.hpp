@@ -13,6 +13,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ridt/ridt.hpp"
@@ -35,12 +36,20 @@ struct PointFile {
 /// coordinate, or a .node count that does not match.
 PointFile read_points(const std::string& path);
 
+/// The same for a file's content already in memory; `name` picks the format by its extension
+/// and stands for the file in messages.
+PointFile parse_points(std::string_view data, const std::string& name);
+
 /// Writes points (format by extension).
 void write_points(const std::string& path, std::span<const Point> points);
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;
 /// `first_index` is the numbering of .ele and text files.
 std::vector<VertexId> read_triangles(const std::string& path, int first_index);
+
+/// The same for content in memory (`name` as for parse_points).
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,
+                                      int first_index);
 
 /// Throws IoError unless `path` has an extension that write_triangulation knows.
 void check_triangulation_extension(const std::string& path);

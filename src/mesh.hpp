@@ -81,15 +81,20 @@ inline void prefetch_record(const Triangle* r) {
 /// Records in fixed-size chunks that never move, so an id stays valid while the store grows.
 class TriangleStore {
  public:
-  // 2^19 records of 28 bytes fill exactly 7 huge pages of 2 MiB (memory.hpp).
+  // 2^19 records of 28 bytes fill exactly 7 huge pages of 2 MiB (memory.hpp). The fuzz targets
+  // build with smaller chunks: each of their thousands of tiny runs would otherwise have the
+  // sanitizer map and poison a whole chunk.
+#ifdef RIDT_CHUNK_BITS
+  static constexpr int kChunkBits = RIDT_CHUNK_BITS;
+#else
   static constexpr int kChunkBits = 19;
+#endif
   static constexpr std::uint32_t kChunkSize = 1u << kChunkBits;
   static constexpr std::uint32_t kMaxChunks = (kIdMask + 1u) >> kChunkBits;
 
   /// `expected`: about how many records will be made.
   explicit TriangleStore(std::uint64_t expected = kChunkSize)
-      : expected_(expected), chunks_(new std::atomic<Triangle*>[kMaxChunks]) {
-    for (std::uint32_t i = 0; i < kMaxChunks; ++i) chunks_[i].store(nullptr, std::memory_order_relaxed);
+      : expected_(expected), chunks_(new std::atomic<Triangle*>[kMaxChunks]()) {
     // The chunks a run will need, at once and from the calling thread: worker threads then
     // rarely take the growth lock, and every method gets its memory from the same heap (the
     // caller's; a thread's own malloc arena would hand out fresh pages where the caller's
@@ -97,7 +102,8 @@ class TriangleStore {
     grow(std::min<std::uint64_t>(expected, kIdMask));
   }
   ~TriangleStore() {
-    for (std::uint32_t i = 0; i < kMaxChunks; ++i) std::free(chunks_[i].load(std::memory_order_relaxed));
+    const std::uint64_t chunks = capacity_.load(std::memory_order_relaxed) >> kChunkBits;
+    for (std::uint64_t i = 0; i < chunks; ++i) std::free(chunks_[i].load(std::memory_order_relaxed));
   }
   TriangleStore(const TriangleStore&) = delete;
   TriangleStore& operator=(const TriangleStore&) = delete;

@@ -69,11 +69,18 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
     x0 = std::min(x0, points[i].x), x1 = std::max(x1, points[i].x);
     y0 = std::min(y0, points[i].y), y1 = std::max(y1, points[i].y);
   }
-  // Halving first keeps x1 - x0 finite for coordinates near the largest double.
+  // Halving first keeps x1 - x0 finite for coordinates near the largest double; the offsets
+  // below are halved the same way, so they run from 0 to `extent`.
   const double extent = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
-  const double scale = extent > 0 ? 32767.0 / extent : 0.0;  // 65535 / (2 * extent)
+  if (!(extent > 0)) return key;  // all points equal: every key 0
+  // Cells of 1/65535 of the longer side. When the extent is so small (subnormal) that this
+  // scale overflows, divide by the extent instead of multiplying by the scale.
+  const double scale = 65535.0 / extent;
+  const bool divide = std::isinf(scale);
   const auto cell = [&](double v, double lo) {
-    return static_cast<std::uint32_t>(std::clamp((v / 2 - lo / 2) * scale, 0.0, 65535.0));
+    const double offset = v / 2 - lo / 2;
+    const double c = divide ? offset / extent * 65535.0 : offset * scale;
+    return static_cast<std::uint32_t>(std::clamp(c, 0.0, 65535.0));
   };
   auto part = [&](unsigned t, unsigned parts) {
     const auto begin = static_cast<std::uint32_t>(std::uint64_t{n} * t / parts);

@@ -9,6 +9,7 @@
 
 #include "driver.hpp"
 #include "order.hpp"
+#include "predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt {
@@ -65,8 +66,12 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
       x0 = std::fmin(x0, pts[v].x), x1 = std::fmax(x1, pts[v].x);
       y0 = std::fmin(y0, pts[v].y), y1 = std::fmax(y1, pts[v].y);
     }
-    double m = std::fmax(x1 - x0, y1 - y0);
-    if (m == 0) m = 1;  // all points equal: any triangle around them will do
+    // M is the box's size, but at least 2^-40 of the largest coordinate and at least 2^-960
+    // (far above the subnormals): a box that is a single point, or flat far from the origin,
+    // would otherwise give a K that rounds away beside the coordinates (or to 0), and a
+    // triangle through the points.
+    const double far = std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)});
+    const double m = std::max({x1 - x0, y1 - y0, far * 0x1p-40, 0x1p-960});
     const double cx = x0 / 2 + x1 / 2, cy = y0 / 2 + y1 / 2, k = options.k * m;
     const Point b[3] = {{cx + k, cy}, {cx, cy + k}, {cx - k, cy - k}};
     for (int i = 0; i < 3; ++i) {
@@ -74,6 +79,12 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
         throw InputError("the finite bounding triangle overflows for these coordinates");
       pts[n + i] = b[i];
     }
+    // Every point strictly inside, exactly, or the kernel's premise fails.
+    for (std::uint32_t v = 0; v < n; ++v)
+      for (int i = 0; i < 3; ++i)
+        if (detail::orient2d(b[i], b[(i + 1) % 3], pts[v]) <= 0)
+          throw InputError("the finite bounding triangle does not enclose point " +
+                           std::to_string(order[v]) + "; use the symbolic one");
   }
 
   Triangulation out;

@@ -1,4 +1,4 @@
-// Shared test helpers: canonical triangle sets and the exact validator.
+// Shared test helpers: triangulation with the whole result checked, and the fixtures' format.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,30 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "audit.hpp"
 #include "ridt/check.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::test {
 
-using TriangleSet = std::vector<std::array<VertexId, 3>>;
-
-/// Triangles rotated to start at their smallest index, sorted.
-inline TriangleSet canonical(const std::vector<VertexId>& tris) {
-  TriangleSet out;
-  for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
-    std::array<VertexId, 3> t{tris[i], tris[i + 1], tris[i + 2]};
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    out.push_back(t);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-/// Triangulates and asserts the exact validator accepts the result.
+/// Triangulates and asserts that the whole result is sound (audit.hpp: the exact validator,
+/// neighbours, hull, duplicates).
 inline Triangulation triangulate_checked(const std::vector<Point>& pts, Options o = {}) {
   Triangulation t = triangulate(pts, o);
-  const CheckResult r = check(pts, t.triangles);
-  EXPECT_TRUE(r.valid) << r.message;
+  EXPECT_EQ(audit(pts, t), "");
   return t;
 }
 

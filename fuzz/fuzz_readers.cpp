@@ -1,0 +1,98 @@
+// Fuzz target: the point and triangle readers, every format.
+//
+// The first byte picks the format, the rest is the file's content. A reader must either
+// throw IoError or return what it promises: finite points that survive writing and reading
+// back bit for bit in every point format, and whole triangles. Any other exception, a crash
+// or a sanitizer report is a finding.
+#include <unistd.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "io.hpp"
+
+namespace {
+
+using ridt::Point;
+using ridt::VertexId;
+namespace io = ridt::io;
+
+[[noreturn]] void finding(const std::string& what) {
+  std::fprintf(stderr, "fuzz_readers: %s\n", what.c_str());
+  std::abort();
+}
+
+bool same_bits(const Point& a, const Point& b) {
+  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
+}
+
+// A private folder for the round trips, removed at exit.
+const std::filesystem::path& scratch_dir() {
+  static const std::filesystem::path dir = [] {
+    std::filesystem::path d = std::filesystem::temp_directory_path() /
+                              ("ridt-fuzz-readers-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(d);
+    std::atexit([] {
+      std::error_code ec;
+      std::filesystem::remove_all(scratch_dir(), ec);
+    });
+    return d;
+  }();
+  return dir;
+}
+
+void points(std::string_view data, const char* name) {
+  io::PointFile file;
+  try {
+    file = io::parse_points(data, name);
+  } catch (const io::IoError&) {
+    return;
+  }
+  if (file.first_index != 0 && file.first_index != 1) finding("first index not 0 or 1");
+  for (const Point& p : file.points)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) finding("a coordinate is not finite");
+  for (const char* format : {"round.txt", "round.node", "round.bin"}) {
+    const std::string path = (scratch_dir() / format).string();
+    io::write_points(path, file.points);
+    const io::PointFile back = io::read_points(path);
+    if (back.points.size() != file.points.size())
+      finding(std::string("round trip through ") + format + " changed the count");
+    for (std::size_t i = 0; i < back.points.size(); ++i)
+      if (!same_bits(back.points[i], file.points[i]))
+        finding(std::string("round trip through ") + format + " changed point " +
+                std::to_string(i));
+  }
+}
+
+void triangles(std::string_view data, const char* name, int first_index) {
+  std::vector<VertexId> tris;
+  try {
+    tris = io::parse_triangles(data, name, first_index);
+  } catch (const io::IoError&) {
+    return;
+  }
+  if (tris.size() % 3 != 0) finding("a triangle file gave a partial triangle");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
+  if (size == 0) return 0;
+  const std::string_view data(reinterpret_cast<const char*>(bytes) + 1, size - 1);
+  switch (bytes[0] % 7) {
+    case 0: points(data, "in.txt"); break;
+    case 1: points(data, "in.node"); break;
+    case 2: points(data, "in.bin"); break;
+    case 3: triangles(data, "in.ele", 0); break;
+    case 4: triangles(data, "in.ele", 1); break;
+    case 5: triangles(data, "in.txt", 1); break;
+    case 6: triangles(data, "in.bin", 0); break;
+  }
+  return 0;
+}

@@ -1,0 +1,117 @@
+// Fuzz target: small point sets full of degeneracies, triangulated by every method.
+//
+// The first byte picks a transformation of the coordinates (scaling towards underflow or
+// overflow, a shift that leaves few bits, integers near 2^53, a small rotation); every other
+// byte is a point whose x and y are picked, four bits each, from sixteen values. With so few
+// values, duplicates, collinear and cocircular points abound.
+//
+// Every method, order and location mode must give a result that passes the whole audit (the
+// exact validator, neighbours, hull, duplicates), and all must give the same triangles, hull
+// and duplicates. The finite bounding triangle may lose hull edges (the paper's defect) but
+// then must say so. Anything else aborts: a finding.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "audit.hpp"
+#include "ridt/ridt.hpp"
+
+namespace {
+
+using namespace ridt;
+
+[[noreturn]] void finding(const std::string& what) {
+  std::fprintf(stderr, "fuzz_triangulate: %s\n", what.c_str());
+  std::abort();
+}
+
+// Small integers, halves, thirds and values a few units in the last place from them.
+constexpr double kValues[16] = {-3, -2, -1, 0, 1, 2, 3, 4,
+                                0.5, -0.5, 1.0 / 3, 2.0 / 3,
+                                1 + 0x1p-52, 2 - 0x1p-51, 0x1p-30, -1 - 0x1p-52};
+
+// The transformation `kind` (bytes[0] % 8) of a point.
+Point transform(int kind, Point p) {
+  switch (kind) {
+    case 1: return {p.x * 1e-300, p.y * 1e-300};      // tiny: products underflow
+    case 2: return {p.x * 1e300, p.y * 1e300};        // huge: squares overflow
+    case 3: return {p.x + 1e15, p.y + 1e15};          // few bits left for the fraction
+    case 4: return {std::floor(p.x) + 0x1p53 - 8,     // integers near 2^53
+                    std::floor(p.y) + 0x1p53 - 8};
+    case 5: return {p.x * 0x1p-1060, p.y * 0x1p-1060};  // subnormal differences
+    case 6: return {p.x * 0x1p1000, p.y * 0x1p1000};    // near the top of the range
+    case 7: {                                           // a small rotation, rounded
+      const double c = std::cos(1e-3), s = std::sin(1e-3);
+      return {c * p.x - s * p.y, s * p.x + c * p.y};
+    }
+    default: return p;
+  }
+}
+
+std::vector<Point> points_of(const std::uint8_t* bytes, std::size_t size) {
+  std::vector<Point> pts;
+  for (std::size_t i = 1; i < size; ++i)
+    pts.push_back(transform(bytes[0] % 8, {kValues[bytes[i] >> 4], kValues[bytes[i] & 15]}));
+  return pts;
+}
+
+struct Run {
+  const char* name;
+  Method method;
+  unsigned threads;
+  Order order;
+  Locate locate;
+};
+
+constexpr Run kRuns[] = {
+    {"serial random dag", Method::Serial, 1, Order::Random, Locate::Dag},
+    {"serial brio dag", Method::Serial, 1, Order::Brio, Locate::Dag},
+    {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk},
+    {"pessimistic 2 random", Method::Pessimistic, 2, Order::Random, Locate::Dag},
+    {"pessimistic 3 brio", Method::Pessimistic, 3, Order::Brio, Locate::Dag},
+    {"optimistic 2 brio", Method::Optimistic, 2, Order::Brio, Locate::Dag},
+    {"optimistic 3 random", Method::Optimistic, 3, Order::Random, Locate::Dag},
+    {"batch 2 brio", Method::Batch, 2, Order::Brio, Locate::Dag},
+    {"batch 3 random", Method::Batch, 3, Order::Random, Locate::Dag},
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
+  if (size == 0 || size > 4097) return 0;
+  const std::vector<Point> pts = points_of(bytes, size);
+  Triangulation first;
+  for (const Run& run : kRuns) {
+    Options o;
+    o.method = run.method;
+    o.threads = run.threads;
+    o.order = run.order;
+    o.locate = run.locate;
+    o.seed = size;  // a different order for each length
+    const Triangulation t = triangulate(pts, o);
+    const std::string problem = test::audit(pts, t);
+    if (!problem.empty()) finding(std::string(run.name) + ": " + problem);
+    if (&run == &kRuns[0]) {
+      first = t;
+    } else if (const std::string diff = test::compare(first, t); !diff.empty()) {
+      finding(std::string(run.name) + " differs from " + kRuns[0].name + ": " + diff);
+    }
+  }
+  // The paper's finite bounding triangle: right, or it says that it lost hull edges.
+  Options finite;
+  finite.bounding = Bounding::Finite;
+  try {
+    const Triangulation t = triangulate(pts, finite);
+    const std::string problem = test::audit(pts, t);
+    if (!problem.empty() && t.warning.find("lost convex hull edges") == std::string::npos)
+      finding("finite bounding triangle, no warning: " + problem);
+  } catch (const InputError& e) {
+    // Only where K = k * M overflows.
+    if (std::string(e.what()).find("overflows") == std::string::npos)
+      finding(std::string("finite bounding triangle threw: ") + e.what());
+  }
+  return 0;
+}
