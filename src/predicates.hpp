@@ -33,6 +33,9 @@ inline constexpr double kIncircleBound = (10.0 + 96.0 * kEps) * kEps;
 inline constexpr double kOrientUnderflow = 0x1p-1073;
 
 int orient2d_exact(const Point& a, const Point& b, const Point& c);
+/// orient2d when the filter cannot tell: rescaled when the coordinates are huge or tiny, else
+/// exact (exact.cpp).
+int orient2d_hard(const Point& a, const Point& b, const Point& c);
 
 /// True when x is an integer of magnitude below 2^52: differences of such numbers are exact.
 inline bool small_integer(double x) {
@@ -65,7 +68,7 @@ inline int orient2d(const Point& a, const Point& b, const Point& c) {
   // NaN from an overflow fails both tests and lands here too.
   const double m = std::max({std::fabs(acx), std::fabs(bcx), std::fabs(acy), std::fabs(bcy)});
   if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y}, m, 0x1p25)) return (det > 0) - (det < 0);
-  return orient2d_exact(a, b, c);
+  return orient2d_hard(a, b, c);
 }
 
 /// The sign of the incircle determinant where double precision settles it (nearly always):
@@ -104,7 +107,8 @@ inline int incircle_filter(const Point& a, const Point& b, const Point& c, const
   return 0;
 }
 
-/// incircle when the filter cannot tell: exact (exact.cpp).
+/// incircle when the filter cannot tell: rescaled when the coordinates are huge or tiny, else
+/// exact (exact.cpp).
 int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d);
 
 /// Sign of the incircle determinant: +1 if d lies strictly inside the circle through the

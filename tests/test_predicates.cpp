@@ -98,6 +98,39 @@ TEST(Incircle, ExtremeScales) {
   }
 }
 
+// Huge and tiny coordinates go through the filter again, rescaled by a power of two; the
+// answer must stay the exact one, also for near-degenerate points and for scales that are not
+// powers of two (1e300, 1e-300) or that push coordinates into the subnormals.
+TEST(Predicates, RescaledFilterAgreesWithIntegers) {
+  std::uint64_t state = 12345;
+  auto next = [&state] {  // a small LCG: values 0..7 and a few ulps off
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    return static_cast<int>(state >> 60);
+  };
+  auto value = [&] {
+    const int v = next();
+    double x = v % 8 - 3;
+    if (v >= 8) x = std::nextafter(x, v % 2 ? 100.0 : -100.0);
+    return x;
+  };
+  int orients = 0, circles = 0;
+  for (double scale : {0x1p-1062, 0x1p-700, 1e-300, 0x1p-300, 0x1p300, 1e300, 0x1p700, 0x1p1018}) {
+    for (int trial = 0; trial < 3000; ++trial) {
+      Point p[4];
+      for (Point& q : p) q = {value() * scale, value() * scale};
+      const int o = orient2d(p[0], p[1], p[2]);
+      ASSERT_EQ(o, orient2d_exact(p[0], p[1], p[2])) << scale << " " << trial;
+      if (o <= 0) continue;
+      ASSERT_EQ(incircle(p[0], p[1], p[2], p[3]), incircle_exact(p[0], p[1], p[2], p[3]))
+          << scale << " " << trial;
+      orients += 1;
+      circles += incircle(p[0], p[1], p[2], p[3]) == 0;
+    }
+  }
+  EXPECT_GT(orients, 1000);
+  EXPECT_GT(circles, 10);  // exactly cocircular quadruples among them
+}
+
 TEST(Incircle, NearlyCocircularAfterShift) {
   // Shifted by 1e15, the unit square's corners stay exact and cocircular; moving the fourth
   // corner by one unit in the last place decides the sign.
