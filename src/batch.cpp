@@ -79,7 +79,7 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
     }
     along.resize(end - begin);
     std::iota(along.begin(), along.end(), begin);
-    sort_by_key(key.data(), along.data(), end - begin);
+    hilbert_sort(&kernel.point(0), key.data(), along.data(), end - begin);
     descend_along(kernel, along.data(), end - begin, [&](VertexId v, TriangleId leaf) {
       Slot& slot = q.slots[v % kCapacity];
       slot.node = leaf;

@@ -97,7 +97,11 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
   return key;
 }
 
-void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t count) {
+namespace {
+
+// ids[0 .. count) sorted by key[id], stably, as (key << 32 | id) pairs: a radix sort.
+std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uint32_t* ids,
+                                        std::uint32_t count) {
   // Each id travels with its key, packed in 64 bits, so every pass reads its input in order
   // (looking the key up through the id would read the key array at random, twice a pass).
   // Least significant digit first, 11 bits a pass: three stable counting passes on the key.
@@ -114,7 +118,42 @@ void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t cou
     for (std::uint32_t i = 0; i < count; ++i) b[at[(a[i] >> shift) & kMask]++] = a[i];
     a.swap(b);
   }
-  for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(a[i]);
+  return a;
+}
+
+// A cell of the curve may hold at most this many points before it is sorted on its own.
+constexpr std::uint32_t kCellPoints = 32;
+
+// Writes the ids of the sorted pairs to ids, then sorts each run of more than kCellPoints
+// pairs with one key (one cell) along a curve over the run's own bounding box, and so on
+// within it. Each level puts a run into cells at least 2^15 times smaller than its box, and a
+// run whose points the curve cannot tell apart (equal points) stays as it is: the recursion
+// ends after some 140 levels at most, even for points that span every exponent of a double.
+void refine(const Point* points, const std::vector<std::uint64_t>& pairs, std::uint32_t* ids) {
+  const auto count = static_cast<std::uint32_t>(pairs.size());
+  for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(pairs[i]);
+  for (std::uint32_t b = 0, e; b < count; b = e) {
+    for (e = b + 1; e < count && pairs[e] >> 32 == pairs[b] >> 32;) ++e;
+    if (e - b <= kCellPoints) continue;
+    std::vector<Point> cell(e - b);
+    for (std::uint32_t i = b; i < e; ++i) cell[i - b] = points[ids[i]];
+    const std::vector<std::uint32_t> key = hilbert_keys(cell.data(), e - b);
+    if (std::all_of(key.begin(), key.end(), [&](std::uint32_t k) { return k == key[0]; })) continue;
+    std::vector<std::uint32_t> local(e - b);
+    std::iota(local.begin(), local.end(), 0u);
+    std::vector<std::uint64_t> sorted = sorted_pairs(key.data(), local.data(), e - b);
+    // Local positions back to point ids, keeping the keys.
+    const std::vector<std::uint32_t> run(ids + b, ids + e);
+    for (std::uint64_t& pair : sorted) pair = (pair >> 32) << 32 | run[static_cast<std::uint32_t>(pair)];
+    refine(points, sorted, ids + b);
+  }
+}
+
+}  // namespace
+
+void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
+                  std::uint32_t count) {
+  refine(points, sorted_pairs(key, ids, count), ids);
 }
 
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
@@ -129,7 +168,7 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   const std::size_t rounds = first.size() - 1;
   auto sort_rounds = [&](std::size_t from, std::size_t to) {
     for (std::size_t r = from; r < to; ++r)
-      sort_by_key(key.data(), order.data() + first[r], first[r + 1] - first[r]);
+      hilbert_sort(points, key.data(), order.data() + first[r], first[r + 1] - first[r]);
   };
   if (threads > 1 && n >= 65536) {
     std::jthread last(sort_rounds, rounds - 1, rounds);
@@ -144,7 +183,7 @@ std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
   const std::vector<std::uint32_t> key = hilbert_keys(points, n);
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  sort_by_key(key.data(), order.data(), n);
+  hilbert_sort(points, key.data(), order.data(), n);
   return order;
 }
 

@@ -20,8 +20,12 @@ std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
 /// so the curve's cells are square), computed by up to `threads` threads.
 std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, unsigned threads = 1);
 
-/// Sorts ids[0 .. count) by key[id], stably: a radix sort, three passes of 11 bits.
-void sort_by_key(const std::uint32_t* key, std::uint32_t* ids, std::uint32_t count);
+/// Sorts ids[0 .. count) along the Hilbert curve: by key[id], the hilbert_keys of `points`,
+/// then every cell of the curve that holds more than a few of them again along a curve over
+/// their own bounding box, and so on. No input makes the order coarse: one far outlier, or a
+/// tight cluster, would otherwise leave nearly every point in one cell, in random order.
+void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
+                  std::uint32_t count);
 
 /// Insertions come in rounds of doubling size: [0, kFirstRound), [kFirstRound, 2 kFirstRound),
 /// [2 kFirstRound, 4 kFirstRound), ... Round sizes below kFirstRound are not worth sorting: the
@@ -38,8 +42,8 @@ constexpr std::uint32_t round_end(std::uint32_t b) { return b < kFirstRound ? kF
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
                                       unsigned threads = 1);
 
-/// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box (a
-/// radix sort on hilbert_key: linear time, no comparison).
+/// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box
+/// (hilbert_sort).
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);
 
 }  // namespace ridt::detail

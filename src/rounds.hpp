@@ -126,7 +126,7 @@ class RoundLocator {
     }
     auto sort_rounds = [&](unsigned t) {
       for (const std::size_t r : share[t])
-        sort_by_key(key.data(), by_round_.data() + first_[r], first_[r + 1] - first_[r]);
+        hilbert_sort(&kernel.point(0), key.data(), by_round_.data() + first_[r], first_[r + 1] - first_[r]);
     };
     std::vector<std::jthread> pool;
     for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_rounds, t);

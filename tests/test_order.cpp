@@ -98,5 +98,47 @@ TEST(HilbertOrder, SurvivesExtremeAndDegenerateBoxes) {
   EXPECT_TRUE(hilbert_order(nullptr, 0).empty());
 }
 
+double mean_step(const std::vector<Point>& pts, const std::vector<std::uint32_t>& order,
+                 std::uint32_t skip) {
+  double sum = 0;
+  std::size_t steps = 0;
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    if (order[i] == skip || order[i - 1] == skip) continue;
+    sum += std::hypot(pts[order[i]].x - pts[order[i - 1]].x, pts[order[i]].y - pts[order[i - 1]].y);
+    ++steps;
+  }
+  return sum / static_cast<double>(steps);
+}
+
+// One point at 1e30 beside 5,000 in the unit square: on the curve over the whole box they all
+// share one cell. Sorted again within it, their order is as fine as without the outlier (the
+// walk of --locate walk took minutes on such a set when it was not).
+TEST(HilbertOrder, AFarOutlierDoesNotCoarsenTheOrder) {
+  std::vector<Point> pts = generate(Distribution::Uniform, 5000, 4);
+  const double plain = mean_step(pts, hilbert_order(pts.data(), 5000), 5000);
+  pts.push_back({1e30, 1e30});
+  const double with_outlier = mean_step(pts, hilbert_order(pts.data(), 5001), 5000);
+  EXPECT_LT(with_outlier, 1.5 * plain);
+}
+
+// Clusters inside clusters, down to the subnormals, and many equal points: the refinement
+// ends (some 66 levels deep here), keeps every index, and keeps each level together.
+TEST(HilbertOrder, NestedClustersAndEqualPoints) {
+  std::vector<Point> pts;
+  const std::vector<Point> unit = generate(Distribution::Uniform, 100, 2);
+  for (int level = 0; level < 66; ++level)
+    for (const Point& p : unit) pts.push_back({std::ldexp(p.x, -16 * level), std::ldexp(p.y, -16 * level)});
+  pts.insert(pts.end(), 500, Point{0.5, 0.5});
+  const auto n = static_cast<std::uint32_t>(pts.size());
+  std::vector<std::uint32_t> order = hilbert_order(pts.data(), n);
+  std::vector<int> level_of(n);
+  for (std::uint32_t i = 0; i < n; ++i) level_of[i] = i < 6600 ? static_cast<int>(i / 100) : -1;
+  int changes = 0;
+  for (std::uint32_t i = 1; i < n; ++i) changes += level_of[order[i]] != level_of[order[i - 1]];
+  EXPECT_LT(changes, 2 * 67 + 4);
+  std::sort(order.begin(), order.end());
+  for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(order[i], i);
+}
+
 }  // namespace
 }  // namespace ridt::detail
