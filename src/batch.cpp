@@ -95,10 +95,10 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
 }  // namespace
 
 void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
-                  Stats& stats) {
+                  Stats& stats, Progress& progress) {
   if (threads == 1) {
     const auto t_start = Clock::now();
-    insert_serial(kernel, /*profile=*/false, duplicates, stats);
+    insert_serial(kernel, /*profile=*/false, duplicates, stats, progress);
     stats.per_thread.push_back({"modifier", kernel.n(), seconds(Clock::now() - t_start), 0, 0, 0});
     return;
   }
@@ -133,6 +133,7 @@ void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& d
         return s.filled.load(std::memory_order_acquire) == p + 1 ? &s : nullptr;
       };
       for (VertexId p = 0; p < n; ++p) {
+        progress(p);
         const Slot* s = ready(p);
         if (s == nullptr) {
           const auto t0 = Clock::now();

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <vector>
 
 #include "kernel.hpp"
@@ -15,21 +17,40 @@ struct DuplicateHit {
   VertexId vertex;
 };
 
+/// Options::progress, called on the calling thread each time some 2^16 more points are in.
+class Progress {
+ public:
+  Progress(const std::function<void(double)>& report, std::uint32_t n)
+      : report_(report), n_(n), next_(report ? 0 : kNever) {}
+  /// `done` of the n points are in; cheap when there is nothing to say.
+  void operator()(std::uint64_t done) {
+    if (done < next_) return;
+    next_ = done + kStep;
+    report_(n_ > 0 ? static_cast<double>(std::min<std::uint64_t>(done, n_)) / n_ : 1.0);
+  }
+
+ private:
+  static constexpr std::uint64_t kStep = 1u << 16;
+  static constexpr std::uint64_t kNever = std::numeric_limits<std::uint64_t>::max();
+  const std::function<void(double)>& report_;
+  std::uint64_t n_, next_;
+};
+
 /// Serial insertion of vertices 0 .. n-1 in that order (the paper's Fig. 4, lines 5-23).
 void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
-                   Stats& stats);
+                   Stats& stats, Progress& progress);
 
 /// The paper's Fig. 10 with `threads` workers (pessimistic.cpp).
 void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
-                        std::vector<DuplicateHit>& duplicates, Stats& stats);
+                        std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
 
 /// The optimistic method with `threads` workers (optimistic.cpp).
 void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
-                       std::vector<DuplicateHit>& duplicates, Stats& stats);
+                       std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
 
 /// The batch method: threads - 1 locators and one modifier (batch.cpp).
 void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
-                  Stats& stats);
+                  Stats& stats, Progress& progress);
 
 /// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
 /// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input

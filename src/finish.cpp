@@ -180,13 +180,24 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   s.dag_nodes = kernel.history() ? std::accumulate(made.begin(), made.end(), std::uint64_t{0}) : 0;
   if (s.distinct < 3) {
     out.warning = "fewer than three distinct points: no triangle";
-  } else if (count == 0) {
-    out.warning = "all points are collinear: no triangle";
+  } else if (count == 0 && options.bounding == Bounding::Symbolic) {
+    out.warning = "all points are collinear: no triangle";  // else there would be a triangle
   } else if (options.bounding == Bounding::Finite) {
-    // The paper's finite bounding triangle can leave a reflex boundary or drop points.
+    // The paper's finite bounding triangle can leave a reflex boundary or drop points, or
+    // every triangle, when the circle of a thin one holds a bounding vertex.
     std::vector<Point> pts(n);
     for (VertexId v = 0; v < n; ++v) pts[input_index[v]] = kernel.point(v);
     const std::size_t h = out.hull.size();
+    if (count == 0) {
+      VertexId far = 0;  // a point other than pts[0]
+      while (far < n && pts[far] == pts[0]) ++far;
+      bool collinear = true;
+      for (VertexId v = 0; collinear && v < n; ++v) collinear = orient2d(pts[0], pts[far], pts[v]) == 0;
+      if (collinear) {
+        out.warning = "all points are collinear: no triangle";
+        return out;
+      }
+    }
     bool convex = h == hull_edges.size();
     for (std::size_t i = 0; convex && i < h; ++i)
       convex = orient2d(pts[out.hull[i]], pts[out.hull[(i + 1) % h]],

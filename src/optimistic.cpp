@@ -149,7 +149,7 @@ void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId
 }  // namespace
 
 void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
-                       std::vector<DuplicateHit>& duplicates, Stats& stats) {
+                       std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
   std::vector<Worker> workers;
   workers.reserve(threads);
   for (unsigned w = 0; w < threads; ++w) {
@@ -160,7 +160,7 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
   const TickRate rate;
-  run_in_rounds(kernel, threads, barrier_wait,
+  run_in_rounds(kernel, threads, barrier_wait, progress,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   if (timed)
                     insert_chunk<true>(kernel, first, end, hint, workers[w]);

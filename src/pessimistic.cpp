@@ -66,13 +66,13 @@ void insert_chunk(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, 
 }  // namespace
 
 void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
-                        std::vector<DuplicateHit>& duplicates, Stats& stats) {
+                        std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
   SpinLock lock;
   std::vector<Worker> workers(threads);
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
   const TickRate rate;
-  run_in_rounds(kernel, threads, barrier_wait,
+  run_in_rounds(kernel, threads, barrier_wait, progress,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   // The ring pays on one thread; with several it pulls in lines that the lock
                   // holder may be writing.

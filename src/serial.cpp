@@ -19,10 +19,11 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 // location descends from the root one point at a time, as the paper does (no look-ahead), or
 // walks from the last insertion.
 void insert_profiled(Kernel& kernel, Scratch& scratch, std::vector<DuplicateHit>& duplicates,
-                     Stats& stats) {
+                     Stats& stats, Progress& progress) {
   TriangleId last = Kernel::kRoot;
   std::uint32_t rng = 1;
   for (VertexId p = 0; p < kernel.n(); ++p) {
+    progress(p);
     const auto t0 = Clock::now();
     last = kernel.history() ? kernel.descend(Kernel::kRoot, p) : kernel.walk(last, p, rng);
     const Kernel::Location where = kernel.classify(last, p);
@@ -43,10 +44,10 @@ void insert_profiled(Kernel& kernel, Scratch& scratch, std::vector<DuplicateHit>
 }  // namespace
 
 void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
-                   Stats& stats) {
+                   Stats& stats, Progress& progress) {
   Scratch scratch;
   if (profile) {
-    insert_profiled(kernel, scratch, duplicates, stats);
+    insert_profiled(kernel, scratch, duplicates, stats, progress);
   } else if (!kernel.history()) {
     // Walking (BRIO order only): each point walks from where the one before it ended, close
     // to it along the curve: some three steps, in cache. (Walking the next points ahead, to
@@ -54,6 +55,7 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
     TriangleId last = Kernel::kRoot;
     std::uint32_t rng = 1;
     for (VertexId p = 0; p < kernel.n(); ++p) {
+      progress(p);
       last = kernel.walk(last, p, rng);
       const VertexId hit = kernel.insert_at(kernel.classify(last, p), p, scratch);
       if (hit != kNone) duplicates.push_back({p, hit});
@@ -71,6 +73,7 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
       LookAhead ahead(kernel, first, end, /*ring=*/true, hint.data());
       for (VertexId i = 0; i < ahead.count(); ++i) {
         const VertexId p = first + i;
+        progress(p);
         const TriangleId leaf = kernel.descend(ahead.take(i).node, p);
         const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
         if (hit != kNone) duplicates.push_back({p, hit});

@@ -135,12 +135,12 @@ inline void add_worker(const Scratch& scratch, const std::vector<DuplicateHit>& 
 /// handed out in chunks from a counter, so a worker on a faster (or less shared) core takes
 /// more of it and nobody waits long at the end of a round: insert_chunk(w, begin, end, hint)
 /// inserts the points [begin, end), hint[v - begin] being a leaf that held point v when the
-/// round began. Worker 0 is the calling thread. `wait[w]` receives the time worker w spent
+/// round began. Worker 0 is the calling thread, and reports `progress` after its chunks. `wait[w]` receives the time worker w spent
 /// waiting for the others. The first exception of any worker is rethrown once all have
 /// stopped; the others stop at the next phase.
 template <class InsertChunk>
 void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::duration>& wait,
-                   InsertChunk&& insert_chunk) {
+                   Progress& progress, InsertChunk&& insert_chunk) {
   const RoundLocator rounds(kernel, threads);
   std::vector<TriangleId> hint(rounds.largest());
   // Per round, the next position to locate (along the curve) and to insert (in the order).
@@ -176,6 +176,7 @@ void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::du
                          (b = inserted[r].fetch_add(kInsertChunk, std::memory_order_relaxed)) < end;) {
           const VertexId e = std::min<std::uint64_t>(end, std::uint64_t{b} + kInsertChunk);
           insert_chunk(w, b, e, hint.data() + (b - first));
+          if (w == 0) progress(e);
         }
         arrive();
       }

@@ -123,28 +123,30 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   {
     detail::Kernel kernel(std::move(pts), n, symbolic, brio, /*history=*/!walk);
     std::vector<detail::DuplicateHit> duplicates;
+    detail::Progress progress(options.progress, n);
     const auto t_insert = std::chrono::steady_clock::now();
     switch (options.method) {
       case Method::Serial:
-        detail::insert_serial(kernel, options.profile, duplicates, stats);
+        detail::insert_serial(kernel, options.profile, duplicates, stats, progress);
         break;
       case Method::Pessimistic:
         stats.threads = threads;
         detail::insert_pessimistic(kernel, threads, options.paper_locking, options.time_threads,
-                                   duplicates, stats);
+                                   duplicates, stats, progress);
         break;
       case Method::Optimistic:
         stats.threads = threads;
-        detail::insert_optimistic(kernel, threads, options.time_threads, duplicates, stats);
+        detail::insert_optimistic(kernel, threads, options.time_threads, duplicates, stats, progress);
         break;
       case Method::Batch:
         stats.threads = threads;
-        detail::insert_batch(kernel, threads, duplicates, stats);
+        detail::insert_batch(kernel, threads, duplicates, stats, progress);
         break;
     }
     stats.time_insert_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t_insert).count();
     if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
+    if (options.progress) options.progress(1.0);
     out = detail::finish(kernel, order, duplicates, options, threads);
   }
   // After the DAG is gone, so that the sort's copies do not raise the peak.

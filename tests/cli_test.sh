@@ -155,5 +155,18 @@ expect 0 "big points" -- "$ridt" generate --dist uniform -n 150000 -o "$dir/big.
 expect 2 "svg too big" -- "$ridt" triangulate "$dir/big.bin" -o "$dir/big.svg"
 stderr_has "too many"; absent "$dir/big.svg"
 
+# Progress: a line on stderr when it is a terminal (here a pseudo-terminal from script(1)),
+# never when stderr is piped; --stats on stdout stays one JSON object either way.
+expect 0 "million points" -- "$ridt" generate --dist uniform -n 1000000 -o "$dir/million.bin"
+if command -v script >/dev/null; then
+  script -qec "'$ridt' triangulate '$dir/million.bin' --method optimistic --threads 2" /dev/null >"$dir/tty" 2>&1
+  grep -q "ridt: inserting .*%" "$dir/tty" && pass || fail "no progress line on a terminal"
+else
+  echo "cli: script(1) missing, progress on a terminal not tested"
+fi
+expect 0 "progress piped" -- "$ridt" triangulate "$dir/million.bin" --stats
+[ ! -s "$dir/err" ] && pass || fail "stderr not empty when piped"
+python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$dir/out" && pass || fail "stats not JSON"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -8,6 +8,7 @@
 
 #include "helpers.hpp"
 #include "order.hpp"
+#include "predicates.hpp"
 
 namespace ridt::test {
 namespace {
@@ -94,6 +95,26 @@ TEST(Regression, FiniteBoundingTriangleAroundTinyAndFlatSets) {
       EXPECT_NE(t.warning.find("lost convex hull edges"), std::string::npos) << problem;
     }
   }
+}
+
+// fuzz_triangulate (30 minutes): three nearly collinear points (a vertical line rotated by
+// 1e-3 radians, rounded) with the finite bounding triangle. The circle of their thin triangle
+// holds a bounding vertex, so no triangle survives, and the run said "all points are
+// collinear", which they are not. It must say that the finite triangle lost the hull.
+TEST(Regression, FiniteBoundingTriangleLosingEveryTriangleSaysSo) {
+  const double c = std::cos(1e-3), s = std::sin(1e-3);
+  auto rotated = [&](double x, double y) { return Point{c * x - s * y, s * x + c * y}; };
+  const std::vector<Point> pts = {rotated(-3, 1), rotated(-3, -3), rotated(-3, -3), rotated(-3, -3),
+                                  rotated(-3, -3), rotated(-3, -3), rotated(-3, 2)};
+  ASSERT_NE(detail::orient2d(pts[0], pts[1], pts[6]), 0);  // not collinear
+  Options finite;
+  finite.bounding = Bounding::Finite;
+  const Triangulation t = triangulate(pts, finite);
+  EXPECT_EQ(t.size(), 0u);
+  EXPECT_NE(t.warning.find("lost convex hull edges"), std::string::npos) << t.warning;
+  // The symbolic triangle gets the one triangle.
+  EXPECT_EQ(audit(pts, triangulate(pts)), "");
+  EXPECT_EQ(triangulate(pts).size(), 1u);
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // input; their statistics add up. These tests also run under ThreadSanitizer.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "generate.hpp"
 #include "helpers.hpp"
@@ -191,6 +193,43 @@ TEST(Threaded, ProfilingIsSerialOnly) {
   o.method = Method::Pessimistic;
   o.profile = true;
   EXPECT_THROW(triangulate(generate(Distribution::Uniform, 100, 1), o), InputError);
+}
+
+// Options::progress: called on the calling thread, in order, from 0 to 1, by every method;
+// throwing from it abandons the run cleanly (under ThreadSanitizer too), and the next run is
+// unaffected.
+TEST(Progress, ReportedByEveryMethodAndCanAbandonTheRun) {
+  struct Abandon {};
+  const std::vector<Point> pts = generate(Distribution::Uniform, 140000, 5);
+  const Triangulation expected = triangulate(pts);
+  for (const Method m : {Method::Serial, Method::Pessimistic, Method::Optimistic, Method::Batch}) {
+    for (const Locate where : {Locate::Dag, Locate::Walk}) {
+      if (where == Locate::Walk && m != Method::Serial) continue;
+      Options o;
+      o.method = m;
+      o.locate = where;
+      o.threads = 2;
+      std::vector<double> seen;
+      const std::thread::id caller = std::this_thread::get_id();
+      bool other_thread = false;
+      o.progress = [&](double f) {
+        seen.push_back(f);
+        other_thread = other_thread || std::this_thread::get_id() != caller;
+      };
+      EXPECT_EQ(compare(triangulate(pts, o), expected), "");
+      EXPECT_FALSE(other_thread);
+      ASSERT_GE(seen.size(), 3u);  // 140,000 points: every 65,536 and the end
+      EXPECT_LT(seen.front(), 0.1);
+      EXPECT_EQ(seen.back(), 1.0);
+      EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+      o.progress = [](double f) {
+        if (f > 0.3) throw Abandon{};
+      };
+      EXPECT_THROW(triangulate(pts, o), Abandon);
+      o.progress = nullptr;
+      EXPECT_EQ(compare(triangulate(pts, o), expected), "");
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),

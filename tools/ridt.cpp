@@ -6,6 +6,7 @@
 //   ridt check POINTS TRIANGLES
 // Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage.
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -35,6 +36,46 @@ long long peak_rss_bytes() {
   getrusage(RUSAGE_SELF, &u);
   return static_cast<long long>(u.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
+
+// One line on stderr that says how far a long run is, only when stderr is a terminal: never
+// in a pipe or a file, and never on stdout, where --stats goes. It appears once the run has
+// taken half a second, changes at most ten times a second, and is erased when done.
+class ProgressLine {
+ public:
+  ProgressLine() : on_(isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+  ~ProgressLine() { clear(); }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  bool on() const { return on_; }
+
+  /// "ridt: PHASE" and, for a fraction in [0, 1), its percentage.
+  void show(const char* phase, double fraction = -1) {
+    if (!on_) return;
+    const double now = seconds_since(start_);
+    if (now < 0.5 || (shown_ && now - last_ < 0.1 && phase == phase_)) return;
+    if (fraction >= 0 && fraction < 1)
+      std::fprintf(stderr, "\r\033[Kridt: %s %3.0f%%", phase, 100 * fraction);
+    else
+      std::fprintf(stderr, "\r\033[Kridt: %s", phase);
+    std::fflush(stderr);
+    shown_ = true, last_ = now, phase_ = phase;
+  }
+
+  /// Erases the line (before a message, and at the end).
+  void clear() {
+    if (!shown_) return;
+    std::fputs("\r\033[K", stderr);
+    std::fflush(stderr);
+    shown_ = false;
+  }
+
+ private:
+  bool on_, shown_ = false;
+  std::chrono::steady_clock::time_point start_;
+  double last_ = 0;
+  const char* phase_ = nullptr;
+};
 
 struct TriangulateArgs {
   std::string input, output, bounding = "symbolic", method = "serial", stats;
@@ -162,13 +203,21 @@ int run_triangulate(const TriangulateArgs& a) {
     throw ridt::InputError("unknown stats format '" + a.stats + "' (use json or table)");
   if (!a.output.empty()) ridt::io::check_triangulation_extension(a.output);
 
+  ProgressLine progress;
+  if (progress.on())
+    o.progress = [&](double done) { progress.show(done < 1 ? "inserting" : "finishing", done); };
   auto t0 = std::chrono::steady_clock::now();
   const ridt::io::PointFile in = ridt::io::read_points(a.input);
   const double t_read = seconds_since(t0);
   const ridt::Triangulation t = ridt::triangulate(in.points, o);
+  progress.clear();
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
   t0 = std::chrono::steady_clock::now();
-  if (!a.output.empty()) ridt::io::write_triangulation(a.output, in.points, t, in.first_index);
+  if (!a.output.empty()) {
+    progress.show("writing");
+    ridt::io::write_triangulation(a.output, in.points, t, in.first_index);
+    progress.clear();
+  }
   const double t_write = seconds_since(t0);
   if (!a.stats.empty() || a.profile) print_stats(a, t, t_read, t_write, a.stats == "table");
   return 0;

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -83,6 +84,10 @@ struct Options {
   bool canonical_order = false;
   /// Time the phases of insertion (locate, split, legalize): the paper's Fig. 8.
   bool profile = false;
+  /// Called with the share of the points inserted so far (0 to 1), on the calling thread, each
+  /// time some 65,536 more are in, and with 1 when all are. It may throw to abandon the run:
+  /// the exception reaches the caller of triangulate once every worker has stopped.
+  std::function<void(double)> progress;
 };
 
 /// What one thread did (the paper's Tables 2 and 3, per thread).

@@ -1,0 +1,230 @@
+// Adversarial point sets, each triangulated by every method, order and location mode. Every
+// result passes the whole audit (the exact validator, neighbours, hull, duplicates) and all of
+// them are the same triangulation.
+//
+// The sets: 100,000 integer points on one circle; a triangle with 30,000 points on each edge;
+// a 1000 x 1000 grid rotated by a small angle; these three scaled by 1e-300 and by 1e300 and
+// shifted by 1e15; integers near 2^53; one far outlier beside a million points; points on a
+// parabola; many copies of one point and one other point.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "generate.hpp"
+#include "helpers.hpp"
+#include "random.hpp"
+
+namespace ridt::test {
+namespace {
+
+// --- The sets ---
+
+// Integer points on the circle x^2 + y^2 = N, N the product of the 15 smallest primes that are
+// 1 mod 4. Each such prime is a product of Gaussian primes (a + bi)(a - bi); picking one of the
+// two for each prime, times a unit, gives every one of the 4 * 2^15 = 131,072 lattice points on
+// the circle. Their coordinates stay below 4.2e12, so they are exact in doubles. `count` of
+// them, picked at random.
+std::vector<Point> cocircular(std::size_t count) {
+  const int primes[] = {5, 13, 17, 29, 37, 41, 53, 61, 73, 89, 97, 101, 109, 113, 137};
+  struct Gaussian {
+    std::int64_t re, im;
+  };
+  std::vector<Gaussian> factor;
+  for (int p : primes)
+    for (std::int64_t a = 1; a * a < p; ++a) {
+      const auto b = static_cast<std::int64_t>(std::llround(std::sqrt(p - a * a)));
+      if (a * a + b * b == p && a > b) factor.push_back({a, b});
+    }
+  EXPECT_EQ(factor.size(), 15u);
+  std::vector<Point> pts;
+  for (std::uint32_t pick = 0; pick < (1u << 15); ++pick) {
+    Gaussian z{1, 0};
+    for (std::size_t i = 0; i < factor.size(); ++i) {
+      const std::int64_t a = factor[i].re, b = (pick >> i & 1) ? -factor[i].im : factor[i].im;
+      z = {z.re * a - z.im * b, z.re * b + z.im * a};
+    }
+    for (int unit = 0; unit < 4; ++unit) {
+      pts.push_back({static_cast<double>(z.re), static_cast<double>(z.im)});
+      z = {-z.im, z.re};  // times i
+    }
+  }
+  detail::Rng rng(5);
+  for (std::size_t i = pts.size(); i > 1; --i) std::swap(pts[i - 1], pts[rng.below(i)]);
+  pts.resize(count);
+  return pts;
+}
+
+// The triangle (0, 0), (2^20, 0), (0, 2^20) with `per_edge` integer points on each edge, all
+// of them on the hull, and `inside` random integer points strictly inside.
+std::vector<Point> collinear_hull(int per_edge, int inside) {
+  const double n = 0x1p20;
+  std::vector<Point> pts;
+  detail::Rng rng(6);
+  for (int i = 0; i < per_edge; ++i) {
+    const double t = std::floor(n * i / per_edge);
+    pts.push_back({t, 0});
+    pts.push_back({0, n - t});
+    pts.push_back({n - t, t});
+  }
+  while (static_cast<int>(pts.size()) < 3 * per_edge + inside) {
+    const double x = 1 + static_cast<double>(rng.below(1u << 20)), y = 1 + static_cast<double>(rng.below(1u << 20));
+    if (x + y < n) pts.push_back({x, y});
+  }
+  return pts;
+}
+
+// A side x side integer grid rotated by `angle` radians about the origin (rounded).
+std::vector<Point> rotated_grid(int side, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  std::vector<Point> pts;
+  pts.reserve(static_cast<std::size_t>(side) * side);
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) pts.push_back({c * i - s * j, s * i + c * j});
+  return pts;
+}
+
+// Scaled by `factor` after an exact power-of-two scaling that brings the largest coordinate
+// below 2^12, so that 1e300 cannot overflow.
+std::vector<Point> scaled(std::vector<Point> pts, double factor) {
+  double largest = 0;
+  for (const Point& p : pts) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)});
+  int e = 0;
+  std::frexp(largest, &e);
+  const int down = std::min(0, 12 - e);
+  for (Point& p : pts) p = {std::ldexp(p.x, down) * factor, std::ldexp(p.y, down) * factor};
+  return pts;
+}
+
+std::vector<Point> shifted(std::vector<Point> pts, double by) {
+  for (Point& p : pts) p = {p.x + by, p.y + by};
+  return pts;
+}
+
+// A 300 x 300 grid of integers just below 2^53 and 10,000 random integers among them (some
+// land on grid points: duplicates).
+std::vector<Point> near_2_to_53() {
+  const double top = 0x1p53;
+  std::vector<Point> pts;
+  for (int i = 1; i <= 300; ++i)
+    for (int j = 1; j <= 300; ++j) pts.push_back({top - i, top - j});
+  detail::Rng rng(7);
+  for (int k = 0; k < 10000; ++k)
+    pts.push_back({top - 1 - static_cast<double>(rng.below(300)),
+                   top - 1 - static_cast<double>(rng.below(1u << 20))});
+  return pts;
+}
+
+// A million uniform points in the unit square and one at (1e30, -1e30).
+std::vector<Point> far_outlier() {
+  std::vector<Point> pts = generate(Distribution::Uniform, 1000000, 8);
+  pts.push_back({1e30, -1e30});
+  return pts;
+}
+
+// (t, t^2) for the integers -50,000 <= t < 50,000: all on the hull, and every symmetric
+// quadruple (+-s, s^2), (+-t, t^2) is cocircular.
+std::vector<Point> parabola() {
+  std::vector<Point> pts;
+  for (int t = -50000; t < 50000; ++t) pts.push_back({double(t), double(t) * t});
+  return pts;
+}
+
+// 100,000 copies of one point and one other point: nothing to triangulate.
+std::vector<Point> identical_but_one() {
+  std::vector<Point> pts(100000, Point{0.1, 0.7});
+  pts.insert(pts.begin() + 50000, Point{0.3, 0.7});
+  return pts;
+}
+
+struct Set {
+  std::string name;
+  std::function<std::vector<Point>()> make;
+};
+
+std::vector<Set> sets() {
+  std::vector<Set> out = {
+      {"cocircular", [] { return cocircular(100000); }},
+      {"collinear_hull", [] { return collinear_hull(30000, 100000); }},
+      {"rotated_grid", [] { return rotated_grid(1000, 1e-3); }},
+  };
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Set base = out[i];
+    out.push_back({base.name + "_times_1e_minus_300", [base] { return scaled(base.make(), 1e-300); }});
+    out.push_back({base.name + "_times_1e300", [base] { return scaled(base.make(), 1e300); }});
+    out.push_back({base.name + "_plus_1e15", [base] { return shifted(base.make(), 1e15); }});
+  }
+  out.push_back({"near_2_to_53", near_2_to_53});
+  out.push_back({"far_outlier", far_outlier});
+  out.push_back({"parabola", parabola});
+  out.push_back({"identical_but_one", identical_but_one});
+  return out;
+}
+
+// --- Every method on each set ---
+
+struct Mode {
+  const char* name;
+  Method method;
+  Order order;
+  Locate locate;
+};
+constexpr Mode kModes[] = {
+    {"serial random dag", Method::Serial, Order::Random, Locate::Dag},
+    {"serial brio dag", Method::Serial, Order::Brio, Locate::Dag},
+    {"serial brio walk", Method::Serial, Order::Brio, Locate::Walk},
+    {"pessimistic 2", Method::Pessimistic, Order::Brio, Locate::Dag},
+    {"optimistic 2", Method::Optimistic, Order::Brio, Locate::Dag},
+    {"batch 2", Method::Batch, Order::Brio, Locate::Dag},
+};
+
+class Adversarial : public ::testing::TestWithParam<Set> {};
+
+TEST_P(Adversarial, EveryMethodGivesTheSameSoundTriangulation) {
+  const std::vector<Point> pts = GetParam().make();
+  Triangulation first;
+  for (const Mode& r : kModes) {
+    Options o;
+    o.method = r.method;
+    o.order = r.order;
+    o.locate = r.locate;
+    o.threads = 2;
+    Triangulation t = triangulate(pts, o);
+    EXPECT_EQ(audit(pts, t), "") << r.name;
+    if (&r == &kModes[0]) {
+      first = std::move(t);
+    } else {
+      EXPECT_EQ(compare(first, t), "") << r.name;
+    }
+  }
+  // What each set must give, beyond soundness.
+  const std::string& name = GetParam().name;
+  if (name == "cocircular" || name == "cocircular_plus_1e15") {
+    EXPECT_EQ(first.hull.size(), 100000u);  // still exactly cocircular
+    EXPECT_EQ(first.size(), 99998u);
+  }
+  if (name == "collinear_hull") {
+    EXPECT_EQ(first.hull.size(), 90000u);
+  }
+  if (name == "parabola") {
+    EXPECT_EQ(first.hull.size(), 100000u);
+  }
+  if (name == "far_outlier") {
+    EXPECT_EQ(first.stats.distinct, 1000001u);
+  }
+  if (name == "identical_but_one") {
+    EXPECT_EQ(first.size(), 0u);
+    EXPECT_EQ(first.duplicates.size(), 99999u);
+    EXPECT_NE(first.warning.find("fewer than three distinct points"), std::string::npos) << first.warning;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Sets, Adversarial, ::testing::ValuesIn(sets()),
+                         [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace ridt::test
