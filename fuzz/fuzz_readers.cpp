@@ -2,19 +2,23 @@
 //
 // The first byte picks the format, the rest is the file's content. A reader must either
 // throw IoError or return what it promises: finite points that survive writing and reading
-// back bit for bit in every point format, and whole triangles. Any other exception, a crash
-// or a sanitizer report is a finding.
+// back bit for bit in every point format, and whole triangles, which the exact validator then
+// judges against a small point set without failing. Any other exception, a crash or a
+// sanitizer report is a finding.
 #include <unistd.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io.hpp"
+#include "ridt/check.hpp"
 
 namespace {
 
@@ -78,6 +82,13 @@ void triangles(std::string_view data, const char* name, int first_index) {
     return;
   }
   if (tris.size() % 3 != 0) finding("a triangle file gave a partial triangle");
+  // The validator takes any triangle list: out-of-range indices, repeated and flipped
+  // triangles, against points with a duplicate and three on a line.
+  static const std::vector<Point> points = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0.5, 0.5},
+                                            {2, 2}, {0, 0}, {3, 0}, {0.25, 0.75}};
+  const ridt::CheckResult verdict = ridt::check(points, tris);
+  if (verdict.valid != (verdict.problems == 0) || verdict.message.empty())
+    finding("the validator's verdict does not add up: " + verdict.message);
 }
 
 }  // namespace

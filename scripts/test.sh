@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
-# and UndefinedBehaviorSanitizer, the threaded tests under ThreadSanitizer, and a consumer
-# project that uses find_package(ridt).
+# and UndefinedBehaviorSanitizer (the adversarial sets at a tenth of their size there), the
+# threaded tests under ThreadSanitizer, a consumer project that uses find_package(ridt), and a
+# minute of fuzzing for each fuzz target (scripts/fuzz.sh; longer runs: scripts/fuzz.sh 3600).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh test
@@ -19,7 +20,7 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=address,undefined \
   -DRIDT_BUILD_TESTS=ON -DRIDT_BUILD_TOOLS=ON -DRIDT_BUILD_BENCH=OFF >/dev/null
 cmake --build build-asan -j "$jobs"
-UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 \
+UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 RIDT_ADVERSARIAL_SCALE=0.1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure --no-tests=error
 
 echo "== ThreadSanitizer: the threaded tests"
@@ -34,4 +35,7 @@ cmake --install build --prefix build/install >/dev/null
 cmake -S tests/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
 cmake --build build/consumer
 build/consumer/consumer
+
+echo "== Fuzzing, a minute a target"
+scripts/fuzz.sh 60
 echo "all tests passed"

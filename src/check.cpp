@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <numeric>
 #include <sstream>
-#include <unordered_map>
 #include <vector>
 
 #include "predicates.hpp"
@@ -16,8 +15,6 @@ namespace {
 
 using detail::incircle;
 using detail::orient2d;
-
-std::uint64_t edge_key(VertexId a, VertexId b) { return (std::uint64_t{a} << 32) | b; }
 
 class Report {
  public:
@@ -64,12 +61,21 @@ CheckResult check(std::span<const Point> pts, std::span<const VertexId> tris) {
   const std::size_t count = tris.size() / 3;
   if (tris.size() % 3 != 0) report.problem("the triangle list is not a multiple of 3 long");
 
-  // Distinct points: sort, then group equal coordinates.
+  // Distinct points: sort (the coordinates travel with the index, so the comparisons read
+  // memory in order), then group equal coordinates.
   std::vector<VertexId> sorted(n);
-  std::iota(sorted.begin(), sorted.end(), VertexId{0});
-  std::sort(sorted.begin(), sorted.end(), [&](VertexId a, VertexId b) {
-    return detail::lex_less(pts[a], pts[b]) || (pts[a] == pts[b] && a < b);
-  });
+  {
+    struct Entry {
+      Point p;
+      VertexId i;
+    };
+    std::vector<Entry> entries(n);
+    for (std::size_t i = 0; i < n; ++i) entries[i] = {pts[i], static_cast<VertexId>(i)};
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+      return detail::lex_less(a.p, b.p) || (a.p == b.p && a.i < b.i);
+    });
+    for (std::size_t i = 0; i < n; ++i) sorted[i] = entries[i].i;
+  }
   std::vector<VertexId> distinct;  // first index of each group, in lexicographic order
   for (std::size_t i = 0; i < n; ++i)
     if (i == 0 || !(pts[sorted[i]] == pts[sorted[i - 1]])) distinct.push_back(sorted[i]);
@@ -79,9 +85,7 @@ CheckResult check(std::span<const Point> pts, std::span<const VertexId> tris) {
     collinear = orient2d(pts[distinct[0]], pts[distinct[1]], pts[distinct[i]]) == 0;
   const bool degenerate = distinct.size() < 3 || collinear;
 
-  // Triangles: indices, orientation, directed edges.
-  std::unordered_map<std::uint64_t, std::uint32_t> edges;  // directed edge -> triangle
-  edges.reserve(3 * count);
+  // Triangles: indices and orientation.
   std::vector<std::uint8_t> used(n, 0);
   for (std::size_t t = 0; t < count; ++t) {
     const VertexId* v = &tris[3 * t];
@@ -92,12 +96,7 @@ CheckResult check(std::span<const Point> pts, std::span<const VertexId> tris) {
     if (orient2d(pts[v[0]], pts[v[1]], pts[v[2]]) <= 0)
       report.problem("triangle ", t, " (", v[0], " ", v[1], " ", v[2],
                      ") is not counter-clockwise or is degenerate");
-    for (int i = 0; i < 3; ++i) {
-      used[v[i]] = 1;
-      const VertexId a = v[(i + 1) % 3], b = v[(i + 2) % 3];
-      if (!edges.emplace(edge_key(a, b), static_cast<std::uint32_t>(t)).second)
-        report.problem("edge ", a, "->", b, " is used by two triangles");
-    }
+    used[v[0]] = used[v[1]] = used[v[2]] = 1;
   }
   if (report.problems() > 0) {
     std::ostringstream s;
@@ -105,22 +104,57 @@ CheckResult check(std::span<const Point> pts, std::span<const VertexId> tris) {
     return {false, s.str(), report.problems()};
   }
 
-  // Local Delaunay on interior edges; boundary edges collected.
-  std::vector<std::pair<VertexId, VertexId>> boundary;
-  for (const auto& [key, t] : edges) {
-    const auto a = static_cast<VertexId>(key >> 32), b = static_cast<VertexId>(key);
-    const auto twin = edges.find(edge_key(b, a));
-    if (twin == edges.end()) {
-      boundary.emplace_back(a, b);
-      continue;
+  // Edges: every side of every triangle, filed under its smaller vertex (a counting sort),
+  // then ordered by the larger one within each file, so that the two sides of an interior
+  // edge lie next to each other. Linear time but for vertices of very high degree.
+  struct Side {
+    VertexId hi;
+    std::uint32_t tri_dir;  // triangle * 2 + (1 if the triangle runs lo -> hi)
+  };
+  std::vector<std::uint32_t> file(n + 1, 0);
+  for (std::size_t k = 0; k < 3 * count; ++k) {
+    const VertexId a = tris[k], b = tris[k % 3 == 2 ? k - 2 : k + 1];
+    ++file[std::min(a, b) + 1];
+  }
+  std::partial_sum(file.begin(), file.end(), file.begin());
+  std::vector<Side> sides(3 * count);
+  {
+    std::vector<std::uint32_t> at(file.begin(), file.end() - 1);
+    for (std::size_t k = 0; k < 3 * count; ++k) {
+      const VertexId a = tris[k], b = tris[k % 3 == 2 ? k - 2 : k + 1];
+      const auto t = static_cast<std::uint32_t>(k / 3);
+      sides[at[std::min(a, b)]++] = {std::max(a, b), 2 * t + (a < b ? 1u : 0u)};
     }
-    if (a > b) continue;  // test each interior edge once
-    const VertexId* v = &tris[3 * t];
-    const VertexId* w = &tris[3 * twin->second];
-    const VertexId opposite = w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
-    if (incircle(pts[v[0]], pts[v[1]], pts[v[2]], pts[opposite]) > 0)
-      report.problem("edge ", a, "-", b, " is not locally Delaunay (vertex ", opposite,
-                     " lies inside the circle of triangle ", t, ")");
+  }
+  // The vertex of triangle t opposite its edge {a, b}.
+  auto opposite = [&](std::uint32_t t, VertexId a, VertexId b) {
+    const VertexId* w = &tris[3 * std::size_t{t}];
+    return w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
+  };
+  std::vector<std::pair<VertexId, VertexId>> boundary;  // directed as their triangles run
+  for (VertexId lo = 0; lo < n; ++lo) {
+    Side* const begin = sides.data() + file[lo];
+    Side* const end = sides.data() + file[lo + 1];
+    std::sort(begin, end, [](const Side& x, const Side& y) {
+      return x.hi < y.hi || (x.hi == y.hi && x.tri_dir < y.tri_dir);
+    });
+    for (Side* e = begin; e != end;) {
+      Side* run = e;
+      while (e != end && e->hi == run->hi) ++e;
+      const VertexId hi = run->hi;
+      if (e - run == 1) {
+        if (run->tri_dir & 1) boundary.emplace_back(lo, hi); else boundary.emplace_back(hi, lo);
+      } else if (e - run > 2 || (run[0].tri_dir & 1) == (run[1].tri_dir & 1)) {
+        report.problem("edge ", lo, "-", hi, " is used by two triangles in the same direction");
+      } else {
+        const std::uint32_t t = run[0].tri_dir >> 1, u = run[1].tri_dir >> 1;
+        const VertexId* v = &tris[3 * std::size_t{t}];
+        const VertexId o = opposite(u, lo, hi);
+        if (incircle(pts[v[0]], pts[v[1]], pts[v[2]], pts[o]) > 0)
+          report.problem("edge ", lo, "-", hi, " is not locally Delaunay (vertex ", o,
+                         " lies inside the circle of triangle ", t, ")");
+      }
+    }
   }
 
   // Vertices: every distinct point exactly once.
