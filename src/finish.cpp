@@ -20,11 +20,25 @@ void canonicalize(Triangulation& out) {
     std::rotate(v, v + s, v + 3);
     std::rotate(n, n + s, n + 3);
   }
+  // Sorted by first vertex with a counting sort (the first vertex of a triangle is now its
+  // smallest, and each vertex is first in some two triangles), then each group by the other
+  // two vertices: linear time, where a comparison sort through the indices missed the cache
+  // at every step.
+  VertexId first_max = 0;
+  for (std::size_t t = 0; t < count; ++t) first_max = std::max(first_max, tv[3 * t]);
+  std::vector<std::uint32_t> start(count > 0 ? std::size_t{first_max} + 2 : 1, 0);
+  for (std::size_t t = 0; t < count; ++t) ++start[tv[3 * t] + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
   std::vector<std::uint32_t> order(count);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::lexicographical_compare(&tv[3 * a], &tv[3 * a + 3], &tv[3 * b], &tv[3 * b + 3]);
-  });
+  // start[a] runs to the end of group a while it is filled, then moves back one place.
+  for (std::size_t t = 0; t < count; ++t) order[start[tv[3 * t]]++] = static_cast<std::uint32_t>(t);
+  std::copy_backward(start.begin(), start.end() - 1, start.end());
+  start[0] = 0;
+  for (std::size_t a = 0; a + 1 < start.size(); ++a)
+    if (start[a + 1] - start[a] > 1)
+      std::sort(order.begin() + start[a], order.begin() + start[a + 1], [&](std::uint32_t x, std::uint32_t y) {
+        return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
+      });
   std::vector<std::int32_t> rank(count);
   for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
   std::vector<VertexId> v2(3 * count);
