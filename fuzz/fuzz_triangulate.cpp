@@ -58,48 +58,26 @@ std::vector<Point> points_of(const std::uint8_t* bytes, std::size_t size) {
   return pts;
 }
 
-struct Run {
-  const char* name;
-  Method method;
-  unsigned threads;
-  Order order;
-  Locate locate;
-};
-
-constexpr Run kRuns[] = {
-    {"serial random dag", Method::Serial, 1, Order::Random, Locate::Dag},
-    {"serial brio dag", Method::Serial, 1, Order::Brio, Locate::Dag},
-    {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk},
-    {"pessimistic 2 random", Method::Pessimistic, 2, Order::Random, Locate::Dag},
-    {"pessimistic 3 brio", Method::Pessimistic, 3, Order::Brio, Locate::Dag},
-    {"optimistic 2 brio", Method::Optimistic, 2, Order::Brio, Locate::Dag},
-    {"optimistic 3 random", Method::Optimistic, 3, Order::Random, Locate::Dag},
-    {"batch 2 brio", Method::Batch, 2, Order::Brio, Locate::Dag},
-    {"batch 3 random", Method::Batch, 3, Order::Random, Locate::Dag},
-};
+// Every method and mode; the threaded ones on 2 threads in the BRIO order and on 3 in the
+// random order.
+const std::vector<test::Mode>& modes() {
+  static const std::vector<test::Mode> all = [] {
+    std::vector<test::Mode> m = test::every_mode(2);
+    for (const test::Mode& more : test::every_mode(3, Order::Random))
+      if (more.method != Method::Serial) m.push_back(more);
+    return m;
+  }();
+  return all;
+}
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
   if (size == 0 || size > 4097) return 0;
   const std::vector<Point> pts = points_of(bytes, size);
-  Triangulation first;
-  for (const Run& run : kRuns) {
-    Options o;
-    o.method = run.method;
-    o.threads = run.threads;
-    o.order = run.order;
-    o.locate = run.locate;
-    o.seed = size;  // a different order for each length
-    const Triangulation t = triangulate(pts, o);
-    const std::string problem = test::audit(pts, t);
-    if (!problem.empty()) finding(std::string(run.name) + ": " + problem);
-    if (&run == &kRuns[0]) {
-      first = t;
-    } else if (const std::string diff = test::compare(first, t); !diff.empty()) {
-      finding(std::string(run.name) + " differs from " + kRuns[0].name + ": " + diff);
-    }
-  }
+  // A different order for each length.
+  if (const std::string problem = test::audit_every_mode(pts, modes(), size); !problem.empty())
+    finding(problem);
   // The paper's finite bounding triangle: right, or it says that it lost hull edges.
   Options finite;
   finite.bounding = Bounding::Finite;

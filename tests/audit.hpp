@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <numeric>
 #include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -129,6 +130,61 @@ inline std::string compare(const Triangulation& a, const Triangulation& b) {
     if (a.duplicates[i].dropped != b.duplicates[i].dropped ||
         a.duplicates[i].kept != b.duplicates[i].kept)
       return "different duplicates";
+  return "";
+}
+
+/// One way to run a triangulation.
+struct Mode {
+  std::string name;
+  Method method = Method::Serial;
+  unsigned threads = 1;
+  Order order = Order::Brio;
+  Locate locate = Locate::Dag;
+
+  Options options(std::uint64_t seed = 1) const {
+    Options o;
+    o.method = method;
+    o.threads = threads;
+    o.order = order;
+    o.locate = locate;
+    o.seed = seed;
+    return o;
+  }
+};
+
+/// The serial method in both orders and walking, and each threaded method on `threads`
+/// threads in `threaded_order`.
+inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Order::Brio) {
+  std::vector<Mode> modes = {{"serial random dag", Method::Serial, 1, Order::Random, Locate::Dag},
+                             {"serial brio dag", Method::Serial, 1, Order::Brio, Locate::Dag},
+                             {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk}};
+  for (const auto& [name, method] : {std::pair{"pessimistic", Method::Pessimistic},
+                                     std::pair{"optimistic", Method::Optimistic},
+                                     std::pair{"batch", Method::Batch}}) {
+    std::ostringstream label;
+    label << name << ' ' << threads << (threaded_order == Order::Brio ? " brio" : " random");
+    modes.push_back({label.str(), method, threads, threaded_order, Locate::Dag});
+  }
+  return modes;
+}
+
+/// Triangulates `points` in each mode: empty when every result passes the audit and all are
+/// the same triangulation, else the first problem, naming its mode. `first`, when given,
+/// receives the first mode's result.
+inline std::string audit_every_mode(std::span<const Point> points, const std::vector<Mode>& modes,
+                                    std::uint64_t seed = 1, Triangulation* first = nullptr) {
+  Triangulation reference;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    Triangulation t = triangulate(points, modes[i].options(seed));
+    if (const std::string problem = audit(points, t); !problem.empty())
+      return modes[i].name + ": " + problem;
+    if (i == 0) {
+      reference = std::move(t);
+    } else if (const std::string diff = compare(reference, t); !diff.empty()) {
+      return modes[i].name + " differs from " + modes[0].name + ": " + diff;
+    }
+  }
+  if (first != nullptr) *first = std::move(reference);
   return "";
 }
 

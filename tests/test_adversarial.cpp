@@ -189,21 +189,6 @@ std::vector<Set> sets() {
 
 // --- Every method on each set ---
 
-struct Mode {
-  const char* name;
-  Method method;
-  Order order;
-  Locate locate;
-};
-constexpr Mode kModes[] = {
-    {"serial random dag", Method::Serial, Order::Random, Locate::Dag},
-    {"serial brio dag", Method::Serial, Order::Brio, Locate::Dag},
-    {"serial brio walk", Method::Serial, Order::Brio, Locate::Walk},
-    {"pessimistic 2", Method::Pessimistic, Order::Brio, Locate::Dag},
-    {"optimistic 2", Method::Optimistic, Order::Brio, Locate::Dag},
-    {"batch 2", Method::Batch, Order::Brio, Locate::Dag},
-};
-
 // Test names and failure messages show the set's name, not its bytes.
 void PrintTo(const Set& set, std::ostream* os) { *os << set.name; }
 
@@ -212,20 +197,7 @@ class Adversarial : public ::testing::TestWithParam<Set> {};
 TEST_P(Adversarial, EveryMethodGivesTheSameSoundTriangulation) {
   const std::vector<Point> pts = GetParam().make();
   Triangulation first;
-  for (const Mode& r : kModes) {
-    Options o;
-    o.method = r.method;
-    o.order = r.order;
-    o.locate = r.locate;
-    o.threads = 2;
-    Triangulation t = triangulate(pts, o);
-    EXPECT_EQ(audit(pts, t), "") << r.name;
-    if (&r == &kModes[0]) {
-      first = std::move(t);
-    } else {
-      EXPECT_EQ(compare(first, t), "") << r.name;
-    }
-  }
+  ASSERT_EQ(audit_every_mode(pts, every_mode(2), 1, &first), "");
   // What each set must give, beyond soundness.
   if (GetParam().hull != 0) {
     EXPECT_EQ(first.hull.size(), GetParam().hull);
