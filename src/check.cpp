@@ -3,6 +3,7 @@
 #include "ridt/check.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <sstream>
@@ -55,7 +56,14 @@ std::vector<VertexId> hull_with_collinear(std::span<const Point> pts,
 
 }  // namespace
 
-CheckResult check(std::span<const Point> pts, std::span<const VertexId> tris) {
+CheckResult check(std::span<const Point> input, std::span<const VertexId> tris) {
+  // Huge or tiny coordinates: an exactly scaled copy keeps the predicates on their fast path.
+  std::vector<Point> scaled;
+  if (const int k = detail::exact_scale_exponent(input); k != 0) {
+    scaled.reserve(input.size());
+    for (const Point& p : input) scaled.push_back({std::ldexp(p.x, k), std::ldexp(p.y, k)});
+  }
+  const std::span<const Point> pts = scaled.empty() ? input : std::span<const Point>(scaled);
   Report report;
   const std::size_t n = pts.size();
   const std::size_t count = tris.size() / 3;

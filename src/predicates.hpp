@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 
 #include "ridt/ridt.hpp"
 
@@ -116,6 +117,31 @@ int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d
 inline int incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
   const int s = incircle_filter(a, b, c, d);
   return s != 0 ? s : incircle_hard(a, b, c, d);
+}
+
+/// Huge or tiny coordinates make the products in the filters overflow or underflow, and
+/// every predicate then takes the slow path. Scaling every point by one power of two 2^k
+/// changes the sign of no predicate, and is exact while every coordinate stays normal. Returns
+/// the k that brings the larger side of the points' bounding box near 1 when it lies outside
+/// 2^-200 .. 2^200 and the scaling is exact, else 0 (leave the points as they are).
+inline int exact_scale_exponent(std::span<const Point> points) {
+  if (points.empty()) return 0;
+  double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
+  double smallest = HUGE_VAL, largest = 0;  // nonzero magnitudes of coordinates
+  for (const Point& p : points) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    for (const double v : {std::fabs(p.x), std::fabs(p.y)}) {
+      largest = std::max(largest, v);
+      if (v != 0) smallest = std::min(smallest, v);
+    }
+  }
+  const double half = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);  // halves cannot overflow
+  if (!(half > 0) || (half >= 0x1p-200 && half <= 0x1p200)) return 0;
+  int e = 0;
+  std::frexp(half, &e);  // half in [2^(e-1), 2^e): scaled, in [1/2, 1)
+  const int k = -e;
+  const bool exact = std::ldexp(smallest, k) >= 0x1p-1022 && std::ldexp(largest, k) < 0x1p1020;
+  return exact ? k : 0;
 }
 
 /// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.

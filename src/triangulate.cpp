@@ -13,45 +13,19 @@
 #include "ridt/ridt.hpp"
 
 namespace ridt {
-namespace {
-
-// Huge or tiny coordinates make the products in the predicates' filters overflow or underflow,
-// and every predicate then takes the slow path. Scaling every point by one power of two 2^k
-// changes the sign of no predicate and is exact while every coordinate stays normal, so the
-// kernel works on copies scaled to bring the extent near 1 whenever that is exact. `half` is
-// half the larger side of the bounding box, `smallest` and `largest` the smallest nonzero and
-// the largest magnitude of a coordinate. Returns k, or 0 to leave the points as they are.
-int scale_exponent(double half, double smallest, double largest) {
-  if (!(half > 0) || (half >= 0x1p-200 && half <= 0x1p200)) return 0;
-  int e = 0;
-  std::frexp(half, &e);  // half in [2^(e-1), 2^e): scaled, in [1/2, 1)
-  const int k = -e;
-  const bool exact = std::ldexp(smallest, k) >= std::numeric_limits<double>::min() &&
-                     std::ldexp(largest, k) < 0x1p1020;
-  return exact ? k : 0;
-}
-
-}  // namespace
-
 Triangulation triangulate(std::span<const Point> points, const Options& options) {
   const auto t0 = std::chrono::steady_clock::now();
   // Three bounding vertices follow the points, and ids must stay below kIdMask.
   if (points.size() > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
   const auto n = static_cast<std::uint32_t>(points.size());
-  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
-  double smallest = HUGE_VAL, largest = 0;  // nonzero magnitudes of coordinates
   for (std::uint32_t i = 0; i < n; ++i) {
     const Point& p = points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
       throw InputError("point " + std::to_string(i) + " has a " +
                        (std::isnan(p.x) || std::isnan(p.y) ? "NaN" : "infinite") + " coordinate");
-    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    for (const double v : {std::fabs(p.x), std::fabs(p.y)}) {
-      largest = std::max(largest, v);
-      if (v != 0) smallest = std::min(smallest, v);
-    }
   }
-  const int scale = n > 0 ? scale_exponent(std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2), smallest, largest) : 0;
+  // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
+  const int scale = detail::exact_scale_exponent(points);
   const bool symbolic = options.bounding == Bounding::Symbolic;
   unsigned threads = 1;
   if (options.method != Method::Serial) {
@@ -94,9 +68,12 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   } else {
     // The paper's (K, 0), (0, K), (-K, -K) around the centre of the bounding box, K = k * M.
     // The box of the (possibly scaled) points.
-    if (n == 0) x0 = x1 = y0 = y1 = 0;
-    x0 = std::ldexp(x0, scale), x1 = std::ldexp(x1, scale);
-    y0 = std::ldexp(y0, scale), y1 = std::ldexp(y1, scale);
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    if (n > 0) x0 = x1 = pts[0].x, y0 = y1 = pts[0].y;
+    for (std::uint32_t v = 0; v < n; ++v) {
+      x0 = std::min(x0, pts[v].x), x1 = std::max(x1, pts[v].x);
+      y0 = std::min(y0, pts[v].y), y1 = std::max(y1, pts[v].y);
+    }
     // M is the box's size, but at least 2^-40 of the largest coordinate and at least 2^-960
     // (far above the subnormals): a box that is a single point, or flat far from the origin,
     // would otherwise give a K that rounds away beside the coordinates (or to 0), and a
