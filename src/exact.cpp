@@ -132,37 +132,23 @@ int min_ulp_exponent(std::initializer_list<double> values) {
   return emin;
 }
 
-// Scaling every coordinate by the same power of two changes the sign of no determinant, and
-// is exact while every coordinate stays normal. When the differences are so large that the
-// filter's products overflow, or so small that its absolute underflow term swamps them, the
-// filter fails on every call; with the points scaled so that the largest difference is about 1
-// it decides as usual, and only true near-degeneracies reach the integers. `low` and `high`
-// bound the differences where the filter works unscaled. Returns false (and leaves `out`
-// unspecified) when the points are fine as they are, or cannot be scaled exactly.
+// The points of one call scaled by exact_scale_exponent (predicates.hpp), where the filter
+// fails only for their size: then it decides as usual, and only true near-degeneracies reach
+// the integers. False when the points are fine as they are or cannot be scaled exactly.
 template <std::size_t N>
-bool rescale(const Point* const (&in)[N], Point (&out)[N], double low, double high) {
-  // Half the largest difference from the last point, which cannot overflow.
-  double m = 0;
-  const Point& last = *in[N - 1];
-  for (std::size_t i = 0; i + 1 < N; ++i)
-    m = std::max({m, std::fabs(in[i]->x / 2 - last.x / 2), std::fabs(in[i]->y / 2 - last.y / 2)});
-  if (!(m > 0) || (m >= low && m <= high)) return false;
-  int e = 0;
-  std::frexp(m, &e);  // 2m is in [2^e, 2^(e+1))
-  const int k = -e - 1;
-  for (std::size_t i = 0; i < N; ++i) {
-    out[i] = {std::ldexp(in[i]->x, k), std::ldexp(in[i]->y, k)};
-    // Exact only if nothing overflowed or fell into the subnormals.
-    if (std::ldexp(out[i].x, -k) != in[i]->x || std::ldexp(out[i].y, -k) != in[i]->y) return false;
-  }
+bool rescale(Point (&p)[N], double low, double high) {
+  const int k = exact_scale_exponent(p, low, high);
+  if (k == 0) return false;
+  for (Point& q : p) q = {std::ldexp(q.x, k), std::ldexp(q.y, k)};
   return true;
 }
 
 }  // namespace
 
 int orient2d_hard(const Point& a, const Point& b, const Point& c) {
-  Point s[3];
-  if (rescale({&a, &b, &c}, s, 0x1p-400, 0x1p400)) {
+  // Degree 2: the filter works while the differences stay within 2^+-400.
+  Point s[3] = {a, b, c};
+  if (rescale(s, 0x1p-400, 0x1p400)) {
     const double l = (s[0].x - s[2].x) * (s[1].y - s[2].y);
     const double r = (s[0].y - s[2].y) * (s[1].x - s[2].x);
     const double det = l - r, bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
@@ -206,8 +192,9 @@ int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d
                        (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
     return (det > 0) - (det < 0);
   }
-  Point s[4];
-  if (rescale({&a, &b, &c, &d}, s, 0x1p-200, 0x1p200))
+  // Degree 4: within 2^+-200.
+  Point s[4] = {a, b, c, d};
+  if (rescale(s, 0x1p-200, 0x1p200))
     if (const int sign = incircle_filter(s[0], s[1], s[2], s[3]); sign != 0) return sign;
   return incircle_exact(a, b, c, d);
 }

@@ -122,9 +122,12 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
 /// Huge or tiny coordinates make the products in the filters overflow or underflow, and
 /// every predicate then takes the slow path. Scaling every point by one power of two 2^k
 /// changes the sign of no predicate, and is exact while every coordinate stays normal. Returns
-/// the k that brings the larger side of the points' bounding box near 1 when it lies outside
-/// 2^-200 .. 2^200 and the scaling is exact, else 0 (leave the points as they are).
-inline int exact_scale_exponent(std::span<const Point> points) {
+/// the k that brings half the larger side of the points' bounding box into [1/2, 1) when it
+/// lies outside [low, high] and that scaling is exact, else 0 (leave the points as they are).
+/// triangulate and check apply it to the whole input, the predicates' slow path to the three
+/// or four points of one call.
+inline int exact_scale_exponent(std::span<const Point> points, double low = 0x1p-200,
+                                double high = 0x1p200) {
   if (points.empty()) return 0;
   double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
   double smallest = HUGE_VAL, largest = 0;  // nonzero magnitudes of coordinates
@@ -136,7 +139,7 @@ inline int exact_scale_exponent(std::span<const Point> points) {
     }
   }
   const double half = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);  // halves cannot overflow
-  if (!(half > 0) || (half >= 0x1p-200 && half <= 0x1p200)) return 0;
+  if (!(half > 0) || (half >= low && half <= high)) return 0;
   int e = 0;
   std::frexp(half, &e);  // half in [2^(e-1), 2^e): scaled, in [1/2, 1)
   const int k = -e;

@@ -13,6 +13,7 @@
 #include "ridt/ridt.hpp"
 
 namespace ridt {
+
 Triangulation triangulate(std::span<const Point> points, const Options& options) {
   const auto t0 = std::chrono::steady_clock::now();
   // Three bounding vertices follow the points, and ids must stay below kIdMask.
