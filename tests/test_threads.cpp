@@ -105,11 +105,16 @@ TEST_P(Workers, StatisticsAddUp) {
     points += p.points;
     critical += p.time_critical_s;
     wait += p.time_wait_s;
-    EXPECT_GT(p.time_critical_s, 0);
+    // A worker may find every chunk taken (3 threads on 2 cores, under a sanitizer): then it
+    // spent no time in a critical section.
+    if (p.points > 0) {
+      EXPECT_GT(p.time_critical_s, 0);
+    }
     EXPECT_LE(p.time_critical_s + p.time_wait_s, p.time_insert_s * 1.0001 + 1e-6);
     EXPECT_LE(p.time_insert_s, s.time_insert_s * 1.0001 + 1e-6);
   }
   EXPECT_EQ(points, pts.size());
+  EXPECT_GT(critical, 0);
   EXPECT_DOUBLE_EQ(critical, s.time_critical_s);
   EXPECT_DOUBLE_EQ(wait, s.time_wait_s);
   EXPECT_LE(s.time_insert_s, s.time_triangulate_s);
