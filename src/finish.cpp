@@ -90,7 +90,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     return it == keep.end() ? v : it->second;
   };
 
-  // The two passes run on `threads` threads, each over its own range of records.
+  // The first two passes run on `threads` threads, each over its own range of records.
   const unsigned workers = std::max(1u, std::min(threads, records / 65536 + 1));
   auto range = [&](unsigned w) {
     return std::pair<TriangleId, TriangleId>(TriangleId(std::uint64_t{records} * w / workers),
@@ -132,15 +132,13 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     }
   });
 
-  // Pass 2: vertices, neighbours, hull edges. The points are no longer needed (but for the
-  // finite bounding triangle's check below): their copy goes before the output is made.
-  if (options.bounding == Bounding::Symbolic) kernel.release_points();
-  out.triangles.resize(3 * std::size_t{count});
-  out.neighbors.resize(3 * std::size_t{count});
+  // Pass 2, in place: a kept record's vertices become the input indices that stand for them,
+  // its neighbours their new ids + 1 (0 across the hull), and its hull edges are noted.
   std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
   in_parallel([&](unsigned w) {
     // The records are read in order, their neighbours and the input numbers of their
     // vertices at random: prefetch those of a record kAhead places on, so the misses overlap.
+    // Only this worker's records are rewritten here; from the others it reads child words.
     constexpr TriangleId kAhead = 64;
     const auto [begin, end] = range(w);
     for (TriangleId t = begin; t < end; ++t) {
@@ -153,20 +151,57 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
           for (const VertexId v : a.v) __builtin_prefetch(&input_index[v]);
         }
       }
-      const Triangle& r = tris[t];
-      const std::uint32_t id = r.child;
-      if (id == 0) continue;
-      const std::size_t base = 3 * std::size_t{id - 1};
+      Triangle& r = tris[t];
+      if (r.child == 0) continue;
+      VertexId v[3];
+      TriangleId nid[3];
       for (int i = 0; i < 3; ++i) {
-        out.triangles[base + i] = standing(r.v[i]);
-        const TriangleId nb = r.n[i];
-        const std::uint32_t nid = nb == kNone ? 0 : tris[nb].child;
-        out.neighbors[base + i] = nid == 0 ? kNoNeighbor : static_cast<std::int32_t>(nid - 1);
-        if (nid == 0)
-          hull_parts[w].emplace_back(standing(r.v[next(i)]), standing(r.v[prev(i)]));
+        v[i] = standing(r.v[i]);
+        nid[i] = r.n[i] == kNone ? 0 : tris[r.n[i]].child;
+      }
+      for (int i = 0; i < 3; ++i) {
+        if (nid[i] == 0) hull_parts[w].emplace_back(v[next(i)], v[prev(i)]);
+        r.v[i] = v[i];
+        r.n[i] = nid[i];
       }
     }
   });
+
+  // Pass 3: the kept records, copied out in order (the order of their new ids), each chunk
+  // freed once copied. The output is reserved, not filled, so its pages are first touched
+  // as it grows: with the chunks given back meanwhile, the peak is the records' and not the
+  // records' and the output's together. The points are no longer needed (but for the finite
+  // bounding triangle's check below): their copy goes first.
+  if (options.bounding == Bounding::Symbolic) kernel.release_points();
+  out.triangles.reserve(3 * std::size_t{count});
+  out.neighbors.reserve(3 * std::size_t{count});
+  {
+    constexpr std::size_t kBlock = 4096;  // triangles a block
+    std::vector<VertexId> vs(3 * kBlock);
+    std::vector<std::int32_t> ns(3 * kBlock);
+    std::size_t k = 0;  // entries in the block
+    auto flush = [&] {
+      out.triangles.insert(out.triangles.end(), vs.begin(), vs.begin() + k);
+      out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
+      k = 0;
+    };
+    for (TriangleId t = 0; t < records; ++t) {
+      if (!unused(t)) {
+        const Triangle& r = tris[t];
+        if (r.child != 0) {
+          for (int i = 0; i < 3; ++i, ++k) {
+            vs[k] = r.v[i];
+            ns[k] = r.n[i] == 0 ? kNoNeighbor : static_cast<std::int32_t>(r.n[i] - 1);
+          }
+          if (k == vs.size()) flush();
+        }
+      }
+      if (((t + 1) & (TriangleStore::kChunkSize - 1)) == 0 || t + 1 == records) {
+        flush();
+        tris.release_chunk(t >> TriangleStore::kChunkBits);
+      }
+    }
+  }
   std::vector<std::pair<VertexId, VertexId>> hull_edges;
   for (const auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
 

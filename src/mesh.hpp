@@ -156,6 +156,12 @@ class TriangleStore {
 
   std::uint32_t size() const { return size_.load(std::memory_order_relaxed); }
 
+  /// Frees chunk c (ids c * kChunkSize on), once no thread reads it again: the finish gives
+  /// the records back as it copies them out, so the output does not come on top of them.
+  void release_chunk(std::uint32_t c) {
+    std::free(chunks_[c].exchange(nullptr, std::memory_order_relaxed));
+  }
+
  private:
   void grow(std::uint64_t end) {
     const std::lock_guard<std::mutex> guard(grow_);
