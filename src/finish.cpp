@@ -9,6 +9,20 @@
 #include "driver.hpp"
 
 namespace ridt::detail {
+namespace {
+
+// The bits set in x. std::popcount is a library call without the POPCNT instruction, which
+// the baseline x86-64 target lacks; this is a dozen inline operations.
+constexpr int ones(std::uint64_t x) {
+  x -= (x >> 1) & 0x5555555555555555u;
+  x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+  x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu;
+  return static_cast<int>((x * 0x0101010101010101u) >> 56);
+}
+static_assert(ones(0) == 0 && ones(~std::uint64_t{0}) == 64 && ones(0x8000000000000001u) == 2);
+
+}  // namespace
+
 void canonicalize(Triangulation& out) {
   const std::size_t count = out.size();
   auto& tv = out.triangles;
@@ -90,93 +104,65 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     return it == keep.end() ? v : it->second;
   };
 
-  // The first two passes run on `threads` threads, each over its own range of records.
-  const unsigned workers = std::max(1u, std::min(threads, records / 65536 + 1));
-  auto range = [&](unsigned w) {
-    return std::pair<TriangleId, TriangleId>(TriangleId(std::uint64_t{records} * w / workers),
-                                             TriangleId(std::uint64_t{records} * (w + 1) / workers));
-  };
-  auto in_parallel = [&](auto&& body) {
-    std::vector<std::jthread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(body, w);
-    body(0u);
-  };  // the pool joins on leaving
-
   // Ids 1 .. kMaxOwner are never written (mesh.hpp).
   auto unused = [](TriangleId t) { return t != 0 && t < kFirstChild; };
-  // Pass 1: the child links are dead now; a kept triangle's link becomes its new id + 1.
   auto kept = [&](const Triangle& r) {
     return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n;
   };
-  std::vector<std::uint32_t> first_id(workers + 1, 0);
+
+  // Pass 1, on `threads` threads, each over its own range of 64-record words: a bit for each
+  // kept record. A kept triangle's new id is then its rank among the kept ones: the kept
+  // records before its word (rank_before) and those before it in the word (a popcount).
+  // The bits and ranks take 12 bytes for 64 records and stay in cache, where reading the
+  // neighbours' records for their ids would miss it at every read.
+  const std::size_t words = (std::size_t{records} + 63) / 64;
+  std::vector<std::uint64_t> kept_bits(words);
+  std::vector<std::uint32_t> rank_before(words + 1, 0);
+  const auto workers =
+      static_cast<unsigned>(std::clamp<std::size_t>(words / 1024 + 1, 1, std::max(threads, 1u)));
   std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
-  in_parallel([&](unsigned w) {
-    std::uint32_t c = 0;
-    std::uint64_t m = 0;
-    for (TriangleId t = range(w).first; t < range(w).second; ++t) {
-      if (unused(t)) continue;
-      c += kept(tris[t]);
-      m += tris[t].v[0] != kNone;
-    }
-    first_id[w + 1] = c;
-    made[w] = m;
-  });
-  for (unsigned w = 0; w < workers; ++w) first_id[w + 1] += first_id[w];
-  const std::uint32_t count = first_id[workers];
-  in_parallel([&](unsigned w) {
-    std::uint32_t id = first_id[w];
-    for (TriangleId t = range(w).first; t < range(w).second; ++t) {
-      if (unused(t)) continue;
-      Triangle& r = tris[t];
-      r.child = kept(r) ? ++id : 0;
-    }
-  });
-
-  // Pass 2, in place: a kept record's vertices become the input indices that stand for them,
-  // its neighbours their new ids + 1 (0 across the hull), and its hull edges are noted.
-  std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
-  in_parallel([&](unsigned w) {
-    // The records are read in order, their neighbours and the input numbers of their
-    // vertices at random: prefetch those of a record kAhead places on, so the misses overlap.
-    // Only this worker's records are rewritten here; from the others it reads child words.
-    constexpr TriangleId kAhead = 64;
-    const auto [begin, end] = range(w);
-    for (TriangleId t = begin; t < end; ++t) {
-      if (unused(t)) continue;
-      if (t + kAhead < end && !unused(t + kAhead)) {
-        const Triangle& a = tris[t + kAhead];
-        if (a.child != 0) {
-          for (const TriangleId nb : a.n)
-            if (nb != kNone) tris.prefetch(nb);
-          for (const VertexId v : a.v) __builtin_prefetch(&input_index[v]);
+  {
+    std::vector<std::jthread> pool;
+    auto scan = [&](unsigned w) {
+      std::uint64_t m = 0;
+      for (std::size_t k = words * w / workers; k < words * (w + 1) / workers; ++k) {
+        std::uint64_t bits = 0;
+        const TriangleId end = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
+        for (TriangleId t = static_cast<TriangleId>(64 * k); t < end; ++t) {
+          if (unused(t)) continue;
+          const Triangle& r = tris[t];
+          bits |= std::uint64_t{kept(r)} << (t & 63);
+          m += r.v[0] != kNone;
         }
+        kept_bits[k] = bits;
+        rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
       }
-      Triangle& r = tris[t];
-      if (r.child == 0) continue;
-      VertexId v[3];
-      TriangleId nid[3];
-      for (int i = 0; i < 3; ++i) {
-        v[i] = standing(r.v[i]);
-        nid[i] = r.n[i] == kNone ? 0 : tris[r.n[i]].child;
-      }
-      for (int i = 0; i < 3; ++i) {
-        if (nid[i] == 0) hull_parts[w].emplace_back(v[next(i)], v[prev(i)]);
-        r.v[i] = v[i];
-        r.n[i] = nid[i];
-      }
-    }
-  });
+      made[w] = m;
+    };
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(scan, w);
+    scan(0);
+  }  // the pool joins here
+  std::partial_sum(rank_before.begin(), rank_before.end(), rank_before.begin());
+  const std::uint32_t count = rank_before[words];
+  auto is_kept = [&](TriangleId t) { return (kept_bits[t >> 6] >> (t & 63)) & 1; };
+  auto new_id = [&](TriangleId t) {
+    const std::uint64_t below = kept_bits[t >> 6] & ((std::uint64_t{1} << (t & 63)) - 1);
+    return static_cast<std::int32_t>(rank_before[t >> 6] + ones(below));
+  };
 
-  // Pass 3: the kept records, copied out in order (the order of their new ids), each chunk
-  // freed once copied. The output is reserved, not filled, so its pages are first touched
-  // as it grows: with the chunks given back meanwhile, the peak is the records' and not the
-  // records' and the output's together. The points are no longer needed (but for the finite
-  // bounding triangle's check below): their copy goes first.
+  // Pass 2: the kept records, in order (the order of their new ids), with the input indices
+  // that stand for their vertices, their neighbours' new ids (-1 across the hull) and their
+  // hull edges. Each chunk of records is freed once read. The output is reserved, not filled,
+  // so its pages are first touched as it grows: with the chunks given back meanwhile, the
+  // peak is that of the records and not of the records and the output together. The points
+  // are no longer needed (but for the finite bounding triangle's check below): their copy
+  // goes first.
   if (options.bounding == Bounding::Symbolic) kernel.release_points();
   out.triangles.reserve(3 * std::size_t{count});
   out.neighbors.reserve(3 * std::size_t{count});
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
   {
-    constexpr std::size_t kBlock = 4096;  // triangles a block
+    constexpr std::size_t kBlock = 4096;  // triangles copied out at once
     std::vector<VertexId> vs(3 * kBlock);
     std::vector<std::int32_t> ns(3 * kBlock);
     std::size_t k = 0;  // entries in the block
@@ -185,16 +171,22 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
       k = 0;
     };
+    // The input numbers of the vertices are read at random: those of a record kAhead on are
+    // prefetched, so the misses overlap.
+    constexpr TriangleId kAhead = 16;
     for (TriangleId t = 0; t < records; ++t) {
-      if (!unused(t)) {
+      if (t + kAhead < records && is_kept(t + kAhead))
+        for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
+      if (is_kept(t)) {
         const Triangle& r = tris[t];
-        if (r.child != 0) {
-          for (int i = 0; i < 3; ++i, ++k) {
-            vs[k] = r.v[i];
-            ns[k] = r.n[i] == 0 ? kNoNeighbor : static_cast<std::int32_t>(r.n[i] - 1);
-          }
-          if (k == vs.size()) flush();
+        for (int i = 0; i < 3; ++i) vs[k + i] = standing(r.v[i]);
+        for (int i = 0; i < 3; ++i) {
+          const TriangleId nb = r.n[i];
+          ns[k + i] = nb != kNone && is_kept(nb) ? new_id(nb) : kNoNeighbor;
+          if (ns[k + i] == kNoNeighbor) hull_edges.emplace_back(vs[k + next(i)], vs[k + prev(i)]);
         }
+        k += 3;
+        if (k == vs.size()) flush();
       }
       if (((t + 1) & (TriangleStore::kChunkSize - 1)) == 0 || t + 1 == records) {
         flush();
@@ -202,8 +194,6 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       }
     }
   }
-  std::vector<std::pair<VertexId, VertexId>> hull_edges;
-  for (const auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
 
   // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
   // from the smallest vertex index.

@@ -246,7 +246,7 @@ class Kernel {
   void retire_pool(Scratch& s);
 
   const TriangleStore& triangles() const { return tris_; }
-  /// For the finish only: it reuses the child links, dead by then, as scratch.
+  /// For the finish only: it frees the records' chunks as it copies them out.
   TriangleStore& triangles_for_finish() { return tris_; }
   const Point& point(VertexId v) const { return points_[v]; }
   /// For the finish, once no predicate runs: frees the points' copy, to lower the peak.
