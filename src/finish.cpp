@@ -121,8 +121,17 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   const auto workers =
       static_cast<unsigned>(std::clamp<std::size_t>(words / 1024 + 1, 1, std::max(threads, 1u)));
   std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
-  {
+  auto in_parallel = [&](auto&& body) {
     std::vector<std::jthread> pool;
+    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(body, w);
+    body(0u);
+  };  // the pool joins on leaving
+  // Worker w's records: those of its words.
+  auto range = [&](unsigned w) {
+    return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * (words * w / workers), records)),
+                     static_cast<TriangleId>(std::min<std::size_t>(64 * (words * (w + 1) / workers), records)));
+  };
+  {
     auto scan = [&](unsigned w) {
       std::uint64_t m = 0;
       for (std::size_t k = words * w / workers; k < words * (w + 1) / workers; ++k) {
@@ -139,9 +148,8 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       }
       made[w] = m;
     };
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(scan, w);
-    scan(0);
-  }  // the pool joins here
+    in_parallel(scan);
+  }
   std::partial_sum(rank_before.begin(), rank_before.end(), rank_before.begin());
   const std::uint32_t count = rank_before[words];
   auto is_kept = [&](TriangleId t) { return (kept_bits[t >> 6] >> (t & 63)) & 1; };
@@ -150,50 +158,72 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     return static_cast<std::int32_t>(rank_before[t >> 6] + ones(below));
   };
 
-  // Pass 2: the kept records, in order (the order of their new ids), with the input indices
-  // that stand for their vertices, their neighbours' new ids (-1 across the hull) and their
-  // hull edges. Each chunk of records is freed once read. The output is reserved, not filled,
-  // so its pages are first touched as it grows: with the chunks given back meanwhile, the
-  // peak is that of the records and not of the records and the output together. The points
-  // are no longer needed (but for the finite bounding triangle's check below): their copy
-  // goes first.
+  // Pass 2, on the same threads: each moves its kept records to the front of its range, in
+  // order, in their final form: the input indices that stand for their vertices, and their
+  // neighbours' new ids (-1 across the hull). A record moves only down and is read before
+  // anything is written over it; the neighbours' ids come from the bits, not their records.
+  std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
+  in_parallel([&](unsigned w) {
+    const auto [begin, end] = range(w);
+    TriangleId to = begin;
+    // The input numbers of the vertices are read at random: those of a record kAhead on are
+    // prefetched, so the misses overlap.
+    constexpr TriangleId kAhead = 16;
+    for (TriangleId t = begin; t < end; ++t) {
+      if (t + kAhead < end && is_kept(t + kAhead))
+        for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
+      if (!is_kept(t)) continue;
+      const Triangle& r = tris[t];
+      VertexId v[3];
+      TriangleId nb[3];
+      for (int i = 0; i < 3; ++i) v[i] = standing(r.v[i]);
+      for (int i = 0; i < 3; ++i) {
+        nb[i] = r.n[i] != kNone && is_kept(r.n[i]) ? static_cast<TriangleId>(new_id(r.n[i])) : kNone;
+        if (nb[i] == kNone) hull_parts[w].emplace_back(v[next(i)], v[prev(i)]);
+      }
+      Triangle& dest = tris[to++];
+      for (int i = 0; i < 3; ++i) dest.v[i] = v[i], dest.n[i] = nb[i];
+    }
+  });
+
+  // Pass 3: the moved records copied out, range after range, and each chunk of records freed
+  // once behind the copy. The output is reserved, not filled, so its pages are first touched
+  // as it grows: with the chunks given back meanwhile, the peak is that of the records and not
+  // of the records and the output together. The points are no longer needed (but for the
+  // finite bounding triangle's check below): their copy goes first.
   if (options.bounding == Bounding::Symbolic) kernel.release_points();
   out.triangles.reserve(3 * std::size_t{count});
   out.neighbors.reserve(3 * std::size_t{count});
-  std::vector<std::pair<VertexId, VertexId>> hull_edges;
   {
     constexpr std::size_t kBlock = 4096;  // triangles copied out at once
     std::vector<VertexId> vs(3 * kBlock);
     std::vector<std::int32_t> ns(3 * kBlock);
     std::size_t k = 0;  // entries in the block
-    auto flush = [&] {
+    std::uint32_t freed = 0;  // chunks
+    // Copies what the block holds and frees the chunks wholly below record `done`.
+    auto flush = [&](std::uint64_t done) {
       out.triangles.insert(out.triangles.end(), vs.begin(), vs.begin() + k);
       out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
       k = 0;
+      for (; (std::uint64_t{freed} + 1) * TriangleStore::kChunkSize <= done; ++freed) tris.release_chunk(freed);
     };
-    // The input numbers of the vertices are read at random: those of a record kAhead on are
-    // prefetched, so the misses overlap.
-    constexpr TriangleId kAhead = 16;
-    for (TriangleId t = 0; t < records; ++t) {
-      if (t + kAhead < records && is_kept(t + kAhead))
-        for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
-      if (is_kept(t)) {
+    for (unsigned w = 0; w < workers; ++w) {
+      const auto [begin, end] = range(w);
+      const TriangleId moved = rank_before[words * (w + 1) / workers] - rank_before[words * w / workers];
+      for (TriangleId t = begin; t < begin + moved; ++t) {
         const Triangle& r = tris[t];
-        for (int i = 0; i < 3; ++i) vs[k + i] = standing(r.v[i]);
-        for (int i = 0; i < 3; ++i) {
-          const TriangleId nb = r.n[i];
-          ns[k + i] = nb != kNone && is_kept(nb) ? new_id(nb) : kNoNeighbor;
-          if (ns[k + i] == kNoNeighbor) hull_edges.emplace_back(vs[k + next(i)], vs[k + prev(i)]);
+        for (int i = 0; i < 3; ++i, ++k) {
+          vs[k] = r.v[i];
+          ns[k] = r.n[i] == kNone ? kNoNeighbor : static_cast<std::int32_t>(r.n[i]);
         }
-        k += 3;
-        if (k == vs.size()) flush();
+        if (k == vs.size()) flush(t);
       }
-      if (((t + 1) & (TriangleStore::kChunkSize - 1)) == 0 || t + 1 == records) {
-        flush();
-        tris.release_chunk(t >> TriangleStore::kChunkBits);
-      }
+      flush(end);
     }
+    for (; std::uint64_t{freed} * TriangleStore::kChunkSize < records; ++freed) tris.release_chunk(freed);
   }
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
+  for (const auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
 
   // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
   // from the smallest vertex index.
