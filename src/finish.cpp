@@ -53,18 +53,33 @@ void canonicalize(Triangulation& out) {
       std::sort(order.begin() + start[a], order.begin() + start[a + 1], [&](std::uint32_t x, std::uint32_t y) {
         return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
       });
-  std::vector<std::int32_t> rank(count);
-  for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
-  std::vector<VertexId> v2(3 * count);
-  std::vector<std::int32_t> n2(3 * count);
-  for (std::size_t i = 0; i < count; ++i)
-    for (int k = 0; k < 3; ++k) {
-      v2[3 * i + k] = tv[3 * order[i] + k];
-      const std::int32_t nb = tn[3 * order[i] + k];
-      n2[3 * i + k] = nb < 0 ? kNoNeighbor : rank[nb];
+  std::vector<std::uint32_t>().swap(start);
+  // The neighbours renumbered, then the triangles moved along the cycles of the permutation,
+  // in place: no second copy of the output.
+  {
+    std::vector<std::int32_t> rank(count);
+    for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
+    for (std::int32_t& nb : tn) nb = nb < 0 ? kNoNeighbor : rank[nb];
+  }
+  // Position i takes triangle order[i]; a position done is marked order[i] = i.
+  for (std::size_t i = 0; i < count; ++i) {
+    if (order[i] == i) continue;
+    VertexId v[3];
+    std::int32_t nb[3];
+    std::copy_n(&tv[3 * i], 3, v);
+    std::copy_n(&tn[3 * i], 3, nb);
+    std::size_t j = i;
+    while (order[j] != i) {
+      const std::size_t from = order[j];
+      std::copy_n(&tv[3 * from], 3, &tv[3 * j]);
+      std::copy_n(&tn[3 * from], 3, &tn[3 * j]);
+      order[j] = static_cast<std::uint32_t>(j);
+      j = from;
     }
-  tv.swap(v2);
-  tn.swap(n2);
+    std::copy_n(v, 3, &tv[3 * j]);
+    std::copy_n(nb, 3, &tn[3 * j]);
+    order[j] = static_cast<std::uint32_t>(j);
+  }
 }
 
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,

@@ -1,6 +1,7 @@
 // The serial triangulation, end to end: every result goes through the exact validator.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numeric>
@@ -58,6 +59,19 @@ TEST(Triangulate, CanonicalOrderIsIdenticalForEverySeed) {
   EXPECT_EQ(a.triangles, b.triangles);
   EXPECT_EQ(a.neighbors, b.neighbors);
   EXPECT_EQ(a.hull, b.hull);
+  // The order is the one promised (each triangle from its smallest vertex, the triangles
+  // sorted), the neighbours follow the triangles they name, and the triangles are those of
+  // the plain output.
+  EXPECT_EQ(audit(pts, a), "");
+  for (std::size_t t = 0; t < a.size(); ++t) {
+    const VertexId* v = &a.triangles[3 * t];
+    EXPECT_TRUE(v[0] < v[1] && v[0] < v[2]) << t;
+    if (t > 0) {
+      EXPECT_TRUE(std::lexicographical_compare(v - 3, v, v, v + 3)) << t;
+    }
+  }
+  o.canonical_order = false;
+  EXPECT_EQ(canonical(a.triangles), canonical(triangulate(pts, o).triangles));
 }
 
 TEST(Triangulate, ShuffledInputGivesTheSameTriangles) {
