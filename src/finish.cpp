@@ -141,30 +141,28 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     for (unsigned w = 1; w < workers; ++w) pool.emplace_back(body, w);
     body(0u);
   };  // the pool joins on leaving
-  // Worker w's records: those of its words.
+  // Worker w's words are [first_word(w), first_word(w + 1)), its records those of its words.
+  auto first_word = [&](unsigned w) { return words * w / workers; };
   auto range = [&](unsigned w) {
-    return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * (words * w / workers), records)),
-                     static_cast<TriangleId>(std::min<std::size_t>(64 * (words * (w + 1) / workers), records)));
+    return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(w), records)),
+                     static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(w + 1), records)));
   };
-  {
-    auto scan = [&](unsigned w) {
-      std::uint64_t m = 0;
-      for (std::size_t k = words * w / workers; k < words * (w + 1) / workers; ++k) {
-        std::uint64_t bits = 0;
-        const TriangleId end = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
-        for (TriangleId t = static_cast<TriangleId>(64 * k); t < end; ++t) {
-          if (unused(t)) continue;
-          const Triangle& r = tris[t];
-          bits |= std::uint64_t{kept(r)} << (t & 63);
-          m += r.v[0] != kNone;
-        }
-        kept_bits[k] = bits;
-        rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
+  in_parallel([&](unsigned w) {
+    std::uint64_t m = 0;
+    for (std::size_t k = first_word(w); k < first_word(w + 1); ++k) {
+      std::uint64_t bits = 0;
+      const TriangleId end = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
+      for (TriangleId t = static_cast<TriangleId>(64 * k); t < end; ++t) {
+        if (unused(t)) continue;
+        const Triangle& r = tris[t];
+        bits |= std::uint64_t{kept(r)} << (t & 63);
+        m += r.v[0] != kNone;
       }
-      made[w] = m;
-    };
-    in_parallel(scan);
-  }
+      kept_bits[k] = bits;
+      rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
+    }
+    made[w] = m;
+  });
   std::partial_sum(rank_before.begin(), rank_before.end(), rank_before.begin());
   const std::uint32_t count = rank_before[words];
   auto is_kept = [&](TriangleId t) { return (kept_bits[t >> 6] >> (t & 63)) & 1; };
@@ -224,7 +222,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     };
     for (unsigned w = 0; w < workers; ++w) {
       const auto [begin, end] = range(w);
-      const TriangleId moved = rank_before[words * (w + 1) / workers] - rank_before[words * w / workers];
+      const TriangleId moved = rank_before[first_word(w + 1)] - rank_before[first_word(w)];
       for (TriangleId t = begin; t < begin + moved; ++t) {
         const Triangle& r = tris[t];
         for (int i = 0; i < 3; ++i, ++k) {
