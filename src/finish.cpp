@@ -2,6 +2,7 @@
 // the remaining triangles compactly, give neighbours across the hull as -1, trace the hull and
 // resolve duplicates so the output names the smallest input index of each group of equal points.
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <thread>
 #include <unordered_map>
@@ -126,19 +127,21 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   };
 
   // Pass 1, on `threads` threads, each over its own range of 64-record words: a bit for each
-  // kept record. A kept triangle's new id is then its rank among the kept ones: the kept
-  // records before its word (rank_before) and those before it in the word (a popcount).
-  // The bits and ranks take 12 bytes for 64 records and stay in cache, where reading the
-  // neighbours' records for their ids would miss it at every read.
+  // kept record, and the kept records moved to the front of the range, in order, with the
+  // input indices that stand for their vertices. A record moves only down and is read before
+  // anything is written over it. A kept triangle's new id is its rank among the kept ones:
+  // the kept records before its word (rank_before) and those before it in the word (a
+  // popcount). The bits and ranks take 12 bytes for 64 records and stay in cache, where
+  // reading the neighbours' records for their ids would miss it at every read.
   const std::size_t words = (std::size_t{records} + 63) / 64;
   std::vector<std::uint64_t> kept_bits(words);
   std::vector<std::uint32_t> rank_before(words + 1, 0);
   const auto workers =
       static_cast<unsigned>(std::clamp<std::size_t>(words / 1024 + 1, 1, std::max(threads, 1u)));
   std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
-  auto in_parallel = [&](auto&& body) {
+  auto in_parallel = [&](unsigned count, auto&& body) {
     std::vector<std::jthread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(body, w);
+    for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
     body(0u);
   };  // the pool joins on leaving
   // Worker w's words are [first_word(w), first_word(w + 1)), its records those of its words.
@@ -147,16 +150,27 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(w), records)),
                      static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(w + 1), records)));
   };
-  in_parallel([&](unsigned w) {
+  in_parallel(workers, [&](unsigned w) {
+    const auto [begin, end] = range(w);
+    TriangleId to = begin;
     std::uint64_t m = 0;
+    // The input numbers of the vertices are read at random: those of a record kAhead on are
+    // prefetched, so the misses overlap.
+    constexpr TriangleId kAhead = 16;
     for (std::size_t k = first_word(w); k < first_word(w + 1); ++k) {
       std::uint64_t bits = 0;
-      const TriangleId end = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
-      for (TriangleId t = static_cast<TriangleId>(64 * k); t < end; ++t) {
+      const TriangleId stop = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
+      for (TriangleId t = static_cast<TriangleId>(64 * k); t < stop; ++t) {
+        if (t + kAhead < end && !unused(t + kAhead) && kept(tris[t + kAhead]))
+          for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
         if (unused(t)) continue;
         const Triangle& r = tris[t];
-        bits |= std::uint64_t{kept(r)} << (t & 63);
         m += r.v[0] != kNone;
+        if (!kept(r)) continue;
+        bits |= std::uint64_t{1} << (t & 63);
+        const Triangle front{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])},
+                             {r.n[0], r.n[1], r.n[2]}, 0};
+        tris[to++] = front;
       }
       kept_bits[k] = bits;
       rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
@@ -170,73 +184,64 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     const std::uint64_t below = kept_bits[t >> 6] & ((std::uint64_t{1} << (t & 63)) - 1);
     return static_cast<std::int32_t>(rank_before[t >> 6] + ones(below));
   };
+  // The kept records of range w, moved to [begin, begin + moved(w)).
+  auto moved = [&](unsigned w) { return rank_before[first_word(w + 1)] - rank_before[first_word(w)]; };
 
-  // Pass 2, on the same threads: each moves its kept records to the front of its range, in
-  // order, in their final form: the input indices that stand for their vertices, and their
-  // neighbours' new ids (-1 across the hull). A record moves only down and is read before
-  // anything is written over it; the neighbours' ids come from the bits, not their records.
-  std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
-  in_parallel([&](unsigned w) {
-    const auto [begin, end] = range(w);
-    TriangleId to = begin;
-    // The input numbers of the vertices are read at random: those of a record kAhead on are
-    // prefetched, so the misses overlap.
-    constexpr TriangleId kAhead = 16;
-    for (TriangleId t = begin; t < end; ++t) {
-      if (t + kAhead < end && is_kept(t + kAhead))
-        for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
-      if (!is_kept(t)) continue;
-      const Triangle& r = tris[t];
-      VertexId v[3];
-      TriangleId nb[3];
-      for (int i = 0; i < 3; ++i) v[i] = standing(r.v[i]);
-      for (int i = 0; i < 3; ++i) {
-        nb[i] = r.n[i] != kNone && is_kept(r.n[i]) ? static_cast<TriangleId>(new_id(r.n[i])) : kNone;
-        if (nb[i] == kNone) hull_parts[w].emplace_back(v[next(i)], v[prev(i)]);
-      }
-      Triangle& dest = tris[to++];
-      for (int i = 0; i < 3; ++i) dest.v[i] = v[i], dest.n[i] = nb[i];
-    }
-  });
-
-  // Pass 3: the moved records copied out, range after range, and each chunk of records freed
-  // once behind the copy. The output is reserved, not filled, so its pages are first touched
-  // as it grows: with the chunks given back meanwhile, the peak is that of the records and not
-  // of the records and the output together. The points are no longer needed (but for the
-  // finite bounding triangle's check below): their copy goes first.
+  // Pass 2: the moved records copied out, range after range, with their neighbours' new ids
+  // (from the bits; -1 across the hull), and each chunk of records freed once behind the
+  // copy. The output is reserved, not filled, so its pages are first touched as it grows:
+  // with the chunks given back meanwhile, the peak is that of the records and not of the
+  // records and the output together. With two threads or more, one copies the vertices and
+  // another the neighbours, and a chunk goes once both are past it. The points are no longer
+  // needed (but for the finite bounding triangle's check below): their copy goes first.
   if (options.bounding == Bounding::Symbolic) kernel.release_points();
-  out.triangles.reserve(3 * std::size_t{count});
-  out.neighbors.reserve(3 * std::size_t{count});
-  {
+  const unsigned copiers = workers > 1 ? 2 : 1;
+  std::atomic<std::uint64_t> copied[2] = {0, 0};  // each copier's progress, in records
+  std::atomic<std::uint32_t> freed{0};            // chunks
+  auto release_behind = [&]() {
+    std::uint64_t done = copied[0].load(std::memory_order_acquire);
+    if (copiers == 2) done = std::min(done, copied[1].load(std::memory_order_acquire));
+    std::uint32_t f = freed.load(std::memory_order_relaxed);
+    while ((std::uint64_t{f} + 1) * TriangleStore::kChunkSize <= done)
+      if (freed.compare_exchange_weak(f, f + 1, std::memory_order_relaxed)) tris.release_chunk(f++);
+  };
+  // Copier c writes the vertices (c = 0, and the neighbours too when alone) or the neighbours,
+  // and the one that writes the neighbours finds the hull's edges.
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
+  in_parallel(copiers, [&](unsigned c) {
+    const bool vertices = c == 0, neighbours = c == 1 || copiers == 1;
+    if (vertices) out.triangles.reserve(3 * std::size_t{count});
+    if (neighbours) out.neighbors.reserve(3 * std::size_t{count});
     constexpr std::size_t kBlock = 4096;  // triangles copied out at once
-    std::vector<VertexId> vs(3 * kBlock);
-    std::vector<std::int32_t> ns(3 * kBlock);
+    std::vector<VertexId> vs(vertices ? 3 * kBlock : 0);
+    std::vector<std::int32_t> ns(neighbours ? 3 * kBlock : 0);
     std::size_t k = 0;  // entries in the block
-    std::uint32_t freed = 0;  // chunks
-    // Copies what the block holds and frees the chunks wholly below record `done`.
+    // Copies what the block holds; every record below `done` is then copied.
     auto flush = [&](std::uint64_t done) {
-      out.triangles.insert(out.triangles.end(), vs.begin(), vs.begin() + k);
-      out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
+      if (vertices) out.triangles.insert(out.triangles.end(), vs.begin(), vs.begin() + k);
+      if (neighbours) out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
       k = 0;
-      for (; (std::uint64_t{freed} + 1) * TriangleStore::kChunkSize <= done; ++freed) tris.release_chunk(freed);
+      copied[c].store(done, std::memory_order_release);
+      release_behind();
     };
     for (unsigned w = 0; w < workers; ++w) {
       const auto [begin, end] = range(w);
-      const TriangleId moved = rank_before[first_word(w + 1)] - rank_before[first_word(w)];
-      for (TriangleId t = begin; t < begin + moved; ++t) {
+      for (TriangleId t = begin; t < begin + moved(w); ++t) {
         const Triangle& r = tris[t];
         for (int i = 0; i < 3; ++i, ++k) {
-          vs[k] = r.v[i];
-          ns[k] = r.n[i] == kNone ? kNoNeighbor : static_cast<std::int32_t>(r.n[i]);
+          if (vertices) vs[k] = r.v[i];
+          if (!neighbours) continue;
+          const TriangleId u = r.n[i];
+          ns[k] = u != kNone && is_kept(u) ? new_id(u) : kNoNeighbor;
+          if (ns[k] == kNoNeighbor) hull_edges.emplace_back(r.v[next(i)], r.v[prev(i)]);
         }
-        if (k == vs.size()) flush(t);
+        if (k == 3 * kBlock) flush(t + 1);
       }
       flush(end);
     }
-    for (; std::uint64_t{freed} * TriangleStore::kChunkSize < records; ++freed) tris.release_chunk(freed);
-  }
-  std::vector<std::pair<VertexId, VertexId>> hull_edges;
-  for (const auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
+  });
+  for (std::uint32_t f = freed.load(); std::uint64_t{f} * TriangleStore::kChunkSize < records; ++f)
+    tris.release_chunk(f);
 
   // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
   // from the smallest vertex index.
