@@ -198,9 +198,19 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   const unsigned copiers = workers > 1 ? 2 : 1;
   std::atomic<std::uint64_t> copied[2] = {0, 0};  // each copier's progress, in records
   std::atomic<std::uint32_t> freed{0};            // chunks
+  // Records that fit in one chunk are given back page by page instead, some 64 KiB at a time.
+  const bool one_chunk = records <= TriangleStore::kChunkSize;
+  constexpr std::uint64_t kPagesStep = (std::uint64_t{1} << 16) / sizeof(Triangle);  // records
+  std::atomic<std::uint64_t> paged{0};  // records whose pages are given back
   auto release_behind = [&]() {
     std::uint64_t done = copied[0].load(std::memory_order_acquire);
     if (copiers == 2) done = std::min(done, copied[1].load(std::memory_order_acquire));
+    if (one_chunk) {
+      std::uint64_t p = paged.load(std::memory_order_relaxed);
+      if (done >= p + kPagesStep && paged.compare_exchange_strong(p, done, std::memory_order_relaxed))
+        tris.release_pages(static_cast<TriangleId>(p), static_cast<TriangleId>(done));
+      return;
+    }
     std::uint32_t f = freed.load(std::memory_order_relaxed);
     while ((std::uint64_t{f} + 1) * TriangleStore::kChunkSize <= done)
       if (freed.compare_exchange_weak(f, f + 1, std::memory_order_relaxed)) tris.release_chunk(f++);

@@ -162,6 +162,23 @@ class TriangleStore {
     std::free(chunks_[c].exchange(nullptr, std::memory_order_relaxed));
   }
 
+  /// Gives the pages that hold nothing but records [begin, end), all of one chunk, back to
+  /// the kernel, once no thread reads them again (they would read as zeros). The finish does
+  /// this behind its copy when all records fit in one chunk, which it frees only at the end.
+  void release_pages(TriangleId begin, TriangleId end) {
+#ifdef MADV_DONTNEED
+    constexpr std::uintptr_t kPage = 4096;
+    const std::uint32_t c = begin >> kChunkBits;
+    const auto base = reinterpret_cast<std::uintptr_t>(chunks_[c].load(std::memory_order_relaxed));
+    const std::uint64_t first = begin - (c << kChunkBits), last = end - (c << kChunkBits);
+    const std::uintptr_t from = (base + first * sizeof(Triangle) + kPage - 1) & ~(kPage - 1);
+    const std::uintptr_t to = (base + last * sizeof(Triangle)) & ~(kPage - 1);
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+    (void)begin, (void)end;
+#endif
+  }
+
  private:
   void grow(std::uint64_t end) {
     const std::lock_guard<std::mutex> guard(grow_);
