@@ -30,6 +30,7 @@ for d in uniform normal grid clusters; do
 done
 # Same points in every format give the same file.
 cmp -s "$dir/uniform.txt.ele" "$dir/uniform.bin.ele" && pass || fail "txt and bin inputs differ"
+cmp -s "$dir/uniform.txt.ele" "$dir/uniform.node.ele" && pass || fail "txt and node inputs differ"
 # The seed changes nothing in the output (canonical order).
 expect 0 "seed 7" -- "$ridt" triangulate "$dir/grid.txt" --seed 7 -o "$dir/grid7.ele"
 cmp -s "$dir/grid.txt.ele" "$dir/grid7.ele" && pass || fail "seed changed the output"
@@ -92,6 +93,11 @@ printf '0 0\n1 1\n2 2\n3 3\n' >"$dir/line.txt"
 expect 0 "collinear" -- "$ridt" triangulate "$dir/line.txt" -o "$dir/line.ele"
 stderr_has "collinear"
 expect 0 "check collinear" -- "$ridt" check "$dir/line.txt" "$dir/line.ele"
+: >"$dir/empty.txt"
+expect 0 "no points" -- "$ridt" triangulate "$dir/empty.txt" -o "$dir/empty.ele"
+stderr_has "fewer than three"
+expect 0 "check no points" -- "$ridt" check "$dir/empty.txt" "$dir/empty.ele"
+stdout_has "^valid: 0 triangles"
 printf '1 1\n1 1\n' >"$dir/two.txt"
 expect 0 "two points" -- "$ridt" triangulate "$dir/two.txt"
 stderr_has "fewer than three"
@@ -119,8 +125,9 @@ expect 2 "infinity" -- "$ridt" triangulate "$dir/inf.txt" -o "$dir/bad4.ele"
 stderr_has "infinite"; absent "$dir/bad4.ele"
 printf '5 2 0 0\n0 0 0\n1 1 0\n2 0 1\n' >"$dir/short.node"
 expect 2 ".node count" -- "$ridt" triangulate "$dir/short.node" -o "$dir/bad5.ele"
-stderr_has "5"; absent "$dir/bad5.ele"
-expect 2 "unknown option" -- "$ridt" triangulate "$dir/uniform.txt" --frobnicate
+stderr_has "header says 5 points but the file has 3"; absent "$dir/bad5.ele"
+expect 2 "unknown option" -- "$ridt" triangulate "$dir/uniform.txt" --frobnicate -o "$dir/bad6.ele"
+absent "$dir/bad6.ele"
 # Every order and location writes the same file; the combinations that cannot work say why.
 for mode in "--order random" "--order brio" "--locate walk" "--order brio --locate walk"; do
   expect 0 "mode $mode" -- "$ridt" triangulate "$dir/clusters.txt" $mode -o "$dir/c_mode.ele"
@@ -133,18 +140,28 @@ expect 2 "walk with a threaded method" -- "$ridt" triangulate "$dir/uniform.txt"
 stderr_has "serial method only"
 expect 2 "walk in random order" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --order random
 stderr_has "needs the BRIO order"
-expect 2 "unknown order" -- "$ridt" triangulate "$dir/uniform.txt" --order sorted
-stderr_has "unknown order"
-expect 2 "unknown location" -- "$ridt" triangulate "$dir/uniform.txt" --locate jump
-stderr_has "unknown location"
-expect 2 "unknown method" -- "$ridt" triangulate "$dir/uniform.txt" --method magic
-stderr_has "unknown method"
-expect 2 "unknown bounding" -- "$ridt" triangulate "$dir/uniform.txt" --bounding huge
+expect 2 "unknown order" -- "$ridt" triangulate "$dir/uniform.txt" --order sorted -o "$dir/bad7.ele"
+stderr_has "unknown order"; absent "$dir/bad7.ele"
+expect 2 "unknown location" -- "$ridt" triangulate "$dir/uniform.txt" --locate jump -o "$dir/bad8.ele"
+stderr_has "unknown location"; absent "$dir/bad8.ele"
+expect 2 "unknown method" -- "$ridt" triangulate "$dir/uniform.txt" --method magic -o "$dir/bad9.ele"
+stderr_has "unknown method"; absent "$dir/bad9.ele"
+expect 2 "unknown bounding" -- "$ridt" triangulate "$dir/uniform.txt" --bounding huge -o "$dir/bad10.ele"
+absent "$dir/bad10.ele"
 expect 2 "unknown output extension" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/out.xyz"
 stderr_has "unknown output extension"; absent "$dir/out.xyz"
 expect 2 "unknown distribution" -- "$ridt" generate --dist zipf -n 10 -o "$dir/z.txt"
 absent "$dir/z.txt"
-expect 2 "small k" -- "$ridt" triangulate "$dir/uniform.txt" --bounding finite --k 1
+expect 2 "small k" -- "$ridt" triangulate "$dir/uniform.txt" --bounding finite --k 1 -o "$dir/bad11.ele"
+absent "$dir/bad11.ele"
+# check: unreadable or malformed inputs are errors (2), not verdicts (0 or 1).
+expect 2 "check missing points" -- "$ridt" check "$dir/nope.txt" "$dir/uniform.txt.ele"
+stderr_has "cannot read"
+expect 2 "check missing triangles" -- "$ridt" check "$dir/uniform.txt" "$dir/nope.ele"
+stderr_has "cannot read"
+printf '3\n0 0 1 x\n' >"$dir/malformed.ele"
+expect 2 "check malformed triangles" -- "$ridt" check "$dir/uniform.txt" "$dir/malformed.ele"
+stderr_has "malformed.ele:1"
 expect 2 "no subcommand" -- "$ridt"
 # An existing output is left untouched when the input is bad.
 echo keep >"$dir/keep.ele"

@@ -1,12 +1,19 @@
-// ridt against CGAL's Delaunay_triangulation_2 on points in general position, where the
-// Delaunay triangulation is unique: the triangle sets must be identical.
+// ridt against CGAL: Delaunay_triangulation_2 on points in general position, where the
+// Delaunay triangulation is unique and the triangle sets must be identical; on cocircular
+// fixtures, the triangles every Delaunay triangulation has; and the exact predicates.
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <map>
+
 #include "generate.hpp"
 #include "helpers.hpp"
+#include "predicates.hpp"
+#include "random.hpp"
 
 namespace ridt::test {
 namespace {
@@ -16,15 +23,17 @@ using Vb = CGAL::Triangulation_vertex_base_with_info_2<VertexId, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb>;
 using Delaunay = CGAL::Delaunay_triangulation_2<K, Tds>;
 
-TriangleSet cgal_triangles(const std::vector<Point>& pts) {
+std::vector<VertexId> cgal_triangle_list(const std::vector<Point>& pts) {
   std::vector<std::pair<K::Point_2, VertexId>> in;
   for (VertexId i = 0; i < pts.size(); ++i) in.push_back({K::Point_2(pts[i].x, pts[i].y), i});
   Delaunay dt(in.begin(), in.end());
   std::vector<VertexId> tris;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
     for (int i = 0; i < 3; ++i) tris.push_back(f->vertex(i)->info());
-  return canonical(tris);
+  return tris;
 }
+
+TriangleSet cgal_triangles(const std::vector<Point>& pts) { return canonical(cgal_triangle_list(pts)); }
 
 class AgainstCgal : public ::testing::TestWithParam<std::tuple<Distribution, int>> {};
 
@@ -47,16 +56,154 @@ INSTANTIATE_TEST_SUITE_P(GeneralPosition, AgainstCgal,
                                   std::to_string(std::get<1>(info.param));
                          });
 
+// Each point's index mapped to the smallest index of an equal point: CGAL keeps whichever of
+// equal points its spatial sort inserts first, ridt the smallest index.
+std::vector<VertexId> representatives(const std::vector<Point>& pts) {
+  std::map<std::pair<double, double>, VertexId> first;
+  std::vector<VertexId> rep(pts.size());
+  for (VertexId i = 0; i < pts.size(); ++i) rep[i] = first.try_emplace({pts[i].x, pts[i].y}, i).first->second;
+  return rep;
+}
+
+// The triangles of a Delaunay triangulation `tris` (counter-clockwise triples) that are in
+// every Delaunay triangulation of the points: those whose circumcircle has no fourth point on
+// it. In a Delaunay triangulation a point on a triangle's circle lies, with the triangle, in
+// one cell of cocircular points, and the triangle then has a diagonal of that cell as an edge:
+// so testing the vertex across each edge, with CGAL's exact predicate, is enough.
+TriangleSet unique_triangles(const std::vector<Point>& pts, const std::vector<VertexId>& tris) {
+  const std::vector<VertexId> rep = representatives(pts);
+  std::map<std::pair<VertexId, VertexId>, VertexId> across;  // edge a -> b: the third vertex
+  for (std::size_t i = 0; i + 2 < tris.size(); i += 3)
+    for (int k = 0; k < 3; ++k)
+      across[{rep[tris[i + k]], rep[tris[i + (k + 1) % 3]]}] = rep[tris[i + (k + 2) % 3]];
+  auto p2 = [&](VertexId v) { return K::Point_2(pts[v].x, pts[v].y); };
+  std::vector<VertexId> kept;
+  for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
+    const VertexId a = rep[tris[i]], b = rep[tris[i + 1]], c = rep[tris[i + 2]];
+    bool unique = true;
+    for (const auto& [u, v] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+      const auto twin = across.find({v, u});
+      if (twin != across.end() &&
+          CGAL::side_of_oriented_circle(p2(a), p2(b), p2(c), p2(twin->second)) != CGAL::ON_NEGATIVE_SIDE)
+        unique = false;
+    }
+    if (unique) kept.insert(kept.end(), {a, b, c});
+  }
+  return canonical(kept);
+}
+
+// The robustness fixtures hold cocircular points, where CGAL may pick other diagonals: the
+// triangles that every Delaunay triangulation has must be the same in both, and the rest of
+// ridt's triangles pass the exact validator.
 TEST(AgainstCgal, DelaunatorFixtures) {
-  for (const char* name : {"ukraine", "robustness2", "issue44"}) {
+  if (!std::filesystem::is_directory(RIDT_FIXTURES)) GTEST_SKIP() << "no fixtures at " << RIDT_FIXTURES;
+  for (const char* name : {"ukraine", "robustness1", "robustness2", "robustness3", "robustness4",
+                           "issue13", "issue43", "issue44"}) {
     const std::string path = std::string(RIDT_FIXTURES) + "/" + name + ".json";
     const std::vector<Point> pts = read_json_points(path);
-    if (pts.empty()) continue;
-    // CGAL may pick another diagonal where points are cocircular; compare the triangle counts
-    // and require ridt's result to pass the exact validator.
+    ASSERT_FALSE(pts.empty()) << path;
     const Triangulation t = triangulate_checked(pts);
-    EXPECT_EQ(t.size(), cgal_triangles(pts).size()) << name;
+    const TriangleSet ours = unique_triangles(pts, t.triangles);
+    EXPECT_EQ(ours, unique_triangles(pts, cgal_triangle_list(pts))) << name;
+    EXPECT_GT(ours.size(), t.size() / 4) << name << ": hardly any triangle is unique";
   }
+}
+
+// ridt's predicates against CGAL's exact ones (an independent implementation) on cases built to
+// defeat floating point: points on a line or a circle, then moved by a few units in the last
+// place, at several scales, and integers near 2^53.
+int sign(double v) { return (v > 0) - (v < 0); }
+// The determinants in plain double arithmetic, as a naive code would: what makes a case hard.
+int naive_orient(const Point& a, const Point& b, const Point& c) {
+  return sign((a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x));
+}
+int naive_incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  return sign((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+              (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+              (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady));
+}
+
+class PredicatesAgainstCgal : public ::testing::TestWithParam<double> {};
+
+TEST_P(PredicatesAgainstCgal, NearlyCollinearAndCocircular) {
+  const double scale = GetParam();
+  detail::Rng rng(static_cast<std::uint64_t>(std::ilogb(scale) + 2000));
+  auto coord = [&] { return scale * (rng.uniform() - 0.5); };
+  // Moves v by up to 3 units in the last place, often not at all.
+  auto nudge = [&](double v) {
+    for (int k = static_cast<int>(rng.below(7)) - 3; k != 0; k += k > 0 ? -1 : 1)
+      v = std::nextafter(v, k > 0 ? HUGE_VAL : -HUGE_VAL);
+    return v;
+  };
+  auto p2 = [](const Point& p) { return K::Point_2(p.x, p.y); };
+  constexpr int kCases = 20000;
+  int naive_orient_wrong = 0, naive_circle_wrong = 0, signs[3] = {0, 0, 0};
+  for (int i = 0; i < kCases; ++i) {
+    // On (nearly) the line through a and b.
+    const Point a{coord(), coord()}, b{coord(), coord()};
+    const double t = rng.uniform() * 3 - 1;
+    const Point c{nudge(a.x + t * (b.x - a.x)), nudge(a.y + t * (b.y - a.y))};
+    const int o = static_cast<int>(CGAL::orientation(p2(a), p2(b), p2(c)));
+    ASSERT_EQ(detail::orient2d(a, b, c), o) << i;
+    naive_orient_wrong += naive_orient(a, b, c) != o;
+
+    // On (nearly) a circle: rounded, the points are a few ulps off it, and often exactly on it
+    // when the angles are those of a square (±r, 0), (0, ±r).
+    const Point m{coord(), coord()};
+    const double r = scale * (0.1 + rng.uniform());
+    Point q[4];
+    for (Point& p : q) {
+      const int quadrant = static_cast<int>(rng.below(5));
+      const double angle = quadrant < 4 ? quadrant * M_PI / 2 : rng.uniform() * 2 * M_PI;
+      p = {nudge(m.x + r * std::cos(angle)), nudge(m.y + r * std::sin(angle))};
+    }
+    if (CGAL::orientation(p2(q[0]), p2(q[1]), p2(q[2])) == CGAL::COLLINEAR) continue;
+    const int s = static_cast<int>(CGAL::side_of_oriented_circle(p2(q[0]), p2(q[1]), p2(q[2]), p2(q[3])));
+    ASSERT_EQ(detail::incircle(q[0], q[1], q[2], q[3]), s) << i;
+    if (s != 0) ASSERT_EQ(detail::incircle_sos(q[0], q[1], q[2], q[3]), s) << i;
+    naive_circle_wrong += naive_incircle(q[0], q[1], q[2], q[3]) != s;
+    ++signs[s + 1];
+  }
+  // The cases are hard: plain floating point gets many of them wrong, and all three answers
+  // occur.
+  EXPECT_GT(naive_orient_wrong, kCases / 20);
+  EXPECT_GT(naive_circle_wrong, kCases / 20);
+  EXPECT_GT(signs[0], kCases / 20);
+  EXPECT_GT(signs[1], kCases / 200);
+  EXPECT_GT(signs[2], kCases / 20);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, PredicatesAgainstCgal,
+                         ::testing::Values(1e-150, 1e-20, 1.0, 3.0e7, 1e20, 1e150),
+                         [](const auto& info) {
+                           const int e = std::ilogb(info.param);
+                           return (e < 0 ? "two_to_minus_" : "two_to_") + std::to_string(std::abs(e));
+                         });
+
+TEST(PredicatesAgainstCgal, IntegersNear2To53) {
+  detail::Rng rng(53);
+  auto big = [&] { return 0x1p53 - 1 - static_cast<double>(rng.below(1u << 20)); };
+  auto p2 = [](const Point& p) { return K::Point_2(p.x, p.y); };
+  int zeros = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Point a{big(), big()}, b{big(), big()};
+    // c = a + k (b - a) / 4, an exact integer when k (b - a) is a multiple of 4, then moved by
+    // -1, 0 or 1.
+    const double k = static_cast<double>(rng.below(3)) + 1;
+    const Point c{std::round(a.x + k * (b.x - a.x) / 4) + static_cast<double>(rng.below(3)) - 1,
+                  std::round(a.y + k * (b.y - a.y) / 4) + static_cast<double>(rng.below(3)) - 1};
+    const int o = static_cast<int>(CGAL::orientation(p2(a), p2(b), p2(c)));
+    ASSERT_EQ(detail::orient2d(a, b, c), o) << i;
+    zeros += o == 0;
+    const Point d{big(), big()};
+    if (o != 0)
+      ASSERT_EQ(detail::incircle(a, b, c, d),
+                static_cast<int>(CGAL::side_of_oriented_circle(p2(a), p2(b), p2(c), p2(d))))
+          << i;
+  }
+  EXPECT_GT(zeros, 100);
 }
 
 }  // namespace

@@ -51,12 +51,19 @@ TEST(Check, RejectsAnEdgeUsedTwice) {
 }
 
 TEST(Check, RejectsIndicesOutOfRange) {
-  EXPECT_FALSE(check(kQuad, std::vector<VertexId>{0, 1, 7}).valid);
+  // The Delaunay triangulation with one index pointing past the points.
+  const CheckResult r = check(kQuad, std::vector<VertexId>{0, 1, 3, 1, 2, 7});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("out of range"), std::string::npos) << r.message;
 }
 
 TEST(Check, RejectsADegenerateTriangle) {
-  const std::vector<Point> pts = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
-  EXPECT_FALSE(check(pts, std::vector<VertexId>{0, 1, 2}).valid);
+  // (0, 0), (1, 0), (2, 0) on a line: a flat triangle among otherwise valid ones.
+  const std::vector<Point> pts = {{0, 0}, {2, 0}, {1, 0}, {1, 1}};
+  EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 2, 3, 2, 1, 3}).valid);
+  const CheckResult r = check(pts, std::vector<VertexId>{0, 2, 3, 2, 1, 3, 0, 2, 1});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("degenerate"), std::string::npos) << r.message;
 }
 
 TEST(Check, EmptyIsValidOnlyForDegenerateSets) {
@@ -75,6 +82,13 @@ TEST(Check, DuplicatesMayBeUnusedButNotBothUsed) {
   const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
   EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 1, 2}).valid);
   EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 3, 2}).valid);
+  // A square around its centre, given twice (4 and 5): each copy a vertex of two of the four
+  // triangles, which otherwise fit edge to edge.
+  const std::vector<Point> square = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}, {1, 1}};
+  EXPECT_TRUE(check(square, std::vector<VertexId>{0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4}).valid);
+  const CheckResult r = check(square, std::vector<VertexId>{0, 1, 4, 1, 2, 4, 2, 3, 5, 3, 0, 5});
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("appears as 2 vertices"), std::string::npos) << r.message;
 }
 
 TEST(Check, CollinearHullPointsMustBeVertices) {

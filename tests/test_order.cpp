@@ -70,7 +70,12 @@ TEST(HilbertKey, ConsecutiveCellsAreNeighbours) {
 TEST(HilbertOrder, SortsByKeyAndKeepsEveryIndex) {
   const std::vector<Point> pts = generate(Distribution::Uniform, 5000, 4);
   const std::vector<std::uint32_t> order = hilbert_order(pts.data(), 5000);
+  ASSERT_EQ(order.size(), 5000u);
   EXPECT_EQ(std::set<std::uint32_t>(order.begin(), order.end()).size(), 5000u);
+  EXPECT_LT(*std::max_element(order.begin(), order.end()), 5000u);
+  // Along the curve over the whole box: keys never go down (equal keys are refined further).
+  const std::vector<std::uint32_t> key = hilbert_keys(pts.data(), 5000);
+  for (std::size_t i = 1; i < order.size(); ++i) ASSERT_LE(key[order[i - 1]], key[order[i]]) << i;
   // Neighbours along the curve are close: the mean step is far below the mean distance of
   // two random points in the unit square (about 0.52).
   double sum = 0;
