@@ -126,9 +126,11 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n;
   };
 
-  // Pass 1, on `threads` threads, each over its own range of 64-record words: a bit for each
-  // kept record, and the kept records moved to the front of the range, in order, with the
-  // input indices that stand for their vertices. A record moves only down and is read before
+  // Pass 1, on `threads` threads, block by block (blocks of 64-record words, taken in turn
+  // from a shared counter: the kept records crowd the later blocks, the last insertions' records,
+  // so equal shares of the records would be unequal work): a bit for each kept record, and
+  // the kept records moved to the front of their block, in order, with the input indices that
+  // stand for their vertices. A record moves only down and is read before
   // anything is written over it. A kept triangle's new id is its rank among the kept ones:
   // the kept records before its word (rank_before) and those before it in the word (a
   // popcount). The bits and ranks take 12 bytes for 64 records and stay in cache, where
@@ -139,41 +141,47 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   const auto workers =
       static_cast<unsigned>(std::clamp<std::size_t>(words / 1024 + 1, 1, std::max(threads, 1u)));
   std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
+  constexpr std::size_t kBlockWords = 1024;     // 65,536 records
+  const std::size_t blocks = (words + kBlockWords - 1) / kBlockWords;
   auto in_parallel = [&](unsigned count, auto&& body) {
     std::vector<std::jthread> pool;
     for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
     body(0u);
   };  // the pool joins on leaving
-  // Worker w's words are [first_word(w), first_word(w + 1)), its records those of its words.
-  auto first_word = [&](unsigned w) { return words * w / workers; };
-  auto range = [&](unsigned w) {
-    return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(w), records)),
-                     static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(w + 1), records)));
+  // Block b's words are [first_word(b), first_word(b + 1)), its records those of its words.
+  auto first_word = [&](std::size_t b) { return std::min(b * kBlockWords, words); };
+  auto range = [&](std::size_t b) {
+    return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b), records)),
+                     static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b + 1), records)));
   };
+  std::atomic<std::size_t> next_block{0};
   in_parallel(workers, [&](unsigned w) {
-    const auto [begin, end] = range(w);
-    TriangleId to = begin;
     std::uint64_t m = 0;
-    // The input numbers of the vertices are read at random: those of a record kAhead on are
-    // prefetched, so the misses overlap.
-    constexpr TriangleId kAhead = 16;
-    for (std::size_t k = first_word(w); k < first_word(w + 1); ++k) {
-      std::uint64_t bits = 0;
-      const TriangleId stop = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
-      for (TriangleId t = static_cast<TriangleId>(64 * k); t < stop; ++t) {
-        if (t + kAhead < end && !unused(t + kAhead) && kept(tris[t + kAhead]))
-          for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
-        if (unused(t)) continue;
-        const Triangle& r = tris[t];
-        m += r.v[0] != kNone;
-        if (!kept(r)) continue;
-        bits |= std::uint64_t{1} << (t & 63);
-        const Triangle front{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])},
-                             {r.n[0], r.n[1], r.n[2]}, 0};
-        tris[to++] = front;
+    // relaxed: the blocks need only be distinct; the joins order the results.
+    for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < blocks;) {
+      const auto [begin, end] = range(b);
+      TriangleId to = begin;
+      // The input numbers of the vertices are read at random: those of a record kAhead on are
+      // prefetched, so the misses overlap.
+      constexpr TriangleId kAhead = 16;
+      for (std::size_t k = first_word(b); k < first_word(b + 1); ++k) {
+        std::uint64_t bits = 0;
+        const TriangleId stop = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
+        for (TriangleId t = static_cast<TriangleId>(64 * k); t < stop; ++t) {
+          if (t + kAhead < end && !unused(t + kAhead) && kept(tris[t + kAhead]))
+            for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
+          if (unused(t)) continue;
+          const Triangle& r = tris[t];
+          m += r.v[0] != kNone;
+          if (!kept(r)) continue;
+          bits |= std::uint64_t{1} << (t & 63);
+          const Triangle front{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])},
+                               {r.n[0], r.n[1], r.n[2]}, 0};
+          tris[to++] = front;
+        }
+        kept_bits[k] = bits;
+        rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
       }
-      kept_bits[k] = bits;
-      rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
     }
     made[w] = m;
   });
@@ -184,8 +192,8 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     const std::uint64_t below = kept_bits[t >> 6] & ((std::uint64_t{1} << (t & 63)) - 1);
     return static_cast<std::int32_t>(rank_before[t >> 6] + ones(below));
   };
-  // The kept records of range w, moved to [begin, begin + moved(w)).
-  auto moved = [&](unsigned w) { return rank_before[first_word(w + 1)] - rank_before[first_word(w)]; };
+  // The kept records of block b, moved to [begin, begin + moved(b)).
+  auto moved = [&](std::size_t b) { return rank_before[first_word(b + 1)] - rank_before[first_word(b)]; };
 
   // Pass 2: the moved records copied out, range after range, with their neighbours' new ids
   // (from the bits; -1 across the hull), and each chunk of records freed once behind the
@@ -196,6 +204,18 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   // needed (but for the finite bounding triangle's check below): their copy goes first.
   if (options.bounding == Bounding::Symbolic) kernel.release_points();
   const unsigned copiers = workers > 1 ? 2 : 1;
+  auto neighbour_id = [&](TriangleId u) { return u != kNone && is_kept(u) ? new_id(u) : kNoNeighbor; };
+  // With two copiers, the neighbours' new ids would make the neighbour copier's work twice the
+  // vertex copier's: they are written into the moved records first, on every worker, block
+  // by block, and then both copiers only copy.
+  if (copiers == 2) {
+    next_block = 0;
+    in_parallel(workers, [&](unsigned) {
+      for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < blocks;)
+        for (TriangleId t = range(b).first, stop = t + moved(b); t < stop; ++t)
+          for (TriangleId& u : tris[t].n) u = static_cast<TriangleId>(neighbour_id(u));
+    });
+  }
   std::atomic<std::uint64_t> copied[2] = {0, 0};  // each copier's progress, in records
   std::atomic<std::uint32_t> freed{0};            // chunks
   // Records that fit in one chunk are given back page by page instead, some 64 KiB at a time.
@@ -234,15 +254,14 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       copied[c].store(done, std::memory_order_release);
       release_behind();
     };
-    for (unsigned w = 0; w < workers; ++w) {
-      const auto [begin, end] = range(w);
-      for (TriangleId t = begin; t < begin + moved(w); ++t) {
+    for (std::size_t b = 0; b < blocks; ++b) {
+      const auto [begin, end] = range(b);
+      for (TriangleId t = begin; t < begin + moved(b); ++t) {
         const Triangle& r = tris[t];
         for (int i = 0; i < 3; ++i, ++k) {
           if (vertices) vs[k] = r.v[i];
           if (!neighbours) continue;
-          const TriangleId u = r.n[i];
-          ns[k] = u != kNone && is_kept(u) ? new_id(u) : kNoNeighbor;
+          ns[k] = copiers == 2 ? static_cast<std::int32_t>(r.n[i]) : neighbour_id(r.n[i]);
           if (ns[k] == kNoNeighbor) hull_edges.emplace_back(r.v[next(i)], r.v[prev(i)]);
         }
         if (k == 3 * kBlock) flush(t + 1);
