@@ -3,12 +3,16 @@
 // sorts spatially) on the same points in the same run. Every figure is the median of --reps
 // runs; the ratio column is ridt / CGAL.
 //
-//   ridt_bench_serial [--max-n N] [--reps R] [--csv FILE]
+//   ridt_bench_serial [--max-n N] [--sizes N,N,...] [--dists uniform,...] [--reps R] [--csv FILE]
+//
+// --sizes and --dists pick rows and columns (a column left out prints as dashes); by default
+// all four distributions at n = 100 ... --max-n.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,22 +51,47 @@ double cgal_seconds(const std::vector<ridt::Point>& pts) {
 
 }  // namespace
 
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> parts;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) parts.push_back(item);
+  return parts;
+}
+
 int main(int argc, char** argv) {
   std::uint32_t max_n = 1000000;
   int reps = 5;
   std::string csv;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--max-n") && i + 1 < argc) max_n = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) reps = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
-    else {
-      std::fprintf(stderr, "usage: %s [--max-n N] [--reps R] [--csv FILE]\n", argv[0]);
-      return 2;
-    }
-  }
-  const std::uint32_t sizes[] = {100, 500, 1000, 5000, 10000, 50000, 100000, 500000, 1000000};
+  std::vector<std::uint32_t> sizes = {100, 500, 1000, 5000, 10000, 50000, 100000, 500000, 1000000};
   const ridt::Distribution dists[] = {ridt::Distribution::Uniform, ridt::Distribution::Normal,
                                       ridt::Distribution::Grid, ridt::Distribution::Clusters};
+  bool wanted[4] = {true, true, true, true};
+  bool usage = false;
+  for (int i = 1; i < argc && !usage; ++i) {
+    if (!std::strcmp(argv[i], "--max-n") && i + 1 < argc) {
+      max_n = std::atoi(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) {
+      sizes.clear();
+      for (const std::string& n : split(argv[++i])) sizes.push_back(static_cast<std::uint32_t>(std::stoul(n)));
+    } else if (!std::strcmp(argv[i], "--dists") && i + 1 < argc) {
+      std::fill(std::begin(wanted), std::end(wanted), false);
+      for (const std::string& name : split(argv[++i])) {
+        const auto d = ridt::parse_distribution(name);
+        if (!d) usage = true;
+        else wanted[static_cast<int>(*d)] = true;
+      }
+    } else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) {
+      reps = std::atoi(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) {
+      csv = argv[++i];
+    } else {
+      usage = true;
+    }
+  }
+  if (usage || reps < 1) {
+    std::fprintf(stderr, "usage: %s [--max-n N] [--sizes N,N,...] [--dists uniform,normal,grid,clusters] [--reps R] [--csv FILE]\n", argv[0]);
+    return 2;
+  }
   FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
   if (out) std::fprintf(out, "distribution,n,ridt_s,cgal_s,ratio,locate_share,split_share,legalize_share\n");
 
@@ -73,9 +102,13 @@ int main(int argc, char** argv) {
   struct Share { std::uint32_t n; double loc, split, leg; };
   std::vector<Share> fig8;
   for (std::uint32_t n : sizes) {
-    if (n > max_n) break;
+    if (n > max_n) continue;
     std::printf("%9u", n);
     for (auto d : dists) {
+      if (!wanted[static_cast<int>(d)]) {
+        std::printf(" | %8s %8s %6s", "-", "-", "-");
+        continue;
+      }
       const std::vector<ridt::Point> pts = ridt::generate(d, n, 1);
       std::vector<double> ours, theirs, loc, split, leg;
       for (int r = 0; r < reps; ++r) {
