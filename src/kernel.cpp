@@ -19,7 +19,8 @@ bool between(const Point& p, const Point& a, const Point& b) {
 
 Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic,
                bool brio, bool history)
-    : points_(std::move(points)), n_(n), symbolic_(symbolic), brio_(brio), history_(history),
+    : points_(std::move(points)), n_(n), first_symbolic_(symbolic ? n : kNone), brio_(brio),
+      history_(history),
       // With history about 9 records a point: 3 from the split, 2 a flip. Without, 2 a point.
       tris_(std::uint64_t{n} * (history ? 9 : 2) + kFirstChild + 8) {
   Scratch s;

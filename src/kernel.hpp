@@ -3,6 +3,7 @@
 // 1->3 or 2->4, legalize by flips. Every method drives this one kernel.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -139,13 +140,13 @@ class Kernel {
   void legalize(VertexId p, Scratch& s);
 
   int orient(VertexId a, VertexId b, VertexId c) const {
-    if (symbolic_ && (a >= n_ || b >= n_ || c >= n_)) return orient_symbolic(a, b, c);
+    if (std::max({a, b, c}) >= first_symbolic_) return orient_symbolic(a, b, c);
     return orient2d(points_[a], points_[b], points_[c]);
   }
   /// +1 if finite point p lies inside the circle of the counter-clockwise triangle (a, b, c),
   /// -1 outside; never 0 (symbolic perturbation).
   int incircle(VertexId a, VertexId b, VertexId c, VertexId p) const {
-    if (symbolic_ && (a >= n_ || b >= n_ || c >= n_)) return incircle_symbolic(a, b, c, p);
+    if (std::max({a, b, c}) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
     return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
   }
 
@@ -344,7 +345,9 @@ class Kernel {
 
   std::unique_ptr<Point[], FreeDeleter> points_;
   std::uint32_t n_;
-  bool symbolic_;
+  // n when the bounding vertices are symbolic, else past every vertex id: the predicates take
+  // the symbolic rules exactly when a vertex id reaches it (one comparison, on every test).
+  std::uint32_t first_symbolic_;
   bool brio_;
   bool history_;
   TriangleStore tris_;
