@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "generate.hpp"
 #include "ridt/ridt.hpp"
 
@@ -41,14 +42,12 @@ extern "C" {
 
 namespace {
 
+using ridt::bench::median;
+using ridt::bench::split;
+
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
 }
 
 #ifdef RIDT_WITH_CGAL
@@ -250,14 +249,6 @@ Delaunator run_delaunator(const std::string &modules,
   if (mem != std::string::npos)
     d.extra = std::stod(out.substr(mem + 18));
   return d;
-}
-
-std::vector<std::string> split(const std::string &s) {
-  std::vector<std::string> parts;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    parts.push_back(item);
-  return parts;
 }
 
 } // namespace

@@ -12,10 +12,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "common.hpp"
 #include "generate.hpp"
 #include "ridt/ridt.hpp"
 
@@ -26,10 +26,8 @@
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
+using ridt::bench::median;
+using ridt::bench::split;
 
 double cgal_seconds(const std::vector<ridt::Point>& pts) {
 #ifdef RIDT_WITH_CGAL
@@ -50,13 +48,6 @@ double cgal_seconds(const std::vector<ridt::Point>& pts) {
 }
 
 }  // namespace
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> parts;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');) parts.push_back(item);
-  return parts;
-}
 
 int main(int argc, char** argv) {
   std::uint32_t max_n = 1000000;

@@ -18,27 +18,18 @@
 #include <numeric>
 #include <random>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "common.hpp"
 #include "generate.hpp"
 #include "ridt/ridt.hpp"
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0 : v[v.size() / 2];
-}
-
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> out;
-  std::stringstream ss(list);
-  for (std::string t; std::getline(ss, t, ',');) out.push_back(t);
-  return out;
-}
+using ridt::bench::median;
+using ridt::bench::split;
 
 struct Config {
   std::string method;  // serial, pessimistic, paper, optimistic, batch

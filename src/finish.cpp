@@ -138,11 +138,11 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   const std::size_t words = (std::size_t{records} + 63) / 64;
   std::vector<std::uint64_t> kept_bits(words);
   std::vector<std::uint32_t> rank_before(words + 1, 0);
-  const auto workers =
-      static_cast<unsigned>(std::clamp<std::size_t>(words / 1024 + 1, 1, std::max(threads, 1u)));
-  std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
-  constexpr std::size_t kBlockWords = 1024;     // 65,536 records
+  constexpr std::size_t kBlockWords = 1024;  // 65,536 records
   const std::size_t blocks = (words + kBlockWords - 1) / kBlockWords;
+  // A thread for each block at most: a run that fits in one block runs on the caller alone.
+  const auto workers = static_cast<unsigned>(std::clamp<std::size_t>(blocks, 1, std::max(threads, 1u)));
+  std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
   auto in_parallel = [&](unsigned count, auto&& body) {
     std::vector<std::jthread> pool;
     for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
