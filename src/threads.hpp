@@ -160,6 +160,10 @@ void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::du
       wait[w] += Clock::now() - t0;
     };
     try {
+      // The first report says the insertion has begun (0), as the serial method's does: worker
+      // 0 reports only after its own chunks, and the other workers may take all of the early,
+      // small rounds.
+      if (w == 0) progress(0);
       for (std::size_t r = 0; r < rounds.rounds(); ++r) {
         const VertexId first = rounds.first(r), end = rounds.first(r + 1);
         // Chunks: enough of them that the workers finish together, each still long enough
