@@ -17,7 +17,7 @@ bool between(const Point& p, const Point& a, const Point& b) {
 
 }  // namespace
 
-Kernel::Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic,
+Kernel::Kernel(Block<Point> points, std::uint32_t n, bool symbolic,
                bool brio, bool history)
     : points_(std::move(points)), n_(n), first_symbolic_(symbolic ? n : kNone), brio_(brio),
       history_(history),

@@ -51,7 +51,7 @@ class Kernel {
   /// the BRIO order (order.hpp), each round already along the curve. `history`: keep the DAG;
   /// without it a split or flip rewrites the records it replaces, points are located by
   /// walking (walk), and a third of the memory goes.
-  Kernel(std::unique_ptr<Point[], FreeDeleter> points, std::uint32_t n, bool symbolic,
+  Kernel(Block<Point> points, std::uint32_t n, bool symbolic,
          bool brio = false, bool history = true);
 
   enum class Where { Inside, OnEdge, OnVertex };
@@ -343,7 +343,7 @@ class Kernel {
     if (s.owner != 0) s.made.push_back(t);
   }
 
-  std::unique_ptr<Point[], FreeDeleter> points_;
+  Block<Point> points_;
   std::uint32_t n_;
   // n when the bounding vertices are symbolic, else past every vertex id: the predicates take
   // the symbolic rules exactly when a vertex id reaches it (one comparison, on every test).

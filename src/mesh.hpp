@@ -103,7 +103,7 @@ class TriangleStore {
   }
   ~TriangleStore() {
     const std::uint64_t chunks = capacity_.load(std::memory_order_relaxed) >> kChunkBits;
-    for (std::uint64_t i = 0; i < chunks; ++i) std::free(chunks_[i].load(std::memory_order_relaxed));
+    for (std::uint32_t c = 0; c < chunks; ++c) free_chunk(c, chunks_[c].load(std::memory_order_relaxed));
   }
   TriangleStore(const TriangleStore&) = delete;
   TriangleStore& operator=(const TriangleStore&) = delete;
@@ -159,7 +159,7 @@ class TriangleStore {
   /// Frees chunk c (ids c * kChunkSize on), once no thread reads it again: the finish gives
   /// the records back as it copies them out, so the output does not come on top of them.
   void release_chunk(std::uint32_t c) {
-    std::free(chunks_[c].exchange(nullptr, std::memory_order_relaxed));
+    free_chunk(c, chunks_[c].exchange(nullptr, std::memory_order_relaxed));
   }
 
   /// Gives the pages that hold nothing but records [begin, end), all of one chunk, back to
@@ -186,6 +186,7 @@ class TriangleStore {
     while (capacity < end) {
       // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
       auto chunk = allocate_huge<Triangle>(kChunkSize, capacity > 0 || expected_ >= kChunkSize / 4);
+      deleter_[capacity > 0] = chunk.get_deleter();
       // release: pairs with find's racy load (the others are ordered as said above).
       chunks_[capacity >> kChunkBits].store(chunk.release(), std::memory_order_release);
       capacity += kChunkSize;
@@ -193,7 +194,11 @@ class TriangleStore {
     }
   }
 
+  // Chunk c goes back through deleter_[c > 0]: only the first may be off huge pages.
+  void free_chunk(std::uint32_t c, Triangle* chunk) { deleter_[c > 0](chunk); }
+
   std::uint64_t expected_;
+  BlockDeleter deleter_[2];  // written under grow_, read once no thread grows the store
   std::unique_ptr<std::atomic<Triangle*>[]> chunks_;  // read by every thread at every step
   // Written at every allocation: a line of their own, or each write would evict the line
   // above from the other threads' caches.

@@ -246,6 +246,54 @@ TEST(Progress, ReportedByEveryMethodAndCanAbandonTheRun) {
   EXPECT_EQ(compare(triangulate(pts, o), expected), "");
 }
 
+// Blocks kept between calls (set_memory_cache_limit) hold the records of the run before, of
+// another method, or of an abandoned run: every method must give the same result on them as
+// on fresh memory. (The sanitizers' builds keep nothing by default; here the limit is set.)
+TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
+  // Enough points for the records' chunks to be on huge pages, which are the ones kept.
+  const std::vector<Point> pts = generate(Distribution::Uniform, 20000, 9);
+  const std::size_t before = set_memory_cache_limit(0);
+  ASSERT_EQ(cached_memory(), 0u);
+  const Triangulation fresh = triangulate(pts);
+  ASSERT_EQ(audit(pts, fresh), "");
+  EXPECT_EQ(cached_memory(), 0u);  // with no room, nothing is kept
+
+  set_memory_cache_limit(std::size_t{1} << 30);
+  EXPECT_EQ(compare(triangulate(pts), fresh), "");
+  const std::size_t kept = cached_memory();
+  EXPECT_GT(kept, 0u);
+  struct Abandon {};
+  const std::pair<Method, const char*> methods[] = {{Method::Serial, "serial"},
+                                                    {Method::Pessimistic, "pessimistic"},
+                                                    {Method::Optimistic, "optimistic"},
+                                                    {Method::Batch, "batch"}};
+  for (const auto& [m, name] : methods) {
+    for (const Order order : {Order::Random, Order::Brio}) {
+      Options o;
+      o.method = m;
+      o.order = order;
+      o.threads = 2;
+      o.seed = 3;
+      const Triangulation t = triangulate(pts, o);
+      EXPECT_EQ(audit(pts, t), "") << name;
+      EXPECT_EQ(compare(t, fresh), "") << name;
+      // The same amount is kept after each run: its blocks were taken from the cache and
+      // given back, none added.
+      EXPECT_EQ(cached_memory(), kept) << name;
+      // Abandoned at the first report, once the records' blocks are taken (Progress above
+      // abandons runs midway, on the default limit).
+      o.progress = [](double) { throw Abandon{}; };
+      EXPECT_THROW(triangulate(pts, o), Abandon);
+    }
+  }
+  EXPECT_EQ(cached_memory(), kept);
+
+  // A lower limit gives back what is over it at once.
+  EXPECT_EQ(set_memory_cache_limit(0), std::size_t{1} << 30);
+  EXPECT_EQ(cached_memory(), 0u);
+  set_memory_cache_limit(before);
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
                          [](const auto& info) { return std::string(info.param.name); });
 INSTANTIATE_TEST_SUITE_P(Methods, Workers, ::testing::ValuesIn(kVariants, kVariants + 3),

@@ -226,6 +226,8 @@ int run_triangulate(const TriangulateArgs& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // One triangulation a process: blocks kept for a next call would only raise the peak.
+  ridt::set_memory_cache_limit(0);
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
 

@@ -14,6 +14,7 @@
 // every distinct point is a vertex; duplicates are reported and left out.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -159,5 +160,18 @@ Triangulation triangulate(std::span<const Point> points, const Options& options 
 
 /// The same for a flat array x0, y0, x1, y1, ... (its size must be even).
 Triangulation triangulate(std::span<const double> xy, const Options& options = {});
+
+/// triangulate keeps the large blocks of its work space (the triangle records, some 250 bytes
+/// a point, and its copy of the points) for the next call in the process instead of giving
+/// them back to the system, up to this many bytes in all: 512 MiB by default (enough for some
+/// two million points), none in builds with AddressSanitizer or ThreadSanitizer. A block the
+/// system hands out anew has its pages faulted in and zeroed on first touch, which can take a
+/// third of a call's time. Set 0 when one call is all a process makes, or to give back at
+/// once what is kept: kept blocks also raise the call's peak memory, since the records are
+/// then kept while the result is written. Thread-safe. Returns the previous limit.
+std::size_t set_memory_cache_limit(std::size_t bytes);
+
+/// The bytes kept now for the next call (see set_memory_cache_limit).
+std::size_t cached_memory();
 
 }  // namespace ridt
