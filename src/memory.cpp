@@ -63,6 +63,12 @@ void* take_cached_block(std::size_t bytes) {
   return nullptr;
 }
 
+bool cache_has_room(std::size_t bytes) {
+  Cache& c = cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  return c.held + bytes <= c.limit;
+}
+
 void release_block(void* p, std::size_t bytes) {
   Cache& c = cache();
   {

@@ -27,6 +27,9 @@ void* take_cached_block(std::size_t bytes);
 /// room, else freed.
 void release_block(void* p, std::size_t bytes);
 
+/// Whether a block of `bytes` given back now would be kept.
+bool cache_has_room(std::size_t bytes);
+
 /// Frees a block made by allocate_huge, through the cache when it may be kept.
 struct BlockDeleter {
   std::size_t cacheable_bytes = 0;  // the block's size if it is on huge pages, else 0

@@ -165,8 +165,12 @@ class TriangleStore {
   /// Gives the pages that hold nothing but records [begin, end), all of one chunk, back to
   /// the kernel, once no thread reads them again (they would read as zeros). The finish does
   /// this behind its copy when all records fit in one chunk, which it frees only at the end.
+  /// Not when the chunk is to be kept for the next call (memory.hpp): its pages would then
+  /// have to be faulted in again.
   void release_pages(TriangleId begin, TriangleId end) {
 #ifdef MADV_DONTNEED
+    const BlockDeleter& owner = deleter_[(begin >> kChunkBits) > 0];
+    if (owner.cacheable_bytes != 0 && cache_has_room(owner.cacheable_bytes)) return;
     constexpr std::uintptr_t kPage = 4096;
     const std::uint32_t c = begin >> kChunkBits;
     const auto base = reinterpret_cast<std::uintptr_t>(chunks_[c].load(std::memory_order_relaxed));
