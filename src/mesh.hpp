@@ -169,10 +169,10 @@ class TriangleStore {
   /// have to be faulted in again.
   void release_pages(TriangleId begin, TriangleId end) {
 #ifdef MADV_DONTNEED
-    const BlockDeleter& owner = deleter_[(begin >> kChunkBits) > 0];
-    if (owner.cacheable_bytes != 0 && cache_has_room(owner.cacheable_bytes)) return;
-    constexpr std::uintptr_t kPage = 4096;
     const std::uint32_t c = begin >> kChunkBits;
+    const std::size_t kept_bytes = deleter(c).cacheable_bytes;
+    if (kept_bytes != 0 && cache_has_room(kept_bytes)) return;
+    constexpr std::uintptr_t kPage = 4096;
     const auto base = reinterpret_cast<std::uintptr_t>(chunks_[c].load(std::memory_order_relaxed));
     const std::uint64_t first = begin - (c << kChunkBits), last = end - (c << kChunkBits);
     const std::uintptr_t from = (base + first * sizeof(Triangle) + kPage - 1) & ~(kPage - 1);
@@ -198,8 +198,9 @@ class TriangleStore {
     }
   }
 
-  // Chunk c goes back through deleter_[c > 0]: only the first may be off huge pages.
-  void free_chunk(std::uint32_t c, Triangle* chunk) { deleter_[c > 0](chunk); }
+  // How chunk c goes back: only the first may be off huge pages, and so not kept.
+  const BlockDeleter& deleter(std::uint32_t c) const { return deleter_[c > 0]; }
+  void free_chunk(std::uint32_t c, Triangle* chunk) { deleter(c)(chunk); }
 
   std::uint64_t expected_;
   BlockDeleter deleter_[2];  // written under grow_, read once no thread grows the store
