@@ -196,11 +196,11 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   auto moved = [&](std::size_t b) { return rank_before[first_word(b + 1)] - rank_before[first_word(b)]; };
 
   // Pass 2: the moved records copied out, range after range, with their neighbours' new ids
-  // (from the bits; -1 across the hull), and each chunk of records freed once behind the
-  // copy. The output is reserved, not filled, so its pages are first touched as it grows:
-  // with the chunks given back meanwhile, the peak is that of the records and not of the
+  // (from the bits; -1 across the hull), and the records' pages given back behind the copy.
+  // The output is reserved, not filled, so its pages are first touched as it grows: with the
+  // records' pages given back meanwhile, the peak is that of the records and not of the
   // records and the output together. With two threads or more, one copies the vertices and
-  // another the neighbours, and a chunk goes once both are past it. The points are no longer
+  // another the neighbours, and a page goes once both are past it. The points are no longer
   // needed (but for the finite bounding triangle's check below): their copy goes first.
   if (options.bounding == Bounding::Symbolic) kernel.release_points();
   const unsigned copiers = workers > 1 ? 2 : 1;
@@ -217,23 +217,15 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     });
   }
   std::atomic<std::uint64_t> copied[2] = {0, 0};  // each copier's progress, in records
-  std::atomic<std::uint32_t> freed{0};            // chunks
-  // Records that fit in one chunk are given back page by page instead, some 64 KiB at a time.
-  const bool one_chunk = records <= TriangleStore::kChunkSize;
-  constexpr std::uint64_t kPagesStep = (std::uint64_t{1} << 16) / sizeof(Triangle);  // records
-  std::atomic<std::uint64_t> paged{0};  // records whose pages are given back
+  // The records' pages go back behind the copy, a step at a time.
+  const std::uint64_t step = tris.release_step();
+  std::atomic<std::uint64_t> released{0};  // records whose pages are given back
   auto release_behind = [&]() {
     std::uint64_t done = copied[0].load(std::memory_order_acquire);
     if (copiers == 2) done = std::min(done, copied[1].load(std::memory_order_acquire));
-    if (one_chunk) {
-      std::uint64_t p = paged.load(std::memory_order_relaxed);
-      if (done >= p + kPagesStep && paged.compare_exchange_strong(p, done, std::memory_order_relaxed))
-        tris.release_pages(static_cast<TriangleId>(p), static_cast<TriangleId>(done));
-      return;
-    }
-    std::uint32_t f = freed.load(std::memory_order_relaxed);
-    while ((std::uint64_t{f} + 1) * TriangleStore::kChunkSize <= done)
-      if (freed.compare_exchange_weak(f, f + 1, std::memory_order_relaxed)) tris.release_chunk(f++);
+    std::uint64_t p = released.load(std::memory_order_relaxed);
+    if (done >= p + step && released.compare_exchange_strong(p, done, std::memory_order_relaxed))
+      tris.release_pages(static_cast<TriangleId>(p), static_cast<TriangleId>(done));
   };
   // Copier c writes the vertices (c = 0, and the neighbours too when alone) or the neighbours,
   // and the one that writes the neighbours finds the hull's edges.
@@ -269,8 +261,6 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       flush(end);
     }
   });
-  for (std::uint32_t f = freed.load(); std::uint64_t{f} * TriangleStore::kChunkSize < records; ++f)
-    tris.release_chunk(f);
 
   // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
   // from the smallest vertex index.

@@ -247,7 +247,7 @@ class Kernel {
   void retire_pool(Scratch& s);
 
   const TriangleStore& triangles() const { return tris_; }
-  /// For the finish only: it frees the records' chunks as it copies them out.
+  /// For the finish only: it gives the records' pages back as it copies them out.
   TriangleStore& triangles_for_finish() { return tris_; }
   const Point& point(VertexId v) const { return points_[v]; }
   /// For the finish, once no predicate runs: frees the points' copy, to lower the peak.

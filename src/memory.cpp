@@ -1,5 +1,9 @@
 #include "memory.hpp"
 
+#include <sys/mman.h>
+
+#include <algorithm>
+#include <cstdint>
 #include <mutex>
 #include <new>
 #include <utility>
@@ -25,19 +29,33 @@ constexpr std::size_t kDefaultLimit = std::size_t{512} << 20;
 #endif
 
 struct Cache {
+  // A kept block (from allocate_huge) or range (from a Reservation, when `block` is null),
+  // counted as `bytes`: a range's committed bytes.
+  struct Entry {
+    std::size_t bytes;
+    void* block;
+    Reservation::Mapping range;
+  };
   std::mutex mutex;
-  std::vector<std::pair<std::size_t, void*>> blocks;  // (size, block), the last given back last
-  std::size_t held = 0;                               // bytes in `blocks`
+  std::vector<Entry> kept;  // the last given back last
+  std::size_t held = 0;     // bytes in `kept`
   std::size_t limit = kDefaultLimit;
 
-  // Frees the oldest blocks until at most `keep` bytes are held. Under the mutex.
+  std::size_t room() const { return limit > held ? limit - held : 0; }
+  // Frees the oldest entries until at most `keep` bytes are held. Under the mutex.
   void shrink(std::size_t keep) {
     std::size_t i = 0;
-    for (; i < blocks.size() && held > keep; ++i) {
-      held -= blocks[i].first;
-      std::free(blocks[i].second);
+    for (; i < kept.size() && held > keep; ++i) {
+      held -= kept[i].bytes;
+      free_entry(kept[i]);
     }
-    blocks.erase(blocks.begin(), blocks.begin() + static_cast<std::ptrdiff_t>(i));
+    kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  static void free_entry(const Entry& e) {
+    if (e.block != nullptr)
+      std::free(e.block);
+    else
+      munmap(e.range.map, e.range.map_bytes);
   }
   ~Cache() { shrink(0); }
 };
@@ -47,17 +65,19 @@ Cache& cache() {
   return c;
 }
 
+std::size_t round_up(std::size_t x, std::size_t to) { return (x + to - 1) / to * to; }
+
 }  // namespace
 
 void* take_cached_block(std::size_t bytes) {
   Cache& c = cache();
   const std::lock_guard<std::mutex> guard(c.mutex);
   // The most recently given back first: its pages are the likeliest to be in the TLB and cache.
-  for (auto it = c.blocks.rbegin(); it != c.blocks.rend(); ++it) {
-    if (it->first != bytes) continue;
-    void* p = it->second;
+  for (auto it = c.kept.rbegin(); it != c.kept.rend(); ++it) {
+    if (it->block == nullptr || it->bytes != bytes) continue;
+    void* p = it->block;
     c.held -= bytes;
-    c.blocks.erase(std::next(it).base());
+    c.kept.erase(std::next(it).base());
     return p;
   }
   return nullptr;
@@ -66,16 +86,16 @@ void* take_cached_block(std::size_t bytes) {
 bool cache_has_room(std::size_t bytes) {
   Cache& c = cache();
   const std::lock_guard<std::mutex> guard(c.mutex);
-  return c.held + bytes <= c.limit;
+  return bytes <= c.room();
 }
 
 void release_block(void* p, std::size_t bytes) {
   Cache& c = cache();
   {
     const std::lock_guard<std::mutex> guard(c.mutex);
-    if (bytes != 0 && c.held + bytes <= c.limit) {
+    if (bytes != 0 && bytes <= c.room()) {
       try {
-        c.blocks.emplace_back(bytes, p);
+        c.kept.push_back({bytes, p, {}});
         c.held += bytes;
         return;
       } catch (const std::bad_alloc&) {
@@ -84,6 +104,103 @@ void release_block(void* p, std::size_t bytes) {
     }
   }
   std::free(p);
+}
+
+Reservation::Reservation(std::size_t bytes, bool huge) {
+  Cache& c = cache();
+  {
+    const std::lock_guard<std::mutex> guard(c.mutex);
+    for (auto it = c.kept.rbegin(); it != c.kept.rend(); ++it) {
+      if (it->block != nullptr || it->range.reserved < bytes) continue;
+      m_ = it->range;
+      c.held -= it->bytes;
+      c.kept.erase(std::next(it).base());
+      break;
+    }
+  }
+  if (m_.map == nullptr) {
+    // Address space only: PROT_NONE is neither usable nor charged to the commit limit, and
+    // most systems grant tens of GiB. Where a limit on address space refuses, ask for less.
+    const std::size_t align = huge ? kHugePage : 4096;
+    for (bytes = round_up(std::max<std::size_t>(bytes, 1), align);; bytes = round_up(bytes / 2, align)) {
+      void* p = mmap(nullptr, bytes + align, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+      if (p != MAP_FAILED) {
+        const auto at = reinterpret_cast<std::uintptr_t>(p);
+        m_ = {p, bytes + align, reinterpret_cast<std::byte*>(round_up(at, align)), bytes, 0, false};
+        break;
+      }
+      if (bytes <= kHugePage) throw std::bad_alloc();
+    }
+  }
+#ifdef MADV_HUGEPAGE
+  // A kept range may have been made without: what is faulted in from now on is huge.
+  if (huge && !m_.huge) m_.huge = madvise(m_.base, m_.reserved, MADV_HUGEPAGE) == 0;
+#endif
+}
+
+Reservation& Reservation::operator=(Reservation&& other) noexcept {
+  if (this != &other) {
+    this->~Reservation();
+    m_ = std::exchange(other.m_, {});
+  }
+  return *this;
+}
+
+Reservation::~Reservation() {
+  if (m_.map == nullptr) return;
+  Cache& c = cache();
+  std::size_t keep = 0;
+  {
+    const std::lock_guard<std::mutex> guard(c.mutex);
+    keep = std::min(m_.committed, c.room() / kHugePage * kHugePage);
+    if (keep > 0 && keep < m_.committed) {
+      // What is over the limit goes back, before another thread can take the range: mapped
+      // afresh, its pages are freed and it is reserved address space again, unmarked.
+      if (mmap(m_.base + keep, m_.committed - keep, PROT_NONE,
+               MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_FIXED, -1, 0) == MAP_FAILED) {
+        keep = 0;
+      } else {
+        m_.committed = keep;
+        m_.huge = false;  // marked again when taken for huge pages
+      }
+    }
+    if (keep > 0) {
+      try {
+        c.kept.push_back({keep, nullptr, m_});
+        c.held += keep;
+      } catch (const std::bad_alloc&) {
+        keep = 0;  // no room for the entry: the range is unmapped instead
+      }
+    }
+  }
+  if (keep == 0) munmap(m_.map, m_.map_bytes);
+  m_ = {};
+}
+
+void Reservation::commit(std::size_t bytes, std::size_t step) {
+  if (bytes <= m_.committed) return;
+  if (bytes > m_.reserved) throw std::bad_alloc();
+  const std::size_t target = std::min(round_up(bytes, step), m_.reserved);
+  if (mprotect(m_.base + m_.committed, target - m_.committed, PROT_READ | PROT_WRITE) != 0)
+    throw std::bad_alloc();
+  m_.committed = target;
+}
+
+std::size_t Reservation::keepable() const {
+  Cache& c = cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  return std::min(m_.committed, c.room() / kHugePage * kHugePage);
+}
+
+void Reservation::discard(std::size_t from, std::size_t to) {
+#ifdef MADV_DONTNEED
+  const std::size_t kPage = m_.huge ? kHugePage : 4096;
+  from = round_up(from, kPage);
+  to = std::min(to, m_.committed) / kPage * kPage;
+  if (to > from) madvise(m_.base + from, to - from, MADV_DONTNEED);
+#else
+  (void)from, (void)to;
+#endif
 }
 
 }  // namespace ridt::detail

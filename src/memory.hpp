@@ -1,7 +1,7 @@
 // Large arrays on transparent huge pages: the DAG is read at random, and with 4 KiB pages
 // nearly every access would also miss the TLB.
 //
-// Blocks on huge pages are kept for the next triangulation in the process when they are given
+// Blocks on huge pages, and reserved ranges, are kept for the next triangulation in the process when they are given
 // back (up to ridt::set_memory_cache_limit; memory.cpp): a fresh block's pages are each
 // faulted in and zeroed by the kernel on first touch, which for 10^6 points is some 250 MB,
 // and on a virtual machine whose host has reclaimed the guest's free memory that can cost as
@@ -16,6 +16,7 @@
 #include <memory>
 #include <new>
 #include <type_traits>
+#include <utility>
 
 namespace ridt::detail {
 
@@ -43,6 +44,54 @@ using Block = std::unique_ptr<T[], BlockDeleter>;
 /// Uninitialized storage for `count` objects of an implicit-lifetime type (created by the
 /// allocation itself, C++20), aligned to a huge page and marked for transparent huge pages (a
 /// hint: without them it works the same). A kept block may hold anything.
+/// Address space for one array that grows in place: reserved up to a maximum (neither usable
+/// nor counted against the system's commit limit), made usable from its start as the array
+/// grows (commit), and never moved. An index thus stays valid while the array grows, under
+/// threads too, and finding an element is one addition to the base, with no table of pieces
+/// to read first. Given back through the cache (memory.cpp), which keeps the range with its
+/// pages for the next one.
+class Reservation {
+ public:
+  Reservation() = default;
+  /// At most `bytes` of address space, fewer when the system refuses that much (max_size()
+  /// then says how much); a kept range when the cache has one. With `huge`, the range is aligned
+  /// to a huge page and marked for transparent huge pages.
+  Reservation(std::size_t bytes, bool huge);
+  Reservation(Reservation&& other) noexcept { *this = std::move(other); }
+  Reservation& operator=(Reservation&& other) noexcept;
+  ~Reservation();
+
+  std::byte* data() const { return m_.base; }
+  /// The bytes reserved, and those made usable so far.
+  std::size_t max_size() const { return m_.reserved; }
+  std::size_t committed() const { return m_.committed; }
+  /// Whether the range is marked for huge pages.
+  bool huge() const { return m_.huge; }
+  /// Makes at least the first `bytes` usable: in steps of `step` bytes (a multiple of the page
+  /// size), so that the range's use is counted in those steps. Throws std::bad_alloc past
+  /// max_size() or when the system refuses. One thread at a time.
+  void commit(std::size_t bytes, std::size_t step);
+  /// Bytes from the start that the cache would keep if the range were given back now (all of
+  /// the committed ones when it has room).
+  std::size_t keepable() const;
+  /// Gives the pages that lie wholly within [from, to) back to the system (the huge pages, on
+  /// huge pages: a part of one would split it); they read as zeros after. Once nothing reads
+  /// them.
+  void discard(std::size_t from, std::size_t to);
+
+  /// What the cache keeps of a range (memory.cpp).
+  struct Mapping {
+    void* map = nullptr;           // as mmap returned it, for munmap
+    std::size_t map_bytes = 0;
+    std::byte* base = nullptr;     // the start used, aligned
+    std::size_t reserved = 0, committed = 0;
+    bool huge = false;
+  };
+
+ private:
+  Mapping m_;
+};
+
 template <typename T>
 Block<T> allocate_huge(std::size_t count, bool huge = true) {
   static_assert(std::is_aggregate_v<T> && std::is_trivially_copyable_v<T> &&

@@ -49,8 +49,8 @@ struct Triangle {
   TriangleId n[3];
   // Written once, when the triangle stops being a leaf. Stored with release after the children
   // are complete, read with acquire (child_link), so a thread that sees the link sees the
-  // children whole. A plain integer under std::atomic_ref keeps the record trivial: chunks are
-  // then allocated without being zeroed first.
+  // children whole. A plain integer under std::atomic_ref keeps the record trivial: records
+  // are then made without being zeroed first.
   std::uint32_t child;
 
   std::atomic_ref<std::uint32_t> child_link() { return std::atomic_ref<std::uint32_t>(child); }
@@ -78,50 +78,42 @@ inline void prefetch_record(const Triangle* r) {
   if (last != (first & ~std::uintptr_t{63})) __builtin_prefetch(reinterpret_cast<const void*>(last), kForWrite);
 }
 
-/// Records in fixed-size chunks that never move, so an id stays valid while the store grows.
+/// Records in one reserved range of address space (memory.hpp) that never moves, so an id stays
+/// valid while the store grows, and record t is at base + t.
 class TriangleStore {
  public:
-  // 2^19 records of 28 bytes fill exactly 7 huge pages of 2 MiB (memory.hpp). The fuzz targets
-  // build with smaller chunks: each of their thousands of tiny runs would otherwise have the
-  // sanitizer map and poison a whole chunk.
-#ifdef RIDT_CHUNK_BITS
-  static constexpr int kChunkBits = RIDT_CHUNK_BITS;
+  // The range is made usable 2^19 records at a time: 28-byte records then fill exactly 7 huge
+  // pages of 2 MiB. The fuzz targets build with smaller steps: each of their thousands of tiny
+  // runs would otherwise have the sanitizer map and poison a whole step.
+#ifdef RIDT_COMMIT_BITS
+  static constexpr int kStepBits = RIDT_COMMIT_BITS;
 #else
-  static constexpr int kChunkBits = 19;
+  static constexpr int kStepBits = 19;
 #endif
-  static constexpr std::uint32_t kChunkSize = 1u << kChunkBits;
-  static constexpr std::uint32_t kMaxChunks = (kIdMask + 1u) >> kChunkBits;
+  static constexpr std::uint32_t kStep = 1u << kStepBits;
 
   /// `expected`: about how many records will be made.
-  explicit TriangleStore(std::uint64_t expected = kChunkSize)
-      : expected_(expected), chunks_(new std::atomic<Triangle*>[kMaxChunks]()) {
-    // The chunks a run will need, at once and from the calling thread: worker threads then
-    // rarely take the growth lock, and every method gets its memory from the same heap (the
-    // caller's; a thread's own malloc arena would hand out fresh pages where the caller's
-    // heap reuses pages a previous run touched). Untouched pages cost nothing.
+  explicit TriangleStore(std::uint64_t expected = kStep)
+      // Room for every id; a small run touches a few 4 KiB pages, where huge pages would
+      // zero 2 MiB.
+      : range_(std::size_t{kIdMask + 1ull} * sizeof(Triangle), expected >= kStep / 4),
+        base_(reinterpret_cast<Triangle*>(range_.data())) {
+    // What a run will need, at once and from the calling thread: worker threads then rarely
+    // take the growth lock. Pages not touched cost nothing.
     grow(std::min<std::uint64_t>(expected, kIdMask));
-  }
-  ~TriangleStore() {
-    const std::uint64_t chunks = capacity_.load(std::memory_order_relaxed) >> kChunkBits;
-    for (std::uint32_t c = 0; c < chunks; ++c) free_chunk(c, chunks_[c].load(std::memory_order_relaxed));
   }
   TriangleStore(const TriangleStore&) = delete;
   TriangleStore& operator=(const TriangleStore&) = delete;
 
-  // relaxed: a thread holds an id only through a child link read with acquire, or under the
-  // lock, and either orders the chunk's allocation before the read.
-  Triangle& operator[](TriangleId t) {
-    return chunks_[t >> kChunkBits].load(std::memory_order_relaxed)[t & (kChunkSize - 1)];
-  }
-  const Triangle& operator[](TriangleId t) const {
-    return chunks_[t >> kChunkBits].load(std::memory_order_relaxed)[t & (kChunkSize - 1)];
-  }
+  // A thread holds an id only through a child link read with acquire, or under the lock, and
+  // either orders the growth that made the record usable before the read.
+  Triangle& operator[](TriangleId t) { return base_[t]; }
+  const Triangle& operator[](TriangleId t) const { return base_[t]; }
 
-  /// Record t if its chunk exists, else null: for ids from a racy, possibly stale read.
+  /// Record t if it is usable, else null: for ids from a racy, possibly stale read.
   const Triangle* find(TriangleId t) const {
-    if (t > kIdMask) return nullptr;
-    const Triangle* chunk = chunks_[t >> kChunkBits].load(std::memory_order_acquire);
-    return chunk == nullptr ? nullptr : chunk + (t & (kChunkSize - 1));
+    // acquire: pairs with grow's release.
+    return t < capacity_.load(std::memory_order_acquire) ? base_ + t : nullptr;
   }
 
   /// Prefetches record t if it may exist: t may come from a racy, possibly stale read.
@@ -149,66 +141,42 @@ class TriangleStore {
     const std::uint64_t first = size_.fetch_add(count, std::memory_order_relaxed);
     const std::uint64_t end = first + count;
     if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
-    // acquire: pairs with grow's release, so the chunks below capacity are seen.
     if (end > capacity_.load(std::memory_order_acquire)) grow(end);
     return static_cast<TriangleId>(first);
   }
 
   std::uint32_t size() const { return size_.load(std::memory_order_relaxed); }
 
-  /// Frees chunk c (ids c * kChunkSize on), once no thread reads it again: the finish gives
-  /// the records back as it copies them out, so the output does not come on top of them.
-  void release_chunk(std::uint32_t c) {
-    free_chunk(c, chunks_[c].exchange(nullptr, std::memory_order_relaxed));
+  /// How many records release_pages should give back at once: a huge page's worth on huge
+  /// pages (a part of one would split it), else some 64 KiB.
+  std::uint32_t release_step() const {
+    return static_cast<std::uint32_t>((range_.huge() ? kHugePage : std::size_t{1} << 16) / sizeof(Triangle));
   }
 
-  /// Gives the pages that hold nothing but records [begin, end), all of one chunk, back to
-  /// the kernel, once no thread reads them again (they would read as zeros). The finish does
-  /// this behind its copy when all records fit in one chunk, which it frees only at the end.
-  /// Not when the chunk is to be kept for the next call (memory.hpp): its pages would then
-  /// have to be faulted in again.
+  /// Gives the pages that hold nothing but records [begin, end) back to the kernel, once no
+  /// thread reads them again (they would read as zeros). The finish does this behind its copy,
+  /// so the output does not come on top of the records. Not the pages that the cache would
+  /// keep for the next call (memory.hpp): they would have to be faulted in again.
   void release_pages(TriangleId begin, TriangleId end) {
-#ifdef MADV_DONTNEED
-    const std::uint32_t c = begin >> kChunkBits;
-    const std::size_t kept_bytes = deleter(c).cacheable_bytes;
-    if (kept_bytes != 0 && cache_has_room(kept_bytes)) return;
-    constexpr std::uintptr_t kPage = 4096;
-    const auto base = reinterpret_cast<std::uintptr_t>(chunks_[c].load(std::memory_order_relaxed));
-    const std::uint64_t first = begin - (c << kChunkBits), last = end - (c << kChunkBits);
-    const std::uintptr_t from = (base + first * sizeof(Triangle) + kPage - 1) & ~(kPage - 1);
-    const std::uintptr_t to = (base + last * sizeof(Triangle)) & ~(kPage - 1);
-    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
-#else
-    (void)begin, (void)end;
-#endif
+    const std::size_t from = std::max(std::size_t{begin} * sizeof(Triangle), range_.keepable());
+    range_.discard(from, std::size_t{end} * sizeof(Triangle));
   }
 
  private:
   void grow(std::uint64_t end) {
     const std::lock_guard<std::mutex> guard(grow_);
-    std::uint64_t capacity = capacity_.load(std::memory_order_relaxed);
-    while (capacity < end) {
-      // A small run touches a few 4 KiB pages of its first chunk; huge pages would zero 2 MiB.
-      auto chunk = allocate_huge<Triangle>(kChunkSize, capacity > 0 || expected_ >= kChunkSize / 4);
-      deleter_[capacity > 0] = chunk.get_deleter();
-      // release: pairs with find's racy load (the others are ordered as said above).
-      chunks_[capacity >> kChunkBits].store(chunk.release(), std::memory_order_release);
-      capacity += kChunkSize;
-      capacity_.store(capacity, std::memory_order_release);
-    }
+    range_.commit(end * sizeof(Triangle), std::size_t{kStep} * sizeof(Triangle));
+    // release: pairs with find's racy load (the others are ordered as said above).
+    capacity_.store(static_cast<std::uint32_t>(std::min<std::size_t>(range_.committed() / sizeof(Triangle), kIdMask)),
+                    std::memory_order_release);
   }
 
-  // How chunk c goes back: only the first may be off huge pages, and so not kept.
-  const BlockDeleter& deleter(std::uint32_t c) const { return deleter_[c > 0]; }
-  void free_chunk(std::uint32_t c, Triangle* chunk) { deleter(c)(chunk); }
-
-  std::uint64_t expected_;
-  BlockDeleter deleter_[2];  // written under grow_, read once no thread grows the store
-  std::unique_ptr<std::atomic<Triangle*>[]> chunks_;  // read by every thread at every step
+  Reservation range_;
+  Triangle* base_;  // range_.data(), read by every thread at every step
   // Written at every allocation: a line of their own, or each write would evict the line
   // above from the other threads' caches.
   alignas(64) std::atomic<std::uint32_t> size_{0};
-  std::atomic<std::uint64_t> capacity_{0};
+  std::atomic<std::uint32_t> capacity_{0};  // usable records
   std::mutex grow_;
 };
 

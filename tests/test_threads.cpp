@@ -2,8 +2,11 @@
 // input; their statistics add up. These tests also run under ThreadSanitizer.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <thread>
 
 #include "generate.hpp"
@@ -291,8 +294,45 @@ TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
   // A lower limit gives back what is over it at once.
   EXPECT_EQ(set_memory_cache_limit(0), std::size_t{1} << 30);
   EXPECT_EQ(cached_memory(), 0u);
+
+  // A limit below the records' range keeps its start, in whole huge pages, and makes the
+  // rest reserved address space again; the next call commits that afresh.
+  constexpr std::size_t kPart = std::size_t{4} << 20;
+  ASSERT_LT(kPart, kept);
+  set_memory_cache_limit(kPart + 1000);
+  for (const Method m : {Method::Serial, Method::Optimistic}) {
+    Options o;
+    o.method = m;
+    o.threads = 2;
+    EXPECT_EQ(compare(triangulate(pts, o), fresh), "");
+    EXPECT_EQ(cached_memory(), kPart);
+  }
   set_memory_cache_limit(before);
 }
+
+// Where the system grants less address space than the records' range asks (a limit on it),
+// the range is as large as it grants, and a run that fits gives the same triangles. Not under
+// the sanitizers, which need far more address space than any such limit leaves.
+#if !defined(__SANITIZE_THREAD__) && !defined(__SANITIZE_ADDRESS__)
+// Exits 0 when both runs give `expected`, under a 4 GiB limit on address space (of the 56 the
+// range asks for).
+[[noreturn]] void triangulate_in_4_gib(const std::vector<Point>& pts, const Triangulation& expected) {
+  const rlimit limit{rlim_t{4} << 30, rlim_t{4} << 30};
+  if (setrlimit(RLIMIT_AS, &limit) != 0) std::exit(3);
+  set_memory_cache_limit(0);  // a fresh range
+  Options o;
+  o.method = Method::Optimistic;
+  o.threads = 2;
+  const bool same = compare(triangulate(pts), expected) == "" && compare(triangulate(pts, o), expected) == "";
+  std::exit(same ? 0 : 1);
+}
+
+TEST(MemoryCache, LimitedAddressSpace) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 200000, 5);
+  const Triangulation fresh = triangulate(pts);
+  EXPECT_EXIT(triangulate_in_4_gib(pts, fresh), ::testing::ExitedWithCode(0), "");
+}
+#endif
 
 INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
                          [](const auto& info) { return std::string(info.param.name); });
