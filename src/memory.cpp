@@ -83,12 +83,6 @@ void* take_cached_block(std::size_t bytes) {
   return nullptr;
 }
 
-bool cache_has_room(std::size_t bytes) {
-  Cache& c = cache();
-  const std::lock_guard<std::mutex> guard(c.mutex);
-  return bytes <= c.room();
-}
-
 void release_block(void* p, std::size_t bytes) {
   Cache& c = cache();
   {

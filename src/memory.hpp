@@ -1,9 +1,10 @@
 // Large arrays on transparent huge pages: the DAG is read at random, and with 4 KiB pages
 // nearly every access would also miss the TLB.
 //
-// Blocks on huge pages, and reserved ranges, are kept for the next triangulation in the process when they are given
-// back (up to ridt::set_memory_cache_limit; memory.cpp): a fresh block's pages are each
-// faulted in and zeroed by the kernel on first touch, which for 10^6 points is some 250 MB,
+// Blocks on huge pages, and reserved ranges with their pages, are kept for the next
+// triangulation in the process when they are given back (up to ridt::set_memory_cache_limit;
+// memory.cpp): a fresh block's pages are each faulted in and zeroed by the kernel on first
+// touch, which for 10^6 points is some 250 MB,
 // and on a virtual machine whose host has reclaimed the guest's free memory that can cost as
 // much as the insertion itself.
 #pragma once
@@ -28,9 +29,6 @@ void* take_cached_block(std::size_t bytes);
 /// room, else freed.
 void release_block(void* p, std::size_t bytes);
 
-/// Whether a block of `bytes` given back now would be kept.
-bool cache_has_room(std::size_t bytes);
-
 /// Frees a block made by allocate_huge, through the cache when it may be kept.
 struct BlockDeleter {
   std::size_t cacheable_bytes = 0;  // the block's size if it is on huge pages, else 0
@@ -41,9 +39,6 @@ struct BlockDeleter {
 template <typename T>
 using Block = std::unique_ptr<T[], BlockDeleter>;
 
-/// Uninitialized storage for `count` objects of an implicit-lifetime type (created by the
-/// allocation itself, C++20), aligned to a huge page and marked for transparent huge pages (a
-/// hint: without them it works the same). A kept block may hold anything.
 /// Address space for one array that grows in place: reserved up to a maximum (neither usable
 /// nor counted against the system's commit limit), made usable from its start as the array
 /// grows (commit), and never moved. An index thus stays valid while the array grows, under
@@ -92,6 +87,9 @@ class Reservation {
   Mapping m_;
 };
 
+/// Uninitialized storage for `count` objects of an implicit-lifetime type (created by the
+/// allocation itself, C++20), aligned to a huge page and marked for transparent huge pages (a
+/// hint: without them it works the same). A kept block may hold anything.
 template <typename T>
 Block<T> allocate_huge(std::size_t count, bool huge = true) {
   static_assert(std::is_aggregate_v<T> && std::is_trivially_copyable_v<T> &&

@@ -141,6 +141,7 @@ class TriangleStore {
     const std::uint64_t first = size_.fetch_add(count, std::memory_order_relaxed);
     const std::uint64_t end = first + count;
     if (end > kIdMask) throw std::length_error("ridt: more than 2^31 triangle records");
+    // acquire: pairs with grow's release, so the records below capacity are usable.
     if (end > capacity_.load(std::memory_order_acquire)) grow(end);
     return static_cast<TriangleId>(first);
   }
