@@ -2,7 +2,7 @@
 # Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
 # and UndefinedBehaviorSanitizer (the adversarial sets at a tenth of their size there), the
 # threaded tests under ThreadSanitizer, a consumer project that uses find_package(ridt), 10^7
-# points through the serial and every threaded method (scripts/large.sh), and a minute of
+# points through the serial and every threaded method (scripts/large.sh), and half a minute of
 # fuzzing for each fuzz target (scripts/fuzz.sh; longer runs: scripts/fuzz.sh 3600).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,6 +40,6 @@ build/consumer/consumer
 echo "== 10^7 uniform points: serial and every threaded method, each output validated"
 scripts/large.sh 10000000 2 quick  # fails unless every output is valid
 
-echo "== Fuzzing, a minute a target"
-scripts/fuzz.sh 60
+echo "== Fuzzing, half a minute a target"
+scripts/fuzz.sh 30
 echo "all tests passed"
