@@ -42,6 +42,23 @@ struct Cache {
   std::size_t limit = kDefaultLimit;
 
   std::size_t room() const { return limit > held ? limit - held : 0; }
+  // What of a range with `committed` bytes would be kept now: its start, in whole huge pages.
+  std::size_t keepable(std::size_t committed) const {
+    return std::min(committed, room() / kHugePage * kHugePage);
+  }
+  // Removes and returns the most recently kept entry that `match` accepts (its pages are the
+  // likeliest to be in the TLB and cache), if any. Under the mutex.
+  template <class Match>
+  bool take(Match&& match, Entry& out) {
+    for (auto it = kept.rbegin(); it != kept.rend(); ++it) {
+      if (!match(*it)) continue;
+      out = *it;
+      held -= it->bytes;
+      kept.erase(std::next(it).base());
+      return true;
+    }
+    return false;
+  }
   // Frees the oldest entries until at most `keep` bytes are held. Under the mutex.
   void shrink(std::size_t keep) {
     std::size_t i = 0;
@@ -72,15 +89,8 @@ std::size_t round_up(std::size_t x, std::size_t to) { return (x + to - 1) / to *
 void* take_cached_block(std::size_t bytes) {
   Cache& c = cache();
   const std::lock_guard<std::mutex> guard(c.mutex);
-  // The most recently given back first: its pages are the likeliest to be in the TLB and cache.
-  for (auto it = c.kept.rbegin(); it != c.kept.rend(); ++it) {
-    if (it->block == nullptr || it->bytes != bytes) continue;
-    void* p = it->block;
-    c.held -= bytes;
-    c.kept.erase(std::next(it).base());
-    return p;
-  }
-  return nullptr;
+  Cache::Entry e;
+  return c.take([&](const Cache::Entry& k) { return k.block != nullptr && k.bytes == bytes; }, e) ? e.block : nullptr;
 }
 
 void release_block(void* p, std::size_t bytes) {
@@ -104,13 +114,9 @@ Reservation::Reservation(std::size_t bytes, bool huge) {
   Cache& c = cache();
   {
     const std::lock_guard<std::mutex> guard(c.mutex);
-    for (auto it = c.kept.rbegin(); it != c.kept.rend(); ++it) {
-      if (it->block != nullptr || it->range.reserved < bytes) continue;
-      m_ = it->range;
-      c.held -= it->bytes;
-      c.kept.erase(std::next(it).base());
-      break;
-    }
+    Cache::Entry e;
+    if (c.take([&](const Cache::Entry& k) { return k.block == nullptr && k.range.reserved >= bytes; }, e))
+      m_ = e.range;
   }
   if (m_.map == nullptr) {
     // Address space only: PROT_NONE is neither usable nor charged to the commit limit, and
@@ -146,7 +152,7 @@ Reservation::~Reservation() {
   std::size_t keep = 0;
   {
     const std::lock_guard<std::mutex> guard(c.mutex);
-    keep = std::min(m_.committed, c.room() / kHugePage * kHugePage);
+    keep = c.keepable(m_.committed);
     if (keep > 0 && keep < m_.committed) {
       // What is over the limit goes back, before another thread can take the range: mapped
       // afresh, its pages are freed and it is reserved address space again, unmarked.
@@ -183,7 +189,7 @@ void Reservation::commit(std::size_t bytes, std::size_t step) {
 std::size_t Reservation::keepable() const {
   Cache& c = cache();
   const std::lock_guard<std::mutex> guard(c.mutex);
-  return std::min(m_.committed, c.room() / kHugePage * kHugePage);
+  return c.keepable(m_.committed);
 }
 
 void Reservation::discard(std::size_t from, std::size_t to) {

@@ -4,9 +4,8 @@
 // Blocks on huge pages, and reserved ranges with their pages, are kept for the next
 // triangulation in the process when they are given back (up to ridt::set_memory_cache_limit;
 // memory.cpp): a fresh block's pages are each faulted in and zeroed by the kernel on first
-// touch, which for 10^6 points is some 250 MB,
-// and on a virtual machine whose host has reclaimed the guest's free memory that can cost as
-// much as the insertion itself.
+// touch, which for 10^6 points is some 250 MB, and on a virtual machine whose host has
+// reclaimed the guest's free memory that can cost as much as the insertion itself.
 #pragma once
 
 #include <sys/mman.h>
@@ -48,8 +47,8 @@ using Block = std::unique_ptr<T[], BlockDeleter>;
 class Reservation {
  public:
   Reservation() = default;
-  /// At most `bytes` of address space, fewer when the system refuses that much (max_size()
-  /// then says how much); a kept range when the cache has one. With `huge`, the range is aligned
+  /// At most `bytes` of address space, fewer when the system refuses that much (commit then
+  /// fails past what was granted); a kept range when the cache has one. With `huge`, the range is aligned
   /// to a huge page and marked for transparent huge pages.
   Reservation(std::size_t bytes, bool huge);
   Reservation(Reservation&& other) noexcept { *this = std::move(other); }
@@ -57,14 +56,13 @@ class Reservation {
   ~Reservation();
 
   std::byte* data() const { return m_.base; }
-  /// The bytes reserved, and those made usable so far.
-  std::size_t max_size() const { return m_.reserved; }
+  /// The bytes made usable so far.
   std::size_t committed() const { return m_.committed; }
   /// Whether the range is marked for huge pages.
   bool huge() const { return m_.huge; }
   /// Makes at least the first `bytes` usable: in steps of `step` bytes (a multiple of the page
-  /// size), so that the range's use is counted in those steps. Throws std::bad_alloc past
-  /// max_size() or when the system refuses. One thread at a time.
+  /// size), so that the range's use is counted in those steps. Throws std::bad_alloc past the
+  /// reserved bytes or when the system refuses. One thread at a time.
   void commit(std::size_t bytes, std::size_t step);
   /// Bytes from the start that the cache would keep if the range were given back now (all of
   /// the committed ones when it has room).
