@@ -94,13 +94,27 @@ class Inserter {
     }
     for (std::size_t k = 0; k < w_.cavity.size(); ++k) {
       const Triangle& r = tris[w_.cavity[k]];
+      // Beyond the first ring, which the look-ahead brought in, the neighbours' records were
+      // asked for when r joined (below) and have had the time to arrive: ask for their
+      // vertices now, so the three incircle tests below wait for memory once, not in turn.
+      if (k > 0)
+        for (const TriangleId u : r.n)
+          if (u != kNone) kernel_.prefetch_vertices(u);
       for (const TriangleId u : r.n) {
         // Held already? Before the split the thread owns exactly what it took in this attempt.
         if (u == kNone || kernel_.owns(u, me_)) continue;
         if (!take(u)) return false;
         const Triangle& ru = tris[u];
         // The same test as legalization, so the region is exactly what it will touch.
-        if (kernel_.incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0) w_.cavity.push_back(u);
+        if (kernel_.incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0) {
+          w_.cavity.push_back(u);
+          // Its neighbours are taken and tested when its turn comes: ask for their records
+          // now, for writing (a compare-and-swap on a line not held exclusive waits for it,
+          // and nothing after it starts meanwhile). Without this, at 10^6 points in random
+          // order, the cavity walk waited on one miss after the other and one thread ran at
+          // 0.87 of serial's speed; with it 0.96 (in-process pairs).
+          for (const TriangleId x : ru.n) tris.prefetch</*kForWrite=*/true>(x);
+        }
       }
     }
     return true;
