@@ -110,9 +110,9 @@ class Inserter {
           w_.cavity.push_back(u);
           // Its neighbours are taken and tested when its turn comes: ask for their records
           // now, for writing (a compare-and-swap on a line not held exclusive waits for it,
-          // and nothing after it starts meanwhile). Without this, at 10^6 points in random
-          // order, the cavity walk waited on one miss after the other and one thread ran at
-          // 0.87 of serial's speed; with it 0.96 (in-process pairs).
+          // and nothing after it starts meanwhile). Without this, at 10^6 uniform points in
+          // random order, the cavity walk waited on one miss after the other and one thread ran
+          // at 0.89 of serial's speed; with it 0.96 (ridt_bench_threads, docs/threads_1m.txt).
           for (const TriangleId x : ru.n) tris.prefetch</*kForWrite=*/true>(x);
         }
       }
