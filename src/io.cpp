@@ -391,15 +391,22 @@ PointFile read_bin_points(const std::string& path, std::string_view data) {
 VertexId vertex(const std::string& path, std::size_t line, std::string_view field,
                 int first_index) {
   const std::int64_t v = integer(path, line, field, "vertex index");
-  const std::int64_t z = v - first_index;
-  if (z < 0) {
+  // Both bounds are compared before anything is subtracted: v is any 64-bit value, and
+  // v - first_index overflows near either end of that range. The largest index stays within
+  // 64 bits: first_index is an int and the id limit is 2^32 - 1.
+  const std::int64_t lowest = first_index;
+  const std::int64_t highest = lowest + std::numeric_limits<VertexId>::max();
+  if (v < lowest) {
     fail_line(path, line,
               "vertex index " + std::to_string(v) + " is below the first index " +
                   std::to_string(first_index));
   }
-  if (z > static_cast<std::int64_t>(std::numeric_limits<VertexId>::max()))
-    fail_line(path, line, "vertex index " + std::to_string(v) + " is too large");
-  return static_cast<VertexId>(z);
+  if (v > highest) {
+    fail_line(path, line,
+              "vertex index " + std::to_string(v) + " is too large (at most " +
+                  std::to_string(highest) + ")");
+  }
+  return static_cast<VertexId>(v - lowest);
 }
 
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text,

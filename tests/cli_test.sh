@@ -162,6 +162,15 @@ stderr_has "cannot read"
 printf '3\n0 0 1 x\n' >"$dir/malformed.ele"
 expect 2 "check malformed triangles" -- "$ridt" check "$dir/uniform.txt" "$dir/malformed.ele"
 stderr_has "malformed.ele:1"
+# A vertex index at the bottom of the 64-bit range, against a 1-based .node: named as it was
+# written and refused, never wrapped around (the reader once subtracted before comparing).
+printf '3 2\n1 0 0\n2 1 0\n3 0 1\n' >"$dir/one3.node"
+printf -- '-9223372036854775808 1 2\n' >"$dir/min.txt"
+expect 2 "check index -2^63" -- "$ridt" check "$dir/one3.node" "$dir/min.txt"
+stderr_has "min.txt:1: vertex index -9223372036854775808 is below the first index 1"
+printf '1 2 9223372036854775807\n' >"$dir/max.txt"
+expect 2 "check index 2^63-1" -- "$ridt" check "$dir/one3.node" "$dir/max.txt"
+stderr_has "max.txt:1: vertex index 9223372036854775807 is too large (at most 4294967296)"
 expect 2 "no subcommand" -- "$ridt"
 # An existing output is left untouched when the input is bad.
 echo keep >"$dir/keep.ele"

@@ -330,6 +330,116 @@ TEST_F(IoTest, ReadTrianglesBinAndText) {
   EXPECT_TRUE(Has(error_of([&] { read_triangles(path("minus.txt"), 0); }), "minus.txt:1: "));
 }
 
+// Integers at the ends of the 64-bit range, in every field a reader parses as an integer. Each
+// is refused with a message that states the value as written, and nothing is computed from it
+// before its range is checked (UBSan reports any overflow in the sanitizer suite).
+
+// fuzz_readers: the text triangle "-9223372036854775808,8,6" read 1-based. The reader
+// subtracted the first index before comparing, so the index wrapped (undefined behaviour) and
+// came out as "too large".
+TEST_F(IoTest, VertexIndexAtInt64MinIsBelowTheFirstIndex) {
+  write_file("min.txt", "-9223372036854775808,8,6\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("min.txt"), 1); }),
+            path("min.txt") + ":1: vertex index -9223372036854775808 is below the first index 1");
+  EXPECT_EQ(error_of([&] { read_triangles(path("min.txt"), 0); }),
+            path("min.txt") + ":1: vertex index -9223372036854775808 is below the first index 0");
+  write_file("min.ele", "1 3 0\n1 2 -9223372036854775808 3\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("min.ele"), 1); }),
+            path("min.ele") + ":2: vertex index -9223372036854775808 is below the first index 1");
+}
+
+TEST_F(IoTest, VertexIndexAtInt64MaxIsTooLarge) {
+  write_file("max.txt", "1 2 9223372036854775807\n");
+  for (int first : {0, 1}) {
+    EXPECT_EQ(error_of([&] { read_triangles(path("max.txt"), first); }),
+              path("max.txt") + ":1: vertex index 9223372036854775807 is too large (at most " +
+                  std::to_string(4294967295LL + first) + ")");
+  }
+  write_file("over.txt", "0 1 9223372036854775808\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("over.txt"), 0); }),
+            path("over.txt") + ":1: vertex index \"9223372036854775808\" is out of range");
+}
+
+// The largest vertex index that fits a 32-bit id is read, one more is refused, for both
+// numberings; the validator then judges the index against the points.
+TEST_F(IoTest, VertexIndexAtTheIdLimit) {
+  write_file("top0.txt", "0 1 4294967295\n");
+  EXPECT_EQ(read_triangles(path("top0.txt"), 0), (std::vector<VertexId>{0, 1, 4294967295u}));
+  write_file("top1.txt", "1 2 4294967296\n");
+  EXPECT_EQ(read_triangles(path("top1.txt"), 1), (std::vector<VertexId>{0, 1, 4294967295u}));
+  write_file("past0.ele", "1 3\n0 0 1 4294967296\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("past0.ele"), 0); }),
+            path("past0.ele") + ":2: vertex index 4294967296 is too large (at most 4294967295)");
+  write_file("past1.ele", "1 3\n1 1 2 4294967297\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("past1.ele"), 1); }),
+            path("past1.ele") + ":2: vertex index 4294967297 is too large (at most 4294967296)");
+}
+
+// Header counts at the limits: a negative count is refused at once, a huge one when the file
+// ends (and it never sizes an allocation), one past the range is a range error.
+TEST_F(IoTest, HeaderCountsAtInt64Limits) {
+  write_file("huge.node", "9223372036854775807 2 0 0\n0 0 0\n");
+  EXPECT_EQ(error_of([&] { read_points(path("huge.node")); }),
+            path("huge.node") + ": header says 9223372036854775807 points but the file has 1");
+  write_file("neg.node", "-9223372036854775808 2\n");
+  EXPECT_EQ(error_of([&] { read_points(path("neg.node")); }),
+            path("neg.node") + ":1: negative number of points -9223372036854775808");
+  write_file("over.node", "9223372036854775808 2\n");
+  EXPECT_EQ(error_of([&] { read_points(path("over.node")); }),
+            path("over.node") + ":1: number of points \"9223372036854775808\" is out of range");
+  write_file("huge.ele", "9223372036854775807 3\n0 0 1 2\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("huge.ele"), 0); }),
+            path("huge.ele") + ": header says 9223372036854775807 triangles but the file has 1");
+  write_file("neg.ele", "-9223372036854775808 3\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("neg.ele"), 0); }),
+            path("neg.ele") + ":1: negative number of triangles -9223372036854775808");
+  write_file("dim.node", "1 -9223372036854775808\n");
+  EXPECT_EQ(error_of([&] { read_points(path("dim.node")); }),
+            path("dim.node") + ":1: dimension is -9223372036854775808, must be 2");
+  write_file("nodes.ele", "1 9223372036854775807\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("nodes.ele"), 0); }),
+            path("nodes.ele") + ":1: nodes per triangle is 9223372036854775807, must be 3");
+}
+
+// Attribute and marker counts size every line's field count: refused before they do.
+TEST_F(IoTest, AttributeAndMarkerCountsAtInt64Limits) {
+  for (const char* count : {"9223372036854775807", "-9223372036854775808", "1000001"}) {
+    write_file("attr.node", std::string("1 2 ") + count + " 0\n0 0 0\n");
+    EXPECT_EQ(error_of([&] { read_points(path("attr.node")); }),
+              path("attr.node") + ":1: bad number of attributes " + count);
+    write_file("attr.ele", std::string("1 3 ") + count + "\n0 0 1 2\n");
+    EXPECT_EQ(error_of([&] { read_triangles(path("attr.ele"), 0); }),
+              path("attr.ele") + ":1: bad number of attributes " + count);
+  }
+  for (const char* count : {"9223372036854775807", "-9223372036854775808"}) {
+    write_file("markers.node", std::string("1 2 0 ") + count + "\n0 0 0 0\n");
+    EXPECT_EQ(error_of([&] { read_points(path("markers.node")); }),
+              path("markers.node") + ":1: number of boundary markers must be 0 or 1, got " + count);
+  }
+  // A marker's value is not limited, but it must be an integer in range.
+  write_file("marker.node", "1 2 0 1\n0 0 0 -9223372036854775808\n");
+  EXPECT_EQ(read_points(path("marker.node")).points.size(), 1u);
+  write_file("bigmarker.node", "1 2 0 1\n0 0 0 9223372036854775808\n");
+  EXPECT_EQ(error_of([&] { read_points(path("bigmarker.node")); }),
+            path("bigmarker.node") + ":2: boundary marker \"9223372036854775808\" is out of range");
+}
+
+// The first index of a .node or .ele file, and each later index against the running count.
+TEST_F(IoTest, RecordIndicesAtInt64Limits) {
+  write_file("first.node", "1 2\n-9223372036854775808 0 0\n");
+  EXPECT_EQ(error_of([&] { read_points(path("first.node")); }),
+            path("first.node") + ":2: the first point index must be 0 or 1, got -9223372036854775808");
+  write_file("next.node", "2 2\n1 0 0\n9223372036854775807 1 1\n");
+  EXPECT_EQ(error_of([&] { read_points(path("next.node")); }),
+            path("next.node") + ":3: expected point index 2, got 9223372036854775807 (indices must be consecutive)");
+  write_file("first.ele", "1 3\n9223372036854775807 0 1 2\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("first.ele"), 0); }),
+            path("first.ele") + ":2: the first triangle index must be 0 or 1, got 9223372036854775807");
+  write_file("next.ele", "2 3\n1 0 1 2\n-9223372036854775808 0 1 2\n");
+  EXPECT_EQ(error_of([&] { read_triangles(path("next.ele"), 0); }),
+            path("next.ele") + ":3: expected triangle index 2, got -9223372036854775808 (indices must be consecutive)");
+}
+
 /// The unit square split along 0-2, with a duplicate of point 0 at the end (not a vertex).
 struct Square {
   std::vector<Point> points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
