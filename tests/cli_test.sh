@@ -162,6 +162,17 @@ stderr_has "cannot read"
 printf '3\n0 0 1 x\n' >"$dir/malformed.ele"
 expect 2 "check malformed triangles" -- "$ridt" check "$dir/uniform.txt" "$dir/malformed.ele"
 stderr_has "malformed.ele:1"
+# Seeds are 64-bit: "-1" and 2^64 are refused, not wrapped or saturated to 2^64 - 1.
+for s in -1 18446744073709551616 99999999999999999999999 1.5 0x10; do
+  expect 2 "generate --seed $s" -- "$ridt" generate --dist uniform -n 10 --seed "$s" -o "$dir/seed.txt"
+  stderr_has "a seed is an integer from 0 to 18446744073709551615, got '$s'"
+  absent "$dir/seed.txt"
+  expect 2 "triangulate --seed $s" -- "$ridt" triangulate "$dir/uniform.txt" --seed "$s" -o "$dir/seed.ele"
+  absent "$dir/seed.ele"
+done
+expect 0 "seed 2^64 - 1" -- "$ridt" generate --dist uniform -n 10 --seed 18446744073709551615 -o "$dir/seed.txt"
+expect 0 "seed 0" -- "$ridt" generate --dist uniform -n 10 --seed 0 -o "$dir/seed0.txt"
+cmp -s "$dir/seed.txt" "$dir/seed0.txt" && fail "seeds 0 and 2^64 - 1 gave the same points" || pass
 # A vertex index at the bottom of the 64-bit range, against a 1-based .node: named as it was
 # written and refused, never wrapped around (the reader once subtracted before comparing).
 printf '3 2\n1 0 0\n2 1 0\n3 0 1\n' >"$dir/one3.node"

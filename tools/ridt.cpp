@@ -9,7 +9,9 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <initializer_list>
 #include <iostream>
@@ -167,6 +169,18 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
   std::printf("}\n");
 }
 
+// A seed as text: the whole of it a decimal integer that fits 64 bits. CLI11 2.1 converts
+// with strtoull, which takes "-1" as 2^64 - 1 and any larger number as 2^64 - 1 too, so the
+// text is checked before it is converted.
+const CLI::Validator kSeed(
+    [](std::string& text) -> std::string {
+      std::uint64_t v = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec == std::errc() && end == text.data() + text.size()) return "";
+      return "a seed is an integer from 0 to 18446744073709551615, got '" + text + "'";
+    },
+    "SEED");
+
 // The value named `name` among `choices`, or an error that lists them.
 template <typename T>
 T pick(const char* what, const std::string& name,
@@ -235,7 +249,7 @@ int main(int argc, char** argv) {
   CLI::App* tri = app.add_subcommand("triangulate", "triangulate a point file");
   tri->add_option("input", ta.input, "points: .node, .bin (float64 pairs) or text")->required();
   tri->add_option("-o,--output", ta.output, "triangles: .ele, .neigh, .off, .obj, .svg or .bin");
-  tri->add_option("--seed", ta.seed, "seed of the random insertion order");
+  tri->add_option("--seed", ta.seed, "seed of the random insertion order")->check(kSeed);
   tri->add_option("--order", ta.order,
                   "insertion order: brio (default; random rounds, each along a Hilbert curve) or "
                   "random (the paper's)");
@@ -262,7 +276,7 @@ int main(int argc, char** argv) {
   CLI::App* gen = app.add_subcommand("generate", "write points of one of the paper's distributions");
   gen->add_option("--dist", dist, "uniform, normal, grid or clusters")->required();
   gen->add_option("-n", gen_n, "number of points")->required();
-  gen->add_option("--seed", gen_seed, "seed");
+  gen->add_option("--seed", gen_seed, "seed")->check(kSeed);
   gen->add_option("-o,--output", gen_out, "output: .node, .bin or text")->required();
 
   std::string check_points, check_tris;
