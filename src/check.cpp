@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <numeric>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "predicates.hpp"
@@ -57,6 +58,12 @@ std::vector<VertexId> hull_with_collinear(std::span<const Point> pts,
 }  // namespace
 
 CheckResult check(std::span<const Point> input, std::span<const VertexId> tris) {
+  // The edge table below files 3 sides a triangle and names a side by 2 * triangle + direction,
+  // both in 32 bits: refused before anything is counted, where either would wrap.
+  if (tris.size() / 3 > kCheckMaxTriangles) {
+    throw InputError(std::to_string(tris.size() / 3) + " triangles are more than the validator "
+                     "takes (at most " + std::to_string(kCheckMaxTriangles) + ")");
+  }
   // Huge or tiny coordinates: an exactly scaled copy keeps the predicates on their fast path.
   std::vector<Point> scaled;
   if (const int k = detail::exact_scale_exponent(input); k != 0) {

@@ -1,6 +1,10 @@
 // The validator must reject what is wrong, each for the right reason.
 #include <gtest/gtest.h>
 
+#include <sys/mman.h>
+
+#include <string>
+
 #include "ridt/check.hpp"
 
 namespace ridt {
@@ -95,6 +99,24 @@ TEST(Check, CollinearHullPointsMustBeVertices) {
   const std::vector<Point> pts = {{0, 0}, {1, 0}, {2, 0}, {1, 1}};
   EXPECT_TRUE(check(pts, std::vector<VertexId>{0, 1, 3, 1, 2, 3}).valid);
   EXPECT_FALSE(check(pts, std::vector<VertexId>{0, 2, 3}).valid);
+}
+
+// More triangles than the edge table's 32-bit counters hold: refused before any is read. The
+// list is a reserved, never touched range of address space (some 17 GB), so no memory is used.
+TEST(Check, RefusesMoreTrianglesThanItsCountersHold) {
+  const std::size_t ids = 3 * (kCheckMaxTriangles + 1);
+  void* range = ::mmap(nullptr, ids * sizeof(VertexId), PROT_NONE,
+                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  ASSERT_NE(range, MAP_FAILED);
+  const std::span<const VertexId> tris(static_cast<const VertexId*>(range), ids);
+  try {
+    check(kQuad, tris);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "1431655766 triangles are more than the validator takes (at most 1431655765)");
+  }
+  ::munmap(range, ids * sizeof(VertexId));
 }
 
 }  // namespace

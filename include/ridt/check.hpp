@@ -16,6 +16,9 @@ struct CheckResult {
   std::size_t problems = 0;  ///< number of problems found
 };
 
+/// The most triangles check() takes: its edge table counts the 3 sides of each in 32 bits.
+inline constexpr std::size_t kCheckMaxTriangles = 0xffffffffu / 3;
+
 /// Checks with exact arithmetic that `triangles` (#T by 3, 0-based indices into `points`) is a
 /// Delaunay triangulation of the distinct points:
 ///  - every index is in range; every triangle is counter-clockwise and not degenerate;
@@ -26,7 +29,8 @@ struct CheckResult {
 ///  - every distinct point is a vertex, exactly once (no two vertices coincide);
 ///  - Euler: #T = 2V - 2 - H for V vertices and H of them on the hull.
 /// An empty triangle list is valid only when there are fewer than three distinct points or
-/// all of them are collinear. Points must be finite.
+/// all of them are collinear. Points must be finite. Throws InputError for more than
+/// kCheckMaxTriangles triangles (the triangulation of some 715 million points).
 CheckResult check(std::span<const Point> points, std::span<const VertexId> triangles);
 
 }  // namespace ridt
