@@ -18,8 +18,8 @@
 // Usage: fuzz_replay_TARGET [--seed S] [--mutations N] [--max-len L] [--dict FILE]
 //                           [--save DIR] [--only K] CORPUS_DIR...
 //   Input k < corpus size is corpus file k; input corpus size + j is mutation j. On a finding
-//   (the target aborts, crashes, or a sanitizer stops it) the input is written to
-//   DIR/replay-<k> and its number printed; --only K runs input K alone (the same bytes).
+//   (the target aborts, crashes, runs for 120 s, or a sanitizer stops it) the input is written
+//   to DIR/replay-<k> and its number printed; --only K runs input K alone (the same bytes).
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -124,6 +124,17 @@ void on_fatal_signal(int sig) {
   save_current_input();
   std::signal(sig, SIG_DFL);
   std::raise(sig);
+}
+
+// An input that runs this long is a hang, not a slow input: the slowest in the corpora takes
+// about a second under the sanitizers. Generous, so that a loaded machine never trips it.
+constexpr unsigned kHangSeconds = 120;
+
+void on_hang(int) {
+  write_text(2, "fuzz_replay: an input ran for 120 s\n");  // kHangSeconds
+  save_current_input();
+  std::signal(SIGABRT, SIG_DFL);
+  std::abort();
 }
 
 // --- inputs ----------------------------------------------------------------------------------
@@ -231,7 +242,8 @@ class Mutator {
         if (!b.empty()) b[pick(rng, b.size())] = static_cast<char>(rng.below(256));
         break;
       case 2:  // a byte at the edge of its class
-        if (!b.empty()) b[pick(rng, b.size())] = static_cast<char>(kBytes[pick(rng, std::size(kBytes))]);
+        if (!b.empty())
+          b[pick(rng, b.size())] = static_cast<char>(kBytes[pick(rng, std::size(kBytes))]);
         break;
       case 3:  // erase a stretch
         if (!b.empty()) {
@@ -248,7 +260,8 @@ class Mutator {
       case 5:  // copy a stretch of the input elsewhere into it
         if (!b.empty()) {
           const std::size_t from = pick(rng, b.size());
-          const Bytes part = b.substr(from, 1 + pick(rng, std::min<std::size_t>(b.size() - from, 64)));
+          const std::size_t length = 1 + pick(rng, std::min<std::size_t>(b.size() - from, 64));
+          const Bytes part = b.substr(from, length);
           b.insert(pick(rng, b.size() + 1), part);
         }
         break;
@@ -298,7 +311,9 @@ std::uint64_t parse_count(const std::string& option, const char* value) {
 void run(const Bytes& input, std::uint64_t number) {
   g_current = &input;
   g_current_number = number;
+  ::alarm(kHangSeconds);
   LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(input.data()), input.size());
+  ::alarm(0);
   g_current = nullptr;
 }
 
@@ -329,15 +344,16 @@ int main(int argc, char** argv) {
   }
   if (dirs.empty()) usage_error("no corpus folder given");
 
-  const Mutator mutator(read_corpus(dirs),
-                        dictionary_path.empty() ? std::vector<Bytes>{} : read_dictionary(dictionary_path),
-                        max_len, seed);
+  std::vector<Bytes> dictionary;
+  if (!dictionary_path.empty()) dictionary = read_dictionary(dictionary_path);
+  const Mutator mutator(read_corpus(dirs), std::move(dictionary), max_len, seed);
   const std::vector<Bytes>& corpus = mutator.corpus();
   std::error_code ec;
   fs::create_directories(g_save_dir, ec);
 
   if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(save_current_input);
   for (int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, on_fatal_signal);
+  std::signal(SIGALRM, on_hang);
 
   const auto input = [&](std::uint64_t k) {
     return k < corpus.size() ? corpus[k] : mutator.make(k - corpus.size());
