@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang, AddressSanitizer and UndefinedBehaviorSanitizer, and
-# fuzzes each one for SECONDS (default 60).
+# fuzzes each one for SECONDS (default 60). This is the open-ended search for new faults; the
+# test command replays the corpora with a fixed number of seeded mutations instead
+# (fuzz/replay.cpp), so that its result is the same on every run of a commit.
 #
-# Usage: scripts/fuzz.sh [SECONDS]
+# Usage: scripts/fuzz.sh [SECONDS [TARGET...]]
+#        scripts/fuzz.sh --build-only
+#   TARGET is readers or triangulate (default both, one after the other). Two runs of the
+#   script, one a target, use both cores of a two-core machine.
 #   The corpora kept in the repository (fuzz/corpus/<target>) are read, never written; new
 #   inputs go to build-fuzz/corpus/<target>. A finding (crash, sanitizer report, timeout, a
 #   broken property) stops the run, is saved under build-fuzz/findings/ and fails the script.
@@ -10,7 +15,11 @@
 #   inputs that add coverage into fuzz/corpus/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+build_only=0
+[ "${1:-}" = --build-only ] && build_only=1 && shift
 seconds=${1:-60}
+targets=("${@:2}")
+[ "${#targets[@]}" -gt 0 ] || targets=(readers triangulate)
 scripts/deps.sh fuzz
 
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -18,14 +27,17 @@ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DRIDT_SANITIZE=address,undefined -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=OFF \
   -DRIDT_BUILD_TOOLS=OFF >/dev/null
 cmake --build build-fuzz -j "$(nproc)" --target fuzz_readers fuzz_triangulate
+[ "$build_only" = 1 ] && exit 0
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-rm -rf build-fuzz/findings && mkdir -p build-fuzz/findings
+mkdir -p build-fuzz/findings
 # Inputs: readers up to 4 KiB of file; triangulations up to 256 points (of 256 positions).
 declare -A max_len=([readers]=4096 [triangulate]=257)
-for target in readers triangulate; do
+for target in "${targets[@]}"; do
+  [ -n "${max_len[$target]:-}" ] || { echo "unknown fuzz target '$target' (readers or triangulate)"; exit 2; }
   echo "== fuzz_$target for ${seconds}s"
+  rm -f build-fuzz/findings/"$target"-*
   mkdir -p "build-fuzz/corpus/$target"
   dict=()
   [ -f "fuzz/$target.dict" ] && dict=(-dict="fuzz/$target.dict")
