@@ -7,6 +7,7 @@
 #include <array>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,20 @@ inline Triangulation triangulate_checked(const std::vector<Point>& pts, Options 
 }
 
 /// A JSON array of [x, y] pairs, as in the delaunator fixtures.
+/// delaunator's robustness fixtures (tests/fixtures/delaunator, RIDT_FIXTURES).
+inline constexpr const char* kDelaunatorFixtures[] = {
+    "ukraine", "robustness1", "robustness2", "robustness3",
+    "robustness4", "issue13", "issue43", "issue44"};
+
+/// The path of fixture `name`.
+inline std::string fixture_path(const std::string& name) {
+  return std::string(RIDT_FIXTURES) + "/" + name + ".json";
+}
+
+/// The [x, y] pairs of a JSON file; a missing or unreadable file throws, so the test fails.
 inline std::vector<Point> read_json_points(const std::string& path) {
   std::ifstream f(path);
+  if (!f) throw std::runtime_error("cannot read the test input " + path);
   std::stringstream ss;
   ss << f.rdbuf();
   std::string s = ss.str();

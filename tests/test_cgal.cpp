@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <map>
 
 #include "generate.hpp"
@@ -96,10 +95,8 @@ TriangleSet unique_triangles(const std::vector<Point>& pts, const std::vector<Ve
 // triangles that every Delaunay triangulation has must be the same in both, and the rest of
 // ridt's triangles pass the exact validator.
 TEST(AgainstCgal, DelaunatorFixtures) {
-  if (!std::filesystem::is_directory(RIDT_FIXTURES)) GTEST_SKIP() << "no fixtures at " << RIDT_FIXTURES;
-  for (const char* name : {"ukraine", "robustness1", "robustness2", "robustness3", "robustness4",
-                           "issue13", "issue43", "issue44"}) {
-    const std::string path = std::string(RIDT_FIXTURES) + "/" + name + ".json";
+  for (const char* name : kDelaunatorFixtures) {
+    const std::string path = fixture_path(name);
     const std::vector<Point> pts = read_json_points(path);
     ASSERT_FALSE(pts.empty()) << path;
     const Triangulation t = triangulate_checked(pts);

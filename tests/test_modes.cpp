@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 
 #include "generate.hpp"
 #include "helpers.hpp"
@@ -109,12 +108,8 @@ TEST(Modes, DegenerateSets) {
 }
 
 TEST(Modes, DelaunatorFixturesAtEveryScale) {
-  for (const char *name :
-       {"ukraine", "robustness1", "robustness2", "robustness3", "robustness4",
-        "issue13", "issue43", "issue44"}) {
-    const std::string path = std::string(RIDT_FIXTURES) + "/" + name + ".json";
-    if (!std::filesystem::is_directory(RIDT_FIXTURES))
-      GTEST_SKIP() << "no fixtures at " << RIDT_FIXTURES;
+  for (const char *name : kDelaunatorFixtures) {
+    const std::string path = fixture_path(name);
     const std::vector<Point> base = read_json_points(path);
     ASSERT_GT(base.size(), 2u) << path;
     for (double s : {1.0, 1e-9, 1e-2, 1e2, 1e9}) {
