@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "kernel.hpp"
@@ -40,6 +42,22 @@ class Progress {
 void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
                    Stats& stats, Progress& progress);
 
+class Mesh;
+/// Serial insertion of vertices 0 .. n-1 into the walking mesh (cavity.hpp): each walks from
+/// the last insertion and is inserted by its cavity. `profile`: time the phases (Fig. 8).
+void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates, Stats& stats,
+                    Progress& progress);
+
+/// The partition method with `threads` threads (partition.cpp); key[v] is vertex v's Hilbert
+/// key, non-decreasing along each BRIO round.
+void insert_partition(Mesh& mesh, const std::uint32_t* key, unsigned threads,
+                      std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
+
+/// The finish of the walking mesh: its arrays become the output's, in place (walking.cpp).
+Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input_index,
+                             const std::vector<DuplicateHit>& duplicates, const Options& options,
+                             unsigned threads);
+
 /// The paper's Fig. 10 with `threads` workers (pessimistic.cpp).
 void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
                         std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
@@ -51,6 +69,31 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
 /// The batch method: threads - 1 locators and one modifier (batch.cpp).
 void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
                   Stats& stats, Progress& progress);
+
+/// The input index that stands for a mesh vertex: its own, or for a group of equal points the
+/// smallest among them.
+struct Standing {
+  explicit Standing(const std::vector<std::uint32_t>& input_index) : input_index(input_index) {}
+  VertexId operator()(VertexId mesh_vertex) const {
+    const VertexId v = input_index[mesh_vertex];
+    if (keep.empty()) return v;
+    const auto it = keep.find(v);
+    return it == keep.end() ? v : it->second;
+  }
+  const std::vector<std::uint32_t>& input_index;
+  std::unordered_map<VertexId, VertexId> keep;  // only the input indices that another stands for
+};
+
+/// The finish's steps that every mesh shares. Groups the duplicates (input indices, sorted by
+/// the dropped one) and says who stands for whom.
+Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index,
+                            const std::vector<DuplicateHit>& duplicates, std::vector<Duplicate>& out);
+/// The hull, counter-clockwise from its smallest vertex, from its edges (sorted here).
+std::vector<VertexId> trace_hull(std::vector<std::pair<VertexId, VertexId>>& edges);
+/// The counts of the points and the warning of an empty or (finite bounding triangle) broken
+/// result. `input_points` fills the points in input order when they are needed.
+void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std::size_t hull_edges,
+                  const Options& options, const std::function<void(std::vector<Point>&)>& input_points);
 
 /// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
 /// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input

@@ -83,16 +83,11 @@ void canonicalize(Triangulation& out) {
   }
 }
 
-Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
-                     const std::vector<DuplicateHit>& duplicates, const Options& options,
-                     unsigned threads) {
-  Triangulation out;
-  const std::uint32_t n = kernel.n();
-  TriangleStore& tris = kernel.triangles_for_finish();
-  const std::uint32_t records = tris.size();
-
-  // Duplicates: the smallest input index of each group stands for all of them.
-  std::unordered_map<VertexId, VertexId> keep;  // mesh vertex -> standing index
+Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index,
+                            const std::vector<DuplicateHit>& duplicates, std::vector<Duplicate>& out) {
+  Standing standing(input_index);
+  // The smallest input index of each group stands for all of them.
+  auto& keep = standing.keep;  // input index of a mesh vertex -> standing index
   for (const DuplicateHit& d : duplicates) {
     const VertexId v = input_index[d.vertex];
     auto [it, fresh] = keep.try_emplace(v, v);
@@ -101,24 +96,84 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   for (const DuplicateHit& d : duplicates) {
     const VertexId v = input_index[d.vertex], dropped = input_index[d.dropped];
     const VertexId kept = keep[v];
-    if (dropped != kept) out.duplicates.push_back({dropped, kept});
-    if (v != kept) out.duplicates.push_back({v, kept});
+    if (dropped != kept) out.push_back({dropped, kept});
+    if (v != kept) out.push_back({v, kept});
   }
-  std::sort(out.duplicates.begin(), out.duplicates.end(),
-            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
-  out.duplicates.erase(std::unique(out.duplicates.begin(), out.duplicates.end(),
-                                   [](const Duplicate& a, const Duplicate& b) {
-                                     return a.dropped == b.dropped;
-                                   }),
-                       out.duplicates.end());
-  for (auto it = keep.begin(); it != keep.end();)
-    it = it->first == it->second ? keep.erase(it) : std::next(it);
-  auto standing = [&](VertexId mesh_vertex) {
-    const VertexId v = input_index[mesh_vertex];
-    if (keep.empty()) return v;
-    const auto it = keep.find(v);
-    return it == keep.end() ? v : it->second;
+  std::sort(out.begin(), out.end(), [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const Duplicate& a, const Duplicate& b) { return a.dropped == b.dropped; }),
+            out.end());
+  for (auto it = keep.begin(); it != keep.end();) it = it->first == it->second ? keep.erase(it) : std::next(it);
+  return standing;
+}
+
+std::vector<VertexId> trace_hull(std::vector<std::pair<VertexId, VertexId>>& edges) {
+  // Follow the boundary edges (counter-clockwise: the interior is on their left) from the
+  // smallest vertex index.
+  std::vector<VertexId> hull;
+  if (edges.empty()) return hull;
+  std::sort(edges.begin(), edges.end());
+  auto from = [&](VertexId v) {
+    auto it = std::lower_bound(edges.begin(), edges.end(), std::pair{v, VertexId{0}});
+    return it != edges.end() && it->first == v ? it->second : kNone;
   };
+  const VertexId start = edges.front().first;
+  VertexId v = start;
+  do {
+    hull.push_back(v);
+    v = from(v);
+  } while (v != kNone && v != start && hull.size() <= edges.size());
+  return hull;
+}
+
+void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std::size_t hull_edges,
+                  const Options& options, const std::function<void(std::vector<Point>&)>& input_points) {
+  Stats& s = out.stats;
+  s.points = n;
+  s.duplicates = out.duplicates.size();
+  s.distinct = n - s.duplicates;
+  if (s.distinct < 3) {
+    out.warning = "fewer than three distinct points: no triangle";
+  } else if (count == 0 && options.bounding == Bounding::Symbolic) {
+    out.warning = "all points are collinear: no triangle";  // else there would be a triangle
+  } else if (options.bounding == Bounding::Finite) {
+    // The paper's finite bounding triangle can leave a reflex boundary or drop points, or
+    // every triangle, when the circle of a thin one holds a bounding vertex.
+    std::vector<Point> pts(n);
+    input_points(pts);
+    const std::size_t h = out.hull.size();
+    if (count == 0) {
+      VertexId far = 0;  // a point other than pts[0]
+      while (far < n && pts[far] == pts[0]) ++far;
+      bool collinear = true;
+      for (VertexId v = 0; collinear && v < n; ++v) collinear = orient2d(pts[0], pts[far], pts[v]) == 0;
+      if (collinear) {
+        out.warning = "all points are collinear: no triangle";
+        return;
+      }
+    }
+    bool convex = h == hull_edges;
+    for (std::size_t i = 0; convex && i < h; ++i)
+      convex = orient2d(pts[out.hull[i]], pts[out.hull[(i + 1) % h]], pts[out.hull[(i + 2) % h]]) >= 0;
+    // Euler: a triangulation of all distinct points with h boundary vertices has 2d - 2 - h.
+    const bool complete = count == 2 * s.distinct - 2 - h;
+    if (!convex || !complete)
+      out.warning =
+          "finite bounding triangle (k = " + std::to_string(options.k) +
+          ") lost convex hull edges: the result is not the Delaunay triangulation of the "
+          "points; use the symbolic bounding triangle";
+  }
+}
+
+Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
+                     const std::vector<DuplicateHit>& duplicates, const Options& options,
+                     unsigned threads) {
+  Triangulation out;
+  const std::uint32_t n = kernel.n();
+  TriangleStore& tris = kernel.triangles_for_finish();
+  const std::uint32_t records = tris.size();
+
+  const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
 
   // Ids 1 .. kMaxOwner are never written (mesh.hpp).
   auto unused = [](TriangleId t) { return t != 0 && t < kFirstChild; };
@@ -262,60 +317,12 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
     }
   });
 
-  // The hull: follow the boundary edges (counter-clockwise: the interior is on their left)
-  // from the smallest vertex index.
-  if (!hull_edges.empty()) {
-    std::sort(hull_edges.begin(), hull_edges.end());
-    auto from = [&](VertexId v) {
-      auto it = std::lower_bound(hull_edges.begin(), hull_edges.end(), std::pair{v, VertexId{0}});
-      return it != hull_edges.end() && it->first == v ? it->second : kNone;
-    };
-    const VertexId start = hull_edges.front().first;
-    VertexId v = start;
-    do {
-      out.hull.push_back(v);
-      v = from(v);
-    } while (v != kNone && v != start && out.hull.size() <= hull_edges.size());
-  }
+  out.hull = trace_hull(hull_edges);
 
-  // Stats and warnings.
-  Stats& s = out.stats;
-  s.points = n;
-  s.duplicates = out.duplicates.size();
-  s.distinct = n - s.duplicates;
-  s.dag_nodes = kernel.history() ? std::accumulate(made.begin(), made.end(), std::uint64_t{0}) : 0;
-  if (s.distinct < 3) {
-    out.warning = "fewer than three distinct points: no triangle";
-  } else if (count == 0 && options.bounding == Bounding::Symbolic) {
-    out.warning = "all points are collinear: no triangle";  // else there would be a triangle
-  } else if (options.bounding == Bounding::Finite) {
-    // The paper's finite bounding triangle can leave a reflex boundary or drop points, or
-    // every triangle, when the circle of a thin one holds a bounding vertex.
-    std::vector<Point> pts(n);
+  out.stats.dag_nodes = std::accumulate(made.begin(), made.end(), std::uint64_t{0});
+  set_warnings(out, n, count, hull_edges.size(), options, [&](std::vector<Point>& pts) {
     for (VertexId v = 0; v < n; ++v) pts[input_index[v]] = kernel.point(v);
-    const std::size_t h = out.hull.size();
-    if (count == 0) {
-      VertexId far = 0;  // a point other than pts[0]
-      while (far < n && pts[far] == pts[0]) ++far;
-      bool collinear = true;
-      for (VertexId v = 0; collinear && v < n; ++v) collinear = orient2d(pts[0], pts[far], pts[v]) == 0;
-      if (collinear) {
-        out.warning = "all points are collinear: no triangle";
-        return out;
-      }
-    }
-    bool convex = h == hull_edges.size();
-    for (std::size_t i = 0; convex && i < h; ++i)
-      convex = orient2d(pts[out.hull[i]], pts[out.hull[(i + 1) % h]],
-                        pts[out.hull[(i + 2) % h]]) >= 0;
-    // Euler: a triangulation of all distinct points with h boundary vertices has 2d - 2 - h.
-    const bool complete = count == 2 * s.distinct - 2 - h;
-    if (!convex || !complete)
-      out.warning =
-          "finite bounding triangle (k = " + std::to_string(options.k) +
-          ") lost convex hull edges: the result is not the Delaunay triangulation of the "
-          "points; use the symbolic bounding triangle";
-  }
+  });
   return out;
 }
 

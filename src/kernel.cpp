@@ -5,24 +5,11 @@
 #include <stdexcept>
 
 namespace ridt::detail {
-namespace {
 
-int sign(double a, double b) { return (a > b) - (a < b); }
-
-// p strictly between a and b, the three being collinear.
-bool between(const Point& p, const Point& a, const Point& b) {
-  if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
-  return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
-}
-
-}  // namespace
-
-Kernel::Kernel(Block<Point> points, std::uint32_t n, bool symbolic,
-               bool brio, bool history)
-    : points_(std::move(points)), n_(n), first_symbolic_(symbolic ? n : kNone), brio_(brio),
-      history_(history),
-      // With history about 9 records a point: 3 from the split, 2 a flip. Without, 2 a point.
-      tris_(std::uint64_t{n} * (history ? 9 : 2) + kFirstChild + 8) {
+Kernel::Kernel(Block<Point> points, std::uint32_t n, bool symbolic, bool brio)
+    : points_(std::move(points)), n_(n), vertices_(points_.get(), n, symbolic), brio_(brio),
+      // About 9 records a point: 3 from the split, 2 a flip.
+      tris_(std::uint64_t{n} * 9 + kFirstChild + 8) {
   Scratch s;
   // Ids 1 .. kMaxOwner are never triangles (mesh.hpp), nor written: the finish skips them.
   const TriangleId root = tris_.allocate(kFirstChild);
@@ -35,58 +22,6 @@ void Kernel::retire_pool(Scratch& s) {
     r.v[0] = r.v[1] = r.v[2] = kNone;  // the finish keeps only triangles of real vertices
     r.n[0] = r.n[1] = r.n[2] = kNone;
     r.child = 0;
-  }
-}
-
-// orient(p, q, Bk) for finite p, q is R^e * cross(q - p, Bk) + lower terms; its sign is the
-// first non-zero of two coordinate comparisons. With two bounding vertices the R^3 or R^4 term
-// of cross(Bi, Bj) decides, with three the orientation of B0 B1 B2.
-int Kernel::orient_symbolic(VertexId a, VertexId b, VertexId c) const {
-  const int bounds = (a >= n_) + (b >= n_) + (c >= n_);
-  // Rotate (orientation is invariant under rotation): one bounding vertex goes last, and with
-  // two of them the finite vertex goes first.
-  while ((bounds == 1 && c < n_) || (bounds == 2 && a >= n_)) {
-    const VertexId t = a;
-    a = b, b = c, c = t;
-  }
-  if (bounds == 3) {
-    // +1 for a rotation of (B0, B1, B2), -1 for a rotation of (B0, B2, B1).
-    return ((a - n_ + 1) % 3 == b - n_) ? 1 : -1;
-  }
-  if (bounds == 2) return ((b - n_ + 1) % 3 == c - n_) ? 1 : -1;  // orient(B_i, B_j, a)
-  const Point& p = points_[a];
-  const Point& q = points_[b];
-  switch (c - n_) {
-    case 0: return sign(p.y, q.y) != 0 ? sign(p.y, q.y) : sign(q.x, p.x);  // B0 = (R, r)
-    case 1: return sign(q.x, p.x) != 0 ? sign(q.x, p.x) : sign(q.y, p.y);  // B1 = (-r, R^2)
-    default: return sign(p.x, q.x) != 0 ? sign(p.x, q.x) : sign(q.y, p.y); // B2 = (-r, -R^3)
-  }
-}
-
-// incircle(a, b, c, p), p finite, (a, b, c) counter-clockwise with 1 or 2 bounding vertices.
-// One: the circle through finite a, b and a far vertex tends to the half-plane left of a -> b;
-// a point on the line a b is inside exactly when it lies strictly between a and b.
-// Two: (a, Bi, Bj) is the lifted 4x4 determinant expanded in R and r; its leading term
-// compares one coordinate of p and a, and the next term the other one.
-int Kernel::incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const {
-  const int bounds = (a >= n_) + (b >= n_) + (c >= n_);
-  if (bounds == 3) return 1;  // the root: everything is inside
-  // Rotate so the finite vertices come first.
-  while (c < n_ || (bounds == 2 && b < n_)) {
-    const VertexId t = a;
-    a = b, b = c, c = t;
-  }
-  const Point& d = points_[p];
-  if (bounds == 1) {
-    const int o = orient2d(points_[a], points_[b], d);
-    if (o != 0) return o;
-    return between(d, points_[a], points_[b]) ? 1 : -1;
-  }
-  const Point& f = points_[a];
-  switch (b - n_) {
-    case 0: return sign(d.y, f.y) != 0 ? sign(d.y, f.y) : sign(f.x, d.x);  // (a, B0, B1)
-    case 1: return sign(f.x, d.x) != 0 ? sign(f.x, d.x) : sign(f.y, d.y);  // (a, B1, B2)
-    default: return sign(f.y, d.y) != 0 ? sign(f.y, d.y) : sign(d.x, f.x); // (a, B2, B0)
   }
 }
 
@@ -225,51 +160,6 @@ void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
   s.stack.push_back(n2);
 }
 
-// Without history the split keeps t as the first child and makes two more; the edge split keeps
-// t and u as t0 and u0; a flip turns t into n2 and u into n1. Only the neighbours that now
-// border a different record are relinked.
-void Kernel::split_triangle_in_place(TriangleId t, VertexId p, Scratch& s) {
-  const TriangleId c1 = allocate(2, s), c2 = c1 + 1;
-  const Triangle r = tris_[t];
-  make(t, p, r.v[1], r.v[2], r.n[0], c1, c2, s);
-  make(c1, p, r.v[2], r.v[0], r.n[1], c2, t, s);
-  make(c2, p, r.v[0], r.v[1], r.n[2], t, c1, s);
-  relink(r.n[1], t, c1, s);
-  relink(r.n[2], t, c2, s);
-  s.stack.push_back(t);
-  s.stack.push_back(c1);
-  s.stack.push_back(c2);
-}
-
-void Kernel::split_edge_in_place(TriangleId t, int i, VertexId p, Scratch& s) {
-  ++s.edge_splits;
-  const auto [u, a, b, c, d, tn_b, tn_c, un_b, un_c] = read_edge_split(t, i);
-
-  const TriangleId t1 = allocate(2, s), u1 = t1 + 1;
-  make(t, p, a, b, tn_c, u1, t1, s);
-  make(t1, p, c, a, tn_b, t, u, s);
-  make(u, p, d, c, un_b, t1, u1, s);
-  make(u1, p, b, d, un_c, u, t, s);
-  relink(tn_b, t, t1, s);
-  relink(un_c, u, u1, s);
-  s.stack.push_back(t);
-  s.stack.push_back(t1);
-  s.stack.push_back(u);
-  s.stack.push_back(u1);
-}
-
-void Kernel::flip_in_place(TriangleId t, TriangleId u, int j, Scratch& s) {
-  ++s.flips;
-  const auto [p, a, b, q, ta, tb, uaq, uqb] = read_flip(t, u, j);
-
-  make(t, p, q, b, uqb, tb, u, s);  // n2
-  make(u, p, a, q, uaq, t, ta, s);  // n1
-  relink(uqb, u, t, s);
-  relink(ta, t, u, s);
-  s.stack.push_back(u);
-  s.stack.push_back(t);
-}
-
 // Fig. 5 with an explicit stack: each entry is a triangle (p, a, b) whose edge a b must be
 // tested against the triangle on its other side.
 void Kernel::legalize(VertexId p, Scratch& s) {
@@ -284,10 +174,7 @@ void Kernel::legalize(VertexId p, Scratch& s) {
                              : incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0;
     if (illegal) {
       const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
-      if (history_)
-        flip(t, u, j, s);
-      else
-        flip_in_place(t, u, j, s);
+      flip(t, u, j, s);
     }
   }
 }

@@ -12,18 +12,12 @@
 #include "mesh.hpp"
 #include "predicates.hpp"
 #include "ridt/ridt.hpp"
+#include "symbolic.hpp"
 
 namespace ridt::detail {
 
-/// The bounding vertices have ids n, n + 1, n + 2 (B0, B1, B2, counter-clockwise).
+/// The bounding vertices have ids n, n + 1, n + 2 (symbolic.hpp).
 ///
-/// Symbolic mode places them infinitely far away, at B0 = (R, r), B1 = (-r, R^2),
-/// B2 = (-r, -R^3), with 1 << r << R. Every predicate that involves them is then a polynomial
-/// in R and r whose leading coefficient is a plain comparison of coordinates; those rules are
-/// in orient_symbolic and incircle_symbolic, and tests check them against a concrete far-away
-/// instance with exact integers. No coordinate is huge, the predicates never tie on a bounding
-/// vertex, and removing B0, B1, B2 leaves exactly the Delaunay triangulation of the points with
-/// its whole convex hull.
 /// What one inserting thread keeps to itself, on its own cache lines: the edges still to
 /// legalize (triangles with the new point at v[0]) and counters.
 struct alignas(64) Scratch {
@@ -48,11 +42,8 @@ class Kernel {
  public:
   /// `points` holds n points (vertex v is points[v]) followed by three bounding vertices
   /// (their coordinates are used only when `symbolic` is false). `brio`: the vertices come in
-  /// the BRIO order (order.hpp), each round already along the curve. `history`: keep the DAG;
-  /// without it a split or flip rewrites the records it replaces, points are located by
-  /// walking (walk), and a third of the memory goes.
-  Kernel(Block<Point> points, std::uint32_t n, bool symbolic,
-         bool brio = false, bool history = true);
+  /// the BRIO order (order.hpp), each round already along the curve.
+  Kernel(Block<Point> points, std::uint32_t n, bool symbolic, bool brio = false);
 
   enum class Where { Inside, OnEdge, OnVertex };
   struct Location {
@@ -92,31 +83,6 @@ class Kernel {
   /// Where p lies in leaf t (whose closure contains p).
   Location classify(TriangleId t, VertexId p) const;
 
-  /// Without history: walks from triangle t to one whose closure contains p. Each step leaves
-  /// through an edge that has p strictly on its far side, never the one it came in by, trying
-  /// the edges from one chosen at random (`rng`, any state): the remembering stochastic walk
-  /// of Devillers, Pion and Teillaud, which ends with probability 1 on any triangulation.
-  TriangleId walk(TriangleId t, VertexId p, std::uint32_t& rng) const {
-    TriangleId from = kNone;
-    for (;;) {
-      const TriangleId to = walk_step(t, from, p, rng);
-      if (to == t) return t;
-      from = t;
-      t = to;
-    }
-  }
-  /// One step of the walk: the triangle across an edge of t that has p strictly on its far
-  /// side, other than the edge to `from`; t itself when there is none.
-  TriangleId walk_step(TriangleId t, TriangleId from, VertexId p, std::uint32_t& rng) const {
-    const Triangle& r = tris_[t];
-    rng = rng * 1664525u + 1013904223u;
-    for (int k = 0, i = static_cast<int>((rng >> 16) % 3); k < 3; ++k, i = next(i)) {
-      if (r.n[i] == from) continue;  // p lies on this side of the edge just crossed
-      if (orient(r.v[next(i)], r.v[prev(i)], p) < 0) return r.n[i];
-    }
-    return t;
-  }
-
   /// Inserts p from a known location. Returns kNone, or the vertex that p duplicates.
   VertexId insert_at(const Location& where, VertexId p, Scratch& s) {
     if (where.where == Where::OnVertex) return tris_[where.t].v[where.i];
@@ -125,30 +91,17 @@ class Kernel {
     return kNone;
   }
   void split_at(const Location& where, VertexId p, Scratch& s) {
-    if (where.where == Where::Inside) {
-      if (history_)
-        split_triangle(where.t, p, s);
-      else
-        split_triangle_in_place(where.t, p, s);
-    } else {
-      if (history_)
-        split_edge(where.t, where.i, p, s);
-      else
-        split_edge_in_place(where.t, where.i, p, s);
-    }
+    if (where.where == Where::Inside)
+      split_triangle(where.t, p, s);
+    else
+      split_edge(where.t, where.i, p, s);
   }
   void legalize(VertexId p, Scratch& s);
 
-  int orient(VertexId a, VertexId b, VertexId c) const {
-    if (std::max({a, b, c}) >= first_symbolic_) return orient_symbolic(a, b, c);
-    return orient2d(points_[a], points_[b], points_[c]);
-  }
+  int orient(VertexId a, VertexId b, VertexId c) const { return vertices_.orient(a, b, c); }
   /// +1 if finite point p lies inside the circle of the counter-clockwise triangle (a, b, c),
   /// -1 outside; never 0 (symbolic perturbation).
-  int incircle(VertexId a, VertexId b, VertexId c, VertexId p) const {
-    if (std::max({a, b, c}) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
-    return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
-  }
+  int incircle(VertexId a, VertexId b, VertexId c, VertexId p) const { return vertices_.incircle(a, b, c, p); }
 
   void prefetch(TriangleId t) const { prefetch_record(&tris_[t]); }
   void prefetch_point(VertexId v) const { __builtin_prefetch(&points_[v]); }
@@ -254,14 +207,10 @@ class Kernel {
   void release_points() { points_.reset(); }
   std::uint32_t n() const { return n_; }
   bool brio() const { return brio_; }
-  bool history() const { return history_; }
 
   static constexpr TriangleId kRoot = 0;
 
  private:
-  int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
-  int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
-
   /// `count` consecutive new ids: from the shared store, or from the thread's pool.
   TriangleId allocate(std::uint32_t count, Scratch& s) {
     TriangleId first;
@@ -294,7 +243,7 @@ class Kernel {
   }
 
   // What an edge split and a flip read before they write (the names of the drawings in
-  // kernel.cpp), shared by the versions with and without history.
+  // kernel.cpp).
   struct EdgeSplit {
     TriangleId u;
     VertexId a, b, c, d;
@@ -310,10 +259,6 @@ class Kernel {
   void split_triangle(TriangleId t, VertexId p, Scratch& s);
   void split_edge(TriangleId t, int i, VertexId p, Scratch& s);
   void flip(TriangleId t, TriangleId u, int j, Scratch& s);
-  // The same without history: the replaced records are rewritten in place.
-  void split_triangle_in_place(TriangleId t, VertexId p, Scratch& s);
-  void split_edge_in_place(TriangleId t, int i, VertexId p, Scratch& s);
-  void flip_in_place(TriangleId t, TriangleId u, int j, Scratch& s);
   // Neighbour u of `old` now borders `now` instead.
   void relink(TriangleId u, TriangleId old, TriangleId now, const Scratch& s) {
     if (u == kNone) return;
@@ -345,11 +290,8 @@ class Kernel {
 
   Block<Point> points_;
   std::uint32_t n_;
-  // n when the bounding vertices are symbolic, else past every vertex id: the predicates take
-  // the symbolic rules exactly when a vertex id reaches it (one comparison, on every test).
-  std::uint32_t first_symbolic_;
+  Vertices vertices_;  // the predicates on points_, with the bounding vertices
   bool brio_;
-  bool history_;
   TriangleStore tris_;
 };
 

@@ -157,9 +157,9 @@ void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* 
 }
 
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
-                                      unsigned threads) {
+                                      unsigned threads, std::vector<std::uint32_t>* keys) {
   std::vector<std::uint32_t> order = random_permutation(n, seed);
-  const std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
+  std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
@@ -176,6 +176,7 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   } else {
     sort_rounds(0, rounds);
   }
+  if (keys != nullptr) *keys = std::move(key);
   return order;
 }
 

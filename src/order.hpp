@@ -38,9 +38,11 @@ constexpr std::uint32_t round_end(std::uint32_t b) { return b < kFirstRound ? kF
 /// BRIO", 2003): the random permutation from `seed`, cut into the rounds above, each round
 /// sorted along the Hilbert curve. A point lands in the last round with probability 1/2, in the
 /// one before with 1/4, ..., as a random sample should; within a round, successive insertions
-/// are close in the plane and touch nearby memory. Up to `threads` threads.
+/// are close in the plane and touch nearby memory. Up to `threads` threads. `keys`, when given,
+/// receives each point's hilbert_keys value (in input order): along each round of the order
+/// they never decrease.
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
-                                      unsigned threads = 1);
+                                      unsigned threads = 1, std::vector<std::uint32_t>* keys = nullptr);
 
 /// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box
 /// (hilbert_sort).

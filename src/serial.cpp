@@ -16,16 +16,13 @@ using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 // Fig. 8: the share of location, subdivision and legalization. Three clock reads a point, and
-// location descends from the root one point at a time, as the paper does (no look-ahead), or
-// walks from the last insertion.
+// location descends from the root one point at a time, as the paper does (no look-ahead).
 void insert_profiled(Kernel& kernel, Scratch& scratch, std::vector<DuplicateHit>& duplicates,
                      Stats& stats, Progress& progress) {
-  TriangleId last = Kernel::kRoot;
-  std::uint32_t rng = 1;
   for (VertexId p = 0; p < kernel.n(); ++p) {
     progress(p);
     const auto t0 = Clock::now();
-    last = kernel.history() ? kernel.descend(Kernel::kRoot, p) : kernel.walk(last, p, rng);
+    const TriangleId last = kernel.descend(Kernel::kRoot, p);
     const Kernel::Location where = kernel.classify(last, p);
     const auto t1 = Clock::now();
     stats.time_locate_s += seconds(t1 - t0);
@@ -48,18 +45,6 @@ void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& dupl
   Scratch scratch;
   if (profile) {
     insert_profiled(kernel, scratch, duplicates, stats, progress);
-  } else if (!kernel.history()) {
-    // Walking (BRIO order only): each point walks from where the one before it ended, close
-    // to it along the curve: some three steps, in cache. (Walking the next points ahead, to
-    // prefetch, measured slower: they are not far enough ahead to hide a miss.)
-    TriangleId last = Kernel::kRoot;
-    std::uint32_t rng = 1;
-    for (VertexId p = 0; p < kernel.n(); ++p) {
-      progress(p);
-      last = kernel.walk(last, p, rng);
-      const VertexId hit = kernel.insert_at(kernel.classify(last, p), p, scratch);
-      if (hit != kNone) duplicates.push_back({p, hit});
-    }
   } else {
     // Rounds (rounds.hpp): each round's points first descend the DAG along a Hilbert curve
     // and keep the leaf they reach; then they are inserted in the random order, each

@@ -1,133 +1,219 @@
-// The public entry point: checks the input, sets up the bounding triangle, runs the chosen
-// method and finishes.
+// The public entry point: checks the input and the options, orders and copies the points, runs
+// the chosen method on the chosen kernel and finishes.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <thread>
-#include <algorithm>
 
+#include "cavity.hpp"
 #include "driver.hpp"
 #include "order.hpp"
 #include "predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt {
+namespace {
 
-Triangulation triangulate(std::span<const Point> points, const Options& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The options made definite: threads counted, the location chosen. Throws InputError for a
+// combination that cannot run, saying why.
+struct Plan {
+  unsigned threads = 1;
+  bool walk = false;
+  bool brio = false;
+  bool symbolic = true;
+};
+
+Plan plan(std::size_t n, const Options& options) {
+  Plan p;
   // Three bounding vertices follow the points, and ids must stay below kIdMask.
-  if (points.size() > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
-  const auto n = static_cast<std::uint32_t>(points.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
+  if (n > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
+  p.symbolic = options.bounding == Bounding::Symbolic;
+  p.brio = options.order == Order::Brio;
+  if (options.method != Method::Serial) {
+    p.threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    // Optimistic owners are numbered 1 .. kMaxOwner (mesh.hpp).
+    if (p.threads > detail::kMaxOwner)
+      throw InputError("at most " + std::to_string(detail::kMaxOwner) + " threads (got " +
+                       std::to_string(p.threads) + ")");
+  }
+  if (options.profile && options.method != Method::Serial)
+    throw InputError("profiling (Fig. 8) times the serial method only");
+  const bool walks = options.method == Method::Serial || options.method == Method::Partition;
+  switch (options.locate) {
+    case Locate::Auto: p.walk = walks && p.brio; break;
+    case Locate::Dag: p.walk = false; break;
+    case Locate::Walk: p.walk = true; break;
+  }
+  if (options.method == Method::Partition) {
+    if (!p.brio)
+      throw InputError("the partition method needs the BRIO order: its threads own stretches of "
+                       "each round's curve (use --order brio)");
+    if (!p.walk)
+      throw InputError("the partition method keeps no DAG: it walks (use --locate walk or auto)");
+  } else if (p.walk && !walks) {
+    throw InputError("walking location works with the serial and partition methods only: the "
+                     "paper's threaded methods locate points while others insert, by descending "
+                     "the history DAG, whose nodes never change (use --locate dag)");
+  }
+  if (p.walk && !p.brio)
+    throw InputError("walking location needs the BRIO order: in random order each walk "
+                     "crosses about sqrt(n) triangles (use --order brio)");
+  if (!p.symbolic && !(options.k >= 2))
+    throw InputError("the finite bounding triangle needs k >= 2 (got " + std::to_string(options.k) + ")");
+  return p;
+}
+
+void check_finite(std::span<const Point> points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
     const Point& p = points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
       throw InputError("point " + std::to_string(i) + " has a " +
                        (std::isnan(p.x) || std::isnan(p.y) ? "NaN" : "infinite") + " coordinate");
   }
+}
+
+// Runs body(first, last) over [0, count) on up to `threads` threads.
+template <class Body>
+void in_parallel(std::size_t count, unsigned threads, Body&& body) {
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
+  std::vector<std::jthread> pool;
+  for (unsigned t = 1; t < parts; ++t) pool.emplace_back([&, t] { body(count * t / parts, count * (t + 1) / parts); });
+  body(0, count / parts);
+}
+
+// The points in insertion order (vertex v is input point order[v]), scaled by 2^scale, then
+// the three bounding vertices. Inserting them from a copy in that order keeps the points that
+// successive insertions read close together in memory.
+detail::Block<Point> copy_in_order(std::span<const Point> points, const std::vector<std::uint32_t>& order,
+                                   int scale, unsigned threads) {
+  const std::size_t n = points.size();
+  auto pts = detail::allocate_huge<Point>(n + 3);
+  in_parallel(n, threads, [&](std::size_t first, std::size_t last) {
+    if (scale == 0) {
+      for (std::size_t v = first; v < last; ++v) pts[v] = points[order[v]];
+    } else {
+      for (std::size_t v = first; v < last; ++v)
+        pts[v] = {std::ldexp(points[order[v]].x, scale), std::ldexp(points[order[v]].y, scale)};
+    }
+  });
+  pts[n] = pts[n + 1] = pts[n + 2] = Point{};  // symbolic: never read
+  return pts;
+}
+
+// The paper's (K, 0), (0, K), (-K, -K) around the centre of the points' box, K = k * M, into
+// pts[n .. n+2]; every point must lie strictly inside.
+void place_finite_bounding(Point* pts, std::uint32_t n, const std::vector<std::uint32_t>& order, double k_factor) {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  if (n > 0) x0 = x1 = pts[0].x, y0 = y1 = pts[0].y;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    x0 = std::min(x0, pts[v].x), x1 = std::max(x1, pts[v].x);
+    y0 = std::min(y0, pts[v].y), y1 = std::max(y1, pts[v].y);
+  }
+  // M is the box's size, but at least 2^-40 of the largest coordinate and at least 2^-960
+  // (far above the subnormals): a box that is a single point, or flat far from the origin,
+  // would otherwise give a K that rounds away beside the coordinates (or to 0), and a
+  // triangle through the points.
+  const double far = std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)});
+  const double m = std::max({x1 - x0, y1 - y0, far * 0x1p-40, 0x1p-960});
+  const double cx = x0 / 2 + x1 / 2, cy = y0 / 2 + y1 / 2, k = k_factor * m;
+  const Point b[3] = {{cx + k, cy}, {cx, cy + k}, {cx - k, cy - k}};
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(b[i].x) || !std::isfinite(b[i].y))
+      throw InputError("the finite bounding triangle overflows for these coordinates");
+    pts[n + i] = b[i];
+  }
+  for (std::uint32_t v = 0; v < n; ++v)
+    for (int i = 0; i < 3; ++i)
+      if (detail::orient2d(b[i], b[(i + 1) % 3], pts[v]) <= 0)
+        throw InputError("the finite bounding triangle does not enclose point " + std::to_string(order[v]) +
+                         "; use the symbolic one");
+}
+
+// The history DAG's kernel and the paper's methods.
+Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
+                      const Plan& plan, const Options& options, Stats& stats) {
+  detail::Kernel kernel(std::move(pts), n, plan.symbolic, plan.brio);
+  std::vector<detail::DuplicateHit> duplicates;
+  detail::Progress progress(options.progress, n);
+  const auto t0 = Clock::now();
+  switch (options.method) {
+    case Method::Serial:
+      detail::insert_serial(kernel, options.profile, duplicates, stats, progress);
+      break;
+    case Method::Pessimistic:
+      detail::insert_pessimistic(kernel, plan.threads, options.paper_locking, options.time_threads,
+                                 duplicates, stats, progress);
+      break;
+    case Method::Optimistic:
+      detail::insert_optimistic(kernel, plan.threads, options.time_threads, duplicates, stats, progress);
+      break;
+    case Method::Batch:
+      detail::insert_batch(kernel, plan.threads, duplicates, stats, progress);
+      break;
+    case Method::Partition:
+      break;  // refused by plan()
+  }
+  stats.time_insert_s = since(t0);
+  if (options.progress) options.progress(1.0);
+  return detail::finish(kernel, order, duplicates, options, plan.threads);
+}
+
+// The walking kernel: the serial method, or the partition method's threads.
+Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
+                          std::vector<std::uint32_t> keys, const Plan& plan, const Options& options,
+                          Stats& stats) {
+  detail::Mesh mesh(detail::Vertices(pts.get(), n, plan.symbolic));
+  std::vector<detail::DuplicateHit> duplicates;
+  detail::Progress progress(options.progress, n);
+  const auto t0 = Clock::now();
+  if (options.method == Method::Partition) {
+    // Each vertex's key, in insertion order.
+    std::vector<std::uint32_t> key(n);
+    in_parallel(n, plan.threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t v = first; v < last; ++v) key[v] = keys[order[v]];
+    });
+    std::vector<std::uint32_t>().swap(keys);
+    detail::insert_partition(mesh, key.data(), plan.threads, duplicates, stats, progress);
+  } else {
+    detail::insert_walking(mesh, options.profile, duplicates, stats, progress);
+  }
+  stats.time_insert_s = since(t0);
+  if (options.progress) options.progress(1.0);
+  if (plan.symbolic) pts.reset();  // the finish reads no point: the copy goes before it
+  return detail::finish_walking(mesh, order, duplicates, options, plan.threads);
+}
+
+}  // namespace
+
+Triangulation triangulate(std::span<const Point> points, const Options& options) {
+  const auto t0 = Clock::now();
+  const Plan p = plan(points.size(), options);
+  const auto n = static_cast<std::uint32_t>(points.size());
+  check_finite(points);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
   const int scale = detail::exact_scale_exponent(points);
-  const bool symbolic = options.bounding == Bounding::Symbolic;
-  unsigned threads = 1;
-  if (options.method != Method::Serial) {
-    threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    // Optimistic owners are numbered 1 .. kMaxOwner (mesh.hpp).
-    if (threads > detail::kMaxOwner)
-      throw InputError("at most " + std::to_string(detail::kMaxOwner) + " threads (got " +
-                       std::to_string(threads) + ")");
-  }
-  if (options.profile && options.method != Method::Serial)
-    throw InputError("profiling (Fig. 8) times the serial method only");
-  const bool walk = options.locate == Locate::Walk;
-  if (walk && options.method != Method::Serial)
-    throw InputError("walking location works with the serial method only: the threaded methods "
-                     "locate points while others insert, by descending the history DAG, whose "
-                     "nodes never change (use --locate dag)");
-  if (walk && options.order != Order::Brio)
-    throw InputError("walking location needs the BRIO order: in random order each walk "
-                     "crosses about sqrt(n) triangles (use --order brio)");
-  if (!symbolic && !(options.k >= 2))
-    throw InputError("the finite bounding triangle needs k >= 2 (got " +
-                     std::to_string(options.k) + ")");
 
-  // The mesh numbers vertices in insertion order: vertex v is input point order[v]. Then the
-  // points met near the root of the DAG, inserted early, lie close together in memory, and in
-  // the BRIO order successive points too.
-  const bool brio = options.order == Order::Brio;
+  // The mesh numbers vertices in insertion order: vertex v is input point order[v].
+  std::vector<std::uint32_t> keys;
   const std::vector<std::uint32_t> order =
-      brio ? detail::brio_order(points.data(), n, options.seed, threads)
-           : detail::random_permutation(n, options.seed);
-  auto pts = detail::allocate_huge<Point>(std::size_t{n} + 3);
-  if (scale == 0) {
-    for (std::uint32_t v = 0; v < n; ++v) pts[v] = points[order[v]];
-  } else {
-    for (std::uint32_t v = 0; v < n; ++v)
-      pts[v] = {std::ldexp(points[order[v]].x, scale), std::ldexp(points[order[v]].y, scale)};
-  }
-  if (symbolic) {
-    pts[n] = pts[n + 1] = pts[n + 2] = Point{};  // never read: decided combinatorially
-  } else {
-    // The paper's (K, 0), (0, K), (-K, -K) around the centre of the bounding box, K = k * M.
-    // The box of the (possibly scaled) points.
-    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
-    if (n > 0) x0 = x1 = pts[0].x, y0 = y1 = pts[0].y;
-    for (std::uint32_t v = 0; v < n; ++v) {
-      x0 = std::min(x0, pts[v].x), x1 = std::max(x1, pts[v].x);
-      y0 = std::min(y0, pts[v].y), y1 = std::max(y1, pts[v].y);
-    }
-    // M is the box's size, but at least 2^-40 of the largest coordinate and at least 2^-960
-    // (far above the subnormals): a box that is a single point, or flat far from the origin,
-    // would otherwise give a K that rounds away beside the coordinates (or to 0), and a
-    // triangle through the points.
-    const double far = std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)});
-    const double m = std::max({x1 - x0, y1 - y0, far * 0x1p-40, 0x1p-960});
-    const double cx = x0 / 2 + x1 / 2, cy = y0 / 2 + y1 / 2, k = options.k * m;
-    const Point b[3] = {{cx + k, cy}, {cx, cy + k}, {cx - k, cy - k}};
-    for (int i = 0; i < 3; ++i) {
-      if (!std::isfinite(b[i].x) || !std::isfinite(b[i].y))
-        throw InputError("the finite bounding triangle overflows for these coordinates");
-      pts[n + i] = b[i];
-    }
-    // Every point strictly inside, exactly, or the kernel's premise fails.
-    for (std::uint32_t v = 0; v < n; ++v)
-      for (int i = 0; i < 3; ++i)
-        if (detail::orient2d(b[i], b[(i + 1) % 3], pts[v]) <= 0)
-          throw InputError("the finite bounding triangle does not enclose point " +
-                           std::to_string(order[v]) + "; use the symbolic one");
-  }
+      p.brio ? detail::brio_order(points.data(), n, options.seed, p.threads,
+                                  options.method == Method::Partition ? &keys : nullptr)
+             : detail::random_permutation(n, options.seed);
+  detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
+  if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.k);
 
-  Triangulation out;
   Stats stats;
-  {
-    detail::Kernel kernel(std::move(pts), n, symbolic, brio, /*history=*/!walk);
-    std::vector<detail::DuplicateHit> duplicates;
-    detail::Progress progress(options.progress, n);
-    const auto t_insert = std::chrono::steady_clock::now();
-    switch (options.method) {
-      case Method::Serial:
-        detail::insert_serial(kernel, options.profile, duplicates, stats, progress);
-        break;
-      case Method::Pessimistic:
-        stats.threads = threads;
-        detail::insert_pessimistic(kernel, threads, options.paper_locking, options.time_threads,
-                                   duplicates, stats, progress);
-        break;
-      case Method::Optimistic:
-        stats.threads = threads;
-        detail::insert_optimistic(kernel, threads, options.time_threads, duplicates, stats, progress);
-        break;
-      case Method::Batch:
-        stats.threads = threads;
-        detail::insert_batch(kernel, threads, duplicates, stats, progress);
-        break;
-    }
-    stats.time_insert_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_insert).count();
-    if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
-    if (options.progress) options.progress(1.0);
-    out = detail::finish(kernel, order, duplicates, options, threads);
-  }
-  // After the DAG is gone, so that the sort's copies do not raise the peak.
+  stats.threads = p.threads;
+  stats.locate = p.walk ? Locate::Walk : Locate::Dag;
+  Triangulation out = p.walk ? run_walking(std::move(pts), n, order, std::move(keys), p, options, stats)
+                             : run_dag(std::move(pts), n, order, p, options, stats);
+  if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
+  // After the mesh is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out);
   // The finish counts the points, duplicates and DAG nodes; the insertion, everything else.
   stats.points = out.stats.points;
@@ -135,15 +221,13 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   stats.duplicates = out.stats.duplicates;
   stats.dag_nodes = out.stats.dag_nodes;
   out.stats = std::move(stats);
-  out.stats.time_triangulate_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.stats.time_triangulate_s = since(t0);
   return out;
 }
 
 Triangulation triangulate(std::span<const double> xy, const Options& options) {
   if (xy.size() % 2 != 0)
-    throw InputError("a flat coordinate array needs an even size (got " +
-                     std::to_string(xy.size()) + ")");
+    throw InputError("a flat coordinate array needs an even size (got " + std::to_string(xy.size()) + ")");
   std::vector<Point> points(xy.size() / 2);
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = {xy[2 * i], xy[2 * i + 1]};
   return triangulate(std::span<const Point>(points), options);

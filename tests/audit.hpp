@@ -153,7 +153,7 @@ struct Mode {
 };
 
 /// The serial method in both orders and walking, and each threaded method on `threads`
-/// threads in `threaded_order`.
+/// threads in `threaded_order` (the partition method in the BRIO order only).
 inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Order::Brio) {
   std::vector<Mode> modes = {{"serial random dag", Method::Serial, 1, Order::Random, Locate::Dag},
                              {"serial brio dag", Method::Serial, 1, Order::Brio, Locate::Dag},
@@ -165,6 +165,10 @@ inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Ord
     label << name << ' ' << threads << (threaded_order == Order::Brio ? " brio" : " random");
     modes.push_back({label.str(), method, threads, threaded_order, Locate::Dag});
   }
+  // The partition method walks, in the BRIO order only.
+  if (threaded_order == Order::Brio)
+    modes.push_back({"partition " + std::to_string(threads) + " brio", Method::Partition, threads, Order::Brio,
+                     Locate::Walk});
   return modes;
 }
 

@@ -137,7 +137,15 @@ expect 0 "walk stats" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --
 stdout_has '"locate": "walk"'
 stdout_has '"dag_nodes": 0'
 expect 2 "walk with a threaded method" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --method optimistic
-stderr_has "serial method only"
+stderr_has "serial and partition methods only"
+expect 0 "default location stats" -- "$ridt" triangulate "$dir/uniform.txt" --stats
+stdout_has '"locate": "walk"'
+expect 0 "default location in random order" -- "$ridt" triangulate "$dir/uniform.txt" --order random --stats
+stdout_has '"locate": "dag"'
+expect 2 "partition on the DAG" -- "$ridt" triangulate "$dir/uniform.txt" --method partition --locate dag
+stderr_has "keeps no DAG"
+expect 2 "partition in random order" -- "$ridt" triangulate "$dir/uniform.txt" --method partition --order random
+stderr_has "needs the BRIO order"
 expect 2 "walk in random order" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --order random
 stderr_has "needs the BRIO order"
 expect 2 "unknown order" -- "$ridt" triangulate "$dir/uniform.txt" --order sorted -o "$dir/bad7.ele"

@@ -144,7 +144,7 @@ TEST(Modes, RefusedCombinationsSayWhy) {
     triangulate(pts, o);
     ADD_FAILURE() << "walking with a threaded method should be refused";
   } catch (const InputError &e) {
-    EXPECT_NE(std::string(e.what()).find("serial method only"),
+    EXPECT_NE(std::string(e.what()).find("serial and partition methods only"),
               std::string::npos)
         << e.what();
   }

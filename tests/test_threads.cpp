@@ -126,6 +126,71 @@ TEST_P(Workers, StatisticsAddUp) {
   EXPECT_EQ(quiet.time_wait_s, 0);
 }
 
+// The partition method: threads own regions of each BRIO round's curve. Its passes need rounds
+// of at least 1,024 points a thread, so its inputs are larger than kN under the sanitizers too.
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+constexpr int kPartitionN = 20000;
+constexpr unsigned kPartitionThreads[] = {2, 3, 8};
+#else
+constexpr int kPartitionN = 60000;
+constexpr unsigned kPartitionThreads[] = {1, 2, 3, 4, 8, 16};
+#endif
+
+TEST(Partition, SameResultAsSerialForEveryThreadCountAndSeed) {
+  auto sets = inputs();
+  for (Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters})
+    sets.emplace_back(std::string(to_string(d)) + "_large", generate(d, kPartitionN, 29));
+  std::vector<Point> dup = generate(Distribution::Uniform, kPartitionN / 2, 4);
+  for (int i = 0; i < kPartitionN / 4; ++i) dup.push_back(dup[static_cast<std::size_t>(i) * 2]);
+  sets.emplace_back("duplicates_large", dup);
+  std::uint64_t run = 0;
+  for (const auto& [name, pts] : sets) {
+    const Triangulation serial = triangulate(pts);
+    ASSERT_EQ(audit(pts, serial), "") << name << ", serial";
+    for (unsigned threads : kPartitionThreads) {
+      Options o;
+      o.method = Method::Partition;
+      o.threads = threads;
+      o.seed = 1 + 7919 * run++;
+      const Triangulation t = triangulate(pts, o);
+      const std::string what = name + ", " + std::to_string(threads) + " threads";
+      EXPECT_EQ(audit(pts, t), "") << what;
+      EXPECT_EQ(compare(t, serial), "") << what;
+      EXPECT_EQ(t.stats.dag_nodes, 0u) << what;
+      EXPECT_EQ(t.stats.locate, Locate::Walk) << what;
+    }
+  }
+}
+
+// The passes really share the work: on a large round each thread inserts points, and the
+// points put off along the regions' borders are few. The counts add up to the input.
+TEST(Partition, ThreadsShareTheRoundsAndFewPointsArePutOff) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 4 * kPartitionN, 12);
+  Options o;
+  o.method = Method::Partition;
+  o.threads = 4;
+  const Triangulation t = triangulate_checked(pts, o);
+  ASSERT_EQ(t.stats.per_thread.size(), 4u);
+  std::uint64_t points = 0;
+  for (const ThreadStats& w : t.stats.per_thread) {
+    EXPECT_GT(w.points, pts.size() / 16) << "a thread that inserted almost nothing";
+    points += w.points;
+  }
+  EXPECT_EQ(points, pts.size());
+  EXPECT_LT(t.stats.retries, pts.size() / 10);
+}
+
+TEST(Partition, RefusesTheDagAndTheRandomOrder) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 100, 1);
+  Options o;
+  o.method = Method::Partition;
+  o.locate = Locate::Dag;
+  EXPECT_THROW(triangulate(pts, o), InputError);
+  o.locate = Locate::Auto;
+  o.order = Order::Random;
+  EXPECT_THROW(triangulate(pts, o), InputError);
+}
+
 // Many threads on few points: insertions collide often, and every retry must leave the mesh
 // as it was. Repeated, since collisions depend on timing.
 TEST(Optimistic, CollisionsLeaveNoTrace) {
@@ -216,9 +281,10 @@ TEST(Progress, ReportedByEveryMethodAndCanAbandonTheRun) {
 #endif
   const std::vector<Point> pts = generate(Distribution::Uniform, kPoints, 5);
   const Triangulation expected = triangulate(pts);
-  for (const Method m : {Method::Serial, Method::Pessimistic, Method::Optimistic, Method::Batch}) {
+  for (const Method m : {Method::Serial, Method::Pessimistic, Method::Optimistic, Method::Batch, Method::Partition}) {
     for (const Locate where : {Locate::Dag, Locate::Walk}) {
-      if (where == Locate::Walk && m != Method::Serial) continue;
+      if (where == Locate::Walk && m != Method::Serial && m != Method::Partition) continue;
+      if (where == Locate::Dag && m == Method::Partition) continue;
       Options o;
       o.method = m;
       o.locate = where;
@@ -254,15 +320,18 @@ TEST(Progress, ReportedByEveryMethodAndCanAbandonTheRun) {
 // on fresh memory. (The sanitizers' builds keep nothing by default; here the limit is set.)
 TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
   // Enough points for the records' chunks to be on huge pages, which are the ones kept.
+  // The DAG's records are the blocks kept; the walking kernel's arrays become the output.
   const std::vector<Point> pts = generate(Distribution::Uniform, 20000, 9);
+  Options dag;
+  dag.locate = Locate::Dag;
   const std::size_t before = set_memory_cache_limit(0);
   ASSERT_EQ(cached_memory(), 0u);
-  const Triangulation fresh = triangulate(pts);
+  const Triangulation fresh = triangulate(pts, dag);
   ASSERT_EQ(audit(pts, fresh), "");
   EXPECT_EQ(cached_memory(), 0u);  // with no room, nothing is kept
 
   set_memory_cache_limit(std::size_t{1} << 30);
-  EXPECT_EQ(compare(triangulate(pts), fresh), "");
+  EXPECT_EQ(compare(triangulate(pts, dag), fresh), "");
   const std::size_t kept = cached_memory();
   EXPECT_GT(kept, 0u);
   struct Abandon {};
@@ -275,6 +344,7 @@ TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
       Options o;
       o.method = m;
       o.order = order;
+      o.locate = Locate::Dag;
       o.threads = 2;
       o.seed = 3;
       const Triangulation t = triangulate(pts, o);
@@ -303,6 +373,7 @@ TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
   for (const Method m : {Method::Serial, Method::Optimistic}) {
     Options o;
     o.method = m;
+    o.locate = Locate::Dag;
     o.threads = 2;
     EXPECT_EQ(compare(triangulate(pts, o), fresh), "");
     EXPECT_EQ(cached_memory(), kPart);

@@ -1,5 +1,5 @@
 // ridt: the command-line tool.
-//   ridt triangulate INPUT [-o OUTPUT] [--seed S] [--order brio|random] [--locate dag|walk]
+//   ridt triangulate INPUT [-o OUTPUT] [--seed S] [--order brio|random] [--locate auto|dag|walk]
 //                          [--method M] [--threads N] [--bounding symbolic|finite] [--k K]
 //                          [--stats[=json|table]] [--profile]
 //   ridt generate --dist uniform|normal|grid|clusters -n N [--seed S] -o FILE
@@ -81,7 +81,7 @@ class ProgressLine {
 
 struct TriangulateArgs {
   std::string input, output, bounding = "symbolic", method = "serial", stats;
-  std::string order = "brio", locate = "dag";
+  std::string order = "brio", locate = "auto";
   std::uint64_t seed = 1;
   double k = 10;
   unsigned threads = 0;
@@ -106,7 +106,7 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
       {"threads", std::to_string(s.threads)},
       {"seed", std::to_string(a.seed)},
       {"order", "\"" + a.order + "\""},
-      {"locate", "\"" + a.locate + "\""},
+      {"locate", s.locate == ridt::Locate::Walk ? "\"walk\"" : "\"dag\""},
       {"bounding", "\"" + a.bounding + "\""},
       {"points", std::to_string(s.points)},
       {"distinct", std::to_string(s.distinct)},
@@ -123,7 +123,7 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
       {"time_wait_s", num(s.time_wait_s)},
       {"time_write_s", num(t_write)},
   };
-  if (a.method == "optimistic") f.push_back({"retries", std::to_string(s.retries)});
+  if (a.method == "optimistic" || a.method == "partition") f.push_back({"retries", std::to_string(s.retries)});
   if (a.method == "batch") {
     f.push_back({"time_idle_s", num(s.time_idle_s)});
     f.push_back({"time_stall_s", num(s.time_stall_s)});
@@ -207,9 +207,11 @@ int run_triangulate(const TriangulateArgs& a) {
                               {{"symbolic", Bounding::Symbolic}, {"finite", Bounding::Finite}});
   o.method = pick<Method>("method", a.method,
                           {{"serial", Method::Serial}, {"pessimistic", Method::Pessimistic},
-                           {"optimistic", Method::Optimistic}, {"batch", Method::Batch}});
+                           {"optimistic", Method::Optimistic}, {"batch", Method::Batch},
+                           {"partition", Method::Partition}});
   o.order = pick<Order>("order", a.order, {{"brio", Order::Brio}, {"random", Order::Random}});
-  o.locate = pick<Locate>("location", a.locate, {{"dag", Locate::Dag}, {"walk", Locate::Walk}});
+  o.locate = pick<Locate>("location", a.locate,
+                          {{"auto", Locate::Auto}, {"dag", Locate::Dag}, {"walk", Locate::Walk}});
   o.threads = a.threads;
   o.paper_locking = a.paper_locking;
   o.time_threads = !a.no_thread_timing;
@@ -254,9 +256,12 @@ int main(int argc, char** argv) {
                   "insertion order: brio (default; random rounds, each along a Hilbert curve) or "
                   "random (the paper's)");
   tri->add_option("--locate", ta.locate,
-                  "point location: dag (default; the history DAG) or walk (from the last "
-                  "insertion, no DAG: less memory; serial method and brio order only)");
-  tri->add_option("--method", ta.method, "serial (default), pessimistic, optimistic or batch");
+                  "point location: auto (default: walk where the method and order allow, else "
+                  "dag), dag (the history DAG) or walk (from the last insertion, no DAG; serial "
+                  "and partition methods, brio order)");
+  tri->add_option("--method", ta.method,
+                  "serial (default), pessimistic, optimistic, batch (the paper's, on the DAG) or "
+                  "partition (threads own regions; no lock, no DAG)");
   tri->add_option("--threads", ta.threads,
                   "threads of a threaded method (0: all hardware threads; batch: threads - 1 "
                   "locators and one modifier)");

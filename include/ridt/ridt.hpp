@@ -42,6 +42,10 @@ enum class Method {
   Pessimistic,  ///< threads share one triangulation; one critical section for the leaf step (Fig. 10)
   Optimistic,   ///< threads lock only the triangles an insertion changes (try-lock, back off)
   Batch,        ///< threads - 1 locators queue DAG nodes for one modifier thread
+  /// Threads own regions of the plane (stretches of each BRIO round's curve) and insert into
+  /// one mesh without a lock and without a DAG; the points near a region's border go to a
+  /// second pass with other borders, and what is left to one thread. BRIO order, walking.
+  Partition,
 };
 
 /// The order in which points are inserted.
@@ -52,8 +56,9 @@ enum class Order {
 
 /// How an insertion finds the triangle that holds its point.
 enum class Locate {
-  Dag,   ///< descend the history DAG (every method)
-  Walk,  ///< walk from the last insertion; keeps no DAG (serial method, BRIO order)
+  Auto,  ///< Walk where the method and the order allow it, else Dag
+  Dag,   ///< descend the history DAG (serial and the paper's three threaded methods)
+  Walk,  ///< walk from the last insertion; keeps no DAG (serial and partition, BRIO order)
 };
 
 /// The starting triangle that encloses every point.
@@ -77,7 +82,7 @@ struct Options {
   bool time_threads = true;
   std::uint64_t seed = 1;  ///< seed of the random insertion order
   Order order = Order::Brio;
-  Locate locate = Locate::Dag;
+  Locate locate = Locate::Auto;
   Bounding bounding = Bounding::Symbolic;
   double k = 10.0;  ///< K = k * M for Bounding::Finite; k >= 2 keeps every point strictly inside
   /// Rotate each triangle so its smallest vertex index comes first and sort the triangles:
@@ -111,13 +116,18 @@ struct Stats {
   std::uint64_t distinct = 0;    ///< distinct points
   std::uint64_t duplicates = 0;  ///< input points dropped as duplicates
   std::uint64_t dag_nodes = 0;   ///< triangle records made (each one a node of the history DAG); 0 when walking
-  std::uint64_t flips = 0;       ///< edge flips during legalization
-  std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits)
+  /// Edge flips during legalization. Walking (cavity insertion): the flips the same insertions
+  /// would have made, the triangles each cavity replaced beyond the first.
+  std::uint64_t flips = 0;
+  std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits); 0 when walking
   double time_triangulate_s = 0; ///< the whole call: set-up, insertion, finish
   double time_insert_s = 0;      ///< wall time of the insertion phase
   double time_critical_s = 0;    ///< summed over threads (threaded methods, time_threads)
   double time_wait_s = 0;        ///< summed over threads (threaded methods, time_threads)
-  std::uint64_t retries = 0;     ///< optimistic: insertions restarted after a failed try-lock
+  /// Optimistic: insertions restarted after a failed try-lock; partition: points put off to a
+  /// later pass because they met another thread's region.
+  std::uint64_t retries = 0;
+  Locate locate = Locate::Dag;   ///< the location used (Locate::Auto made definite)
   double time_idle_s = 0;        ///< batch: the modifier waiting for hints
   double time_stall_s = 0;       ///< batch: locators waiting for room in the queue, summed
   double queue_depth_mean = 0;   ///< batch: hints queued ahead of the modifier, on average

@@ -1,0 +1,313 @@
+// The partition method: threads insert into one walking mesh (cavity.hpp) without a lock and
+// without a history DAG.
+//
+// The points come in the BRIO order, each round along a Hilbert curve, with the curve's key
+// of each vertex. A large round is cut into one stretch of the curve a thread; the cut keys
+// split the plane into regions, and every vertex (old or new) belongs to the thread whose
+// region holds it. A thread inserts a point of its stretch only when every triangle its walk
+// enters and every triangle of its cavity has all three vertices in its region; else it puts
+// the point off. Then:
+//
+//   - a triangle a thread changes has all its vertices in the thread's region, and the new
+//     ones too (the point and the cavity's boundary edges), so no two threads write one
+//     triangle, and a slot a thread writes holds its own triangles all through the pass;
+//   - a neighbour of such a triangle shares two of its vertices, so it is the same thread's
+//     or holds vertices of two regions: such mixed triangles no thread changes during the
+//     pass, and reading them, to test them, races with nothing;
+//   - the links a thread rewrites are those of edges with both ends in its region, which only
+//     it reads.
+//
+// So the threads share the mesh with plain loads and stores, and the passes are ordered by
+// the joins between them. The points put off are inserted in a second pass whose cuts lie in
+// the middle of the first pass's stretches, and what is left after it by one thread. Small
+// rounds are inserted by one thread: their mesh is small and their cavities reach the
+// bounding vertices, which belong to no thread.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "cavity.hpp"
+#include "driver.hpp"
+#include "order.hpp"
+
+namespace ridt::detail {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// Regions are numbered 0 .. threads - 1; the bounding vertices are in none.
+using Region = std::uint16_t;
+constexpr Region kNoRegion = 0xffff;
+// A round is cut among the threads when each thread gets at least this many points.
+constexpr VertexId kMinStretch = 1024;
+// Tries to find a thread's first triangle among its first points before the pass.
+constexpr std::size_t kStartTries = 64;
+
+class Partition {
+ public:
+  Partition(Mesh& mesh, const std::uint32_t* key, unsigned threads, std::vector<DuplicateHit>& duplicates,
+            Stats& stats, Progress& progress)
+      : mesh_(mesh), key_(key), threads_(threads), region_(mesh.vertices().n() + 3, kNoRegion),
+        workers_(threads), duplicates_(duplicates), stats_(stats), progress_(progress) {}
+
+  void run() {
+    const VertexId n = mesh_.vertices().n();
+    const auto t0 = Clock::now();
+    for (VertexId b = 0; b < n; b = round_end(b)) {
+      const VertexId e = std::min(round_end(b), n);
+      if (e - b < kMinStretch * threads_) {
+        std::vector<VertexId> all(e - b);
+        for (VertexId p = b; p < e; ++p) all[p - b] = p;
+        insert_alone(all);
+      } else {
+        insert_round(b, e);
+      }
+    }
+    const double total = seconds(Clock::now() - t0);
+    for (unsigned w = 0; w < threads_; ++w) {
+      Worker& k = workers_[w];
+      stats_.flips += k.scratch.replaced;
+      stats_.per_thread.push_back({"worker", k.points, total, 0, k.waiting, k.put_off});
+      stats_.time_wait_s += k.waiting;
+      stats_.retries += k.put_off;
+      duplicates_.insert(duplicates_.end(), k.duplicates.begin(), k.duplicates.end());
+    }
+  }
+
+ private:
+  struct Worker {
+    CavityScratch scratch;
+    std::vector<VertexId> todo, deferred;
+    std::vector<DuplicateHit> duplicates;
+    SlotPool pool;
+    TriangleId last = 0;
+    std::uint64_t points = 0, put_off = 0;
+    double busy = 0, waiting = 0;
+  };
+
+  // The thread of vertex v's region.
+  bool owns(Region r, TriangleId t) const {
+    return region_[mesh_.vertex(t, 0)] == r && region_[mesh_.vertex(t, 1)] == r &&
+           region_[mesh_.vertex(t, 2)] == r;
+  }
+
+  // One round of points [b, e), in curve order: two passes on all threads, then one thread.
+  void insert_round(VertexId b, VertexId e) {
+    const VertexId m = e - b;
+    // Pass 1: equal stretches of the round, cut where the key changes (points of one key lie
+    // in one region).
+    std::vector<VertexId> cut(threads_ + 1);
+    cut[0] = b, cut[threads_] = e;
+    for (unsigned i = 1; i < threads_; ++i) {
+      VertexId c = std::max(cut[i - 1], b + static_cast<VertexId>(std::uint64_t{m} * i / threads_));
+      while (c > b && c < e && key_[c] == key_[c - 1]) ++c;
+      cut[i] = c;
+    }
+    std::vector<std::uint32_t> from(threads_);  // the smallest key of each region
+    from[0] = 0;
+    for (unsigned i = 1; i < threads_; ++i) from[i] = cut[i] < e ? key_[cut[i]] : 0xffffffffu;
+    assign_regions(e, from);
+    for (unsigned i = 0; i < threads_; ++i) {
+      Worker& w = workers_[i];
+      w.todo.clear();
+      for (VertexId p = cut[i]; p < cut[i + 1]; ++p) w.todo.push_back(p);
+    }
+    run_pass();
+    // Pass 2: the points put off lie along the cuts; new cuts in the middle of the old
+    // stretches put each old cut inside a region. The last region wraps round to key 0.
+    std::vector<VertexId> left;
+    for (Worker& w : workers_) left.insert(left.end(), w.deferred.begin(), w.deferred.end());
+    if (left.size() >= 64 * threads_) {
+      for (unsigned i = 0; i < threads_; ++i) from[i] = key_[cut[i] + (cut[i + 1] - cut[i]) / 2];
+      assign_regions(e, from, /*wrap=*/true);
+      for (Worker& w : workers_) w.todo.clear();
+      for (const VertexId p : left) workers_[region_[p]].todo.push_back(p);
+      run_pass();
+      left.clear();
+      for (Worker& w : workers_) left.insert(left.end(), w.deferred.begin(), w.deferred.end());
+    }
+    insert_alone(left);
+  }
+
+  // Every vertex below `end` gets the region whose key range holds its key: region i from
+  // from[i] up to from[i + 1]; the last region up to the end of the keys, or with `wrap` on
+  // round to from[0].
+  void assign_regions(VertexId end, const std::vector<std::uint32_t>& from, bool wrap = false) {
+    const unsigned parts = std::max(1u, std::min<unsigned>(threads_, end / 65536));
+    auto part = [&](unsigned t) {
+      const VertexId first = static_cast<VertexId>(std::uint64_t{end} * t / parts);
+      const VertexId last = static_cast<VertexId>(std::uint64_t{end} * (t + 1) / parts);
+      for (VertexId v = first; v < last; ++v) {
+        const auto above = std::upper_bound(from.begin(), from.end(), key_[v]) - from.begin();
+        region_[v] = static_cast<Region>(above > 0 ? above - 1 : (wrap ? threads_ - 1 : 0));
+      }
+    };
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(part, t);
+    part(0);
+  }
+
+  // Each thread inserts its `todo` list into its region, putting off what it cannot.
+  void run_pass() {
+    // Before the threads start, with the mesh at rest: a triangle of its region to start
+    // from, found by walking to its first points (those passed over are put off), and slots
+    // enough for all its points, the free ones first.
+    std::size_t taken = 0;
+    for (unsigned i = 0; i < threads_; ++i) {
+      Worker& w = workers_[i];
+      w.deferred.clear();
+      std::size_t skip = 0;
+      bool found = false;
+      for (; skip < std::min(w.todo.size(), kStartTries); ++skip) {
+        const TriangleId t = mesh_.walk(last_, w.todo[skip], [](TriangleId) { return true; });
+        last_ = t;
+        if (owns(static_cast<Region>(i), t)) {
+          w.last = t;
+          found = true;
+          break;
+        }
+      }
+      if (!found) skip = w.todo.size();
+      w.deferred.assign(w.todo.begin(), w.todo.begin() + static_cast<std::ptrdiff_t>(skip));
+      w.todo.erase(w.todo.begin(), w.todo.begin() + static_cast<std::ptrdiff_t>(skip));
+      const std::size_t need = 2 * w.todo.size();
+      const std::size_t listed = std::min(need, free_.size() - taken);
+      w.pool.list = free_.data() + taken;
+      w.pool.listed = listed;
+      taken += listed;
+      w.pool.next = mesh_.grow(static_cast<TriangleId>(need - listed));
+      w.pool.end = w.pool.next + static_cast<TriangleId>(need - listed);
+    }
+    std::atomic<bool> stop{false};
+    std::atomic<std::uint64_t> inserted{0};
+    std::exception_ptr failure;
+    std::mutex failure_lock;
+    const std::uint64_t before = done_;
+    auto work = [&](unsigned i) {
+      try {
+        insert_owned(i, stop, inserted, before);
+      } catch (...) {
+        const std::lock_guard<std::mutex> guard(failure_lock);
+        if (!failure) failure = std::current_exception();
+        stop.store(true, std::memory_order_relaxed);
+      }
+    };
+    {
+      std::vector<std::jthread> pool;
+      for (unsigned i = 1; i < threads_; ++i) pool.emplace_back(work, i);
+      work(0);
+    }
+    if (failure) std::rethrow_exception(failure);
+    const Clock::time_point end = *std::max_element(pass_end_.begin(), pass_end_.end());
+    for (unsigned i = 0; i < threads_; ++i) workers_[i].waiting += seconds(end - pass_end_[i]);
+    // What the pools did not hand out is free now; the free slots they took are used.
+    std::vector<TriangleId> unused;
+    for (Worker& w : workers_) {
+      unused.insert(unused.end(), w.pool.list, w.pool.list + w.pool.listed);
+      for (; w.pool.next < w.pool.end; ++w.pool.next) {
+        mesh_.free_slot(w.pool.next);
+        unused.push_back(w.pool.next);
+      }
+      w.pool.listed = 0;
+      if (w.points > 0) last_ = w.last;
+    }
+    unused.insert(unused.end(), free_.begin() + static_cast<std::ptrdiff_t>(taken), free_.end());
+    free_ = std::move(unused);
+    done_ = before + inserted.load(std::memory_order_relaxed);
+  }
+
+  void insert_owned(unsigned i, std::atomic<bool>& stop, std::atomic<std::uint64_t>& inserted,
+                    std::uint64_t before) {
+    Worker& w = workers_[i];
+    const auto r = static_cast<Region>(i);
+    auto mine = [&](TriangleId t) { return owns(r, t); };
+    const auto t0 = Clock::now();
+    std::uint64_t count = 0;
+    for (const VertexId p : w.todo) {
+      if ((++count & 1023) == 0) {
+        inserted.fetch_add(1024, std::memory_order_relaxed);
+        if (stop.load(std::memory_order_relaxed)) break;
+        if (i == 0) progress_(before + inserted.load(std::memory_order_relaxed));
+      }
+      const TriangleId t = region_[p] == r ? mesh_.walk(w.last, p, mine) : kNoTriangle;
+      if (t == kNoTriangle) {
+        w.deferred.push_back(p);
+        ++w.put_off;
+        continue;
+      }
+      if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
+        w.duplicates.push_back({p, hit});
+        w.last = t;
+        continue;
+      }
+      if (!mesh_.find_cavity(t, p, w.scratch, mine)) {
+        w.deferred.push_back(p);
+        ++w.put_off;
+        continue;
+      }
+      w.last = mesh_.fill_cavity(p, w.scratch, w.pool);
+      ++w.points;
+    }
+    inserted.fetch_add(count & 1023, std::memory_order_relaxed);
+    const auto t1 = Clock::now();
+    w.busy += seconds(t1 - t0);
+    pass_end_[i] = t1;  // the wait for the others, from here to the last one's end
+  }
+
+  // The points of `list` by the calling thread, in order, with no regions.
+  void insert_alone(const std::vector<VertexId>& list) {
+    Worker& w = workers_[0];
+    auto any = [](TriangleId) { return true; };
+    SlotPool pool;
+    pool.list = free_.data();
+    pool.listed = std::min(free_.size(), 2 * list.size());
+    const std::size_t listed = pool.listed;
+    const std::size_t grown = 2 * list.size() - pool.listed;
+    pool.next = mesh_.grow(static_cast<TriangleId>(grown));
+    pool.end = pool.next + static_cast<TriangleId>(grown);
+    for (const VertexId p : list) {
+      progress_(done_++);
+      const TriangleId t = mesh_.walk(last_, p, any);
+      if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
+        w.duplicates.push_back({p, hit});
+        last_ = t;
+        continue;
+      }
+      mesh_.find_cavity(t, p, w.scratch, any);
+      last_ = mesh_.fill_cavity(p, w.scratch, pool);
+      ++w.points;
+    }
+    // The pool takes its listed slots from the back: those it left, at the front of its part
+    // of the list, stay free, and its range is given back.
+    free_.erase(free_.begin() + static_cast<std::ptrdiff_t>(pool.listed),
+                free_.begin() + static_cast<std::ptrdiff_t>(listed));
+    pool.listed = 0;
+    mesh_.give_back(pool);
+  }
+
+  Mesh& mesh_;
+  const std::uint32_t* key_;
+  unsigned threads_;
+  std::vector<Region> region_;
+  std::vector<Worker> workers_;
+  std::vector<Clock::time_point> pass_end_ = std::vector<Clock::time_point>(threads_);
+  std::vector<TriangleId> free_;  // free slots below the top
+  TriangleId last_ = 0;           // a triangle, where the next walk of the calling thread starts
+  std::uint64_t done_ = 0;        // points inserted or found duplicate
+  std::vector<DuplicateHit>& duplicates_;
+  Stats& stats_;
+  Progress& progress_;
+};
+
+}  // namespace
+
+void insert_partition(Mesh& mesh, const std::uint32_t* key, unsigned threads,
+                      std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
+  Partition(mesh, key, std::max(threads, 1u), duplicates, stats, progress).run();
+}
+
+}  // namespace ridt::detail

@@ -1,0 +1,59 @@
+// The vertices of a mesh and the two predicates on them, with the bounding vertices.
+//
+// Vertex ids 0 .. n-1 are the points; n, n + 1, n + 2 are the bounding vertices B0, B1, B2,
+// counter-clockwise. Symbolic bounding vertices lie infinitely far away, at B0 = (R, r),
+// B1 = (-r, R^2), B2 = (-r, -R^3), with 1 << r << R. Every predicate that involves them is
+// then a polynomial in R and r whose leading coefficient is a plain comparison of coordinates;
+// those rules are in orient_symbolic and incircle_symbolic, and tests check them against a
+// concrete far-away instance with exact integers. No coordinate is huge, the predicates never
+// tie on a bounding vertex, and removing B0, B1, B2 leaves exactly the Delaunay triangulation
+// of the points with its whole convex hull. Finite bounding vertices (the paper's) are
+// ordinary points at ids n .. n+2.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "predicates.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt::detail {
+
+class Vertices {
+ public:
+  Vertices() = default;
+  /// `points` holds n + 3 points: the n vertices, then the three bounding ones (read only when
+  /// `symbolic` is false).
+  Vertices(const Point* points, std::uint32_t n, bool symbolic)
+      : points_(points), n_(n), first_symbolic_(symbolic ? n : 0xffffffffu) {}
+
+  std::uint32_t n() const { return n_; }
+  const Point& operator[](VertexId v) const { return points_[v]; }
+  const Point* data() const { return points_; }
+  /// Whether v is a bounding vertex at infinity.
+  bool symbolic(VertexId v) const { return v >= first_symbolic_; }
+
+  /// +1 counter-clockwise, -1 clockwise, 0 collinear (never 0 with a symbolic vertex).
+  int orient(VertexId a, VertexId b, VertexId c) const {
+    if (std::max(a, std::max(b, c)) >= first_symbolic_) return orient_symbolic(a, b, c);
+    return orient2d(points_[a], points_[b], points_[c]);
+  }
+  /// +1 if point p lies inside the circle of the counter-clockwise triangle (a, b, c), -1
+  /// outside; never 0 (symbolic perturbation). p is never a bounding vertex.
+  int incircle(VertexId a, VertexId b, VertexId c, VertexId p) const {
+    if (std::max(a, std::max(b, c)) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
+    return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
+  }
+
+  int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
+  int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
+
+ private:
+  const Point* points_ = nullptr;
+  std::uint32_t n_ = 0;
+  // n when the bounding vertices are symbolic, else past every vertex id: the predicates take
+  // the symbolic rules exactly when a vertex id reaches it (one comparison, on every test).
+  std::uint32_t first_symbolic_ = 0xffffffffu;
+};
+
+}  // namespace ridt::detail
