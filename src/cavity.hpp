@@ -71,31 +71,39 @@ class Mesh {
   VertexId vertex(TriangleId t, int i) const { return v_[3 * std::size_t{t} + i]; }
   Link link(TriangleId t, int i) const { return link_[3 * std::size_t{t} + i]; }
 
-  /// Walks from triangle t to one whose closure holds point p. Each step crosses an edge that
-  /// has p strictly on its far side, never the one it came in by. In a Delaunay triangulation
-  /// such a walk cannot cycle (Edelsbrunner, 1990: the in-front relation of its triangles seen
-  /// from any point is acyclic), and the symbolic bounding vertices keep it one.
-  /// `Owned`: a triangle the walk may enter (the partition method's ownership); the walk gives
-  /// up and returns kNoTriangle when the next triangle is not. Those checks come before a triangle's
-  /// vertices are used.
+  /// Walks from triangle t to one whose closure holds point p, and returns it. Each step
+  /// crosses an edge that has p strictly on its far side, never the one it came in by. In a
+  /// Delaunay triangulation such a walk cannot cycle (Edelsbrunner, 1990: the in-front
+  /// relation of its triangles seen from any point is acyclic), and the symbolic bounding
+  /// vertices keep it one.
+  TriangleId walk(TriangleId t, VertexId p) const {
+    walk(t, p, [](TriangleId) { return true; });
+    return t;
+  }
+  /// The same, entering only the triangles that `owned` allows (the partition method's
+  /// regions; it is asked before a triangle's vertices are read): of the edges that have p on
+  /// their far side it takes one into such a triangle. True when it got there; else t is the
+  /// last triangle it reached.
   template <class Owned>
-  TriangleId walk(TriangleId t, VertexId p, Owned&& owned) const {
+  bool walk(TriangleId& t, VertexId p, Owned&& owned) const {
     int from = 3;  // the edge of t we came in by, none at first
     for (;;) {
       const std::size_t base = 3 * std::size_t{t};
       int out = 3;
+      bool blocked = false;
       for (int i = 0; i < 3; ++i) {
         if (i == from) continue;
         if (vertices_.orient(v_[base + next3(i)], v_[base + prev3(i)], p) < 0) {
-          out = i;
-          break;
+          if (owned(static_cast<TriangleId>(link_[base + i] / 3))) {
+            out = i;
+            break;
+          }
+          blocked = true;
         }
       }
-      if (out == 3) return t;
+      if (out == 3) return !blocked;
       const Link l = link_[base + out];
-      const TriangleId u = static_cast<TriangleId>(l / 3);
-      if (!owned(u)) return kNoTriangle;
-      t = u;
+      t = static_cast<TriangleId>(l / 3);
       from = l % 3;
     }
   }

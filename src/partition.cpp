@@ -85,6 +85,8 @@ class Partition {
     std::vector<DuplicateHit> duplicates;
     SlotPool pool;
     TriangleId last = 0;
+    TriangleId start = 0;   // the triangle it starts from, in its region
+    std::size_t split = 0;  // todo[split] is the first point it inserts
     std::uint64_t points = 0, put_off = 0;
     double busy = 0, waiting = 0;
   };
@@ -93,6 +95,24 @@ class Partition {
   bool owns(Region r, TriangleId t) const {
     return region_[mesh_.vertex(t, 0)] == r && region_[mesh_.vertex(t, 1)] == r &&
            region_[mesh_.vertex(t, 2)] == r;
+  }
+
+  // Whether region r's triangles reachable from t through the region number some dozens: a
+  // thread that starts in a small pocket of its region cut off by the border would put off
+  // every point.
+  bool deep_in(Region r, TriangleId t) {
+    if (!owns(r, t)) return false;
+    constexpr std::size_t kEnough = 48;
+    std::vector<TriangleId>& seen = seen_;
+    seen.assign(1, t);
+    for (std::size_t k = 0; k < seen.size() && seen.size() < kEnough; ++k)
+      for (int i = 0; i < 3; ++i) {
+        const Link l = mesh_.link(seen[k], i);
+        if (l == kNoLink) continue;
+        const auto u = static_cast<TriangleId>(l / 3);
+        if (owns(r, u) && std::find(seen.begin(), seen.end(), u) == seen.end()) seen.push_back(u);
+      }
+    return seen.size() >= kEnough;
   }
 
   // One round of points [b, e), in curve order: two passes on all threads, then one thread.
@@ -153,27 +173,28 @@ class Partition {
 
   // Each thread inserts its `todo` list into its region, putting off what it cannot.
   void run_pass() {
-    // Before the threads start, with the mesh at rest: a triangle of its region to start
-    // from, found by walking to its first points (those passed over are put off), and slots
-    // enough for all its points, the free ones first.
+    // Before the threads start, with the mesh at rest: where in its list each thread starts
+    // (from the middle: the ends of a stretch lie on the region's border), and from which
+    // triangle; then slots enough for all its points, the free ones first.
     std::size_t taken = 0;
     for (unsigned i = 0; i < threads_; ++i) {
       Worker& w = workers_[i];
       w.deferred.clear();
-      std::size_t skip = 0;
-      bool found = false;
-      for (; skip < std::min(w.todo.size(), kStartTries); ++skip) {
-        const TriangleId t = mesh_.walk(last_, w.todo[skip], [](TriangleId) { return true; });
-        last_ = t;
-        if (owns(static_cast<Region>(i), t)) {
-          w.last = t;
-          found = true;
+      w.split = w.todo.size();  // none found: every point is put off
+      for (std::size_t k = 0; k < std::min(w.todo.size(), kStartTries); ++k) {
+        const std::size_t c = (w.todo.size() / 2 + k) % w.todo.size();
+        last_ = mesh_.walk(last_, w.todo[c]);
+        if (deep_in(static_cast<Region>(i), last_)) {
+          w.start = last_;
+          w.split = c;
           break;
         }
       }
-      if (!found) skip = w.todo.size();
-      w.deferred.assign(w.todo.begin(), w.todo.begin() + static_cast<std::ptrdiff_t>(skip));
-      w.todo.erase(w.todo.begin(), w.todo.begin() + static_cast<std::ptrdiff_t>(skip));
+      if (w.split == w.todo.size()) {
+        w.deferred = std::move(w.todo);
+        w.todo.clear();
+        w.split = 0;
+      }
       const std::size_t need = 2 * w.todo.size();
       const std::size_t listed = std::min(need, free_.size() - taken);
       w.pool.list = free_.data() + taken;
@@ -227,21 +248,26 @@ class Partition {
     auto mine = [&](TriangleId t) { return owns(r, t); };
     const auto t0 = Clock::now();
     std::uint64_t count = 0;
-    for (const VertexId p : w.todo) {
+    // From todo[split] to the end, then from the start again back to todo[0].
+    w.last = w.start;
+    for (std::size_t k = 0; k < w.todo.size(); ++k) {
+      if (k == w.todo.size() - w.split) w.last = w.start;
+      const VertexId p = k < w.todo.size() - w.split ? w.todo[w.split + k] : w.todo[w.todo.size() - 1 - k];
       if ((++count & 1023) == 0) {
         inserted.fetch_add(1024, std::memory_order_relaxed);
         if (stop.load(std::memory_order_relaxed)) break;
         if (i == 0) progress_(before + inserted.load(std::memory_order_relaxed));
       }
-      const TriangleId t = region_[p] == r ? mesh_.walk(w.last, p, mine) : kNoTriangle;
-      if (t == kNoTriangle) {
+      // A point put off leaves the next walk to start where this one stopped, in the region
+      // and nearer the points to come than the last insertion.
+      if (region_[p] != r || !mesh_.walk(w.last, p, mine)) {
         w.deferred.push_back(p);
         ++w.put_off;
         continue;
       }
+      const TriangleId t = w.last;
       if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
         w.duplicates.push_back({p, hit});
-        w.last = t;
         continue;
       }
       if (!mesh_.find_cavity(t, p, w.scratch, mine)) {
@@ -261,7 +287,7 @@ class Partition {
   // The points of `list` by the calling thread, in order, with no regions.
   void insert_alone(const std::vector<VertexId>& list) {
     Worker& w = workers_[0];
-    auto any = [](TriangleId) { return true; };
+    auto any = [](TriangleId) { return true; };  // no regions
     SlotPool pool;
     pool.list = free_.data();
     pool.listed = std::min(free_.size(), 2 * list.size());
@@ -271,7 +297,7 @@ class Partition {
     pool.end = pool.next + static_cast<TriangleId>(grown);
     for (const VertexId p : list) {
       progress_(done_++);
-      const TriangleId t = mesh_.walk(last_, p, any);
+      const TriangleId t = mesh_.walk(last_, p);
       if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
         w.duplicates.push_back({p, hit});
         last_ = t;
@@ -296,6 +322,7 @@ class Partition {
   std::vector<Worker> workers_;
   std::vector<Clock::time_point> pass_end_ = std::vector<Clock::time_point>(threads_);
   std::vector<TriangleId> free_;  // free slots below the top
+  std::vector<TriangleId> seen_;  // deep_in's search
   TriangleId last_ = 0;           // a triangle, where the next walk of the calling thread starts
   std::uint64_t done_ = 0;        // points inserted or found duplicate
   std::vector<DuplicateHit>& duplicates_;

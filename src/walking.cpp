@@ -46,7 +46,7 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
   if (!profile) {
     for (VertexId p = 0; p < n; ++p) {
       progress(p);
-      const TriangleId t = mesh.walk(last, p, kAnyTriangle);
+      const TriangleId t = mesh.walk(last, p);
       if (const VertexId hit = mesh.coincident(t, p); hit != kNoVertex) {
         duplicates.push_back({p, hit});
         last = t;
@@ -61,7 +61,7 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
     for (VertexId p = 0; p < n; ++p) {
       progress(p);
       const auto t0 = Clock::now();
-      const TriangleId t = mesh.walk(last, p, kAnyTriangle);
+      const TriangleId t = mesh.walk(last, p);
       const VertexId hit = mesh.coincident(t, p);
       const auto t1 = Clock::now();
       stats.time_locate_s += seconds(t1 - t0);
