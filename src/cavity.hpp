@@ -62,8 +62,9 @@ struct alignas(64) CavityScratch {
 
 class Mesh {
  public:
-  /// The mesh of the bounding triangle alone, with room for n points.
-  explicit Mesh(const Vertices& vertices);
+  /// The mesh of the bounding triangle alone, with room for n points; its memory made ready
+  /// by up to `threads` threads.
+  explicit Mesh(const Vertices& vertices, unsigned threads = 1);
 
   const Vertices& vertices() const { return vertices_; }
   /// Slots in use (each a triangle, or free: see free_slot).

@@ -167,7 +167,7 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
 Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
                           std::vector<std::uint32_t> keys, const Plan& plan, const Options& options,
                           Stats& stats) {
-  detail::Mesh mesh(detail::Vertices(pts.get(), n, plan.symbolic));
+  detail::Mesh mesh(detail::Vertices(pts.get(), n, plan.symbolic), plan.threads);
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
