@@ -36,9 +36,10 @@ while read -r name flags; do
     "$(field time_insert_s)" "$peak" "$(awk -v p="$peak" -v n="$n" 'BEGIN { print p / n }')" "$verdict"
 done <<MODES
 serial,random,dag --method serial --order random
-serial,brio,dag --method serial
+serial,brio,dag --method serial --locate dag
 serial,brio,walk --method serial --locate walk
 pessimistic,$threads --method pessimistic --threads $threads
 optimistic,$threads --method optimistic --threads $threads
 batch,$threads --method batch --threads $threads
+partition,$threads --method partition --threads $threads
 MODES
