@@ -7,6 +7,10 @@
 #include <string>
 #include <thread>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include "cavity.hpp"
 #include "driver.hpp"
 #include "order.hpp"
@@ -163,7 +167,8 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
   return detail::finish(kernel, order, duplicates, options, plan.threads);
 }
 
-// The walking kernel: the serial method, or the partition method's threads.
+// The walking kernel: the serial method, or the partition method's threads (`keys`: each
+// vertex's Hilbert key, in insertion order).
 Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
                           std::vector<std::uint32_t> keys, const Plan& plan, const Options& options,
                           Stats& stats) {
@@ -172,13 +177,7 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
   if (options.method == Method::Partition) {
-    // Each vertex's key, in insertion order.
-    std::vector<std::uint32_t> key(n);
-    in_parallel(n, plan.threads, [&](std::size_t first, std::size_t last) {
-      for (std::size_t v = first; v < last; ++v) key[v] = keys[order[v]];
-    });
-    std::vector<std::uint32_t>().swap(keys);
-    detail::insert_partition(mesh, key.data(), plan.threads, duplicates, stats, progress);
+    detail::insert_partition(mesh, keys.data(), plan.threads, duplicates, stats, progress);
   } else {
     detail::insert_walking(mesh, options.profile, duplicates, stats, progress);
   }
@@ -204,6 +203,19 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
       p.brio ? detail::brio_order(points.data(), n, options.seed, p.threads,
                                   options.method == Method::Partition ? &keys : nullptr)
              : detail::random_permutation(n, options.seed);
+  if (!keys.empty()) {  // the keys in insertion order, for the partition method
+    std::vector<std::uint32_t> by_vertex(n);
+    in_parallel(n, p.threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t v = first; v < last; ++v) by_vertex[v] = keys[order[v]];
+    });
+    keys = std::move(by_vertex);
+  }
+#ifdef __GLIBC__
+  // The sort's buffers, freed, may stay with the allocator (glibc keeps freed blocks below
+  // its mmap threshold, which a first large block raises): given back now, they do not add
+  // some 12 bytes a point to the peak that the mesh sets.
+  malloc_trim(0);
+#endif
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.k);
 

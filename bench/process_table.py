@@ -1,0 +1,138 @@
+#!/usr/bin/env python3
+"""Whole-process timings: `ridt triangulate` beside CGAL's range insert on the same .bin file.
+
+Each code runs as its own process, from its start to its exit (reading the file included,
+writing nothing), in a new random order every repetition, so that a drift of the machine's
+speed touches every code alike. Reported: the median wall time of each code, its ratio to
+CGAL's median, the median of the ratios taken repetition by repetition, and the peak resident
+memory of the process per point (the input included). Writes a Markdown table (and CSV) with
+the machine, the compiler and the command.
+
+  bench/process_table.py --build build [--sizes 1000000,10000000] [--dists uniform,...]
+                         [--reps 5] [--threads 2] [--out docs/process.md]
+"""
+import argparse
+import csv
+import os
+import platform
+import random
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def run_once(cmd):
+    """Wall seconds and peak resident bytes of one process."""
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    err = proc.stderr.read().decode(errors="replace")
+    proc.stderr.close()
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit(f"{' '.join(cmd)} failed: {err.strip()}")
+    return wall, usage.ru_maxrss * 1024
+
+
+def machine():
+    cpu = "unknown CPU"
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    mem = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**30
+    return f"{cpu}, {os.cpu_count()} cores, {mem:.0f} GiB, {platform.system()} {platform.release()}"
+
+
+def compiler(build):
+    try:
+        for line in open(os.path.join(build, "CMakeCache.txt")):
+            if line.startswith("CMAKE_CXX_COMPILER:"):
+                path = line.split("=", 1)[1].strip()
+                return subprocess.run([path, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+    except OSError:
+        pass
+    return "unknown compiler"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--sizes", default="1000000")
+    ap.add_argument("--dists", default="uniform,normal,grid,clusters")
+    ap.add_argument("--reps", type=int, default=5)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--out", default=None, help="Markdown file (a .csv beside it)")
+    a = ap.parse_args()
+    ridt = os.path.join(a.build, "ridt")
+    cgal = os.path.join(a.build, "ridt_cgal_triangulate")
+    for tool in (ridt, cgal):
+        if not os.access(tool, os.X_OK):
+            sys.exit(f"{tool} is missing: build it first (cmake --build {a.build})")
+    t = str(a.threads)
+    codes = [
+        ("CGAL range insert", lambda f: [cgal, f]),
+        ("ridt serial (walk)", lambda f: [ridt, "triangulate", f]),
+        (f"ridt partition {t}", lambda f: [ridt, "triangulate", f, "--method", "partition", "--threads", t]),
+        (f"ridt optimistic {t} (DAG)", lambda f: [ridt, "triangulate", f, "--method", "optimistic", "--threads", t]),
+    ]
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in [int(s) for s in a.sizes.split(",")]:
+            for dist in a.dists.split(","):
+                points = os.path.join(tmp, f"{dist}-{n}.bin")
+                subprocess.run([ridt, "generate", "--dist", dist, "-n", str(n), "-o", points], check=True)
+                walls = {name: [] for name, _ in codes}
+                peaks = {name: [] for name, _ in codes}
+                ratios = {name: [] for name, _ in codes}
+                for _ in range(a.reps):
+                    order = list(codes)
+                    random.shuffle(order)
+                    this = {}
+                    for name, cmd in order:
+                        wall, peak = run_once(cmd(points))
+                        walls[name].append(wall)
+                        peaks[name].append(peak)
+                        this[name] = wall
+                    for name in this:
+                        ratios[name].append(this[name] / this[codes[0][0]])
+                base = statistics.median(walls[codes[0][0]])
+                for name, _ in codes:
+                    med = statistics.median(walls[name])
+                    rows.append({"n": n, "dist": dist, "code": name, "median_s": med,
+                                 "min_s": min(walls[name]), "max_s": max(walls[name]),
+                                 "ratio": med / base, "paired_ratio": statistics.median(ratios[name]),
+                                 "bytes_per_point": statistics.median(peaks[name]) / n})
+                    r = rows[-1]
+                    print(f"{n:>9} {dist:<9} {name:<26} {med:8.3f} s  x{r['ratio']:.3f}"
+                          f" (paired {r['paired_ratio']:.3f})  {r['bytes_per_point']:6.1f} B/pt", flush=True)
+    if a.out:
+        with open(os.path.splitext(a.out)[0] + ".csv", "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+        with open(a.out, "w") as f:
+            f.write("# Whole-process timings against CGAL\n\n")
+            f.write(f"Written by `bench/process_table.py --build {a.build} --sizes {a.sizes} --dists {a.dists} "
+                    f"--reps {a.reps} --threads {a.threads}` on {time.strftime('%Y-%m-%d')}.\n\n")
+            f.write(f"Machine: {machine()}. Compiler: {compiler(a.build)}.\n\n")
+            f.write("Each code is one process on a `.bin` file of float64 pairs: read, triangulate, write "
+                    "nothing. Repetitions run the codes in a new random order each time. Time: median wall "
+                    "seconds (min to max). Ratio: to CGAL's median; paired: the median of the ratios "
+                    "within each repetition. Peak: the process's peak resident memory per point, "
+                    "the input's 16 bytes included.\n\n")
+            f.write("| n | distribution | code | time s | min to max | ratio to CGAL | paired | peak B/pt |\n")
+            f.write("|---:|---|---|---:|---:|---:|---:|---:|\n")
+            for r in rows:
+                f.write(f"| {r['n']:,} | {r['dist']} | {r['code']} | {r['median_s']:.3f} | "
+                        f"{r['min_s']:.3f} to {r['max_s']:.3f} | {r['ratio']:.2f} | {r['paired_ratio']:.2f} | "
+                        f"{r['bytes_per_point']:.0f} |\n")
+
+
+if __name__ == "__main__":
+    main()
