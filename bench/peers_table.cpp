@@ -106,6 +106,8 @@ std::vector<Code> codes(std::uint32_t n) {
                 ridt_options(Method::Optimistic, Order::Brio, Locate::Dag, 2)));
   c.push_back(ridt_code("ridt batch 2", ridt_options(Method::Batch, Order::Brio,
                                                      Locate::Dag, 2)));
+  c.push_back(ridt_code("ridt partition 2", ridt_options(Method::Partition, Order::Brio,
+                                                         Locate::Walk, 2)));
 #ifdef RIDT_WITH_CGAL
   c.push_back(
       {"CGAL", [](const Input &in) {

@@ -143,6 +143,16 @@ TEST(Partition, SameResultAsSerialForEveryThreadCountAndSeed) {
   std::vector<Point> dup = generate(Distribution::Uniform, kPartitionN / 2, 4);
   for (int i = 0; i < kPartitionN / 4; ++i) dup.push_back(dup[static_cast<std::size_t>(i) * 2]);
   sets.emplace_back("duplicates_large", dup);
+  // The extremes of the doubles: the threads' predicates run on the scaled copy too.
+  for (const double scale : {1e300, 1e-300}) {
+    std::vector<Point> scaled = generate(Distribution::Clusters, kPartitionN, 6);
+    for (Point& q : scaled) q = {q.x * scale, q.y * scale};
+    sets.emplace_back(scale > 1 ? "clusters_1e300" : "clusters_1e-300", scaled);
+  }
+  // A grid on a line of points: cocircular everywhere, and collinear runs along the borders.
+  std::vector<Point> grid_line = generate(Distribution::Grid, kPartitionN, 2);
+  for (int i = 0; i < kPartitionN / 10; ++i) grid_line.push_back({i * 1e-3, 0.5});
+  sets.emplace_back("grid_and_line", grid_line);
   std::uint64_t run = 0;
   for (const auto& [name, pts] : sets) {
     const Triangulation serial = triangulate(pts);
