@@ -163,18 +163,26 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
-  // The last round is half of the points, and the others together the other half: with two
-  // threads, one sorts the last round and the other the rest.
+  // The rounds are shared among the threads, the largest first, each to the thread with the
+  // least work so far: the last round is half of the points, so with two threads one sorts
+  // it and the other the rest.
   const std::size_t rounds = first.size() - 1;
-  auto sort_rounds = [&](std::size_t from, std::size_t to) {
-    for (std::size_t r = from; r < to; ++r)
+  const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
+  std::vector<std::vector<std::size_t>> share(parts);
+  std::vector<std::uint64_t> load(parts, 0);
+  for (std::size_t r = rounds; r-- > 0;) {
+    const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+    share[least].push_back(r);
+    load[least] += first[r + 1] - first[r];
+  }
+  auto sort_rounds = [&](unsigned t) {
+    for (const std::size_t r : share[t])
       hilbert_sort(points, key.data(), order.data() + first[r], first[r + 1] - first[r]);
   };
-  if (threads > 1 && n >= 65536) {
-    std::jthread last(sort_rounds, rounds - 1, rounds);
-    sort_rounds(0, rounds - 1);
-  } else {
-    sort_rounds(0, rounds);
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_rounds, t);
+    sort_rounds(0);
   }
   if (keys != nullptr) *keys = std::move(key);
   return order;
