@@ -28,6 +28,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 #include "cavity.hpp"
 #include "driver.hpp"
@@ -142,7 +143,8 @@ class Partition {
     std::vector<VertexId> left;
     for (Worker& w : workers_) left.insert(left.end(), w.deferred.begin(), w.deferred.end());
     if (left.size() >= 64 * threads_) {
-      for (unsigned i = 0; i < threads_; ++i) from[i] = key_[cut[i] + (cut[i + 1] - cut[i]) / 2];
+      for (unsigned i = 0; i < threads_; ++i)  // an empty stretch at the end has its cut at e
+        from[i] = key_[std::min(cut[i] + (cut[i + 1] - cut[i]) / 2, e - 1)];
       assign_regions(e, from, /*wrap=*/true);
       for (Worker& w : workers_) w.todo.clear();
       for (const VertexId p : left) workers_[region_[p]].todo.push_back(p);
@@ -247,14 +249,14 @@ class Partition {
     const auto r = static_cast<Region>(i);
     auto mine = [&](TriangleId t) { return owns(r, t); };
     const auto t0 = Clock::now();
-    std::uint64_t count = 0;
+    std::uint64_t done = 0;  // inserted or found equal to a vertex, not yet counted in `inserted`
     // From todo[split] to the end, then from the start again back to todo[0].
     w.last = w.start;
     for (std::size_t k = 0; k < w.todo.size(); ++k) {
       if (k == w.todo.size() - w.split) w.last = w.start;
       const VertexId p = k < w.todo.size() - w.split ? w.todo[w.split + k] : w.todo[w.todo.size() - 1 - k];
-      if ((++count & 1023) == 0) {
-        inserted.fetch_add(1024, std::memory_order_relaxed);
+      if ((k & 1023) == 1023) {
+        inserted.fetch_add(std::exchange(done, 0), std::memory_order_relaxed);
         if (stop.load(std::memory_order_relaxed)) break;
         if (i == 0) progress_(before + inserted.load(std::memory_order_relaxed));
       }
@@ -268,6 +270,7 @@ class Partition {
       const TriangleId t = w.last;
       if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
         w.duplicates.push_back({p, hit});
+        ++done;
         continue;
       }
       if (!mesh_.find_cavity(t, p, w.scratch, mine)) {
@@ -277,8 +280,9 @@ class Partition {
       }
       w.last = mesh_.fill_cavity(p, w.scratch, w.pool);
       ++w.points;
+      ++done;
     }
-    inserted.fetch_add(count & 1023, std::memory_order_relaxed);
+    inserted.fetch_add(done, std::memory_order_relaxed);
     const auto t1 = Clock::now();
     w.busy += seconds(t1 - t0);
     pass_end_[i] = t1;  // the wait for the others, from here to the last one's end
@@ -324,7 +328,7 @@ class Partition {
   std::vector<TriangleId> free_;  // free slots below the top
   std::vector<TriangleId> seen_;  // deep_in's search
   TriangleId last_ = 0;           // a triangle, where the next walk of the calling thread starts
-  std::uint64_t done_ = 0;        // points inserted or found duplicate
+  std::uint64_t done_ = 0;        // points inserted or found equal to a vertex
   std::vector<DuplicateHit>& duplicates_;
   Stats& stats_;
   Progress& progress_;

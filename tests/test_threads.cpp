@@ -149,6 +149,12 @@ TEST(Partition, SameResultAsSerialForEveryThreadCountAndSeed) {
     for (Point& q : scaled) q = {q.x * scale, q.y * scale};
     sets.emplace_back(scale > 1 ? "clusters_1e300" : "clusters_1e-300", scaled);
   }
+  // Equal points by the thousand: every key alike, so that the cuts meet at the round's end.
+  sets.emplace_back("all_equal", std::vector<Point>(static_cast<std::size_t>(kPartitionN), Point{0.25, -3}));
+  std::vector<Point> two(static_cast<std::size_t>(kPartitionN), Point{1, 1});
+  for (std::size_t i = 0; i < two.size(); i += 3) two[i] = {2, 5};
+  two.push_back({7, -1});
+  sets.emplace_back("three_points_repeated", two);
   // A grid on a line of points: cocircular everywhere, and collinear runs along the borders.
   std::vector<Point> grid_line = generate(Distribution::Grid, kPartitionN, 2);
   for (int i = 0; i < kPartitionN / 10; ++i) grid_line.push_back({i * 1e-3, 0.5});
