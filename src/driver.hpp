@@ -103,7 +103,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
                      unsigned threads);
 
 /// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
-/// neighbours: the output no longer depends on the order of insertion.
-void canonicalize(Triangulation& out);
+/// neighbours: the output no longer depends on the order of insertion. Up to `threads` threads.
+void canonicalize(Triangulation& out, unsigned threads = 1);
 
 }  // namespace ridt::detail

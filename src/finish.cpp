@@ -5,6 +5,7 @@
 #include <atomic>
 #include <numeric>
 #include <thread>
+#include <type_traits>
 #include <unordered_map>
 
 #include "driver.hpp"
@@ -22,9 +23,23 @@ constexpr int ones(std::uint64_t x) {
 }
 static_assert(ones(0) == 0 && ones(~std::uint64_t{0}) == 64 && ones(0x8000000000000001u) == 2);
 
+// Three entries, copied one by one (std::copy_n of a run this short is a call to memmove).
+template <class T>
+void copy3(const T* from, T* to) {
+  to[0] = from[0], to[1] = from[1], to[2] = from[2];
+}
+
+// (x0, x1, x2) rotated to start at x[s].
+template <class T>
+void rotate3(T* x, int s) {
+  const T a = x[0], b = x[1], c = x[2];
+  if (s == 1) x[0] = b, x[1] = c, x[2] = a;
+  if (s == 2) x[0] = c, x[1] = a, x[2] = b;
+}
+
 }  // namespace
 
-void canonicalize(Triangulation& out) {
+void canonicalize(Triangulation& out, unsigned threads) {
   const std::size_t count = out.size();
   auto& tv = out.triangles;
   auto& tn = out.neighbors;
@@ -32,8 +47,8 @@ void canonicalize(Triangulation& out) {
     VertexId* v = &tv[3 * t];
     std::int32_t* n = &tn[3 * t];
     const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
-    std::rotate(v, v + s, v + 3);
-    std::rotate(n, n + s, n + 3);
+    rotate3(v, s);
+    rotate3(n, s);
   }
   // Sorted by first vertex with a counting sort (the first vertex of a triangle is now its
   // smallest, and each vertex is first in some two triangles), then each group by the other
@@ -55,32 +70,36 @@ void canonicalize(Triangulation& out) {
         return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
       });
   std::vector<std::uint32_t>().swap(start);
-  // The neighbours renumbered, then the triangles moved along the cycles of the permutation,
-  // in place: no second copy of the output.
+  // The neighbours renumbered, then each array gathered into its new order, one at a time:
+  // the reads are at random, but their addresses are known ahead, so they are asked for some
+  // way ahead and their misses overlap (moving the triangles along the permutation's cycles, in
+  // place, waited for one miss after another and took as long as the insertion). One array's
+  // copy, 24 bytes a point, is the price.
   {
     std::vector<std::int32_t> rank(count);
     for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
     for (std::int32_t& nb : tn) nb = nb < 0 ? kNoNeighbor : rank[nb];
   }
-  // Position i takes triangle order[i]; a position done is marked order[i] = i.
-  for (std::size_t i = 0; i < count; ++i) {
-    if (order[i] == i) continue;
-    VertexId v[3];
-    std::int32_t nb[3];
-    std::copy_n(&tv[3 * i], 3, v);
-    std::copy_n(&tn[3 * i], 3, nb);
-    std::size_t j = i;
-    while (order[j] != i) {
-      const std::size_t from = order[j];
-      std::copy_n(&tv[3 * from], 3, &tv[3 * j]);
-      std::copy_n(&tn[3 * from], 3, &tn[3 * j]);
-      order[j] = static_cast<std::uint32_t>(j);
-      j = from;
+  auto gather = [&](auto& a) {
+    std::remove_reference_t<decltype(a)> sorted(a.size());
+    const unsigned parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
+    auto part = [&](unsigned w) {
+      constexpr std::size_t kAhead = 16;
+      const std::size_t first = count * w / parts, last = count * (w + 1) / parts;
+      for (std::size_t i = first; i < last; ++i) {
+        if (i + kAhead < last) __builtin_prefetch(&a[3 * std::size_t{order[i + kAhead]}]);
+        copy3(&a[3 * std::size_t{order[i]}], &sorted[3 * i]);
+      }
+    };
+    {
+      std::vector<std::jthread> pool;
+      for (unsigned w = 1; w < parts; ++w) pool.emplace_back(part, w);
+      part(0);
     }
-    std::copy_n(v, 3, &tv[3 * j]);
-    std::copy_n(nb, 3, &tn[3 * j]);
-    order[j] = static_cast<std::uint32_t>(j);
-  }
+    a.swap(sorted);
+  };
+  gather(tv);
+  gather(tn);
 }
 
 Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index,

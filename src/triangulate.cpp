@@ -226,7 +226,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
                              : run_dag(std::move(pts), n, order, p, options, stats);
   if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
   // After the mesh is gone, so that the sort's copies do not raise the peak.
-  if (options.canonical_order) detail::canonicalize(out);
+  if (options.canonical_order) detail::canonicalize(out, p.threads);
   // The finish counts the points, duplicates and DAG nodes; the insertion, everything else.
   stats.points = out.stats.points;
   stats.distinct = out.stats.distinct;
