@@ -90,8 +90,9 @@ inline int incircle_filter(const Point& a, const Point& b, const Point& c, const
   // most 12 such products and 3 final ones, so 2^-1075 (32 m^2 + 4) = 2^-1070 (m^2 + 1/8)
   // bounds the total. An overflow makes m^2 infinite and sends us to the exact path.
   // std::max, not std::fmax: no NaN can occur (finite inputs), and it inlines to one instruction.
-  const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(bdx), std::fabs(bdy),
-                             std::fabs(cdx), std::fabs(cdy)});
+  // As a tree, three maxima deep: the bound, not the determinant, is the longer chain.
+  const double m = std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)), std::max(std::fabs(bdx), std::fabs(bdy))),
+                            std::max(std::fabs(cdx), std::fabs(cdy)));
   const double m2 = m * m;
   const double tiny = 0x1p-1070 * (m2 + 0.125);
   // First a cheap bound: the permanent below is at most 3 (2 m^2)(2 m^2) = 12 m^4 exactly, and
