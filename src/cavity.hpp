@@ -181,6 +181,16 @@ class Mesh {
     return s.slots[0];
   }
 
+  /// Inserts p with no regions: walks from `last` (left at a triangle by p), returns the
+  /// vertex p coincides with (nothing inserted), else kNoVertex.
+  VertexId insert(VertexId p, TriangleId& last, CavityScratch& s, SlotPool& pool) {
+    last = walk(last, p);
+    if (const VertexId hit = coincident(last, p); hit != kNoVertex) return hit;
+    find_cavity(last, p, s, [](TriangleId) { return true; });
+    last = fill_cavity(p, s, pool);
+    return kNoVertex;
+  }
+
   /// Marks slot t free (no triangle): the finish leaves it out.
   void free_slot(TriangleId t) {
     const std::size_t tb = 3 * std::size_t{t};

@@ -156,18 +156,10 @@ void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* 
   refine(points, sorted_pairs(key, ids, count), ids);
 }
 
-std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
-                                      unsigned threads, std::vector<std::uint32_t>* keys) {
-  std::vector<std::uint32_t> order = random_permutation(n, seed);
-  std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
-  std::vector<std::uint32_t> first;
-  for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
-  first.push_back(n);
-  // The rounds are shared among the threads, the largest first, each to the thread with the
-  // least work so far: the last round is half of the points, so with two threads one sorts
-  // it and the other the rest.
+void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
+                 const std::vector<std::uint32_t>& first, unsigned threads) {
   const std::size_t rounds = first.size() - 1;
-  const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
+  const unsigned parts = std::max(1u, std::min<unsigned>(threads, first.back() / 65536 + 1));
   std::vector<std::vector<std::size_t>> share(parts);
   std::vector<std::uint64_t> load(parts, 0);
   for (std::size_t r = rounds; r-- > 0;) {
@@ -175,15 +167,22 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
     share[least].push_back(r);
     load[least] += first[r + 1] - first[r];
   }
-  auto sort_rounds = [&](unsigned t) {
-    for (const std::size_t r : share[t])
-      hilbert_sort(points, key.data(), order.data() + first[r], first[r + 1] - first[r]);
+  auto sort_share = [&](unsigned t) {
+    for (const std::size_t r : share[t]) hilbert_sort(points, key, ids + first[r], first[r + 1] - first[r]);
   };
-  {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_rounds, t);
-    sort_rounds(0);
-  }
+  std::vector<std::jthread> pool;
+  for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_share, t);
+  sort_share(0);
+}
+
+std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
+                                      unsigned threads, std::vector<std::uint32_t>* keys) {
+  std::vector<std::uint32_t> order = random_permutation(n, seed);
+  std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
+  std::vector<std::uint32_t> first;
+  for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
+  first.push_back(n);
+  sort_rounds(points, key.data(), order.data(), first, threads);
   if (keys != nullptr) *keys = std::move(key);
   return order;
 }

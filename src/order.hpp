@@ -34,6 +34,13 @@ inline constexpr std::uint32_t kFirstRound = 1024;
 /// The end of the round that starts at b (b < 2^31, so no overflow).
 constexpr std::uint32_t round_end(std::uint32_t b) { return b < kFirstRound ? kFirstRound : 2 * b; }
 
+/// Sorts each round of ids, [first[r], first[r + 1]), on its own with hilbert_sort (`key`: the
+/// hilbert_keys of `points`). The rounds are shared among up to `threads` threads, the largest
+/// first, each to the thread with the least work so far: with two threads the last round, half
+/// of the points, against all the others.
+void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
+                 const std::vector<std::uint32_t>& first, unsigned threads);
+
 /// A biased randomized insertion order (Amenta, Choi and Rote, "Incremental constructions con
 /// BRIO", 2003): the random permutation from `seed`, cut into the rounds above, each round
 /// sorted along the Hilbert curve. A point lands in the last round with probability 1/2, in the

@@ -89,7 +89,7 @@ class Partition {
     TriangleId start = 0;   // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
     std::uint64_t points = 0, put_off = 0;
-    double busy = 0, waiting = 0;
+    double waiting = 0;
   };
 
   // The thread of vertex v's region.
@@ -248,7 +248,6 @@ class Partition {
     Worker& w = workers_[i];
     const auto r = static_cast<Region>(i);
     auto mine = [&](TriangleId t) { return owns(r, t); };
-    const auto t0 = Clock::now();
     std::uint64_t done = 0;  // inserted or found equal to a vertex, not yet counted in `inserted`
     // From todo[split] to the end, then from the start again back to todo[0].
     w.last = w.start;
@@ -283,15 +282,12 @@ class Partition {
       ++done;
     }
     inserted.fetch_add(done, std::memory_order_relaxed);
-    const auto t1 = Clock::now();
-    w.busy += seconds(t1 - t0);
-    pass_end_[i] = t1;  // the wait for the others, from here to the last one's end
+    pass_end_[i] = Clock::now();  // the wait for the others, from here to the last one's end
   }
 
   // The points of `list` by the calling thread, in order, with no regions.
   void insert_alone(const std::vector<VertexId>& list) {
     Worker& w = workers_[0];
-    auto any = [](TriangleId) { return true; };  // no regions
     SlotPool pool;
     pool.list = free_.data();
     pool.listed = std::min(free_.size(), 2 * list.size());
@@ -301,15 +297,10 @@ class Partition {
     pool.end = pool.next + static_cast<TriangleId>(grown);
     for (const VertexId p : list) {
       progress_(done_++);
-      const TriangleId t = mesh_.walk(last_, p);
-      if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
+      if (const VertexId hit = mesh_.insert(p, last_, w.scratch, pool); hit != kNoVertex)
         w.duplicates.push_back({p, hit});
-        last_ = t;
-        continue;
-      }
-      mesh_.find_cavity(t, p, w.scratch, any);
-      last_ = mesh_.fill_cavity(p, w.scratch, pool);
-      ++w.points;
+      else
+        ++w.points;
     }
     // The pool takes its listed slots from the back: those it left, at the front of its part
     // of the list, stay free, and its range is given back.

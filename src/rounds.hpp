@@ -107,30 +107,14 @@ class RoundLocator {
   explicit RoundLocator(const Kernel& kernel, unsigned threads = 1) : kernel_(kernel) {
     const VertexId n = kernel.n();
     // Round r holds the vertices [first(r), first(r + 1)), consecutive numbers: each round is
-    // sorted on its own, and the rounds are shared among the threads, the largest first, each
-    // to the thread with the least work so far (with two threads: the last round, half of all
-    // points, against all the others).
+    // sorted on its own (sort_rounds, order.hpp).
     for (VertexId b = 0; b < n; b = round_end(b)) first_.push_back(b);
     first_.push_back(n);
     by_round_.resize(n);
     std::iota(by_round_.begin(), by_round_.end(), VertexId{0});
     if (kernel.brio()) return;
     const std::vector<std::uint32_t> key = hilbert_keys(&kernel.point(0), n, threads);
-    const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
-    std::vector<std::vector<std::size_t>> share(parts);
-    std::vector<std::uint64_t> load(parts, 0);
-    for (std::size_t r = rounds(); r-- > 0;) {
-      const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-      share[least].push_back(r);
-      load[least] += first_[r + 1] - first_[r];
-    }
-    auto sort_rounds = [&](unsigned t) {
-      for (const std::size_t r : share[t])
-        hilbert_sort(&kernel.point(0), key.data(), by_round_.data() + first_[r], first_[r + 1] - first_[r]);
-    };
-    std::vector<std::jthread> pool;
-    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_rounds, t);
-    sort_rounds(0);
+    sort_rounds(&kernel.point(0), key.data(), by_round_.data(), first_, threads);
   }
 
   /// The number of rounds and the vertices [first(r), first(r + 1)) of round r.

@@ -79,14 +79,7 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
   if (!profile) {
     for (VertexId p = 0; p < n; ++p) {
       progress(p);
-      const TriangleId t = mesh.walk(last, p);
-      if (const VertexId hit = mesh.coincident(t, p); hit != kNoVertex) {
-        duplicates.push_back({p, hit});
-        last = t;
-        continue;
-      }
-      mesh.find_cavity(t, p, s, kAnyTriangle);
-      last = mesh.fill_cavity(p, s, pool);
+      if (const VertexId hit = mesh.insert(p, last, s, pool); hit != kNoVertex) duplicates.push_back({p, hit});
     }
   } else {
     // Fig. 8's phases: location is the walk, legalization finding the cavity (the triangles
