@@ -1,0 +1,147 @@
+// Point location in a finished triangulation (ridt/locate.hpp): visibility walks along a
+// Hilbert curve through the queries.
+#include "ridt/locate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <thread>
+
+#include "order.hpp"
+#include "predicates.hpp"
+
+namespace ridt {
+namespace {
+
+constexpr int next3(int i) { return i == 2 ? 0 : i + 1; }
+constexpr int prev3(int i) { return i == 0 ? 2 : i - 1; }
+
+struct Mesh {
+  const Point* points;
+  const VertexId* triangles;
+  const std::int32_t* neighbors;
+  std::size_t size;  // triangles
+
+  const Point& corner(std::size_t t, int i) const { return points[triangles[3 * t + i]]; }
+
+  // Whether the closed triangle t holds q.
+  bool holds(std::size_t t, const Point& q) const {
+    for (int i = 0; i < 3; ++i)
+      if (detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) < 0) return false;
+    return true;
+  }
+
+  // Walks from triangle t towards q, crossing an edge that has q strictly on its far side,
+  // never the one it came in by. In a Delaunay triangulation such a walk cannot cycle
+  // (Edelsbrunner 1990), so it ends at a triangle that holds q, or at a hull edge with q
+  // beyond it: q is then outside the hull, whose edges' lines support it. t is left at the last
+  // triangle reached. The step limit only guards against arrays that are not a Delaunay
+  // triangulation; a scan of every triangle answers then.
+  std::int32_t walk(std::size_t& t, const Point& q) const {
+    int from = 3;
+    for (std::size_t steps = 0; steps <= size; ++steps) {
+      int out = 3;
+      for (int i = 0; i < 3; ++i) {
+        if (i == from) continue;
+        if (detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) < 0) {
+          out = i;
+          break;
+        }
+      }
+      if (out == 3) return static_cast<std::int32_t>(t);
+      const std::int32_t u = neighbors[3 * t + out];
+      if (u < 0) return -1;
+      from = 3;
+      for (int j = 0; j < 3; ++j)
+        if (neighbors[3 * std::size_t(u) + j] == static_cast<std::int32_t>(t)) from = j;
+      t = static_cast<std::size_t>(u);
+    }
+    for (std::size_t s = 0; s < size; ++s)
+      if (holds(s, q)) return static_cast<std::int32_t>(s);
+    return -1;
+  }
+};
+
+bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// Answers queries [begin, end): the finite ones in Hilbert order over their own box.
+void locate_share(const Mesh& mesh, const Point* queries, std::size_t begin, std::size_t end,
+                  std::int32_t* out) {
+  std::vector<Point> local;
+  std::vector<std::uint32_t> where;  // local position -> query index
+  local.reserve(end - begin);
+  where.reserve(end - begin);
+  for (std::size_t i = begin; i < end; ++i) {
+    if (finite(queries[i])) {
+      local.push_back(queries[i]);
+      where.push_back(static_cast<std::uint32_t>(i - begin));
+    } else {
+      out[i] = -1;
+    }
+  }
+  const auto count = static_cast<std::uint32_t>(local.size());
+  const std::vector<std::uint32_t> key = detail::hilbert_keys(local.data(), count);
+  std::vector<std::uint32_t> order(count);
+  for (std::uint32_t i = 0; i < count; ++i) order[i] = i;
+  detail::hilbert_sort(local.data(), key.data(), order.data(), count);
+  std::size_t t = 0;
+  for (const std::uint32_t i : order) out[begin + where[i]] = mesh.walk(t, local[i]);
+}
+
+}  // namespace
+
+void locate(std::span<const Point> points, std::span<const VertexId> triangles,
+            std::span<const std::int32_t> neighbors, std::span<const Point> queries,
+            std::span<std::int32_t> out, unsigned threads) {
+  if (triangles.size() % 3 != 0 || neighbors.size() != triangles.size())
+    throw InputError("locate: triangles and neighbors must both be #T by 3 (sizes " +
+                     std::to_string(triangles.size()) + " and " + std::to_string(neighbors.size()) + ")");
+  if (out.size() != queries.size())
+    throw InputError("locate: " + std::to_string(queries.size()) + " queries but room for " +
+                     std::to_string(out.size()) + " answers");
+  const std::size_t size = triangles.size() / 3;
+  if (size > 0x7fffffffu || queries.size() > 0xffffffffu)
+    throw InputError("locate: more than 2^31 triangles or 2^32 queries");
+  for (const VertexId v : triangles)
+    if (v >= points.size())
+      throw InputError("locate: vertex " + std::to_string(v) + " of a triangle is not one of the " +
+                       std::to_string(points.size()) + " points");
+  for (const std::int32_t u : neighbors)
+    if (u < -1 || u >= static_cast<std::int64_t>(size))
+      throw InputError("locate: neighbour " + std::to_string(u) + " is not one of the " +
+                       std::to_string(size) + " triangles");
+  if (size == 0) {
+    std::fill(out.begin(), out.end(), -1);
+    return;
+  }
+  const Mesh mesh{points.data(), triangles.data(), neighbors.data(), size};
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  // A share of fewer than some 16,000 queries is not worth a thread.
+  const std::size_t n = queries.size();
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n / 16384, 1, threads));
+  std::vector<std::exception_ptr> failed(parts);
+  auto share = [&](unsigned p) {
+    try {
+      locate_share(mesh, queries.data(), n * p / parts, n * (p + 1) / parts, out.data());
+    } catch (...) {
+      failed[p] = std::current_exception();
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned p = 1; p < parts; ++p) pool.emplace_back(share, p);
+    share(0);
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+
+std::vector<std::int32_t> locate(std::span<const Point> points, const Triangulation& triangulation,
+                                 std::span<const Point> queries, unsigned threads) {
+  std::vector<std::int32_t> out(queries.size());
+  locate(points, triangulation.triangles, triangulation.neighbors, queries, out, threads);
+  return out;
+}
+
+}  // namespace ridt
