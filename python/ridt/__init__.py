@@ -1,0 +1,28 @@
+"""ridt: exact 2D Delaunay triangulation by randomized incremental insertion, on threads.
+
+    >>> import numpy as np, ridt
+    >>> tri = ridt.Delaunay(np.random.default_rng(1).random((1000, 2)))   # scipy's interface
+    >>> tri.find_simplex([[0.5, 0.5]])
+    >>> t = ridt.triangulate(points, threads=2)   # the library's arrays, no copies
+
+Every result is exactly the Delaunay triangulation of the distinct points (cocircular ties
+broken by a fixed symbolic perturbation), with its whole convex hull, the same for every method
+and thread count.
+"""
+
+from ._api import check, triangulate
+from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
+from ._delaunay import Delaunay, DegenerateInputWarning
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Delaunay",
+    "DegenerateInputWarning",
+    "InputError",
+    "Triangulation",
+    "cached_memory",
+    "check",
+    "set_memory_cache_limit",
+    "triangulate",
+]

@@ -1,0 +1,181 @@
+"""The plain calls: triangulate, check, locate, and the argument checks they share."""
+
+from __future__ import annotations
+
+import math
+import numbers
+from typing import Any, Callable, Optional, Tuple, Union
+
+import numpy as np
+
+from . import _core
+
+ProgressLike = Union[Callable[[float], Any], Any, None]
+
+METHODS = ("auto", "serial", "pessimistic", "optimistic", "batch", "partition")
+ORDERS = ("brio", "random")
+LOCATES = ("auto", "dag", "walk")
+
+
+def as_points(points: Any, name: str = "points", what: str = "ridt") -> np.ndarray:
+    """`points` as a C-ordered float64 array of shape (n, 2), every coordinate finite.
+
+    Any real dtype, memory order and stride is accepted (and copied when it is not float64 in C
+    order); complex, string or object data raise TypeError, a wrong shape or a NaN or infinite
+    coordinate ValueError.
+    """
+    try:
+        a = np.asarray(points)
+    except ValueError as e:  # ragged nested sequences
+        raise ValueError(f"{name} must be an array of shape (n, 2): {e}") from None
+    if a.dtype.kind == "O":
+        try:
+            a = a.astype(np.float64)
+        except (TypeError, ValueError):
+            raise TypeError(f"{name} must hold real numbers; got objects that are not") from None
+    if a.dtype.kind not in "biuf":
+        raise TypeError(f"{name} must hold real numbers, not {a.dtype}")
+    if a.ndim != 2:
+        raise ValueError(f"{name} must have shape (n, 2); got shape {a.shape}")
+    if a.shape[1] != 2:
+        raise ValueError(
+            f"{what} works in the plane: {name} must have shape (n, 2), got {a.shape[1]} "
+            "coordinates a point")
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    if not np.isfinite(a).all():
+        i = int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])
+        raise ValueError(f"{name}[{i}] = {a[i].tolist()} is not finite: every coordinate must be a finite number")
+    return a
+
+
+def thread_count(threads: Any) -> int:
+    """The library's thread count: 0 (or -1, scipy's `workers` convention) means every core."""
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise TypeError(f"threads must be an integer, not {type(threads).__name__}")
+    threads = int(threads)
+    if threads == -1:
+        return 0
+    if threads < 0 or threads > 4096:
+        raise ValueError(f"threads must be 1 to 4096, or 0 or -1 for every core; got {threads}")
+    return threads
+
+
+def _choice(value: Any, name: str, choices: Tuple[str, ...]) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, one of {', '.join(choices)}")
+    if value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(repr(c) for c in choices)}; got {value!r}")
+    return value
+
+
+def resolve_method(method: str, threads: int, order: str, locate: str) -> str:
+    """'auto': serial on one thread; on more, partition where it can run (BRIO order, no DAG),
+    else optimistic."""
+    if method != "auto":
+        return method
+    if threads == 1:
+        return "serial"
+    if order == "brio" and locate in ("auto", "walk"):
+        return "partition"
+    return "optimistic"
+
+
+def progress_callback(progress: ProgressLike, n: int) -> Optional[Callable[[float], None]]:
+    """A callable taking the share done from `progress`: a callable (given the share, 0 to 1)
+    or a tqdm-like bar (anything with update(); its total, when unset, becomes the number of
+    points, and it is advanced in points)."""
+    if progress is None:
+        return None
+    if hasattr(progress, "update") and callable(progress.update):
+        bar = progress
+        if getattr(bar, "total", None) is None:
+            bar.total = n
+        total = bar.total
+        done = [0]
+
+        def advance(share: float) -> None:
+            target = int(round(share * total))
+            if target > done[0]:
+                bar.update(target - done[0])
+                done[0] = target
+
+        return advance
+    if callable(progress):
+        return progress
+    raise TypeError("progress must be a callable taking the share done (0 to 1) or a bar with update(), like tqdm's")
+
+
+def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: str = "brio",
+                locate: str = "auto", seed: int = 1, progress: ProgressLike = None,
+                canonical: bool = False, bounding: str = "symbolic", k: float = 10.0) -> _core.Triangulation:
+    """The Delaunay triangulation of `points`, an (n, 2) array.
+
+    Returns a :class:`Triangulation` whose arrays (``triangles``, ``neighbors``, ``hull``,
+    ``duplicates``) are the library's own buffers, shared with numpy, not copies.
+
+    The triangles are exactly the Delaunay triangulation of the distinct points (ties among
+    cocircular points broken by a fixed symbolic perturbation), the same for every method,
+    thread count, order and seed; every distinct point is a vertex and the boundary is the
+    whole convex hull. Duplicates are left out and listed.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+        Any real dtype and memory layout; every coordinate finite.
+    method : {'auto', 'serial', 'partition', 'pessimistic', 'optimistic', 'batch'}
+        'auto' is 'serial' on one thread and 'partition' (threads own regions of the plane,
+        no lock) on more.
+    threads : int
+        Threads of a threaded method; 0 or -1 for every core.
+    order : {'brio', 'random'}
+        Insertion order: random rounds each along a Hilbert curve, or purely random (the paper's).
+    locate : {'auto', 'dag', 'walk'}
+        How an insertion finds its triangle: walking from the last one, or the history DAG.
+    seed : int
+        Seed of the random insertion order (the result does not depend on it).
+    progress : callable or tqdm-like, optional
+        Called with the share of points inserted (0 to 1); a bar with ``update()`` is advanced
+        in points. An exception it raises abandons the run and is raised here.
+    canonical : bool
+        Rotate each triangle to start at its smallest vertex and sort the triangles, so the
+        arrays are byte-identical for every method and seed.
+    bounding, k
+        'symbolic' (default) bounding vertices at infinity, or the paper's 'finite' triangle
+        of size k times the points' box.
+
+    The GIL is released while the library works, and Ctrl-C stops a long run with
+    KeyboardInterrupt.
+    """
+    pts = as_points(points)
+    method = _choice(method, "method", METHODS)
+    order = _choice(order, "order", ORDERS)
+    locate = _choice(locate, "locate", LOCATES)
+    _choice(bounding, "bounding", ("symbolic", "finite"))
+    nthreads = thread_count(threads)
+    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or not 0 <= int(seed) < 2**64:
+        raise ValueError(f"seed must be an integer from 0 to 2**64 - 1; got {seed!r}")
+    if not (isinstance(k, numbers.Real) and math.isfinite(k) and k >= 2):
+        raise ValueError(f"k must be a finite number of at least 2; got {k!r}")
+    if pts.shape[0] >= 2**31:
+        raise ValueError(f"ridt takes fewer than 2**31 points; got {pts.shape[0]}")
+    return _core.triangulate(pts, resolve_method(method, nthreads, order, locate), nthreads, order, locate,
+                             int(seed), bounding, float(k), bool(canonical),
+                             progress_callback(progress, pts.shape[0]))
+
+
+def check(points: Any, triangles: Any) -> Tuple[bool, str]:
+    """Checks exactly that `triangles` ((ntriangles, 3) vertex indices into `points`) is a
+    Delaunay triangulation of the distinct points: counter-clockwise, not degenerate, every
+    interior edge locally Delaunay, the boundary the whole convex hull, every distinct point a
+    vertex. Returns (valid, message): the message says what was checked or the first problem.
+    """
+    pts = as_points(points)
+    t = np.asarray(triangles)
+    if t.dtype.kind not in "iu":
+        raise TypeError(f"triangles must hold integers, not {t.dtype}")
+    if t.ndim != 2 or t.shape[1] != 3:
+        raise ValueError(f"triangles must have shape (ntriangles, 3); got shape {t.shape}")
+    if t.size and (t.min() < 0 or t.max() >= pts.shape[0]):
+        return False, f"a vertex index is not one of the {pts.shape[0]} points"
+    valid, message, _ = _core.check(pts, np.ascontiguousarray(t, dtype=np.uint32))
+    return bool(valid), message

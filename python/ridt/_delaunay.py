@@ -1,0 +1,288 @@
+"""ridt.Delaunay: scipy.spatial.Delaunay's attributes and methods, on ridt's triangulation."""
+
+from __future__ import annotations
+
+import warnings
+from functools import cached_property
+from typing import Any, Optional, Tuple
+
+import numpy as np
+
+from . import _api, _core
+
+# Qhull options that only make Qhull more robust or change what it reports about facets; ridt
+# is exact and reports the same things whatever they say, so they are accepted and ignored.
+_HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "QJ", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
+
+
+class DegenerateInputWarning(UserWarning):
+    """The points have no triangulation (fewer than three distinct, or all collinear)."""
+
+
+def _check_qhull_options(options: Optional[str]) -> None:
+    if options is None:
+        return
+    if isinstance(options, bytes):
+        options = options.decode()
+    if not isinstance(options, str):
+        raise TypeError("qhull_options must be a string or None")
+    for token in options.split():
+        if token not in _HARMLESS_QHULL_OPTIONS and not token.startswith("QJ"):
+            raise ValueError(
+                f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
+                f"no tuning options (accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})")
+
+
+class Delaunay:
+    """Delaunay triangulation in the plane, with scipy.spatial.Delaunay's interface.
+
+    ``from ridt import Delaunay`` in place of ``from scipy.spatial import Delaunay`` gives the
+    same attributes with the same shapes, dtypes and meaning, computed exactly: ``simplices``
+    is the Delaunay triangulation of the distinct points with its whole convex hull, the same
+    triangles for every method and thread count. Duplicate points are left out and listed in
+    ``coplanar``; points that are all collinear, or fewer than three distinct ones, give an
+    empty triangulation and a :class:`DegenerateInputWarning` (Qhull raises QhullError there).
+
+    Parameters
+    ----------
+    points : array_like, shape (npoints, 2)
+        Coordinates, any real dtype and layout, all finite.
+    furthest_site, incremental : bool
+        Not supported (raise NotImplementedError when true).
+    qhull_options : str, optional
+        Accepted for compatibility when it holds only options that concern Qhull's own
+        robustness (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError.
+    method, threads, order, locate, seed, progress
+        ridt's own, as in :func:`ridt.triangulate`. ``threads`` (0 or -1: every core) also
+        serves ``find_simplex``.
+
+    Attributes
+    ----------
+    points : ndarray of double, shape (npoints, 2)
+    simplices : ndarray of intc, shape (nsimplex, 3)
+        Vertex indices of each triangle, counter-clockwise.
+    neighbors : ndarray of intc, shape (nsimplex, 3)
+        The k-th neighbour lies across from the k-th vertex; -1 on the hull.
+    equations : ndarray of double, shape (nsimplex, 4)
+        [normal, offset] of each triangle's plane on the lifted paraboloid (see lift_points).
+    paraboloid_scale, paraboloid_shift : float
+        The lift: z = scale * (x^2 + y^2) + shift, as Qhull's option Qbb sets it.
+    transform : ndarray of double, shape (nsimplex, 3, 2)
+        Affine maps to barycentric coordinates: c = T[:2] @ (x - T[2]).
+    vertex_to_simplex : ndarray of intc, shape (npoints,)
+        A triangle of each vertex; -1 for the duplicates left out.
+    convex_hull : ndarray of intc, shape (nhull, 2)
+        The hull's edges, counter-clockwise, collinear hull points included.
+    coplanar : ndarray of intc, shape (nduplicates, 3)
+        Points left out as duplicates: (point, a triangle of the equal point kept, that point).
+    vertex_neighbor_vertices : tuple of two ndarrays of intc, (indptr, indices)
+        The neighbours of vertex k are indices[indptr[k]:indptr[k+1]].
+    npoints, nsimplex, ndim, min_bound, max_bound, furthest_site, good
+    stats : dict
+        ridt's counters and timings of the run.
+    """
+
+    def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
+                 qhull_options: Optional[str] = None, *, method: str = "auto", threads: int = 1,
+                 order: str = "brio", locate: str = "auto", seed: int = 1, progress: _api.ProgressLike = None):
+        if furthest_site:
+            raise NotImplementedError(
+                "furthest_site=True: ridt computes the nearest-site Delaunay triangulation only")
+        if incremental:
+            raise NotImplementedError(
+                "incremental=True: ridt triangulates a whole point set in one call; to add points, "
+                "triangulate them all again (fast: some 0.6 s for a million points)")
+        _check_qhull_options(qhull_options)
+        self._points = _api.as_points(points, "points", "ridt.Delaunay")
+        self._threads = _api.thread_count(threads)
+        self._tri = _api.triangulate(self._points, method=method, threads=threads, order=order, locate=locate,
+                                     seed=seed, progress=progress)
+        if self._tri.warning:
+            warnings.warn(f"ridt: {self._tri.warning}: the triangulation is empty", DegenerateInputWarning,
+                          stacklevel=2)
+        self.furthest_site = False
+        self.good = None
+
+    # --- what the library returned, as scipy's dtypes (views, no copies) ---
+    @property
+    def points(self) -> np.ndarray:
+        return self._points
+
+    @property
+    def simplices(self) -> np.ndarray:
+        return self._tri.triangles.view(np.intc)
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """The same as simplices (scipy's older name)."""
+        return self.simplices
+
+    @property
+    def neighbors(self) -> np.ndarray:
+        return self._tri.neighbors.view(np.intc)
+
+    @property
+    def npoints(self) -> int:
+        return int(self._points.shape[0])
+
+    @property
+    def nsimplex(self) -> int:
+        return len(self._tri)
+
+    @property
+    def ndim(self) -> int:
+        return 2
+
+    @property
+    def stats(self) -> dict:
+        return self._tri.stats
+
+    @property
+    def triangulation(self) -> _core.Triangulation:
+        """ridt's own result (triangles, neighbors, hull, duplicates, warning, stats)."""
+        return self._tri
+
+    @cached_property
+    def min_bound(self) -> np.ndarray:
+        return self._points.min(axis=0) if self.npoints else np.full(2, np.nan)
+
+    @cached_property
+    def max_bound(self) -> np.ndarray:
+        return self._points.max(axis=0) if self.npoints else np.full(2, np.nan)
+
+    # --- derived, computed on first use ---
+    @cached_property
+    def convex_hull(self) -> np.ndarray:
+        h = self._tri.hull.view(np.intc)
+        if self.nsimplex == 0:
+            return np.empty((0, 2), dtype=np.intc)
+        return np.stack([h, np.roll(h, -1)], axis=1)
+
+    @cached_property
+    def vertex_to_simplex(self) -> np.ndarray:
+        v2s = np.full(self.npoints, -1, dtype=np.intc)
+        v2s[self.simplices.ravel()] = np.repeat(np.arange(self.nsimplex, dtype=np.intc), 3)
+        return v2s
+
+    @cached_property
+    def coplanar(self) -> np.ndarray:
+        d = self._tri.duplicates.view(np.intc)
+        out = np.empty((d.shape[0], 3), dtype=np.intc)
+        out[:, 0] = d[:, 0]
+        out[:, 1] = self.vertex_to_simplex[d[:, 1]]
+        out[:, 2] = d[:, 1]
+        return out
+
+    @cached_property
+    def vertex_neighbor_vertices(self) -> Tuple[np.ndarray, np.ndarray]:
+        # Each interior edge is a directed edge of both its triangles; a hull edge of one only,
+        # so the hull adds its edges reversed. No edge then comes twice.
+        t = self.simplices
+        hull = self.convex_hull
+        src = np.concatenate([t.ravel(), hull[:, 1]])
+        dst = np.concatenate([t[:, [1, 2, 0]].ravel(), hull[:, 0]])
+        by_src = np.argsort(src, kind="stable")
+        indptr = np.zeros(self.npoints + 1, dtype=np.intc)
+        np.cumsum(np.bincount(src, minlength=self.npoints), out=indptr[1:])
+        return indptr, dst[by_src].astype(np.intc, copy=False)
+
+    @cached_property
+    def _lift(self) -> Tuple[float, float]:
+        if self.npoints == 0:
+            return 1.0, 0.0
+        z = np.einsum("ij,ij->i", self._points, self._points)
+        low, high = float(z.min()), float(z.max())
+        # Qhull's Qbb: the lifted coordinate scaled to [0, m], m the largest coordinate's size,
+        # over [low, 1.1 high] (Qz's point at infinity sits at 1.1 times the highest lift).
+        span = 1.1 * high - low
+        if not span > 0:
+            return 1.0, 0.0
+        scale = float(np.abs(self._points).max()) / span
+        return scale, -low * scale
+
+    @property
+    def paraboloid_scale(self) -> float:
+        return self._lift[0]
+
+    @property
+    def paraboloid_shift(self) -> float:
+        return self._lift[1]
+
+    def lift_points(self, x: Any) -> np.ndarray:
+        """Lift points (..., 2) onto the paraboloid: (..., 3) with z = scale * |x|^2 + shift."""
+        x = np.asarray(x, dtype=np.float64)
+        if x.shape[-1:] != (2,):
+            raise ValueError(f"points must have shape (..., 2); got {x.shape}")
+        z = self.paraboloid_scale * np.einsum("...i,...i->...", x, x) + self.paraboloid_shift
+        return np.concatenate([x, z[..., None]], axis=-1)
+
+    @cached_property
+    def equations(self) -> np.ndarray:
+        p = self.lift_points(self._points)[self.simplices]  # (nsimplex, 3 corners, 3)
+        n = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+        n = -n  # counter-clockwise triangles give an upward normal; the lower hull's points down
+        n /= np.linalg.norm(n, axis=1)[:, None]
+        offset = -np.einsum("ij,ij->i", n, p[:, 0])
+        return np.concatenate([n, offset[:, None]], axis=1)
+
+    def plane_distance(self, xi: Any) -> np.ndarray:
+        """Distance of lifted points (..., 2) to every triangle's plane: (..., nsimplex)."""
+        lifted = self.lift_points(xi)
+        e = self.equations
+        return lifted @ e[:, :3].T + e[:, 3]
+
+    @cached_property
+    def transform(self) -> np.ndarray:
+        p = self._points[self.simplices]  # (nsimplex, 3, 2)
+        r = p[:, 2]
+        a, c = (p[:, 0] - r).T
+        b, d = (p[:, 1] - r).T
+        det = a * d - b * c
+        with np.errstate(divide="ignore", invalid="ignore"):
+            inv = np.stack([np.stack([d, -b], axis=1), np.stack([-c, a], axis=1)], axis=1) / det[:, None, None]
+        out = np.empty((self.nsimplex, 3, 2))
+        out[:, :2, :] = inv
+        out[:, 2, :] = r
+        out[det == 0] = np.nan
+        return out
+
+    def find_simplex(self, xi: Any, bruteforce: bool = False, tol: Optional[float] = None, *,
+                     threads: Optional[int] = None) -> np.ndarray:
+        """The triangle holding each point of `xi` (..., 2), -1 outside the hull: (...,) intc.
+
+        Exact: every decision is an orientation test with exact arithmetic; a point on an edge
+        or at a vertex gets one of the triangles that touch it. `bruteforce` and `tol` are
+        accepted for compatibility and change nothing. The queries are shared among `threads`
+        threads (default: those the triangulation was made with; 0 or -1: every core) with the
+        GIL released.
+        """
+        x = np.asarray(xi)
+        if x.dtype.kind not in "biuf":
+            raise TypeError(f"xi must hold real numbers, not {x.dtype}")
+        if x.shape[-1:] != (2,):
+            raise ValueError(f"xi must have shape (..., 2); got {x.shape}")
+        shape = x.shape[:-1]
+        q = np.ascontiguousarray(x.reshape(-1, 2), dtype=np.float64)
+        nthreads = self._threads if threads is None else _api.thread_count(threads)
+        found = _core.locate(self._points, self._tri.triangles, self._tri.neighbors, q, nthreads)
+        return found.view(np.intc).reshape(shape)
+
+    def add_points(self, points: Any, restart: bool = False) -> None:
+        raise NotImplementedError(
+            "ridt.Delaunay is not incremental: triangulate all the points again with Delaunay(points)")
+
+    def close(self) -> None:
+        """Nothing to release (scipy's incremental mode needs it); kept for compatibility."""
+
+    def to_matplotlib(self):
+        """A matplotlib.tri.Triangulation of the same triangles, with its neighbours filled in
+        (matplotlib's neighbour j lies across the edge from vertex j to vertex j + 1, i.e.
+        across from vertex j + 2: ridt's and scipy's columns, rotated)."""
+        import matplotlib.tri as mtri
+
+        tri = mtri.Triangulation(self._points[:, 0], self._points[:, 1], triangles=self.simplices)
+        tri._neighbors = np.ascontiguousarray(self.neighbors[:, [2, 0, 1]], dtype=np.int32)
+        return tri
+
+    def __repr__(self) -> str:
+        return f"<ridt.Delaunay: {self.npoints} points, {self.nsimplex} triangles>"

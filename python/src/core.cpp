@@ -1,0 +1,195 @@
+// ridt._core: the library's calls for Python. The Python layer (ridt/__init__.py) checks and
+// converts the arguments; this module takes float64 arrays in C order only.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "ridt/check.hpp"
+#include "ridt/locate.hpp"
+#include "ridt/ridt.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using Points = py::array_t<double, py::array::c_style>;
+
+template <class E>
+E parse(const std::map<std::string, E>& names, const std::string& what, const std::string& value) {
+  const auto it = names.find(value);
+  if (it != names.end()) return it->second;
+  std::string known;
+  for (const auto& [name, e] : names) known += (known.empty() ? "" : ", ") + ("'" + name + "'");
+  throw py::value_error(what + " must be one of " + known + ", not '" + value + "'");
+}
+
+std::span<const ridt::Point> as_points(const Points& a, const char* name) {
+  if (a.ndim() != 2 || a.shape(1) != 2)
+    throw py::value_error(std::string(name) + " must have shape (n, 2)");
+  return {reinterpret_cast<const ridt::Point*>(a.data()), static_cast<std::size_t>(a.shape(0))};
+}
+
+// A view of `size` elements of `data`, shaped (rows, cols) or (rows,), kept alive by `owner`.
+template <class T>
+py::array view(const T* data, std::size_t rows, std::size_t cols, py::handle owner) {
+  if (cols == 0) return py::array_t<T>({rows}, {sizeof(T)}, data, owner);
+  return py::array_t<T>({rows, cols}, {cols * sizeof(T), sizeof(T)}, data, owner);
+}
+
+py::dict stats_dict(const ridt::Stats& s) {
+  static const char* locate_names[] = {"auto", "dag", "walk"};
+  py::dict d;
+  d["threads"] = s.threads;
+  d["points"] = s.points;
+  d["distinct"] = s.distinct;
+  d["duplicates"] = s.duplicates;
+  d["locate"] = locate_names[static_cast<int>(s.locate)];
+  d["dag_nodes"] = s.dag_nodes;
+  d["flips"] = s.flips;
+  d["edge_splits"] = s.edge_splits;
+  d["retries"] = s.retries;
+  d["time_triangulate_s"] = s.time_triangulate_s;
+  d["time_insert_s"] = s.time_insert_s;
+  d["time_critical_s"] = s.time_critical_s;
+  d["time_wait_s"] = s.time_wait_s;
+  py::list per_thread;
+  for (const ridt::ThreadStats& t : s.per_thread) {
+    py::dict e;
+    e["role"] = t.role;
+    e["points"] = t.points;
+    e["time_insert_s"] = t.time_insert_s;
+    e["time_critical_s"] = t.time_critical_s;
+    e["time_wait_s"] = t.time_wait_s;
+    e["retries"] = t.retries;
+    per_thread.append(e);
+  }
+  d["per_thread"] = per_thread;
+  return d;
+}
+
+ridt::Triangulation run(const Points& points, const std::string& method, unsigned threads,
+                        const std::string& order, const std::string& locate, std::uint64_t seed,
+                        const std::string& bounding, double k, bool canonical, py::object progress) {
+  ridt::Options o;
+  o.method = parse<ridt::Method>({{"serial", ridt::Method::Serial},
+                                  {"pessimistic", ridt::Method::Pessimistic},
+                                  {"optimistic", ridt::Method::Optimistic},
+                                  {"batch", ridt::Method::Batch},
+                                  {"partition", ridt::Method::Partition}},
+                                 "method", method);
+  o.order = parse<ridt::Order>({{"brio", ridt::Order::Brio}, {"random", ridt::Order::Random}}, "order", order);
+  o.locate = parse<ridt::Locate>({{"auto", ridt::Locate::Auto}, {"dag", ridt::Locate::Dag}, {"walk", ridt::Locate::Walk}},
+                                 "locate", locate);
+  o.bounding = parse<ridt::Bounding>({{"symbolic", ridt::Bounding::Symbolic}, {"finite", ridt::Bounding::Finite}},
+                                     "bounding", bounding);
+  o.threads = threads;
+  o.seed = seed;
+  o.k = k;
+  o.canonical_order = canonical;
+  o.time_threads = false;
+  // Called on this thread every 65,536 points: the place to notice Ctrl-C (the signal handler
+  // only sets a flag while the GIL is released) and to report progress. An exception thrown
+  // here abandons the run and reaches Python once every worker has stopped.
+  o.progress = [&progress](double share) {
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!progress.is_none()) progress(share);
+  };
+  const std::span<const ridt::Point> pts = as_points(points, "points");
+  py::gil_scoped_release nogil;
+  return ridt::triangulate(pts, o);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "ridt's C++ library (use the ridt package, which checks and converts arguments)";
+  py::register_exception<ridt::InputError>(m, "InputError", PyExc_ValueError);
+
+  py::class_<ridt::Triangulation>(m, "Triangulation", R"doc(
+The Delaunay triangulation of a point set, as computed by ridt.triangulate().
+
+Its arrays are views of the library's own buffers, not copies; each keeps the
+Triangulation alive.
+)doc")
+      .def_property_readonly(
+          "triangles",
+          [](py::object self) {
+            const auto& t = self.cast<const ridt::Triangulation&>();
+            return view(t.triangles.data(), t.size(), 3, self);
+          },
+          "(ntriangles, 3) uint32: vertex indices into the points, counter-clockwise")
+      .def_property_readonly(
+          "neighbors",
+          [](py::object self) {
+            const auto& t = self.cast<const ridt::Triangulation&>();
+            return view(t.neighbors.data(), t.size(), 3, self);
+          },
+          "(ntriangles, 3) int32: neighbors[k, i] is the triangle across from vertex i, -1 on the hull")
+      .def_property_readonly(
+          "hull",
+          [](py::object self) {
+            const auto& t = self.cast<const ridt::Triangulation&>();
+            return view(t.hull.data(), t.hull.size(), 0, self);
+          },
+          "(nhull,) uint32: the convex hull's vertices, counter-clockwise, collinear ones included")
+      .def_property_readonly(
+          "duplicates",
+          [](py::object self) {
+            const auto& t = self.cast<const ridt::Triangulation&>();
+            static_assert(sizeof(ridt::Duplicate) == 2 * sizeof(ridt::VertexId));
+            return view(reinterpret_cast<const ridt::VertexId*>(t.duplicates.data()), t.duplicates.size(), 2, self);
+          },
+          "(nduplicates, 2) uint32: rows (dropped, kept): a point left out and the equal point kept")
+      .def_property_readonly("warning", [](const ridt::Triangulation& t) { return t.warning; },
+                             "why the triangulation is empty ('' when it is not)")
+      .def_property_readonly("stats", [](const ridt::Triangulation& t) { return stats_dict(t.stats); },
+                             "counters and timings of the run")
+      .def("__len__", &ridt::Triangulation::size);
+
+  m.def("triangulate", &run, py::arg("points"), py::arg("method"), py::arg("threads"), py::arg("order"),
+        py::arg("locate"), py::arg("seed"), py::arg("bounding"), py::arg("k"), py::arg("canonical"),
+        py::arg("progress"));
+
+  m.def(
+      "locate",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
+         const py::array_t<std::int32_t, py::array::c_style>& neighbors, const Points& queries, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        const auto q = as_points(queries, "queries");
+        py::array_t<std::int32_t> out(static_cast<py::ssize_t>(q.size()));
+        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
+        const std::span<const std::int32_t> nb(neighbors.data(), static_cast<std::size_t>(neighbors.size()));
+        const std::span<std::int32_t> o(out.mutable_data(), q.size());
+        {
+          py::gil_scoped_release nogil;
+          ridt::locate(pts, t, nb, q, o, threads);
+        }
+        return out;
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("neighbors"), py::arg("queries"), py::arg("threads"));
+
+  m.def(
+      "check",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
+        const auto pts = as_points(points, "points");
+        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
+        ridt::CheckResult r;
+        {
+          py::gil_scoped_release nogil;
+          r = ridt::check(pts, t);
+        }
+        return py::make_tuple(r.valid, r.message, r.problems);
+      },
+      py::arg("points"), py::arg("triangles"));
+
+  m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
+  m.def("cached_memory", &ridt::cached_memory);
+}

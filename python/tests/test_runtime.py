@@ -1,0 +1,102 @@
+"""Threads from Python, progress, Ctrl-C."""
+
+import io
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import threading
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+import pytest
+
+import ridt
+from conftest import triangle_set
+
+
+def test_concurrent_calls_from_a_thread_pool():
+    # Calls run at the same time (the GIL is released) and each gets its own exact answer.
+    sets = [np.random.default_rng(s).random((20000, 2)) for s in range(8)]
+    want = [triangle_set(ridt.Delaunay(p).simplices) for p in sets]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        got = list(pool.map(lambda p: ridt.Delaunay(p, threads=2), sets))
+        found = list(pool.map(lambda d: d.find_simplex(d.points), got))
+    for w, g, f in zip(want, got, found):
+        assert triangle_set(g.simplices) == w
+        assert (f >= 0).all()
+
+
+def test_gil_is_released_while_triangulating():
+    # A Python thread keeps counting while the main thread is inside the library.
+    pts = np.random.default_rng(1).random((1_500_000, 2))
+    ticks = 0
+    done = threading.Event()
+
+    def count():
+        nonlocal ticks
+        while not done.is_set():
+            ticks += 1
+
+    t = threading.Thread(target=count)
+    t.start()
+    try:
+        before = ticks
+        ridt.triangulate(pts)
+        during = ticks - before
+    finally:
+        done.set()
+        t.join()
+    assert during > 1000
+
+
+def test_progress_callable_and_bar():
+    pts = np.random.default_rng(2).random((300_000, 2))
+    shares = []
+    ridt.Delaunay(pts, progress=shares.append)
+    assert shares and shares == sorted(shares) and shares[-1] == 1.0 and len(shares) >= 4
+
+    from tqdm import tqdm
+    with tqdm(file=io.StringIO()) as bar:
+        ridt.Delaunay(pts, threads=2, progress=bar)
+        assert bar.total == len(pts) and bar.n == len(pts)
+
+
+def test_an_exception_in_progress_abandons_the_run():
+    pts = np.random.default_rng(3).random((300_000, 2))
+
+    class Stop(Exception):
+        pass
+
+    def stop(share):
+        if share > 0.3:
+            raise Stop("enough")
+
+    for method, threads in [("serial", 1), ("partition", 2), ("optimistic", 2)]:
+        with pytest.raises(Stop, match="enough"):
+            ridt.triangulate(pts, method=method, threads=threads, progress=stop)
+    # And the library works as before afterwards.
+    assert ridt.check(pts, ridt.triangulate(pts).triangles)[0]
+
+
+def test_ctrl_c_stops_a_long_run():
+    # A child process triangulates a large set; SIGINT must end it with KeyboardInterrupt well
+    # before the run would have finished.
+    code = textwrap.dedent("""
+        import sys, time, numpy as np, ridt
+        pts = np.random.default_rng(0).random((6_000_000, 2))
+        print("ready", flush=True)
+        start = time.monotonic()
+        try:
+            ridt.triangulate(pts, method="serial")
+            print("finished", flush=True)
+        except KeyboardInterrupt:
+            print(f"interrupted {time.monotonic() - start:.3f}", flush=True)
+    """)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True, env=env)
+    assert child.stdout.readline().strip() == "ready"
+    threading.Timer(0.5, child.send_signal, args=(signal.SIGINT,)).start()
+    out, _ = child.communicate(timeout=120)
+    assert out.startswith("interrupted"), out
