@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # Installs what building and testing ridt needs from Debian 12, if it is missing.
-# Usage: scripts/deps.sh [build|test|bench|fuzz]
+# Usage: scripts/deps.sh [build|test|bench|fuzz|python]
 #   bench: also Qhull and node, and delaunator from npm into build/peers/node_modules (for
 #   build/ridt_bench_peers --node-modules build/peers/node_modules).
 set -euo pipefail
 packages=(g++ cmake ninja-build libcli11-dev)
 if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
+  # The Python package and its tests (Debian's interpreter, /usr/bin/python3).
+  packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel pybind11-dev python3-pybind11
+             python3-numpy python3-scipy python3-pytest python3-hypothesis python3-tqdm)
 fi
 if [ "${1:-build}" = test ] || [ "${1:-build}" = fuzz ]; then
   packages+=(clang libclang-rt-14-dev)  # libFuzzer
+fi
+if [ "${1:-build}" = python ]; then
+  packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel pybind11-dev python3-pybind11 python3-numpy)
 fi
 if [ "${1:-build}" = bench ]; then
   packages+=(libqhull-dev)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
 # and UndefinedBehaviorSanitizer (the adversarial sets at a tenth of their size there), the
-# threaded tests under ThreadSanitizer, a consumer project that uses find_package(ridt), 10^7
+# threaded tests under ThreadSanitizer, the Python package (pip, wheel, pytest), a consumer project that uses find_package(ridt), 10^7
 # points through the serial and every threaded method (scripts/large.sh), and the libFuzzer
 # targets built. Both suites replay the fuzz corpora with a fixed number of seeded mutations
 # (fuzz/replay.cpp), so every run of a commit tests the same inputs; the open-ended search for
@@ -15,9 +15,20 @@ echo "== Release build and tests"
 # Every option said, not left to the cache: scripts/demo.sh configures the same build/ with
 # the tests off. An empty test run is an error, never a pass.
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=ON \
-  -DRIDT_BUILD_BENCH=ON -DRIDT_BUILD_TOOLS=ON -DRIDT_SANITIZE= >/dev/null
+  -DRIDT_BUILD_BENCH=ON -DRIDT_BUILD_TOOLS=ON -DRIDT_BUILD_PYTHON=ON -DPython_EXECUTABLE=/usr/bin/python3 \
+  -DRIDT_SANITIZE= >/dev/null
 cmake --build build -j "$jobs"
 ctest --test-dir build -j "$jobs" --output-on-failure --no-tests=error
+
+echo "== Python: pip install and pip wheel into a virtual environment, then the tests on what pip installed"
+# (ctest above ran the same tests on the package in the build tree.)
+rm -rf build/venv build/wheels
+/usr/bin/python3 -m venv --system-site-packages build/venv
+build/venv/bin/pip install -q --no-build-isolation --no-deps --no-index .
+build/venv/bin/pip wheel -q --no-build-isolation --no-deps --no-index -w build/wheels .
+ls build/wheels/ridt-*.whl
+(cd python/tests && ../../build/venv/bin/python -c "import ridt, sys; assert 'venv' in ridt.__file__, ridt.__file__" &&
+  ../../build/venv/bin/python -m pytest -q -p no:cacheprovider .)
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=address,undefined \
