@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Prints the README's tables from the CSV of ridt_bench_threads: the speedup over serial for
+"""Prints docs/threads.md's tables from the CSV of ridt_bench_threads: the speedup over serial for
 every method and thread count, and the paper's Table 2 and 3 columns for one n.
 
     /usr/bin/python3 bench/threads_markdown.py docs/threads.csv [N]
