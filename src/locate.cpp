@@ -8,16 +8,19 @@
 #include <string>
 #include <thread>
 
+#include "cavity.hpp"
 #include "order.hpp"
 #include "predicates.hpp"
 
 namespace ridt {
 namespace {
 
-constexpr int next3(int i) { return i == 2 ? 0 : i + 1; }
-constexpr int prev3(int i) { return i == 0 ? 2 : i - 1; }
+using detail::next3;
+using detail::prev3;
 
-struct Mesh {
+// The result's arrays: triangle t has vertices triangles[3t + i] and, across from vertex i,
+// the neighbour neighbors[3t + i] (-1 on the hull).
+struct Result {
   const Point* points;
   const VertexId* triangles;
   const std::int32_t* neighbors;
@@ -66,7 +69,7 @@ struct Mesh {
 bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 // Answers queries [begin, end): the finite ones in Hilbert order over their own box.
-void locate_share(const Mesh& mesh, const Point* queries, std::size_t begin, std::size_t end,
+void locate_share(const Result& mesh, const Point* queries, std::size_t begin, std::size_t end,
                   std::int32_t* out) {
   std::vector<Point> local;
   std::vector<std::uint32_t> where;  // local position -> query index
@@ -115,7 +118,7 @@ void locate(std::span<const Point> points, std::span<const VertexId> triangles,
     std::fill(out.begin(), out.end(), -1);
     return;
   }
-  const Mesh mesh{points.data(), triangles.data(), neighbors.data(), size};
+  const Result mesh{points.data(), triangles.data(), neighbors.data(), size};
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // A share of fewer than some 16,000 queries is not worth a thread.
   const std::size_t n = queries.size();

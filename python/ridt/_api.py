@@ -146,7 +146,14 @@ def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: s
     The GIL is released while the library works, and Ctrl-C stops a long run with
     KeyboardInterrupt.
     """
-    pts = as_points(points)
+    return run(as_points(points), method=method, threads=threads, order=order, locate=locate, seed=seed,
+               progress=progress, canonical=canonical, bounding=bounding, k=k)
+
+
+def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str = "brio", locate: str = "auto",
+        seed: int = 1, progress: ProgressLike = None, canonical: bool = False, bounding: str = "symbolic",
+        k: float = 10.0) -> _core.Triangulation:
+    """triangulate() on points that as_points() has already checked and converted."""
     method = _choice(method, "method", METHODS)
     order = _choice(order, "order", ORDERS)
     locate = _choice(locate, "locate", LOCATES)

@@ -95,8 +95,8 @@ class Delaunay:
         _check_qhull_options(qhull_options)
         self._points = _api.as_points(points, "points", "ridt.Delaunay")
         self._threads = _api.thread_count(threads)
-        self._tri = _api.triangulate(self._points, method=method, threads=threads, order=order, locate=locate,
-                                     seed=seed, progress=progress)
+        self._tri = _api.run(self._points, method=method, threads=self._threads, order=order, locate=locate,
+                             seed=seed, progress=progress)
         if self._tri.warning:
             warnings.warn(f"ridt: {self._tri.warning}: the triangulation is empty", DegenerateInputWarning,
                           stacklevel=2)

@@ -36,11 +36,16 @@ std::span<const ridt::Point> as_points(const Points& a, const char* name) {
   return {reinterpret_cast<const ridt::Point*>(a.data()), static_cast<std::size_t>(a.shape(0))};
 }
 
-// A view of `size` elements of `data`, shaped (rows, cols) or (rows,), kept alive by `owner`.
-template <class T>
-py::array view(const T* data, std::size_t rows, std::size_t cols, py::handle owner) {
-  if (cols == 0) return py::array_t<T>({rows}, {sizeof(T)}, data, owner);
-  return py::array_t<T>({rows, cols}, {cols * sizeof(T), sizeof(T)}, data, owner);
+// A read-only property of Triangulation: the buffer `get` returns, viewed as rows of `cols`
+// (one column: a flat array), kept alive by the Triangulation. No copy.
+template <class T, class Get>
+auto buffer(Get get, std::size_t cols) {
+  return [get, cols](py::object self) -> py::array {
+    const std::span<const T> data = get(self.cast<const ridt::Triangulation&>());
+    const std::size_t rows = data.size() / cols;
+    if (cols == 1) return py::array_t<T>({rows}, {sizeof(T)}, data.data(), self);
+    return py::array_t<T>({rows, cols}, {cols * sizeof(T), sizeof(T)}, data.data(), self);
+  };
 }
 
 py::dict stats_dict(const ridt::Stats& s) {
@@ -119,35 +124,21 @@ The Delaunay triangulation of a point set, as computed by ridt.triangulate().
 Its arrays are views of the library's own buffers, not copies; each keeps the
 Triangulation alive.
 )doc")
-      .def_property_readonly(
-          "triangles",
-          [](py::object self) {
-            const auto& t = self.cast<const ridt::Triangulation&>();
-            return view(t.triangles.data(), t.size(), 3, self);
-          },
-          "(ntriangles, 3) uint32: vertex indices into the points, counter-clockwise")
-      .def_property_readonly(
-          "neighbors",
-          [](py::object self) {
-            const auto& t = self.cast<const ridt::Triangulation&>();
-            return view(t.neighbors.data(), t.size(), 3, self);
-          },
-          "(ntriangles, 3) int32: neighbors[k, i] is the triangle across from vertex i, -1 on the hull")
-      .def_property_readonly(
-          "hull",
-          [](py::object self) {
-            const auto& t = self.cast<const ridt::Triangulation&>();
-            return view(t.hull.data(), t.hull.size(), 0, self);
-          },
-          "(nhull,) uint32: the convex hull's vertices, counter-clockwise, collinear ones included")
-      .def_property_readonly(
-          "duplicates",
-          [](py::object self) {
-            const auto& t = self.cast<const ridt::Triangulation&>();
-            static_assert(sizeof(ridt::Duplicate) == 2 * sizeof(ridt::VertexId));
-            return view(reinterpret_cast<const ridt::VertexId*>(t.duplicates.data()), t.duplicates.size(), 2, self);
-          },
-          "(nduplicates, 2) uint32: rows (dropped, kept): a point left out and the equal point kept")
+      .def_property_readonly("triangles", buffer<ridt::VertexId>([](const ridt::Triangulation& t) { return std::span(t.triangles); }, 3),
+                             "(ntriangles, 3) uint32: vertex indices into the points, counter-clockwise")
+      .def_property_readonly("neighbors", buffer<std::int32_t>([](const ridt::Triangulation& t) { return std::span(t.neighbors); }, 3),
+                             "(ntriangles, 3) int32: neighbors[k, i] is the triangle across from vertex i, -1 on the hull")
+      .def_property_readonly("hull", buffer<ridt::VertexId>([](const ridt::Triangulation& t) { return std::span(t.hull); }, 1),
+                             "(nhull,) uint32: the convex hull's vertices, counter-clockwise, collinear ones included")
+      .def_property_readonly("duplicates",
+                             buffer<ridt::VertexId>(
+                                 [](const ridt::Triangulation& t) {
+                                   static_assert(sizeof(ridt::Duplicate) == 2 * sizeof(ridt::VertexId));
+                                   return std::span(reinterpret_cast<const ridt::VertexId*>(t.duplicates.data()),
+                                                    2 * t.duplicates.size());
+                                 },
+                                 2),
+                             "(nduplicates, 2) uint32: rows (dropped, kept): a point left out and the equal point kept")
       .def_property_readonly("warning", [](const ridt::Triangulation& t) { return t.warning; },
                              "why the triangulation is empty ('' when it is not)")
       .def_property_readonly("stats", [](const ridt::Triangulation& t) { return stats_dict(t.stats); },
