@@ -32,8 +32,13 @@ inline constexpr TriangleId kNoTriangle = 0xffffffffu;
 /// Links 3u + j must fit in a Link: 2n + 1 slots of 3 edges.
 inline constexpr std::uint64_t kMaxWalkingPoints = (std::uint64_t{std::numeric_limits<Link>::max()} - 8) / 6;
 
-constexpr int next3(int i) { return i == 2 ? 0 : i + 1; }
-constexpr int prev3(int i) { return i == 0 ? 2 : i - 1; }
+// Without branches: a branch on the edge index is taken at random, and mispredicted often.
+constexpr int next3(int i) { return (1 << i) & 3; }       // 0 -> 1, 1 -> 2, 2 -> 0
+constexpr int prev3(int i) { return (0x12 >> (2 * i)) & 3; }  // 0 -> 2, 1 -> 0, 2 -> 1
+/// The triangle and the edge a link names (unsigned: cheaper to divide; never kNoLink).
+constexpr TriangleId triangle_of(Link l) { return static_cast<std::uint32_t>(l) / 3; }
+constexpr int edge_of(Link l) { return static_cast<int>(static_cast<std::uint32_t>(l) % 3); }
+static_assert(next3(0) == 1 && next3(1) == 2 && next3(2) == 0 && prev3(0) == 2 && prev3(1) == 0 && prev3(2) == 1);
 
 /// Where an insertion finds its new slots: a list of free slots first, then a range.
 struct SlotPool {
@@ -47,17 +52,28 @@ struct SlotPool {
 };
 
 /// What one inserting thread keeps to itself: the cavity's triangles and boundary, the
-/// traversal's stack, counters.
+/// traversal's stack, counters. The arrays are used through raw pointers with room checked
+/// once a cavity triangle (a cavity of m triangles has m + 2 boundary edges, at most m + 2 of
+/// them pending on the stack, and m + 2 slots for its fan).
 struct alignas(64) CavityScratch {
   struct Boundary {
     VertexId a, b;  // the edge a -> b, counter-clockwise round the cavity
     Link outside;   // the edge's place in the triangle outside, or kNoLink
   };
-  std::vector<TriangleId> cavity;
+  std::vector<TriangleId> cavity;  // the cavity's slots, then the two new ones
   std::vector<Boundary> boundary;
   std::vector<Link> stack;
-  std::vector<TriangleId> slots;
+  std::size_t size = 0;    // triangles in the cavity
+  std::size_t edges = 0;   // boundary edges found
   std::uint64_t replaced = 0;  // triangles replaced beyond the first, over all insertions
+
+  CavityScratch() { make_room(64); }
+  /// Room for a cavity of m triangles.
+  void make_room(std::size_t m) {
+    if (m + 2 <= cavity.size()) return;
+    const std::size_t room = std::max<std::size_t>(2 * m, 64);
+    cavity.resize(room + 2), boundary.resize(room + 2), stack.resize(room + 2);
+  }
 };
 
 class Mesh {
@@ -65,6 +81,8 @@ class Mesh {
   /// The mesh of the bounding triangle alone, with room for n points; its memory made ready
   /// by up to `threads` threads.
   explicit Mesh(const Vertices& vertices, unsigned threads = 1);
+  Mesh(const Mesh&) = delete;
+  Mesh& operator=(const Mesh&) = delete;
 
   const Vertices& vertices() const { return vertices_; }
   /// Slots in use (each a triangle, or free: see free_slot).
@@ -87,15 +105,17 @@ class Mesh {
   /// last triangle it reached.
   template <class Owned>
   bool walk(TriangleId& t, VertexId p, Owned&& owned) const {
-    int from = 3;  // the edge of t we came in by, none at first
+    const Point q = vertices_[p];
+    // At first all three edges; then the two that the edge we came in by is not, in turn.
+    int first = 0, count = 3;
     for (;;) {
-      const std::size_t base = 3 * std::size_t{t};
+      const VertexId* tv = v_ + 3 * std::size_t{t};
+      const Link* tl = link_ + 3 * std::size_t{t};
       int out = 3;
       bool blocked = false;
-      for (int i = 0; i < 3; ++i) {
-        if (i == from) continue;
-        if (vertices_.orient(v_[base + next3(i)], v_[base + prev3(i)], p) < 0) {
-          if (owned(static_cast<TriangleId>(link_[base + i] / 3))) {
+      for (int k = 0, i = first; k < count; ++k, i = next3(i)) {
+        if (vertices_.orient(tv[next3(i)], tv[prev3(i)], p, q) < 0) {
+          if (owned(triangle_of(tl[i]))) {
             out = i;
             break;
           }
@@ -103,9 +123,9 @@ class Mesh {
         }
       }
       if (out == 3) return !blocked;
-      const Link l = link_[base + out];
-      t = static_cast<TriangleId>(l / 3);
-      from = l % 3;
+      const Link l = tl[out];
+      t = triangle_of(l);
+      first = next3(edge_of(l)), count = 2;
     }
   }
 
@@ -125,60 +145,70 @@ class Mesh {
   /// take a triangle that `owned` refuses. Reads only.
   template <class Owned>
   bool find_cavity(TriangleId t, VertexId p, CavityScratch& s, Owned&& owned) const {
-    s.cavity.assign(1, t);
-    s.boundary.clear();
-    s.stack.clear();
+    const Point q = vertices_[p];
+    TriangleId* cavity = s.cavity.data();
+    CavityScratch::Boundary* boundary = s.boundary.data();
+    Link* stack = s.stack.data();
+    std::size_t size = 1, edges = 0, top = 0;
+    cavity[0] = t;
     // Edges to look across, last first: round the cavity counter-clockwise, so that its
     // boundary comes out in order.
     const Link base = static_cast<Link>(3 * t);
-    s.stack.push_back(base + 2);
-    s.stack.push_back(base + 1);
-    s.stack.push_back(base);
-    while (!s.stack.empty()) {
-      const Link e = s.stack.back();
-      s.stack.pop_back();
+    stack[top++] = base + 2;
+    stack[top++] = base + 1;
+    stack[top++] = base;
+    while (top > 0) {
+      const Link e = stack[--top];
       const Link l = link_[e];
       if (l != kNoLink) {
-        const auto u = static_cast<TriangleId>(l / 3);
-        const std::size_t ub = 3 * std::size_t{u};
-        if (vertices_.incircle(v_[ub], v_[ub + 1], v_[ub + 2], p) > 0) {
+        const TriangleId u = triangle_of(l);
+        const VertexId* uv = v_ + 3 * std::size_t{u};
+        if (vertices_.incircle(uv[0], uv[1], uv[2], p, q) > 0) {
           if (!owned(u)) return false;
-          s.cavity.push_back(u);
+          if (size + 1 + 2 > s.cavity.size()) {  // rare: a large cavity
+            s.make_room(size + 1);
+            cavity = s.cavity.data(), boundary = s.boundary.data(), stack = s.stack.data();
+          }
+          cavity[size++] = u;
           // Entered by its edge j: the other two, counter-clockwise from there.
-          const int j = l % 3;
-          s.stack.push_back(static_cast<Link>(ub) + prev3(j));
-          s.stack.push_back(static_cast<Link>(ub) + next3(j));
+          const int j = edge_of(l);
+          const Link ub = static_cast<Link>(3 * u);
+          stack[top++] = ub + prev3(j);
+          stack[top++] = ub + next3(j);
           continue;
         }
       }
-      const int i = e % 3;
-      const std::size_t tb = static_cast<std::size_t>(e - i);
-      s.boundary.push_back({v_[tb + next3(i)], v_[tb + prev3(i)], l});
+      const int i = edge_of(e);
+      const VertexId* ev = v_ + (e - i);
+      boundary[edges++] = {ev[next3(i)], ev[prev3(i)], l};
     }
+    s.size = size, s.edges = edges;
     return true;
   }
 
   /// Replaces the cavity in s by the fan of p round its boundary: the cavity's slots, then two
-  /// from `pool`. Returns one of the new triangles.
+  /// from `pool`. Returns the new triangle on the cavity's first boundary edge.
   TriangleId fill_cavity(VertexId p, CavityScratch& s, SlotPool& pool) {
-    const std::size_t k = s.boundary.size();  // the cavity's size + 2
-    s.slots.assign(s.cavity.begin(), s.cavity.end());
-    s.slots.push_back(pool.take());
-    s.slots.push_back(pool.take());
-    s.replaced += s.cavity.size() - 1;
+    const std::size_t k = s.edges;  // the cavity's size + 2
+    TriangleId* slots = s.cavity.data();
+    slots[s.size] = pool.take();
+    slots[s.size + 1] = pool.take();
+    s.replaced += s.size - 1;
+    const CavityScratch::Boundary* boundary = s.boundary.data();
     for (std::size_t i = 0; i < k; ++i) {
-      const TriangleId t = s.slots[i];
-      const std::size_t tb = 3 * std::size_t{t};
-      const CavityScratch::Boundary& e = s.boundary[i];
-      v_[tb] = p, v_[tb + 1] = e.a, v_[tb + 2] = e.b;
+      const TriangleId t = slots[i];
+      VertexId* tv = v_ + 3 * std::size_t{t};
+      Link* tl = link_ + 3 * std::size_t{t};
+      const CavityScratch::Boundary& e = boundary[i];
+      tv[0] = p, tv[1] = e.a, tv[2] = e.b;
       // Edge 0 (a -> b) is the boundary edge; edge 1 (b -> p) borders the next triangle of the
       // fan at its edge 2 (p -> b), and edge 2 the previous one at its edge 1.
-      link_[tb] = e.outside;
-      if (e.outside != kNoLink) link_[e.outside] = static_cast<Link>(tb);
-      link_[tb + 1] = static_cast<Link>(3 * s.slots[i + 1 < k ? i + 1 : 0] + 2);
-      link_[tb + 2] = static_cast<Link>(3 * s.slots[i > 0 ? i - 1 : k - 1] + 1);
+      tl[0] = e.outside;
+      if (e.outside != kNoLink) link_[e.outside] = static_cast<Link>(3 * t);
+      tl[1] = static_cast<Link>(3 * slots[i + 1 < k ? i + 1 : 0] + 2);
+      tl[2] = static_cast<Link>(3 * slots[i > 0 ? i - 1 : k - 1] + 1);
     }
-    return s.slots[0];
+    return slots[0];
   }
 
   /// Inserts p with no regions: walks from `last` (left at a triangle by p), returns the
@@ -208,15 +238,19 @@ class Mesh {
   void give_back(SlotPool& pool);
 
   /// The arrays, for the finish, which turns them into the output in place.
-  std::vector<VertexId>& vertex_array() { return v_; }
-  std::vector<Link>& link_array() { return link_; }
+  std::vector<VertexId>& vertex_array() { return vertex_store_; }
+  std::vector<Link>& link_array() { return link_store_; }
 
  private:
   void check_room(TriangleId end) const;
 
   Vertices vertices_;
-  std::vector<VertexId> v_;
-  std::vector<Link> link_;
+  std::vector<VertexId> vertex_store_;
+  std::vector<Link> link_store_;
+  // Their storage, which never moves while the mesh is in use: the hot loops index these, with
+  // nothing to reload after a store.
+  VertexId* v_ = nullptr;
+  Link* link_ = nullptr;
   TriangleId top_ = 0;
 };
 

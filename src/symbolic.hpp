@@ -45,6 +45,17 @@ class Vertices {
     return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
   }
 
+  /// The same with c's point already at hand (the walk's and the cavity's point, kept in
+  /// registers across their tests).
+  int orient(VertexId a, VertexId b, VertexId c, const Point& pc) const {
+    if (std::max(a, b) >= first_symbolic_) return orient_symbolic(a, b, c);
+    return orient2d(points_[a], points_[b], pc);
+  }
+  int incircle(VertexId a, VertexId b, VertexId c, VertexId p, const Point& pp) const {
+    if (std::max(a, std::max(b, c)) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
+    return incircle_sos(points_[a], points_[b], points_[c], pp);
+  }
+
   int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
   int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
 

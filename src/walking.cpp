@@ -45,19 +45,21 @@ Mesh::Mesh(const Vertices& vertices, unsigned threads) : vertices_(vertices) {
                                               std::to_string(kMaxWalkingPoints) + ")");
   // 2k + 1 triangles for k points, at every step.
   const std::size_t slots = 2 * n + 1;
-  v_.reserve(3 * slots);
-  link_.reserve(3 * slots);
-  populate(v_, threads);
-  populate(link_, threads);
-  v_.resize(3 * slots);
-  link_.resize(3 * slots);
+  vertex_store_.reserve(3 * slots);
+  link_store_.reserve(3 * slots);
+  populate(vertex_store_, threads);
+  populate(link_store_, threads);
+  vertex_store_.resize(3 * slots);
+  link_store_.resize(3 * slots);
+  v_ = vertex_store_.data();
+  link_ = link_store_.data();
   top_ = 1;
   v_[0] = vertices.n(), v_[1] = vertices.n() + 1, v_[2] = vertices.n() + 2;
   link_[0] = link_[1] = link_[2] = kNoLink;
 }
 
 void Mesh::check_room(TriangleId end) const {
-  if (3 * std::size_t{end} > v_.size()) throw std::logic_error("ridt: the walking mesh ran out of slots");
+  if (3 * std::size_t{end} > vertex_store_.size()) throw std::logic_error("ridt: the walking mesh ran out of slots");
 }
 
 namespace {
