@@ -8,8 +8,10 @@
 //
 //   ridt_bench_threads [--n 1000,10000,100000,1000000] [--dist uniform,grid] [--reps R]
 //                      [--threads 1,2,3,4,8] [--methods pessimistic,paper,optimistic,batch]
-//                      [--order random|brio] [--csv FILE]
+//                      [--order random|brio] [--locate dag|root] [--csv FILE]
 // --order: the insertion order of every run, serial included (random, the paper's, by default).
+// --locate: the location of every run (dag, ridt's rounds, by default; root, the paper's:
+// every descent from the DAG's root, no rounds or look-ahead).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -58,6 +60,7 @@ int main(int argc, char** argv) {
   std::string thread_list = "1,2,3,4,8", method_list = "pessimistic,paper,optimistic,batch", csv;
   int reps = 5;
   ridt::Order order_kind = ridt::Order::Random;
+  ridt::Locate locate_kind = ridt::Locate::Dag;
   for (int i = 1; i < argc; ++i) {
     auto arg = [&](const char* name) { return !std::strcmp(argv[i], name) && i + 1 < argc; };
     if (arg("--n")) n_list = argv[++i];
@@ -68,11 +71,13 @@ int main(int argc, char** argv) {
     else if (arg("--csv")) csv = argv[++i];
     else if (arg("--order") && !std::strcmp(argv[i + 1], "random")) order_kind = ridt::Order::Random, ++i;
     else if (arg("--order") && !std::strcmp(argv[i + 1], "brio")) order_kind = ridt::Order::Brio, ++i;
+    else if (arg("--locate") && !std::strcmp(argv[i + 1], "dag")) locate_kind = ridt::Locate::Dag, ++i;
+    else if (arg("--locate") && !std::strcmp(argv[i + 1], "root")) locate_kind = ridt::Locate::Root, ++i;
     else {
       std::fprintf(stderr,
                    "usage: %s [--n N,N,...] [--dist uniform,grid] [--reps R] [--threads 1,2,...]\n"
                    "          [--methods pessimistic,paper,optimistic,batch] [--order random|brio]\n"
-                   "          [--csv FILE]\n",
+                   "          [--locate dag|root] [--csv FILE]\n",
                    argv[0]);
       return 2;
     }
@@ -119,6 +124,7 @@ int main(int argc, char** argv) {
           ridt::Options o = c == configs.size() ? ridt::Options{} : options_for(configs[c]);
           o.seed = 1 + r;
           o.order = order_kind;
+          o.locate = locate_kind;
           stats[c] = ridt::triangulate(pts, o).stats;
         }
         const ridt::Stats& s0 = stats[configs.size()];

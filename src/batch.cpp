@@ -61,6 +61,8 @@ void wait_until(Ready&& ready, const std::atomic<bool>& stop) {
   }
 }
 
+// `key` empty: each point descends from the root on its own, in the random order (the paper's
+// location, Locate::Root).
 void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& q, Locator& me) {
   const VertexId n = kernel.n();
   std::vector<VertexId> along;
@@ -77,14 +79,19 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
       wait_until(fits, q.stop);
       me.stalled += Clock::now() - t0;
     }
-    along.resize(end - begin);
-    std::iota(along.begin(), along.end(), begin);
-    hilbert_sort(&kernel.point(0), key.data(), along.data(), end - begin);
-    descend_along(kernel, along.data(), end - begin, [&](VertexId v, TriangleId leaf) {
+    auto publish = [&](VertexId v, TriangleId leaf) {
       Slot& slot = q.slots[v % kCapacity];
       slot.node = leaf;
       slot.filled.store(v + 1, std::memory_order_release);  // release: `node` is written first
-    });
+    };
+    if (key.empty()) {
+      for (VertexId v = begin; v < end; ++v) publish(v, kernel.descend(Kernel::kRoot, v));
+    } else {
+      along.resize(end - begin);
+      std::iota(along.begin(), along.end(), begin);
+      hilbert_sort(&kernel.point(0), key.data(), along.data(), end - begin);
+      descend_along(kernel, along.data(), end - begin, publish);
+    }
     q.published.fetch_add(end - begin, std::memory_order_relaxed);
     me.stats.points += end - begin;
   }
@@ -94,16 +101,16 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
 
 }  // namespace
 
-void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
+void insert_batch(Kernel& kernel, unsigned threads, bool from_root, std::vector<DuplicateHit>& duplicates,
                   Stats& stats, Progress& progress) {
   if (threads == 1) {
     const auto t_start = Clock::now();
-    insert_serial(kernel, /*profile=*/false, duplicates, stats, progress);
+    insert_serial(kernel, /*profile=*/false, from_root, duplicates, stats, progress);
     stats.per_thread.push_back({"modifier", kernel.n(), seconds(Clock::now() - t_start), 0, 0, 0});
     return;
   }
   const VertexId n = kernel.n();
-  const std::vector<std::uint32_t> key = hilbert_keys(&kernel.point(0), n);
+  const std::vector<std::uint32_t> key = from_root ? std::vector<std::uint32_t>{} : hilbert_keys(&kernel.point(0), n);
   Queue q;
   std::vector<Locator> locators(threads - 1);
   ThreadStats modifier;

@@ -39,7 +39,9 @@ class Progress {
 };
 
 /// Serial insertion of vertices 0 .. n-1 in that order (the paper's Fig. 4, lines 5-23).
-void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
+/// `from_root`: each point descends the DAG from its root, as the paper's does (Locate::Root);
+/// else location runs in rounds with look-ahead (rounds.hpp, lookahead.hpp).
+void insert_serial(Kernel& kernel, bool profile, bool from_root, std::vector<DuplicateHit>& duplicates,
                    Stats& stats, Progress& progress);
 
 class Mesh;
@@ -58,16 +60,17 @@ Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input
                              const std::vector<DuplicateHit>& duplicates, const Options& options,
                              unsigned threads);
 
-/// The paper's Fig. 10 with `threads` workers (pessimistic.cpp).
-void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
+/// The paper's Fig. 10 with `threads` workers (pessimistic.cpp). `from_root` as for
+/// insert_serial.
+void insert_pessimistic(Kernel& kernel, unsigned threads, bool from_root, bool paper, bool timed,
                         std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
 
 /// The optimistic method with `threads` workers (optimistic.cpp).
-void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
+void insert_optimistic(Kernel& kernel, unsigned threads, bool from_root, bool timed,
                        std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
 
 /// The batch method: threads - 1 locators and one modifier (batch.cpp).
-void insert_batch(Kernel& kernel, unsigned threads, std::vector<DuplicateHit>& duplicates,
+void insert_batch(Kernel& kernel, unsigned threads, bool from_root, std::vector<DuplicateHit>& duplicates,
                   Stats& stats, Progress& progress);
 
 /// The input index that stands for a mesh vertex: its own, or for a group of equal points the

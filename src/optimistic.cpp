@@ -149,20 +149,24 @@ class Inserter {
   const std::uint32_t me_;
 };
 
-// The points [first, end), a chunk of a round; hint[v - first] holds point v.
+// The points [first, end), a chunk of a round; hint[v - first] holds point v, or hint is null
+// and every descent starts at the root with no look-ahead (Locate::Root).
 template <bool kTimed>
 void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId* hint,
                   Worker& worker) {
-  LookAhead ahead(kernel, first, end, /*ring=*/true, hint);
   Inserter inserter(kernel, worker);
-  for (VertexId i = 0; i < ahead.count(); ++i)
-    inserter.insert<kTimed>(ahead.point(i), ahead.take(i).node);
-  worker.stats.points += ahead.count();
+  if (hint == nullptr) {
+    for (VertexId p = first; p < end; ++p) inserter.insert<kTimed>(p, Kernel::kRoot);
+  } else {
+    LookAhead ahead(kernel, first, end, /*ring=*/true, hint);
+    for (VertexId i = 0; i < ahead.count(); ++i) inserter.insert<kTimed>(ahead.point(i), ahead.take(i).node);
+  }
+  worker.stats.points += end - first;
 }
 
 }  // namespace
 
-void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
+void insert_optimistic(Kernel& kernel, unsigned threads, bool from_root, bool timed,
                        std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
   std::vector<Worker> workers;
   workers.reserve(threads);
@@ -174,7 +178,7 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool timed,
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
   const TickRate rate;
-  run_in_rounds(kernel, threads, barrier_wait, progress,
+  run_in_rounds(kernel, threads, from_root, barrier_wait, progress,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   if (timed)
                     insert_chunk<true>(kernel, first, end, hint, workers[w]);

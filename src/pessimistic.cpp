@@ -34,45 +34,55 @@ struct alignas(64) Worker {  // each on its own cache lines
   std::uint64_t critical = 0, waiting = 0;  // ticks (threads.hpp)
 };
 
-// The points [first, end), a chunk of a round; hint[v - first] holds point v.
+// Point p, whose descent may start at node (its parent on the path given, or node itself).
+template <bool kTimed>
+void insert_point(Kernel& kernel, SpinLock& lock, VertexId p, TriangleId node, TriangleId parent, bool paper,
+                  Worker& out) {
+  // Unlocked: down to a leaf; the paper's variant then backs up to the leaf's parent and
+  // leaves the last step of location to the critical section.
+  for (TriangleId next; (next = kernel.step(node, p)) != node;) parent = node, node = next;
+  const TriangleId start = paper ? parent : node;
+  kernel.prefetch_around(node);  // its neighbours arrive while we wait for the lock
+  std::uint64_t t0 = 0, t1 = 0;
+  if constexpr (kTimed) t0 = ticks();
+  {
+    const std::lock_guard<SpinLock> guard(lock);  // the one critical section of Fig. 10
+    if constexpr (kTimed) t1 = ticks();
+    const TriangleId leaf = kernel.descend(start, p);
+    const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
+    if (hit != kNone) out.duplicates.push_back({p, hit});
+    if constexpr (kTimed) out.critical += ticks() - t1;
+  }
+  if constexpr (kTimed) out.waiting += t1 - t0;
+}
+
+// The points [first, end), a chunk of a round; hint[v - first] holds point v, or hint is null
+// and every descent starts at the root with no look-ahead (Locate::Root).
 template <bool kTimed>
 void insert_chunk(Kernel& kernel, SpinLock& lock, VertexId first, VertexId end, bool ring,
                   const TriangleId* hint, bool paper, Worker& out) {
-  LookAhead ahead(kernel, first, end, ring, hint);
-  for (VertexId i = 0; i < ahead.count(); ++i) {
-    const VertexId p = ahead.point(i);
-    const LookAhead::Hint h = ahead.take(i);
-    // Unlocked: down to a leaf; the paper's variant then backs up to the leaf's parent and
-    // leaves the last step of location to the critical section.
-    TriangleId node = h.node, parent = h.parent;
-    for (TriangleId next; (next = kernel.step(node, p)) != node;) parent = node, node = next;
-    const TriangleId start = paper ? parent : node;
-    kernel.prefetch_around(node);  // its neighbours arrive while we wait for the lock
-    std::uint64_t t0 = 0, t1 = 0;
-    if constexpr (kTimed) t0 = ticks();
-    {
-      const std::lock_guard<SpinLock> guard(lock);  // the one critical section of Fig. 10
-      if constexpr (kTimed) t1 = ticks();
-      const TriangleId leaf = kernel.descend(start, p);
-      const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
-      if (hit != kNone) out.duplicates.push_back({p, hit});
-      if constexpr (kTimed) out.critical += ticks() - t1;
+  if (hint == nullptr) {
+    for (VertexId p = first; p < end; ++p) insert_point<kTimed>(kernel, lock, p, Kernel::kRoot, Kernel::kRoot, paper, out);
+  } else {
+    LookAhead ahead(kernel, first, end, ring, hint);
+    for (VertexId i = 0; i < ahead.count(); ++i) {
+      const LookAhead::Hint h = ahead.take(i);
+      insert_point<kTimed>(kernel, lock, ahead.point(i), h.node, h.parent, paper, out);
     }
-    if constexpr (kTimed) out.waiting += t1 - t0;
   }
-  out.stats.points += ahead.count();
+  out.stats.points += end - first;
 }
 
 }  // namespace
 
-void insert_pessimistic(Kernel& kernel, unsigned threads, bool paper, bool timed,
+void insert_pessimistic(Kernel& kernel, unsigned threads, bool from_root, bool paper, bool timed,
                         std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
   SpinLock lock;
   std::vector<Worker> workers(threads);
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
   const TickRate rate;
-  run_in_rounds(kernel, threads, barrier_wait, progress,
+  run_in_rounds(kernel, threads, from_root, barrier_wait, progress,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   // The ring pays on one thread; with several it pulls in lines that the lock
                   // holder may be writing.

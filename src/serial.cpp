@@ -40,11 +40,19 @@ void insert_profiled(Kernel& kernel, Scratch& scratch, std::vector<DuplicateHit>
 
 }  // namespace
 
-void insert_serial(Kernel& kernel, bool profile, std::vector<DuplicateHit>& duplicates,
+void insert_serial(Kernel& kernel, bool profile, bool from_root, std::vector<DuplicateHit>& duplicates,
                    Stats& stats, Progress& progress) {
   Scratch scratch;
   if (profile) {
     insert_profiled(kernel, scratch, duplicates, stats, progress);
+  } else if (from_root) {
+    // The paper's Fig. 4 as it stands: each point descends from the root when its turn comes.
+    for (VertexId p = 0; p < kernel.n(); ++p) {
+      progress(p);
+      const TriangleId leaf = kernel.descend(Kernel::kRoot, p);
+      const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
+      if (hit != kNone) duplicates.push_back({p, hit});
+    }
   } else {
     // Rounds (rounds.hpp): each round's points first descend the DAG along a Hilbert curve
     // and keep the leaf they reach; then they are inserted in the random order, each

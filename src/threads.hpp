@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <exception>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -135,19 +136,25 @@ inline void add_worker(const Scratch& scratch, const std::vector<DuplicateHit>& 
 /// handed out in chunks from a counter, so a worker on a faster (or less shared) core takes
 /// more of it and nobody waits long at the end of a round: insert_chunk(w, begin, end, hint)
 /// inserts the points [begin, end), hint[v - begin] being a leaf that held point v when the
-/// round began. Worker 0 is the calling thread, and reports `progress` after its chunks. `wait[w]` receives the time worker w spent
+/// round began. `from_root`: no rounds and no location phase, one pass over all the points with
+/// hint null (each descent starts at the root, Locate::Root). Worker 0 is the calling thread, and reports `progress` after its chunks. `wait[w]` receives the time worker w spent
 /// waiting for the others. The first exception of any worker is rethrown once all have
 /// stopped; the others stop at the next phase.
 template <class InsertChunk>
-void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::duration>& wait,
+void run_in_rounds(const Kernel& kernel, unsigned threads, bool from_root, std::vector<Clock::duration>& wait,
                    Progress& progress, InsertChunk&& insert_chunk) {
-  const RoundLocator rounds(kernel, threads);
-  std::vector<TriangleId> hint(rounds.largest());
+  // From the root (Locate::Root): one round of all the points, no location phase, and no hint
+  // (insert_chunk gets null).
+  std::optional<RoundLocator> rounds;
+  if (!from_root) rounds.emplace(kernel, threads);
+  const std::size_t round_count = from_root ? 1 : rounds->rounds();
+  auto first_of = [&](std::size_t r) { return from_root ? (r == 0 ? 0 : kernel.n()) : rounds->first(r); };
+  std::vector<TriangleId> hint(from_root ? 0 : rounds->largest());
   // Per round, the next position to locate (along the curve) and to insert (in the order).
-  std::vector<std::atomic<VertexId>> located(rounds.rounds()), inserted(rounds.rounds());
-  for (std::size_t r = 0; r < rounds.rounds(); ++r) {
-    located[r].store(rounds.first(r), std::memory_order_relaxed);
-    inserted[r].store(rounds.first(r), std::memory_order_relaxed);
+  std::vector<std::atomic<VertexId>> located(round_count), inserted(round_count);
+  for (std::size_t r = 0; r < round_count; ++r) {
+    located[r].store(first_of(r), std::memory_order_relaxed);
+    inserted[r].store(first_of(r), std::memory_order_relaxed);
   }
   std::barrier<> sync(static_cast<std::ptrdiff_t>(threads));
   std::atomic<bool> stop{false};
@@ -164,22 +171,24 @@ void run_in_rounds(const Kernel& kernel, unsigned threads, std::vector<Clock::du
       // 0 reports only after its own chunks, and the other workers may take all of the early,
       // small rounds.
       if (w == 0) progress(0);
-      for (std::size_t r = 0; r < rounds.rounds(); ++r) {
-        const VertexId first = rounds.first(r), end = rounds.first(r + 1);
+      for (std::size_t r = 0; r < round_count; ++r) {
+        const VertexId first = first_of(r), end = first_of(r + 1);
         // Chunks: enough of them that the workers finish together, each still long enough
         // for the lanes of the descent and the look-ahead of the insertion to get going.
         const VertexId size = end - first;
         const VertexId locate_chunk = std::clamp<VertexId>(size / (8 * threads), 256, 4096);
         constexpr VertexId kInsertChunk = 256;
-        for (VertexId b; !stop.load(std::memory_order_relaxed) &&
-                         (b = located[r].fetch_add(locate_chunk, std::memory_order_relaxed)) < end;)
-          rounds.locate(r, b - first, std::min<std::uint64_t>(end, std::uint64_t{b} + locate_chunk) - first,
-                        hint.data());
-        arrive();
+        if (!from_root) {
+          for (VertexId b; !stop.load(std::memory_order_relaxed) &&
+                           (b = located[r].fetch_add(locate_chunk, std::memory_order_relaxed)) < end;)
+            rounds->locate(r, b - first, std::min<std::uint64_t>(end, std::uint64_t{b} + locate_chunk) - first,
+                           hint.data());
+          arrive();
+        }
         for (VertexId b; !stop.load(std::memory_order_relaxed) &&
                          (b = inserted[r].fetch_add(kInsertChunk, std::memory_order_relaxed)) < end;) {
           const VertexId e = std::min<std::uint64_t>(end, std::uint64_t{b} + kInsertChunk);
-          insert_chunk(w, b, e, hint.data() + (b - first));
+          insert_chunk(w, b, e, from_root ? nullptr : hint.data() + (b - first));
           if (w == 0) progress(e);
         }
         arrive();

@@ -28,6 +28,7 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 struct Plan {
   unsigned threads = 1;
   bool walk = false;
+  bool from_root = false;  // Locate::Root: the DAG, each descent from its root
   bool brio = false;
   bool symbolic = true;
 };
@@ -52,7 +53,10 @@ Plan plan(std::size_t n, const Options& options) {
     case Locate::Auto: p.walk = walks && p.brio; break;
     case Locate::Dag: p.walk = false; break;
     case Locate::Walk: p.walk = true; break;
+    case Locate::Root: p.from_root = true; break;
   }
+  if (p.from_root && options.method == Method::Partition)
+    throw InputError("the partition method keeps no DAG to descend from its root (use --locate walk or auto)");
   if (options.method == Method::Partition) {
     if (!p.brio)
       throw InputError("the partition method needs the BRIO order: its threads own stretches of "
@@ -147,17 +151,18 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
   const auto t0 = Clock::now();
   switch (options.method) {
     case Method::Serial:
-      detail::insert_serial(kernel, options.profile, duplicates, stats, progress);
+      detail::insert_serial(kernel, options.profile, plan.from_root, duplicates, stats, progress);
       break;
     case Method::Pessimistic:
-      detail::insert_pessimistic(kernel, plan.threads, options.paper_locking, options.time_threads,
+      detail::insert_pessimistic(kernel, plan.threads, plan.from_root, options.paper_locking, options.time_threads,
                                  duplicates, stats, progress);
       break;
     case Method::Optimistic:
-      detail::insert_optimistic(kernel, plan.threads, options.time_threads, duplicates, stats, progress);
+      detail::insert_optimistic(kernel, plan.threads, plan.from_root, options.time_threads, duplicates, stats,
+                                progress);
       break;
     case Method::Batch:
-      detail::insert_batch(kernel, plan.threads, duplicates, stats, progress);
+      detail::insert_batch(kernel, plan.threads, plan.from_root, duplicates, stats, progress);
       break;
     case Method::Partition:
       break;  // refused by plan()
@@ -221,7 +226,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
 
   Stats stats;
   stats.threads = p.threads;
-  stats.locate = p.walk ? Locate::Walk : Locate::Dag;
+  stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
   Triangulation out = p.walk ? run_walking(std::move(pts), n, order, std::move(keys), p, options, stats)
                              : run_dag(std::move(pts), n, order, p, options, stats);
   if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});

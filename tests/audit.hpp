@@ -157,7 +157,8 @@ struct Mode {
 inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Order::Brio) {
   std::vector<Mode> modes = {{"serial random dag", Method::Serial, 1, Order::Random, Locate::Dag},
                              {"serial brio dag", Method::Serial, 1, Order::Brio, Locate::Dag},
-                             {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk}};
+                             {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk},
+                             {"serial random root", Method::Serial, 1, Order::Random, Locate::Root}};
   for (const auto& [name, method] : {std::pair{"pessimistic", Method::Pessimistic},
                                      std::pair{"optimistic", Method::Optimistic},
                                      std::pair{"batch", Method::Batch}}) {
@@ -165,6 +166,9 @@ inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Ord
     label << name << ' ' << threads << (threaded_order == Order::Brio ? " brio" : " random");
     modes.push_back({label.str(), method, threads, threaded_order, Locate::Dag});
   }
+  // The paper's configuration: every descent from the root.
+  modes.push_back({"pessimistic " + std::to_string(threads) + " random root", Method::Pessimistic, threads,
+                   Order::Random, Locate::Root});
   // The partition method walks, in the BRIO order only.
   if (threaded_order == Order::Brio)
     modes.push_back({"partition " + std::to_string(threads) + " brio", Method::Partition, threads, Order::Brio,

@@ -129,7 +129,8 @@ stderr_has "header says 5 points but the file has 3"; absent "$dir/bad5.ele"
 expect 2 "unknown option" -- "$ridt" triangulate "$dir/uniform.txt" --frobnicate -o "$dir/bad6.ele"
 absent "$dir/bad6.ele"
 # Every order and location writes the same file; the combinations that cannot work say why.
-for mode in "--order random" "--order brio" "--locate walk" "--order brio --locate walk"; do
+for mode in "--order random" "--order brio" "--locate walk" "--order brio --locate walk" "--order random --locate root" \
+  "--locate root --method pessimistic --threads 2 --paper-locking"; do
   expect 0 "mode $mode" -- "$ridt" triangulate "$dir/clusters.txt" $mode -o "$dir/c_mode.ele"
   cmp -s "$dir/clusters.txt.ele" "$dir/c_mode.ele" && pass || fail "$mode changed the output"
 done
@@ -144,6 +145,10 @@ expect 0 "default location in random order" -- "$ridt" triangulate "$dir/uniform
 stdout_has '"locate": "dag"'
 expect 2 "partition on the DAG" -- "$ridt" triangulate "$dir/uniform.txt" --method partition --locate dag
 stderr_has "keeps no DAG"
+expect 0 "root stats" -- "$ridt" triangulate "$dir/uniform.txt" --order random --locate root --stats
+stdout_has '"locate": "root"'
+expect 2 "partition from the root" -- "$ridt" triangulate "$dir/uniform.txt" --method partition --locate root
+stderr_has "keeps no DAG to descend"
 expect 2 "partition in random order" -- "$ridt" triangulate "$dir/uniform.txt" --method partition --order random
 stderr_has "needs the BRIO order"
 expect 2 "walk in random order" -- "$ridt" triangulate "$dir/uniform.txt" --locate walk --order random

@@ -18,7 +18,8 @@ struct Mode {
 };
 constexpr Mode kModes[] = {{Order::Random, Locate::Dag, "random_dag"},
                            {Order::Brio, Locate::Dag, "brio_dag"},
-                           {Order::Brio, Locate::Walk, "brio_walk"}};
+                           {Order::Brio, Locate::Walk, "brio_walk"},
+                           {Order::Random, Locate::Root, "random_root"}};
 
 Options with(const Mode &m, std::uint64_t seed = 1) {
   Options o;

@@ -298,9 +298,9 @@ TEST(Progress, ReportedByEveryMethodAndCanAbandonTheRun) {
   const std::vector<Point> pts = generate(Distribution::Uniform, kPoints, 5);
   const Triangulation expected = triangulate(pts);
   for (const Method m : {Method::Serial, Method::Pessimistic, Method::Optimistic, Method::Batch, Method::Partition}) {
-    for (const Locate where : {Locate::Dag, Locate::Walk}) {
+    for (const Locate where : {Locate::Dag, Locate::Walk, Locate::Root}) {
       if (where == Locate::Walk && m != Method::Serial && m != Method::Partition) continue;
-      if (where == Locate::Dag && m == Method::Partition) continue;
+      if (where != Locate::Walk && m == Method::Partition) continue;
       Options o;
       o.method = m;
       o.locate = where;

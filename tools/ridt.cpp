@@ -106,7 +106,7 @@ void print_stats(const TriangulateArgs& a, const ridt::Triangulation& t, double 
       {"threads", std::to_string(s.threads)},
       {"seed", std::to_string(a.seed)},
       {"order", "\"" + a.order + "\""},
-      {"locate", s.locate == ridt::Locate::Walk ? "\"walk\"" : "\"dag\""},
+      {"locate", s.locate == ridt::Locate::Walk ? "\"walk\"" : s.locate == ridt::Locate::Root ? "\"root\"" : "\"dag\""},
       {"bounding", "\"" + a.bounding + "\""},
       {"points", std::to_string(s.points)},
       {"distinct", std::to_string(s.distinct)},
@@ -211,7 +211,7 @@ int run_triangulate(const TriangulateArgs& a) {
                            {"partition", Method::Partition}});
   o.order = pick<Order>("order", a.order, {{"brio", Order::Brio}, {"random", Order::Random}});
   o.locate = pick<Locate>("location", a.locate,
-                          {{"auto", Locate::Auto}, {"dag", Locate::Dag}, {"walk", Locate::Walk}});
+                          {{"auto", Locate::Auto}, {"dag", Locate::Dag}, {"walk", Locate::Walk}, {"root", Locate::Root}});
   o.threads = a.threads;
   o.paper_locking = a.paper_locking;
   o.time_threads = !a.no_thread_timing;
@@ -257,8 +257,9 @@ int main(int argc, char** argv) {
                   "random (the paper's)");
   tri->add_option("--locate", ta.locate,
                   "point location: auto (default: walk where the method and order allow, else "
-                  "dag), dag (the history DAG) or walk (from the last insertion, no DAG; serial "
-                  "and partition methods, brio order)");
+                  "dag), dag (the history DAG, in rounds along a curve), walk (from the last "
+                  "insertion, no DAG; serial and partition methods, brio order) or root (the "
+                  "paper's: every point descends the DAG from its root, no rounds or look-ahead)");
   tri->add_option("--method", ta.method,
                   "serial (default), pessimistic, optimistic, batch (the paper's, on the DAG) or "
                   "partition (threads own regions; no lock, no DAG)");

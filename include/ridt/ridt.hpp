@@ -57,8 +57,11 @@ enum class Order {
 /// How an insertion finds the triangle that holds its point.
 enum class Locate {
   Auto,  ///< Walk where the method and the order allow it, else Dag
-  Dag,   ///< descend the history DAG (serial and the paper's three threaded methods)
+  Dag,   ///< descend the history DAG in rounds along a curve (serial and the paper's methods)
   Walk,  ///< walk from the last insertion; keeps no DAG (serial and partition, BRIO order)
+  /// The paper's own location: every point descends the history DAG from its root when its
+  /// turn comes, with no rounds and no look-ahead (serial and the paper's three methods).
+  Root,
 };
 
 /// The starting triangle that encloses every point.

@@ -14,7 +14,7 @@ ProgressLike = Union[Callable[[float], Any], Any, None]
 
 METHODS = ("auto", "serial", "pessimistic", "optimistic", "batch", "partition")
 ORDERS = ("brio", "random")
-LOCATES = ("auto", "dag", "walk")
+LOCATES = ("auto", "dag", "walk", "root")
 
 
 def as_points(points: Any, name: str = "points", what: str = "ridt") -> np.ndarray:
@@ -129,8 +129,9 @@ def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: s
         Threads of a threaded method; 0 or -1 for every core.
     order : {'brio', 'random'}
         Insertion order: random rounds each along a Hilbert curve, or purely random (the paper's).
-    locate : {'auto', 'dag', 'walk'}
-        How an insertion finds its triangle: walking from the last one, or the history DAG.
+    locate : {'auto', 'dag', 'walk', 'root'}
+        How an insertion finds its triangle: walking from the last one, or the history DAG
+        (in rounds along a curve; 'root': from its root for every point, as the paper does).
     seed : int
         Seed of the random insertion order (the result does not depend on it).
     progress : callable or tqdm-like, optional

@@ -49,7 +49,7 @@ auto buffer(Get get, std::size_t cols) {
 }
 
 py::dict stats_dict(const ridt::Stats& s) {
-  static const char* locate_names[] = {"auto", "dag", "walk"};
+  static const char* locate_names[] = {"auto", "dag", "walk", "root"};
   py::dict d;
   d["threads"] = s.threads;
   d["points"] = s.points;
@@ -90,7 +90,7 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
                                   {"partition", ridt::Method::Partition}},
                                  "method", method);
   o.order = parse<ridt::Order>({{"brio", ridt::Order::Brio}, {"random", ridt::Order::Random}}, "order", order);
-  o.locate = parse<ridt::Locate>({{"auto", ridt::Locate::Auto}, {"dag", ridt::Locate::Dag}, {"walk", ridt::Locate::Walk}},
+  o.locate = parse<ridt::Locate>({{"auto", ridt::Locate::Auto}, {"dag", ridt::Locate::Dag}, {"walk", ridt::Locate::Walk}, {"root", ridt::Locate::Root}},
                                  "locate", locate);
   o.bounding = parse<ridt::Bounding>({{"symbolic", ridt::Bounding::Symbolic}, {"finite", ridt::Bounding::Finite}},
                                      "bounding", bounding);

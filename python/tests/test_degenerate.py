@@ -63,6 +63,10 @@ def test_valid_and_the_same_for_every_method(name):
                             ("pessimistic", 2), ("batch", 3)]:
         tri = ridt.Delaunay(pts, method=method, threads=threads, seed=threads + 5)
         assert triangle_set(tri.simplices) == want, (method, threads)
+    # The paper's configuration: random order, every descent from the DAG's root.
+    for method, threads in [("serial", 1), ("pessimistic", 2)]:
+        tri = ridt.Delaunay(pts, method=method, threads=threads, order="random", locate="root")
+        assert triangle_set(tri.simplices) == want, (method, threads, "root")
     locate = ridt.Delaunay(pts).find_simplex(pts)
     assert (locate >= 0).all()
 
