@@ -5,7 +5,9 @@
 - fig14_<dist>.png: speedup of 2 threads over 1 against n for both pessimistic locking
   variants, beside the paper's Table 3 (its Fig. 14).
 
-    /usr/bin/python3 bench/plot_threads.py docs/threads.csv docs/
+    /usr/bin/python3 bench/plot_threads.py THREADS.csv OUTDIR [PREFIX]
+
+PREFIX goes before each file's name (for a second configuration beside the first).
 """
 import csv
 import os
@@ -22,7 +24,7 @@ METHODS = (("pessimistic", "pessimistic (lock at the leaf)"),
 CORES_NOTE = "threads (2 cores: above 2 oversubscribed)"
 
 
-def speedup_figure(rows, dist, outdir):
+def speedup_figure(rows, dist, outdir, prefix=""):
     sizes = sorted({int(r["n"]) for r in rows})
     fig, axes = plt.subplots(1, len(sizes), figsize=(3.2 * len(sizes), 3.6), sharey=True)
     if len(sizes) == 1:
@@ -41,11 +43,11 @@ def speedup_figure(rows, dist, outdir):
     axes[0].legend(fontsize=7)
     fig.suptitle(f"Threaded methods against serial ridt, {dist} points")
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, f"speedup_{dist}.png"), dpi=110)
+    fig.savefig(os.path.join(outdir, f"{prefix}speedup_{dist}.png"), dpi=110)
     plt.close(fig)
 
 
-def fig11(rows, dist, outdir):
+def fig11(rows, dist, outdir, prefix="", note=""):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for n in sorted({int(r["n"]) for r in rows}):
         pts = sorted((int(r["threads"]), float(r["total_s"])) for r in rows
@@ -55,15 +57,15 @@ def fig11(rows, dist, outdir):
     ax.set_xlabel(CORES_NOTE)
     ax.set_ylabel("total time [s]")
     ax.set_yscale("log")
-    ax.set_title(f"Pessimistic method, {dist} points (cf. paper Fig. 11)")
+    ax.set_title(f"Pessimistic method, {dist} points{note} (cf. paper Fig. 11)", fontsize=10)
     ax.legend(fontsize=8)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, f"fig11_{dist}.png"), dpi=110)
+    fig.savefig(os.path.join(outdir, f"{prefix}fig11_{dist}.png"), dpi=110)
     plt.close(fig)
 
 
-def fig14(rows, dist, outdir):
+def fig14(rows, dist, outdir, prefix="", note=""):
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for method, label in (("pessimistic", "ridt: lock at the leaf"),
                           ("paper", "ridt: lock at the leaves' parent (paper)")):
@@ -83,25 +85,27 @@ def fig14(rows, dist, outdir):
     ax.set_xlabel("points")
     ax.set_ylabel("speedup, 1 thread / 2 threads")
     ax.axhline(1.0, color="grey", linewidth=0.8)
-    ax.set_title(f"Pessimistic method, {dist} points (cf. paper Fig. 14)")
+    ax.set_title(f"Pessimistic method, {dist} points{note} (cf. paper Fig. 14)", fontsize=10)
     ax.legend(fontsize=8)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(outdir, f"fig14_{dist}.png"), dpi=110)
+    fig.savefig(os.path.join(outdir, f"{prefix}fig14_{dist}.png"), dpi=110)
     plt.close(fig)
 
 
 def main():
     if len(sys.argv) < 2:
-        sys.exit("usage: plot_threads.py THREADS.csv [OUTDIR]")
+        sys.exit("usage: plot_threads.py THREADS.csv [OUTDIR [PREFIX]]")
     rows = list(csv.DictReader(open(sys.argv[1])))
     outdir = sys.argv[2] if len(sys.argv) > 2 else "."
+    prefix = sys.argv[3] if len(sys.argv) > 3 else ""
+    note = ", paper's location" if prefix else ""
     os.makedirs(outdir, exist_ok=True)
     for dist in sorted({r["distribution"] for r in rows}):
         mine = [r for r in rows if r["distribution"] == dist]
-        speedup_figure(mine, dist, outdir)
-        fig11(mine, dist, outdir)
-        fig14(mine, dist, outdir)
+        speedup_figure(mine, dist, outdir, prefix)
+        fig11(mine, dist, outdir, prefix, note)
+        fig14(mine, dist, outdir, prefix, note)
     print("wrote figures to", outdir)
 
 

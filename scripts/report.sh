@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Rebuilds ridt in Release, runs every benchmark and rewrites docs/performance.md and everything
+# under docs/results/ (tables as .txt, .csv and .md, figures as .png) from what it measured.
+#
+#   scripts/report.sh [--quick] [--build DIR]
+#
+# --quick: sizes up to 10^5 and fewer repetitions (some minutes), to try the pipeline; without it
+# the sizes of the paper's tables and 10^7 for the whole-process and Python tables (about an
+# hour on 2 cores). Run it on a quiet machine: every figure is a median of interleaved runs, and
+# anything else running skews them. Installs what it needs first (scripts/deps.sh bench, as
+# root): the test dependencies, Qhull, node and delaunator for the peers table.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+mode=full
+build=build/report
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) mode=quick ;;
+    --build) build="$2"; shift ;;
+    *) echo "usage: scripts/report.sh [--quick] [--build DIR]" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+py=/usr/bin/python3
+out=docs/results
+log() { printf '\n== %s\n' "$*" >&2; }
+
+log "dependencies (scripts/deps.sh bench: the test set, Qhull, node and delaunator)"
+bash scripts/deps.sh bench >&2
+
+log "build ($build, Release, with the Python module)"
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=ON \
+  -DRIDT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$py" >/dev/null
+ninja -C "$build" ridt_tool ridt_bench_serial ridt_bench_threads ridt_bench_peers ridt_cgal_triangulate ridt_python >/dev/null
+
+if [ "$mode" = quick ]; then
+  serial_args=(--max-n 100000 --reps 3)
+  threads_args=(--n 1000,10000,100000 --dist uniform,grid --reps 3 --threads 1,2,4)
+  paper_args=(--n 1000,10000,100000 --dist uniform --reps 3 --threads 1,2)
+  peers_args=(--sizes 100000 --reps 3)
+  process_args=(--sizes 100000 --reps 3)
+  python_args=(--sizes 10000,100000 --big "" --reps 2)
+else
+  serial_args=(--reps 5)
+  threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,3,4,8)
+  paper_args=(--n 1000,10000,100000,1000000 --dist uniform --reps 5 --threads 1,2)
+  peers_args=(--sizes 10000,100000,1000000 --reps 5)
+  process_args=(--sizes 1000000,10000000 --reps 5)
+  python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
+fi
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+commands="$tmp/commands.txt"
+run() {  # run NAME COMMAND...: the command's output to $tmp/NAME.txt, and the command logged
+  local name="$1"; shift
+  log "$name: $*"
+  printf '%s\t%s\n' "$name" "$*" >>"$commands"
+  "$@" >"$tmp/$name.txt"
+}
+
+run serial "$build/ridt_bench_serial" "${serial_args[@]}" --csv "$tmp/serial.csv"
+run threads "$build/ridt_bench_threads" "${threads_args[@]}" --csv "$tmp/threads.csv"
+run table3 "$build/ridt_bench_threads" "${paper_args[@]}" --order random --locate root \
+  --methods paper,pessimistic --csv "$tmp/table3.csv"
+run peers "$build/ridt_bench_peers" "${peers_args[@]}" --node-modules build/peers/node_modules --csv "$tmp/peers.csv"
+run process "$py" bench/process_table.py --build "$build" "${process_args[@]}" --threads 2 --out "$tmp/process.md"
+run python env PYTHONPATH="$build/python" "$py" bench/python_table.py --python "$py" "${python_args[@]}" \
+  --out "$tmp/python.md"
+run plots "$py" bench/plot_threads.py "$tmp/threads.csv" "$tmp"
+run plots_root "$py" bench/plot_threads.py "$tmp/table3.csv" "$tmp" root_
+
+# Only now, with every part measured, replace what the last report wrote.
+rm -rf "$out"
+mkdir -p "$out"
+cp "$tmp"/*.txt "$tmp"/*.csv "$tmp"/*.md "$tmp"/*.png "$out"/
+rm -f "$out/commands.txt" "$out/plots.txt" "$out/plots_root.txt"
+"$py" bench/report.py --results "$out" --commands "$commands" --mode "$mode" --out docs/performance.md
+log "wrote docs/performance.md and $out/"
