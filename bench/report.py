@@ -253,13 +253,13 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--results", default="docs/results")
     ap.add_argument("--commands", required=True)
-    ap.add_argument("--mode", choices=("full", "quick"), required=True)
+    ap.add_argument("--mode", choices=("full", "quick", "large"), required=True)
     ap.add_argument("--out", default="docs/performance.md")
     args = ap.parse_args()
     commands = [line.rstrip("\n").split("\t", 1) for line in open(args.commands) if "\t" in line]
     head = (
         "# Performance\n\n"
-        f"Written by `scripts/report.sh{' --quick' if args.mode == 'quick' else ''}` on "
+        f"Written by `scripts/report.sh{'' if args.mode == 'full' else ' --' + args.mode}` on "
         f"{datetime.date.today().isoformat()}, commit {commit()}, in one run: every table and "
         "figure below, and every file in [results/](results/), comes from it. Machine: "
         f"{machine()}. Compiler: {compiler()}, Release (-O3). "

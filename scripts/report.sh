@@ -2,11 +2,11 @@
 # Rebuilds ridt in Release, runs every benchmark and rewrites docs/performance.md and everything
 # under docs/results/ (tables as .txt, .csv and .md, figures as .png) from what it measured.
 #
-#   scripts/report.sh [--quick] [--build DIR]
+#   scripts/report.sh [--quick | --large] [--build DIR]
 #
-# --quick: sizes up to 10^5 and fewer repetitions (some minutes), to try the pipeline; without it
-# the sizes of the paper's tables and 10^7 for the whole-process and Python tables (about an
-# hour on 2 cores). Run it on a quiet machine: every figure is a median of interleaved runs, and
+# --quick: sizes up to 10^5 and fewer repetitions (a few minutes), to try the pipeline; without
+# it, the paper's sizes up to 10^6 (some 30 minutes on 2 cores); --large: also 10^7 points in
+# the whole-process and Python tables (another hour: scipy takes minutes a run there). Run it on a quiet machine: every figure is a median of interleaved runs, and
 # anything else running skews them. Installs what it needs first (scripts/deps.sh bench, as
 # root): the test dependencies, Qhull, node and delaunator for the peers table.
 set -euo pipefail
@@ -17,8 +17,9 @@ build=build/report
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) mode=quick ;;
+    --large) mode=large ;;
     --build) build="$2"; shift ;;
-    *) echo "usage: scripts/report.sh [--quick] [--build DIR]" >&2; exit 2 ;;
+    *) echo "usage: scripts/report.sh [--quick | --large] [--build DIR]" >&2; exit 2 ;;
   esac
   shift
 done
@@ -44,11 +45,15 @@ if [ "$mode" = quick ]; then
   python_args=(--sizes 10000,100000 --big "" --reps 2)
 else
   serial_args=(--reps 5)
-  threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,3,4,8)
+  threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
   paper_args=(--n 1000,10000,100000,1000000 --dist uniform --reps 5 --threads 1,2)
   peers_args=(--sizes 10000,100000,1000000 --reps 5)
-  process_args=(--sizes 1000000,10000000 --reps 5)
-  python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
+  process_args=(--sizes 1000000 --reps 5)
+  python_args=(--sizes 10000,100000,1000000 --big "" --reps 3)
+  if [ "$mode" = large ]; then
+    process_args=(--sizes 1000000,10000000 --reps 5)
+    python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
+  fi
 fi
 
 tmp=$(mktemp -d)
@@ -77,5 +82,6 @@ rm -rf "$out"
 mkdir -p "$out"
 cp "$tmp"/*.txt "$tmp"/*.csv "$tmp"/*.md "$tmp"/*.png "$out"/
 rm -f "$out/commands.txt" "$out/plots.txt" "$out/plots_root.txt"
+sed -i "s#$tmp#$out#g" "$commands"
 "$py" bench/report.py --results "$out" --commands "$commands" --mode "$mode" --out docs/performance.md
 log "wrote docs/performance.md and $out/"
