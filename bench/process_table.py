@@ -9,7 +9,7 @@ memory of the process per point (the input included). Writes a Markdown table (a
 the machine, the compiler and the command.
 
   bench/process_table.py --build build [--sizes 1000000,10000000] [--dists uniform,...]
-                         [--reps 5] [--threads 2] [--out docs/process.md]
+                         [--reps 5] [--threads 2] [--out docs/results/process.md]
 """
 import argparse
 import csv

@@ -6,12 +6,12 @@ process, the codes in a new random order every repetition.
   bench/python_table.py [--python build/venv/bin/python] [--sizes 10000,100000,1000000]
                         [--big 10000000] [--big-dists uniform] [--dists uniform,normal,grid,clusters]
                         [--reps 3]
-                        [--out docs/python.md]
+                        [--out docs/results/python.md]
 
 Time: the median wall seconds of the call alone (the points already in memory). Memory: the
 process's peak resident size during the call above its size just before, per point. The
 --big sizes run once, on --big-dists (uniform by default: scipy takes minutes there). Writes a Markdown table,
-a CSV beside it and a log-log plot of time against size (docs/python_time.png).
+a CSV beside it and a log-log plot of time against size (python_time.png beside it).
 """
 import argparse
 import csv
@@ -104,7 +104,7 @@ def main():
     ap.add_argument("--dists", default="uniform,normal,grid,clusters")
     ap.add_argument("--big-dists", default="uniform", help="the distributions at the --big sizes")
     ap.add_argument("--reps", type=int, default=3)
-    ap.add_argument("--out", default="docs/python.md")
+    ap.add_argument("--out", default="docs/results/python.md")
     args = ap.parse_args()
     cases = [(d, int(n), args.reps) for n in args.sizes.split(",") if n for d in args.dists.split(",")]
     cases += [(d, int(n), 1) for n in args.big.split(",") if n for d in args.big_dists.split(",")]
