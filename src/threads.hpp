@@ -137,8 +137,9 @@ inline void add_worker(const Scratch& scratch, const std::vector<DuplicateHit>& 
 /// more of it and nobody waits long at the end of a round: insert_chunk(w, begin, end, hint)
 /// inserts the points [begin, end), hint[v - begin] being a leaf that held point v when the
 /// round began. `from_root`: no rounds and no location phase, one pass over all the points with
-/// hint null (each descent starts at the root, Locate::Root). Worker 0 is the calling thread, and reports `progress` after its chunks. `wait[w]` receives the time worker w spent
-/// waiting for the others. The first exception of any worker is rethrown once all have
+/// hint null (each descent starts at the root, Locate::Root). Worker 0 is the calling thread,
+/// and reports `progress` after its chunks. `wait[w]` receives the time worker w spent waiting
+/// for the others. The first exception of any worker is rethrown once all have
 /// stopped; the others stop at the next phase.
 template <class InsertChunk>
 void run_in_rounds(const Kernel& kernel, unsigned threads, bool from_root, std::vector<Clock::duration>& wait,
