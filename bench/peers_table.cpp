@@ -76,7 +76,7 @@ ridt::Options ridt_options(ridt::Method m, ridt::Order order,
   o.order = order;
   o.locate = locate;
   o.threads = threads;
-  o.time_threads = false;
+  o.experiment.time_threads = false;
   return o;
 }
 

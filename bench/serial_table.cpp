@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
         o.seed = 1 + r;
         ours.push_back(ridt::triangulate(pts, o).stats.time_triangulate_s);
         theirs.push_back(cgal_seconds(pts));
-        o.profile = true;
+        o.experiment.profile = true;
         const ridt::Stats s = ridt::triangulate(pts, o).stats;
         const double total = s.time_locate_s + s.time_split_s + s.time_legalize_s;
         loc.push_back(s.time_locate_s / total);

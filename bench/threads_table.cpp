@@ -43,7 +43,7 @@ ridt::Options options_for(const Config& c) {
   o.threads = c.threads;
   if (c.method == "serial") o.method = ridt::Method::Serial;
   if (c.method == "pessimistic" || c.method == "paper") o.method = ridt::Method::Pessimistic;
-  if (c.method == "paper") o.paper_locking = true;
+  if (c.method == "paper") o.experiment.paper_locking = true;
   if (c.method == "optimistic") o.method = ridt::Method::Optimistic;
   if (c.method == "batch") o.method = ridt::Method::Batch;
   return o;

@@ -80,7 +80,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
     finding(problem);
   // The paper's finite bounding triangle: right, or it says that it lost hull edges.
   Options finite;
-  finite.bounding = Bounding::Finite;
+  finite.experiment.bounding = Bounding::Finite;
   try {
     const Triangulation t = triangulate(pts, finite);
     const std::string problem = test::audit(pts, t);

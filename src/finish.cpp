@@ -153,9 +153,9 @@ void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std:
   s.distinct = n - s.duplicates;
   if (s.distinct < 3) {
     out.warning = "fewer than three distinct points: no triangle";
-  } else if (count == 0 && options.bounding == Bounding::Symbolic) {
+  } else if (count == 0 && options.experiment.bounding == Bounding::Symbolic) {
     out.warning = "all points are collinear: no triangle";  // else there would be a triangle
-  } else if (options.bounding == Bounding::Finite) {
+  } else if (options.experiment.bounding == Bounding::Finite) {
     // The paper's finite bounding triangle can leave a reflex boundary or drop points, or
     // every triangle, when the circle of a thin one holds a bounding vertex.
     std::vector<Point> pts(n);
@@ -178,7 +178,7 @@ void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std:
     const bool complete = count == 2 * s.distinct - 2 - h;
     if (!convex || !complete)
       out.warning =
-          "finite bounding triangle (k = " + std::to_string(options.k) +
+          "finite bounding triangle (k = " + std::to_string(options.experiment.k) +
           ") lost convex hull edges: the result is not the Delaunay triangulation of the "
           "points; use the symbolic bounding triangle";
   }
@@ -276,7 +276,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   // records and the output together. With two threads or more, one copies the vertices and
   // another the neighbours, and a page goes once both are past it. The points are no longer
   // needed (but for the finite bounding triangle's check below): their copy goes first.
-  if (options.bounding == Bounding::Symbolic) kernel.release_points();
+  if (options.experiment.bounding == Bounding::Symbolic) kernel.release_points();
   const unsigned copiers = workers > 1 ? 2 : 1;
   auto neighbour_id = [&](TriangleId u) { return u != kNone && is_kept(u) ? new_id(u) : kNoNeighbor; };
   // With two copiers, the neighbours' new ids would make the neighbour copier's work twice the

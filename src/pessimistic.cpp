@@ -16,7 +16,7 @@
 // descent reads the link with an acquire load. Records are never moved (mesh.hpp).
 //
 // Two variants: the paper's stops the unlocked descent at the parent of a leaf and finishes
-// it inside the lock (Options::paper_locking); the default goes to a leaf outside the lock
+// it inside the lock (Experiment::paper_locking); the default goes to a leaf outside the lock
 // and, inside, continues only if that leaf has been split since.
 #include <mutex>
 
@@ -27,12 +27,7 @@
 namespace ridt::detail {
 namespace {
 
-struct alignas(64) Worker {  // each on its own cache lines
-  Scratch scratch;
-  std::vector<DuplicateHit> duplicates;
-  ThreadStats stats;
-  std::uint64_t critical = 0, waiting = 0;  // ticks (threads.hpp)
-};
+using Worker = WorkerState<Scratch>;
 
 // Point p, whose descent may start at node (its parent on the path given, or node itself).
 template <bool kTimed>
@@ -51,9 +46,9 @@ void insert_point(Kernel& kernel, SpinLock& lock, VertexId p, TriangleId node, T
     const TriangleId leaf = kernel.descend(start, p);
     const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
     if (hit != kNone) out.duplicates.push_back({p, hit});
-    if constexpr (kTimed) out.critical += ticks() - t1;
+    if constexpr (kTimed) out.critical_ticks += ticks() - t1;
   }
-  if constexpr (kTimed) out.waiting += t1 - t0;
+  if constexpr (kTimed) out.wait_ticks += t1 - t0;
 }
 
 // The points [first, end), a chunk of a round; hint[v - first] holds point v, or hint is null
@@ -95,11 +90,8 @@ void insert_pessimistic(Kernel& kernel, unsigned threads, bool from_root, bool p
   const double total = seconds(Clock::now() - t_start);
   const double tick = rate.seconds_per_tick();
   // Waiting: for the lock, and at the ends of rounds for the others.
-  for (unsigned w = 0; w < threads; ++w) {
-    const Worker& worker = workers[w];
-    add_worker(worker.scratch, worker.duplicates, worker.stats, worker.critical, worker.waiting,
-               tick, barrier_wait[w], timed, total, duplicates, stats);
-  }
+  for (unsigned w = 0; w < threads; ++w)
+    add_worker(workers[w], tick, timed ? seconds(barrier_wait[w]) : 0.0, total, duplicates, stats);
 }
 
 }  // namespace ridt::detail

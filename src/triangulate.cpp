@@ -37,7 +37,7 @@ Plan plan(std::size_t n, const Options& options) {
   Plan p;
   // Three bounding vertices follow the points, and ids must stay below kIdMask.
   if (n > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
-  p.symbolic = options.bounding == Bounding::Symbolic;
+  p.symbolic = options.experiment.bounding == Bounding::Symbolic;
   p.brio = options.order == Order::Brio;
   if (options.method != Method::Serial) {
     p.threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -46,7 +46,7 @@ Plan plan(std::size_t n, const Options& options) {
       throw InputError("at most " + std::to_string(detail::kMaxOwner) + " threads (got " +
                        std::to_string(p.threads) + ")");
   }
-  if (options.profile && options.method != Method::Serial)
+  if (options.experiment.profile && options.method != Method::Serial)
     throw InputError("profiling (Fig. 8) times the serial method only");
   const bool walks = options.method == Method::Serial || options.method == Method::Partition;
   switch (options.locate) {
@@ -71,8 +71,8 @@ Plan plan(std::size_t n, const Options& options) {
   if (p.walk && !p.brio)
     throw InputError("walking location needs the BRIO order: in random order each walk "
                      "crosses about sqrt(n) triangles (use --order brio)");
-  if (!p.symbolic && !(options.k >= 2))
-    throw InputError("the finite bounding triangle needs k >= 2 (got " + std::to_string(options.k) + ")");
+  if (!p.symbolic && !(options.experiment.k >= 2))
+    throw InputError("the finite bounding triangle needs k >= 2 (got " + std::to_string(options.experiment.k) + ")");
   return p;
 }
 
@@ -146,20 +146,20 @@ void place_finite_bounding(Point* pts, std::uint32_t n, const std::vector<std::u
 Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
                       const Plan& plan, const Options& options, Stats& stats) {
   detail::Kernel kernel(std::move(pts), n, plan.symbolic, plan.brio);
+  const Experiment& x = options.experiment;
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
   switch (options.method) {
     case Method::Serial:
-      detail::insert_serial(kernel, options.profile, plan.from_root, duplicates, stats, progress);
+      detail::insert_serial(kernel, x.profile, plan.from_root, duplicates, stats, progress);
       break;
     case Method::Pessimistic:
-      detail::insert_pessimistic(kernel, plan.threads, plan.from_root, options.paper_locking, options.time_threads,
-                                 duplicates, stats, progress);
+      detail::insert_pessimistic(kernel, plan.threads, plan.from_root, x.paper_locking, x.time_threads, duplicates,
+                                 stats, progress);
       break;
     case Method::Optimistic:
-      detail::insert_optimistic(kernel, plan.threads, plan.from_root, options.time_threads, duplicates, stats,
-                                progress);
+      detail::insert_optimistic(kernel, plan.threads, plan.from_root, x.time_threads, duplicates, stats, progress);
       break;
     case Method::Batch:
       detail::insert_batch(kernel, plan.threads, plan.from_root, duplicates, stats, progress);
@@ -184,7 +184,7 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   if (options.method == Method::Partition) {
     detail::insert_partition(mesh, keys.data(), plan.threads, duplicates, stats, progress);
   } else {
-    detail::insert_walking(mesh, options.profile, duplicates, stats, progress);
+    detail::insert_walking(mesh, options.experiment.profile, duplicates, stats, progress);
   }
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
@@ -222,7 +222,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   malloc_trim(0);
 #endif
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
-  if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.k);
+  if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
 
   Stats stats;
   stats.threads = p.threads;

@@ -131,7 +131,7 @@ TEST(Modes, WalkingKeepsNoDag) {
 
 TEST(Modes, WalkingProfilesToo) {
   Options o = with(kModes[2]);
-  o.profile = true;
+  o.experiment.profile = true;
   const Triangulation t =
       triangulate_checked(generate(Distribution::Clusters, 5000, 2), o);
   EXPECT_GT(t.stats.time_locate_s, 0);

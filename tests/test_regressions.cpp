@@ -36,7 +36,7 @@ TEST(Regression, HilbertKeysOfSubnormalPoints) {
 // the end of the input (AddressSanitizer).
 TEST(Regression, FiniteBoundingTriangleAroundOneHugePoint) {
   Options finite;
-  finite.bounding = Bounding::Finite;
+  finite.experiment.bounding = Bounding::Finite;
   const std::vector<Point> one = {{4e300, 2.0 / 3 * 1e300}};
   const Triangulation t = triangulate(one, finite);
   EXPECT_EQ(audit(one, t), "");
@@ -47,7 +47,7 @@ TEST(Regression, FiniteBoundingTriangleAroundOneHugePoint) {
 // underflows to 0 and K was 0 again. And two boxes that are flat far from the origin.
 TEST(Regression, FiniteBoundingTriangleAroundTinyAndFlatSets) {
   Options finite;
-  finite.bounding = Bounding::Finite;
+  finite.experiment.bounding = Bounding::Finite;
   const std::vector<std::vector<Point>> sets = {
       {{-3 * 0x1p-1060, -3 * 0x1p-1060}},
       {{1e15, 0}, {1e15, 1e-5}, {1e15, 2e-5}},
@@ -75,7 +75,7 @@ TEST(Regression, FiniteBoundingTriangleLosingEveryTriangleSaysSo) {
                                   rotated(-3, -3), rotated(-3, -3), rotated(-3, 2)};
   ASSERT_NE(detail::orient2d(pts[0], pts[1], pts[6]), 0);  // not collinear
   Options finite;
-  finite.bounding = Bounding::Finite;
+  finite.experiment.bounding = Bounding::Finite;
   const Triangulation t = triangulate(pts, finite);
   EXPECT_EQ(t.size(), 0u);
   EXPECT_NE(t.warning.find("lost convex hull edges"), std::string::npos) << t.warning;

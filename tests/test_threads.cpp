@@ -66,7 +66,7 @@ TEST_P(Threaded, SameTrianglesAsSerialForEveryThreadCount) {
         Options o;
         o.order = order;
         o.method = v.method;
-        o.paper_locking = v.paper;
+        o.experiment.paper_locking = v.paper;
         o.threads = threads;
         o.seed = 1 + 7919 * run++;  // a seed of its own for each run: the set must not change
         const Triangulation t = triangulate(pts, o);
@@ -83,7 +83,7 @@ TEST_P(Threaded, SameTrianglesAsSerialForEveryThreadCount) {
 TEST_P(Threaded, ResultPassesTheValidator) {
   Options o;
   o.method = GetParam().method;
-  o.paper_locking = GetParam().paper;
+  o.experiment.paper_locking = GetParam().paper;
   o.threads = 4;
   triangulate_checked(generate(Distribution::Uniform, kN, 5), o);
 }
@@ -95,7 +95,7 @@ TEST_P(Workers, StatisticsAddUp) {
   const std::vector<Point> pts = generate(Distribution::Uniform, kN, 8);
   Options o;
   o.method = GetParam().method;
-  o.paper_locking = GetParam().paper;
+  o.experiment.paper_locking = GetParam().paper;
   o.threads = 3;
   const Stats s = triangulate(pts, o).stats;
   EXPECT_EQ(s.threads, 3u);
@@ -120,7 +120,7 @@ TEST_P(Workers, StatisticsAddUp) {
   EXPECT_DOUBLE_EQ(wait, s.time_wait_s);
   EXPECT_LE(s.time_insert_s, s.time_triangulate_s);
 
-  o.time_threads = false;
+  o.experiment.time_threads = false;
   const Stats quiet = triangulate(pts, o).stats;
   EXPECT_EQ(quiet.time_critical_s, 0);
   EXPECT_EQ(quiet.time_wait_s, 0);
@@ -278,7 +278,7 @@ TEST(Threaded, SerialReportsOneThread) {
 TEST(Threaded, ProfilingIsSerialOnly) {
   Options o;
   o.method = Method::Pessimistic;
-  o.profile = true;
+  o.experiment.profile = true;
   EXPECT_THROW(triangulate(generate(Distribution::Uniform, 100, 1), o), InputError);
 }
 

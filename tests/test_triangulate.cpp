@@ -250,8 +250,8 @@ const std::vector<Point> kFlatHull = {{0, 0}, {1, 0}, {0.5, 0.03}, {0.5, 1}};
 
 TEST(FiniteBounding, KThreeLosesAHullEdgeAndSaysSo) {
   Options o;
-  o.bounding = Bounding::Finite;
-  o.k = 3;
+  o.experiment.bounding = Bounding::Finite;
+  o.experiment.k = 3;
   const Triangulation t = triangulate(kFlatHull, o);
   const CheckResult r = check(kFlatHull, t.triangles);
   EXPECT_FALSE(r.valid);
@@ -261,8 +261,8 @@ TEST(FiniteBounding, KThreeLosesAHullEdgeAndSaysSo) {
 
 TEST(FiniteBounding, KTenKeepsThisHull) {
   Options o;
-  o.bounding = Bounding::Finite;
-  o.k = 10;
+  o.experiment.bounding = Bounding::Finite;
+  o.experiment.k = 10;
   const Triangulation t = triangulate_checked(kFlatHull, o);
   EXPECT_TRUE(t.warning.empty());
   EXPECT_EQ(canonical(t.triangles), canonical(triangulate(kFlatHull).triangles));
@@ -270,8 +270,8 @@ TEST(FiniteBounding, KTenKeepsThisHull) {
 
 TEST(FiniteBounding, RejectsSmallK) {
   Options o;
-  o.bounding = Bounding::Finite;
-  o.k = 1.5;
+  o.experiment.bounding = Bounding::Finite;
+  o.experiment.k = 1.5;
   EXPECT_THROW(triangulate(kFlatHull, o), InputError);
 }
 
@@ -283,8 +283,8 @@ TEST(FiniteBounding, WarnsExactlyWhenTheResultIsWrong) {
     for (std::uint64_t seed : {1u, 2u, 3u}) {
       const std::vector<Point> pts = generate(Distribution::Uniform, 5000, seed);
       Options o;
-      o.bounding = Bounding::Finite;
-      o.k = k;
+      o.experiment.bounding = Bounding::Finite;
+      o.experiment.k = k;
       const Triangulation t = triangulate(pts, o);
       const bool valid = check(pts, t.triangles).valid;
       EXPECT_EQ(valid, t.warning.empty()) << "k " << k << " seed " << seed << ": " << t.warning;

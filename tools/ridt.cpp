@@ -199,11 +199,11 @@ T pick(const char* what, const std::string& name,
 int run_triangulate(const TriangulateArgs& a) {
   ridt::Options o;
   o.seed = a.seed;
-  o.k = a.k;
-  o.profile = a.profile;
+  o.experiment.k = a.k;
+  o.experiment.profile = a.profile;
   o.canonical_order = !a.output.empty();  // files are identical for every seed and method
   using ridt::Bounding, ridt::Locate, ridt::Method, ridt::Order;
-  o.bounding = pick<Bounding>("bounding", a.bounding,
+  o.experiment.bounding = pick<Bounding>("bounding", a.bounding,
                               {{"symbolic", Bounding::Symbolic}, {"finite", Bounding::Finite}});
   o.method = pick<Method>("method", a.method,
                           {{"serial", Method::Serial}, {"pessimistic", Method::Pessimistic},
@@ -213,8 +213,8 @@ int run_triangulate(const TriangulateArgs& a) {
   o.locate = pick<Locate>("location", a.locate,
                           {{"auto", Locate::Auto}, {"dag", Locate::Dag}, {"walk", Locate::Walk}, {"root", Locate::Root}});
   o.threads = a.threads;
-  o.paper_locking = a.paper_locking;
-  o.time_threads = !a.no_thread_timing;
+  o.experiment.paper_locking = a.paper_locking;
+  o.experiment.time_threads = !a.no_thread_timing;
   if (a.stats != "" && a.stats != "json" && a.stats != "table")
     throw ridt::InputError("unknown stats format '" + a.stats + "' (use json or table)");
   if (!a.output.empty()) ridt::io::check_triangulation_extension(a.output);
@@ -266,15 +266,20 @@ int main(int argc, char** argv) {
   tri->add_option("--threads", ta.threads,
                   "threads of a threaded method (0: all hardware threads; batch: threads - 1 "
                   "locators and one modifier)");
-  tri->add_flag("--paper-locking", ta.paper_locking,
-                "pessimistic: lock from the leaves' parents, as the paper does");
-  tri->add_flag("--no-thread-timing", ta.no_thread_timing,
-                "threaded methods: do not time critical sections and waiting");
-  tri->add_option("--bounding", ta.bounding, "symbolic (default) or finite");
-  tri->add_option("--k", ta.k, "finite bounding triangle: K = k * box size (default 10)");
   CLI::Option* stats = tri->add_option("--stats", ta.stats, "print counters and times: json (default) or table")
                            ->expected(0, 1);
-  tri->add_flag("--profile", ta.profile, "time location, split and legalization (Fig. 8)");
+  // The paper's experiment switches (Options::experiment), apart in the help.
+  const std::string x = "Experiment (the paper's section 4)";
+  tri->add_flag("--paper-locking", ta.paper_locking, "pessimistic: lock from the leaves' parents, as the paper does")
+      ->group(x);
+  tri->add_flag("--no-thread-timing", ta.no_thread_timing,
+                "threaded methods: do not time critical sections and waiting")
+      ->group(x);
+  tri->add_flag("--profile", ta.profile, "serial: time location, split and legalization (Fig. 8)")->group(x);
+  tri->add_option("--bounding", ta.bounding,
+                  "symbolic (default) or finite (the paper's; can lose hull edges, with a warning)")
+      ->group(x);
+  tri->add_option("--k", ta.k, "finite bounding triangle: K = k * box size (default 10)")->group(x);
 
   std::string dist, gen_out;
   std::uint32_t gen_n = 0;

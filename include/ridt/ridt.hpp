@@ -70,12 +70,9 @@ enum class Bounding {
   Finite,    ///< the paper's (K,0), (0,K), (-K,-K) around the box centre, K = k * box size
 };
 
-/// Options of a triangulation.
-struct Options {
-  Method method = Method::Serial;
-  /// Threads of a threaded method; 0 = the machine's hardware threads. Batch: threads - 1
-  /// locators and one modifier.
-  unsigned threads = 0;
+/// Switches for the paper's experiments (section 4) and their variants. A user who wants the
+/// triangulation leaves them as they are.
+struct Experiment {
   /// Pessimistic: descend outside the lock only to the parents of leaves, as the paper does.
   /// Off (the default), a worker descends to a leaf outside the lock and, inside, continues
   /// only if that leaf has been split meanwhile.
@@ -83,20 +80,32 @@ struct Options {
   /// Threaded methods: time each thread's insertion, critical section and waiting (Tables 2
   /// and 3). Three clock reads a point.
   bool time_threads = true;
+  /// Time the phases of insertion (locate, split, legalize): the paper's Fig. 8. Serial only.
+  bool profile = false;
+  /// The starting triangle: symbolic (the default, the hull always complete) or the paper's
+  /// finite one, which can lose hull edges (Triangulation::warning says so).
+  Bounding bounding = Bounding::Symbolic;
+  double k = 10.0;  ///< K = k * M for Bounding::Finite; k >= 2 keeps every point strictly inside
+};
+
+/// Options of a triangulation. Every choice gives the same triangles; they differ in speed.
+struct Options {
+  Method method = Method::Serial;
+  /// Threads of a threaded method; 0 = the machine's hardware threads. Batch: threads - 1
+  /// locators and one modifier.
+  unsigned threads = 0;
   std::uint64_t seed = 1;  ///< seed of the random insertion order
   Order order = Order::Brio;
   Locate locate = Locate::Auto;
-  Bounding bounding = Bounding::Symbolic;
-  double k = 10.0;  ///< K = k * M for Bounding::Finite; k >= 2 keeps every point strictly inside
   /// Rotate each triangle so its smallest vertex index comes first and sort the triangles:
   /// the output is then byte-identical for every seed and method. Costs a sort.
   bool canonical_order = false;
-  /// Time the phases of insertion (locate, split, legalize): the paper's Fig. 8.
-  bool profile = false;
   /// Called with the share of the points inserted so far (0 to 1), on the calling thread, each
   /// time some 65,536 more are in, and with 1 when all are. It may throw to abandon the run:
   /// the exception reaches the caller of triangulate once every worker has stopped.
   std::function<void(double)> progress;
+  /// The paper's experiment switches (Bounding::Finite makes the result depend on them).
+  Experiment experiment;
 };
 
 /// What one thread did (the paper's Tables 2 and 3, per thread).

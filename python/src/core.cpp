@@ -92,13 +92,13 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   o.order = parse<ridt::Order>({{"brio", ridt::Order::Brio}, {"random", ridt::Order::Random}}, "order", order);
   o.locate = parse<ridt::Locate>({{"auto", ridt::Locate::Auto}, {"dag", ridt::Locate::Dag}, {"walk", ridt::Locate::Walk}, {"root", ridt::Locate::Root}},
                                  "locate", locate);
-  o.bounding = parse<ridt::Bounding>({{"symbolic", ridt::Bounding::Symbolic}, {"finite", ridt::Bounding::Finite}},
+  o.experiment.bounding = parse<ridt::Bounding>({{"symbolic", ridt::Bounding::Symbolic}, {"finite", ridt::Bounding::Finite}},
                                      "bounding", bounding);
   o.threads = threads;
   o.seed = seed;
-  o.k = k;
+  o.experiment.k = k;
   o.canonical_order = canonical;
-  o.time_threads = false;
+  o.experiment.time_threads = false;
   // Called on this thread every 65,536 points: the place to notice Ctrl-C (the signal handler
   // only sets a flag while the GIL is released) and to report progress. An exception thrown
   // here abandons the run and reaches Python once every worker has stopped.
