@@ -184,114 +184,126 @@ void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std:
   }
 }
 
-Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
-                     const std::vector<DuplicateHit>& duplicates, const Options& options,
-                     unsigned threads) {
-  Triangulation out;
-  const std::uint32_t n = kernel.n();
-  TriangleStore& tris = kernel.triangles_for_finish();
-  const std::uint32_t records = tris.size();
+namespace {
 
-  const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
+// Runs body(w) for w in [0, count), each on its own thread, the caller taking w = 0.
+template <class Body>
+void on_threads(unsigned count, Body&& body) {
+  std::vector<std::jthread> pool;
+  for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
+  body(0u);
+}  // the pool joins on leaving
 
-  // Ids 1 .. kMaxOwner are never written (mesh.hpp).
-  auto unused = [](TriangleId t) { return t != 0 && t < kFirstChild; };
-  auto kept = [&](const Triangle& r) {
-    return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n;
-  };
+// The records of the history DAG that are output triangles (leaves without a bounding vertex):
+// a bit for each record and, for each word of 64 records, how many kept records come before
+// it. A kept record's new id is its rank among the kept ones: the kept records before its word
+// and those before it in the word (a popcount). The bits and ranks take 12 bytes for 64
+// records and stay in cache, where reading the neighbours' records for their ids would miss
+// it at every read.
+//
+// The work is shared in blocks of 1024 words (65,536 records) taken in turn from a counter:
+// the kept records crowd the later blocks, the last insertions' records, so equal shares of the
+// records would be unequal work. A run that fits in one block runs on the caller alone.
+class KeptRecords {
+ public:
+  KeptRecords(TriangleId records, unsigned threads)
+      : records_(records),
+        words_((std::size_t{records} + 63) / 64),
+        blocks_((words_ + kBlockWords - 1) / kBlockWords),
+        workers_(static_cast<unsigned>(std::clamp<std::size_t>(blocks_, 1, std::max(threads, 1u)))),
+        bits_(words_),
+        rank_before_(words_ + 1, 0) {}
 
-  // Pass 1, on `threads` threads, block by block (blocks of 64-record words, taken in turn
-  // from a shared counter: the kept records crowd the later blocks, the last insertions' records,
-  // so equal shares of the records would be unequal work): a bit for each kept record, and
-  // the kept records moved to the front of their block, in order, with the input indices that
-  // stand for their vertices. A record moves only down and is read before
-  // anything is written over it. A kept triangle's new id is its rank among the kept ones:
-  // the kept records before its word (rank_before) and those before it in the word (a
-  // popcount). The bits and ranks take 12 bytes for 64 records and stay in cache, where
-  // reading the neighbours' records for their ids would miss it at every read.
-  const std::size_t words = (std::size_t{records} + 63) / 64;
-  std::vector<std::uint64_t> kept_bits(words);
-  std::vector<std::uint32_t> rank_before(words + 1, 0);
-  constexpr std::size_t kBlockWords = 1024;  // 65,536 records
-  const std::size_t blocks = (words + kBlockWords - 1) / kBlockWords;
-  // A thread for each block at most: a run that fits in one block runs on the caller alone.
-  const auto workers = static_cast<unsigned>(std::clamp<std::size_t>(blocks, 1, std::max(threads, 1u)));
-  std::vector<std::uint64_t> made(workers, 0);  // records that are triangles (DAG nodes)
-  auto in_parallel = [&](unsigned count, auto&& body) {
-    std::vector<std::jthread> pool;
-    for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
-    body(0u);
-  };  // the pool joins on leaving
-  // Block b's words are [first_word(b), first_word(b + 1)), its records those of its words.
-  auto first_word = [&](std::size_t b) { return std::min(b * kBlockWords, words); };
-  auto range = [&](std::size_t b) {
-    return std::pair(static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b), records)),
-                     static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b + 1), records)));
-  };
-  std::atomic<std::size_t> next_block{0};
-  in_parallel(workers, [&](unsigned w) {
-    std::uint64_t m = 0;
-    // relaxed: the blocks need only be distinct; the joins order the results.
-    for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < blocks;) {
+  // Pass 1: marks the kept records and moves each block's kept records to its front, in order,
+  // with the input indices that stand for their vertices. A record moves only down and is read
+  // before anything is written over it. Returns how many records are triangles (DAG nodes).
+  std::uint64_t compact(TriangleStore& tris, std::uint32_t n, const Standing& standing) {
+    // Ids 1 .. kMaxOwner are never written (mesh.hpp).
+    auto unused = [](TriangleId t) { return t != 0 && t < kFirstChild; };
+    auto kept = [&](const Triangle& r) { return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n; };
+    std::vector<std::uint64_t> made(workers_, 0);
+    for_each_block([&](unsigned w, std::size_t b) {
       const auto [begin, end] = range(b);
       TriangleId to = begin;
-      // The input numbers of the vertices are read at random: those of a record kAhead on are
+      // The input indices of the vertices are read at random: those of a record kAhead on are
       // prefetched, so the misses overlap.
       constexpr TriangleId kAhead = 16;
       for (std::size_t k = first_word(b); k < first_word(b + 1); ++k) {
         std::uint64_t bits = 0;
-        const TriangleId stop = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records));
-        for (TriangleId t = static_cast<TriangleId>(64 * k); t < stop; ++t) {
+        const auto stop = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records_));
+        for (auto t = static_cast<TriangleId>(64 * k); t < stop; ++t) {
           if (t + kAhead < end && !unused(t + kAhead) && kept(tris[t + kAhead]))
-            for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&input_index[v]);
+            for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&standing.input_index[v]);
           if (unused(t)) continue;
           const Triangle& r = tris[t];
-          m += r.v[0] != kNone;
+          made[w] += r.v[0] != kNone;
           if (!kept(r)) continue;
           bits |= std::uint64_t{1} << (t & 63);
-          const Triangle front{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])},
-                               {r.n[0], r.n[1], r.n[2]}, 0};
-          tris[to++] = front;
+          tris[to++] = Triangle{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])}, {r.n[0], r.n[1], r.n[2]}, 0};
         }
-        kept_bits[k] = bits;
-        rank_before[k + 1] = static_cast<std::uint32_t>(ones(bits));
+        bits_[k] = bits;
+        rank_before_[k + 1] = static_cast<std::uint32_t>(ones(bits));
       }
-    }
-    made[w] = m;
-  });
-  std::partial_sum(rank_before.begin(), rank_before.end(), rank_before.begin());
-  const std::uint32_t count = rank_before[words];
-  auto is_kept = [&](TriangleId t) { return (kept_bits[t >> 6] >> (t & 63)) & 1; };
-  auto new_id = [&](TriangleId t) {
-    const std::uint64_t below = kept_bits[t >> 6] & ((std::uint64_t{1} << (t & 63)) - 1);
-    return static_cast<std::int32_t>(rank_before[t >> 6] + ones(below));
-  };
-  // The kept records of block b, moved to [begin, begin + moved(b)).
-  auto moved = [&](std::size_t b) { return rank_before[first_word(b + 1)] - rank_before[first_word(b)]; };
+    });
+    std::partial_sum(rank_before_.begin(), rank_before_.end(), rank_before_.begin());
+    return std::accumulate(made.begin(), made.end(), std::uint64_t{0});
+  }
 
-  // Pass 2: the moved records copied out, range after range, with their neighbours' new ids
-  // (from the bits; -1 across the hull), and the records' pages given back behind the copy.
-  // The output is reserved, not filled, so its pages are first touched as it grows: with the
-  // records' pages given back meanwhile, the peak is that of the records and not of the
-  // records and the output together. With two threads or more, one copies the vertices and
-  // another the neighbours, and a page goes once both are past it. The points are no longer
-  // needed (but for the finite bounding triangle's check below): their copy goes first.
-  if (options.experiment.bounding == Bounding::Symbolic) kernel.release_points();
-  const unsigned copiers = workers > 1 ? 2 : 1;
-  auto neighbour_id = [&](TriangleId u) { return u != kNone && is_kept(u) ? new_id(u) : kNoNeighbor; };
-  // With two copiers, the neighbours' new ids would make the neighbour copier's work twice the
-  // vertex copier's: they are written into the moved records first, on every worker, block
-  // by block, and then both copiers only copy.
-  if (copiers == 2) {
-    next_block = 0;
-    in_parallel(workers, [&](unsigned) {
-      for (std::size_t b; (b = next_block.fetch_add(1, std::memory_order_relaxed)) < blocks;)
-        for (TriangleId t = range(b).first, stop = t + moved(b); t < stop; ++t)
-          for (TriangleId& u : tris[t].n) u = static_cast<TriangleId>(neighbour_id(u));
+  // After compact(): the moved records' neighbours given as their new ids (-1 across the hull).
+  void renumber_neighbours(TriangleStore& tris) {
+    for_each_block([&](unsigned, std::size_t b) {
+      for (TriangleId t = range(b).first, stop = t + moved(b); t < stop; ++t)
+        for (TriangleId& u : tris[t].n) u = static_cast<TriangleId>(neighbour_id(u));
     });
   }
+
+  // body(worker, block) for every block, on workers() threads.
+  template <class Body>
+  void for_each_block(Body&& body) {
+    std::atomic<std::size_t> next{0};
+    on_threads(workers_, [&](unsigned w) {
+      // relaxed: the blocks need only be distinct; the joins order the results.
+      for (std::size_t b; (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks_;) body(w, b);
+    });
+  }
+
+  std::uint32_t count() const { return rank_before_[words_]; }
+  unsigned workers() const { return workers_; }
+  std::size_t blocks() const { return blocks_; }
+  // Block b's records; after compact(), its kept ones are [first, first + moved(b)).
+  std::pair<TriangleId, TriangleId> range(std::size_t b) const {
+    return {static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b), records_)),
+            static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b + 1), records_))};
+  }
+  TriangleId moved(std::size_t b) const { return rank_before_[first_word(b + 1)] - rank_before_[first_word(b)]; }
+  // Record u's output id as a neighbour: -1 for none or a record that is not kept.
+  std::int32_t neighbour_id(TriangleId u) const {
+    if (u == kNone || !((bits_[u >> 6] >> (u & 63)) & 1)) return kNoNeighbor;
+    const std::uint64_t below = bits_[u >> 6] & ((std::uint64_t{1} << (u & 63)) - 1);
+    return static_cast<std::int32_t>(rank_before_[u >> 6] + ones(below));
+  }
+
+ private:
+  static constexpr std::size_t kBlockWords = 1024;
+  std::size_t first_word(std::size_t b) const { return std::min(b * kBlockWords, words_); }
+
+  TriangleId records_;
+  std::size_t words_, blocks_;
+  unsigned workers_;
+  std::vector<std::uint64_t> bits_;
+  std::vector<std::uint32_t> rank_before_;
+};
+
+// Pass 2: the moved records copied out, block after block, into the output's triangles and
+// neighbours, and the records' pages given back behind the copy. The output is reserved, not
+// filled, so its pages are first touched as it grows: with the records' pages given back
+// meanwhile, the peak is that of the records and not of the records and the output together.
+// With two workers or more, one copies the vertices and another the neighbours (already
+// renumbered), and a page goes once both are past it. Returns the hull's edges.
+std::vector<std::pair<VertexId, VertexId>> copy_out(TriangleStore& tris, const KeptRecords& kept,
+                                                    bool renumbered, Triangulation& out) {
+  const unsigned copiers = renumbered ? 2 : 1;
   std::atomic<std::uint64_t> copied[2] = {0, 0};  // each copier's progress, in records
-  // The records' pages go back behind the copy, a step at a time.
   const std::uint64_t step = tris.release_step();
   std::atomic<std::uint64_t> released{0};  // records whose pages are given back
   auto release_behind = [&]() {
@@ -304,10 +316,10 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   // Copier c writes the vertices (c = 0, and the neighbours too when alone) or the neighbours,
   // and the one that writes the neighbours finds the hull's edges.
   std::vector<std::pair<VertexId, VertexId>> hull_edges;
-  in_parallel(copiers, [&](unsigned c) {
+  on_threads(copiers, [&](unsigned c) {
     const bool vertices = c == 0, neighbours = c == 1 || copiers == 1;
-    if (vertices) out.triangles.reserve(3 * std::size_t{count});
-    if (neighbours) out.neighbors.reserve(3 * std::size_t{count});
+    if (vertices) out.triangles.reserve(3 * std::size_t{kept.count()});
+    if (neighbours) out.neighbors.reserve(3 * std::size_t{kept.count()});
     constexpr std::size_t kBlock = 4096;  // triangles copied out at once
     std::vector<VertexId> vs(vertices ? 3 * kBlock : 0);
     std::vector<std::int32_t> ns(neighbours ? 3 * kBlock : 0);
@@ -320,14 +332,14 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       copied[c].store(done, std::memory_order_release);
       release_behind();
     };
-    for (std::size_t b = 0; b < blocks; ++b) {
-      const auto [begin, end] = range(b);
-      for (TriangleId t = begin; t < begin + moved(b); ++t) {
+    for (std::size_t b = 0; b < kept.blocks(); ++b) {
+      const auto [begin, end] = kept.range(b);
+      for (TriangleId t = begin; t < begin + kept.moved(b); ++t) {
         const Triangle& r = tris[t];
         for (int i = 0; i < 3; ++i, ++k) {
           if (vertices) vs[k] = r.v[i];
           if (!neighbours) continue;
-          ns[k] = copiers == 2 ? static_cast<std::int32_t>(r.n[i]) : neighbour_id(r.n[i]);
+          ns[k] = renumbered ? static_cast<std::int32_t>(r.n[i]) : kept.neighbour_id(r.n[i]);
           if (ns[k] == kNoNeighbor) hull_edges.emplace_back(r.v[next(i)], r.v[prev(i)]);
         }
         if (k == 3 * kBlock) flush(t + 1);
@@ -335,12 +347,29 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
       flush(end);
     }
   });
+  return hull_edges;
+}
 
+}  // namespace
+
+Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
+                     const std::vector<DuplicateHit>& duplicates, const Options& options,
+                     unsigned threads) {
+  Triangulation out;
+  const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
+  TriangleStore& tris = kernel.triangles_for_finish();
+  KeptRecords kept(tris.size(), threads);
+  out.stats.dag_nodes = kept.compact(tris, kernel.n(), standing);
+  // The points are no longer needed (but for the finite bounding triangle's check below).
+  if (options.experiment.bounding == Bounding::Symbolic) kernel.release_points();
+  // With two copiers, the neighbours' new ids would make the neighbour copier's work twice the
+  // vertex copier's: they are written into the moved records first, on every worker.
+  const bool renumber = kept.workers() > 1;
+  if (renumber) kept.renumber_neighbours(tris);
+  std::vector<std::pair<VertexId, VertexId>> hull_edges = copy_out(tris, kept, renumber, out);
   out.hull = trace_hull(hull_edges);
-
-  out.stats.dag_nodes = std::accumulate(made.begin(), made.end(), std::uint64_t{0});
-  set_warnings(out, n, count, hull_edges.size(), options, [&](std::vector<Point>& pts) {
-    for (VertexId v = 0; v < n; ++v) pts[input_index[v]] = kernel.point(v);
+  set_warnings(out, kernel.n(), kept.count(), hull_edges.size(), options, [&](std::vector<Point>& pts) {
+    for (VertexId v = 0; v < kernel.n(); ++v) pts[input_index[v]] = kernel.point(v);
   });
   return out;
 }

@@ -1,6 +1,7 @@
 // The walking kernel's mesh, its serial driver and its finish (cavity.hpp).
 #include <algorithm>
 #include <atomic>
+#include <numeric>
 #include <chrono>
 #include <stdexcept>
 #include <thread>
@@ -119,103 +120,127 @@ void Mesh::give_back(SlotPool& pool) {
   pool.next = pool.end;
 }
 
-Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input_index,
-                             const std::vector<DuplicateHit>& duplicates, const Options& options,
-                             unsigned threads) {
-  Triangulation out;
-  const std::uint32_t n = mesh.vertices().n();
-  const TriangleId slots = mesh.slots();
-  std::vector<VertexId>& v = mesh.vertex_array();
-  std::vector<Link>& link = mesh.link_array();
-  const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
+namespace {
 
-  // The output is the mesh's own arrays: the triangles of real vertices keep their slots,
-  // and those past the end are moved into the gaps that the others (bounding vertices, free
-  // slots) leave below it. A bit for each kept slot first.
-  const std::size_t words = (std::size_t{slots} + 63) / 64;
-  std::vector<std::uint64_t> kept(words, 0);
-  const unsigned workers = std::clamp<unsigned>(static_cast<unsigned>(words / 4096), 1, std::max(threads, 1u));
-  auto in_parallel = [&](auto&& body) {
-    std::vector<std::jthread> pool;
-    for (unsigned w = 1; w < workers; ++w) pool.emplace_back(body, w);
-    body(0u);
-  };
-  auto share = [&](unsigned w, std::size_t total) {
-    return std::pair(total * w / workers, total * (w + 1) / workers);
-  };
-  std::vector<std::uint64_t> kept_in(workers, 0);
-  in_parallel([&](unsigned w) {
-    const auto [first, last] = share(w, words);
-    std::uint64_t count = 0;
-    for (std::size_t k = first; k < last; ++k) {
-      std::uint64_t bits = 0;
-      const std::size_t end = std::min<std::size_t>(64 * k + 64, slots);
-      for (std::size_t t = 64 * k; t < end; ++t)
-        if (v[3 * t] < n && v[3 * t + 1] < n && v[3 * t + 2] < n) bits |= std::uint64_t{1} << (t & 63);
-      kept[k] = bits;
-      count += static_cast<std::uint64_t>(__builtin_popcountll(bits));
-    }
-    kept_in[w] = count;
-  });
-  std::uint64_t total = 0;
-  for (const std::uint64_t c : kept_in) total += c;
-  const auto count = static_cast<TriangleId>(total);
-  auto is_kept = [&](TriangleId t) { return (kept[t >> 6] >> (t & 63)) & 1; };
-  // The gaps below `count` and the kept slots at or above it, as many of each, in order: the
-  // i-th of the latter moves into the i-th gap.
-  std::vector<TriangleId> gaps, movers;
-  for (TriangleId t = 0; t < count; ++t)
-    if (!is_kept(t)) gaps.push_back(t);
-  for (TriangleId t = count; t < slots; ++t)
-    if (is_kept(t)) movers.push_back(t);
-  auto new_id = [&](TriangleId u) -> std::int32_t {
-    if (u < count) return static_cast<std::int32_t>(u);
-    const auto it = std::lower_bound(movers.begin(), movers.end(), u);
-    return static_cast<std::int32_t>(gaps[static_cast<std::size_t>(it - movers.begin())]);
-  };
-  // Slot t in output terms: input indices, neighbours' new ids (-1 across the hull), and the
-  // hull's edges found on the way.
-  auto convert = [&](TriangleId t, VertexId* tv, Link* tl, std::vector<std::pair<VertexId, VertexId>>& hull) {
+// Runs body(w) for w in [0, count), each on its own thread, the caller taking w = 0.
+template <class Body>
+void on_threads(unsigned count, Body&& body) {
+  std::vector<std::jthread> pool;
+  for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
+  body(0u);
+}  // the pool joins on leaving
+
+// The slots of the walking mesh that hold output triangles (no bounding vertex), a bit each,
+// and where the output puts them: the output is the mesh's own arrays, so a kept slot below
+// count() keeps its place, and the i-th kept slot at or above count() moves into the i-th gap
+// below it (a slot of the bounding vertices, or a free one).
+class KeptSlots {
+ public:
+  KeptSlots(const VertexId* v, std::uint32_t n, TriangleId slots, unsigned threads)
+      : words_((std::size_t{slots} + 63) / 64),
+        workers_(std::clamp<unsigned>(static_cast<unsigned>(words_ / 4096), 1, std::max(threads, 1u))),
+        bits_(words_, 0) {
+    std::vector<std::uint64_t> kept_in(workers_, 0);
+    on_threads(workers_, [&](unsigned w) {
+      const auto [first, last] = share(w, words_);
+      for (std::size_t k = first; k < last; ++k) {
+        std::uint64_t bits = 0;
+        const std::size_t end = std::min<std::size_t>(64 * k + 64, slots);
+        for (std::size_t t = 64 * k; t < end; ++t)
+          if (v[3 * t] < n && v[3 * t + 1] < n && v[3 * t + 2] < n) bits |= std::uint64_t{1} << (t & 63);
+        bits_[k] = bits;
+        kept_in[w] += static_cast<std::uint64_t>(__builtin_popcountll(bits));
+      }
+    });
+    count_ = static_cast<TriangleId>(std::accumulate(kept_in.begin(), kept_in.end(), std::uint64_t{0}));
+    for (TriangleId t = 0; t < count_; ++t)
+      if (!kept(t)) gaps_.push_back(t);
+    for (TriangleId t = count_; t < slots; ++t)
+      if (kept(t)) movers_.push_back(t);
+  }
+
+  TriangleId count() const { return count_; }
+  unsigned workers() const { return workers_; }
+  bool kept(TriangleId t) const { return (bits_[t >> 6] >> (t & 63)) & 1; }
+  // Kept slot u's output id.
+  std::int32_t new_id(TriangleId u) const {
+    if (u < count_) return static_cast<std::int32_t>(u);
+    const auto it = std::lower_bound(movers_.begin(), movers_.end(), u);
+    return static_cast<std::int32_t>(gaps_[static_cast<std::size_t>(it - movers_.begin())]);
+  }
+  const std::vector<TriangleId>& gaps() const { return gaps_; }
+  const std::vector<TriangleId>& movers() const { return movers_; }
+  // Worker w's part of [0, total).
+  std::pair<std::size_t, std::size_t> share(unsigned w, std::size_t total) const {
+    return {total * w / workers_, total * (w + 1) / workers_};
+  }
+
+ private:
+  std::size_t words_;
+  unsigned workers_;
+  std::vector<std::uint64_t> bits_;
+  TriangleId count_ = 0;
+  std::vector<TriangleId> gaps_, movers_;
+};
+
+// Rewrites each kept slot in output terms, in place or into its gap: input indices for the
+// vertices, the neighbours' new ids (-1 across the hull). Returns the hull's edges.
+std::vector<std::pair<VertexId, VertexId>> convert_in_place(Mesh& mesh, const KeptSlots& kept,
+                                                            const Standing& standing) {
+  const std::uint32_t n = mesh.vertices().n();
+  VertexId* const v = mesh.vertex_array().data();
+  Link* const link = mesh.link_array().data();
+  auto convert = [&](TriangleId t, TriangleId to, std::vector<std::pair<VertexId, VertexId>>& hull) {
     VertexId w[3];
     std::int32_t nb[3];
     for (int i = 0; i < 3; ++i) {
       w[i] = standing(v[3 * std::size_t{t} + i]);
       const Link l = link[3 * std::size_t{t} + i];
       const auto u = static_cast<TriangleId>(l / 3);
-      nb[i] = l != kNoLink && is_kept(u) ? new_id(u) : kNoNeighbor;
+      nb[i] = l != kNoLink && kept.kept(u) ? kept.new_id(u) : kNoNeighbor;
     }
     for (int i = 0; i < 3; ++i) {
-      tv[i] = w[i], tl[i] = nb[i];
+      v[3 * std::size_t{to} + i] = w[i], link[3 * std::size_t{to} + i] = static_cast<Link>(nb[i]);
       if (nb[i] == kNoNeighbor) hull.emplace_back(w[next3(i)], w[prev3(i)]);
     }
   };
-  std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(workers);
-  in_parallel([&](unsigned w) {
-    const auto [first, last] = share(w, count);
+  std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(kept.workers());
+  on_threads(kept.workers(), [&](unsigned w) {
+    const auto [first, last] = kept.share(w, kept.count());
     // The input indices of the vertices are read at random: those of a triangle some way on
     // are asked for ahead, so that the misses overlap.
     constexpr std::size_t kAhead = 16;
     for (std::size_t t = first; t < last; ++t) {
       if (t + kAhead < last)
-        for (int i = 0; i < 3; ++i) {
-          const VertexId u = v[3 * (t + kAhead) + i];
-          if (u < n) __builtin_prefetch(&input_index[u]);
-        }
-      if (is_kept(static_cast<TriangleId>(t)))
-        convert(static_cast<TriangleId>(t), &v[3 * t], &link[3 * t], hull_parts[w]);
+        for (int i = 0; i < 3; ++i)
+          if (const VertexId u = v[3 * (t + kAhead) + i]; u < n) __builtin_prefetch(&standing.input_index[u]);
+      if (kept.kept(static_cast<TriangleId>(t)))
+        convert(static_cast<TriangleId>(t), static_cast<TriangleId>(t), hull_parts[w]);
     }
   });
-  for (std::size_t i = 0; i < movers.size(); ++i)
-    convert(movers[i], &v[3 * std::size_t{gaps[i]}], &link[3 * std::size_t{gaps[i]}], hull_parts[0]);
+  // The movers last: their slots lie at or above count(), which no worker wrote.
+  for (std::size_t i = 0; i < kept.movers().size(); ++i) convert(kept.movers()[i], kept.gaps()[i], hull_parts[0]);
   std::vector<std::pair<VertexId, VertexId>> hull_edges;
   for (auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
+  return hull_edges;
+}
 
-  v.resize(3 * std::size_t{count});
-  link.resize(3 * std::size_t{count});
-  out.triangles = std::move(v);
-  out.neighbors = std::move(link);
+}  // namespace
+
+Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input_index,
+                             const std::vector<DuplicateHit>& duplicates, const Options& options,
+                             unsigned threads) {
+  Triangulation out;
+  const std::uint32_t n = mesh.vertices().n();
+  const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
+  const KeptSlots kept(mesh.vertex_array().data(), n, mesh.slots(), threads);
+  std::vector<std::pair<VertexId, VertexId>> hull_edges = convert_in_place(mesh, kept, standing);
+  mesh.vertex_array().resize(3 * std::size_t{kept.count()});
+  mesh.link_array().resize(3 * std::size_t{kept.count()});
+  out.triangles = std::move(mesh.vertex_array());
+  out.neighbors = std::move(mesh.link_array());
   out.hull = trace_hull(hull_edges);
-  set_warnings(out, n, count, hull_edges.size(), options, [&](std::vector<Point>& pts) {
+  set_warnings(out, n, kept.count(), hull_edges.size(), options, [&](std::vector<Point>& pts) {
     for (VertexId u = 0; u < n; ++u) pts[input_index[u]] = mesh.vertices()[u];
   });
   return out;
