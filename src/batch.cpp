@@ -113,9 +113,8 @@ void insert_batch(Kernel& kernel, unsigned threads, bool from_root, std::vector<
   const std::vector<std::uint32_t> key = from_root ? std::vector<std::uint32_t>{} : hilbert_keys(&kernel.point(0), n);
   Queue q;
   std::vector<Locator> locators(threads - 1);
-  ThreadStats modifier;
-  modifier.role = "modifier";
-  Scratch scratch;
+  WorkerState<Scratch> modifier;
+  modifier.stats.role = "modifier";
   Clock::duration idle{};
   std::uint64_t depth_sum = 0, stale = 0;
   const auto t_start = Clock::now();
@@ -159,9 +158,9 @@ void insert_batch(Kernel& kernel, unsigned threads, bool from_root, std::vector<
         if (const Slot* a = ready(p + kRing)) kernel.prefetch_ring(a->node);
         stale += !is_leaf(kernel.triangles()[hint].load_child());
         const TriangleId leaf = kernel.descend(hint, p);
-        const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
-        if (hit != kNone) duplicates.push_back({p, hit});
-        ++modifier.points;
+        const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, modifier.scratch);
+        if (hit != kNone) modifier.duplicates.push_back({p, hit});
+        ++modifier.stats.points;
       }
     } catch (...) {
       q.stop.store(true, std::memory_order_relaxed);
@@ -170,21 +169,17 @@ void insert_batch(Kernel& kernel, unsigned threads, bool from_root, std::vector<
   }
   for (const Locator& l : locators)
     if (l.error) std::rethrow_exception(l.error);
-  modifier.time_insert_s = seconds(Clock::now() - t_start);
-  modifier.time_wait_s = seconds(idle);
-  stats.flips += scratch.flips;
-  stats.edge_splits += scratch.edge_splits;
-  stats.time_idle_s = seconds(idle);
+  // The modifier waits for hints (idle), the locators for room in the queue (stalls).
+  modifier.stats.time_wait_s = stats.time_idle_s = seconds(idle);
+  add_worker(modifier, 0.0, 0.0, seconds(Clock::now() - t_start), duplicates, stats);
   stats.stale_hints = stale;
   stats.queue_depth_mean = n > 0 ? static_cast<double>(depth_sum) / n : 0.0;
-  stats.per_thread.push_back(modifier);
   for (Locator& l : locators) {
     l.stats.role = "locator";
     stats.time_stall_s += l.stats.time_wait_s;
     stats.time_wait_s += l.stats.time_wait_s;
     stats.per_thread.push_back(l.stats);
   }
-  stats.time_wait_s += stats.time_idle_s;
 }
 
 }  // namespace ridt::detail

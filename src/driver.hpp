@@ -19,6 +19,41 @@ struct DuplicateHit {
   VertexId vertex;
 };
 
+/// What each thread of a threaded method keeps for itself, on its own cache lines: one type for
+/// every method. `KernelScratch` is the kernel's: Scratch on the DAG (kernel.hpp),
+/// CavityScratch on the walking mesh (cavity.hpp).
+template <class KernelScratch>
+struct alignas(64) WorkerState {
+  KernelScratch scratch;
+  std::vector<DuplicateHit> duplicates;  ///< the points it found equal to a vertex
+  ThreadStats stats;                     ///< its counters, and times it measured in seconds
+  /// Time in its critical sections and waiting, in ticks (threads.hpp), when timed.
+  std::uint64_t critical_ticks = 0, wait_ticks = 0;
+};
+
+/// Adds what one worker did to the run's results: its duplicates, counters and times (the
+/// ticks at `tick` seconds each, plus `extra_wait_s`, e.g. at the ends of rounds); `total` is
+/// the insertion's wall time.
+template <class KernelScratch>
+void add_worker(const WorkerState<KernelScratch>& w, double tick, double extra_wait_s, double total,
+                std::vector<DuplicateHit>& duplicates, Stats& stats) {
+  duplicates.insert(duplicates.end(), w.duplicates.begin(), w.duplicates.end());
+  ThreadStats ts = w.stats;
+  ts.time_insert_s = total;
+  ts.time_critical_s += static_cast<double>(w.critical_ticks) * tick;
+  ts.time_wait_s += static_cast<double>(w.wait_ticks) * tick + extra_wait_s;
+  stats.time_critical_s += ts.time_critical_s;
+  stats.time_wait_s += ts.time_wait_s;
+  stats.retries += ts.retries;
+  stats.per_thread.push_back(std::move(ts));
+  if constexpr (requires { w.scratch.edge_splits; }) {  // the DAG's kernel: flips and edge splits
+    stats.flips += w.scratch.flips;
+    stats.edge_splits += w.scratch.edge_splits;
+  } else {  // the walking mesh: the triangles each cavity replaced beyond the first
+    stats.flips += w.scratch.replaced;
+  }
+}
+
 /// Options::progress, called on the calling thread each time some 2^16 more points are in.
 class Progress {
  public:

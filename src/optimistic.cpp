@@ -27,20 +27,13 @@
 namespace ridt::detail {
 namespace {
 
-struct alignas(64) Worker {  // each on its own cache lines
-  explicit Worker(std::uint64_t seed) : backoff(seed) {}
-  Scratch scratch;
-  std::vector<DuplicateHit> duplicates;
-  ThreadStats stats;
-  std::vector<TriangleId> held;    // taken in this attempt
-  std::vector<TriangleId> cavity;  // held triangles whose circumcircle holds p
-  Backoff backoff;
-  std::uint64_t holding = 0, backing_off = 0;  // ticks (threads.hpp)
-};
+using Worker = WorkerState<Scratch>;
 
-class Inserter {
+// One worker's insertions, with what it holds in the current attempt.
+class alignas(64) Inserter {  // each on its own cache lines
  public:
-  Inserter(Kernel& kernel, Worker& w) : kernel_(kernel), w_(w), me_(w.scratch.owner) {}
+  Inserter(Kernel& kernel, Worker& w, std::uint64_t seed)
+      : kernel_(kernel), w_(w), me_(w.scratch.owner), backoff_(seed) {}
 
   /// Inserts p, starting the descent at `start` (a node whose region holds p).
   template <bool kTimed>
@@ -55,27 +48,27 @@ class Inserter {
       }
       std::uint64_t t0 = 0;
       if constexpr (kTimed) t0 = ticks();
-      w_.held.assign(1, t);
+      held_.assign(1, t);
       const Kernel::Location where = kernel_.classify(t, p);
       if (where.where == Kernel::Where::OnVertex) {
         w_.duplicates.push_back({p, kernel_.triangles()[t].v[where.i]});
         release_all();
-        if constexpr (kTimed) w_.holding += ticks() - t0;
+        if constexpr (kTimed) w_.critical_ticks += ticks() - t0;
         return;
       }
       if (!acquire_region(where, p)) {
         release_all();
-        if constexpr (kTimed) w_.holding += ticks() - t0;
+        if constexpr (kTimed) w_.critical_ticks += ticks() - t0;
         back_off<kTimed>();
         continue;  // t may still be the leaf: the descent then stops at once
       }
-      w_.scratch.cavity = &w_.cavity;
+      w_.scratch.cavity = &cavity_;
       kernel_.split_at(where, p, w_.scratch);
       kernel_.legalize(p, w_.scratch);
       w_.scratch.cavity = nullptr;
       release_all();
-      if constexpr (kTimed) w_.holding += ticks() - t0;
-      w_.backoff.reset();
+      if constexpr (kTimed) w_.critical_ticks += ticks() - t0;
+      backoff_.reset();
       return;
     }
   }
@@ -86,14 +79,14 @@ class Inserter {
   // held triangle is a leaf: changing it would relink the held one, which needs that one.
   bool acquire_region(const Kernel::Location& where, VertexId p) {
     const TriangleStore& tris = kernel_.triangles();
-    w_.cavity.assign(1, where.t);
+    cavity_.assign(1, where.t);
     if (where.where == Kernel::Where::OnEdge) {
       const TriangleId u = tris[where.t].n[where.i];
       if (!take(u)) return false;
-      w_.cavity.push_back(u);  // p lies on its edge, so inside its circumcircle
+      cavity_.push_back(u);  // p lies on its edge, so inside its circumcircle
     }
-    for (std::size_t k = 0; k < w_.cavity.size(); ++k) {
-      const Triangle& r = tris[w_.cavity[k]];
+    for (std::size_t k = 0; k < cavity_.size(); ++k) {
+      const Triangle& r = tris[cavity_[k]];
       // Beyond the first ring, which the look-ahead brought in, the neighbours' records were
       // asked for when r joined (below) and have had the time to arrive: ask for their
       // vertices now, so the three incircle tests below wait for memory once, not in turn.
@@ -107,7 +100,7 @@ class Inserter {
         const Triangle& ru = tris[u];
         // The same test as legalization, so the region is exactly what it will touch.
         if (kernel_.incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0) {
-          w_.cavity.push_back(u);
+          cavity_.push_back(u);
           // Its neighbours are taken and tested when its turn comes: ask for their records
           // now, for writing (a compare-and-swap on a line not held exclusive waits for it,
           // and nothing after it starts meanwhile). Without this, at 10^6 uniform points in
@@ -122,16 +115,16 @@ class Inserter {
 
   bool take(TriangleId u) {
     if (!kernel_.try_acquire(u, me_)) return false;
-    w_.held.push_back(u);
+    held_.push_back(u);
     return true;
   }
 
   // Gives back what this attempt took and the triangles it made (a triangle it killed holds
   // its child link and stays as it is).
   void release_all() {
-    for (const TriangleId t : w_.held) kernel_.release(t, me_);
+    for (const TriangleId t : held_) kernel_.release(t, me_);
     for (const TriangleId t : w_.scratch.made) kernel_.release(t, me_);
-    w_.held.clear();
+    held_.clear();
     w_.scratch.made.clear();
   }
 
@@ -140,21 +133,23 @@ class Inserter {
     ++w_.stats.retries;
     std::uint64_t t0 = 0;
     if constexpr (kTimed) t0 = ticks();
-    w_.backoff.pause();
-    if constexpr (kTimed) w_.backing_off += ticks() - t0;
+    backoff_.pause();
+    if constexpr (kTimed) w_.wait_ticks += ticks() - t0;
   }
 
   Kernel& kernel_;
   Worker& w_;
   const std::uint32_t me_;
+  std::vector<TriangleId> held_;    // taken in this attempt
+  std::vector<TriangleId> cavity_;  // held triangles whose circumcircle holds p
+  Backoff backoff_;
 };
 
 // The points [first, end), a chunk of a round; hint[v - first] holds point v, or hint is null
 // and every descent starts at the root with no look-ahead (Locate::Root).
 template <bool kTimed>
-void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId* hint,
+void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId* hint, Inserter& inserter,
                   Worker& worker) {
-  Inserter inserter(kernel, worker);
   if (hint == nullptr) {
     for (VertexId p = first; p < end; ++p) inserter.insert<kTimed>(p, Kernel::kRoot);
   } else {
@@ -168,12 +163,13 @@ void insert_chunk(Kernel& kernel, VertexId first, VertexId end, const TriangleId
 
 void insert_optimistic(Kernel& kernel, unsigned threads, bool from_root, bool timed,
                        std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
-  std::vector<Worker> workers;
-  workers.reserve(threads);
+  std::vector<Worker> workers(threads);
+  std::vector<Inserter> inserters;
+  inserters.reserve(threads);
   for (unsigned w = 0; w < threads; ++w) {
-    workers.emplace_back(w + 1);
     workers[w].scratch.owner = w + 1;  // 0 means "free" (mesh.hpp)
     workers[w].scratch.pooled = true;
+    inserters.emplace_back(kernel, workers[w], /*seed=*/w + 1);
   }
   std::vector<Clock::duration> barrier_wait;
   const auto t_start = Clock::now();
@@ -181,18 +177,16 @@ void insert_optimistic(Kernel& kernel, unsigned threads, bool from_root, bool ti
   run_in_rounds(kernel, threads, from_root, barrier_wait, progress,
                 [&](unsigned w, VertexId first, VertexId end, const TriangleId* hint) {
                   if (timed)
-                    insert_chunk<true>(kernel, first, end, hint, workers[w]);
+                    insert_chunk<true>(kernel, first, end, hint, inserters[w], workers[w]);
                   else
-                    insert_chunk<false>(kernel, first, end, hint, workers[w]);
+                    insert_chunk<false>(kernel, first, end, hint, inserters[w], workers[w]);
                 });
   const double total = seconds(Clock::now() - t_start);
   const double tick = rate.seconds_per_tick();
   // Waiting: backing off after a failed take, and at the ends of rounds for the others.
   for (unsigned w = 0; w < threads; ++w) {
-    Worker& worker = workers[w];
-    kernel.retire_pool(worker.scratch);
-    add_worker(worker.scratch, worker.duplicates, worker.stats, worker.holding, worker.backing_off,
-               tick, barrier_wait[w], timed, total, duplicates, stats);
+    kernel.retire_pool(workers[w].scratch);
+    add_worker(workers[w], tick, timed ? seconds(barrier_wait[w]) : 0.0, total, duplicates, stats);
   }
 }
 

@@ -69,27 +69,17 @@ class Partition {
       }
     }
     const double total = seconds(Clock::now() - t0);
-    for (unsigned w = 0; w < threads_; ++w) {
-      Worker& k = workers_[w];
-      stats_.flips += k.scratch.replaced;
-      stats_.per_thread.push_back({"worker", k.points, total, 0, k.waiting, k.put_off});
-      stats_.time_wait_s += k.waiting;
-      stats_.retries += k.put_off;
-      duplicates_.insert(duplicates_.end(), k.duplicates.begin(), k.duplicates.end());
-    }
+    for (const Worker& w : workers_) add_worker(w, 0.0, 0.0, total, duplicates_, stats_);
   }
 
  private:
-  struct Worker {
-    CavityScratch scratch;
+  // A thread's state, and its stretch of the round: stats.retries counts the points it put off.
+  struct Worker : WorkerState<CavityScratch> {
     std::vector<VertexId> todo, deferred;
-    std::vector<DuplicateHit> duplicates;
     SlotPool pool;
     TriangleId last = 0;
     TriangleId start = 0;   // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
-    std::uint64_t points = 0, put_off = 0;
-    double waiting = 0;
   };
 
   // The thread of vertex v's region.
@@ -226,7 +216,7 @@ class Partition {
     }
     if (failure) std::rethrow_exception(failure);
     const Clock::time_point end = *std::max_element(pass_end_.begin(), pass_end_.end());
-    for (unsigned i = 0; i < threads_; ++i) workers_[i].waiting += seconds(end - pass_end_[i]);
+    for (unsigned i = 0; i < threads_; ++i) workers_[i].stats.time_wait_s += seconds(end - pass_end_[i]);
     // What the pools did not hand out is free now; the free slots they took are used.
     std::vector<TriangleId> unused;
     for (Worker& w : workers_) {
@@ -236,7 +226,7 @@ class Partition {
         unused.push_back(w.pool.next);
       }
       w.pool.listed = 0;
-      if (w.points > 0) last_ = w.last;
+      if (w.stats.points > 0) last_ = w.last;
     }
     unused.insert(unused.end(), free_.begin() + static_cast<std::ptrdiff_t>(taken), free_.end());
     free_ = std::move(unused);
@@ -263,7 +253,7 @@ class Partition {
       // and nearer the points to come than the last insertion.
       if (region_[p] != r || !mesh_.walk(w.last, p, mine)) {
         w.deferred.push_back(p);
-        ++w.put_off;
+        ++w.stats.retries;
         continue;
       }
       const TriangleId t = w.last;
@@ -274,11 +264,11 @@ class Partition {
       }
       if (!mesh_.find_cavity(t, p, w.scratch, mine)) {
         w.deferred.push_back(p);
-        ++w.put_off;
+        ++w.stats.retries;
         continue;
       }
       w.last = mesh_.fill_cavity(p, w.scratch, w.pool);
-      ++w.points;
+      ++w.stats.points;
       ++done;
     }
     inserted.fetch_add(done, std::memory_order_relaxed);
@@ -300,7 +290,7 @@ class Partition {
       if (const VertexId hit = mesh_.insert(p, last_, w.scratch, pool); hit != kNoVertex)
         w.duplicates.push_back({p, hit});
       else
-        ++w.points;
+        ++w.stats.points;
     }
     // The pool takes its listed slots from the back: those it left, at the front of its part
     // of the list, stay free, and its range is given back.

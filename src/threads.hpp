@@ -110,26 +110,6 @@ class Backoff {
   int exponent_ = kMinExponent;
 };
 
-/// Adds what one worker did to the run's results: its duplicates and counters, and its times
-/// (critical and waiting in ticks, converted with `tick` seconds a tick, plus the time it
-/// waited at the ends of rounds, `barrier_wait`, when timed); `total` is the insertion's wall
-/// time.
-inline void add_worker(const Scratch& scratch, const std::vector<DuplicateHit>& hits, ThreadStats ts,
-                       std::uint64_t critical, std::uint64_t waiting, double tick,
-                       Clock::duration barrier_wait, bool timed, double total,
-                       std::vector<DuplicateHit>& duplicates, Stats& stats) {
-  duplicates.insert(duplicates.end(), hits.begin(), hits.end());
-  stats.flips += scratch.flips;
-  stats.edge_splits += scratch.edge_splits;
-  stats.retries += ts.retries;
-  ts.time_insert_s = total;
-  ts.time_critical_s = static_cast<double>(critical) * tick;
-  ts.time_wait_s = static_cast<double>(waiting) * tick + (timed ? seconds(barrier_wait) : 0.0);
-  stats.time_critical_s += ts.time_critical_s;
-  stats.time_wait_s += ts.time_wait_s;
-  stats.per_thread.push_back(ts);
-}
-
 /// Runs `threads` workers through the rounds: in each round the workers first locate the
 /// round's points along the curve (the DAG is only read then; rounds.hpp), all wait, then
 /// they insert the round's points [first, end) in the random order; all wait again. Work is
