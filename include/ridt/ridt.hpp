@@ -134,8 +134,8 @@ struct Stats {
   std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits); 0 when walking
   double time_triangulate_s = 0; ///< the whole call: set-up, insertion, finish
   double time_insert_s = 0;      ///< wall time of the insertion phase
-  double time_critical_s = 0;    ///< summed over threads (threaded methods, time_threads)
-  double time_wait_s = 0;        ///< summed over threads (threaded methods, time_threads)
+  double time_critical_s = 0;    ///< summed over threads (threaded methods, Experiment::time_threads)
+  double time_wait_s = 0;        ///< summed over threads (threaded methods, Experiment::time_threads)
   /// Optimistic: insertions restarted after a failed try-lock; partition: points put off to a
   /// later pass because they met another thread's region.
   std::uint64_t retries = 0;
@@ -145,9 +145,9 @@ struct Stats {
   double queue_depth_mean = 0;   ///< batch: hints queued ahead of the modifier, on average
   std::uint64_t stale_hints = 0; ///< batch: hints no longer a leaf when the modifier took them
   std::vector<ThreadStats> per_thread;
-  double time_locate_s = 0;      ///< only with Options::profile
-  double time_split_s = 0;       ///< only with Options::profile
-  double time_legalize_s = 0;    ///< only with Options::profile
+  double time_locate_s = 0;      ///< only with Experiment::profile
+  double time_split_s = 0;       ///< only with Experiment::profile
+  double time_legalize_s = 0;    ///< only with Experiment::profile
 };
 
 /// A dropped duplicate input point and the input index that stands for it (the smallest

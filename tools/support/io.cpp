@@ -1,0 +1,117 @@
+// Point and triangle files: the whole file is read into memory and parsed in place with
+// std::from_chars; output is formatted with std::to_chars into a large buffer and written to a
+// temporary file beside the target, which is renamed onto the target only when complete.
+//
+// This file picks the format by the file's extension; each format lives in its own io_*.cpp.
+#include "io.hpp"
+
+#include "io_common.hpp"
+
+namespace ridt::io {
+namespace {
+
+using namespace detail;
+
+/// The whole file, or IoError("cannot read FILE: <reason>").
+std::string read_file(const std::string& path) {
+  errno = 0;
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
+  if (!f) throw IoError("cannot read " + path + ": " + errno_text(errno));
+  std::error_code ec;
+  const std::uintmax_t hint = fs::file_size(path, ec);
+  std::string data;
+  // One byte more than the size, so that a regular file is read by one call that hits EOF.
+  data.resize(!ec && hint < (std::uintmax_t{1} << 40) ? static_cast<std::size_t>(hint) + 1
+                                                       : std::size_t{1} << 16);
+  std::size_t used = 0;
+  for (;;) {
+    if (used == data.size()) data.resize(data.size() * 2);
+    const std::size_t want = data.size() - used;
+    errno = 0;
+    const std::size_t got = std::fread(data.data() + used, 1, want, f.get());
+    used += got;
+    if (got < want) {
+      if (std::ferror(f.get())) throw IoError("cannot read " + path + ": " + errno_text(errno));
+      break;
+    }
+  }
+  data.resize(used);
+  return data;
+}
+
+}  // namespace
+
+PointFile read_points(const std::string& path) { return parse_points(read_file(path), path); }
+
+PointFile parse_points(std::string_view data, const std::string& name) {
+  const std::string ext = extension_of(name);
+  if (ext == ".node") return read_node(name, data);
+  if (ext == ".bin") return read_bin_points(name, data);
+  return read_text_points(name, data);
+}
+
+void write_points(const std::string& path, std::span<const Point> points) {
+  const std::string ext = extension_of(path);
+  Writer out(path);
+  if (ext == ".bin") {
+    write_bin_points(out, points);
+  } else if (ext == ".node") {
+    write_node(out, points);
+  } else {
+    write_text_points(out, points);
+  }
+  out.commit();
+}
+
+std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
+  return parse_triangles(read_file(path), path, first_index);
+}
+
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,
+                                      int first_index) {
+  const std::string ext = extension_of(name);
+  if (ext == ".ele") return read_ele(name, data, first_index);
+  if (ext == ".bin") return read_bin_triangles(name, data);
+  return read_text_triangles(name, data, first_index);
+}
+
+void check_triangulation_extension(const std::string& path) {
+  const std::string ext = extension_of(path);
+  for (const char* known : {".ele", ".neigh", ".off", ".obj", ".svg", ".bin"})
+    if (ext == known) return;
+  throw IoError("unknown output extension '" + ext +
+                "' (use .ele, .neigh, .off, .obj, .svg or .bin)");
+}
+
+void write_triangulation(const std::string& path, std::span<const Point> points,
+                         const Triangulation& t, int first_index) {
+  check_triangulation_extension(path);
+  const std::string ext = extension_of(path);
+  const std::size_t nt = t.size();
+  const std::span<const VertexId> tris = std::span(t.triangles).first(3 * nt);
+  if (ext == ".svg") {
+    write_svg(path, points, t);
+    return;
+  }
+  if (ext == ".neigh" && t.neighbors.size() < 3 * nt) {
+    fail_file(path, "the triangulation has " + std::to_string(t.neighbors.size()) +
+                        " neighbour entries for " + std::to_string(nt) + " triangles");
+  }
+  if (ext == ".off" || ext == ".obj") check_indices(path, tris, points.size(), "a triangle");
+
+  Writer out(path);
+  if (ext == ".ele") {
+    write_ele(out, tris, first_index);
+  } else if (ext == ".neigh") {
+    write_neigh(out, std::span(t.neighbors).first(3 * nt), first_index);
+  } else if (ext == ".off") {
+    write_off(out, points, tris);
+  } else if (ext == ".obj") {
+    write_obj(out, points, tris);
+  } else {  // .bin
+    write_bin_triangles(out, tris);
+  }
+  out.commit();
+}
+
+}  // namespace ridt::io

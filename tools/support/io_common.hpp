@@ -1,0 +1,425 @@
+// What the readers and writers of every format share (io.hpp): messages, the parsing of
+// lines and fields, little-endian loads, and the Writer that makes a file appear whole or not
+// at all.
+#pragma once
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "io.hpp"
+
+namespace ridt::io::detail {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------------
+// Small helpers.
+
+inline std::string extension_of(const std::string& path) {
+  return fs::path(path).extension().string();
+}
+
+[[noreturn]] inline void fail_file(const std::string& path, const std::string& why) {
+  throw IoError(path + ": " + why);
+}
+
+[[noreturn]] inline void fail_line(const std::string& path, std::size_t line, const std::string& why) {
+  throw IoError(path + ":" + std::to_string(line) + ": " + why);
+}
+
+inline std::string errno_text(int err) {
+  return err != 0 ? std::string(std::strerror(err)) : std::string("unknown error");
+}
+
+/// A line (or a field) as it is shown in a message: quoted, printable, at most 80 characters.
+inline std::string quoted(std::string_view s) {
+  constexpr std::size_t kMax = 80;
+  std::string out = "\"";
+  for (std::size_t i = 0; i < s.size() && i < kMax; ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    out += (c >= 0x20 && c < 0x7f) || c >= 0x80 ? static_cast<char>(c) : '?';
+  }
+  if (s.size() > kMax) out += "...";
+  out += '"';
+  return out;
+}
+
+constexpr bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading.
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+
+
+/// Calls f(line_number, content) for every line that is not blank after removing its
+/// comment ('#' to the end of the line) and surrounding white space. Line numbers count from 1.
+template <class F>
+inline void for_each_line(std::string_view text, F&& f) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
+  const char* p = text.data();
+  const char* const end = p + text.size();
+  std::size_t line_no = 0;
+  while (p < end) {
+    const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+    const char* line_end = nl ? nl : end;
+    ++line_no;
+    std::string_view line(p, static_cast<std::size_t>(line_end - p));
+    p = nl ? nl + 1 : end;
+    if (const void* hash = std::memchr(line.data(), '#', line.size()))
+      line = line.substr(0, static_cast<std::size_t>(static_cast<const char*>(hash) - line.data()));
+    line = trim(line);
+    if (!line.empty()) f(line_no, line);
+  }
+}
+
+/// Fields of a line, separated by white space, or (with allow_comma) by one comma with optional
+/// white space around it. A leading, trailing or doubled comma sets `bad`.
+struct Fields {
+  std::string_view rest;
+  bool allow_comma = false;
+  bool first = true;
+  bool bad = false;
+
+  bool next(std::string_view& out) {
+    skip_space();
+    if (rest.empty()) return false;
+    if (allow_comma && rest.front() == ',') {
+      if (first) return bad = true, false;
+      rest.remove_prefix(1);
+      skip_space();
+      if (rest.empty() || rest.front() == ',') return bad = true, false;
+    }
+    first = false;
+    std::size_t n = 0;
+    while (n < rest.size() && !is_space(rest[n]) && !(allow_comma && rest[n] == ',')) ++n;
+    out = rest.substr(0, n);
+    rest.remove_prefix(n);
+    return true;
+  }
+
+  /// The number of fields left (consumes them).
+  std::size_t count_rest() {
+    std::size_t n = 0;
+    std::string_view f;
+    while (next(f)) ++n;
+    return n;
+  }
+
+ private:
+  void skip_space() {
+    while (!rest.empty() && is_space(rest.front())) rest.remove_prefix(1);
+  }
+};
+
+enum class Parse { Ok, Bad, Range };
+
+/// A leading '+' is accepted (from_chars does not), "+-1" is not.
+inline std::string_view strip_plus(std::string_view s) {
+  if (s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
+  return s;
+}
+
+/// The whole field as a double; nan and inf are parsed (and rejected by the caller).
+inline Parse parse_double(std::string_view s, double& v) {
+  s = strip_plus(s);
+  if (s.empty()) return Parse::Bad;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec == std::errc::result_out_of_range && ptr == s.data() + s.size()) return Parse::Range;
+  if (ec != std::errc() || ptr != s.data() + s.size()) return Parse::Bad;
+  return Parse::Ok;
+}
+
+/// The whole field as an integer.
+inline Parse parse_int(std::string_view s, std::int64_t& v) {
+  s = strip_plus(s);
+  if (s.empty()) return Parse::Bad;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec == std::errc::result_out_of_range && ptr == s.data() + s.size()) return Parse::Range;
+  if (ec != std::errc() || ptr != s.data() + s.size()) return Parse::Bad;
+  return Parse::Ok;
+}
+
+inline std::string not_a_number(std::string_view field) {
+  return "coordinate " + quoted(field) + " is not a number";
+}
+
+/// A coordinate: the field must be a finite number; `format_error()` is the message for a
+/// field that is not a number at all (built only when needed).
+template <class Message>
+inline double coordinate(const std::string& path, std::size_t line, std::string_view field,
+                  Message&& format_error) {
+  double v = 0;
+  switch (parse_double(field, v)) {
+    case Parse::Ok:
+      break;
+    case Parse::Bad:
+      fail_line(path, line, format_error());
+    case Parse::Range:
+      fail_line(path, line, "coordinate " + quoted(field) + " is out of range");
+  }
+  if (std::isnan(v)) fail_line(path, line, "coordinate is NaN");
+  if (std::isinf(v)) fail_line(path, line, "coordinate is infinite");
+  return v;
+}
+
+/// An integer field with a name for messages.
+inline std::int64_t integer(const std::string& path, std::size_t line, std::string_view field,
+                     const char* what) {
+  std::int64_t v = 0;
+  switch (parse_int(field, v)) {
+    case Parse::Ok:
+      return v;
+    case Parse::Bad:
+      fail_line(path, line, std::string("expected an integer ") + what + ", got " + quoted(field));
+    case Parse::Range:
+      fail_line(path, line, std::string(what) + " " + quoted(field) + " is out of range");
+  }
+  return v;
+}
+
+inline std::size_t count_lines(std::string_view text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+}
+
+inline std::uint32_t load_u32_le(const char* p) {
+  std::uint32_t v;
+  std::memcpy(&v, p, 4);
+  if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap32(v);
+  return v;
+}
+
+inline double load_f64_le(const char* p) {
+  std::uint64_t v;
+  std::memcpy(&v, p, 8);
+  if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap64(v);
+  return std::bit_cast<double>(v);
+}
+
+
+/// A vertex field of a triangle file, renumbered from `first_index` to 0.
+inline VertexId vertex(const std::string& path, std::size_t line, std::string_view field,
+                int first_index) {
+  const std::int64_t v = integer(path, line, field, "vertex index");
+  // Both bounds are compared before anything is subtracted: v is any 64-bit value, and
+  // v - first_index overflows near either end of that range. The largest index stays within
+  // 64 bits: first_index is an int and the id limit is 2^32 - 1.
+  const std::int64_t lowest = first_index;
+  const std::int64_t highest = lowest + std::numeric_limits<VertexId>::max();
+  if (v < lowest) {
+    fail_line(path, line,
+              "vertex index " + std::to_string(v) + " is below the first index " +
+                  std::to_string(first_index));
+  }
+  if (v > highest) {
+    fail_line(path, line,
+              "vertex index " + std::to_string(v) + " is too large (at most " +
+                  std::to_string(highest) + ")");
+  }
+  return static_cast<VertexId>(v - lowest);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing.
+
+/// Buffered output to a temporary file beside `path`, renamed onto `path` by commit(). If the
+/// writer is destroyed without a successful commit the temporary file is removed.
+class Writer {
+ public:
+  explicit Writer(const std::string& path) : path_(path), tmp_(temp_name(path)) {
+    errno = 0;
+    out_.open(tmp_, std::ios::binary | std::ios::trunc);
+    if (!out_) fail(errno);
+    opened_ = true;
+  }
+
+  Writer(const Writer&) = delete;
+  Writer& operator=(const Writer&) = delete;
+
+  ~Writer() {
+    if (opened_ && !committed_) {
+      out_.close();
+      std::remove(tmp_.c_str());
+    }
+  }
+
+  void put(std::string_view s) {
+    if (s.size() > kCapacity - pos_) {
+      flush();
+      if (s.size() > kCapacity) {
+        write_through(s.data(), s.size());
+        return;
+      }
+    }
+    std::memcpy(buf_.get() + pos_, s.data(), s.size());
+    pos_ += s.size();
+  }
+
+  void put(char c) {
+    room(1);
+    buf_[pos_++] = c;
+  }
+
+  /// Shortest decimal form that reads back to exactly `v`.
+  void put_double(double v) {
+    room(kNumberRoom);
+    const auto r = std::to_chars(buf_.get() + pos_, buf_.get() + kCapacity, v);
+    pos_ = static_cast<std::size_t>(r.ptr - buf_.get());
+  }
+
+  /// `v` with at most `decimals` digits after the point, trailing zeros removed.
+  void put_fixed(double v, int decimals) {
+    room(kNumberRoom + 320);  // fixed notation of a huge double is long
+    char* const begin = buf_.get() + pos_;
+    const auto r = std::to_chars(begin, buf_.get() + kCapacity, v, std::chars_format::fixed, decimals);
+    char* end = r.ptr;
+    if (std::memchr(begin, '.', static_cast<std::size_t>(end - begin))) {
+      while (end[-1] == '0') --end;
+      if (end[-1] == '.') --end;
+    }
+    if (end - begin == 2 && begin[0] == '-' && begin[1] == '0') {  // "-0" -> "0"
+      begin[0] = '0';
+      end = begin + 1;
+    }
+    pos_ = static_cast<std::size_t>(end - buf_.get());
+  }
+
+  void put_int(std::int64_t v) {
+    room(kNumberRoom);
+    const auto r = std::to_chars(buf_.get() + pos_, buf_.get() + kCapacity, v);
+    pos_ = static_cast<std::size_t>(r.ptr - buf_.get());
+  }
+
+  void put_u32_le(std::uint32_t v) {
+    if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap32(v);
+    room(4);
+    std::memcpy(buf_.get() + pos_, &v, 4);
+    pos_ += 4;
+  }
+
+  void put_f64_le(double d) {
+    std::uint64_t v = std::bit_cast<std::uint64_t>(d);
+    if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap64(v);
+    room(8);
+    std::memcpy(buf_.get() + pos_, &v, 8);
+    pos_ += 8;
+  }
+
+  void commit() {
+    flush();
+    errno = 0;
+    out_.close();
+    if (out_.fail()) fail(errno);
+    errno = 0;
+    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail(errno);
+    committed_ = true;
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = std::size_t{1} << 20;
+  static constexpr std::size_t kNumberRoom = 48;
+
+  static std::string temp_name(const std::string& path) {
+    static std::atomic<unsigned> counter{0};
+    return path + ".tmp-" + std::to_string(static_cast<long long>(::getpid())) + "-" +
+           std::to_string(counter.fetch_add(1));
+  }
+
+  [[noreturn]] void fail(int err) const {
+    throw IoError("cannot write " + path_ + ": " + errno_text(err));
+  }
+
+  void room(std::size_t n) {
+    if (kCapacity - pos_ < n) flush();
+  }
+
+  void flush() {
+    if (pos_ == 0) return;
+    write_through(buf_.get(), pos_);
+    pos_ = 0;
+  }
+
+  void write_through(const char* p, std::size_t n) {
+    errno = 0;
+    out_.write(p, static_cast<std::streamsize>(n));
+    if (!out_) fail(errno);
+  }
+
+  std::string path_;
+  std::string tmp_;
+  std::ofstream out_;
+  std::unique_ptr<char[]> buf_{new char[kCapacity]};
+  std::size_t pos_ = 0;
+  bool opened_ = false;
+  bool committed_ = false;
+};
+
+/// IoError unless every index of `ids` names one of `n` points.
+inline void check_indices(const std::string& path, std::span<const VertexId> ids, std::size_t n,
+                   const char* what) {
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    if (ids[i] >= n) {
+      fail_file(path, std::string(what) + " refers to vertex " + std::to_string(ids[i]) +
+                          " but there are only " + std::to_string(n) + " points");
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The formats, each in its own file.
+
+// Text (io_text.cpp): one point or triangle a line.
+PointFile read_text_points(const std::string& path, std::string_view text);
+std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index);
+void write_text_points(Writer& out, std::span<const Point> points);
+
+// Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
+PointFile read_node(const std::string& path, std::string_view text);
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index);
+void write_node(Writer& out, std::span<const Point> points);
+void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index);
+void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index);
+
+// Raw little-endian binary (io_binary.cpp): float64 pairs, uint32 triples.
+PointFile read_bin_points(const std::string& path, std::string_view data);
+std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data);
+void write_bin_points(Writer& out, std::span<const Point> points);
+void write_bin_triangles(Writer& out, std::span<const VertexId> triangles);
+
+// Surface meshes for viewers (io_mesh.cpp): .off (0-based), .obj (1-based), z = 0.
+void write_off(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles);
+void write_obj(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles);
+
+// A drawing (io_svg.cpp), of at most kSvgMaxTriangles triangles.
+void write_svg(const std::string& path, std::span<const Point> points, const Triangulation& t);
+
+}  // namespace ridt::io::detail

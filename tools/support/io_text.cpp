@@ -1,0 +1,58 @@
+// Text files: "x y" or "x,y" a line for points, "a b c" for triangles; '#' starts a comment.
+#include "io_common.hpp"
+
+namespace ridt::io::detail {
+
+PointFile read_text_points(const std::string& path, std::string_view text) {
+  PointFile out;
+  out.points.reserve(count_lines(text));
+  for_each_line(text, [&](std::size_t line_no, std::string_view line) {
+    Fields f{line, true};
+    std::string_view a, b, extra;
+    const bool two = f.next(a) && f.next(b) && !f.next(extra) && !f.bad;
+    const auto format_error = [&] {
+      return "expected two numbers \"x y\" or \"x,y\", got " + quoted(line);
+    };
+    if (!two) fail_line(path, line_no, format_error());
+    // Both fields' syntax first, so that "1e999 abc" is a format error, not a range one.
+    double x = 0, y = 0;
+    const Parse px = parse_double(a, x), py = parse_double(b, y);
+    if (px != Parse::Ok || py != Parse::Ok) {
+      if (px == Parse::Bad || py == Parse::Bad) fail_line(path, line_no, format_error());
+      const std::string_view bad = px != Parse::Ok ? a : b;
+      fail_line(path, line_no, "coordinate " + quoted(bad) + " is out of range");
+    }
+    if (std::isnan(x) || std::isnan(y)) fail_line(path, line_no, "coordinate is NaN");
+    if (std::isinf(x) || std::isinf(y)) fail_line(path, line_no, "coordinate is infinite");
+    out.points.push_back({x, y});
+  });
+  return out;
+}
+
+std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text,
+                                          int first_index) {
+  std::vector<VertexId> out;
+  out.reserve(3 * count_lines(text));
+  for_each_line(text, [&](std::size_t line_no, std::string_view line) {
+    Fields f{line, true};
+    std::string_view a, b, c, extra;
+    if (!(f.next(a) && f.next(b) && f.next(c) && !f.next(extra) && !f.bad)) {
+      fail_line(path, line_no, "expected three vertex indices \"a b c\", got " + quoted(line));
+    }
+    out.push_back(vertex(path, line_no, a, first_index));
+    out.push_back(vertex(path, line_no, b, first_index));
+    out.push_back(vertex(path, line_no, c, first_index));
+  });
+  return out;
+}
+
+void write_text_points(Writer& out, std::span<const Point> points) {
+  for (const Point& p : points) {
+    out.put_double(p.x);
+    out.put(' ');
+    out.put_double(p.y);
+    out.put('\n');
+  }
+}
+
+}  // namespace ridt::io::detail
