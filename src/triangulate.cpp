@@ -192,23 +192,15 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   return detail::finish_walking(mesh, order, duplicates, options, plan.threads);
 }
 
-}  // namespace
-
-Triangulation triangulate(std::span<const Point> points, const Options& options) {
-  const auto t0 = Clock::now();
-  const Plan p = plan(points.size(), options);
+// The insertion order (vertex v is input point order[v]) and, for the partition method, each
+// vertex's Hilbert key in that order.
+std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const Plan& p, const Options& options,
+                                           std::vector<std::uint32_t>& keys) {
   const auto n = static_cast<std::uint32_t>(points.size());
-  check_finite(points);
-  // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
-  const int scale = detail::exact_scale_exponent(points);
-
-  // The mesh numbers vertices in insertion order: vertex v is input point order[v].
-  std::vector<std::uint32_t> keys;
-  const std::vector<std::uint32_t> order =
-      p.brio ? detail::brio_order(points.data(), n, options.seed, p.threads,
-                                  options.method == Method::Partition ? &keys : nullptr)
-             : detail::random_permutation(n, options.seed);
-  if (!keys.empty()) {  // the keys in insertion order, for the partition method
+  if (!p.brio) return detail::random_permutation(n, options.seed);
+  std::vector<std::uint32_t> order =
+      detail::brio_order(points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr);
+  if (!keys.empty()) {
     std::vector<std::uint32_t> by_vertex(n);
     in_parallel(n, p.threads, [&](std::size_t first, std::size_t last) {
       for (std::size_t v = first; v < last; ++v) by_vertex[v] = keys[order[v]];
@@ -221,6 +213,30 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   // some 12 bytes a point to the peak that the mesh sets.
   malloc_trim(0);
 #endif
+  return order;
+}
+
+// The insertion's stats in the result, with the counts that the finish made.
+void merge_stats(Triangulation& out, Stats stats) {
+  if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", out.stats.points, stats.time_insert_s, 0, 0, 0});
+  stats.points = out.stats.points;
+  stats.distinct = out.stats.distinct;
+  stats.duplicates = out.stats.duplicates;
+  stats.dag_nodes = out.stats.dag_nodes;
+  out.stats = std::move(stats);
+}
+
+}  // namespace
+
+Triangulation triangulate(std::span<const Point> points, const Options& options) {
+  const auto t0 = Clock::now();
+  const Plan p = plan(points.size(), options);
+  const auto n = static_cast<std::uint32_t>(points.size());
+  check_finite(points);
+  // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
+  const int scale = detail::exact_scale_exponent(points);
+  std::vector<std::uint32_t> keys;
+  const std::vector<std::uint32_t> order = insertion_order(points, p, options, keys);
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
 
@@ -229,15 +245,9 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
   Triangulation out = p.walk ? run_walking(std::move(pts), n, order, std::move(keys), p, options, stats)
                              : run_dag(std::move(pts), n, order, p, options, stats);
-  if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", n, stats.time_insert_s, 0, 0, 0});
   // After the mesh is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out, p.threads);
-  // The finish counts the points, duplicates and DAG nodes; the insertion, everything else.
-  stats.points = out.stats.points;
-  stats.distinct = out.stats.distinct;
-  stats.duplicates = out.stats.duplicates;
-  stats.dag_nodes = out.stats.dag_nodes;
-  out.stats = std::move(stats);
+  merge_stats(out, std::move(stats));
   out.stats.time_triangulate_s = since(t0);
   return out;
 }
