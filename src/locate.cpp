@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "arrays.hpp"
 #include "cavity.hpp"
 #include "order.hpp"
 #include "predicates.hpp"
@@ -97,23 +98,12 @@ void locate_share(const Result& mesh, const Point* queries, std::size_t begin, s
 void locate(std::span<const Point> points, std::span<const VertexId> triangles,
             std::span<const std::int32_t> neighbors, std::span<const Point> queries,
             std::span<std::int32_t> out, unsigned threads) {
-  if (triangles.size() % 3 != 0 || neighbors.size() != triangles.size())
-    throw InputError("locate: triangles and neighbors must both be #T by 3 (sizes " +
-                     std::to_string(triangles.size()) + " and " + std::to_string(neighbors.size()) + ")");
+  detail::check_arrays("locate", points.size(), triangles, neighbors);
   if (out.size() != queries.size())
     throw InputError("locate: " + std::to_string(queries.size()) + " queries but room for " +
                      std::to_string(out.size()) + " answers");
+  if (queries.size() > 0xffffffffu) throw InputError("locate: more than 2^32 queries");
   const std::size_t size = triangles.size() / 3;
-  if (size > 0x7fffffffu || queries.size() > 0xffffffffu)
-    throw InputError("locate: more than 2^31 triangles or 2^32 queries");
-  for (const VertexId v : triangles)
-    if (v >= points.size())
-      throw InputError("locate: vertex " + std::to_string(v) + " of a triangle is not one of the " +
-                       std::to_string(points.size()) + " points");
-  for (const std::int32_t u : neighbors)
-    if (u < -1 || u >= static_cast<std::int64_t>(size))
-      throw InputError("locate: neighbour " + std::to_string(u) + " is not one of the " +
-                       std::to_string(size) + " triangles");
   if (size == 0) {
     std::fill(out.begin(), out.end(), -1);
     return;

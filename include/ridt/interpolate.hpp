@@ -1,0 +1,49 @@
+// Interpolation of values given at a triangulation's points: nearest, linear (barycentric) and
+// natural neighbour (Sibson).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "ridt/ridt.hpp"
+
+namespace ridt {
+
+/// Values at the points: `components` numbers a point, row by row (point i's are
+/// data[i * components .. (i + 1) * components)).
+struct Values {
+  std::span<const double> data;
+  std::size_t components = 1;
+};
+
+/// For each query, the linear interpolant of the triangle that holds it (barycentric
+/// coordinates), exact on linear functions up to rounding; `fill` outside the convex hull or
+/// for a query that is not finite. The result has queries.size() * values.components numbers,
+/// row by row. `t` is a result of triangulate on `points`; a dropped duplicate's value is not
+/// read (the point that stands for it gives the value). Runs on `threads` threads (0: the
+/// machine's hardware threads). Throws InputError for sizes that do not match.
+std::vector<double> interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
+                                       std::span<const Point> queries,
+                                       double fill = std::numeric_limits<double>::quiet_NaN(),
+                                       unsigned threads = 1);
+
+/// The same with Sibson's natural-neighbour coordinates: the share of each point's Voronoi
+/// cell that the query's cell would take were it inserted. Smooth (C1 away from the points),
+/// exact on linear functions up to rounding, equal to the data at the points; which points
+/// are natural neighbours is decided exactly (the in-circle predicate). On the hull's edges it
+/// is linear along the edge, its limit from inside.
+std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t,
+                                                 Values values, std::span<const Point> queries,
+                                                 double fill = std::numeric_limits<double>::quiet_NaN(),
+                                                 unsigned threads = 1);
+
+/// For each query, the index of a nearest point among the triangulation's vertices (a greedy
+/// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not
+/// finite or when there is no triangle.
+std::vector<std::int32_t> nearest_vertex(std::span<const Point> points, const Triangulation& t,
+                                         std::span<const Point> queries, unsigned threads = 1);
+
+}  // namespace ridt

@@ -1,0 +1,51 @@
+// The Voronoi diagram of a triangulation's points: the dual of the Delaunay triangulation.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ridt/ridt.hpp"
+
+namespace ridt {
+
+/// The boundary between the cells of sites `a` and `b` (input indices): the segment from
+/// Voronoi vertex `u` to vertex `v`, or, when `v` is -1, the ray from `u` along `direction`
+/// (the outward normal of the hull edge a-b; not normalized).
+struct Ridge {
+  VertexId a = 0, b = 0;
+  std::int32_t u = -1, v = -1;
+  Point direction;  ///< (0, 0) for a segment
+};
+
+/// The Voronoi diagram, in the layout of scipy.spatial.Voronoi, with -1 for the vertex at
+/// infinity.
+struct Voronoi {
+  /// Vertex t is the circumcentre of triangle t of the triangulation (rounded to double).
+  std::vector<Point> vertices;
+  /// Cell c's vertices are cell_vertices[cell_offsets[c] .. cell_offsets[c + 1]),
+  /// counter-clockwise; an unbounded cell (a site on the hull) ends with -1, the vertex at
+  /// infinity, which stands between the cell's two rays.
+  std::vector<std::uint32_t> cell_offsets;
+  std::vector<std::int32_t> cell_vertices;
+  /// The site (input index) of each cell; cells come in increasing order of their site.
+  std::vector<VertexId> cell_site;
+  /// For each input point its cell: a duplicate shares the cell of the point that stands for
+  /// it; -1 when there is no triangle (fewer than three distinct points, or all collinear).
+  std::vector<std::int32_t> point_cell;
+  /// One ridge a Delaunay edge: first the edges of triangle 0, then 1, ...
+  std::vector<Ridge> ridges;
+
+  std::size_t cells() const { return cell_site.size(); }
+  std::span<const std::int32_t> cell(std::size_t c) const {
+    return std::span(cell_vertices).subspan(cell_offsets[c], cell_offsets[c + 1] - cell_offsets[c]);
+  }
+};
+
+/// The Voronoi diagram of `points` from their triangulation `t` (a result of triangulate on
+/// the same points), on `threads` threads (0: the machine's hardware threads). The combinatorial
+/// structure is exact (it is the triangulation's); the vertices are circumcentres rounded to
+/// double. Throws InputError when `t` does not fit `points`.
+Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads = 1);
+
+}  // namespace ridt

@@ -1,0 +1,260 @@
+// Interpolation in a triangulation (ridt/interpolate.hpp). Every query is first located
+// (ridt::locate, exact, along a Hilbert curve, on threads); then each is answered on its own:
+// barycentric in its triangle, Sibson's coordinates from the cavity it would dig, or a greedy
+// walk on the Delaunay graph to a nearest vertex.
+#include "ridt/interpolate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "arrays.hpp"
+#include "cavity.hpp"
+#include "parallel.hpp"
+#include "predicates.hpp"
+#include "ridt/locate.hpp"
+
+namespace ridt {
+namespace {
+
+using detail::next3;
+using detail::prev3;
+
+constexpr std::size_t kGrain = 1 << 14;  // queries a thread takes at least
+
+void check_values(const char* who, std::size_t n, const Values& values) {
+  if (values.components == 0 || values.data.size() != n * values.components)
+    throw InputError(std::string(who) + ": " + std::to_string(values.data.size()) + " values for " +
+                     std::to_string(n) + " points of " + std::to_string(values.components) + " components");
+}
+
+// The circumcentre of the origin, a and b (points relative to the query).
+Point circumcentre0(const Point& a, const Point& b) {
+  const double a2 = a.x * a.x + a.y * a.y, b2 = b.x * b.x + b.y * b.y;
+  const double d = 2 * (a.x * b.y - a.y * b.x);
+  return {(b.y * a2 - a.y * b2) / d, (a.x * b2 - b.x * a2) / d};
+}
+
+// The circumcentre of a, b and c, all relative to the query.
+Point circumcentre(const Point& a, const Point& b, const Point& c) {
+  const Point o = circumcentre0({b.x - a.x, b.y - a.y}, {c.x - a.x, c.y - a.y});
+  return {a.x + o.x, a.y + o.y};
+}
+
+// What interpolation reads: the points, the triangulation, the values.
+struct Field {
+  std::span<const Point> points;
+  const Triangulation& t;
+  Values values;
+
+  const Point& corner(std::size_t tri, int i) const { return points[t.triangles[3 * tri + i]]; }
+  VertexId vertex(std::size_t tri, int i) const { return t.triangles[3 * tri + i]; }
+  std::int32_t neighbour(std::size_t tri, int i) const { return t.neighbors[3 * tri + i]; }
+  const double* value(VertexId v) const { return values.data.data() + v * values.components; }
+
+  // out = the barycentric interpolant of triangle tri at q.
+  void linear(std::size_t tri, const Point& q, double* out) const {
+    const Point& a = corner(tri, 0);
+    const Point& b = corner(tri, 1);
+    const Point& c = corner(tri, 2);
+    const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+    const double qx = q.x - a.x, qy = q.y - a.y;
+    const double det = bx * cy - by * cx;
+    const double lb = (qx * cy - qy * cx) / det, lc = (bx * qy - by * qx) / det;
+    const double la = 1 - lb - lc;
+    const double *va = value(vertex(tri, 0)), *vb = value(vertex(tri, 1)), *vc = value(vertex(tri, 2));
+    for (std::size_t k = 0; k < values.components; ++k) out[k] = la * va[k] + lb * vb[k] + lc * vc[k];
+  }
+};
+
+// Sibson's coordinates at q, which triangle tri holds. Scratch space is reused between queries.
+class Sibson {
+ public:
+  explicit Sibson(const Field& f) : f_(f) {}
+
+  void interpolate(std::size_t tri, const Point& q, double* out) {
+    const std::size_t m = f_.values.components;
+    // At a vertex, its value; on a hull edge, linear along it (the cell of q would be open).
+    for (int i = 0; i < 3; ++i) {
+      if (f_.corner(tri, i) == q) {
+        std::copy_n(f_.value(f_.vertex(tri, i)), m, out);
+        return;
+      }
+      if (f_.neighbour(tri, i) < 0 && detail::orient2d(f_.corner(tri, next3(i)), f_.corner(tri, prev3(i)), q) == 0) {
+        f_.linear(tri, q, out);
+        return;
+      }
+    }
+    dig(tri, q);
+    std::fill_n(out, m, 0.0);
+    double total = 0;
+    for (const Edge& e : boundary_) {
+      const double w = stolen_area(e, q);
+      total += w;
+      const double* v = f_.value(e.to);
+      for (std::size_t k = 0; k < m; ++k) out[k] += w * v[k];
+    }
+    for (std::size_t k = 0; k < m; ++k) out[k] /= total;
+  }
+
+ private:
+  // A side of the cavity, from vertex `from` to `to` with q on its left, in cavity triangle
+  // `tri` across from its corner `corner`.
+  struct Edge {
+    VertexId from, to;
+    std::uint32_t tri;
+    int corner;
+  };
+
+  bool in_cavity(std::int32_t u) const { return std::find(cavity_.begin(), cavity_.end(), u) != cavity_.end(); }
+
+  // The cavity: the triangles whose circumcircle holds q strictly (exact), grown from tri, and
+  // its boundary.
+  void dig(std::size_t tri, const Point& q) {
+    cavity_.assign(1, static_cast<std::int32_t>(tri));
+    boundary_.clear();
+    for (std::size_t k = 0; k < cavity_.size(); ++k) {
+      const auto c = static_cast<std::size_t>(cavity_[k]);
+      for (int i = 0; i < 3; ++i) {
+        const std::int32_t u = f_.neighbour(c, i);
+        if (u >= 0 && in_cavity(u)) continue;
+        const auto uu = static_cast<std::size_t>(u);
+        if (u >= 0 && detail::incircle(f_.corner(uu, 0), f_.corner(uu, 1), f_.corner(uu, 2), q) > 0) {
+          cavity_.push_back(u);
+        }
+      }
+    }
+    for (const std::int32_t c : cavity_)
+      for (int i = 0; i < 3; ++i) {
+        const std::int32_t u = f_.neighbour(static_cast<std::size_t>(c), i);
+        if (u < 0 || !in_cavity(u))
+          boundary_.push_back({f_.vertex(static_cast<std::size_t>(c), next3(i)),
+                               f_.vertex(static_cast<std::size_t>(c), prev3(i)), static_cast<std::uint32_t>(c), i});
+      }
+  }
+
+  Point rel(VertexId v, const Point& q) const { return {f_.points[v].x - q.x, f_.points[v].y - q.y}; }
+
+  // The area that q's cell takes from the cell of e.to: the polygon from the circumcentre of
+  // (q, e.from, e.to), through the circumcentres of the cavity's triangles around e.to, to
+  // that of (q, e.to, next), where the next side of the cavity starts at e.to.
+  double stolen_area(const Edge& e, const Point& q) {
+    const VertexId v = e.to;
+    const Edge* out_edge = nullptr;
+    for (const Edge& x : boundary_)
+      if (x.from == v) out_edge = &x;
+    polygon_.clear();
+    polygon_.push_back(circumcentre0(rel(e.from, q), rel(v, q)));
+    // Around v from the triangle of side from -> v to the one of side v -> next, across the
+    // sides v-w inside the cavity.
+    std::size_t tri = e.tri;
+    for (std::size_t guard = 0; guard <= cavity_.size(); ++guard) {
+      polygon_.push_back(circumcentre(rel(f_.vertex(tri, 0), q), rel(f_.vertex(tri, 1), q), rel(f_.vertex(tri, 2), q)));
+      if (out_edge != nullptr && tri == out_edge->tri) break;
+      // v's corner in tri; the side from v that is not from -> v is across from its previous
+      // corner... that is, v -> its next vertex, across from prev3.
+      const int i = f_.vertex(tri, 0) == v ? 0 : f_.vertex(tri, 1) == v ? 1 : 2;
+      const std::int32_t u = f_.neighbour(tri, prev3(i));
+      if (u < 0) break;
+      tri = static_cast<std::size_t>(u);
+    }
+    polygon_.push_back(circumcentre0(rel(v, q), rel(out_edge != nullptr ? out_edge->to : v, q)));
+    double area = 0;
+    for (std::size_t k = 0, s = polygon_.size(); k < s; ++k) {
+      const Point& a = polygon_[k];
+      const Point& b = polygon_[(k + 1) % s];
+      area += a.x * b.y - a.y * b.x;
+    }
+    return area / 2;
+  }
+
+  const Field& f_;
+  std::vector<std::int32_t> cavity_;
+  std::vector<Edge> boundary_;
+  std::vector<Point> polygon_;
+};
+
+template <class Answer>
+std::vector<double> interpolate(const char* who, std::span<const Point> points, const Triangulation& t,
+                                Values values, std::span<const Point> queries, double fill, unsigned threads,
+                                Answer&& answer) {
+  detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
+  check_values(who, points.size(), values);
+  const std::size_t m = values.components;
+  std::vector<double> out(queries.size() * m, fill);
+  if (t.size() == 0) return out;
+  const std::vector<std::int32_t> where = locate(points, t, queries, threads);
+  const Field field{points, t, values};
+  detail::parallel_for(queries.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+    Sibson sibson(field);
+    for (std::size_t k = first; k < last; ++k)
+      if (where[k] >= 0) answer(field, sibson, static_cast<std::size_t>(where[k]), queries[k], &out[k * m]);
+  });
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
+                                       std::span<const Point> queries, double fill, unsigned threads) {
+  return interpolate("interpolate_linear", points, t, values, queries, fill, threads,
+                     [](const Field& f, Sibson&, std::size_t tri, const Point& q, double* out) { f.linear(tri, q, out); });
+}
+
+std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t,
+                                                 Values values, std::span<const Point> queries, double fill,
+                                                 unsigned threads) {
+  return interpolate("interpolate_natural_neighbor", points, t, values, queries, fill, threads,
+                     [](const Field&, Sibson& s, std::size_t tri, const Point& q, double* out) {
+                       s.interpolate(tri, q, out);
+                     });
+}
+
+std::vector<std::int32_t> nearest_vertex(std::span<const Point> points, const Triangulation& t,
+                                         std::span<const Point> queries, unsigned threads) {
+  detail::check_arrays("nearest_vertex", points.size(), t.triangles, t.neighbors);
+  std::vector<std::int32_t> out(queries.size(), -1);
+  if (t.size() == 0) return out;
+  // The Delaunay graph: each vertex's neighbours, from the triangles' sides.
+  const std::size_t n = points.size();
+  std::vector<std::uint32_t> offset(n + 1, 0);
+  for (std::size_t k = 0; k < t.triangles.size(); ++k) offset[t.triangles[k] + 1] += 2;
+  std::partial_sum(offset.begin(), offset.end(), offset.begin());
+  std::vector<VertexId> adjacent(offset[n]);
+  {
+    std::vector<std::uint32_t> at(offset.begin(), offset.end() - 1);
+    for (std::size_t tri = 0; tri < t.size(); ++tri)
+      for (int i = 0; i < 3; ++i) {
+        const VertexId v = t.triangles[3 * tri + i];
+        adjacent[at[v]++] = t.triangles[3 * tri + next3(i)];
+        adjacent[at[v]++] = t.triangles[3 * tri + prev3(i)];
+      }
+  }
+  const std::vector<std::int32_t> where = locate(points, t, queries, threads);
+  auto distance2 = [&](VertexId v, const Point& q) {
+    const double dx = points[v].x - q.x, dy = points[v].y - q.y;
+    return dx * dx + dy * dy;
+  };
+  detail::parallel_for(queries.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+    VertexId v = t.triangles[0];
+    for (std::size_t k = first; k < last; ++k) {
+      const Point& q = queries[k];
+      if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
+      if (where[k] >= 0) v = t.triangles[3 * static_cast<std::size_t>(where[k])];
+      // Greedy: to a closer neighbour while there is one. On the Delaunay graph a vertex with
+      // no closer neighbour is a nearest one.
+      for (double d = distance2(v, q);;) {
+        VertexId best = v;
+        for (std::uint32_t a = offset[v]; a < offset[v + 1]; ++a)
+          if (const double e = distance2(adjacent[a], q); e < d) d = e, best = adjacent[a];
+        if (best == v) break;
+        v = best;
+      }
+      out[k] = static_cast<std::int32_t>(v);
+    }
+  });
+  return out;
+}
+
+}  // namespace ridt

@@ -1,0 +1,163 @@
+// The Voronoi diagram (ridt/voronoi.hpp): its structure against the triangulation, convex
+// cells around their sites, and the cells clipped to a box tiling the box.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "generate.hpp"
+#include "ridt/voronoi.hpp"
+
+namespace ridt {
+namespace {
+
+double cross(const Point& o, const Point& a, const Point& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+double area(const std::vector<Point>& poly) {
+  double s = 0;
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    const Point& a = poly[k];
+    const Point& b = poly[(k + 1) % poly.size()];
+    s += a.x * b.y - a.y * b.x;
+  }
+  return s / 2;
+}
+
+// Sutherland-Hodgman: `poly` clipped to the axis-parallel box [x0, x1] x [y0, y1].
+std::vector<Point> clip(std::vector<Point> poly, double x0, double x1, double y0, double y1) {
+  auto side = [&](auto inside, auto cut) {
+    std::vector<Point> out;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const Point& a = poly[k];
+      const Point& b = poly[(k + 1) % poly.size()];
+      if (inside(a)) out.push_back(a);
+      if (inside(a) != inside(b)) out.push_back(cut(a, b));
+    }
+    poly = std::move(out);
+  };
+  auto at_x = [](double x) {
+    return [x](const Point& a, const Point& b) { return Point{x, a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x)}; };
+  };
+  auto at_y = [](double y) {
+    return [y](const Point& a, const Point& b) { return Point{a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y), y}; };
+  };
+  side([&](const Point& p) { return p.x >= x0; }, at_x(x0));
+  side([&](const Point& p) { return p.x <= x1; }, at_x(x1));
+  side([&](const Point& p) { return p.y >= y0; }, at_y(y0));
+  side([&](const Point& p) { return p.y <= y1; }, at_y(y1));
+  return poly;
+}
+
+// Cell c as a polygon; an unbounded one closed by its two rays, `far` along each.
+std::vector<Point> polygon(const std::vector<Point>& pts, const Triangulation& t, const Voronoi& vd, std::size_t c,
+                           double far) {
+  const auto cell = vd.cell(c);
+  std::vector<Point> poly;
+  for (const std::int32_t v : cell)
+    if (v >= 0) poly.push_back(vd.vertices[v]);
+  if (cell.back() == -1) {
+    const VertexId s = vd.cell_site[c];
+    // The last triangle's counter-clockwise side from s and the first one's clockwise side
+    // are hull edges; their outward normals carry the rays.
+    auto other = [&](std::int32_t tri, int step) {
+      const VertexId* w = &t.triangles[3 * std::size_t(tri)];
+      const int i = w[0] == s ? 0 : w[1] == s ? 1 : 2;
+      return w[(i + step) % 3];
+    };
+    const Point& p = pts[s];
+    const Point& b = pts[other(cell[cell.size() - 2], 2)];  // side s - b, run b -> s
+    const Point& a = pts[other(cell[0], 1)];                // side s - a, run s -> a
+    const Point out{(p.y - b.y), (b.x - p.x)}, in{(a.y - p.y), (p.x - a.x)};
+    const Point last = poly.back(), first = poly.front();
+    poly.push_back({last.x + far * out.x, last.y + far * out.y});
+    poly.push_back({first.x + far * in.x, first.y + far * in.y});
+  }
+  return poly;
+}
+
+class VoronoiOf : public ::testing::TestWithParam<Distribution> {};
+
+TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
+  const std::vector<Point> pts = generate(GetParam(), 3000, 7);
+  const Triangulation t = triangulate(pts);
+  const Voronoi vd = voronoi(pts, t, 2);
+  ASSERT_EQ(vd.vertices.size(), t.size());
+  ASSERT_EQ(vd.point_cell.size(), pts.size());
+  // Each vertex is equidistant from its triangle's three sites.
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point& c = vd.vertices[k];
+    double d[3];
+    for (int i = 0; i < 3; ++i) d[i] = std::hypot(pts[t.triangles[3 * k + i]].x - c.x, pts[t.triangles[3 * k + i]].y - c.y);
+    EXPECT_NEAR(d[0], d[1], 1e-9 * d[0]);
+    EXPECT_NEAR(d[0], d[2], 1e-9 * d[0]);
+  }
+  // A ridge for each edge: (3T + H) / 2, each between two sites of its triangles.
+  EXPECT_EQ(vd.ridges.size(), (3 * t.size() + t.hull.size()) / 2);
+  for (const Ridge& r : vd.ridges) {
+    const VertexId* w = &t.triangles[3 * std::size_t(r.u)];
+    EXPECT_TRUE(std::count(w, w + 3, r.a) == 1 && std::count(w, w + 3, r.b) == 1);
+    EXPECT_EQ(r.v < 0, r.direction.x != 0 || r.direction.y != 0);
+  }
+  // Every site has a cell; cells of the distinct points, bounded ones convex around their site.
+  double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
+  for (const Point& p : pts) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  EXPECT_EQ(vd.cells(), pts.size() - t.duplicates.size());
+  double tiled = 0;
+  const double box = (x1 - x0) * (y1 - y0), far = 1e6 * std::max(x1 - x0, y1 - y0);
+  for (std::size_t c = 0; c < vd.cells(); ++c) {
+    EXPECT_EQ(vd.point_cell[vd.cell_site[c]], static_cast<std::int32_t>(c));
+    const std::vector<Point> poly = polygon(pts, t, vd, c, far);
+    const Point& s = pts[vd.cell_site[c]];
+    if (vd.cell(c).back() != -1) {
+      for (std::size_t k = 0; k < poly.size(); ++k) {
+        const Point& a = poly[k];
+        const Point& b = poly[(k + 1) % poly.size()];
+        // Convex and counter-clockwise around the site (a cell side may be very short).
+        if (std::hypot(b.x - a.x, b.y - a.y) > 1e-9 * std::max(x1 - x0, y1 - y0)) {
+          EXPECT_GT(cross(a, b, s), 0);
+        }
+      }
+    }
+    const double a = area(clip(poly, x0, x1, y0, y1));
+    EXPECT_GE(a, -1e-12 * box);
+    tiled += a;
+  }
+  EXPECT_NEAR(tiled, box, 1e-9 * box);
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, VoronoiOf,
+                         ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid,
+                                           Distribution::Clusters),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST(Voronoi, DuplicatesShareTheirKeptPointsCell) {
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {1, 0}, {0.5, 0.4}, {0, 0}};
+  const Triangulation t = triangulate(pts);
+  const Voronoi vd = voronoi(pts, t);
+  EXPECT_EQ(vd.cells(), 5u);
+  EXPECT_EQ(vd.point_cell[4], vd.point_cell[1]);
+  EXPECT_EQ(vd.point_cell[6], vd.point_cell[0]);
+  // The inner point's cell is bounded; the corners' are not.
+  EXPECT_NE(vd.cell(vd.point_cell[5]).back(), -1);
+  EXPECT_EQ(vd.cell(vd.point_cell[0]).back(), -1);
+}
+
+TEST(Voronoi, CollinearPointsHaveNoCells) {
+  const std::vector<Point> pts = {{0, 0}, {1, 1}, {2, 2}};
+  const Voronoi vd = voronoi(pts, triangulate(pts));
+  EXPECT_EQ(vd.cells(), 0u);
+  EXPECT_TRUE(vd.vertices.empty());
+  EXPECT_EQ(vd.point_cell, std::vector<std::int32_t>(3, -1));
+}
+
+TEST(Voronoi, RefusesATriangulationOfOtherPoints) {
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+  const Triangulation t = triangulate(pts);
+  EXPECT_THROW(voronoi(std::span(pts).first(2), t), InputError);
+}
+
+}  // namespace
+}  // namespace ridt
