@@ -4,6 +4,8 @@
     >>> tri = ridt.Delaunay(np.random.default_rng(1).random((1000, 2)))   # scipy's interface
     >>> tri.find_simplex([[0.5, 0.5]])
     >>> t = ridt.triangulate(points, threads=2)   # the library's arrays, no copies
+    >>> ridt.griddata(points, values, (gx, gy))       # scipy.interpolate's, on threads
+    >>> ridt.Voronoi(points).regions                  # scipy.spatial's
 
 Every result is exactly the Delaunay triangulation of the distinct points (cocircular ties
 broken by a fixed symbolic perturbation), with its whole convex hull, the same for every method
@@ -13,6 +15,8 @@ and thread count.
 from ._api import check, triangulate
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._delaunay import Delaunay, DegenerateInputWarning
+from ._interpolate import (LinearNDInterpolator, NaturalNeighborInterpolator, NearestNDInterpolator, Voronoi,
+                           griddata)
 
 __version__ = "0.1.0"
 
@@ -20,9 +24,14 @@ __all__ = [
     "Delaunay",
     "DegenerateInputWarning",
     "InputError",
+    "LinearNDInterpolator",
+    "NaturalNeighborInterpolator",
+    "NearestNDInterpolator",
     "Triangulation",
     "cached_memory",
     "check",
     "set_memory_cache_limit",
+    "Voronoi",
+    "griddata",
     "triangulate",
 ]

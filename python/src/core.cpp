@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <span>
@@ -12,8 +13,10 @@
 #include <utility>
 
 #include "ridt/check.hpp"
+#include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 #include "ridt/ridt.hpp"
+#include "ridt/voronoi.hpp"
 
 namespace py = pybind11;
 
@@ -180,6 +183,72 @@ Triangulation alive.
         return py::make_tuple(r.valid, r.message, r.problems);
       },
       py::arg("points"), py::arg("triangles"));
+
+  m.def(
+      "voronoi",
+      [](const Points& points, const ridt::Triangulation& t, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        ridt::Voronoi v;
+        {
+          py::gil_scoped_release nogil;
+          v = ridt::voronoi(pts, t, threads);
+        }
+        const auto r = static_cast<py::ssize_t>(v.ridges.size());
+        py::array_t<double> vertices({static_cast<py::ssize_t>(v.vertices.size()), py::ssize_t{2}});
+        std::copy_n(reinterpret_cast<const double*>(v.vertices.data()), 2 * v.vertices.size(), vertices.mutable_data());
+        py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});
+        py::array_t<double> ridge_directions({r, py::ssize_t{2}});
+        for (py::ssize_t k = 0; k < r; ++k) {
+          const ridt::Ridge& x = v.ridges[static_cast<std::size_t>(k)];
+          ridge_points.mutable_at(k, 0) = static_cast<std::int32_t>(x.a);
+          ridge_points.mutable_at(k, 1) = static_cast<std::int32_t>(x.b);
+          ridge_vertices.mutable_at(k, 0) = x.u;
+          ridge_vertices.mutable_at(k, 1) = x.v;
+          ridge_directions.mutable_at(k, 0) = x.direction.x;
+          ridge_directions.mutable_at(k, 1) = x.direction.y;
+        }
+        return py::make_tuple(vertices, py::array_t<std::uint32_t>(v.cell_offsets.size(), v.cell_offsets.data()),
+                              py::array_t<std::int32_t>(v.cell_vertices.size(), v.cell_vertices.data()),
+                              py::array_t<std::int32_t>(v.point_cell.size(), v.point_cell.data()), ridge_points,
+                              ridge_vertices, ridge_directions);
+      },
+      py::arg("points"), py::arg("triangulation"), py::arg("threads"));
+
+  m.def(
+      "interpolate",
+      [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& queries, double fill,
+         const std::string& method, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
+        const auto q = as_points(queries, "queries");
+        const auto k = static_cast<std::size_t>(values.shape(1));
+        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
+        std::vector<double> out;
+        {
+          py::gil_scoped_release nogil;
+          out = method == "natural" ? ridt::interpolate_natural_neighbor(pts, t, v, q, fill, threads)
+                                    : ridt::interpolate_linear(pts, t, v, q, fill, threads);
+        }
+        py::array_t<double> a({static_cast<py::ssize_t>(q.size()), static_cast<py::ssize_t>(k)});
+        std::copy(out.begin(), out.end(), a.mutable_data());
+        return a;
+      },
+      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("queries"), py::arg("fill"),
+      py::arg("method"), py::arg("threads"));
+
+  m.def(
+      "nearest",
+      [](const Points& points, const ridt::Triangulation& t, const Points& queries, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        const auto q = as_points(queries, "queries");
+        std::vector<std::int32_t> out;
+        {
+          py::gil_scoped_release nogil;
+          out = ridt::nearest_vertex(pts, t, q, threads);
+        }
+        return py::array_t<std::int32_t>(out.size(), out.data());
+      },
+      py::arg("points"), py::arg("triangulation"), py::arg("queries"), py::arg("threads"));
 
   m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
   m.def("cached_memory", &ridt::cached_memory);

@@ -1,0 +1,261 @@
+"""Voronoi diagrams and scattered-data interpolation with scipy's interfaces, on ridt's exact
+triangulation: ridt.Voronoi (scipy.spatial.Voronoi), ridt.LinearNDInterpolator,
+ridt.NearestNDInterpolator, ridt.NaturalNeighborInterpolator and ridt.griddata
+(scipy.interpolate's, in the plane)."""
+
+from __future__ import annotations
+
+from functools import cached_property
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+from . import _api, _core
+from ._delaunay import Delaunay, _check_qhull_options
+
+
+class Voronoi:
+    """Voronoi diagram in the plane, with scipy.spatial.Voronoi's attributes.
+
+    The diagram is the dual of ridt's exact Delaunay triangulation: vertex ``t`` is the
+    circumcentre of triangle ``t``, each Delaunay edge gives a ridge, each distinct point a
+    region. Where four or more points are cocircular (a grid), each triangle keeps its own
+    vertex, so equal vertices and ridges of length zero appear where Qhull would merge them.
+    Duplicate points share the region of the point kept. Fewer than three distinct points, or
+    all collinear, raise :class:`ridt.InputError` (Qhull raises QhullError).
+
+    Parameters
+    ----------
+    points : array_like, shape (npoints, 2)
+    furthest_site, incremental : bool
+        Not supported (NotImplementedError when true).
+    qhull_options : str, optional
+        As for :class:`ridt.Delaunay`: only Qhull's robustness options, accepted and ignored.
+    threads : int
+        Threads for the triangulation and the diagram (0 or -1: every core).
+
+    Attributes
+    ----------
+    points : ndarray of double, shape (npoints, 2)
+    vertices : ndarray of double, shape (nvertices, 2)
+    ridge_points : ndarray of intc, shape (nridges, 2)
+        The two points each ridge lies between.
+    ridge_vertices : list of list of int
+        The two vertices of each ridge; -1 for the end of a ray, at infinity.
+    ridge_directions : ndarray of double, shape (nridges, 2)
+        ridt's own: for a ray, its direction (the outward normal of the hull edge); else 0.
+    regions : list of list of int
+        The vertices of each region, counter-clockwise; -1 (at infinity) in an unbounded one.
+    point_region : ndarray of intp, shape (npoints,)
+        The region of each point.
+    ridge_dict : dict
+        {(p, q): [u, v]} for every ridge.
+    npoints, ndim, min_bound, max_bound, furthest_site
+    """
+
+    def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
+                 qhull_options: Optional[str] = None, *, threads: int = 1):
+        if furthest_site:
+            raise NotImplementedError("furthest_site=True: ridt computes the nearest-site diagram only")
+        if incremental:
+            raise NotImplementedError("incremental=True: ridt computes a whole diagram in one call")
+        _check_qhull_options(qhull_options)
+        self._points = _api.as_points(points, "points", "ridt.Voronoi")
+        threads = _api.thread_count(threads)
+        self._tri = _api.run(self._points, method="auto", threads=threads, order="brio", locate="auto", seed=1,
+                             progress=None)
+        if self._tri.warning:
+            raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
+        (self.vertices, offsets, cell_vertices, point_cell, self.ridge_points, ridge_vertices,
+         self.ridge_directions) = _core.voronoi(self._points, self._tri, threads)
+        self.ridge_points = self.ridge_points.view(np.intc)
+        self._ridge_vertices = ridge_vertices
+        self._offsets = offsets
+        self._cell_vertices = cell_vertices
+        self.point_region = point_cell.astype(np.intp)
+        self.furthest_site = False
+
+    @property
+    def points(self) -> np.ndarray:
+        return self._points
+
+    @property
+    def npoints(self) -> int:
+        return int(self._points.shape[0])
+
+    @property
+    def ndim(self) -> int:
+        return 2
+
+    @property
+    def min_bound(self) -> np.ndarray:
+        return self._points.min(axis=0)
+
+    @property
+    def max_bound(self) -> np.ndarray:
+        return self._points.max(axis=0)
+
+    @cached_property
+    def ridge_vertices(self) -> List[List[int]]:
+        return self._ridge_vertices.tolist()
+
+    @cached_property
+    def regions(self) -> List[List[int]]:
+        flat = self._cell_vertices.tolist()
+        o = self._offsets.tolist()
+        return [flat[o[c]:o[c + 1]] for c in range(len(o) - 1)]
+
+    @cached_property
+    def ridge_dict(self) -> Dict[Tuple[int, int], List[int]]:
+        return {(int(a), int(b)): list(uv) for (a, b), uv in zip(self.ridge_points.tolist(), self.ridge_vertices)}
+
+    def close(self) -> None:
+        """Nothing to release (scipy's incremental mode only)."""
+
+
+def _as_values(values: Any, n: int, who: str) -> Tuple[np.ndarray, Tuple[int, ...], bool]:
+    """values as float64 (n, k) in C order, the trailing shape, and whether they were complex."""
+    v = np.asarray(values)
+    if v.dtype.kind not in "biufc":
+        raise TypeError(f"{who}: values must be numbers, not {v.dtype}")
+    if v.ndim == 0 or v.shape[0] != n:
+        raise ValueError(f"{who}: values must have {n} rows, one a point; got shape {v.shape}")
+    trailing = v.shape[1:]
+    complex_ = v.dtype.kind == "c"
+    v = v.reshape(n, -1)
+    if complex_:
+        v = np.concatenate([v.real, v.imag], axis=1)
+    return np.ascontiguousarray(v, dtype=np.float64), trailing, complex_
+
+
+def _as_queries(args: Tuple[Any, ...], who: str) -> Tuple[np.ndarray, Tuple[int, ...]]:
+    """Queries given as an array (..., 2) or as x and y arrays that broadcast: (m, 2) float64
+    and the shape of the answer's leading part."""
+    if len(args) == 1 and isinstance(args[0], tuple):
+        args = args[0]
+    if len(args) == 2:
+        x, y = np.broadcast_arrays(np.asarray(args[0], dtype=np.float64), np.asarray(args[1], dtype=np.float64))
+        shape = x.shape
+        xi = np.stack([x.ravel(), y.ravel()], axis=1)
+    elif len(args) == 1:
+        xi = np.asarray(args[0], dtype=np.float64)
+        if xi.ndim == 0 or xi.shape[-1] != 2:
+            raise ValueError(f"{who}: query points must have shape (..., 2); got {xi.shape}")
+        shape = xi.shape[:-1]
+        xi = xi.reshape(-1, 2)
+    else:
+        raise TypeError(f"{who}: give the query points as one array (..., 2) or as x and y")
+    # Not finite: answered with the fill value, as outside the hull.
+    return np.ascontiguousarray(xi), shape
+
+
+class _TriangulationInterpolator:
+    _method = "linear"
+    _name = "LinearNDInterpolator"
+
+    def __init__(self, points: Any, values: Any, fill_value: Any = np.nan, rescale: bool = False, *,
+                 threads: int = 1):
+        who = f"ridt.{self._name}"
+        self._threads = _api.thread_count(threads)
+        if isinstance(points, Delaunay):
+            self.tri = points
+            pts = points.points
+        else:
+            pts = _api.as_points(points, "points", who)
+            self.tri = None
+        self._offset = np.zeros(2)
+        self._scale = np.ones(2)
+        if rescale:
+            self._offset = pts.mean(axis=0)
+            ptp = np.ptp(pts, axis=0)
+            self._scale = np.where(ptp > 0, ptp, 1.0)
+            pts = np.ascontiguousarray((pts - self._offset) / self._scale)
+            self.tri = None
+        if self.tri is None:
+            self.tri = Delaunay(pts, threads=self._threads)
+        self.points = pts
+        self.values, self._trailing, self._complex = _as_values(values, pts.shape[0], who)
+        self.fill_value = fill_value
+        self._who = who
+
+    def __call__(self, *args: Any) -> np.ndarray:
+        xi, shape = _as_queries(args, self._who)
+        xi = np.ascontiguousarray((xi - self._offset) / self._scale)
+        out = self._evaluate(xi)
+        if self._complex:
+            half = out.shape[1] // 2
+            out = out[:, :half] + 1j * out[:, half:]
+        return out.reshape(shape + self._trailing)
+
+    def _evaluate(self, xi: np.ndarray) -> np.ndarray:
+        if not self._complex:
+            return _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, float(self.fill_value),
+                                     self._method, self._threads)
+        fill = complex(self.fill_value)
+        out = _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, fill.real, self._method,
+                                self._threads)
+        outside = self.tri.find_simplex(xi) < 0
+        out[outside, out.shape[1] // 2:] = fill.imag
+        return out
+
+
+class LinearNDInterpolator(_TriangulationInterpolator):
+    """Piecewise linear interpolation in ridt's exact Delaunay triangulation, with
+    scipy.interpolate.LinearNDInterpolator's interface (in the plane).
+
+    ``LinearNDInterpolator(points, values, fill_value=nan, rescale=False)``; ``points`` may be
+    a :class:`ridt.Delaunay`. Call it with an array of shape (..., 2) or with x and y arrays
+    that broadcast. Outside the convex hull the answer is ``fill_value``. ``threads`` (ridt's
+    own; 0 or -1: every core) serves the triangulation and every call.
+    """
+
+
+class NaturalNeighborInterpolator(_TriangulationInterpolator):
+    """Sibson's natural-neighbour interpolation: smooth where linear interpolation has kinks,
+    exact on linear functions, equal to the data at the points; the same arguments as
+    :class:`ridt.LinearNDInterpolator`. On the hull's edges it is linear along the edge."""
+
+    _method = "natural"
+    _name = "NaturalNeighborInterpolator"
+
+
+class NearestNDInterpolator:
+    """Nearest-neighbour interpolation with scipy.interpolate.NearestNDInterpolator's interface
+    (in the plane): the value of a nearest point, found by a walk on the Delaunay graph."""
+
+    def __init__(self, x: Any, y: Any, rescale: bool = False, tree_options: Any = None, *, threads: int = 1):
+        self._inner = LinearNDInterpolator(x, y, rescale=rescale, threads=threads)
+        self._inner._name = "NearestNDInterpolator"
+
+    def __call__(self, *args: Any) -> np.ndarray:
+        inner = self._inner
+        xi, shape = _as_queries(args, "ridt.NearestNDInterpolator")
+        xi = np.ascontiguousarray((xi - inner._offset) / inner._scale)
+        which = _core.nearest(inner.tri.points, inner.tri._tri, xi, inner._threads)
+        out = np.full((len(xi), inner.values.shape[1]), np.nan)
+        ok = which >= 0
+        out[ok] = inner.values[which[ok]]
+        if inner._complex:
+            half = out.shape[1] // 2
+            out = out[:, :half] + 1j * out[:, half:]
+        return out.reshape(shape + inner._trailing)
+
+
+def griddata(points: Any, values: Any, xi: Any, method: str = "linear", fill_value: Any = np.nan,
+             rescale: bool = False, *, threads: int = 1) -> np.ndarray:
+    """Interpolate scattered data, with scipy.interpolate.griddata's arguments (in the plane).
+
+    ``method`` is 'linear', 'nearest' or 'cubic' in scipy; here 'linear', 'nearest' or
+    'natural' (Sibson's natural neighbours). ``xi`` is an array (..., 2) or a tuple (x, y) of
+    arrays that broadcast (e.g. from numpy.mgrid). ``threads`` is ridt's own (0 or -1: every
+    core).
+    """
+    if method == "cubic":
+        raise NotImplementedError("method='cubic' is not in ridt; use 'linear', 'natural' or 'nearest'")
+    if method not in ("linear", "nearest", "natural"):
+        raise ValueError(f"method must be 'linear', 'nearest' or 'natural'; got {method!r}")
+    args = xi if isinstance(xi, tuple) else (xi,)
+    if method == "nearest":
+        return NearestNDInterpolator(points, values, rescale=rescale, threads=threads)(*args)
+    cls = LinearNDInterpolator if method == "linear" else NaturalNeighborInterpolator
+    return cls(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(*args)

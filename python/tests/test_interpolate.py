@@ -1,0 +1,139 @@
+"""ridt.Voronoi, ridt.griddata and the interpolators against scipy's, where the answer is unique."""
+
+import numpy as np
+import pytest
+import scipy.interpolate as si
+import scipy.spatial as ss
+
+import ridt
+
+
+@pytest.fixture
+def scattered():
+    rng = np.random.default_rng(11)
+    p = rng.random((3000, 2))
+    f = np.sin(4 * p[:, 0]) * np.cos(3 * p[:, 1]) + p[:, 0]
+    q = rng.random((20000, 2)) * 1.3 - 0.15
+    return p, f, q
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_griddata_linear_equals_scipy(scattered, threads):
+    p, f, q = scattered
+    a = ridt.griddata(p, f, q, threads=threads)
+    b = si.griddata(p, f, q)
+    assert np.array_equal(np.isnan(a), np.isnan(b))
+    ok = ~np.isnan(b)
+    assert ok.sum() > 10000
+    np.testing.assert_allclose(a[ok], b[ok], rtol=1e-12, atol=1e-12)
+
+
+def test_linear_interpolator_shapes_fill_components_and_rescale(scattered):
+    p, f, q = scattered
+    values = np.stack([f, 2 * f, -f], axis=1).reshape(-1, 3, 1)
+    ours = ridt.LinearNDInterpolator(p, values, fill_value=-5.0)
+    theirs = si.LinearNDInterpolator(p, values, fill_value=-5.0)
+    gx, gy = np.mgrid[-0.1:1.1:50j, -0.1:1.1:40j]
+    a, b = ours(gx, gy), theirs(gx, gy)
+    assert a.shape == b.shape == (50, 40, 3, 1)
+    np.testing.assert_allclose(a, b, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(ours((gx, gy)), b, rtol=1e-12, atol=1e-12)
+    # Complex values, and a Delaunay given in place of the points.
+    tri = ridt.Delaunay(p)
+    c = ridt.LinearNDInterpolator(tri, f + 2j * f, fill_value=1 + 1j)(q)
+    d = si.LinearNDInterpolator(p, f + 2j * f, fill_value=1 + 1j)(q)
+    np.testing.assert_allclose(c, d, rtol=1e-12, atol=1e-12)
+    # Rescaled: anisotropic points, the triangulation of the scaled points.
+    s = p * np.array([1000.0, 0.001])
+    e = ridt.LinearNDInterpolator(s, f, rescale=True)(q * np.array([1000.0, 0.001]))
+    g = si.LinearNDInterpolator(s, f, rescale=True)(q * np.array([1000.0, 0.001]))
+    assert np.array_equal(np.isnan(e), np.isnan(g))
+    np.testing.assert_allclose(e[~np.isnan(g)], g[~np.isnan(g)], rtol=1e-9, atol=1e-9)
+
+
+def test_nearest_is_as_near_as_scipys(scattered):
+    p, f, q = scattered
+    a = ridt.griddata(p, np.arange(len(p)), q, method="nearest")
+    b = si.griddata(p, np.arange(len(p)), q, method="nearest")
+    da = np.hypot(*(p[a.astype(int)] - q).T)
+    db = np.hypot(*(p[b.astype(int)] - q).T)
+    np.testing.assert_array_equal(da, db)
+
+
+def test_natural_neighbour_is_exact_on_planes_and_a_convex_combination(scattered):
+    p, f, q = scattered
+    plane = 3 * p[:, 0] - 2 * p[:, 1] + 0.5
+    a = ridt.griddata(p, plane, q, method="natural")
+    inside = ~np.isnan(si.griddata(p, plane, q))
+    assert np.array_equal(~np.isnan(a), inside)
+    np.testing.assert_allclose(a[inside], 3 * q[inside, 0] - 2 * q[inside, 1] + 0.5, atol=1e-12)
+    # Sibson's coordinates are positive: the answer lies between the data's bounds, and at the
+    # points it is the data.
+    n = ridt.NaturalNeighborInterpolator(p, f)
+    b = n(q)
+    assert np.nanmin(b) >= f.min() - 1e-12 and np.nanmax(b) <= f.max() + 1e-12
+    np.testing.assert_allclose(n(p), f, atol=1e-12)
+
+
+def test_griddata_refuses_what_it_cannot_do(scattered):
+    p, f, q = scattered
+    with pytest.raises(NotImplementedError):
+        ridt.griddata(p, f, q, method="cubic")
+    with pytest.raises(ValueError):
+        ridt.griddata(p, f, q, method="quadratic")
+    with pytest.raises(ValueError):
+        ridt.griddata(p, f[:-1], q)
+    with pytest.raises(ValueError):
+        ridt.LinearNDInterpolator(p, f)(np.zeros((4, 3)))
+
+
+def _sorted_pairs(a):
+    return {tuple(sorted(r)) for r in np.asarray(a).tolist()}
+
+
+def test_voronoi_equals_scipy():
+    rng = np.random.default_rng(5)
+    p = rng.random((2000, 2))
+    ours, theirs = ridt.Voronoi(p, threads=2), ss.Voronoi(p)
+    assert len(ours.vertices) == len(theirs.vertices)
+    assert _sorted_pairs(ours.ridge_points) == _sorted_pairs(theirs.ridge_points)
+
+    def ends(vd, i):  # a ridge's ends as coordinates, None for infinity, in a set
+        return {None if v < 0 else tuple(np.round(vd.vertices[v], 9)) for v in vd.ridge_vertices[i]}
+
+    ridges = {tuple(sorted(r)): ends(theirs, i) for i, r in enumerate(theirs.ridge_points.tolist())}
+    for i, r in enumerate(ours.ridge_points.tolist()):
+        assert ends(ours, i) == ridges[tuple(sorted(r))]
+    for k in range(len(p)):
+        a = ours.regions[ours.point_region[k]]
+        b = theirs.regions[theirs.point_region[k]]
+        coords = lambda vd, reg: {None if v < 0 else tuple(np.round(vd.vertices[v], 9)) for v in reg}
+        assert coords(ours, a) == coords(theirs, b)
+    assert set(ours.ridge_dict) == set(map(tuple, ours.ridge_points.tolist()))
+    assert ours.npoints == 2000 and ours.ndim == 2
+
+
+def test_voronoi_regions_are_counter_clockwise_and_hold_their_sites():
+    rng = np.random.default_rng(6)
+    p = rng.normal(size=(1000, 2))
+    vd = ridt.Voronoi(p)
+    for k in range(len(p)):
+        reg = vd.regions[vd.point_region[k]]
+        if -1 in reg:
+            assert reg[-1] == -1 and reg.count(-1) == 1
+            continue
+        c = vd.vertices[reg]
+        e = np.roll(c, -1, axis=0) - c
+        side = e[:, 0] * (p[k, 1] - c[:, 1]) - e[:, 1] * (p[k, 0] - c[:, 0])
+        assert (side > -1e-12).all()
+
+
+def test_voronoi_duplicates_and_degenerate_input():
+    p = np.array([[0, 0], [1, 0], [0, 1], [1, 1], [0.4, 0.6], [1, 0]], dtype=float)
+    vd = ridt.Voronoi(p)
+    assert vd.point_region[5] == vd.point_region[1]
+    assert len(vd.regions) == 5
+    with pytest.raises(ridt.InputError):
+        ridt.Voronoi([[0, 0], [1, 1], [2, 2]])
+    with pytest.raises(NotImplementedError):
+        ridt.Voronoi(p, furthest_site=True)
