@@ -4,7 +4,7 @@
 #   bench: also Qhull and node, and delaunator from npm into build/peers/node_modules (for
 #   build/ridt_bench_peers --node-modules build/peers/node_modules).
 set -euo pipefail
-packages=(g++ cmake ninja-build libcli11-dev)
+packages=(g++ cmake ninja-build libcli11-dev libpng-dev)
 if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
   # The Python package and its tests (Debian's interpreter, /usr/bin/python3).

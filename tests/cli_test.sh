@@ -218,5 +218,45 @@ expect 0 "progress piped" -- "$ridt" triangulate "$dir/million.bin" --stats
 [ ! -s "$dir/err" ] && pass || fail "stderr not empty when piped"
 python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$dir/out" && pass || fail "stats not JSON"
 
+# Voronoi and interpolation: every output format; the values exact on a plane at the points;
+# bad arguments refused without output.
+expect 0 "voronoi points" -- "$ridt" generate --dist uniform -n 500 --seed 4 -o "$dir/v.txt"
+for ext in svg off json; do
+  expect 0 "voronoi .$ext" -- "$ridt" voronoi "$dir/v.txt" -o "$dir/v.$ext" --threads 2
+done
+[ "$(grep -c '<polygon' "$dir/v.svg")" -eq 500 ] && pass || fail "voronoi .svg: not a polygon a site"
+python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); assert len(d["cells"]) == 500 and len(d["point_cell"]) == 500' \
+  "$dir/v.json" && pass || fail "voronoi .json"
+awk '{ printf "%.17g\n", 2 * $1 - 3 * $2 + 1 }' "$dir/v.txt" >"$dir/plane.txt"
+for m in linear natural nearest; do
+  expect 0 "interpolate $m at the points" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" "$dir/v.txt" \
+    --method "$m" -o "$dir/at.csv"
+  python3 -c '
+import sys
+rows = [l.split(",") for l in open(sys.argv[1]).read().split()[1:]]
+assert len(rows) == 500
+assert all(abs(float(v) - (2 * float(x) - 3 * float(y) + 1)) < 1e-12 for x, y, v in rows)' "$dir/at.csv" \
+    && pass || fail "interpolate $m: not the data at the points"
+done
+expect 0 "interpolate grid .png" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" --grid 64,48 -o "$dir/g.png" --threads 2
+head -c 8 "$dir/g.png" | od -An -c | grep -q "P   N   G" && pass || fail "grid .png is not a PNG"
+expect 0 "interpolate grid .bin" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" --grid 10,10,0,0,1,1 --fill -1 -o "$dir/g.bin"
+[ "$(stat -c %s "$dir/g.bin")" -eq 800 ] && pass || fail "grid .bin size"
+expect 2 "voronoi bad extension" -- "$ridt" voronoi "$dir/v.txt" -o "$dir/v.txt.png"
+stderr_has "unknown Voronoi output extension"
+absent "$dir/v.txt.png"
+expect 2 "voronoi collinear" -- "$ridt" voronoi <(printf '0 0\n1 1\n2 2\n') -o "$dir/c.svg"
+stderr_has "collinear"
+absent "$dir/c.svg"
+head -n 499 "$dir/plane.txt" >"$dir/short.txt"
+expect 2 "interpolate a value short" -- "$ridt" interpolate "$dir/v.txt" "$dir/short.txt" --grid 4,4 -o "$dir/x.csv"
+stderr_has "499 rows of values for 500 points"
+expect 2 "interpolate queries and grid" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" "$dir/v.txt" --grid 4,4 -o "$dir/x.csv"
+expect 2 "interpolate bad grid" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" --grid 4 -o "$dir/x.csv"
+expect 2 "interpolate .png of queries" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" "$dir/v.txt" -o "$dir/x.png"
+expect 2 "interpolate bad method" -- "$ridt" interpolate "$dir/v.txt" "$dir/plane.txt" --grid 4,4 --method cubic -o "$dir/x.csv"
+absent "$dir/x.csv"
+absent "$dir/x.png"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -4,24 +4,33 @@
 //                          [--stats[=json|table]] [--profile]
 //   ridt generate --dist uniform|normal|grid|clusters -n N [--seed S] -o FILE
 //   ridt check POINTS TRIANGLES
+//   ridt voronoi POINTS -o OUT.svg|.off|.json [--box x0,y0,x1,y1] [--threads N]
+//   ridt interpolate POINTS VALUES (QUERIES | --grid nx,ny[,x0,y0,x1,y1]) -o OUT.csv|.bin|.png
+//                    [--method linear|natural|nearest] [--fill V] [--threads N]
 // Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage.
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <initializer_list>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "generate.hpp"
 #include "io.hpp"
 #include "ridt/check.hpp"
+#include "ridt/interpolate.hpp"
+#include "ridt/voronoi.hpp"
 #include "ridt/ridt.hpp"
 
 namespace {
@@ -239,6 +248,98 @@ int run_triangulate(const TriangulateArgs& a) {
   return 0;
 }
 
+// Numbers apart by commas, e.g. "200,100" or "0,0,1,1"; `what` names them in a message.
+std::vector<double> numbers(const std::string& text, const char* what) {
+  std::vector<double> out;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    double v = 0;
+    const char* first = text.data() + at;
+    const char* last = text.data() + comma;
+    const auto r = std::from_chars(first, last, v);
+    if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v))
+      throw ridt::InputError(std::string(what) + ": '" + text + "' is not a list of finite numbers apart by commas");
+    out.push_back(v);
+    at = comma + 1;
+  }
+  return out;
+}
+
+ridt::io::Box box_option(const std::string& text, std::span<const ridt::Point> points) {
+  if (text.empty()) return ridt::io::box_around(points, 0.1);
+  const std::vector<double> b = numbers(text, "--box");
+  if (b.size() != 4 || !(b[0] < b[2]) || !(b[1] < b[3]))
+    throw ridt::InputError("--box: give x0,y0,x1,y1 with x0 < x1 and y0 < y1");
+  return {b[0], b[1], b[2], b[3]};
+}
+
+int run_voronoi(const std::string& in, const std::string& out, const std::string& box, unsigned threads) {
+  const ridt::io::PointFile p = ridt::io::read_points(in);
+  ridt::Options o;
+  o.method = threads == 1 ? ridt::Method::Serial : ridt::Method::Partition;
+  o.threads = threads;
+  const ridt::Triangulation t = ridt::triangulate(p.points, o);
+  if (!t.warning.empty()) throw ridt::InputError("no Voronoi vertex: " + t.warning);
+  const ridt::Voronoi vd = ridt::voronoi(p.points, t, threads);
+  ridt::io::write_voronoi(out, p.points, t, vd, box_option(box, p.points));
+  return 0;
+}
+
+struct InterpolateArgs {
+  std::string points, values, queries, grid, method = "linear", output;
+  double fill = std::numeric_limits<double>::quiet_NaN();
+  unsigned threads = 1;
+};
+
+int run_interpolate(const InterpolateArgs& a) {
+  if (a.queries.empty() == a.grid.empty()) throw ridt::InputError("give either a QUERIES file or --grid, not both");
+  if (a.method != "linear" && a.method != "natural" && a.method != "nearest")
+    throw ridt::InputError("unknown method '" + a.method + "' (use linear, natural or nearest)");
+  const ridt::io::PointFile p = ridt::io::read_points(a.points);
+  std::size_t components = 0;
+  const std::vector<double> values = ridt::io::read_values(a.values, components);
+  if (values.size() != p.points.size() * components)
+    throw ridt::InputError(a.values + ": " + std::to_string(values.size() / components) + " rows of values for " +
+                           std::to_string(p.points.size()) + " points");
+  std::vector<ridt::Point> queries;
+  std::size_t nx = 0, ny = 0;
+  if (!a.grid.empty()) {
+    const std::vector<double> g = numbers(a.grid, "--grid");
+    if ((g.size() != 2 && g.size() != 6) || g[0] < 2 || g[1] < 2 || g[0] != std::floor(g[0]) ||
+        g[1] != std::floor(g[1]) || g[0] * g[1] > 1e9)
+      throw ridt::InputError("--grid: give nx,ny (at least 2 each) or nx,ny,x0,y0,x1,y1");
+    nx = static_cast<std::size_t>(g[0]), ny = static_cast<std::size_t>(g[1]);
+    const ridt::io::Box b = g.size() == 6 ? ridt::io::Box{g[2], g[3], g[4], g[5]} : ridt::io::box_around(p.points, 0);
+    queries.resize(nx * ny);
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i)
+        queries[j * nx + i] = {b.x0 + (b.x1 - b.x0) * static_cast<double>(i) / static_cast<double>(nx - 1),
+                               b.y0 + (b.y1 - b.y0) * static_cast<double>(j) / static_cast<double>(ny - 1)};
+  } else {
+    queries = ridt::io::read_points(a.queries).points;
+  }
+  ridt::Options o;
+  o.method = a.threads == 1 ? ridt::Method::Serial : ridt::Method::Partition;
+  o.threads = a.threads;
+  const ridt::Triangulation t = ridt::triangulate(p.points, o);
+  const ridt::Values v{values, components};
+  std::vector<double> out;
+  if (a.method == "nearest") {
+    const std::vector<std::int32_t> near = ridt::nearest_vertex(p.points, t, queries, a.threads);
+    out.assign(queries.size() * components, a.fill);
+    for (std::size_t q = 0; q < queries.size(); ++q)
+      if (near[q] >= 0)
+        std::copy_n(&values[static_cast<std::size_t>(near[q]) * components], components, &out[q * components]);
+  } else if (a.method == "natural") {
+    out = ridt::interpolate_natural_neighbor(p.points, t, v, queries, a.fill, a.threads);
+  } else {
+    out = ridt::interpolate_linear(p.points, t, v, queries, a.fill, a.threads);
+  }
+  ridt::io::write_values(a.output, queries, out, components, nx, ny);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -295,6 +396,33 @@ int main(int argc, char** argv) {
   chk->add_option("points", check_points, "the points")->required();
   chk->add_option("triangles", check_tris, "the triangles: .ele, .bin or text")->required();
 
+  std::string vor_in, vor_out, vor_box;
+  unsigned vor_threads = 1;
+  CLI::App* vor = app.add_subcommand("voronoi", "the Voronoi diagram of points");
+  vor->add_option("points", vor_in, "the points: .node, .bin or text")->required();
+  vor->add_option("-o,--output", vor_out, "output: .svg (the cells clipped to the box, and the sites), .off (each "
+                                          "clipped cell a face) or .json (vertices, cells, ridges)")
+      ->required();
+  vor->add_option("--box", vor_box, "x0,y0,x1,y1: the box .svg and .off clip to (default: the points' box and "
+                                    "10 % around)");
+  vor->add_option("--threads", vor_threads, "threads (0: all hardware threads; default 1)");
+
+  InterpolateArgs ia;
+  CLI::App* ip = app.add_subcommand("interpolate", "interpolate values given at points, at queries or on a grid");
+  ip->add_option("points", ia.points, "the points: .node, .bin or text")->required();
+  ip->add_option("values", ia.values, "their values, a row a point: text/.csv (one or more a line) or .bin "
+                                      "(float64)")
+      ->required();
+  ip->add_option("queries", ia.queries, "the query points (or --grid)");
+  ip->add_option("--grid", ia.grid, "nx,ny[,x0,y0,x1,y1]: the nodes of a grid, row by row from (x0, y0) "
+                                    "(default box: the points')");
+  ip->add_option("--method", ia.method, "linear (default), natural (Sibson's natural neighbours) or nearest");
+  ip->add_option("--fill", ia.fill, "the value outside the convex hull (default nan)");
+  ip->add_option("-o,--output", ia.output, "output: .csv (x,y,values), .bin (float64 values) or, for a grid, "
+                                           ".png (a colour map)")
+      ->required();
+  ip->add_option("--threads", ia.threads, "threads (0: all hardware threads; default 1)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -319,6 +447,8 @@ int main(int argc, char** argv) {
       ridt::io::write_points(gen_out, ridt::generate(*d, gen_n, gen_seed));
       return 0;
     }
+    if (*vor) return run_voronoi(vor_in, vor_out, vor_box, vor_threads);
+    if (*ip) return run_interpolate(ia);
     if (*chk) {
       const ridt::io::PointFile p = ridt::io::read_points(check_points);
       const auto t = ridt::io::read_triangles(check_tris, p.first_index);

@@ -8,40 +8,10 @@
 #include "io_common.hpp"
 
 namespace ridt::io {
-namespace {
 
 using namespace detail;
 
-/// The whole file, or IoError("cannot read FILE: <reason>").
-std::string read_file(const std::string& path) {
-  errno = 0;
-  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-  if (!f) throw IoError("cannot read " + path + ": " + errno_text(errno));
-  std::error_code ec;
-  const std::uintmax_t hint = fs::file_size(path, ec);
-  std::string data;
-  // One byte more than the size, so that a regular file is read by one call that hits EOF.
-  data.resize(!ec && hint < (std::uintmax_t{1} << 40) ? static_cast<std::size_t>(hint) + 1
-                                                       : std::size_t{1} << 16);
-  std::size_t used = 0;
-  for (;;) {
-    if (used == data.size()) data.resize(data.size() * 2);
-    const std::size_t want = data.size() - used;
-    errno = 0;
-    const std::size_t got = std::fread(data.data() + used, 1, want, f.get());
-    used += got;
-    if (got < want) {
-      if (std::ferror(f.get())) throw IoError("cannot read " + path + ": " + errno_text(errno));
-      break;
-    }
-  }
-  data.resize(used);
-  return data;
-}
-
-}  // namespace
-
-PointFile read_points(const std::string& path) { return parse_points(read_file(path), path); }
+PointFile read_points(const std::string& path) { return parse_points(read_file_whole(path), path); }
 
 PointFile parse_points(std::string_view data, const std::string& name) {
   const std::string ext = extension_of(name);
@@ -64,7 +34,7 @@ void write_points(const std::string& path, std::span<const Point> points) {
 }
 
 std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
-  return parse_triangles(read_file(path), path, first_index);
+  return parse_triangles(read_file_whole(path), path, first_index);
 }
 
 std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ridt/ridt.hpp"
+#include "ridt/voronoi.hpp"
 
 namespace ridt::io {
 
@@ -58,6 +59,37 @@ void check_triangulation_extension(const std::string& path);
 /// .neigh and .off/.obj keep their own conventions (0-based and 1-based).
 void write_triangulation(const std::string& path, std::span<const Point> points,
                          const Triangulation& t, int first_index);
+
+/// An axis-parallel box [x0, x1] x [y0, y1].
+struct Box {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+/// The points' bounding box grown by `margin` of its size on every side (a box of one point
+/// or a line grows by 1 where it is flat).
+Box box_around(std::span<const Point> points, double margin);
+
+/// Cell c of `vd` clipped to `box`, counter-clockwise (empty when it misses the box);
+/// `t` is the triangulation the diagram came from (its hull edges carry the rays).
+std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
+                                std::size_t c, const Box& box);
+
+/// Writes a Voronoi diagram: .svg (the cells clipped to `box`, and the sites), .off (each cell
+/// clipped to `box` a face) or .json (vertices, cells with -1 at infinity, each point's cell,
+/// ridges as [a, b, u, v]).
+void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t,
+                   const Voronoi& vd, const Box& box);
+
+/// Reads values, one row of `components` numbers a point: text (numbers apart by white space or
+/// a comma, '#' comments) or .bin (little-endian float64); `components` 0 means one row a line
+/// decides it (text) or 1 (.bin). Returns the numbers and sets `components`.
+std::vector<double> read_values(const std::string& path, std::size_t& components);
+
+/// Writes values at queries: .csv ("x,y,v1,...", a header line first), .bin (float64 values,
+/// row by row) or, for a grid of nx by ny (nx, ny > 0) of one component, .png (a colour map
+/// from the smallest to the largest finite value, transparent where there is none).
+void write_values(const std::string& path, std::span<const Point> queries, std::span<const double> values,
+                  std::size_t components, std::size_t nx = 0, std::size_t ny = 0);
 
 /// The largest triangulation that write_triangulation draws as .svg.
 inline constexpr std::size_t kSvgMaxTriangles = 200000;

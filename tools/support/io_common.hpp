@@ -81,6 +81,33 @@ struct FileCloser {
 
 
 
+/// The whole file, or IoError("cannot read FILE: <reason>").
+inline std::string read_file_whole(const std::string& path) {
+  errno = 0;
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
+  if (!f) throw IoError("cannot read " + path + ": " + errno_text(errno));
+  std::error_code ec;
+  const std::uintmax_t hint = fs::file_size(path, ec);
+  std::string data;
+  // One byte more than the size, so that a regular file is read by one call that hits EOF.
+  data.resize(!ec && hint < (std::uintmax_t{1} << 40) ? static_cast<std::size_t>(hint) + 1
+                                                       : std::size_t{1} << 16);
+  std::size_t used = 0;
+  for (;;) {
+    if (used == data.size()) data.resize(data.size() * 2);
+    const std::size_t want = data.size() - used;
+    errno = 0;
+    const std::size_t got = std::fread(data.data() + used, 1, want, f.get());
+    used += got;
+    if (got < want) {
+      if (std::ferror(f.get())) throw IoError("cannot read " + path + ": " + errno_text(errno));
+      break;
+    }
+  }
+  data.resize(used);
+  return data;
+}
+
 /// Calls f(line_number, content) for every line that is not blank after removing its
 /// comment ('#' to the end of the line) and surrounding white space. Line numbers count from 1.
 template <class F>

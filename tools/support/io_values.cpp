@@ -1,0 +1,120 @@
+// Values at points and at queries: text and .csv rows, raw float64, and a grid as a .png
+// picture (libpng, where the build found it).
+#include "io_common.hpp"
+
+#ifdef RIDT_HAVE_PNG
+#include <png.h>
+#endif
+
+namespace ridt::io {
+namespace {
+
+using detail::Writer;
+
+// A perceptually ordered colour map, dark blue through green to yellow, at t in [0, 1].
+void colour(double t, unsigned char* rgb) {
+  static const double stops[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  t = std::clamp(t, 0.0, 1.0) * 4;
+  const int k = std::min(static_cast<int>(t), 3);
+  const double f = t - k;
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<unsigned char>(std::lround(stops[k][c] + f * (stops[k + 1][c] - stops[k][c])));
+}
+
+void write_png(const std::string& path, std::span<const double> v, std::size_t nx, std::size_t ny) {
+#ifdef RIDT_HAVE_PNG
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const double x : v)
+    if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+  // Row 0 of the picture is the grid's last row: y up.
+  std::vector<unsigned char> rgba(4 * nx * ny, 0);
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double x = v[j * nx + i];
+      unsigned char* px = &rgba[4 * ((ny - 1 - j) * nx + i)];
+      if (!std::isfinite(x)) continue;  // transparent
+      colour(hi > lo ? (x - lo) / (hi - lo) : 0.5, px);
+      px[3] = 255;
+    }
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = static_cast<png_uint_32>(nx);
+  image.height = static_cast<png_uint_32>(ny);
+  image.format = PNG_FORMAT_RGBA;
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, rgba.data(), 0, nullptr))
+    detail::fail_file(path, std::string("cannot encode the picture: ") + image.message);
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, rgba.data(), 0, nullptr))
+    detail::fail_file(path, std::string("cannot encode the picture: ") + image.message);
+  png_image_free(&image);
+  Writer out(path);
+  out.put(std::string_view(bytes.data(), size));
+  out.commit();
+#else
+  (void)v, (void)nx, (void)ny;
+  detail::fail_file(path, "this build writes no .png (it was built without libpng: apt-get install libpng-dev)");
+#endif
+}
+
+}  // namespace
+
+std::vector<double> read_values(const std::string& path, std::size_t& components) {
+  const std::string data = detail::read_file_whole(path);
+  std::vector<double> out;
+  if (detail::extension_of(path) == ".bin") {
+    if (components == 0) components = 1;
+    if (data.size() % (8 * components) != 0)
+      detail::fail_file(path, "size " + std::to_string(data.size()) + " bytes is not a multiple of " +
+                                  std::to_string(8 * components) + " (rows of float64)");
+    out.resize(data.size() / 8);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = detail::load_f64_le(data.data() + 8 * i);
+    return out;
+  }
+  detail::for_each_line(data, [&](std::size_t line_no, std::string_view line) {
+    detail::Fields f{line, true};
+    std::size_t count = 0;
+    for (std::string_view field; f.next(field); ++count) {
+      double v = 0;
+      if (detail::parse_double(field, v) != detail::Parse::Ok)
+        detail::fail_line(path, line_no, "value " + detail::quoted(field) + " is not a number");
+      out.push_back(v);
+    }
+    if (f.bad) detail::fail_line(path, line_no, "a misplaced comma in " + detail::quoted(line));
+    if (components == 0) components = count;
+    if (count != components)
+      detail::fail_line(path, line_no,
+                        "expected " + std::to_string(components) + " values, got " + std::to_string(count));
+  });
+  if (components == 0) components = 1;
+  return out;
+}
+
+void write_values(const std::string& path, std::span<const Point> queries, std::span<const double> values,
+                  std::size_t components, std::size_t nx, std::size_t ny) {
+  const std::string ext = detail::extension_of(path);
+  if (ext == ".png") {
+    if (nx == 0 || ny == 0 || components != 1)
+      detail::fail_file(path, "a .png picture needs a grid (--grid) and one value a point");
+    write_png(path, values, nx, ny);
+    return;
+  }
+  if (ext != ".csv" && ext != ".bin")
+    throw IoError("unknown values output extension '" + ext + "' (use .csv, .bin or, for a grid, .png)");
+  Writer out(path);
+  if (ext == ".bin") {
+    for (const double v : values) out.put_f64_le(v);
+  } else {
+    out.put("x,y");
+    for (std::size_t k = 0; k < components; ++k) out.put(",v"), out.put_int(static_cast<std::int64_t>(k));
+    out.put('\n');
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      out.put_double(queries[i].x), out.put(','), out.put_double(queries[i].y);
+      for (std::size_t k = 0; k < components; ++k) out.put(','), out.put_double(values[i * components + k]);
+      out.put('\n');
+    }
+  }
+  out.commit();
+}
+
+}  // namespace ridt::io
