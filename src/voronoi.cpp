@@ -82,14 +82,18 @@ Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned 
   for (const Duplicate& d : t.duplicates) out.point_cell[d.dropped] = out.point_cell[d.kept];
   out.cell_vertices.resize(out.cell_offsets.back());
   // Counter-clockwise around v: from triangle (v, a, b) to the one across its side v-b, which
-  // is across from a, its next corner.
-  detail::parallel_for(out.cell_site.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
-    for (std::size_t c = first; c < last; ++c) {
-      const VertexId v = out.cell_site[c];
+  // is across from a, its next corner. The cells are filled in the order of their first
+  // triangles, where the triangles near in memory lie near in the plane: in the order of the
+  // sites, the walks around them would miss the cache at every step.
+  detail::parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = 3 * first; k < 3 * last; ++k) {
+      const VertexId v = t.triangles[k];
+      if (f.start[v] != static_cast<std::int32_t>(k)) continue;
+      const auto c = static_cast<std::size_t>(out.point_cell[v]);
       std::int32_t* at = &out.cell_vertices[out.cell_offsets[c]];
       std::int32_t* const end = &out.cell_vertices[out.cell_offsets[c + 1]];
-      auto tri = static_cast<std::int32_t>(f.start[v] / 3);
-      int i = f.start[v] % 3;
+      auto tri = static_cast<std::int32_t>(k / 3);
+      int i = static_cast<int>(k % 3);
       const std::int32_t first_tri = tri;
       for (;;) {
         *at++ = tri;

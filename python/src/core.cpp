@@ -198,14 +198,13 @@ Triangulation alive.
         std::copy_n(reinterpret_cast<const double*>(v.vertices.data()), 2 * v.vertices.size(), vertices.mutable_data());
         py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});
         py::array_t<double> ridge_directions({r, py::ssize_t{2}});
-        for (py::ssize_t k = 0; k < r; ++k) {
-          const ridt::Ridge& x = v.ridges[static_cast<std::size_t>(k)];
-          ridge_points.mutable_at(k, 0) = static_cast<std::int32_t>(x.a);
-          ridge_points.mutable_at(k, 1) = static_cast<std::int32_t>(x.b);
-          ridge_vertices.mutable_at(k, 0) = x.u;
-          ridge_vertices.mutable_at(k, 1) = x.v;
-          ridge_directions.mutable_at(k, 0) = x.direction.x;
-          ridge_directions.mutable_at(k, 1) = x.direction.y;
+        std::int32_t* rp = ridge_points.mutable_data();
+        std::int32_t* rv = ridge_vertices.mutable_data();
+        double* rd = ridge_directions.mutable_data();
+        for (const ridt::Ridge& x : v.ridges) {
+          *rp++ = static_cast<std::int32_t>(x.a), *rp++ = static_cast<std::int32_t>(x.b);
+          *rv++ = x.u, *rv++ = x.v;
+          *rd++ = x.direction.x, *rd++ = x.direction.y;
         }
         return py::make_tuple(vertices, py::array_t<std::uint32_t>(v.cell_offsets.size(), v.cell_offsets.data()),
                               py::array_t<std::int32_t>(v.cell_vertices.size(), v.cell_vertices.data()),
