@@ -249,6 +249,21 @@ def python_section(results):
         + "\n\n![time against n](results/python_time.png)\n")
 
 
+def interpolate_section(results):
+    data = rows(results, "interpolate.csv")
+    body = [[r["task"], n_text(r["n"]), r["grid"], r["code"], f"{float(r['time_s']):.2f}",
+             f"{float(r['scipy_over_code']):.1f}", f"{float(r['extra_b_per_point']):.0f}"]
+            for r in data if r.get("time_s")]
+    return (
+        "## Interpolation and Voronoi against scipy\n\n"
+        "`ridt.griddata` (linear) onto a grid, the triangulation included, and `ridt.Voronoi` with its "
+        "`regions` and `ridge_vertices` lists, against scipy's on the same uniform points, each call in a "
+        "fresh process; × scipy: scipy's time over the code's. Output: "
+        "[results/interpolate.md](results/interpolate.md).\n\n"
+        + table(["call", "n", "grid", "code", "s", "× scipy", "B/pt"], body,
+                ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--results", default="docs/results")
@@ -268,7 +283,8 @@ def main():
         + "Times are medians of interleaved repetitions; on a shared machine compare ratios "
         "taken in the same run, not seconds across runs.\n")
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
-             threads_section(args.results), table3_section(args.results), python_section(args.results)]
+             threads_section(args.results), table3_section(args.results), python_section(args.results),
+             interpolate_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"
                  + "\n".join(cmd for _, cmd in commands) + "\n```\n")
     with open(args.out, "w") as f:

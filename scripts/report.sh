@@ -43,6 +43,7 @@ if [ "$mode" = quick ]; then
   peers_args=(--sizes 100000 --reps 3)
   process_args=(--sizes 100000 --reps 3)
   python_args=(--sizes 10000,100000 --big "" --reps 2)
+  interpolate_args=(--n 100000 --grid 500 --reps 2)
 else
   serial_args=(--reps 5)
   threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
@@ -50,6 +51,7 @@ else
   peers_args=(--sizes 10000,100000,1000000 --reps 5)
   process_args=(--sizes 1000000 --reps 5)
   python_args=(--sizes 10000,100000,1000000 --big "" --reps 3)
+  interpolate_args=(--n 1000000 --grid 2000 --reps 3)
   if [ "$mode" = large ]; then
     process_args=(--sizes 1000000,10000000 --reps 5)
     python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
@@ -74,6 +76,8 @@ run peers "$build/ridt_bench_peers" "${peers_args[@]}" --node-modules build/peer
 run process "$py" bench/process_table.py --build "$build" "${process_args[@]}" --threads 2 --out "$tmp/process.md"
 run python env PYTHONPATH="$build/python" "$py" bench/python_table.py --python "$py" "${python_args[@]}" \
   --out "$tmp/python.md"
+run interpolate env PYTHONPATH="$build/python" "$py" bench/interpolate_table.py --python "$py" \
+  "${interpolate_args[@]}" --out "$tmp/interpolate.md"
 run plots "$py" bench/plot_threads.py "$tmp/threads.csv" "$tmp"
 run plots_root "$py" bench/plot_threads.py "$tmp/table3.csv" "$tmp" root_
 
