@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "driver.hpp"
+#include "parallel.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -82,20 +83,13 @@ void canonicalize(Triangulation& out, unsigned threads) {
   }
   auto gather = [&](auto& a) {
     std::remove_reference_t<decltype(a)> sorted(a.size());
-    const unsigned parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
-    auto part = [&](unsigned w) {
+    parallel_for(count, std::max(threads, 1u), 65536, [&](std::size_t first, std::size_t last) {
       constexpr std::size_t kAhead = 16;
-      const std::size_t first = count * w / parts, last = count * (w + 1) / parts;
       for (std::size_t i = first; i < last; ++i) {
         if (i + kAhead < last) __builtin_prefetch(&a[3 * std::size_t{order[i + kAhead]}]);
         copy3(&a[3 * std::size_t{order[i]}], &sorted[3 * i]);
       }
-    };
-    {
-      std::vector<std::jthread> pool;
-      for (unsigned w = 1; w < parts; ++w) pool.emplace_back(part, w);
-      part(0);
-    }
+    });
     a.swap(sorted);
   };
   gather(tv);
@@ -185,14 +179,6 @@ void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std:
 }
 
 namespace {
-
-// Runs body(w) for w in [0, count), each on its own thread, the caller taking w = 0.
-template <class Body>
-void on_threads(unsigned count, Body&& body) {
-  std::vector<std::jthread> pool;
-  for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
-  body(0u);
-}  // the pool joins on leaving
 
 // The records of the history DAG that are output triangles (leaves without a bounding vertex):
 // a bit for each record and, for each word of 64 records, how many kept records come before

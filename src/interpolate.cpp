@@ -11,6 +11,7 @@
 
 #include "arrays.hpp"
 #include "cavity.hpp"
+#include "circumcentre.hpp"
 #include "parallel.hpp"
 #include "predicates.hpp"
 #include "ridt/locate.hpp"
@@ -22,24 +23,12 @@ using detail::next3;
 using detail::prev3;
 
 constexpr std::size_t kGrain = 1 << 14;  // queries a thread takes at least
+constexpr Point kOrigin{0, 0};            // the query, in the coordinates relative to it
 
 void check_values(const char* who, std::size_t n, const Values& values) {
   if (values.components == 0 || values.data.size() != n * values.components)
     throw InputError(std::string(who) + ": " + std::to_string(values.data.size()) + " values for " +
                      std::to_string(n) + " points of " + std::to_string(values.components) + " components");
-}
-
-// The circumcentre of the origin, a and b (points relative to the query).
-Point circumcentre0(const Point& a, const Point& b) {
-  const double a2 = a.x * a.x + a.y * a.y, b2 = b.x * b.x + b.y * b.y;
-  const double d = 2 * (a.x * b.y - a.y * b.x);
-  return {(b.y * a2 - a.y * b2) / d, (a.x * b2 - b.x * a2) / d};
-}
-
-// The circumcentre of a, b and c, all relative to the query.
-Point circumcentre(const Point& a, const Point& b, const Point& c) {
-  const Point o = circumcentre0({b.x - a.x, b.y - a.y}, {c.x - a.x, c.y - a.y});
-  return {a.x + o.x, a.y + o.y};
 }
 
 // What interpolation reads: the points, the triangulation, the values.
@@ -118,11 +107,9 @@ class Sibson {
       const auto c = static_cast<std::size_t>(cavity_[k]);
       for (int i = 0; i < 3; ++i) {
         const std::int32_t u = f_.neighbour(c, i);
-        if (u >= 0 && in_cavity(u)) continue;
-        const auto uu = static_cast<std::size_t>(u);
-        if (u >= 0 && detail::incircle(f_.corner(uu, 0), f_.corner(uu, 1), f_.corner(uu, 2), q) > 0) {
-          cavity_.push_back(u);
-        }
+        if (u < 0 || in_cavity(u)) continue;
+        const auto w = static_cast<std::size_t>(u);
+        if (detail::incircle(f_.corner(w, 0), f_.corner(w, 1), f_.corner(w, 2), q) > 0) cavity_.push_back(u);
       }
     }
     for (const std::int32_t c : cavity_)
@@ -145,21 +132,22 @@ class Sibson {
     for (const Edge& x : boundary_)
       if (x.from == v) out_edge = &x;
     polygon_.clear();
-    polygon_.push_back(circumcentre0(rel(e.from, q), rel(v, q)));
+    polygon_.push_back(detail::circumcentre(kOrigin, rel(e.from, q), rel(v, q)));
     // Around v from the triangle of side from -> v to the one of side v -> next, across the
     // sides v-w inside the cavity.
     std::size_t tri = e.tri;
     for (std::size_t guard = 0; guard <= cavity_.size(); ++guard) {
-      polygon_.push_back(circumcentre(rel(f_.vertex(tri, 0), q), rel(f_.vertex(tri, 1), q), rel(f_.vertex(tri, 2), q)));
+      polygon_.push_back(
+          detail::circumcentre(rel(f_.vertex(tri, 0), q), rel(f_.vertex(tri, 1), q), rel(f_.vertex(tri, 2), q)));
       if (out_edge != nullptr && tri == out_edge->tri) break;
-      // v's corner in tri; the side from v that is not from -> v is across from its previous
-      // corner... that is, v -> its next vertex, across from prev3.
+      // v's corner i in tri: the side v -> next vertex, across from the previous corner, leads
+      // on (the other side at v is the one we came by).
       const int i = f_.vertex(tri, 0) == v ? 0 : f_.vertex(tri, 1) == v ? 1 : 2;
       const std::int32_t u = f_.neighbour(tri, prev3(i));
       if (u < 0) break;
       tri = static_cast<std::size_t>(u);
     }
-    polygon_.push_back(circumcentre0(rel(v, q), rel(out_edge != nullptr ? out_edge->to : v, q)));
+    polygon_.push_back(detail::circumcentre(kOrigin, rel(v, q), rel(out_edge != nullptr ? out_edge->to : v, q)));
     double area = 0;
     for (std::size_t k = 0, s = polygon_.size(); k < s; ++k) {
       const Point& a = polygon_[k];

@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "cavity.hpp"
 #include "order.hpp"
+#include "parallel.hpp"
 #include "predicates.hpp"
 
 namespace ridt {
@@ -109,25 +110,10 @@ void locate(std::span<const Point> points, std::span<const VertexId> triangles,
     return;
   }
   const Result mesh{points.data(), triangles.data(), neighbors.data(), size};
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // A share of fewer than some 16,000 queries is not worth a thread.
-  const std::size_t n = queries.size();
-  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n / 16384, 1, threads));
-  std::vector<std::exception_ptr> failed(parts);
-  auto share = [&](unsigned p) {
-    try {
-      locate_share(mesh, queries.data(), n * p / parts, n * (p + 1) / parts, out.data());
-    } catch (...) {
-      failed[p] = std::current_exception();
-    }
-  };
-  {
-    std::vector<std::jthread> pool;
-    for (unsigned p = 1; p < parts; ++p) pool.emplace_back(share, p);
-    share(0);
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  detail::parallel_for(queries.size(), threads, 16384, [&](std::size_t first, std::size_t last) {
+    locate_share(mesh, queries.data(), first, last, out.data());
+  });
 }
 
 std::vector<std::int32_t> locate(std::span<const Point> points, const Triangulation& triangulation,

@@ -14,6 +14,7 @@
 #include "cavity.hpp"
 #include "driver.hpp"
 #include "order.hpp"
+#include "parallel.hpp"
 #include "predicates.hpp"
 #include "ridt/ridt.hpp"
 
@@ -85,15 +86,6 @@ void check_finite(std::span<const Point> points) {
   }
 }
 
-// Runs body(first, last) over [0, count) on up to `threads` threads.
-template <class Body>
-void in_parallel(std::size_t count, unsigned threads, Body&& body) {
-  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
-  std::vector<std::jthread> pool;
-  for (unsigned t = 1; t < parts; ++t) pool.emplace_back([&, t] { body(count * t / parts, count * (t + 1) / parts); });
-  body(0, count / parts);
-}
-
 // The points in insertion order (vertex v is input point order[v]), scaled by 2^scale, then
 // the three bounding vertices. Inserting them from a copy in that order keeps the points that
 // successive insertions read close together in memory.
@@ -101,7 +93,7 @@ detail::Block<Point> copy_in_order(std::span<const Point> points, const std::vec
                                    int scale, unsigned threads) {
   const std::size_t n = points.size();
   auto pts = detail::allocate_huge<Point>(n + 3);
-  in_parallel(n, threads, [&](std::size_t first, std::size_t last) {
+  detail::parallel_for(n, threads, 65536, [&](std::size_t first, std::size_t last) {
     if (scale == 0) {
       for (std::size_t v = first; v < last; ++v) pts[v] = points[order[v]];
     } else {
@@ -202,7 +194,7 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const 
       detail::brio_order(points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr);
   if (!keys.empty()) {
     std::vector<std::uint32_t> by_vertex(n);
-    in_parallel(n, p.threads, [&](std::size_t first, std::size_t last) {
+    detail::parallel_for(n, p.threads, 65536, [&](std::size_t first, std::size_t last) {
       for (std::size_t v = first; v < last; ++v) by_vertex[v] = keys[order[v]];
     });
     keys = std::move(by_vertex);

@@ -7,6 +7,7 @@
 
 #include "arrays.hpp"
 #include "cavity.hpp"
+#include "circumcentre.hpp"
 #include "parallel.hpp"
 
 namespace ridt {
@@ -16,15 +17,6 @@ using detail::next3;
 using detail::prev3;
 
 constexpr std::size_t kGrain = 1 << 15;  // triangles or vertices a thread takes at least
-
-// The circumcentre of a, b, c, computed relative to a (which keeps it accurate for a small
-// triangle far from the origin).
-Point circumcentre(const Point& a, const Point& b, const Point& c) {
-  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  const double d = 2 * (bx * cy - by * cx);
-  return {a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
-}
 
 // The triangles around each vertex: for vertex v, a triangle holding it (one whose clockwise
 // side from v is a hull edge, for a vertex on the hull) and its corner there.
@@ -65,7 +57,7 @@ Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned 
   detail::parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k) {
       const VertexId* v = &t.triangles[3 * k];
-      out.vertices[k] = circumcentre(points[v[0]], points[v[1]], points[v[2]]);
+      out.vertices[k] = detail::circumcentre(points[v[0]], points[v[1]], points[v[2]]);
     }
   });
 

@@ -10,6 +10,7 @@
 
 #include "cavity.hpp"
 #include "driver.hpp"
+#include "parallel.hpp"
 
 namespace ridt::detail {
 
@@ -121,14 +122,6 @@ void Mesh::give_back(SlotPool& pool) {
 }
 
 namespace {
-
-// Runs body(w) for w in [0, count), each on its own thread, the caller taking w = 0.
-template <class Body>
-void on_threads(unsigned count, Body&& body) {
-  std::vector<std::jthread> pool;
-  for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
-  body(0u);
-}  // the pool joins on leaving
 
 // The slots of the walking mesh that hold output triangles (no bounding vertex), a bit each,
 // and where the output puts them: the output is the mesh's own arrays, so a kept slot below

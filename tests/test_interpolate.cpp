@@ -145,7 +145,7 @@ TEST(Interpolation, NaturalNeighbourIsContinuous) {
   const Triangulation t = triangulate(pts);
   std::vector<double> f;
   for (const Point& p : pts) f.push_back(std::sin(5 * p.x) * std::cos(3 * p.y));
-  // Along a line, steps of 1e-7: no jump larger than what the slope allows.
+  // Along a line, steps of about 1e-5: no jump larger than what the slope allows.
   std::vector<Point> q;
   for (int k = 0; k < 20000; ++k) q.push_back({0.3 + 1e-5 * k, 0.4 + 0.3e-5 * k});
   const std::vector<double> r = interpolate_natural_neighbor(pts, t, {f, 1}, q);

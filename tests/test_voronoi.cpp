@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "generate.hpp"
+#include "io.hpp"
 #include "ridt/voronoi.hpp"
 
 namespace ridt {
@@ -24,58 +25,6 @@ double area(const std::vector<Point>& poly) {
     s += a.x * b.y - a.y * b.x;
   }
   return s / 2;
-}
-
-// Sutherland-Hodgman: `poly` clipped to the axis-parallel box [x0, x1] x [y0, y1].
-std::vector<Point> clip(std::vector<Point> poly, double x0, double x1, double y0, double y1) {
-  auto side = [&](auto inside, auto cut) {
-    std::vector<Point> out;
-    for (std::size_t k = 0; k < poly.size(); ++k) {
-      const Point& a = poly[k];
-      const Point& b = poly[(k + 1) % poly.size()];
-      if (inside(a)) out.push_back(a);
-      if (inside(a) != inside(b)) out.push_back(cut(a, b));
-    }
-    poly = std::move(out);
-  };
-  auto at_x = [](double x) {
-    return [x](const Point& a, const Point& b) { return Point{x, a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x)}; };
-  };
-  auto at_y = [](double y) {
-    return [y](const Point& a, const Point& b) { return Point{a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y), y}; };
-  };
-  side([&](const Point& p) { return p.x >= x0; }, at_x(x0));
-  side([&](const Point& p) { return p.x <= x1; }, at_x(x1));
-  side([&](const Point& p) { return p.y >= y0; }, at_y(y0));
-  side([&](const Point& p) { return p.y <= y1; }, at_y(y1));
-  return poly;
-}
-
-// Cell c as a polygon; an unbounded one closed by its two rays, `far` along each.
-std::vector<Point> polygon(const std::vector<Point>& pts, const Triangulation& t, const Voronoi& vd, std::size_t c,
-                           double far) {
-  const auto cell = vd.cell(c);
-  std::vector<Point> poly;
-  for (const std::int32_t v : cell)
-    if (v >= 0) poly.push_back(vd.vertices[v]);
-  if (cell.back() == -1) {
-    const VertexId s = vd.cell_site[c];
-    // The last triangle's counter-clockwise side from s and the first one's clockwise side
-    // are hull edges; their outward normals carry the rays.
-    auto other = [&](std::int32_t tri, int step) {
-      const VertexId* w = &t.triangles[3 * std::size_t(tri)];
-      const int i = w[0] == s ? 0 : w[1] == s ? 1 : 2;
-      return w[(i + step) % 3];
-    };
-    const Point& p = pts[s];
-    const Point& b = pts[other(cell[cell.size() - 2], 2)];  // side s - b, run b -> s
-    const Point& a = pts[other(cell[0], 1)];                // side s - a, run s -> a
-    const Point out{(p.y - b.y), (b.x - p.x)}, in{(a.y - p.y), (p.x - a.x)};
-    const Point last = poly.back(), first = poly.front();
-    poly.push_back({last.x + far * out.x, last.y + far * out.y});
-    poly.push_back({first.x + far * in.x, first.y + far * in.y});
-  }
-  return poly;
 }
 
 class VoronoiOf : public ::testing::TestWithParam<Distribution> {};
@@ -106,12 +55,13 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
   for (const Point& p : pts) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   EXPECT_EQ(vd.cells(), pts.size() - t.duplicates.size());
   double tiled = 0;
-  const double box = (x1 - x0) * (y1 - y0), far = 1e6 * std::max(x1 - x0, y1 - y0);
+  const double box = (x1 - x0) * (y1 - y0);
   for (std::size_t c = 0; c < vd.cells(); ++c) {
     EXPECT_EQ(vd.point_cell[vd.cell_site[c]], static_cast<std::int32_t>(c));
-    const std::vector<Point> poly = polygon(pts, t, vd, c, far);
     const Point& s = pts[vd.cell_site[c]];
     if (vd.cell(c).back() != -1) {
+      std::vector<Point> poly;
+      for (const std::int32_t v : vd.cell(c)) poly.push_back(vd.vertices[v]);
       for (std::size_t k = 0; k < poly.size(); ++k) {
         const Point& a = poly[k];
         const Point& b = poly[(k + 1) % poly.size()];
@@ -121,7 +71,7 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
         }
       }
     }
-    const double a = area(clip(poly, x0, x1, y0, y1));
+    const double a = area(io::clipped_cell(pts, t, vd, c, {x0, y0, x1, y1}));
     EXPECT_GE(a, -1e-12 * box);
     tiled += a;
   }

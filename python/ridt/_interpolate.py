@@ -225,7 +225,6 @@ class NearestNDInterpolator:
 
     def __init__(self, x: Any, y: Any, rescale: bool = False, tree_options: Any = None, *, threads: int = 1):
         self._inner = LinearNDInterpolator(x, y, rescale=rescale, threads=threads)
-        self._inner._name = "NearestNDInterpolator"
 
     def __call__(self, *args: Any) -> np.ndarray:
         inner = self._inner
