@@ -6,9 +6,10 @@ same points, each call in a fresh process, the codes in a new random order every
                              [--out docs/results/interpolate.md]
 
 griddata: `griddata(points, values, (gx, gy))`, linear, of n uniform points onto a grid of
-grid x grid nodes over the unit square, the triangulation included. Voronoi: `Voronoi(points)`
-and its `regions` and `ridge_vertices` lists (scipy builds them in the constructor, ridt when
-asked). Time: the median wall seconds of the call; memory: the process's peak resident size
+grid x grid nodes over the unit square, the triangulation included. Voronoi: `Voronoi(points)`,
+the diagram with its arrays (vertices, ridge_points, point_region); and again with its
+`regions` and `ridge_vertices` lists of lists read too (scipy builds them in the constructor,
+ridt when first read). Time: the median wall seconds of the call; memory: the process's peak resident size
 during the call above its size just before, per point. Writes a Markdown table and a CSV.
 """
 import argparse
@@ -42,10 +43,12 @@ CHILD = textwrap.dedent("""
     if task == "griddata":
         gx, gy = np.mgrid[0:1:grid * 1j, 0:1:grid * 1j]
         run = lambda: griddata(pts, values, (gx, gy), **kw)
+    elif task == "voronoi":
+        run = lambda: Voronoi(pts, **kw)
     else:
         def run():
             v = Voronoi(pts, **kw)
-            return v.regions, v.ridge_vertices
+            return v, v.regions, v.ridge_vertices
     def rss():
         for line in open("/proc/self/status"):
             if line.startswith("VmRSS:"):
@@ -60,7 +63,7 @@ CHILD = textwrap.dedent("""
 
 CODES = ["ridt 1", "ridt 2", "scipy"]
 LABEL = {"ridt 1": "ridt, 1 thread", "ridt 2": "ridt, 2 threads", "scipy": "scipy"}
-CALL = {"griddata": "griddata, linear", "voronoi": "Voronoi"}
+CALL = {"griddata": "griddata, linear", "voronoi": "Voronoi", "voronoi_lists": "Voronoi, with its lists"}
 
 
 def run(python, task, code, path, grid):
@@ -83,7 +86,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "points.npy")
         np.save(path, np.random.default_rng(1).random((args.n, 2)))
-        for task in ("griddata", "voronoi"):
+        for task in CALL:
             got = {c: [] for c in CODES}
             for _ in range(args.reps):
                 for code in random.sample(CODES, len(CODES)):

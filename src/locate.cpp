@@ -1,5 +1,6 @@
-// Point location in a finished triangulation (ridt/locate.hpp): visibility walks along a
-// Hilbert curve through the queries.
+// Point location in a finished triangulation (ridt/locate.hpp): visibility walks from each
+// answer to the next query, in the queries' own order while that keeps the walks short (a
+// grid, a scan line, sorted queries), else along a Hilbert curve through them.
 #include "ridt/locate.hpp"
 
 #include <algorithm>
@@ -41,11 +42,11 @@ struct Result {
   // never the one it came in by. In a Delaunay triangulation such a walk cannot cycle
   // (Edelsbrunner 1990), so it ends at a triangle that holds q, or at a hull edge with q
   // beyond it: q is then outside the hull, whose edges' lines support it. t is left at the last
-  // triangle reached. The step limit only guards against arrays that are not a Delaunay
-  // triangulation; a scan of every triangle answers then.
-  std::int32_t walk(std::size_t& t, const Point& q) const {
+  // triangle reached, and `steps` grows by the triangles it crossed. The step limit only guards
+  // against arrays that are not a Delaunay triangulation; a scan of every triangle answers then.
+  std::int32_t walk(std::size_t& t, const Point& q, std::size_t& steps) const {
     int from = 3;
-    for (std::size_t steps = 0; steps <= size; ++steps) {
+    for (std::size_t s = 0; s <= size; ++s, ++steps) {
       int out = 3;
       for (int i = 0; i < 3; ++i) {
         if (i == from) continue;
@@ -70,9 +71,9 @@ struct Result {
 
 bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
-// Answers queries [begin, end): the finite ones in Hilbert order over their own box.
-void locate_share(const Result& mesh, const Point* queries, std::size_t begin, std::size_t end,
-                  std::int32_t* out) {
+// Walks the finite queries of [begin, end) in Hilbert order over their own box, from t.
+void locate_sorted(const Result& mesh, const Point* queries, std::size_t begin, std::size_t end, std::size_t& t,
+                   std::int32_t* out) {
   std::vector<Point> local;
   std::vector<std::uint32_t> where;  // local position -> query index
   local.reserve(end - begin);
@@ -90,8 +91,30 @@ void locate_share(const Result& mesh, const Point* queries, std::size_t begin, s
   std::vector<std::uint32_t> order(count);
   for (std::uint32_t i = 0; i < count; ++i) order[i] = i;
   detail::hilbert_sort(local.data(), key.data(), order.data(), count);
-  std::size_t t = 0;
-  for (const std::uint32_t i : order) out[begin + where[i]] = mesh.walk(t, local[i]);
+  std::size_t steps = 0;
+  for (const std::uint32_t i : order) out[begin + where[i]] = mesh.walk(t, local[i], steps);
+}
+
+// Answers queries [begin, end). First in their own order, each walk starting at the last
+// answer: while the walks average at most kSteps triangles (after a first allowance for the
+// walk to the first query), the queries come in an order near in the plane and a sort would
+// only cost. Once they do not, the rest are sorted along the curve.
+void locate_share(const Result& mesh, const Point* queries, std::size_t begin, std::size_t end,
+                  std::int32_t* out) {
+  constexpr std::size_t kSteps = 6, kAllowance = 1024;
+  std::size_t t = 0, steps = 0, i = begin;
+  for (; i < end; ++i) {
+    if (!finite(queries[i])) {
+      out[i] = -1;
+      continue;
+    }
+    out[i] = mesh.walk(t, queries[i], steps);
+    if (steps > kSteps * (i - begin + kAllowance)) {
+      ++i;
+      break;
+    }
+  }
+  if (i < end) locate_sorted(mesh, queries, i, end, t, out);
 }
 
 }  // namespace

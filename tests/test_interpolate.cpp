@@ -168,6 +168,107 @@ TEST(Interpolation, GridQueriesOnEdgesAndVertices) {
   }
 }
 
+// The nodes of a grid in the order the Grid call answers them.
+std::vector<Point> nodes_of(const Grid& g) {
+  std::vector<Point> q(g.size());
+  for (std::size_t i = 0; i < g.x.size(); ++i)
+    for (std::size_t j = 0; j < g.y.size(); ++j)
+      q[g.x_major ? i * g.y.size() + j : j * g.x.size() + i] = {g.x[i], g.y[j]};
+  return q;
+}
+
+std::vector<double> axis(double from, double to, std::size_t n) {
+  std::vector<double> v(n);
+  for (std::size_t k = 0; k < n; ++k) v[k] = from + (to - from) * static_cast<double>(k) / static_cast<double>(n - 1);
+  return v;
+}
+
+// The grid call gives, at every node, what the call on located queries gives: the same fill
+// outside the hull (every node in the closed hull is taken by one triangle) and the same
+// values inside, up to rounding where a node on an edge is answered from the other triangle.
+class GridInterpolation : public ::testing::TestWithParam<Distribution> {};
+
+TEST_P(GridInterpolation, EqualsTheLocatedQueries) {
+  const std::vector<Point> pts = generate(GetParam(), 4000, 11);
+  const Triangulation t = triangulate(pts);
+  double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
+  for (const Point& p : pts) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  const std::vector<double> f = values_of(pts, [](const Point& p) { return std::sin(3 * p.x) + p.y * p.y; });
+  // Axes past the hull on every side; on the grid distribution, nodes on every vertex and
+  // every edge; one axis decreasing and uneven.
+  const double wx = x1 - x0, wy = y1 - y0;
+  std::vector<double> xs, ys;
+  if (GetParam() == Distribution::Grid) {  // steps of a half: vertices, edge midpoints, centres
+    xs = axis(x0 - 1, x1 + 1, 2 * static_cast<std::size_t>(wx) + 5);
+    ys = axis(y1 + 1, y0 - 1, 2 * static_cast<std::size_t>(wy) + 5);
+  } else {
+    xs = axis(x0 - 0.1 * wx, x1 + 0.1 * wx, 97);
+    ys = axis(y1 + 0.1 * wy, y0 - 0.1 * wy, 61);
+    for (double& y : ys) y += 0.01 * wy * std::sin(y / wy);  // uneven, still decreasing
+  }
+  for (const bool x_major : {false, true})
+    for (const bool natural : {false, true}) {
+      const Grid g{xs, ys, x_major};
+      const std::vector<Point> q = nodes_of(g);
+      std::vector<double> got(g.size());
+      if (natural)
+        interpolate_natural_neighbor(pts, t, {f, 1}, g, got, -7.0, 2);
+      else
+        interpolate_linear(pts, t, {f, 1}, g, got, -7.0, 2);
+      const std::vector<double> want = natural ? interpolate_natural_neighbor(pts, t, {f, 1}, q, -7.0)
+                                               : interpolate_linear(pts, t, {f, 1}, q, -7.0);
+      std::size_t inside = 0;
+      for (std::size_t k = 0; k < q.size(); ++k) {
+        ASSERT_EQ(got[k] == -7.0, !in_hull(pts, t, q[k])) << k << " at " << q[k].x << ", " << q[k].y;
+        EXPECT_NEAR(got[k], want[k], 1e-12 * (1 + std::fabs(want[k]))) << k;
+        inside += got[k] != -7.0;
+      }
+      EXPECT_GT(inside, q.size() / 3);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributions, GridInterpolation,
+                         ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid,
+                                           Distribution::Clusters),
+                         [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST(GridInterpolation, ThreadsGiveTheSameBits) {
+  // Enough triangles for each thread to take a stretch: every node still has one owner.
+  const std::vector<Point> pts = generate(Distribution::Uniform, 60000, 5);
+  const Triangulation t = triangulate(pts);
+  const std::vector<double> f = values_of(pts, [](const Point& p) { return std::exp(p.x) * p.y; });
+  const std::vector<double> xs = axis(-0.05, 1.05, 301), ys = axis(-0.05, 1.05, 257);
+  for (const bool natural : {false, true}) {
+    std::vector<double> one(xs.size() * ys.size()), two(one.size());
+    const Grid g{xs, ys};
+    if (natural) {
+      interpolate_natural_neighbor(pts, t, {f, 1}, g, one, 0.0, 1);
+      interpolate_natural_neighbor(pts, t, {f, 1}, g, two, 0.0, 2);
+    } else {
+      interpolate_linear(pts, t, {f, 1}, g, one, 0.0, 1);
+      interpolate_linear(pts, t, {f, 1}, g, two, 0.0, 2);
+    }
+    EXPECT_EQ(one, two);
+  }
+}
+
+TEST(GridInterpolation, OneNodeAxesAndBadGridsAreRefused) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 300, 2);
+  const Triangulation t = triangulate(pts);
+  const std::vector<double> f = values_of(pts, linear_f);
+  const std::vector<double> one = {0.5}, some = {0.25, 0.5, 0.75};
+  std::vector<double> out(3);
+  interpolate_linear(pts, t, {f, 1}, Grid{one, some}, out);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(out[k], linear_f({0.5, some[k]}), 1e-12);
+  const std::vector<double> bumpy = {0.1, 0.3, 0.2}, nan = {0.1, std::numeric_limits<double>::quiet_NaN()},
+                            flat = {0.2, 0.2};
+  std::vector<double> room(6), small(2);
+  EXPECT_THROW(interpolate_linear(pts, t, {f, 1}, Grid{bumpy, one}, small), InputError);
+  EXPECT_THROW(interpolate_linear(pts, t, {f, 1}, Grid{nan, one}, small), InputError);
+  EXPECT_THROW(interpolate_natural_neighbor(pts, t, {f, 1}, Grid{flat, one}, small), InputError);
+  EXPECT_THROW(interpolate_linear(pts, t, {f, 1}, Grid{some, one}, room), InputError);
+}
+
 TEST(Interpolation, NearestVertexAgainstAScan) {
   const std::vector<Point> pts = generate(Distribution::Clusters, 3000, 5);
   const Triangulation t = triangulate(pts);

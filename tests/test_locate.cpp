@@ -96,6 +96,23 @@ TEST(Locate, ManyQueriesOnThreadsAndHugeScales) {
   }
 }
 
+TEST(Locate, QueriesInOrderThenScattered) {
+  // Queries row by row over a grid (walked in their own order), then scattered ones (sorted
+  // along the curve once the walks grow long), then rows again, with non-finite ones mixed in.
+  const std::vector<Point> pts = generate(Distribution::Normal, 20000, 9);
+  const Triangulation tri = triangulate(pts);
+  std::vector<Point> queries;
+  for (int j = 0; j < 150; ++j)
+    for (int i = 0; i < 150; ++i) queries.push_back({-4 + 8 * i / 149.0, -4 + 8 * j / 149.0});
+  const std::vector<Point> scattered = random_queries(20000, -5, 5, 8);
+  queries.insert(queries.end(), scattered.begin(), scattered.end());
+  for (int j = 0; j < 100; ++j)
+    for (int i = 0; i < 100; ++i) queries.push_back({-3 + 6 * i / 99.0, 3 - 6 * j / 99.0});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < queries.size(); k += 997) queries[k].x = nan;
+  for (const unsigned threads : {1u, 2u}) expect_located(pts, tri, queries, locate(pts, tri, queries, threads));
+}
+
 TEST(Locate, EmptyTriangulationAndBadArrays) {
   const std::vector<Point> line = {{0, 0}, {1, 1}, {2, 2}};
   const Triangulation tri = triangulate(line);

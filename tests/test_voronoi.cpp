@@ -48,7 +48,12 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
   for (const Ridge& r : vd.ridges) {
     const VertexId* w = &t.triangles[3 * std::size_t(r.u)];
     EXPECT_TRUE(std::count(w, w + 3, r.a) == 1 && std::count(w, w + 3, r.b) == 1);
-    EXPECT_EQ(r.v < 0, r.direction.x != 0 || r.direction.y != 0);
+    const Point d = ray_direction(pts, r);
+    EXPECT_EQ(r.v < 0, d.x != 0 || d.y != 0);
+    if (r.v < 0) {  // the ray leaves the hull: away from the triangle's third vertex
+      const Point& c = pts[w[0] != r.a && w[0] != r.b ? w[0] : w[1] != r.a && w[1] != r.b ? w[1] : w[2]];
+      EXPECT_GT(d.x * ((pts[r.a].x + pts[r.b].x) / 2 - c.x) + d.y * ((pts[r.a].y + pts[r.b].y) / 2 - c.y), 0);
+    }
   }
   // Every site has a cell; cells of the distinct points, bounded ones convex around their site.
   double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
@@ -82,6 +87,32 @@ INSTANTIATE_TEST_SUITE_P(Distributions, VoronoiOf,
                          ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid,
                                            Distribution::Clusters),
                          [](const auto& info) { return std::string(to_string(info.param)); });
+
+TEST(Voronoi, ThreadsGiveTheSameDiagram) {
+  // Enough triangles for each thread to take a stretch of them.
+  const std::vector<Point> pts = generate(Distribution::Clusters, 80000, 3);
+  const Triangulation t = triangulate(pts);
+  const Voronoi one = voronoi(pts, t, 1), two = voronoi(pts, t, 2);
+  EXPECT_EQ(one.cell_offsets, two.cell_offsets);
+  EXPECT_EQ(one.cell_vertices, two.cell_vertices);
+  EXPECT_EQ(one.cell_site, two.cell_site);
+  EXPECT_EQ(one.point_cell, two.point_cell);
+  ASSERT_EQ(one.ridges.size(), two.ridges.size());
+  for (std::size_t k = 0; k < one.ridges.size(); ++k) {
+    const Ridge &a = one.ridges[k], &b = two.ridges[k];
+    EXPECT_TRUE(a.a == b.a && a.b == b.b && a.u == b.u && a.v == b.v) << k;
+  }
+  // Every corner of every triangle is in exactly its vertex's cell.
+  std::vector<int> seen(t.size(), 0);
+  for (std::size_t c = 0; c < one.cells(); ++c)
+    for (const std::int32_t v : one.cell(c))
+      if (v >= 0) {
+        const VertexId* w = &t.triangles[3 * std::size_t(v)];
+        EXPECT_TRUE(w[0] == one.cell_site[c] || w[1] == one.cell_site[c] || w[2] == one.cell_site[c]);
+        ++seen[static_cast<std::size_t>(v)];
+      }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 3), static_cast<std::ptrdiff_t>(t.size()));
+}
 
 TEST(Voronoi, DuplicatesShareTheirKeptPointsCell) {
   const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {1, 0}, {0.5, 0.4}, {0, 0}};

@@ -303,6 +303,7 @@ int run_interpolate(const InterpolateArgs& a) {
     throw ridt::InputError(a.values + ": " + std::to_string(values.size() / components) + " rows of values for " +
                            std::to_string(p.points.size()) + " points");
   std::vector<ridt::Point> queries;
+  std::vector<double> xs, ys;  // a grid's axes
   std::size_t nx = 0, ny = 0;
   if (!a.grid.empty()) {
     const std::vector<double> g = numbers(a.grid, "--grid");
@@ -311,11 +312,13 @@ int run_interpolate(const InterpolateArgs& a) {
       throw ridt::InputError("--grid: give nx,ny (at least 2 each) or nx,ny,x0,y0,x1,y1");
     nx = static_cast<std::size_t>(g[0]), ny = static_cast<std::size_t>(g[1]);
     const ridt::io::Box b = g.size() == 6 ? ridt::io::Box{g[2], g[3], g[4], g[5]} : ridt::io::box_around(p.points, 0);
+    for (std::size_t i = 0; i < nx; ++i)
+      xs.push_back(b.x0 + (b.x1 - b.x0) * static_cast<double>(i) / static_cast<double>(nx - 1));
+    for (std::size_t j = 0; j < ny; ++j)
+      ys.push_back(b.y0 + (b.y1 - b.y0) * static_cast<double>(j) / static_cast<double>(ny - 1));
     queries.resize(nx * ny);
     for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i)
-        queries[j * nx + i] = {b.x0 + (b.x1 - b.x0) * static_cast<double>(i) / static_cast<double>(nx - 1),
-                               b.y0 + (b.y1 - b.y0) * static_cast<double>(j) / static_cast<double>(ny - 1)};
+      for (std::size_t i = 0; i < nx; ++i) queries[j * nx + i] = {xs[i], ys[j]};
   } else {
     queries = ridt::io::read_points(a.queries).points;
   }
@@ -331,6 +334,13 @@ int run_interpolate(const InterpolateArgs& a) {
     for (std::size_t q = 0; q < queries.size(); ++q)
       if (near[q] >= 0)
         std::copy_n(&values[static_cast<std::size_t>(near[q]) * components], components, &out[q * components]);
+  } else if (!xs.empty()) {  // a grid: each triangle takes the nodes it holds
+    const ridt::Grid g{xs, ys};
+    out.resize(g.size() * components);
+    if (a.method == "natural")
+      ridt::interpolate_natural_neighbor(p.points, t, v, g, out, a.fill, a.threads);
+    else
+      ridt::interpolate_linear(p.points, t, v, g, out, a.fill, a.threads);
   } else if (a.method == "natural") {
     out = ridt::interpolate_natural_neighbor(p.points, t, v, queries, a.fill, a.threads);
   } else {

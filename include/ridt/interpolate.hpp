@@ -40,6 +40,38 @@ std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, 
                                                  double fill = std::numeric_limits<double>::quiet_NaN(),
                                                  unsigned threads = 1);
 
+/// The same two, writing into `out` (queries.size() * values.components numbers) instead of a
+/// new vector: for callers that own the memory (a numpy array, a mapped file).
+void interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
+                        std::span<const Point> queries, std::span<double> out,
+                        double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
+                                  std::span<const Point> queries, std::span<double> out,
+                                  double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+
+/// The nodes of a grid as queries: node (i, j) is (x[i], y[j]). Each axis is finite and
+/// strictly increasing or strictly decreasing. Node (i, j)'s answer is row j * x.size() + i of
+/// the result (rows of constant y, an image's order), or row i * y.size() + j when x_major
+/// (the order of numpy.mgrid).
+struct Grid {
+  std::span<const double> x, y;
+  bool x_major = false;
+
+  std::size_t size() const { return x.size() * y.size(); }
+};
+
+/// Interpolation at every node of a grid: the answers of the calls above at the nodes, found
+/// without locating them one by one. Each triangle visits the nodes in its bounding box and
+/// takes those it holds (exact orientation tests; a node on an edge or at a vertex goes to one
+/// of its triangles only), so the cost grows with the triangles and the nodes, not with walks.
+/// Throws InputError for an axis that is not finite and monotone, or sizes that do not match.
+void interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
+                        std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(),
+                        unsigned threads = 1);
+void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
+                                  const Grid& grid, std::span<double> out,
+                                  double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+
 /// For each query, the index of a nearest point among the triangulation's vertices (a greedy
 /// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not
 /// finite or when there is no triangle.

@@ -10,13 +10,22 @@
 namespace ridt {
 
 /// The boundary between the cells of sites `a` and `b` (input indices): the segment from
-/// Voronoi vertex `u` to vertex `v`, or, when `v` is -1, the ray from `u` along `direction`
-/// (the outward normal of the hull edge a-b; not normalized).
+/// Voronoi vertex `u` to vertex `v`, or, when `v` is -1, the ray from `u` along
+/// ray_direction(points, ridge).
 struct Ridge {
   VertexId a = 0, b = 0;
   std::int32_t u = -1, v = -1;
-  Point direction;  ///< (0, 0) for a segment
 };
+
+/// The direction of a ray (a ridge with v = -1): the outward normal of the hull edge a-b, not
+/// normalized; (0, 0) for a segment.
+inline Point ray_direction(std::span<const Point> points, const Ridge& r) {
+  if (r.v >= 0) return {0, 0};
+  // Triangle u runs a -> b with its inside on the left: outward is to the right.
+  const Point& a = points[r.a];
+  const Point& b = points[r.b];
+  return {b.y - a.y, a.x - b.x};
+}
 
 /// The Voronoi diagram, in the layout of scipy.spatial.Voronoi, with -1 for the vertex at
 /// infinity.
@@ -28,12 +37,15 @@ struct Voronoi {
   /// infinity, which stands between the cell's two rays.
   std::vector<std::uint32_t> cell_offsets;
   std::vector<std::int32_t> cell_vertices;
-  /// The site (input index) of each cell; cells come in increasing order of their site.
+  /// The site (input index) of each cell. Cells come in the order of the triangulation's
+  /// triangles (each where its first triangle is), so that cells near in the plane lie near in
+  /// memory; point_cell finds a site's cell.
   std::vector<VertexId> cell_site;
   /// For each input point its cell: a duplicate shares the cell of the point that stands for
   /// it; -1 when there is no triangle (fewer than three distinct points, or all collinear).
   std::vector<std::int32_t> point_cell;
-  /// One ridge a Delaunay edge: first the edges of triangle 0, then 1, ...
+  /// One ridge a Delaunay edge, u the lower-numbered of its two triangles: first the ridges
+  /// with u = 0, then u = 1, ...
   std::vector<Ridge> ridges;
 
   std::size_t cells() const { return cell_site.size(); }

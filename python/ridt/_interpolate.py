@@ -66,12 +66,9 @@ class Voronoi:
                              progress=None)
         if self._tri.warning:
             raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
-        (self.vertices, offsets, cell_vertices, point_cell, self.ridge_points, ridge_vertices,
-         self.ridge_directions) = _core.voronoi(self._points, self._tri, threads)
-        self.ridge_points = self.ridge_points.view(np.intc)
-        self._ridge_vertices = ridge_vertices
-        self._offsets = offsets
-        self._cell_vertices = cell_vertices
+        (self.vertices, self._offsets, self._cell_vertices, point_cell, ridge_points,
+         self._ridge_vertices) = _core.voronoi(self._points, self._tri, threads)
+        self.ridge_points = ridge_points.view(np.intc)
         self.point_region = point_cell.astype(np.intp)
         self.furthest_site = False
 
@@ -96,14 +93,28 @@ class Voronoi:
         return self._points.max(axis=0)
 
     @cached_property
+    def _ints(self) -> List[int]:
+        # The ints the lists below share, one object for each vertex.
+        return list(range(len(self.vertices)))
+
+    @cached_property
     def ridge_vertices(self) -> List[List[int]]:
-        return self._ridge_vertices.tolist()
+        pairs = np.arange(0, 2 * len(self._ridge_vertices) + 1, 2, dtype=np.uint32)
+        return _core.lists(self._ridge_vertices.reshape(-1), pairs, self._ints)
 
     @cached_property
     def regions(self) -> List[List[int]]:
-        flat = self._cell_vertices.tolist()
-        o = self._offsets.tolist()
-        return [flat[o[c]:o[c + 1]] for c in range(len(o) - 1)]
+        return _core.lists(self._cell_vertices, self._offsets, self._ints)
+
+    @cached_property
+    def ridge_directions(self) -> np.ndarray:
+        d = np.zeros((len(self.ridge_points), 2))
+        ray = self._ridge_vertices[:, 1] < 0
+        a = self._points[self.ridge_points[ray, 0]]
+        b = self._points[self.ridge_points[ray, 1]]
+        d[ray, 0] = b[:, 1] - a[:, 1]
+        d[ray, 1] = a[:, 0] - b[:, 0]
+        return d
 
     @cached_property
     def ridge_dict(self) -> Dict[Tuple[int, int], List[int]]:
@@ -149,6 +160,44 @@ def _as_queries(args: Tuple[Any, ...], who: str) -> Tuple[np.ndarray, Tuple[int,
     return np.ascontiguousarray(xi), shape
 
 
+def _constant_along(a: np.ndarray, axis: int) -> bool:
+    return a.shape[axis] == 1 or bool((a == a.take([0], axis=axis)).all())
+
+
+def _monotone(v: np.ndarray) -> bool:
+    d = np.diff(v)
+    return bool(np.isfinite(v).all() and ((d > 0).all() or (d < 0).all()))
+
+
+def _as_grid(args: Tuple[Any, ...]) -> Optional[Tuple[np.ndarray, np.ndarray, bool, Tuple[int, int]]]:
+    """When the queries are x and y arrays that make a grid, x varying along one axis only and y
+    along the other (numpy.mgrid, numpy.meshgrid, or x[:, None] and y[None, :]), each strictly
+    monotone: its axes, whether x runs along the first axis, and the answer's shape; else None."""
+    if len(args) == 1 and isinstance(args[0], tuple):
+        args = args[0]
+    if len(args) != 2:
+        return None
+    x, y = np.asarray(args[0]), np.asarray(args[1])
+    if x.dtype.kind not in "biuf" or y.dtype.kind not in "biuf" or x.ndim > 2 or y.ndim > 2:
+        return None
+    try:
+        shape = np.broadcast_shapes(x.shape, y.shape)
+    except ValueError:
+        return None
+    if len(shape) != 2:
+        return None
+    x2, y2 = x.reshape((1,) * (2 - x.ndim) + x.shape), y.reshape((1,) * (2 - y.ndim) + y.shape)
+    for along, x_major in ((0, True), (1, False)):
+        other = 1 - along
+        if _constant_along(x2, other) and _constant_along(y2, along):
+            xs = np.broadcast_to(x2.take([0], axis=other).reshape(-1), (shape[along],))
+            ys = np.broadcast_to(y2.take([0], axis=along).reshape(-1), (shape[other],))
+            xs, ys = np.ascontiguousarray(xs, dtype=np.float64), np.ascontiguousarray(ys, dtype=np.float64)
+            if _monotone(xs) and _monotone(ys):
+                return xs, ys, x_major, shape
+    return None
+
+
 class _TriangulationInterpolator:
     _method = "linear"
     _name = "LinearNDInterpolator"
@@ -165,6 +214,7 @@ class _TriangulationInterpolator:
             self.tri = None
         self._offset = np.zeros(2)
         self._scale = np.ones(2)
+        self._rescaled = bool(rescale)
         if rescale:
             self._offset = pts.mean(axis=0)
             ptp = np.ptp(pts, axis=0)
@@ -179,8 +229,22 @@ class _TriangulationInterpolator:
         self._who = who
 
     def __call__(self, *args: Any) -> np.ndarray:
+        grid = None if self._complex else _as_grid(args)
+        if grid is not None:
+            # The nodes of a grid: each triangle takes the nodes it holds, no walks.
+            xs, ys, x_major, shape = grid
+            if self._rescaled:
+                xs = np.ascontiguousarray((xs - self._offset[0]) / self._scale[0])
+                ys = np.ascontiguousarray((ys - self._offset[1]) / self._scale[1])
+                if not (_monotone(xs) and _monotone(ys)):  # nodes merged by the rounding
+                    grid = None
+        if grid is not None:
+            out = _core.interpolate_grid(self.tri.points, self.tri._tri, self.values, xs, ys, x_major,
+                                         float(self.fill_value), self._method, self._threads)
+            return out.reshape(shape + self._trailing)
         xi, shape = _as_queries(args, self._who)
-        xi = np.ascontiguousarray((xi - self._offset) / self._scale)
+        if self._rescaled:
+            xi = np.ascontiguousarray((xi - self._offset) / self._scale)
         out = self._evaluate(xi)
         if self._complex:
             half = out.shape[1] // 2
@@ -229,7 +293,8 @@ class NearestNDInterpolator:
     def __call__(self, *args: Any) -> np.ndarray:
         inner = self._inner
         xi, shape = _as_queries(args, "ridt.NearestNDInterpolator")
-        xi = np.ascontiguousarray((xi - inner._offset) / inner._scale)
+        if inner._rescaled:
+            xi = np.ascontiguousarray((xi - inner._offset) / inner._scale)
         which = _core.nearest(inner.tri.points, inner.tri._tri, xi, inner._threads)
         out = np.full((len(xi), inner.values.shape[1]), np.nan)
         ok = which >= 0

@@ -115,6 +115,47 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   return ridt::triangulate(pts, o);
 }
 
+// Rows of a flat int32 array as a list of Python lists, as scipy.spatial.Voronoi's regions and
+// ridge_vertices are: row r holds flat[offsets[r] .. offsets[r + 1]). The values are indices
+// into `ints`, a list of the ints 0, 1, ..., whose objects the rows share; -1 stands for
+// itself. Built through the C API with the cycle collector paused: the lists hold only ints,
+// and millions of new containers would otherwise set off a collection every few hundred.
+py::list lists(const py::array_t<std::int32_t, py::array::c_style>& flat,
+               const py::array_t<std::uint32_t, py::array::c_style>& offsets, const py::list& ints) {
+  if (flat.ndim() != 1 || offsets.ndim() != 1 || offsets.size() < 1)
+    throw py::value_error("lists: flat and offsets must be one-dimensional, offsets not empty");
+  const std::int32_t* f = flat.data();
+  const std::uint32_t* o = offsets.data();
+  const auto rows = static_cast<std::size_t>(offsets.size() - 1);
+  const auto size = static_cast<std::int64_t>(flat.size());
+  const auto known = static_cast<std::int64_t>(ints.size());
+  for (std::size_t r = 0; r < rows; ++r)
+    if (o[r] > o[r + 1] || o[r + 1] > size) throw py::value_error("lists: offsets out of order or past the end");
+  for (std::int64_t k = 0; k < size; ++k)
+    if (f[k] < -1 || f[k] >= known) throw py::value_error("lists: a value is not one of the ints");
+  const py::int_ minus_one(-1);
+  PyObject* const* table = reinterpret_cast<PyListObject*>(ints.ptr())->ob_item;
+  const int collecting = PyGC_Disable();
+  py::list out(rows);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const std::uint32_t first = o[r], count = o[r + 1] - o[r];
+    PyObject* row = PyList_New(count);
+    if (row == nullptr) {
+      if (collecting) PyGC_Enable();
+      throw py::error_already_set();
+    }
+    for (std::uint32_t k = 0; k < count; ++k) {
+      const std::int32_t v = f[first + k];
+      PyObject* item = v >= 0 ? table[v] : minus_one.ptr();
+      Py_INCREF(item);
+      PyList_SET_ITEM(row, k, item);
+    }
+    PyList_SET_ITEM(out.ptr(), static_cast<py::ssize_t>(r), row);
+  }
+  if (collecting) PyGC_Enable();
+  return out;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -195,23 +236,28 @@ Triangulation alive.
         }
         const auto r = static_cast<py::ssize_t>(v.ridges.size());
         py::array_t<double> vertices({static_cast<py::ssize_t>(v.vertices.size()), py::ssize_t{2}});
-        std::copy_n(reinterpret_cast<const double*>(v.vertices.data()), 2 * v.vertices.size(), vertices.mutable_data());
         py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});
-        py::array_t<double> ridge_directions({r, py::ssize_t{2}});
-        std::int32_t* rp = ridge_points.mutable_data();
-        std::int32_t* rv = ridge_vertices.mutable_data();
-        double* rd = ridge_directions.mutable_data();
-        for (const ridt::Ridge& x : v.ridges) {
-          *rp++ = static_cast<std::int32_t>(x.a), *rp++ = static_cast<std::int32_t>(x.b);
-          *rv++ = x.u, *rv++ = x.v;
-          *rd++ = x.direction.x, *rd++ = x.direction.y;
+        {
+          py::gil_scoped_release nogil;
+          std::copy_n(reinterpret_cast<const double*>(v.vertices.data()), 2 * v.vertices.size(),
+                      vertices.mutable_data());
+          std::int32_t* rp = ridge_points.mutable_data();
+          std::int32_t* rv = ridge_vertices.mutable_data();
+          for (const ridt::Ridge& x : v.ridges) {
+            *rp++ = static_cast<std::int32_t>(x.a), *rp++ = static_cast<std::int32_t>(x.b);
+            *rv++ = x.u, *rv++ = x.v;
+          }
         }
         return py::make_tuple(vertices, py::array_t<std::uint32_t>(v.cell_offsets.size(), v.cell_offsets.data()),
                               py::array_t<std::int32_t>(v.cell_vertices.size(), v.cell_vertices.data()),
                               py::array_t<std::int32_t>(v.point_cell.size(), v.point_cell.data()), ridge_points,
-                              ridge_vertices, ridge_directions);
+                              ridge_vertices);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("threads"));
+
+  m.def("lists", &lists, py::arg("flat"), py::arg("offsets"), py::arg("ints"),
+        "Rows of `flat` as a list of lists: row r is flat[offsets[r]:offsets[r + 1]]; each value v >= 0\n"
+        "is the object ints[v] (shared, not a new int), -1 is -1.");
 
   m.def(
       "interpolate",
@@ -222,18 +268,45 @@ Triangulation alive.
         const auto q = as_points(queries, "queries");
         const auto k = static_cast<std::size_t>(values.shape(1));
         const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
-        std::vector<double> out;
+        py::array_t<double> a({static_cast<py::ssize_t>(q.size()), static_cast<py::ssize_t>(k)});
+        const std::span<double> out(a.mutable_data(), q.size() * k);
         {
           py::gil_scoped_release nogil;
-          out = method == "natural" ? ridt::interpolate_natural_neighbor(pts, t, v, q, fill, threads)
-                                    : ridt::interpolate_linear(pts, t, v, q, fill, threads);
+          if (method == "natural")
+            ridt::interpolate_natural_neighbor(pts, t, v, q, out, fill, threads);
+          else
+            ridt::interpolate_linear(pts, t, v, q, out, fill, threads);
         }
-        py::array_t<double> a({static_cast<py::ssize_t>(q.size()), static_cast<py::ssize_t>(k)});
-        std::copy(out.begin(), out.end(), a.mutable_data());
         return a;
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("queries"), py::arg("fill"),
       py::arg("method"), py::arg("threads"));
+
+  m.def(
+      "interpolate_grid",
+      [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
+         bool x_major, double fill, const std::string& method, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
+        if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
+        const auto k = static_cast<std::size_t>(values.shape(1));
+        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
+        const ridt::Grid g{{x.data(), static_cast<std::size_t>(x.size())},
+                           {y.data(), static_cast<std::size_t>(y.size())},
+                           x_major};
+        py::array_t<double> a({static_cast<py::ssize_t>(g.size()), static_cast<py::ssize_t>(k)});
+        const std::span<double> out(a.mutable_data(), g.size() * k);
+        {
+          py::gil_scoped_release nogil;
+          if (method == "natural")
+            ridt::interpolate_natural_neighbor(pts, t, v, g, out, fill, threads);
+          else
+            ridt::interpolate_linear(pts, t, v, g, out, fill, threads);
+        }
+        return a;
+      },
+      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"),
+      py::arg("x_major"), py::arg("fill"), py::arg("method"), py::arg("threads"));
 
   m.def(
       "nearest",

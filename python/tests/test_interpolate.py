@@ -51,6 +51,55 @@ def test_linear_interpolator_shapes_fill_components_and_rescale(scattered):
     np.testing.assert_allclose(e[~np.isnan(g)], g[~np.isnan(g)], rtol=1e-9, atol=1e-9)
 
 
+@pytest.mark.parametrize("method", ["linear", "natural"])
+def test_grids_are_answered_as_their_nodes(scattered, method):
+    # Grids given as numpy.mgrid, numpy.meshgrid (both orders), broadcast axes and decreasing,
+    # uneven axes go through the grid path (each triangle takes its nodes); the answers are
+    # those of the same nodes given as scattered queries, and scipy's for linear.
+    p, f, _ = scattered
+    x = np.linspace(-0.1, 1.1, 37)
+    y = np.linspace(1.1, -0.1, 29) ** 3
+    gx, gy = np.mgrid[-0.1:1.1:41j, -0.1:1.1:23j]
+    forms = [(gx, gy), np.meshgrid(x, y), np.meshgrid(x, y, indexing="ij"), (x[:, None], y[None, :]),
+             (x[None, :], y[:, None])]
+    for form in forms:
+        form = tuple(form)
+        a = ridt.griddata(p, f, form, method=method, threads=2)
+        bx, by = np.broadcast_arrays(*form)
+        flat = np.stack([bx.ravel(), by.ravel()], axis=1)
+        b = ridt.griddata(p, f, flat, method=method).reshape(bx.shape)
+        assert a.shape == bx.shape
+        assert np.array_equal(np.isnan(a), np.isnan(b))
+        ok = ~np.isnan(a)
+        assert ok.sum() > a.size / 3
+        np.testing.assert_allclose(a[ok], b[ok], rtol=1e-12, atol=1e-12)
+        if method == "linear":
+            c = si.griddata(p, f, form)
+            assert np.array_equal(np.isnan(a), np.isnan(c))
+            np.testing.assert_allclose(a[ok], c[ok], rtol=1e-12, atol=1e-12)
+    # Rescaled, and data on a grid of its own with nodes on its vertices and edges.
+    s = p * np.array([1000.0, 0.001])
+    a = ridt.griddata(s, f, (1000 * gx, 0.001 * gy), method=method, rescale=True)
+    b = si.griddata(s, f, (1000 * gx, 0.001 * gy), rescale=True)
+    assert np.array_equal(np.isnan(a), np.isnan(b))
+    if method == "linear":
+        np.testing.assert_allclose(a[~np.isnan(b)], b[~np.isnan(b)], rtol=1e-9, atol=1e-9)
+    g = np.stack(np.meshgrid(np.arange(20.0), np.arange(15.0)), axis=-1).reshape(-1, 2)
+    plane = 2 * g[:, 0] - g[:, 1]
+    hx, hy = np.mgrid[-1:20:43j, -1:15:33j]
+    a = ridt.griddata(g, plane, (hx, hy), method=method)
+    inside = (hx >= 0) & (hx <= 19) & (hy >= 0) & (hy <= 14)
+    assert np.array_equal(~np.isnan(a), inside)
+    np.testing.assert_allclose(a[inside], (2 * hx - hy)[inside], atol=1e-12)
+
+
+def test_queries_that_are_no_grid_take_the_general_path(scattered):
+    p, f, q = scattered
+    x = q[:400, 0].reshape(20, 20)
+    y = q[:400, 1].reshape(20, 20)
+    np.testing.assert_array_equal(ridt.griddata(p, f, (x, y)), ridt.griddata(p, f, q[:400]).reshape(20, 20))
+
+
 def test_nearest_is_as_near_as_scipys(scattered):
     p, f, q = scattered
     a = ridt.griddata(p, np.arange(len(p)), q, method="nearest")
