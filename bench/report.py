@@ -256,9 +256,10 @@ def interpolate_section(results):
             for r in data if r.get("time_s")]
     return (
         "## Interpolation and Voronoi against scipy\n\n"
-        "`ridt.griddata` (linear) onto a grid, the triangulation included, and `ridt.Voronoi` with its "
-        "`regions` and `ridge_vertices` lists, against scipy's on the same uniform points, each call in a "
-        "fresh process; × scipy: scipy's time over the code's. Output: "
+        "`ridt.griddata` (linear) onto a grid, the triangulation included; `ridt.Voronoi`, the diagram "
+        "and its arrays; and `ridt.Voronoi` with its `regions` and `ridge_vertices` lists of lists read "
+        "too (scipy builds them in its constructor, ridt when first read); against scipy's on the same "
+        "uniform points, each call in a fresh process; × scipy: scipy's time over the code's. Output: "
         "[results/interpolate.md](results/interpolate.md).\n\n"
         + table(["call", "n", "grid", "code", "s", "× scipy", "B/pt"], body,
                 ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")

@@ -249,7 +249,7 @@ class Axis {
     if (!up && !down)
       throw InputError(std::string(who) + ": the grid's " + name + " must be strictly increasing or decreasing");
     reversed_ = n_ > 1 && down;
-    if (n_ > 1) lowest_ = value(0), step_ = (value(n_ - 1) - lowest_) / static_cast<double>(n_ - 1);
+    if (n_ > 1) lowest_ = value(0), per_step_ = static_cast<double>(n_ - 1) / (value(n_ - 1) - lowest_);
   }
 
   double value(std::size_t k) const { return v_[index(k)]; }
@@ -268,15 +268,15 @@ class Axis {
 
  private:
   std::size_t guess(double x) const {
-    if (!(step_ > 0)) return 0;
-    const double k = std::floor((x - lowest_) / step_);
+    if (!(per_step_ > 0)) return 0;
+    const double k = std::floor((x - lowest_) * per_step_);
     return k <= 0 ? 0 : k >= static_cast<double>(n_) ? n_ : static_cast<std::size_t>(k);
   }
 
   std::span<const double> v_;
   std::size_t n_;
   bool reversed_ = false;
-  double lowest_ = 0, step_ = 0;
+  double lowest_ = 0, per_step_ = 0;  // nodes a unit, on average
 };
 
 // The lowest-numbered triangle around the vertex at corner i of triangle tri.

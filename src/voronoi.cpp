@@ -91,7 +91,7 @@ void cells(const Triangulation& t, const std::vector<std::size_t>& cut, unsigned
   std::vector<Part> parts(cut.size() - 1);
   each_part(cut, threads, [&](std::size_t p, std::size_t first, std::size_t last) {
     Part& part = parts[p];
-    part.vertices.reserve(3 * (last - first) + 64);
+    part.vertices.reserve(3 * (last - first) + (last - first) / 4 + 1024);  // about 3 a triangle, more near the hull
     part.sites.reserve(last - first);
     part.ends.reserve(last - first);
     for (std::size_t k = 3 * first; k < 3 * last; ++k) {

@@ -115,6 +115,15 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   return ridt::triangulate(pts, o);
 }
 
+// A vector's memory handed to numpy without a copy: the array owns the vector through a
+// capsule. `shape` must cover the vector's elements (as T, or as doubles for Points).
+template <class T, class Elem = T>
+py::array_t<Elem> adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
+  auto* owned = new std::vector<T>(std::move(v));
+  py::capsule free_it(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<Elem>(shape, reinterpret_cast<const Elem*>(owned->data()), free_it);
+}
+
 // Rows of a flat int32 array as a list of Python lists, as scipy.spatial.Voronoi's regions and
 // ridge_vertices are: row r holds flat[offsets[r] .. offsets[r + 1]). The values are indices
 // into `ints`, a list of the ints 0, 1, ..., whose objects the rows share; -1 stands for
@@ -235,12 +244,9 @@ Triangulation alive.
           v = ridt::voronoi(pts, t, threads);
         }
         const auto r = static_cast<py::ssize_t>(v.ridges.size());
-        py::array_t<double> vertices({static_cast<py::ssize_t>(v.vertices.size()), py::ssize_t{2}});
         py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});
         {
           py::gil_scoped_release nogil;
-          std::copy_n(reinterpret_cast<const double*>(v.vertices.data()), 2 * v.vertices.size(),
-                      vertices.mutable_data());
           std::int32_t* rp = ridge_points.mutable_data();
           std::int32_t* rv = ridge_vertices.mutable_data();
           for (const ridt::Ridge& x : v.ridges) {
@@ -248,10 +254,13 @@ Triangulation alive.
             *rv++ = x.u, *rv++ = x.v;
           }
         }
-        return py::make_tuple(vertices, py::array_t<std::uint32_t>(v.cell_offsets.size(), v.cell_offsets.data()),
-                              py::array_t<std::int32_t>(v.cell_vertices.size(), v.cell_vertices.data()),
-                              py::array_t<std::int32_t>(v.point_cell.size(), v.point_cell.data()), ridge_points,
-                              ridge_vertices);
+        const auto size = [](const auto& x) { return static_cast<py::ssize_t>(x.size()); };
+        const py::ssize_t vertices = size(v.vertices), offsets = size(v.cell_offsets),
+                          cell_vertices = size(v.cell_vertices), sites = size(v.point_cell);
+        return py::make_tuple(adopt<ridt::Point, double>(std::move(v.vertices), {vertices, 2}),
+                              adopt(std::move(v.cell_offsets), {offsets}),
+                              adopt(std::move(v.cell_vertices), {cell_vertices}),
+                              adopt(std::move(v.point_cell), {sites}), ridge_points, ridge_vertices);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("threads"));
 
