@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(g++ cmake ninja-build libcli11-dev libpng-dev)
 if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
+  packages+=(libopenmpi-dev openmpi-bin)  # ridt-mpi and its tests
   # The Python package and its tests (Debian's interpreter, /usr/bin/python3).
   packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel pybind11-dev python3-pybind11
              python3-numpy python3-scipy python3-pytest python3-hypothesis python3-tqdm)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
 # and UndefinedBehaviorSanitizer (the adversarial sets at a tenth of their size there), the
-# threaded tests under ThreadSanitizer, the Python package (pip, wheel, pytest), a consumer project that uses find_package(ridt), 10^7
+# threaded tests under ThreadSanitizer, ridt-mpi on 1 to 8 ranks, the Python package (pip, wheel, pytest), a consumer project that uses find_package(ridt), 10^7
 # points through the serial and every threaded method (scripts/large.sh), and the libFuzzer
 # targets built. Both suites replay the fuzz corpora with a fixed number of seeded mutations
 # (fuzz/replay.cpp), so every run of a commit tests the same inputs; the open-ended search for
@@ -18,6 +18,8 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=ON \
   -DRIDT_BUILD_BENCH=ON -DRIDT_BUILD_TOOLS=ON -DRIDT_BUILD_PYTHON=ON -DPython_EXECUTABLE=/usr/bin/python3 \
   -DRIDT_SANITIZE= >/dev/null
 cmake --build build -j "$jobs"
+# The distributed tool's tests (tests/mpi_test.sh) run only where it was built: never skipped.
+[ -x build/ridt-mpi ] || { echo "ridt-mpi was not built: is MPI installed (scripts/deps.sh test)?" >&2; exit 1; }
 ctest --test-dir build -j "$jobs" --output-on-failure --no-tests=error
 
 echo "== Python: pip install and pip wheel into a virtual environment, then the tests on what pip installed"

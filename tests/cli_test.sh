@@ -258,5 +258,25 @@ expect 2 "interpolate bad method" -- "$ridt" interpolate "$dir/v.txt" "$dir/plan
 absent "$dir/x.csv"
 absent "$dir/x.png"
 
+# An index of parts (as ridt-mpi writes): the triangles of two .ele files checked as one.
+"$ridt" triangulate "$dir/uniform.bin" -o "$dir/whole.ele"
+total=$(head -1 "$dir/whole.ele" | awk '{print $1}')
+half=$((total / 2))
+{ echo "$half 3 0"; sed -n "2,$((half + 1))p" "$dir/whole.ele"; } >"$dir/p.0-of-2.ele"
+{ echo "$((total - half)) 3 0"; tail -n +$((half + 2)) "$dir/whole.ele" | awk '{print NR - 1, $2, $3, $4}'; } >"$dir/p.1-of-2.ele"
+printf 'ridt parts 2\np.0-of-2.ele\np.1-of-2.ele\n' >"$dir/p.parts"
+expect 0 "check parts" -- "$ridt" check "$dir/uniform.bin" "$dir/p.parts"
+stdout_has "^valid"
+printf 'ridt parts 3\np.0-of-2.ele\np.1-of-2.ele\n' >"$dir/bad.parts"
+expect 2 "parts count" -- "$ridt" check "$dir/uniform.bin" "$dir/bad.parts"
+stderr_has "names 2"
+printf 'ridt parts 1\np.0-of-2.ele\n' >"$dir/half.parts"
+expect 1 "half the parts" -- "$ridt" check "$dir/uniform.bin" "$dir/half.parts"
+printf 'parts 1\np.0-of-2.ele\n' >"$dir/bad.parts"
+expect 2 "parts header" -- "$ridt" check "$dir/uniform.bin" "$dir/bad.parts"
+stderr_has "not an index of parts"
+printf 'ridt parts 1\nnothing.ele\n' >"$dir/bad.parts"
+expect 2 "missing part" -- "$ridt" check "$dir/uniform.bin" "$dir/bad.parts"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

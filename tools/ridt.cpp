@@ -404,7 +404,7 @@ int main(int argc, char** argv) {
   std::string check_points, check_tris;
   CLI::App* chk = app.add_subcommand("check", "validate a triangulation exactly");
   chk->add_option("points", check_points, "the points")->required();
-  chk->add_option("triangles", check_tris, "the triangles: .ele, .bin or text")->required();
+  chk->add_option("triangles", check_tris, "the triangles: .ele, .bin, text, or the .parts index of ridt-mpi's parts")->required();
 
   std::string vor_in, vor_out, vor_box;
   unsigned vor_threads = 1;

@@ -34,7 +34,34 @@ void write_points(const std::string& path, std::span<const Point> points) {
 }
 
 std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
+  if (extension_of(path) == ".parts") return read_parts(path);
   return parse_triangles(read_file_whole(path), path, first_index);
+}
+
+std::vector<VertexId> read_parts(const std::string& path) {
+  // "ridt parts N", then N part files (.ele, indices from 0), named relative to the index.
+  const std::string text = read_file_whole(path);
+  std::vector<std::string> lines;
+  for_each_line(text, [&](std::size_t, std::string_view line) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
+    if (!line.empty()) lines.emplace_back(line);
+  });
+  const std::string head = "ridt parts ";
+  if (lines.empty() || lines[0].rfind(head, 0) != 0)
+    fail_file(path, "not an index of parts (its first line must be \"ridt parts N\")");
+  const std::string count = lines[0].substr(head.size());
+  if (count.empty() || count.size() > 9 || count.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoul(count) != lines.size() - 1)
+    fail_file(path, "the index says " + count + " parts but names " + std::to_string(lines.size() - 1));
+  const fs::path dir = fs::path(path).parent_path();
+  std::vector<VertexId> out;
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const std::string part = (dir / lines[k]).string();
+    if (extension_of(part) != ".ele") fail_file(path, "part " + lines[k] + " is not an .ele file");
+    const std::vector<VertexId> t = read_triangles(part, 0);
+    out.insert(out.end(), t.begin(), t.end());
+  }
+  return out;
 }
 
 std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,

@@ -48,6 +48,10 @@ void write_points(const std::string& path, std::span<const Point> points);
 /// `first_index` is the numbering of .ele and text files.
 std::vector<VertexId> read_triangles(const std::string& path, int first_index);
 
+/// The triangles of a distributed run's parts: an index (.parts: "ridt parts N", then the N
+/// .ele files, 0-based, named relative to the index), the parts' triangles one after another.
+std::vector<VertexId> read_parts(const std::string& path);
+
 /// The same for content in memory (`name` as for parse_points).
 std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,
                                       int first_index);

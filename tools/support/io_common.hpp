@@ -361,11 +361,19 @@ class Writer {
     pos_ += 8;
   }
 
-  void commit() {
+  /// Writes out and closes the file under its temporary name (throws if that fails): what is
+  /// left is the rename, which commit() does. For writers that must agree before any renames.
+  void close() {
+    if (closed_) return;
     flush();
     errno = 0;
     out_.close();
     if (out_.fail()) fail(errno);
+    closed_ = true;
+  }
+
+  void commit() {
+    close();
     errno = 0;
     if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail(errno);
     committed_ = true;
@@ -408,6 +416,7 @@ class Writer {
   std::size_t pos_ = 0;
   bool opened_ = false;
   bool committed_ = false;
+  bool closed_ = false;
 };
 
 /// IoError unless every index of `ids` names one of `n` points.
