@@ -636,6 +636,7 @@ int run(Mpi& mpi, const Args& a) {
     ++st.rounds;
     std::vector<std::vector<Request>> asks(static_cast<std::size_t>(mpi.size));
     try {
+      t = ridt::Triangulation{};  // the last round's freed first: one triangulation at a time
       t = triangulate(known, a.threads);
       const auto& s = known.sites;
       auto ask = [&](const Request& q) {
