@@ -206,22 +206,41 @@ struct Renumbered {
   static constexpr VertexId kNone = ~VertexId{0};
 };
 
+// What both kinds of call read, checked: the field, renumbered when there are about as many
+// answers (`count` of `what`, queries or nodes) as triangles.
+class Input {
+ public:
+  Input(const char* who, std::span<const Point> points, const Triangulation& t, Values values, std::size_t count,
+        const char* what, std::span<double> out, unsigned threads)
+      : field_{points, t.triangles, t.neighbors, values} {
+    detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
+    check_values(who, points.size(), values);
+    const std::size_t m = values.components;
+    if (out.size() != count * m)
+      throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
+                       std::to_string(count) + " " + what + " of " + std::to_string(m) + " components");
+    if (count >= t.size()) {
+      renumbered_.emplace(field_, threads);
+      field_ = renumbered_->field(t.neighbors, m);
+    }
+  }
+  Input(const Input&) = delete;
+  Input& operator=(const Input&) = delete;
+
+  const Field& field() const { return field_; }
+
+ private:
+  Field field_;
+  std::optional<Renumbered> renumbered_;
+};
+
 template <class Answer>
 void interpolate(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
                  std::span<const Point> queries, std::span<double> out, double fill, unsigned threads,
                  Answer&& answer) {
-  detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
-  check_values(who, points.size(), values);
+  const Input input(who, points, t, values, queries.size(), "queries", out, threads);
+  const Field& field = input.field();
   const std::size_t m = values.components;
-  if (out.size() != queries.size() * m)
-    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
-                     std::to_string(queries.size()) + " queries of " + std::to_string(m) + " components");
-  Field field{points, t.triangles, t.neighbors, values};
-  std::optional<Renumbered> renumbered;
-  if (queries.size() >= t.size()) {
-    renumbered.emplace(field, threads);
-    field = renumbered->field(t.neighbors, m);
-  }
   std::vector<std::int32_t> where(queries.size());
   locate(field.points, field.triangles, field.neighbors, queries, where, threads);
   detail::parallel_for(queries.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
@@ -344,22 +363,13 @@ void cover(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, uns
 template <class Answer>
 void interpolate_grid(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
                       const Grid& grid, std::span<double> out, double fill, unsigned threads, Answer&& answer) {
-  detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
-  check_values(who, points.size(), values);
   const Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
+  const Input input(who, points, t, values, grid.size(), "nodes", out, threads);
+  const Field& field = input.field();
   const std::size_t m = values.components;
-  if (out.size() != grid.size() * m)
-    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
-                     std::to_string(grid.size()) + " nodes of " + std::to_string(m) + " components");
   detail::parallel_for(out.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
     std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), fill);
   });
-  Field field{points, t.triangles, t.neighbors, values};
-  std::optional<Renumbered> renumbered;
-  if (grid.size() >= t.size()) {
-    renumbered.emplace(field, threads);
-    field = renumbered->field(t.neighbors, m);
-  }
   cover(field, ax, ay, grid, threads, [&] {
     return [&, sibson = Sibson(field)](std::size_t tri, std::size_t node, const Point& p) mutable {
       answer(field, sibson, tri, p, &out[node * m]);

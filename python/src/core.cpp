@@ -115,6 +115,28 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   return ridt::triangulate(pts, o);
 }
 
+// The interpolant of `values` (n by k) at `where`: queries, or a grid's nodes, `rows` answers
+// in a new (rows, k) array, computed without the GIL.
+template <class Where>
+py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulation& t, const Points& values,
+                                   const Where& where, std::size_t rows, double fill, const std::string& method,
+                                   unsigned threads) {
+  const auto pts = as_points(points, "points");
+  if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
+  const auto k = static_cast<std::size_t>(values.shape(1));
+  const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
+  py::array_t<double> a({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(k)});
+  const std::span<double> out(a.mutable_data(), rows * k);
+  {
+    py::gil_scoped_release nogil;
+    if (method == "natural")
+      ridt::interpolate_natural_neighbor(pts, t, v, where, out, fill, threads);
+    else
+      ridt::interpolate_linear(pts, t, v, where, out, fill, threads);
+  }
+  return a;
+}
+
 // A vector's memory handed to numpy without a copy: the array owns the vector through a
 // capsule. `shape` must cover the vector's elements (as T, or as doubles for Points).
 template <class T, class Elem = T>
@@ -272,21 +294,8 @@ Triangulation alive.
       "interpolate",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& queries, double fill,
          const std::string& method, unsigned threads) {
-        const auto pts = as_points(points, "points");
-        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
         const auto q = as_points(queries, "queries");
-        const auto k = static_cast<std::size_t>(values.shape(1));
-        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
-        py::array_t<double> a({static_cast<py::ssize_t>(q.size()), static_cast<py::ssize_t>(k)});
-        const std::span<double> out(a.mutable_data(), q.size() * k);
-        {
-          py::gil_scoped_release nogil;
-          if (method == "natural")
-            ridt::interpolate_natural_neighbor(pts, t, v, q, out, fill, threads);
-          else
-            ridt::interpolate_linear(pts, t, v, q, out, fill, threads);
-        }
-        return a;
+        return interpolate_at(points, t, values, q, q.size(), fill, method, threads);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("queries"), py::arg("fill"),
       py::arg("method"), py::arg("threads"));
@@ -295,24 +304,11 @@ Triangulation alive.
       "interpolate_grid",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
          bool x_major, double fill, const std::string& method, unsigned threads) {
-        const auto pts = as_points(points, "points");
-        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
         if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
-        const auto k = static_cast<std::size_t>(values.shape(1));
-        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
         const ridt::Grid g{{x.data(), static_cast<std::size_t>(x.size())},
                            {y.data(), static_cast<std::size_t>(y.size())},
                            x_major};
-        py::array_t<double> a({static_cast<py::ssize_t>(g.size()), static_cast<py::ssize_t>(k)});
-        const std::span<double> out(a.mutable_data(), g.size() * k);
-        {
-          py::gil_scoped_release nogil;
-          if (method == "natural")
-            ridt::interpolate_natural_neighbor(pts, t, v, g, out, fill, threads);
-          else
-            ridt::interpolate_linear(pts, t, v, g, out, fill, threads);
-        }
-        return a;
+        return interpolate_at(points, t, values, g, g.size(), fill, method, threads);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"),
       py::arg("x_major"), py::arg("fill"), py::arg("method"), py::arg("threads"));
