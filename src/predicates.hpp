@@ -64,9 +64,8 @@ inline int orient2d(const Point& a, const Point& b, const Point& c) {
   const double r = acy * bcx;
   const double det = l - r;
   const double bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
-  if (det > bound) return 1;
-  if (det < -bound) return -1;
-  // NaN from an overflow fails both tests and lands here too.
+  // NaN from an overflow fails the test and goes on.
+  if (std::fabs(det) > bound) return det > 0 ? 1 : -1;
   const double m = std::max({std::fabs(acx), std::fabs(bcx), std::fabs(acy), std::fabs(bcy)});
   if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y}, m, 0x1p25)) return (det > 0) - (det < 0);
   return orient2d_hard(a, b, c);
@@ -88,18 +87,23 @@ inline int incircle_filter(const Point& a, const Point& b, const Point& c, const
   // Underflow: a degree-2 product that underflows (absolute error <= 2^-1075) is later
   // multiplied by a degree-2 factor of size <= 2 m^2 (m the largest difference); there are at
   // most 12 such products and 3 final ones, so 2^-1075 (32 m^2 + 4) = 2^-1070 (m^2 + 1/8)
-  // bounds the total. An overflow makes m^2 infinite and sends us to the exact path.
+  // bounds the total. An overflow makes a lift infinite and sends us to the exact path.
+  //
+  // First a cheap bound, from the lifts the determinant needs anyway: five more operations,
+  // where the largest difference m and the permanent take some thirty (the walking kernel
+  // inserted a third faster with it). With A, B, C the exact lifts of the rounded differences,
+  // |bdx cdy| + |cdx bdy| <= sqrt(B C) <= (B + C) / 2 (Cauchy-Schwarz), so the permanent
+  // below is at most A B + B C + C A <= S^2 / 3, S = A + B + C; and m^2 <= S. The computed S
+  // and the products round some twenty times, each by a factor 1 + 2^-53 at most: 0.34 over
+  // 1/3 leaves room for all of them, and 2^-1069 s + 2^-1072 covers the underflow term even
+  // when its own products underflow (2^-1075 each).
+  const double s = alift + blift + clift;
+  const double rough = s * (kIncircleBound * 0.34 * s + 0x1p-1069) + 0x1p-1072;
+  if (std::fabs(det) > rough) return det > 0 ? 1 : -1;
   // std::max, not std::fmax: no NaN can occur (finite inputs), and it inlines to one instruction.
-  // As a tree, three maxima deep: the bound, not the determinant, is the longer chain.
   const double m = std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)), std::max(std::fabs(bdx), std::fabs(bdy))),
                             std::max(std::fabs(cdx), std::fabs(cdy)));
-  const double m2 = m * m;
-  const double tiny = 0x1p-1070 * (m2 + 0.125);
-  // First a cheap bound: the permanent below is at most 3 (2 m^2)(2 m^2) = 12 m^4 exactly, and
-  // 13 m2 m2 exceeds 12 m^4 even with the three roundings of its products.
-  const double rough = kIncircleBound * 13.0 * (m2 * m2) + tiny;
-  if (det > rough) return 1;
-  if (det < -rough) return -1;
+  const double tiny = 0x1p-1070 * (m * m + 0.125);
   const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * alift +
                            (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * blift +
                            (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * clift;

@@ -131,6 +131,38 @@ TEST(Predicates, RescaledFilterAgreesWithIntegers) {
   EXPECT_GT(circles, 10);  // exactly cocircular quadruples among them
 }
 
+// The filter's answer, whenever it gives one, is the exact sign: points drawn on a circle and
+// rounded to doubles are within a few rounding errors of cocircular, where the filter's bounds
+// are tight; among them are far offsets and scales down to the subnormals.
+TEST(Incircle, FilterIsRightWheneverItDecides) {
+  std::uint64_t state = 99;
+  auto uniform = [&state] {
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    return static_cast<double>(state >> 11) * 0x1p-53;
+  };
+  int decided = 0, abstained = 0;
+  const double scales[][2] = {{0, 1}, {1e6, 1}, {3e12, 0.5}, {-7.5, 1e-8}, {1e-300, 1e-303}, {0, 0x1p-1020}};
+  for (const auto& [centre, radius] : scales) {
+    for (int trial = 0; trial < 20000; ++trial) {
+      Point p[4];
+      for (Point& q : p) {
+        const double angle = 6.283185307179586 * uniform();
+        q = {centre + radius * std::cos(angle), centre + radius * std::sin(angle)};
+      }
+      if (orient2d(p[0], p[1], p[2]) <= 0) continue;
+      const int f = incircle_filter(p[0], p[1], p[2], p[3]);
+      if (f == 0) {
+        ++abstained;
+        continue;
+      }
+      ++decided;
+      ASSERT_EQ(f, incircle_exact(p[0], p[1], p[2], p[3])) << centre << " " << radius << " " << trial;
+    }
+  }
+  EXPECT_GT(decided, 10000);
+  EXPECT_GT(abstained, 1000);
+}
+
 TEST(Incircle, NearlyCocircularAfterShift) {
   // Shifted by 1e15, the unit square's corners stay exact and cocircular; moving the fourth
   // corner by one unit in the last place decides the sign.
