@@ -2,6 +2,7 @@
 // never leave a partial or stray file behind.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "io.hpp"
@@ -96,8 +98,10 @@ std::vector<Point> tricky_points() {
   };
 }
 
+std::vector<Point> copy_of(const PointFile& f) { return {f.points.begin(), f.points.end()}; }
+
 /// Equal bit for bit (so -0.0 differs from 0.0).
-void expect_same_bits(const std::vector<Point>& a, const std::vector<Point>& b) {
+void expect_same_bits(std::span<const Point> a, std::span<const Point> b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(std::memcmp(&a[i].x, &b[i].x, sizeof(double)), 0) << "point " << i << " x";
@@ -117,6 +121,32 @@ TEST_F(IoTest, PointRoundTripEveryFormat) {
   }
   EXPECT_EQ(fs::file_size(path("p.bin")), 16 * pts.size());
   EXPECT_EQ(listing(), (std::vector<std::string>{"noextension", "p.bin", "p.node", "p.txt", "p.xy"}));
+}
+
+// A .bin file is mapped, not read: the points stay valid when the PointFile moves, they equal
+// what the in-memory parser makes of the same bytes, and a file that cannot be mapped (a
+// pipe) is read instead.
+TEST_F(IoTest, BinPointsMappedOrRead) {
+  const std::vector<Point> pts = tricky_points();
+  write_points(path("m.bin"), pts);
+  PointFile moved;
+  {
+    PointFile first = read_points(path("m.bin"));
+    moved = std::move(first);
+  }
+  expect_same_bits(moved.points, pts);
+  expect_same_bits(parse_points(read_file("m.bin"), "m.bin").points, pts);
+
+  const std::string fifo = path("pipe.bin");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] {
+    std::ofstream out(fifo, std::ios::binary);
+    const std::string bytes = read_file("m.bin");
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
+  const PointFile piped = read_points(fifo);
+  writer.join();
+  expect_same_bits(piped.points, pts);
 }
 
 TEST_F(IoTest, WrittenPointFormats) {
@@ -154,7 +184,7 @@ TEST_F(IoTest, TextCommasCommentsBlankLines) {
              "1.5e-3 .25");  // no final newline
   const PointFile f = read_points(path("c.txt"));
   EXPECT_EQ(f.first_index, 0);
-  EXPECT_EQ(f.points, (std::vector<Point>{{1, 2}, {3, 4}, {5, 6}, {7, 8}, {9, -1000}, {0.0015, 0.25}}));
+  EXPECT_EQ(copy_of(f), (std::vector<Point>{{1, 2}, {3, 4}, {5, 6}, {7, 8}, {9, -1000}, {0.0015, 0.25}}));
 }
 
 TEST_F(IoTest, NodeFirstIndexOne) {
@@ -167,14 +197,14 @@ TEST_F(IoTest, NodeFirstIndexOne) {
              "3 4 5 1e3 0 # last\n");
   const PointFile f = read_points(path("one.node"));
   EXPECT_EQ(f.first_index, 1);
-  EXPECT_EQ(f.points, (std::vector<Point>{{0.5, 1.5}, {-1, 2}, {4, 5}}));
+  EXPECT_EQ(copy_of(f), (std::vector<Point>{{0.5, 1.5}, {-1, 2}, {4, 5}}));
 }
 
 TEST_F(IoTest, NodeFirstIndexZeroAndShortHeader) {
   write_file("zero.node", "2 2\n0 1 2\n1 3 4\n");
   const PointFile f = read_points(path("zero.node"));
   EXPECT_EQ(f.first_index, 0);
-  EXPECT_EQ(f.points, (std::vector<Point>{{1, 2}, {3, 4}}));
+  EXPECT_EQ(copy_of(f), (std::vector<Point>{{1, 2}, {3, 4}}));
   write_file("empty.node", "0 2 0 0\n");
   EXPECT_TRUE(read_points(path("empty.node")).points.empty());
 }
@@ -609,7 +639,7 @@ TEST_F(IoTest, LargeRoundTrip) {
   for (int i = 0; i < 250000; ++i) pts.push_back({next(), next()});
   for (const char* name : {"big.txt", "big.node", "big.bin"}) {
     write_points(path(name), pts);
-    EXPECT_EQ(read_points(path(name)).points, pts) << name;
+    EXPECT_EQ(copy_of(read_points(path(name))), pts) << name;
   }
   Triangulation t;
   for (VertexId k = 0; k < 500000; ++k) {

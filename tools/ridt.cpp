@@ -320,7 +320,8 @@ int run_interpolate(const InterpolateArgs& a) {
     for (std::size_t j = 0; j < ny; ++j)
       for (std::size_t i = 0; i < nx; ++i) queries[j * nx + i] = {xs[i], ys[j]};
   } else {
-    queries = ridt::io::read_points(a.queries).points;
+    const ridt::io::PointFile q = ridt::io::read_points(a.queries);
+    queries.assign(q.points.begin(), q.points.end());
   }
   ridt::Options o;
   o.method = a.threads == 1 ? ridt::Method::Serial : ridt::Method::Partition;

@@ -1,5 +1,5 @@
-// Point and triangle files: the whole file is read into memory and parsed in place with
-// std::from_chars; output is formatted with std::to_chars into a large buffer and written to a
+// Point and triangle files: a .bin point file is mapped into memory and used where it lies;
+// other files are read whole into memory and parsed in place with std::from_chars; output is formatted with std::to_chars into a large buffer and written to a
 // temporary file beside the target, which is renamed onto the target only when complete.
 //
 // This file picks the format by the file's extension; each format lives in its own io_*.cpp.
@@ -11,7 +11,11 @@ namespace ridt::io {
 
 using namespace detail;
 
-PointFile read_points(const std::string& path) { return parse_points(read_file_whole(path), path); }
+PointFile read_points(const std::string& path) {
+  if (extension_of(path) == ".bin")
+    if (std::optional<PointFile> mapped = map_bin_points(path)) return std::move(*mapped);
+  return parse_points(read_file_whole(path), path);
+}
 
 PointFile parse_points(std::string_view data, const std::string& name) {
   const std::string ext = extension_of(name);

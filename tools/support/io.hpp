@@ -10,6 +10,7 @@
 //             name beside the target and renamed, so a failure never leaves half a file.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -28,9 +29,28 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct PointFile {
-  std::vector<Point> points;
+/// Points read from a file. A .bin file is mapped into memory as it lies (on a little-endian
+/// machine; read only, no copy), other formats are parsed into memory the PointFile owns;
+/// either way `points` stays valid while the PointFile lives. Movable, not copyable.
+class PointFile {
+ public:
+  PointFile() = default;
+  explicit PointFile(std::vector<Point> parsed, int first = 0)
+      : points(parsed), first_index(first), parsed_(std::move(parsed)) {}
+  /// Points that lie in memory that `owner` keeps (a mapping).
+  PointFile(std::shared_ptr<const void> owner, std::span<const Point> mapped)
+      : points(mapped), owner_(std::move(owner)) {}
+  PointFile(PointFile&&) noexcept = default;
+  PointFile& operator=(PointFile&&) noexcept = default;
+  PointFile(const PointFile&) = delete;
+  PointFile& operator=(const PointFile&) = delete;
+
+  std::span<const Point> points;
   int first_index = 0;  ///< numbering of a .node file (0 or 1); 0 for other formats
+
+ private:
+  std::vector<Point> parsed_;  // moving a vector keeps its storage: `points` stays valid
+  std::shared_ptr<const void> owner_;
 };
 
 /// Reads points; throws IoError on a missing file, a malformed line, a NaN or infinite

@@ -3,6 +3,9 @@
 // at all.
 #pragma once
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,6 +21,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -447,6 +451,9 @@ void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first
 
 // Raw little-endian binary (io_binary.cpp): float64 pairs, uint32 triples.
 PointFile read_bin_points(const std::string& path, std::string_view data);
+/// A regular .bin file mapped into memory and checked, or nothing where it cannot be mapped
+/// (not a regular file, a big-endian machine): then read it. Throws IoError as the reader.
+std::optional<PointFile> map_bin_points(const std::string& path);
 std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data);
 void write_bin_points(Writer& out, std::span<const Point> points);
 void write_bin_triangles(Writer& out, std::span<const VertexId> triangles);

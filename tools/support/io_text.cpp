@@ -4,8 +4,8 @@
 namespace ridt::io::detail {
 
 PointFile read_text_points(const std::string& path, std::string_view text) {
-  PointFile out;
-  out.points.reserve(count_lines(text));
+  std::vector<Point> points;
+  points.reserve(count_lines(text));
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {
     Fields f{line, true};
     std::string_view a, b, extra;
@@ -24,9 +24,9 @@ PointFile read_text_points(const std::string& path, std::string_view text) {
     }
     if (std::isnan(x) || std::isnan(y)) fail_line(path, line_no, "coordinate is NaN");
     if (std::isinf(x) || std::isinf(y)) fail_line(path, line_no, "coordinate is infinite");
-    out.points.push_back({x, y});
+    points.push_back({x, y});
   });
-  return out;
+  return PointFile(std::move(points));
 }
 
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text,

@@ -5,7 +5,10 @@
 namespace ridt::io::detail {
 
 PointFile read_node(const std::string& path, std::string_view text) {
-  PointFile out;
+  struct {
+    std::vector<Point> points;
+    int first_index = 0;
+  } out;
   bool have_header = false;
   std::int64_t n = 0, attrs = 0, markers = 0;
   std::size_t fields_per_line = 3;
@@ -92,7 +95,7 @@ PointFile read_node(const std::string& path, std::string_view text) {
     fail_file(path, "header says " + std::to_string(n) + " points but the file has " +
                         std::to_string(count));
   }
-  return out;
+  return PointFile(std::move(out.points), out.first_index);
 }
 
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index) {
