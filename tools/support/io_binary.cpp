@@ -39,11 +39,14 @@ std::optional<PointFile> map_bin_points(const std::string& path) {
       if (fd >= 0) ::close(fd);
     }
   };
+  // A pipe or a device is read, not mapped; asked before opening it, which would take the
+  // writer's end of a pipe from the reader that follows.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
   errno = 0;
   const File file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (file.fd < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
-  struct stat st {};
-  if (::fstat(file.fd, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;  // a pipe, a device
+  if (::fstat(file.fd, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
   const auto bytes = static_cast<std::size_t>(st.st_size);
   check_bin_size(path, bytes);
   if (bytes == 0) return PointFile();
