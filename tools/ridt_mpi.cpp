@@ -557,10 +557,8 @@ int run(Mpi& mpi, const Args& a) {
     error = e.what();
   }
   if (!mpi.agree(error)) return 2;
-  if (n > 0xfffffffcu) {
-    mpi.agree("more than 2^32 - 4 points: indices are 32-bit");
-    return 2;
-  }
+  // Input indices are 64-bit throughout (Site::id, the parts): past 2^32 points, only each
+  // rank's own share must fit the kernel's 32-bit local indices, which triangulate checks.
 
   // The box of all points, and a sample for the split.
   double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -704,7 +702,7 @@ int run(Mpi& mpi, const Args& a) {
   }
 
   // Output: the triangles whose smallest input index is an own point, in input indices.
-  std::vector<std::uint32_t> kept;
+  std::vector<std::uint64_t> kept;  // input indices: past 2^32 for 10^10 points
   for (std::size_t k = 0; k < t.size(); ++k) {
     const ridt::VertexId* v = &t.triangles[3 * k];
     const ridt::VertexId low = std::min({v[0], v[1], v[2]}, [&](ridt::VertexId p, ridt::VertexId q) {
@@ -713,14 +711,14 @@ int run(Mpi& mpi, const Args& a) {
     if (low >= known.own) continue;
     // Rotated to start at the smallest index, orientation kept.
     const int i = v[0] == low ? 0 : v[1] == low ? 1 : 2;
-    for (int j = 0; j < 3; ++j) kept.push_back(static_cast<std::uint32_t>(known.sites[v[(i + j) % 3]].id));
+    for (int j = 0; j < 3; ++j) kept.push_back(known.sites[v[(i + j) % 3]].id);
   }
   st.triangles = kept.size() / 3;
   const std::filesystem::path out_path(a.output);
   const std::string stem = (out_path.parent_path() / out_path.stem()).string();
   const std::string part = stem + "." + std::to_string(mpi.rank) + "-of-" + std::to_string(mpi.size) + ".ele";
   std::optional<ridt::io::detail::Writer> writer, index;
-  std::vector<std::uint32_t> merged;
+  std::vector<std::uint64_t> merged;
   try {
     if (a.merge) {
       // Rank 0 gathers every part (a small case), sorts and writes one file.
@@ -730,7 +728,7 @@ int run(Mpi& mpi, const Args& a) {
       int sum = 0;
       for (int q = 0; q < mpi.size; ++q) offsets[static_cast<std::size_t>(q)] = sum, sum += sizes[static_cast<std::size_t>(q)];
       if (mpi.rank == 0) merged.resize(static_cast<std::size_t>(sum));
-      MPI_Gatherv(kept.data(), size, MPI_UINT32_T, merged.data(), sizes.data(), offsets.data(), MPI_UINT32_T, 0,
+      MPI_Gatherv(kept.data(), size, MPI_UINT64_T, merged.data(), sizes.data(), offsets.data(), MPI_UINT64_T, 0,
                   MPI_COMM_WORLD);
       if (mpi.rank == 0) {
         std::vector<std::uint32_t> order(merged.size() / 3);
@@ -743,7 +741,7 @@ int run(Mpi& mpi, const Args& a) {
         writer->put(" 3 0\n");
         for (std::size_t k = 0; k < order.size(); ++k) {
           writer->put_int(static_cast<std::int64_t>(k));
-          for (int j = 0; j < 3; ++j) writer->put(' '), writer->put_int(merged[3 * std::size_t(order[k]) + j]);
+          for (int j = 0; j < 3; ++j) writer->put(' '), writer->put_int(static_cast<std::int64_t>(merged[3 * std::size_t(order[k]) + j]));
           writer->put('\n');
         }
       }
@@ -753,7 +751,7 @@ int run(Mpi& mpi, const Args& a) {
       writer->put(" 3 0\n");
       for (std::size_t k = 0; k < kept.size() / 3; ++k) {
         writer->put_int(static_cast<std::int64_t>(k));
-        for (int j = 0; j < 3; ++j) writer->put(' '), writer->put_int(kept[3 * k + j]);
+        for (int j = 0; j < 3; ++j) writer->put(' '), writer->put_int(static_cast<std::int64_t>(kept[3 * k + j]));
         writer->put('\n');
       }
       if (mpi.rank == 0) {
