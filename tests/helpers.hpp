@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "audit.hpp"
+#include "generate.hpp"
 #include "ridt/check.hpp"
 #include "ridt/ridt.hpp"
 
@@ -50,6 +51,14 @@ inline std::vector<Point> read_json_points(const std::string& path) {
   double x, y;
   while (in >> x >> y) pts.push_back({x, y});
   return pts;
+}
+
+/// The paper's four distributions as a test parameter, and each instance named after its own.
+inline auto every_distribution() {
+  return ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters);
+}
+inline std::string distribution_name(const ::testing::TestParamInfo<Distribution>& info) {
+  return to_string(info.param);
 }
 
 }  // namespace ridt::test

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "generate.hpp"
+#include "helpers.hpp"
 #include "predicates.hpp"
 #include "ridt/interpolate.hpp"
 
@@ -70,9 +71,7 @@ TEST_P(Interpolation, ExactOnLinearFunctionsAndFillOutside) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Distributions, Interpolation,
-                         ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid,
-                                           Distribution::Clusters),
-                         [](const auto& info) { return std::string(to_string(info.param)); });
+                         test::every_distribution(), test::distribution_name);
 
 TEST(Interpolation, SeveralComponentsAndTheDataAtThePoints) {
   const std::vector<Point> pts = generate(Distribution::Uniform, 2000, 9);
@@ -228,9 +227,7 @@ TEST_P(GridInterpolation, EqualsTheLocatedQueries) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Distributions, GridInterpolation,
-                         ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid,
-                                           Distribution::Clusters),
-                         [](const auto& info) { return std::string(to_string(info.param)); });
+                         test::every_distribution(), test::distribution_name);
 
 TEST(GridInterpolation, ThreadsGiveTheSameBits) {
   // Enough triangles for each thread to take a stretch: every node still has one owner.

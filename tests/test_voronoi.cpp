@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "generate.hpp"
+#include "helpers.hpp"
 #include "io.hpp"
 #include "ridt/voronoi.hpp"
 
@@ -84,9 +85,7 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Distributions, VoronoiOf,
-                         ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid,
-                                           Distribution::Clusters),
-                         [](const auto& info) { return std::string(to_string(info.param)); });
+                         test::every_distribution(), test::distribution_name);
 
 TEST(Voronoi, ThreadsGiveTheSameDiagram) {
   // Enough triangles for each thread to take a stretch of them.

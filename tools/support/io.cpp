@@ -1,6 +1,7 @@
 // Point and triangle files: a .bin point file is mapped into memory and used where it lies;
-// other files are read whole into memory and parsed in place with std::from_chars; output is formatted with std::to_chars into a large buffer and written to a
-// temporary file beside the target, which is renamed onto the target only when complete.
+// other files are read whole into memory and parsed in place with std::from_chars. Output is
+// formatted with std::to_chars into a large buffer and written to a temporary file beside the
+// target, which is renamed onto the target only when complete.
 //
 // This file picks the format by the file's extension; each format lives in its own io_*.cpp.
 #include "io.hpp"
