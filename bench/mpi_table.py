@@ -8,7 +8,12 @@ share of its time spent in MPI calls and its peak memory; then the model's const
 from those figures, and what the model says for 10^9 and 10^10 points on 64 to 1,024 nodes.
 
   bench/mpi_table.py --build build [--n 1000000] [--ranks 1,2,4,8]
-                     [--dists uniform,clusters,terrain] [--out docs/mpi-results.md]
+                     [--dists uniform,clusters,terrain] [--large 10000000] [--large-ranks 4]
+                     [--out docs/mpi-results.md]
+
+--large N (0: none) adds a run at N points of uniform and clusters on --large-ranks ranks: the
+merged file against the single process's, `ridt check` on the parts, the rounds, and each
+rank's peak memory against the single process's writing the same .ele.
 
 On a machine with fewer cores than ranks (--oversubscribe), the time in MPI calls is mostly
 waiting for ranks that share a core: the traffic, the rounds and the memory are the figures
@@ -56,6 +61,47 @@ def single(build, points):
     return s["time_triangulate_s"] / s["points"], s["peak_rss_bytes"] / s["points"]
 
 
+def single_peak(build, points, output):
+    """Peak resident bytes of `ridt triangulate`, with or without writing an .ele file."""
+    cmd = [os.path.join(build, "ridt"), "triangulate", points] + (["-o", output] if output else [])
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=ENV)
+    _, status, usage = os.wait4(p.pid, 0)
+    if status != 0:
+        sys.exit(f"{' '.join(cmd)} failed: {p.stderr.read().decode()[-2000:]}")
+    return usage.ru_maxrss * 1024
+
+
+def large_rows(build, n, p, tmp):
+    """At n points on p ranks: exactness, rounds, traffic and each rank's peak against one process."""
+    rows = []
+    for dist in ("uniform", "clusters"):
+        pts = os.path.join(tmp, f"large-{dist}.bin")
+        make_points(build, dist, n, pts)
+        ref = os.path.join(tmp, "large-single.ele")
+        bare, writing = single_peak(build, pts, None), single_peak(build, pts, ref)
+        merged = os.path.join(tmp, "large-merged.ele")
+        run(["mpirun", "-np", str(p), "--oversubscribe", os.path.join(build, "ridt-mpi"), pts, "-o", merged, "--merge"])
+        with open(ref, "rb") as f1, open(merged, "rb") as f2:
+            same = f1.read() == f2.read()
+        if not same:
+            sys.exit(f"{dist} at {n} points: the merged result of {p} ranks differs from the single process's")
+        os.remove(merged)
+        ranks = ranks_of(build, pts, p, os.path.join(tmp, "large.ele"))
+        check = run([os.path.join(build, "ridt"), "check", pts, os.path.join(tmp, "large.parts")]).strip()
+        if not check.startswith("valid"):
+            sys.exit(f"{dist} at {n} points: ridt check on the parts: {check}")
+        peaks = [r["peak_mib"] * 2**20 for r in ranks]
+        received = sum(r["received"] for r in ranks) / sum(r["points"] for r in ranks)
+        rounds = max(r["rounds"] for r in ranks)
+        rows.append(f"| {dist} | {p} | yes | {check.split(',')[0]} | {rounds:.0f} | {received:.4f} | "
+                    f"{statistics.median(peaks) / 2**20:.0f} ({max(peaks) / 2**20:.0f}) | {bare / 2**20:.0f} | "
+                    f"{writing / 2**20:.0f} | {max(peaks) / writing:.2f} |")
+        for f in os.listdir(tmp):
+            if f.startswith("large"):
+                os.remove(os.path.join(tmp, f))
+    return rows
+
+
 def spread(values, fmt):
     lo, med, hi = min(values), statistics.median(values), max(values)
     return fmt.format(med) if lo == hi else f"{fmt.format(med)} ({fmt.format(lo)}–{fmt.format(hi)})"
@@ -67,6 +113,8 @@ def main():
     ap.add_argument("--n", type=int, default=1000000)
     ap.add_argument("--ranks", default="1,2,4,8")
     ap.add_argument("--dists", default="uniform,clusters,terrain")
+    ap.add_argument("--large", type=int, default=10000000)
+    ap.add_argument("--large-ranks", type=int, default=4)
     ap.add_argument("--out", default="docs/mpi-results.md")
     a = ap.parse_args()
     ranks = [int(x) for x in a.ranks.split(",")]
@@ -74,7 +122,10 @@ def main():
     lines = []
     fit = {}  # per distribution at the most ranks: the model's constants
     mem_fit = {}  # per distribution: (points owned, peak bytes) of every rank of every run
+    large = []
     with tempfile.TemporaryDirectory() as tmp:
+        if a.large:
+            large = large_rows(a.build, a.large, a.large_ranks, tmp)
         for dist in dists:
             pts = os.path.join(tmp, f"{dist}.bin")
             make_points(a.build, dist, a.n, pts)
@@ -117,7 +168,8 @@ def main():
         fit[dist]["peak"], fit[dist]["fixed"] = slope, my - slope * mx
     out = []
     out.append("# ridt-mpi per rank, and a model for a cluster\n")
-    out.append(f"Written by `bench/mpi_table.py --n {a.n} --ranks {a.ranks} --dists {a.dists}` on "
+    out.append(f"Written by `bench/mpi_table.py --n {a.n} --ranks {a.ranks} --dists {a.dists} --large {a.large} "
+               f"--large-ranks {a.large_ranks}` on "
                f"a machine of {os.cpu_count()} cores, so every run with more ranks than "
                "cores is oversubscribed and its times in MPI calls are mostly waiting for ranks that share a core. "
                "Each distribution's merged result on the most ranks was first checked equal to `ridt triangulate -o`.\n")
@@ -128,6 +180,17 @@ def main():
     out.append("|---|---:|---:|---:|---:|---:|---:|---:|")
     out.extend(lines)
     out.append("")
+    if large:
+        out.append(f"## {a.large:,} points on {a.large_ranks} ranks\n")
+        out.append("The merged file compared with `ridt triangulate -o`'s; `ridt check` on the parts; the request "
+                   "rounds; the points received over the points owned, all ranks together; each rank's peak "
+                   "resident MiB, median (most); the single process's peak without output and writing the same "
+                   "`.ele`; the most a rank needs over the single process writing.\n")
+        out.append("| distribution | ranks | merged = single | check on the parts | rounds | received | "
+                   "rank peak MiB | single, no output | single, writing | rank / single |")
+        out.append("|---|---:|---|---|---:|---:|---:|---:|---:|---:|")
+        out.extend(large)
+        out.append("")
     out.append("## The model\n")
     out.append("A node holds n = N / P points. Its time is read + redistribute + compute + exchange:\n")
     out.append("- read: 16 n bytes from a parallel file system whose bandwidth B_fs is shared by the P nodes "

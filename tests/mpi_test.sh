@@ -71,6 +71,10 @@ for np in 1 3 4 8; do
     [ "$got" = "$want" ] && pass || fail "$np parts hold $got triangles, not $want"
     rounds=$(tail -n +2 "$dir/stats" | awk -F, 'BEGIN {m = 0} {if ($5 > m) m = $5} END {print m}')
     [ "$rounds" -ge 1 ] && pass || fail "no round of exchange on $np ranks"
+    [ "$rounds" -le 3 ] && pass || fail "$rounds rounds of exchange on $np ranks, more than 3"
+    # Only the points near a region's border travel, not whole clusters inside wide circles.
+    share=$(tail -n +2 "$dir/stats" | awk -F, '{o += $2; r += $3} END {printf "%.3f", r / o}')
+    awk -v s="$share" 'BEGIN {exit !(s <= 0.25)}' && pass || fail "$np ranks received $share of the points owned"
   else
     fail "parts on $np ranks"; cat "$dir/err"
   fi

@@ -6,7 +6,9 @@
 // balanced by a sample (k-d splits), each rank triangulates the points of its box with the
 // serial or threaded kernel, and then asks the other ranks for the points it is missing: those
 // inside the circumcircle of a triangle it keeps, and beyond a hull edge at one of its points.
-// The rounds end when no rank learns a new point. The predicates and their symbolic
+// A rank answers a circle with only those of its points whose own triangles' circles reach the
+// asker's box (the others cannot be the asker's neighbours), so clustered data do not ship
+// whole clusters. The rounds end when no rank learns a new point. The predicates and their symbolic
 // perturbation depend on the coordinates only, so every rank decides as one process would, and
 // the union of the kept triangles is the one Delaunay triangulation. A triangle is kept by the
 // rank that owns its smallest input index.
@@ -27,10 +29,10 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <iterator>
 #include <numeric>
 #include <optional>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 #include "io.hpp"
@@ -116,15 +118,26 @@ class Mpi {
   // Sends out[q] to rank q and returns what each rank sent here, in rank order.
   template <class T>
   std::vector<T> exchange(const std::vector<std::vector<T>>& out) {
+    std::vector<T> flat;
+    std::vector<int> counts(static_cast<std::size_t>(size));
+    for (int q = 0; q < size; ++q) {
+      counts[static_cast<std::size_t>(q)] = static_cast<int>(out[static_cast<std::size_t>(q)].size());
+      flat.insert(flat.end(), out[static_cast<std::size_t>(q)].begin(), out[static_cast<std::size_t>(q)].end());
+    }
+    return exchange(flat, counts);
+  }
+
+  // The same for what is already in rank order: the first send_counts[0] items to rank 0, the
+  // next send_counts[1] to rank 1, and so on.
+  template <class T>
+  std::vector<T> exchange(const std::vector<T>& flat, std::vector<int> send_counts) {
     const auto t0 = Clock::now();
     const MPI_Datatype type = std::is_same_v<T, Site> ? site_ : request_;
-    std::vector<int> send_counts(size), recv_counts(size), send_at(size), recv_at(size);
-    std::vector<T> flat;
-    for (int q = 0; q < size; ++q) {
-      send_counts[q] = static_cast<int>(out[q].size());
-      send_at[q] = static_cast<int>(flat.size());
-      flat.insert(flat.end(), out[q].begin(), out[q].end());
-      if (q != rank) bytes_sent += out[q].size() * sizeof(T);
+    std::vector<int> recv_counts(size), send_at(size), recv_at(size);
+    for (int q = 0, at = 0; q < size; ++q) {
+      send_at[q] = at;
+      at += send_counts[q];
+      if (q != rank) bytes_sent += static_cast<std::uint64_t>(send_counts[q]) * sizeof(T);
     }
     MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
     std::size_t total = 0;
@@ -189,22 +202,23 @@ std::vector<Site> read_share(Mpi& mpi, const std::string& path, std::uint64_t& n
   if (bytes % 16 != 0) error = path + ": " + std::to_string(bytes) + " bytes is not a whole number of float64 pairs";
   n = static_cast<std::uint64_t>(bytes) / 16;
   const std::uint64_t first = n * mpi.rank / mpi.size, last = n * (mpi.rank + 1) / mpi.size;
-  std::vector<double> raw(2 * (last - first));
-  // Read in pieces below 2^31 bytes, every rank the same number of times (collective calls).
-  const std::uint64_t piece = 1u << 26, pieces = (n / mpi.size + 1 + piece - 1) / piece + 1;
+  std::vector<Site> out(last - first);
+  // Read through a buffer of 2^20 points, every rank the same number of times (collective
+  // calls), so that the raw share is never held beside the sites.
+  constexpr std::uint64_t piece = 1u << 20;
+  const std::uint64_t pieces = (n / mpi.size + 1 + piece - 1) / piece + 1;
+  std::vector<double> raw(2 * std::min(piece, out.size()));
   for (std::uint64_t k = 0; k < pieces; ++k) {
     const std::uint64_t from = std::min(last - first, k * piece), to = std::min(last - first, (k + 1) * piece);
-    MPI_File_read_at_all(f, static_cast<MPI_Offset>((first + from) * 16), raw.data() + 2 * from,
-                         static_cast<int>(2 * (to - from)), MPI_DOUBLE, MPI_STATUS_IGNORE);
+    MPI_File_read_at_all(f, static_cast<MPI_Offset>((first + from) * 16), raw.data(), static_cast<int>(2 * (to - from)),
+                         MPI_DOUBLE, MPI_STATUS_IGNORE);
+    for (std::uint64_t i = from; i < to; ++i) out[i] = {raw[2 * (i - from)], raw[2 * (i - from) + 1], first + i};
   }
   MPI_File_close(&f);
   if (!error.empty()) throw Failure(error);
-  std::vector<Site> out(last - first);
-  for (std::uint64_t i = 0; i < out.size(); ++i) {
-    out[i] = {raw[2 * i], raw[2 * i + 1], first + i};
+  for (std::uint64_t i = 0; i < out.size(); ++i)
     if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y))
       throw Failure(path + ": point " + std::to_string(first + i) + " is not finite");
-  }
   return out;
 }
 
@@ -269,11 +283,46 @@ class Regions {
 };
 
 // The points this rank knows: its own (first, sorted by input index, duplicates dropped) and
-// those other ranks sent, with a bucket grid over its own for the other ranks' requests.
+// those other ranks sent. Every point has one owner and an owner sends a point to a rank once,
+// so what arrives is always new.
 struct Known {
-  std::vector<Site> sites;
+  std::vector<Point> points;
+  std::vector<std::uint64_t> ids;  // their input indices
   std::size_t own = 0;
-  std::unordered_set<std::uint64_t> have;  // input indices of the points received
+
+  Site site(std::size_t i) const { return {points[i].x, points[i].y, ids[i]}; }
+
+  // Appends `more`, growing the arrays by exactly that much.
+  void add(const std::vector<Site>& more) {
+    points.reserve(points.size() + more.size());
+    ids.reserve(ids.size() + more.size());
+    for (const Site& s : more) points.push_back({s.x, s.y}), ids.push_back(s.id);
+  }
+};
+
+// What this rank has sent to each other rank: sorted local indices of own points.
+class Sent {
+ public:
+  explicit Sent(int ranks) : to_(static_cast<std::size_t>(ranks)) {}
+
+  // Appends to `out` the own points among `picked` (local indices, in any order, repeats
+  // allowed) that rank r does not have yet, and remembers them.
+  void send(int r, std::vector<std::uint32_t>& picked, const Known& k, std::vector<Site>& out) {
+    std::sort(picked.begin(), picked.end());
+    picked.erase(std::unique(picked.begin(), picked.end()), picked.end());
+    std::vector<std::uint32_t>& sent = to_[static_cast<std::size_t>(r)];
+    fresh_.clear();
+    std::set_difference(picked.begin(), picked.end(), sent.begin(), sent.end(), std::back_inserter(fresh_));
+    for (const std::uint32_t i : fresh_) out.push_back(k.site(i));
+    const std::size_t before = sent.size();
+    sent.insert(sent.end(), fresh_.begin(), fresh_.end());
+    std::inplace_merge(sent.begin(), sent.begin() + static_cast<std::ptrdiff_t>(before), sent.end());
+    picked.clear();
+  }
+
+ private:
+  std::vector<std::vector<std::uint32_t>> to_;
+  std::vector<std::uint32_t> fresh_;
 };
 
 struct Stats {
@@ -350,12 +399,10 @@ std::optional<Args> parse(int argc, char** argv, std::string& error) {
 
 // The triangulation of the points this rank knows, in their order.
 ridt::Triangulation triangulate(const Known& k, unsigned threads) {
-  std::vector<Point> pts(k.sites.size());
-  for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = {k.sites[i].x, k.sites[i].y};
   ridt::Options o;
   o.method = threads > 1 ? ridt::Method::Partition : ridt::Method::Serial;
   o.threads = threads;
-  return ridt::triangulate(pts, o);
+  return ridt::triangulate(k.points, o);
 }
 
 // The circumcircle of (a, b, c), widened so that it holds every point the exact in-circle
@@ -398,7 +445,8 @@ bool box_meets(const Box& b, const Request& q) {
 // A bucket grid over this rank's own points, to answer requests without a scan.
 class Buckets {
  public:
-  Buckets(const std::vector<Site>& sites, std::size_t own) : sites_(sites) {
+  Buckets(const std::vector<Point>& points, std::size_t own) : sites_(points) {
+    const std::vector<Point>& sites = points;
     if (own == 0) return;
     box_ = {sites[0].x, sites[0].y, sites[0].x, sites[0].y};
     for (std::size_t i = 0; i < own; ++i) {
@@ -429,19 +477,19 @@ class Buckets {
     return std::sqrt(w) * std::sqrt(h) * std::sqrt(static_cast<double>(cells) / static_cast<double>(std::max<std::size_t>(count, 1)));
   }
 
-  // Calls take(i) for each own point i inside or on the circumcircle of request q (kind 0),
-  // decided by the exact in-circle test, or for every own point (kind 2). The cells looked at
-  // are those the widened circle meets, row by row, so that the flat circles along the hull
-  // look at a strip.
-  template <class Take>
-  void each(const Request& q, Take&& take) const {
+  // Calls take(i) for each own point i with want(i) inside or on the circumcircle of request q
+  // (kind 0), decided by the exact in-circle test, or for every own point (kind 2). The cells
+  // looked at are those the widened circle meets, row by row, so that the flat circles along
+  // the hull look at a strip.
+  template <class Take, class Want>
+  void each(const Request& q, Take&& take, Want&& want) const {
     if (items_.empty()) return;
     const Disc c = q.kind == 2 ? Disc{0, 0, INFINITY} : circle_of(q);
     const Point a{q.a, q.b}, b{q.c, q.d}, t{q.e, q.f};
     auto test = [&](std::size_t cell) {
       for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k) {
-        const Site& s = sites_[items_[k]];
-        if (q.kind == 2 || ridt::detail::incircle(a, b, t, {s.x, s.y}) >= 0) take(items_[k]);
+        const std::uint32_t i = items_[k];
+        if (want(i) && (q.kind == 2 || ridt::detail::incircle(a, b, t, sites_[i]) >= 0)) take(i);
       }
     };
     if (!std::isfinite(c.r)) {
@@ -470,29 +518,77 @@ class Buckets {
   }
   std::size_t cell(double x, double y) const { return index(y, box_.y0, box_.y1) * side_ + index(x, box_.x0, box_.x1); }
 
-  const std::vector<Site>& sites_;
+  const std::vector<Point>& sites_;
   Box box_{};
   std::size_t side_ = 0;
   std::vector<std::size_t> start_;
   std::vector<std::uint32_t> items_;
 };
 
+// Which own points each other rank may need, judged from this rank's triangulation of the
+// points it knows. A point q here is a Delaunay neighbour of a point p in rank r's box only if
+// some circle through p and q is empty; that circle is empty of the points known here too, and
+// the empty circles through q are covered by the circumcircles of q's triangles (on the hull,
+// also by the half-planes beyond its hull edges). So q may matter to r only if one of its
+// triangles' circles meets r's box, or q is on the hull. A circle request is answered with
+// such points only: a wide circle between clusters does not take a whole cluster with it.
+class Relevant {
+ public:
+  Relevant(const ridt::Triangulation& t, const Known& k, const Regions& regions, int me, int ranks)
+      : by_rank_(static_cast<std::size_t>(ranks)), mark_(k.own, 0) {
+    if (t.size() == 0) {
+      everything_ = true;
+      return;
+    }
+    const Box& home = regions.box(me);
+    for (std::size_t j = 0; j < t.size(); ++j) {
+      const ridt::VertexId* v = &t.triangles[3 * j];
+      if (v[0] >= k.own && v[1] >= k.own && v[2] >= k.own) continue;
+      const Disc d = circle(k.points[v[0]], k.points[v[1]], k.points[v[2]]);
+      if (d.x - d.r > home.x0 && d.x + d.r < home.x1 && d.y - d.r > home.y0 && d.y + d.r < home.y1) continue;
+      for (int r = 0; r < ranks; ++r)
+        if (r != me && (!std::isfinite(d.r) || regions.box(r).distance(d.x, d.y) <= d.r))
+          for (int i = 0; i < 3; ++i)
+            if (v[i] < k.own) by_rank_[static_cast<std::size_t>(r)].push_back(v[i]);
+    }
+    for (const ridt::VertexId h : t.hull)
+      if (h < k.own)
+        for (int r = 0; r < ranks; ++r)
+          if (r != me) by_rank_[static_cast<std::size_t>(r)].push_back(h);
+  }
+
+  // Between begin(r) and end(r), whether rank r may need own point i.
+  void begin(int r) {
+    for (const std::uint32_t i : by_rank_[static_cast<std::size_t>(r)]) mark_[i] = 1;
+  }
+  bool wanted(std::uint32_t i) const { return everything_ || mark_[i]; }
+  void end(int r) {
+    for (const std::uint32_t i : by_rank_[static_cast<std::size_t>(r)]) mark_[i] = 0;
+  }
+
+ private:
+  bool everything_ = false;
+  std::vector<std::vector<std::uint32_t>> by_rank_;
+  std::vector<std::uint8_t> mark_;
+};
+
 // The convex hull of points sorted by x, then y (Andrew's chain, exact orientation tests),
 // counter-clockwise, collinear points left out.
 std::vector<Site> hull_of_sorted(const std::vector<Site>& s) {
-  std::vector<Site> h;
   if (s.size() < 3) return s;
-  h.resize(2 * s.size());
+  std::vector<std::uint32_t> h(2 * s.size());  // indices: a fraction of the points' size
   std::size_t k = 0;
-  auto add = [&](const Site& p, std::size_t floor) {
-    while (k >= floor && ridt::detail::orient2d({h[k - 2].x, h[k - 2].y}, {h[k - 1].x, h[k - 1].y}, {p.x, p.y}) <= 0) --k;
-    h[k++] = p;
+  auto at = [&](std::size_t j) { return Point{s[h[j]].x, s[h[j]].y}; };
+  auto add = [&](std::size_t i, std::size_t floor) {
+    while (k >= floor && ridt::detail::orient2d(at(k - 2), at(k - 1), {s[i].x, s[i].y}) <= 0) --k;
+    h[k++] = static_cast<std::uint32_t>(i);
   };
-  for (std::size_t i = 0; i < s.size(); ++i) add(s[i], 2);  // the lower chain
+  for (std::size_t i = 0; i < s.size(); ++i) add(i, 2);  // the lower chain
   const std::size_t lower = k + 1;
-  for (std::size_t i = s.size() - 1; i-- > 0;) add(s[i], lower);  // the upper chain, back
-  h.resize(k - 1);  // the first point closes the upper chain
-  return h;
+  for (std::size_t i = s.size() - 1; i-- > 0;) add(i, lower);  // the upper chain, back
+  std::vector<Site> hull(k - 1);  // the first point closes the upper chain
+  for (std::size_t j = 0; j + 1 < k; ++j) hull[j] = s[h[j]];
+  return hull;
 }
 
 std::vector<std::vector<Point>> gather_hulls(Mpi& mpi, const std::vector<Site>& mine) {
@@ -523,7 +619,7 @@ bool beyond(const std::vector<Point>& hull, const Point& a, const Point& b) {
 // Among own points strictly to the right of the line in request q (kind 1), the one whose
 // circle with the line's two points bulges least to that side: the circle's centre lies at
 // m + t n (m the middle of the edge, n its outward normal), and the least t wins.
-std::optional<std::uint32_t> across(const std::vector<Site>& s, std::size_t own, const Request& q) {
+std::optional<std::uint32_t> across(const std::vector<Point>& s, std::size_t own, const Request& q) {
   const Point a{q.a, q.b}, b{q.c, q.d};
   const double mx = a.x / 2 + b.x / 2, my = a.y / 2 + b.y / 2;
   const double nx = b.y - a.y, ny = a.x - b.x;  // to the right of a -> b
@@ -531,7 +627,7 @@ std::optional<std::uint32_t> across(const std::vector<Site>& s, std::size_t own,
   std::optional<std::uint32_t> best;
   double best_t = INFINITY;
   for (std::size_t i = 0; i < own; ++i) {
-    const Point p{s[i].x, s[i].y};
+    const Point p = s[i];
     if (ridt::detail::orient2d(a, b, p) >= 0) continue;
     // |p - (m + t n)| = |a - (m + t n)|: t = (|p - m|^2 - half^2) / (2 (p - m) . n), with n unit.
     const double len = std::hypot(nx, ny);
@@ -584,59 +680,77 @@ int run(Mpi& mpi, const Args& a) {
   for (std::size_t k = 0; k < points.size(); ++k) points[k] = {all[2 * k], all[2 * k + 1]};
   const Regions regions(std::move(points), {glo[0], glo[1], ghi[0], ghi[1]}, mpi.size);
 
-  // Each point to the rank of its box.
-  Known known;
+  // Each point to the rank of its box: the share put in rank order in place (a cycle sort on
+  // the owners), then sent in one call.
+  std::vector<Site> sites;
   {
-    std::vector<std::vector<Site>> out(static_cast<std::size_t>(mpi.size));
-    for (const Site& s : mine) out[static_cast<std::size_t>(regions.owner(s.x, s.y))].push_back(s);
+    std::vector<int> owner(mine.size()), counts(static_cast<std::size_t>(mpi.size), 0);
+    for (std::size_t i = 0; i < mine.size(); ++i) ++counts[static_cast<std::size_t>(owner[i] = regions.owner(mine[i].x, mine[i].y))];
+    std::vector<std::size_t> next(static_cast<std::size_t>(mpi.size)), end(static_cast<std::size_t>(mpi.size));
+    for (std::size_t q = 0, at = 0; q < next.size(); ++q) next[q] = at, end[q] = at += static_cast<std::size_t>(counts[q]);
+    for (std::size_t q = 0; q < next.size(); ++q)
+      while (next[q] < end[q]) {
+        const std::size_t i = next[q], o = static_cast<std::size_t>(owner[i]);
+        if (o == q) {
+          ++next[q];
+        } else {
+          std::swap(mine[i], mine[next[o]]);
+          std::swap(owner[i], owner[next[o]]);
+          ++next[o];
+        }
+      }
+    std::vector<int>().swap(owner);
+    sites = mpi.exchange(mine, counts);
     std::vector<Site>().swap(mine);
-    known.sites = mpi.exchange(out);
   }
   // Own points by input index, duplicates dropped (equal points share a box, so a rank sees
   // all of a group; the smallest index stands for it, as in one process).
-  std::sort(known.sites.begin(), known.sites.end(), [](const Site& p, const Site& q) {
+  std::sort(sites.begin(), sites.end(), [](const Site& p, const Site& q) {
     return p.x != q.x ? p.x < q.x : p.y != q.y ? p.y < q.y : p.id < q.id;
   });
-  known.sites.erase(std::unique(known.sites.begin(), known.sites.end(),
-                                [](const Site& p, const Site& q) { return p.x == q.x && p.y == q.y; }),
-                    known.sites.end());
+  sites.erase(std::unique(sites.begin(), sites.end(), [](const Site& p, const Site& q) { return p.x == q.x && p.y == q.y; }),
+              sites.end());
   // Every rank's convex hull, to tell which ranks have points beyond a line.
-  const std::vector<Site> my_hull = hull_of_sorted(known.sites);
-  const std::vector<std::vector<Point>> hulls = gather_hulls(mpi, my_hull);
-  std::sort(known.sites.begin(), known.sites.end(), [](const Site& p, const Site& q) { return p.id < q.id; });
-  known.own = known.sites.size();
+  const std::vector<Site> hull_sites = hull_of_sorted(sites);
+  const std::vector<std::vector<Point>> hulls = gather_hulls(mpi, hull_sites);
+  std::sort(sites.begin(), sites.end(), [](const Site& p, const Site& q) { return p.id < q.id; });
+  Known known;
+  known.add(sites);
+  known.own = sites.size();
+  std::vector<Site>().swap(sites);
   st.own = known.own;
+  std::vector<std::uint32_t> my_hull;  // local indices: own ids are sorted
+  for (const Site& h : hull_sites)
+    my_hull.push_back(static_cast<std::uint32_t>(std::lower_bound(known.ids.begin(), known.ids.begin() + static_cast<std::ptrdiff_t>(known.own), h.id) - known.ids.begin()));
 
   // Round 0: to each other box, the own points within some three local spacings of it, sent
   // unasked. The spacing is the local one (from the points around each), so clusters send a
   // thin margin and sparse parts a wide one.
-  const Buckets buckets(known.sites, known.own);
-  std::vector<std::unordered_set<std::uint64_t>> sent(static_cast<std::size_t>(mpi.size));  // ids sent to each
+  std::optional<Buckets> buckets(std::in_place, known.points, known.own);
+  Sent sent(mpi.size);
   {
-    std::vector<std::vector<Site>> out(static_cast<std::size_t>(mpi.size));
+    std::vector<std::vector<std::uint32_t>> picked(static_cast<std::size_t>(mpi.size));
     for (std::size_t i = 0; i < known.own; ++i) {
-      const Site& p = known.sites[i];
-      const double margin = 3 * buckets.spacing(p.x, p.y);
+      const Point& p = known.points[i];
+      const double margin = 3 * buckets->spacing(p.x, p.y);
       for (int q = 0; q < mpi.size; ++q)
-        if (q != mpi.rank && regions.box(q).distance(p.x, p.y) <= margin) {
-          out[static_cast<std::size_t>(q)].push_back(p);
-          sent[static_cast<std::size_t>(q)].insert(p.id);
-        }
+        if (q != mpi.rank && regions.box(q).distance(p.x, p.y) <= margin) picked[static_cast<std::size_t>(q)].push_back(static_cast<std::uint32_t>(i));
     }
-    for (const Site& s : mpi.exchange(out))
-      if (known.have.insert(s.id).second) known.sites.push_back(s);
+    std::vector<std::vector<Site>> out(static_cast<std::size_t>(mpi.size));
+    for (int q = 0; q < mpi.size; ++q) sent.send(q, picked[static_cast<std::size_t>(q)], known, out[static_cast<std::size_t>(q)]);
+    known.add(mpi.exchange(out));
   }
 
   // Rounds: triangulate what is known, ask for what the kept triangles' circles and the hull
-  // edges at own points may be missing, until no rank learns anything.
+  // edges at own points may be missing, until no rank learns anything. The triangulation of a
+  // round that learns something is dropped before the points arrive: one at a time.
   ridt::Triangulation t;
   for (;;) {
     ++st.rounds;
     std::vector<std::vector<Request>> asks(static_cast<std::size_t>(mpi.size));
     try {
-      t = ridt::Triangulation{};  // the last round's freed first: one triangulation at a time
       t = triangulate(known, a.threads);
-      const auto& s = known.sites;
+      const auto& s = known.points;
       auto ask = [&](const Request& q) {
         for (int r = 0; r < mpi.size; ++r)
           if (r != mpi.rank && box_meets(regions.box(r), q)) asks[static_cast<std::size_t>(r)].push_back(q);
@@ -664,71 +778,98 @@ int run(Mpi& mpi, const Args& a) {
     } catch (const std::exception& e) {
       error = e.what();
     }
+    std::optional<Relevant> relevant;
+    try {
+      relevant.emplace(t, known, regions, mpi.rank, mpi.size);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
     if (!mpi.agree(error)) return 2;
     const std::vector<std::vector<Request>> asked = mpi.exchange_by_rank(asks);
     std::vector<std::vector<Site>> answers(static_cast<std::size_t>(mpi.size));
-    for (int r = 0; r < mpi.size; ++r)
+    std::vector<std::uint32_t> picked;
+    std::size_t squeeze_at = 1 << 16;
+    auto take = [&](std::uint32_t i) {
+      picked.push_back(i);
+      if (picked.size() == squeeze_at) {  // overlapping circles: repeats kept to a few
+        std::sort(picked.begin(), picked.end());
+        picked.erase(std::unique(picked.begin(), picked.end()), picked.end());
+        squeeze_at = std::max(squeeze_at, 2 * picked.size());
+      }
+    };
+    auto wanted = [&](std::uint32_t i) { return relevant->wanted(i); };
+    for (int r = 0; r < mpi.size; ++r) {
+      // Of the points inside circles, only those r may need.
+      relevant->begin(r);
       for (const Request& q : asked[static_cast<std::size_t>(r)])
-      if (q.kind == 1) {
-        // Beyond a hull edge: the one point that makes the smallest circle with it on that
-        // side, its Delaunay neighbour across the edge among this rank's points. The circle
-        // requests of the next round bring whatever else that triangle needs.
-        const std::optional<std::uint32_t> best = across(known.sites, known.own, q);
-        if (!best) continue;
-        const Site& b = known.sites[*best];
-        // With it, what this rank has in that triangle's circle, which the asker would
-        // otherwise ask for in the next round.
-        // (b, a, best) is counter-clockwise: best lies to the right of a -> b.
-        const Request c{0, q.c, q.d, q.a, q.b, b.x, b.y};
-        auto& to = sent[static_cast<std::size_t>(r)];
-        if (to.insert(b.id).second) answers[static_cast<std::size_t>(r)].push_back(b);
-        buckets.each(c, [&](std::uint32_t i) {
-          if (to.insert(known.sites[i].id).second) answers[static_cast<std::size_t>(r)].push_back(known.sites[i]);
-        });
-        // And this rank's hull vertices beyond: along a nearly straight stretch of the hull,
-        // neighbour after neighbour would otherwise take a round each.
-        for (const Site& h : my_hull)
-          if (ridt::detail::orient2d({q.a, q.b}, {q.c, q.d}, {h.x, h.y}) < 0 && to.insert(h.id).second)
-            answers[static_cast<std::size_t>(r)].push_back(h);
-      } else
-        buckets.each(q, [&](std::uint32_t i) {
-          if (sent[static_cast<std::size_t>(r)].insert(known.sites[i].id).second) answers[static_cast<std::size_t>(r)].push_back(known.sites[i]);
-        });
-    std::uint64_t learned = 0;
-    for (const Site& x : mpi.exchange(answers))
-      if (known.have.insert(x.id).second) known.sites.push_back(x), ++learned;
-    st.received = known.sites.size() - known.own;
-    if (mpi.sum(learned) == 0) break;
+        if (q.kind == 1) {
+          // Beyond a hull edge: the one point that makes the smallest circle with it on that
+          // side, its Delaunay neighbour across the edge among this rank's points. The circle
+          // requests of the next round bring whatever else that triangle needs.
+          const std::optional<std::uint32_t> best = across(known.points, known.own, q);
+          if (!best) continue;
+          picked.push_back(*best);
+          // With it, what this rank has in that triangle's circle, which the asker would
+          // otherwise ask for in the next round.
+          // (b, a, best) is counter-clockwise: best lies to the right of a -> b.
+          const Point& b = known.points[*best];
+          buckets->each(Request{0, q.c, q.d, q.a, q.b, b.x, b.y}, take, wanted);
+          // And this rank's hull vertices beyond: along a nearly straight stretch of the hull,
+          // neighbour after neighbour would otherwise take a round each.
+          for (const std::uint32_t h : my_hull)
+            if (ridt::detail::orient2d({q.a, q.b}, {q.c, q.d}, known.points[h]) < 0) picked.push_back(h);
+        } else {
+          if (q.kind == 0) buckets->each(q, take, wanted);
+          else buckets->each(q, take, [](std::uint32_t) { return true; });
+        }
+      relevant->end(r);
+      sent.send(r, picked, known, answers[static_cast<std::size_t>(r)]);
+    }
+    const std::vector<Site> learned = mpi.exchange(answers);
+    if (mpi.sum(learned.size()) == 0) break;
+    t = ridt::Triangulation{};
+    known.add(learned);
   }
+  st.received = known.points.size() - known.own;
 
-  // Output: the triangles whose smallest input index is an own point, in input indices.
-  std::vector<std::uint64_t> kept;  // input indices: past 2^32 for 10^10 points
-  for (std::size_t k = 0; k < t.size(); ++k) {
+  // Output: the triangles whose smallest input index is an own point, in input indices,
+  // rotated to start there, orientation kept. What only the rounds needed goes first.
+  buckets.reset();
+  sent = Sent(0);
+  std::vector<Point>().swap(known.points);
+  ridt::set_memory_cache_limit(0);  // the kernel's work space, kept for another round
+  auto kept = [&](std::size_t k, std::uint64_t out[3]) {
     const ridt::VertexId* v = &t.triangles[3 * k];
     const ridt::VertexId low = std::min({v[0], v[1], v[2]}, [&](ridt::VertexId p, ridt::VertexId q) {
-      return known.sites[p].id < known.sites[q].id;
+      return known.ids[p] < known.ids[q];
     });
-    if (low >= known.own) continue;
-    // Rotated to start at the smallest index, orientation kept.
+    if (low >= known.own) return false;
     const int i = v[0] == low ? 0 : v[1] == low ? 1 : 2;
-    for (int j = 0; j < 3; ++j) kept.push_back(known.sites[v[(i + j) % 3]].id);
-  }
-  st.triangles = kept.size() / 3;
+    for (int j = 0; j < 3; ++j) out[j] = known.ids[v[(i + j) % 3]];
+    return true;
+  };
+  std::uint64_t triangle[3];
+  for (std::size_t k = 0; k < t.size(); ++k) st.triangles += kept(k, triangle);
   const std::filesystem::path out_path(a.output);
   const std::string stem = (out_path.parent_path() / out_path.stem()).string();
   const std::string part = stem + "." + std::to_string(mpi.rank) + "-of-" + std::to_string(mpi.size) + ".ele";
   std::optional<ridt::io::detail::Writer> writer, index;
-  std::vector<std::uint64_t> merged;
   try {
     if (a.merge) {
       // Rank 0 gathers every part (a small case), sorts and writes one file.
+      std::vector<std::uint64_t> mine_kept;  // input indices: past 2^32 for 10^10 points
+      mine_kept.reserve(3 * st.triangles);
+      for (std::size_t k = 0; k < t.size(); ++k)
+        if (kept(k, triangle)) mine_kept.insert(mine_kept.end(), triangle, triangle + 3);
+      t = ridt::Triangulation{};
+      std::vector<std::uint64_t> merged;
       std::vector<int> sizes(static_cast<std::size_t>(mpi.size)), offsets(static_cast<std::size_t>(mpi.size));
-      const int size = static_cast<int>(kept.size());
+      const int size = static_cast<int>(mine_kept.size());
       MPI_Gather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
       int sum = 0;
       for (int q = 0; q < mpi.size; ++q) offsets[static_cast<std::size_t>(q)] = sum, sum += sizes[static_cast<std::size_t>(q)];
       if (mpi.rank == 0) merged.resize(static_cast<std::size_t>(sum));
-      MPI_Gatherv(kept.data(), size, MPI_UINT64_T, merged.data(), sizes.data(), offsets.data(), MPI_UINT64_T, 0,
+      MPI_Gatherv(mine_kept.data(), size, MPI_UINT64_T, merged.data(), sizes.data(), offsets.data(), MPI_UINT64_T, 0,
                   MPI_COMM_WORLD);
       if (mpi.rank == 0) {
         std::vector<std::uint32_t> order(merged.size() / 3);
@@ -746,14 +887,17 @@ int run(Mpi& mpi, const Args& a) {
         }
       }
     } else {
+      // Written straight from the triangulation: no copy of the part in memory.
       writer.emplace(part);
-      writer->put_int(static_cast<std::int64_t>(kept.size() / 3));
+      writer->put_int(static_cast<std::int64_t>(st.triangles));
       writer->put(" 3 0\n");
-      for (std::size_t k = 0; k < kept.size() / 3; ++k) {
-        writer->put_int(static_cast<std::int64_t>(k));
-        for (int j = 0; j < 3; ++j) writer->put(' '), writer->put_int(static_cast<std::int64_t>(kept[3 * k + j]));
-        writer->put('\n');
-      }
+      std::uint64_t written = 0;
+      for (std::size_t k = 0; k < t.size(); ++k)
+        if (kept(k, triangle)) {
+          writer->put_int(static_cast<std::int64_t>(written++));
+          for (int j = 0; j < 3; ++j) writer->put(' '), writer->put_int(static_cast<std::int64_t>(triangle[j]));
+          writer->put('\n');
+        }
       if (mpi.rank == 0) {
         index.emplace(stem + ".parts");
         index->put("ridt parts " + std::to_string(mpi.size) + "\n");
