@@ -63,6 +63,7 @@ struct alignas(64) CavityScratch {
   std::vector<TriangleId> cavity;  // the cavity's slots, then the two new ones
   std::vector<Boundary> boundary;
   std::vector<Link> stack;
+  std::vector<std::uint8_t> inside;  // beside each edge on the stack: the triangle across it is in the cavity
   std::size_t size = 0;    // triangles in the cavity
   std::size_t edges = 0;   // boundary edges found
   std::uint64_t replaced = 0;  // triangles replaced beyond the first, over all insertions
@@ -72,7 +73,7 @@ struct alignas(64) CavityScratch {
   void make_room(std::size_t m) {
     if (m + 2 <= cavity.size()) return;
     const std::size_t room = std::max<std::size_t>(2 * m, 64);
-    cavity.resize(room + 2), boundary.resize(room + 2), stack.resize(room + 2);
+    cavity.resize(room + 2), boundary.resize(room + 2), stack.resize(room + 2), inside.resize(room + 2);
   }
 };
 
@@ -149,34 +150,47 @@ class Mesh {
     TriangleId* cavity = s.cavity.data();
     CavityScratch::Boundary* boundary = s.boundary.data();
     Link* stack = s.stack.data();
+    std::uint8_t* inside = s.inside.data();
+    // Whether the triangle across edge e has p inside its circle. The edges of a triangle that
+    // joins the cavity are tested together, as it joins, not one by one as they leave the
+    // stack: the tests are independent, so the processor overlaps them, where each test after
+    // a branch on the last one's result (taken at random) waited for that result. The tests
+    // are the same ones; a triangle tested is a neighbour of one in the cavity, which the
+    // partition method's threads may read (partition.cpp).
+    auto in_circle = [&](Link e) {
+      const Link l = link_[e];
+      if (l == kNoLink) return false;
+      const VertexId* uv = v_ + 3 * std::size_t{triangle_of(l)};
+      return vertices_.incircle(uv[0], uv[1], uv[2], p, q) > 0;
+    };
     std::size_t size = 1, edges = 0, top = 0;
     cavity[0] = t;
     // Edges to look across, last first: round the cavity counter-clockwise, so that its
     // boundary comes out in order.
     const Link base = static_cast<Link>(3 * t);
-    stack[top++] = base + 2;
-    stack[top++] = base + 1;
-    stack[top++] = base;
+    const bool in2 = in_circle(base + 2), in1 = in_circle(base + 1), in0 = in_circle(base);
+    stack[top] = base + 2, inside[top++] = in2;
+    stack[top] = base + 1, inside[top++] = in1;
+    stack[top] = base, inside[top++] = in0;
     while (top > 0) {
       const Link e = stack[--top];
       const Link l = link_[e];
-      if (l != kNoLink) {
+      if (inside[top]) {
         const TriangleId u = triangle_of(l);
-        const VertexId* uv = v_ + 3 * std::size_t{u};
-        if (vertices_.incircle(uv[0], uv[1], uv[2], p, q) > 0) {
-          if (!owned(u)) return false;
-          if (size + 1 + 2 > s.cavity.size()) {  // rare: a large cavity
-            s.make_room(size + 1);
-            cavity = s.cavity.data(), boundary = s.boundary.data(), stack = s.stack.data();
-          }
-          cavity[size++] = u;
-          // Entered by its edge j: the other two, counter-clockwise from there.
-          const int j = edge_of(l);
-          const Link ub = static_cast<Link>(3 * u);
-          stack[top++] = ub + prev3(j);
-          stack[top++] = ub + next3(j);
-          continue;
+        if (!owned(u)) return false;
+        if (size + 1 + 2 > s.cavity.size()) {  // rare: a large cavity
+          s.make_room(size + 1);
+          cavity = s.cavity.data(), boundary = s.boundary.data(), stack = s.stack.data(), inside = s.inside.data();
         }
+        cavity[size++] = u;
+        // Entered by its edge j: the other two, counter-clockwise from there.
+        const int j = edge_of(l);
+        const Link ub = static_cast<Link>(3 * u);
+        const Link before = ub + prev3(j), after = ub + next3(j);
+        const bool in_before = in_circle(before), in_after = in_circle(after);
+        stack[top] = before, inside[top++] = in_before;
+        stack[top] = after, inside[top++] = in_after;
+        continue;
       }
       const int i = edge_of(e);
       const VertexId* ev = v_ + (e - i);
