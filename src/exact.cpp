@@ -208,17 +208,24 @@ int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Poin
     int which;
   };
   Row rows[4] = {{&a, 0}, {&b, 1}, {&c, 2}, {&d, 3}};
-  std::sort(rows, rows + 4, [](const Row& l, const Row& r) { return lex_less(*r.p, *l.p); });
-  for (const Row& row : rows) {
-    int cofactor = 0;
-    switch (row.which) {
-      case 0: cofactor = orient2d(b, c, d); break;
-      case 1: cofactor = -orient2d(a, c, d); break;
-      case 2: cofactor = orient2d(a, b, d); break;
-      default: cofactor = -orient2d(a, b, c); break;
+  auto cofactor = [&](int which) {
+    switch (which) {
+      case 0: return orient2d(b, c, d);
+      case 1: return -orient2d(a, c, d);
+      case 2: return orient2d(a, b, d);
+      default: return -orient2d(a, b, c);
     }
-    if (cofactor != 0) return cofactor;
-  }
+  };
+  // The largest point's cofactor is 0 only when the other three are collinear, so it nearly
+  // always decides alone (a grid's cocircular squares come here at every other test): the
+  // full order only when it does not.
+  int largest = 0;
+  for (int i = 1; i < 4; ++i)
+    if (lex_less(*rows[largest].p, *rows[i].p)) largest = i;
+  if (const int first = cofactor(largest); first != 0) return first;
+  std::sort(rows, rows + 4, [](const Row& l, const Row& r) { return lex_less(*r.p, *l.p); });
+  for (const Row& row : rows)
+    if (const int f = cofactor(row.which); f != 0) return f;
   return 0;  // only for a degenerate (a, b, c), which callers never pass
 }
 

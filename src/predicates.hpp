@@ -100,6 +100,9 @@ inline int incircle_filter(const Point& a, const Point& b, const Point& c, const
   const double s = alift + blift + clift;
   const double rough = s * (kIncircleBound * 0.34 * s + 0x1p-1069) + 0x1p-1072;
   if (std::fabs(det) > rough) return det > 0 ? 1 : -1;
+  // The bound below is positive, so a determinant of 0 (a grid's cocircular squares, at every
+  // other test) cannot pass it: straight to the exact path.
+  if (det == 0) return 0;
   // std::max, not std::fmax: no NaN can occur (finite inputs), and it inlines to one instruction.
   const double m = std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)), std::max(std::fabs(bdx), std::fabs(bdy))),
                             std::max(std::fabs(cdx), std::fabs(cdy)));
