@@ -55,11 +55,14 @@ def ranks_of(build, points, p, out):
     return [{k: float(v) for k, v in r.items()} for r in rows]
 
 
-def single(build, points):
-    """Seconds a point and peak bytes a point of the single process (no output)."""
+def single(build, points, reps=5):
+    """Seconds a point and peak bytes a point of the single process (no output), medians of
+    `reps` runs: one run on a shared machine can be far off."""
     import json
-    s = json.loads(run([os.path.join(build, "ridt"), "triangulate", points, "--stats", "json"]))
-    return s["time_triangulate_s"] / s["points"], s["peak_rss_bytes"] / s["points"]
+    runs = [json.loads(run([os.path.join(build, "ridt"), "triangulate", points, "--stats", "json"]))
+            for _ in range(reps)]
+    return (statistics.median(s["time_triangulate_s"] / s["points"] for s in runs),
+            statistics.median(s["peak_rss_bytes"] / s["points"] for s in runs))
 
 
 def single_peak(build, points, output):

@@ -430,36 +430,23 @@ Disc circle(const Point& a, const Point& b, const Point& c) {
 
 Disc circle_of(const Request& q) { return circle({q.a, q.b}, {q.c, q.d}, {q.e, q.f}); }
 
-bool box_meets(const Box& b, const Request& q) {
-  if (q.kind == 0) {
-    const Disc c = circle_of(q);
-    return !std::isfinite(c.r) || b.distance(c.x, c.y) <= c.r;
-  }
-  // A half-plane: some corner of the box on the line or to its right.
-  const Point p{q.a, q.b}, r{q.c, q.d};
-  for (const Point corner : {Point{b.x0, b.y0}, Point{b.x1, b.y0}, Point{b.x0, b.y1}, Point{b.x1, b.y1}})
-    if (ridt::detail::orient2d(p, r, corner) <= 0) return true;
-  return false;
-}
-
 // A bucket grid over this rank's own points, to answer requests without a scan.
 class Buckets {
  public:
-  Buckets(const std::vector<Point>& points, std::size_t own) : sites_(points) {
-    const std::vector<Point>& sites = points;
+  Buckets(const std::vector<Point>& points, std::size_t own) : points_(points) {
     if (own == 0) return;
-    box_ = {sites[0].x, sites[0].y, sites[0].x, sites[0].y};
+    box_ = {points[0].x, points[0].y, points[0].x, points[0].y};
     for (std::size_t i = 0; i < own; ++i) {
-      box_.x0 = std::min(box_.x0, sites[i].x), box_.x1 = std::max(box_.x1, sites[i].x);
-      box_.y0 = std::min(box_.y0, sites[i].y), box_.y1 = std::max(box_.y1, sites[i].y);
+      box_.x0 = std::min(box_.x0, points[i].x), box_.x1 = std::max(box_.x1, points[i].x);
+      box_.y0 = std::min(box_.y0, points[i].y), box_.y1 = std::max(box_.y1, points[i].y);
     }
     side_ = std::max<std::size_t>(1, static_cast<std::size_t>(std::sqrt(static_cast<double>(own) / 2)));
     start_.assign(side_ * side_ + 1, 0);
-    for (std::size_t i = 0; i < own; ++i) ++start_[cell(sites[i].x, sites[i].y) + 1];
+    for (std::size_t i = 0; i < own; ++i) ++start_[cell(points[i].x, points[i].y) + 1];
     std::partial_sum(start_.begin(), start_.end(), start_.begin());
     items_.resize(own);
     std::vector<std::size_t> at(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < own; ++i) items_[at[cell(sites[i].x, sites[i].y)]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < own; ++i) items_[at[cell(points[i].x, points[i].y)]++] = static_cast<std::uint32_t>(i);
   }
 
   // The mean distance between own points around (x, y): from the count in the 3 x 3 cells
@@ -489,7 +476,7 @@ class Buckets {
     auto test = [&](std::size_t cell) {
       for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k) {
         const std::uint32_t i = items_[k];
-        if (want(i) && (q.kind == 2 || ridt::detail::incircle(a, b, t, sites_[i]) >= 0)) take(i);
+        if (want(i) && (q.kind == 2 || ridt::detail::incircle(a, b, t, points_[i]) >= 0)) take(i);
       }
     };
     if (!std::isfinite(c.r)) {
@@ -518,7 +505,7 @@ class Buckets {
   }
   std::size_t cell(double x, double y) const { return index(y, box_.y0, box_.y1) * side_ + index(x, box_.x0, box_.x1); }
 
-  const std::vector<Point>& sites_;
+  const std::vector<Point>& points_;
   Box box_{};
   std::size_t side_ = 0;
   std::vector<std::size_t> start_;
@@ -534,28 +521,12 @@ class Buckets {
 // such points only: a wide circle between clusters does not take a whole cluster with it.
 class Relevant {
  public:
-  Relevant(const ridt::Triangulation& t, const Known& k, const Regions& regions, int me, int ranks)
-      : by_rank_(static_cast<std::size_t>(ranks)), mark_(k.own, 0) {
-    if (t.size() == 0) {
-      everything_ = true;
-      return;
-    }
-    const Box& home = regions.box(me);
-    for (std::size_t j = 0; j < t.size(); ++j) {
-      const ridt::VertexId* v = &t.triangles[3 * j];
-      if (v[0] >= k.own && v[1] >= k.own && v[2] >= k.own) continue;
-      const Disc d = circle(k.points[v[0]], k.points[v[1]], k.points[v[2]]);
-      if (d.x - d.r > home.x0 && d.x + d.r < home.x1 && d.y - d.r > home.y0 && d.y + d.r < home.y1) continue;
-      for (int r = 0; r < ranks; ++r)
-        if (r != me && (!std::isfinite(d.r) || regions.box(r).distance(d.x, d.y) <= d.r))
-          for (int i = 0; i < 3; ++i)
-            if (v[i] < k.own) by_rank_[static_cast<std::size_t>(r)].push_back(v[i]);
-    }
-    for (const ridt::VertexId h : t.hull)
-      if (h < k.own)
-        for (int r = 0; r < ranks; ++r)
-          if (r != me) by_rank_[static_cast<std::size_t>(r)].push_back(h);
-  }
+  Relevant(std::size_t own, int ranks) : by_rank_(static_cast<std::size_t>(ranks)), mark_(own, 0) {}
+
+  // Own point i may matter to rank r.
+  void add(int r, std::uint32_t i) { by_rank_[static_cast<std::size_t>(r)].push_back(i); }
+  // Every own point may matter to every rank (this rank has no triangle to judge by).
+  void everything() { everything_ = true; }
 
   // Between begin(r) and end(r), whether rank r may need own point i.
   void begin(int r) {
@@ -748,17 +719,25 @@ int run(Mpi& mpi, const Args& a) {
   for (;;) {
     ++st.rounds;
     std::vector<std::vector<Request>> asks(static_cast<std::size_t>(mpi.size));
+    std::optional<Relevant> relevant;
     try {
       t = triangulate(known, a.threads);
+      relevant.emplace(known.own, mpi.size);
       const auto& s = known.points;
-      auto ask = [&](const Request& q) {
-        for (int r = 0; r < mpi.size; ++r)
-          if (r != mpi.rank && box_meets(regions.box(r), q)) asks[static_cast<std::size_t>(r)].push_back(q);
-      };
+      const Box& home = regions.box(mpi.rank);
       for (std::size_t k = 0; k < t.size(); ++k) {
         const ridt::VertexId* v = &t.triangles[3 * k];
         if (v[0] >= known.own && v[1] >= known.own && v[2] >= known.own) continue;
-        ask({0, s[v[0]].x, s[v[0]].y, s[v[1]].x, s[v[1]].y, s[v[2]].x, s[v[2]].y});
+        // Its circle goes to every rank whose box it meets, and makes its own vertices points
+        // those ranks may need. A circle inside this rank's box meets no other.
+        const Disc d = circle(s[v[0]], s[v[1]], s[v[2]]);
+        if (!(d.x - d.r > home.x0 && d.x + d.r < home.x1 && d.y - d.r > home.y0 && d.y + d.r < home.y1))
+          for (int r = 0; r < mpi.size; ++r)
+            if (r != mpi.rank && (!std::isfinite(d.r) || regions.box(r).distance(d.x, d.y) <= d.r)) {
+              asks[static_cast<std::size_t>(r)].push_back({0, s[v[0]].x, s[v[0]].y, s[v[1]].x, s[v[1]].y, s[v[2]].x, s[v[2]].y});
+              for (int i = 0; i < 3; ++i)
+                if (v[i] < known.own) relevant->add(r, v[i]);
+            }
         for (int i = 0; i < 3; ++i)
           if (t.neighbors[3 * k + i] < 0) {  // the hull side across from corner i, at an own point
             const ridt::VertexId p = v[(i + 1) % 3], q = v[(i + 2) % 3];
@@ -770,17 +749,17 @@ int run(Mpi& mpi, const Args& a) {
                 asks[static_cast<std::size_t>(r)].push_back({1, a.x, a.y, b.x, b.y, 0, 0});
           }
       }
-      if (t.size() == 0 && known.own > 0) {
+      for (const ridt::VertexId h : t.hull)
+        if (h < known.own)
+          for (int r = 0; r < mpi.size; ++r)
+            if (r != mpi.rank) relevant->add(r, h);
+      if (t.size() == 0) {
+        relevant->everything();
         // Too few points here, or all on a line: ask everyone for everything near.
-        for (int r = 0; r < mpi.size; ++r)
-          if (r != mpi.rank) asks[static_cast<std::size_t>(r)].push_back({2, 0, 0, 0, 0, 0, 0});
+        if (known.own > 0)
+          for (int r = 0; r < mpi.size; ++r)
+            if (r != mpi.rank) asks[static_cast<std::size_t>(r)].push_back({2, 0, 0, 0, 0, 0, 0});
       }
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-    std::optional<Relevant> relevant;
-    try {
-      relevant.emplace(t, known, regions, mpi.rank, mpi.size);
     } catch (const std::exception& e) {
       error = e.what();
     }
