@@ -86,7 +86,8 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
                     Progress& progress);
 
 /// The partition method with `threads` threads (partition.cpp); key[v] is vertex v's Hilbert
-/// key, non-decreasing along each BRIO round.
+/// key, non-decreasing along each BRIO round, with room for the three bounding vertices (n + 3
+/// entries: read, never used).
 void insert_partition(Mesh& mesh, const std::uint32_t* key, unsigned threads,
                       std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
 

@@ -49,15 +49,26 @@ constexpr std::array<HilbertStep, 1024> hilbert_table() {
 }
 constexpr std::array<HilbertStep, 1024> kHilbert = hilbert_table();
 
+// The keys of k points at once: each key is a chain of four table reads, each waiting for the
+// last one's state; k independent chains, stepped together, keep the processor busy while they
+// wait (one at a time took some 13 ns a point).
+template <int k>
+void hilbert_keys_of(const std::uint32_t* x, const std::uint32_t* y, std::uint32_t* key) {
+  std::uint32_t state[k] = {};
+  for (int j = 0; j < k; ++j) key[j] = 0;
+  for (int shift = 12; shift >= 0; shift -= 4)
+    for (int j = 0; j < k; ++j) {
+      const HilbertStep step = kHilbert[state[j] << 8 | ((x[j] >> shift) & 15) << 4 | ((y[j] >> shift) & 15)];
+      key[j] = key[j] << 8 | step.key;
+      state[j] = step.state;
+    }
+}
+
 }  // namespace
 
 std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
-  std::uint32_t key = 0, state = 0;
-  for (int shift = 12; shift >= 0; shift -= 4) {
-    const HilbertStep step = kHilbert[state << 8 | ((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
-    key = key << 8 | step.key;
-    state = step.state;
-  }
+  std::uint32_t key;
+  hilbert_keys_of<1>(&x, &y, &key);
   return key;
 }
 
@@ -85,8 +96,14 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
   auto part = [&](unsigned t, unsigned parts) {
     const auto begin = static_cast<std::uint32_t>(std::uint64_t{n} * t / parts);
     const auto end = static_cast<std::uint32_t>(std::uint64_t{n} * (t + 1) / parts);
-    for (std::uint32_t i = begin; i < end; ++i)
-      key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
+    constexpr int kTogether = 4;
+    std::uint32_t i = begin;
+    for (; i + kTogether <= end; i += kTogether) {
+      std::uint32_t x[kTogether], y[kTogether];
+      for (int j = 0; j < kTogether; ++j) x[j] = cell(points[i + j].x, x0), y[j] = cell(points[i + j].y, y0);
+      hilbert_keys_of<kTogether>(x, y, &key[i]);
+    }
+    for (; i < end; ++i) key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
   };
   const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
   {
@@ -124,14 +141,17 @@ std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uin
 // A cell of the curve may hold at most this many points before it is sorted on its own.
 constexpr std::uint32_t kCellPoints = 32;
 
-// Writes the ids of the sorted pairs to ids, then sorts each run of more than kCellPoints
-// pairs with one key (one cell) along a curve over the run's own bounding box, and so on
-// within it. Each level puts a run into cells at least 2^15 times smaller than its box, and a
-// run whose points the curve cannot tell apart (equal points) stays as it is: the recursion
-// ends after some 140 levels at most, even for points that span every exponent of a double.
-void refine(const Point* points, const std::vector<std::uint64_t>& pairs, std::uint32_t* ids) {
-  const auto count = static_cast<std::uint32_t>(pairs.size());
+// Writes the ids of the sorted pairs[0 .. count) to ids (and, when `keys` is given, their keys
+// to keys), then sorts each run of more than kCellPoints pairs with one key (one cell) along a
+// curve over the run's own bounding box, and so on within it. Each level puts a run into cells
+// at least 2^15 times smaller than its box, and a run whose points the curve cannot tell apart
+// (equal points) stays as it is: the recursion ends after some 140 levels at most, even for
+// points that span every exponent of a double.
+void refine(const Point* points, const std::uint64_t* pairs, std::uint32_t count, std::uint32_t* ids,
+            std::uint32_t* keys = nullptr) {
   for (std::uint32_t i = 0; i < count; ++i) ids[i] = static_cast<std::uint32_t>(pairs[i]);
+  if (keys != nullptr)
+    for (std::uint32_t i = 0; i < count; ++i) keys[i] = static_cast<std::uint32_t>(pairs[i] >> 32);
   for (std::uint32_t b = 0, e; b < count; b = e) {
     for (e = b + 1; e < count && pairs[e] >> 32 == pairs[b] >> 32;) ++e;
     if (e - b <= kCellPoints) continue;
@@ -145,19 +165,15 @@ void refine(const Point* points, const std::vector<std::uint64_t>& pairs, std::u
     // Local positions back to point ids, keeping the keys.
     const std::vector<std::uint32_t> run(ids + b, ids + e);
     for (std::uint64_t& pair : sorted) pair = (pair >> 32) << 32 | run[static_cast<std::uint32_t>(pair)];
-    refine(points, sorted, ids + b);
+    refine(points, sorted.data(), e - b, ids + b);
   }
 }
 
-}  // namespace
-
-void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
-                  std::uint32_t count) {
-  refine(points, sorted_pairs(key, ids, count), ids);
-}
-
-void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
-                 const std::vector<std::uint32_t>& first, unsigned threads) {
+// Runs sort(r) for each round r of `first` on up to `threads` threads: the rounds are shared
+// out largest first, each to the thread with the least work so far (with two threads, the last
+// round, half of the points, against all the others).
+template <class Sort>
+void share_rounds(const std::vector<std::uint32_t>& first, unsigned threads, Sort&& sort) {
   const std::size_t rounds = first.size() - 1;
   const unsigned parts = std::max(1u, std::min<unsigned>(threads, first.back() / 65536 + 1));
   std::vector<std::vector<std::size_t>> share(parts);
@@ -168,22 +184,48 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
     load[least] += first[r + 1] - first[r];
   }
   auto sort_share = [&](unsigned t) {
-    for (const std::size_t r : share[t]) hilbert_sort(points, key, ids + first[r], first[r + 1] - first[r]);
+    for (const std::size_t r : share[t]) sort(r);
   };
   std::vector<std::jthread> pool;
   for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_share, t);
   sort_share(0);
 }
 
+}  // namespace
+
+void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
+                  std::uint32_t count) {
+  const std::vector<std::uint64_t> pairs = sorted_pairs(key, ids, count);
+  refine(points, pairs.data(), count, ids);
+}
+
+void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
+                 const std::vector<std::uint32_t>& first, unsigned threads) {
+  share_rounds(first, threads, [&](std::size_t r) {
+    hilbert_sort(points, key, ids + first[r], first[r + 1] - first[r]);
+  });
+}
+
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
                                       unsigned threads, std::vector<std::uint32_t>* keys) {
-  std::vector<std::uint32_t> order = random_permutation(n, seed);
-  std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
+  // The permutation, a chain of random swaps, on a thread of its own beside the keys.
+  std::vector<std::uint32_t> order, key;
+  if (threads > 1 && n >= 65536) {
+    std::jthread shuffle([&] { order = random_permutation(n, seed); });
+    key = hilbert_keys(points, n, threads - 1);
+  } else {
+    order = random_permutation(n, seed);
+    key = hilbert_keys(points, n, threads);
+  }
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
-  sort_rounds(points, key.data(), order.data(), first, threads);
-  if (keys != nullptr) *keys = std::move(key);
+  if (keys != nullptr) keys->resize(n);
+  share_rounds(first, threads, [&](std::size_t r) {
+    const std::uint32_t b = first[r], count = first[r + 1] - b;
+    const std::vector<std::uint64_t> pairs = sorted_pairs(key.data(), order.data() + b, count);
+    refine(points, pairs.data(), count, order.data() + b, keys != nullptr ? keys->data() + b : nullptr);
+  });
   return order;
 }
 

@@ -40,9 +40,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-// Regions are numbered 0 .. threads - 1; the bounding vertices are in none.
-using Region = std::uint16_t;
-constexpr Region kNoRegion = 0xffff;
+// A thread's region: the vertices whose keys lie in [lo, lo + len) round the circle of 32-bit
+// keys (the regions of a pass tile the circle); the bounding vertices are in none.
+struct Range {
+  std::uint32_t lo = 0;
+  std::uint64_t len = 0;  // up to 2^32: the whole circle
+  bool holds(std::uint32_t key) const { return static_cast<std::uint32_t>(key - lo) < len; }
+};
 // A round is cut among the threads when each thread gets at least this many points.
 constexpr VertexId kMinStretch = 1024;
 // Tries to find a thread's first triangle among its first points before the pass.
@@ -52,8 +56,7 @@ class Partition {
  public:
   Partition(Mesh& mesh, const std::uint32_t* key, unsigned threads, std::vector<DuplicateHit>& duplicates,
             Stats& stats, Progress& progress)
-      : mesh_(mesh), key_(key), threads_(threads), region_(mesh.vertices().n() + 3, kNoRegion),
-        workers_(threads), duplicates_(duplicates), stats_(stats), progress_(progress) {}
+      : mesh_(mesh), key_(key), n_(mesh.vertices().n()), threads_(threads), workers_(threads), duplicates_(duplicates), stats_(stats), progress_(progress) {}
 
   void run() {
     const VertexId n = mesh_.vertices().n();
@@ -78,20 +81,22 @@ class Partition {
     std::vector<VertexId> todo, deferred;
     SlotPool pool;
     TriangleId last = 0;
+    Range range;            // its region
     TriangleId start = 0;   // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
   };
 
-  // The thread of vertex v's region.
-  bool owns(Region r, TriangleId t) const {
-    return region_[mesh_.vertex(t, 0)] == r && region_[mesh_.vertex(t, 1)] == r &&
-           region_[mesh_.vertex(t, 2)] == r;
+  // Whether triangle t has all three vertices in region r (tested together, without a branch
+  // between them: the answers are hard to predict).
+  bool owns(const Range& r, TriangleId t) const {
+    const VertexId a = mesh_.vertex(t, 0), b = mesh_.vertex(t, 1), c = mesh_.vertex(t, 2);
+    return (std::max(a, std::max(b, c)) < n_) & r.holds(key_[a]) & r.holds(key_[b]) & r.holds(key_[c]);
   }
 
   // Whether region r's triangles reachable from t through the region number some dozens: a
   // thread that starts in a small pocket of its region cut off by the border would put off
   // every point.
-  bool deep_in(Region r, TriangleId t) {
+  bool deep_in(const Range& r, TriangleId t) {
     if (!owns(r, t)) return false;
     constexpr std::size_t kEnough = 48;
     std::vector<TriangleId>& seen = seen_;
@@ -121,7 +126,7 @@ class Partition {
     std::vector<std::uint32_t> from(threads_);  // the smallest key of each region
     from[0] = 0;
     for (unsigned i = 1; i < threads_; ++i) from[i] = cut[i] < e ? key_[cut[i]] : 0xffffffffu;
-    assign_regions(e, from);
+    set_regions(from);
     for (unsigned i = 0; i < threads_; ++i) {
       Worker& w = workers_[i];
       w.todo.clear();
@@ -135,9 +140,13 @@ class Partition {
     if (left.size() >= 64 * threads_) {
       for (unsigned i = 0; i < threads_; ++i)  // an empty stretch at the end has its cut at e
         from[i] = key_[std::min(cut[i] + (cut[i + 1] - cut[i]) / 2, e - 1)];
-      assign_regions(e, from, /*wrap=*/true);
+      set_regions(from);
       for (Worker& w : workers_) w.todo.clear();
-      for (const VertexId p : left) workers_[region_[p]].todo.push_back(p);
+      for (const VertexId p : left) {
+        // The last region whose first key is at most p's, or the last of all (which wraps round).
+        const auto above = std::upper_bound(from.begin(), from.end(), key_[p]) - from.begin();
+        workers_[above > 0 ? above - 1 : threads_ - 1].todo.push_back(p);
+      }
       run_pass();
       left.clear();
       for (Worker& w : workers_) left.insert(left.end(), w.deferred.begin(), w.deferred.end());
@@ -145,22 +154,14 @@ class Partition {
     insert_alone(left);
   }
 
-  // Every vertex below `end` gets the region whose key range holds its key: region i from
-  // from[i] up to from[i + 1]; the last region up to the end of the keys, or with `wrap` on
-  // round to from[0].
-  void assign_regions(VertexId end, const std::vector<std::uint32_t>& from, bool wrap = false) {
-    const unsigned parts = std::max(1u, std::min<unsigned>(threads_, end / 65536));
-    auto part = [&](unsigned t) {
-      const VertexId first = static_cast<VertexId>(std::uint64_t{end} * t / parts);
-      const VertexId last = static_cast<VertexId>(std::uint64_t{end} * (t + 1) / parts);
-      for (VertexId v = first; v < last; ++v) {
-        const auto above = std::upper_bound(from.begin(), from.end(), key_[v]) - from.begin();
-        region_[v] = static_cast<Region>(above > 0 ? above - 1 : (wrap ? threads_ - 1 : 0));
-      }
-    };
-    std::vector<std::jthread> pool;
-    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(part, t);
-    part(0);
+  // Region i from key from[i] up to from[i + 1]; the last one from from[threads - 1] round the
+  // circle to from[0] (the end of the keys when from[0] is 0). `from` never decreases.
+  void set_regions(const std::vector<std::uint32_t>& from) {
+    for (unsigned i = 0; i < threads_; ++i) {
+      Range& r = workers_[i].range;
+      r.lo = from[i];
+      r.len = i + 1 < threads_ ? std::uint64_t{from[i + 1]} - from[i] : (std::uint64_t{1} << 32) - (from[i] - from[0]);
+    }
   }
 
   // Each thread inserts its `todo` list into its region, putting off what it cannot.
@@ -176,7 +177,7 @@ class Partition {
       for (std::size_t k = 0; k < std::min(w.todo.size(), kStartTries); ++k) {
         const std::size_t c = (w.todo.size() / 2 + k) % w.todo.size();
         last_ = mesh_.walk(last_, w.todo[c]);
-        if (deep_in(static_cast<Region>(i), last_)) {
+        if (deep_in(w.range, last_)) {
           w.start = last_;
           w.split = c;
           break;
@@ -236,7 +237,7 @@ class Partition {
   void insert_owned(unsigned i, std::atomic<bool>& stop, std::atomic<std::uint64_t>& inserted,
                     std::uint64_t before) {
     Worker& w = workers_[i];
-    const auto r = static_cast<Region>(i);
+    const Range r = w.range;
     auto mine = [&](TriangleId t) { return owns(r, t); };
     std::uint64_t done = 0;  // inserted or found equal to a vertex, not yet counted in `inserted`
     // From todo[split] to the end, then from the start again back to todo[0].
@@ -251,7 +252,7 @@ class Partition {
       }
       // A point put off leaves the next walk to start where this one stopped, in the region
       // and nearer the points to come than the last insertion.
-      if (region_[p] != r || !mesh_.walk(w.last, p, mine)) {
+      if (!r.holds(key_[p]) || !mesh_.walk(w.last, p, mine)) {
         w.deferred.push_back(p);
         ++w.stats.retries;
         continue;
@@ -301,9 +302,9 @@ class Partition {
   }
 
   Mesh& mesh_;
-  const std::uint32_t* key_;
+  const std::uint32_t* key_;  // n + 3: the bounding vertices' are never read as keys
+  VertexId n_;
   unsigned threads_;
-  std::vector<Region> region_;
   std::vector<Worker> workers_;
   std::vector<Clock::time_point> pass_end_ = std::vector<Clock::time_point>(threads_);
   std::vector<TriangleId> free_;  // free slots below the top

@@ -174,6 +174,7 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
   if (options.method == Method::Partition) {
+    keys.resize(std::size_t{n} + 3);  // within the room reserved for it
     detail::insert_partition(mesh, keys.data(), plan.threads, duplicates, stats, progress);
   } else {
     detail::insert_walking(mesh, options.experiment.profile, duplicates, stats, progress);
@@ -190,15 +191,9 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const 
                                            std::vector<std::uint32_t>& keys) {
   const auto n = static_cast<std::uint32_t>(points.size());
   if (!p.brio) return detail::random_permutation(n, options.seed);
+  if (options.method == Method::Partition) keys.reserve(std::size_t{n} + 3);  // the bounding vertices' too
   std::vector<std::uint32_t> order =
       detail::brio_order(points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr);
-  if (!keys.empty()) {
-    std::vector<std::uint32_t> by_vertex(n);
-    detail::parallel_for(n, p.threads, 65536, [&](std::size_t first, std::size_t last) {
-      for (std::size_t v = first; v < last; ++v) by_vertex[v] = keys[order[v]];
-    });
-    keys = std::move(by_vertex);
-  }
 #ifdef __GLIBC__
   // The sort's buffers, freed, may stay with the allocator (glibc keeps freed blocks below
   // its mmap threshold, which a first large block raises): given back now, they do not add

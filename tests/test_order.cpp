@@ -84,6 +84,38 @@ TEST(HilbertOrder, SortsByKeyAndKeepsEveryIndex) {
   EXPECT_LT(sum / 4999, 0.05);
 }
 
+// The BRIO order: a permutation whose rounds are sorted along the curve, the keys handed back
+// in the order's terms, and the same order from any number of threads (the permutation runs
+// beside the keys on more than one).
+TEST(BrioOrder, RoundsAlongTheCurveAndTheSameForAnyThreads) {
+  const std::uint32_t n = 200000;
+  const std::vector<Point> pts = generate(Distribution::Uniform, n, 9);
+  std::vector<std::uint32_t> keys;
+  const std::vector<std::uint32_t> order = brio_order(pts.data(), n, 5, 1, &keys);
+  ASSERT_EQ(order.size(), n);
+  ASSERT_EQ(keys.size(), n);
+  std::vector<std::uint32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(sorted[i], i);
+  const std::vector<std::uint32_t> key = hilbert_keys(pts.data(), n);
+  for (std::uint32_t v = 0; v < n; ++v) ASSERT_EQ(keys[v], key[order[v]]) << v;
+  std::uint32_t rounds = 0;
+  for (std::uint32_t b = 0; b < n; b = round_end(b), ++rounds) {
+    const std::uint32_t e = std::min(round_end(b), n);
+    for (std::uint32_t v = b + 1; v < e; ++v) ASSERT_LE(keys[v - 1], keys[v]) << v;
+    // A random sample: about as many points of each round from either half of the input.
+    const auto low = std::count_if(order.begin() + b, order.begin() + e, [&](std::uint32_t i) { return i < n / 2; });
+    EXPECT_NEAR(static_cast<double>(low) / (e - b), 0.5, 0.1) << b;
+  }
+  EXPECT_GT(rounds, 5u);
+  for (unsigned threads : {2u, 3u}) {
+    std::vector<std::uint32_t> k;
+    EXPECT_EQ(brio_order(pts.data(), n, 5, threads, &k), order) << threads;
+    EXPECT_EQ(k, keys) << threads;
+  }
+  EXPECT_NE(brio_order(pts.data(), n, 6, 2), order);
+}
+
 // A box as wide as the doubles go, and a box of no width: still a permutation (and, under
 // UBSan, no overflowing conversion to an integer cell).
 TEST(HilbertOrder, SurvivesExtremeAndDegenerateBoxes) {
