@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <thread>
 #include <utility>
 
+#include "parallel.hpp"
 #include "random.hpp"
 
 namespace ridt::detail {
@@ -116,14 +118,10 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
 
 namespace {
 
-// ids[0 .. count) sorted by key[id], stably, as (key << 32 | id) pairs: a radix sort.
-std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uint32_t* ids,
-                                        std::uint32_t count) {
-  // Each id travels with its key, packed in 64 bits, so every pass reads its input in order
-  // (looking the key up through the id would read the key array at random, twice a pass).
-  // Least significant digit first, 11 bits a pass: three stable counting passes on the key.
-  std::vector<std::uint64_t> a(count), b(count);
-  for (std::uint32_t i = 0; i < count; ++i) a[i] = std::uint64_t{key[ids[i]]} << 32 | ids[i];
+// Sorts the (key << 32 | id) pairs a[0 .. count) by key, stably, into b (as long; a is
+// overwritten): a radix sort, least significant digit first, 11 bits a pass, three stable
+// counting passes. Each id travels with its key, so every pass reads its input in order.
+void sort_by_key(std::uint64_t* a, std::uint64_t* b, std::uint32_t count) {
   constexpr int kBits = 11;
   constexpr std::uint64_t kMask = (1u << kBits) - 1;
   std::vector<std::uint32_t> at(std::size_t{1} << kBits);
@@ -133,9 +131,70 @@ std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uin
     std::uint32_t sum = 0;
     for (std::uint32_t& c : at) sum += std::exchange(c, sum);
     for (std::uint32_t i = 0; i < count; ++i) b[at[(a[i] >> shift) & kMask]++] = a[i];
-    a.swap(b);
+    std::swap(a, b);  // three passes: the last one wrote the caller's b
   }
-  return a;
+}
+
+// ids[0 .. count) sorted by key[id], stably, as pairs.
+std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uint32_t* ids,
+                                        std::uint32_t count) {
+  std::vector<std::uint64_t> a(count), b(count);
+  for (std::uint32_t i = 0; i < count; ++i) a[i] = std::uint64_t{key[ids[i]]} << 32 | ids[i];
+  sort_by_key(a.data(), b.data(), count);
+  return b;
+}
+
+// The pairs (key[i] << 32 | i) of all n points in a uniformly random order from `seed`: each
+// pair goes to one of 2^bits bins at random, and each bin is then shuffled on its own (Rao and
+// Sandelius): a bin fits in the cache, where one shuffle of the whole array misses it at
+// nearly every swap once the array outgrows it (at 10^7 points that shuffle took 180 ms, and
+// reading the keys through the permutation some 200 more). Pair i's bin depends on (seed, i)
+// alone and a bin's shuffle on (seed, bin) alone: the same order on any number of threads.
+std::vector<std::uint64_t> shuffled_pairs(const std::uint32_t* key, std::uint32_t n, std::uint64_t seed,
+                                          unsigned threads) {
+  constexpr std::uint32_t kBinPoints = 1u << 15;  // 256 KiB of pairs
+  int bits = 0;
+  while ((std::uint64_t{n} >> bits) > kBinPoints) ++bits;
+  const std::size_t bins = std::size_t{1} << bits;
+  const Rng draw(seed, /*stream=*/1);
+  auto bin_of = [&](std::uint32_t i) {
+    return bits == 0 ? std::size_t{0} : static_cast<std::size_t>(draw.at(std::uint64_t{i} + 1) >> (64 - bits));
+  };
+  // Each part of the points counts its pairs a bin, then puts them in place: bin by bin, and
+  // within a bin part by part, so the pairs of a bin come in input order whatever the parts.
+  const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
+  auto part_of = [&](unsigned t) {
+    return std::pair<std::uint32_t, std::uint32_t>(static_cast<std::uint32_t>(std::uint64_t{n} * t / parts),
+                                                   static_cast<std::uint32_t>(std::uint64_t{n} * (t + 1) / parts));
+  };
+  std::vector<std::uint32_t> at(parts * bins, 0u);  // at[t * bins + bin]
+  on_threads(parts, [&](unsigned t) {
+    const auto [begin, end] = part_of(t);
+    for (std::uint32_t i = begin; i < end; ++i) ++at[t * bins + bin_of(i)];
+  });
+  std::vector<std::uint32_t> bin_start(bins + 1);
+  std::uint32_t sum = 0;
+  for (std::size_t b = 0; b < bins; ++b) {
+    bin_start[b] = sum;
+    for (unsigned t = 0; t < parts; ++t) sum += std::exchange(at[t * bins + b], sum);
+  }
+  bin_start[bins] = n;
+  std::vector<std::uint64_t> pairs(n);
+  on_threads(parts, [&](unsigned t) {
+    const auto [begin, end] = part_of(t);
+    for (std::uint32_t i = begin; i < end; ++i) pairs[at[t * bins + bin_of(i)]++] = std::uint64_t{key[i]} << 32 | i;
+  });
+  // Fisher-Yates in each bin, the bins shared among the threads.
+  std::atomic<std::size_t> next{0};
+  on_threads(static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), bins)), [&](unsigned) {
+    // relaxed: the counter only hands out each bin once; the joins order the rest.
+    for (std::size_t b; (b = next.fetch_add(1, std::memory_order_relaxed)) < bins;) {
+      Rng rng(seed, (std::uint64_t{1} << 32) | b);
+      std::uint64_t* bin = pairs.data() + bin_start[b];
+      for (std::uint32_t i = bin_start[b + 1] - bin_start[b]; i > 1; --i) std::swap(bin[i - 1], bin[rng.below(i)]);
+    }
+  });
+  return pairs;
 }
 
 // A cell of the curve may hold at most this many points before it is sorted on its own.
@@ -208,23 +267,21 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
 
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
                                       unsigned threads, std::vector<std::uint32_t>* keys) {
-  // The permutation, a chain of random swaps, on a thread of its own beside the keys.
-  std::vector<std::uint32_t> order, key;
-  if (threads > 1 && n >= 65536) {
-    std::jthread shuffle([&] { order = random_permutation(n, seed); });
-    key = hilbert_keys(points, n, threads - 1);
-  } else {
-    order = random_permutation(n, seed);
-    key = hilbert_keys(points, n, threads);
+  std::vector<std::uint64_t> pairs;  // (key, index) in random order: cut into rounds below
+  {
+    const std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
+    pairs = shuffled_pairs(key.data(), n, seed, threads);
   }
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
+  std::vector<std::uint32_t> order(n);
   if (keys != nullptr) keys->resize(n);
   share_rounds(first, threads, [&](std::size_t r) {
     const std::uint32_t b = first[r], count = first[r + 1] - b;
-    const std::vector<std::uint64_t> pairs = sorted_pairs(key.data(), order.data() + b, count);
-    refine(points, pairs.data(), count, order.data() + b, keys != nullptr ? keys->data() + b : nullptr);
+    std::vector<std::uint64_t> sorted(count);
+    sort_by_key(pairs.data() + b, sorted.data(), count);
+    refine(points, sorted.data(), count, order.data() + b, keys != nullptr ? keys->data() + b : nullptr);
   });
   return order;
 }

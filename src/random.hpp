@@ -21,9 +21,13 @@ class Rng {
       : state_(mix64(seed ^ mix64(stream + 0x632be59bd9b4e019ULL))) {}
 
   std::uint64_t next() {
-    state_ += 0x9e3779b97f4a7c15ULL;  // 2^64 / golden ratio: the SplitMix64 increment
+    state_ += kStep;
     return mix64(state_);
   }
+
+  /// The k-th value from here (k = 1: what next() gives), without stepping: for threads that
+  /// each take their part of one stream.
+  std::uint64_t at(std::uint64_t k) const { return mix64(state_ + k * kStep); }
 
   /// Uniform in [0, bound), without modulo bias (Lemire, "Fast random integer generation in
   /// an interval", 2019).
@@ -44,6 +48,7 @@ class Rng {
   double uniform() { return static_cast<double>(next() >> 11) * 0x1p-53; }
 
  private:
+  static constexpr std::uint64_t kStep = 0x9e3779b97f4a7c15ULL;  // 2^64 / golden ratio: SplitMix64's increment
   std::uint64_t state_;
 };
 
