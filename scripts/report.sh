@@ -49,11 +49,11 @@ else
   threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
   paper_args=(--n 1000,10000,100000,1000000 --dist uniform --reps 5 --threads 1,2)
   peers_args=(--sizes 10000,100000,1000000 --reps 5)
-  process_args=(--sizes 1000000 --reps 5)
+  process_args=(--sizes 1000000 --reps 9)
   python_args=(--sizes 10000,100000,1000000 --big "" --reps 3)
   interpolate_args=(--n 1000000 --grid 2000 --reps 3)
   if [ "$mode" = large ]; then
-    process_args=(--sizes 1000000,10000000 --reps 5)
+    process_args=(--sizes 1000000,10000000 --reps 9)
     python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
   fi
 fi
