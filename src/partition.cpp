@@ -56,7 +56,8 @@ class Partition {
  public:
   Partition(Mesh& mesh, const std::uint32_t* key, unsigned threads, std::vector<DuplicateHit>& duplicates,
             Stats& stats, Progress& progress)
-      : mesh_(mesh), key_(key), n_(mesh.vertices().n()), threads_(threads), workers_(threads), duplicates_(duplicates), stats_(stats), progress_(progress) {}
+      : mesh_(mesh), key_(key), n_(mesh.vertices().n()), threads_(threads), workers_(threads),
+        duplicates_(duplicates), stats_(stats), progress_(progress) {}
 
   void run() {
     const VertexId n = mesh_.vertices().n();
