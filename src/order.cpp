@@ -144,14 +144,20 @@ std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uin
   return b;
 }
 
-// The pairs (key[i] << 32 | i) of all n points in a uniformly random order from `seed`: each
-// pair goes to one of 2^bits bins at random, and each bin is then shuffled on its own (Rao and
-// Sandelius): a bin fits in the cache, where one shuffle of the whole array misses it at
-// nearly every swap once the array outgrows it (at 10^7 points that shuffle took 180 ms, and
-// reading the keys through the permutation some 200 more). Pair i's bin depends on (seed, i)
-// alone and a bin's shuffle on (seed, bin) alone: the same order on any number of threads.
+// The pairs (key[i] << 32 | i) of all n points cut into the rounds [first[r], first[r + 1]),
+// each round a uniformly random sample from `seed`, as the rounds of a uniformly random
+// permutation would be: each pair goes to one of 2^bits bins at random, the bins follow one
+// another, and a bin is then shuffled on its own (Rao and Sandelius), where a bin fits in the
+// cache; one shuffle of the whole array misses it at nearly every swap once the array outgrows
+// it (at 10^7 points that shuffle took 180 ms, and reading the keys through the permutation
+// some 200 more). Which round a pair lands in is all that matters, since each round is sorted
+// by key after: a bin that lies within one round is left in input order, and one that a
+// round's start cuts is shuffled only as far as its last cut (the first m of a forward
+// Fisher-Yates are a uniform sample in uniform order). At 10^6 points that shuffles some 3 of
+// 32 bins' worth of pairs, not all 32. Pair i's bin depends on (seed, i) alone and a bin's
+// shuffle on (seed, bin) alone: the same order on any number of threads.
 std::vector<std::uint64_t> shuffled_pairs(const std::uint32_t* key, std::uint32_t n, std::uint64_t seed,
-                                          unsigned threads) {
+                                          const std::vector<std::uint32_t>& first, unsigned threads) {
   constexpr std::uint32_t kBinPoints = 1u << 15;  // 256 KiB of pairs
   int bits = 0;
   while ((std::uint64_t{n} >> bits) > kBinPoints) ++bits;
@@ -184,14 +190,25 @@ std::vector<std::uint64_t> shuffled_pairs(const std::uint32_t* key, std::uint32_
     const auto [begin, end] = part_of(t);
     for (std::uint32_t i = begin; i < end; ++i) pairs[at[t * bins + bin_of(i)]++] = std::uint64_t{key[i]} << 32 | i;
   });
-  // Fisher-Yates in each bin, the bins shared among the threads.
+  // In each bin, Fisher-Yates as far as the last round start inside it (the bins that have
+  // one shared among the threads).
+  std::vector<std::pair<std::size_t, std::uint32_t>> cut;  // (bin, pairs to draw)
+  for (std::size_t b = 0, r = 0; b < bins; ++b) {
+    while (r < first.size() && first[r] <= bin_start[b]) ++r;
+    std::uint32_t last = 0;
+    for (std::size_t k = r; k < first.size() && first[k] < bin_start[b + 1]; ++k) last = first[k];
+    if (last > bin_start[b]) cut.emplace_back(b, last - bin_start[b]);
+  }
   std::atomic<std::size_t> next{0};
-  on_threads(static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), bins)), [&](unsigned) {
+  on_threads(static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), std::max<std::size_t>(cut.size(), 1))),
+             [&](unsigned) {
     // relaxed: the counter only hands out each bin once; the joins order the rest.
-    for (std::size_t b; (b = next.fetch_add(1, std::memory_order_relaxed)) < bins;) {
+    for (std::size_t c; (c = next.fetch_add(1, std::memory_order_relaxed)) < cut.size();) {
+      const auto [b, draws] = cut[c];
       Rng rng(seed, (std::uint64_t{1} << 32) | b);
       std::uint64_t* bin = pairs.data() + bin_start[b];
-      for (std::uint32_t i = bin_start[b + 1] - bin_start[b]; i > 1; --i) std::swap(bin[i - 1], bin[rng.below(i)]);
+      const std::uint32_t size = bin_start[b + 1] - bin_start[b];
+      for (std::uint32_t i = 0; i < draws && i + 1 < size; ++i) std::swap(bin[i], bin[i + rng.below(size - i)]);
     }
   });
   return pairs;
@@ -267,14 +284,14 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
 
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
                                       unsigned threads, std::vector<std::uint32_t>* keys) {
-  std::vector<std::uint64_t> pairs;  // (key, index) in random order: cut into rounds below
-  {
-    const std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
-    pairs = shuffled_pairs(key.data(), n, seed, threads);
-  }
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
+  std::vector<std::uint64_t> pairs;  // (key, index), each round a random sample
+  {
+    const std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
+    pairs = shuffled_pairs(key.data(), n, seed, first, threads);
+  }
   std::vector<std::uint32_t> order(n);
   if (keys != nullptr) keys->resize(n);
   share_rounds(first, threads, [&](std::size_t r) {
