@@ -150,8 +150,8 @@ class KeptSlots {
     count_ = static_cast<TriangleId>(std::accumulate(kept_in.begin(), kept_in.end(), std::uint64_t{0}));
     for (TriangleId t = 0; t < count_; ++t)
       if (!kept(t)) gaps_.push_back(t);
-    for (TriangleId t = count_; t < slots; ++t)
-      if (kept(t)) movers_.push_back(t);
+    dropped_ = gaps_;
+    for (TriangleId t = count_; t < slots; ++t) (kept(t) ? movers_ : dropped_).push_back(t);
   }
 
   TriangleId count() const { return count_; }
@@ -168,6 +168,8 @@ class KeptSlots {
   }
   const std::vector<TriangleId>& gaps() const { return gaps_; }
   const std::vector<TriangleId>& movers() const { return movers_; }
+  /// The slots that are not kept (as many as there are bounding triangles and free slots).
+  const std::vector<TriangleId>& dropped() const { return dropped_; }
   // Worker w's part of [0, total).
   std::pair<std::size_t, std::size_t> share(unsigned w, std::size_t total) const {
     return {total * w / workers_, total * (w + 1) / workers_};
@@ -178,8 +180,18 @@ class KeptSlots {
   unsigned workers_;
   std::vector<std::uint64_t> bits_;
   TriangleId count_ = 0;
-  std::vector<TriangleId> gaps_, movers_;
+  std::vector<TriangleId> gaps_, movers_, dropped_;
 };
+
+// Unlinks the kept triangles from the dropped ones: a kept triangle's edge that a dropped one
+// shares becomes a hull edge (kNoLink), so the conversion needs no test of a neighbour's slot.
+// Free slots link nowhere.
+void unlink_dropped(Mesh& mesh, const KeptSlots& kept) {
+  Link* link = mesh.link_array().data();
+  for (const TriangleId u : kept.dropped())
+    for (int j = 0; j < 3; ++j)
+      if (const Link l = link[3 * std::size_t{u} + j]; l != kNoLink) link[l] = kNoLink;
+}
 
 // Rewrites a kept slot in output terms, in place or into its gap: input indices for the
 // vertices, the neighbours' new ids (-1 across the hull); collects the hull's edges. Each
@@ -202,7 +214,7 @@ class Converter {
       const VertexId u = v_[3 * std::size_t{t} + i];
       w[i] = plain_ ? index_[u] : (*standing_)(u);
       const Link l = link_[3 * std::size_t{t} + i];
-      nb[i] = l != kNoLink && kept(triangle_of(l)) ? new_id(triangle_of(l)) : kNoNeighbor;
+      nb[i] = l != kNoLink ? new_id(triangle_of(l)) : kNoNeighbor;  // a dropped one is unlinked
     }
     for (int i = 0; i < 3; ++i) {
       v_[3 * std::size_t{to} + i] = w[i], link_[3 * std::size_t{to} + i] = static_cast<Link>(nb[i]);
@@ -267,6 +279,7 @@ Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input
   const std::uint32_t n = mesh.vertices().n();
   const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
   const KeptSlots kept(mesh.vertex_array().data(), n, mesh.slots(), threads);
+  unlink_dropped(mesh, kept);
   std::vector<std::pair<VertexId, VertexId>> hull_edges = convert_in_place(mesh, kept, standing);
   mesh.vertex_array().resize(3 * std::size_t{kept.count()});
   mesh.link_array().resize(3 * std::size_t{kept.count()});
