@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -77,11 +78,31 @@ struct alignas(64) CavityScratch {
   }
 };
 
+/// The walking mesh's two arrays, made before the mesh: room for the 2n + 1 slots of n points,
+/// their pages made present by up to `threads` threads. Until the mesh takes them their memory
+/// may serve other work (scratch()): pages already present cost nothing more, where fresh ones
+/// are faulted in and zeroed one by one, which on a virtual machine can cost several times
+/// the work done in them.
+struct MeshArrays {
+  std::vector<VertexId> v;
+  std::vector<Link> link;
+
+  MeshArrays(std::uint64_t n, unsigned threads);
+  /// The vertex array's memory as 3n + 1 words, and the link array's as 6n + 3 unsigned
+  /// numbers, for work done before the mesh is made; what is written there is lost.
+  std::span<std::uint64_t> words();
+  std::span<std::uint32_t> numbers() {
+    // An unsigned view of signed numbers is an allowed alias.
+    return {reinterpret_cast<std::uint32_t*>(link.data()), link.size()};
+  }
+};
+
 class Mesh {
  public:
-  /// The mesh of the bounding triangle alone, with room for n points; its memory made ready
-  /// by up to `threads` threads.
-  explicit Mesh(const Vertices& vertices, unsigned threads = 1);
+  /// The mesh of the bounding triangle alone in `arrays` (made for vertices.n() points).
+  Mesh(const Vertices& vertices, MeshArrays arrays);
+  /// The same in arrays made here by up to `threads` threads.
+  explicit Mesh(const Vertices& vertices, unsigned threads = 1) : Mesh(vertices, MeshArrays(vertices.n(), threads)) {}
   Mesh(const Mesh&) = delete;
   Mesh& operator=(const Mesh&) = delete;
 

@@ -76,7 +76,12 @@ std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y) {
 
 std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, unsigned threads) {
   std::vector<std::uint32_t> key(n);
-  if (n == 0) return key;
+  hilbert_keys(points, n, threads, key.data());
+  return key;
+}
+
+void hilbert_keys(const Point* points, std::uint32_t n, unsigned threads, std::uint32_t* key) {
+  if (n == 0) return;
   double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
   for (std::uint32_t i = 1; i < n; ++i) {
     x0 = std::min(x0, points[i].x), x1 = std::max(x1, points[i].x);
@@ -85,7 +90,10 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
   // Halving first keeps x1 - x0 finite for coordinates near the largest double; the offsets
   // below are halved the same way, so they run from 0 to `extent`.
   const double extent = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
-  if (!(extent > 0)) return key;  // all points equal: every key 0
+  if (!(extent > 0)) {  // all points equal: every key 0
+    std::fill_n(key, n, 0u);
+    return;
+  }
   // Cells of 1/65535 of the longer side. When the extent is so small (subnormal) that this
   // scale overflows, divide by the extent instead of multiplying by the scale.
   const double scale = 65535.0 / extent;
@@ -113,7 +121,6 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
     for (unsigned t = 1; t < parts; ++t) pool.emplace_back(part, t, parts);
     part(0, parts);
   }
-  return key;
 }
 
 namespace {
@@ -156,8 +163,8 @@ std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uin
 // Fisher-Yates are a uniform sample in uniform order). At 10^6 points that shuffles some 3 of
 // 32 bins' worth of pairs, not all 32. Pair i's bin depends on (seed, i) alone and a bin's
 // shuffle on (seed, bin) alone: the same order on any number of threads.
-std::vector<std::uint64_t> shuffled_pairs(const std::uint32_t* key, std::uint32_t n, std::uint64_t seed,
-                                          const std::vector<std::uint32_t>& first, unsigned threads) {
+void shuffled_pairs(const std::uint32_t* key, std::uint32_t n, std::uint64_t seed, const std::vector<std::uint32_t>& first,
+                    unsigned threads, std::uint64_t* pairs) {
   constexpr std::uint32_t kBinPoints = 1u << 15;  // 256 KiB of pairs
   int bits = 0;
   while ((std::uint64_t{n} >> bits) > kBinPoints) ++bits;
@@ -185,7 +192,6 @@ std::vector<std::uint64_t> shuffled_pairs(const std::uint32_t* key, std::uint32_
     for (unsigned t = 0; t < parts; ++t) sum += std::exchange(at[t * bins + b], sum);
   }
   bin_start[bins] = n;
-  std::vector<std::uint64_t> pairs(n);
   on_threads(parts, [&](unsigned t) {
     const auto [begin, end] = part_of(t);
     for (std::uint32_t i = begin; i < end; ++i) pairs[at[t * bins + bin_of(i)]++] = std::uint64_t{key[i]} << 32 | i;
@@ -206,12 +212,11 @@ std::vector<std::uint64_t> shuffled_pairs(const std::uint32_t* key, std::uint32_
     for (std::size_t c; (c = next.fetch_add(1, std::memory_order_relaxed)) < cut.size();) {
       const auto [b, draws] = cut[c];
       Rng rng(seed, (std::uint64_t{1} << 32) | b);
-      std::uint64_t* bin = pairs.data() + bin_start[b];
+      std::uint64_t* bin = pairs + bin_start[b];
       const std::uint32_t size = bin_start[b + 1] - bin_start[b];
       for (std::uint32_t i = 0; i < draws && i + 1 < size; ++i) std::swap(bin[i], bin[i + rng.below(size - i)]);
     }
   });
-  return pairs;
 }
 
 // A cell of the curve may hold at most this many points before it is sorted on its own.
@@ -283,22 +288,26 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
 }
 
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
-                                      unsigned threads, std::vector<std::uint32_t>* keys) {
+                                      unsigned threads, std::vector<std::uint32_t>* keys, OrderScratch scratch) {
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
-  std::vector<std::uint64_t> pairs;  // (key, index), each round a random sample
-  {
-    const std::vector<std::uint32_t> key = hilbert_keys(points, n, threads);
-    pairs = shuffled_pairs(key.data(), n, seed, first, threads);
-  }
+  // The (key, index) pairs, each round a random sample, in words [0, n); each round's sorted
+  // pairs in words [n, 2n); the Hilbert keys in numbers [0, n).
+  std::vector<std::uint64_t> own_words;
+  std::vector<std::uint32_t> own_numbers;
+  if (scratch.words.size() < 2 * std::size_t{n}) own_words.resize(2 * std::size_t{n}), scratch.words = own_words;
+  if (scratch.numbers.size() < n) own_numbers.resize(n), scratch.numbers = own_numbers;
+  std::uint64_t* pairs = scratch.words.data();
+  std::uint64_t* sorted = pairs + n;
+  hilbert_keys(points, n, threads, scratch.numbers.data());
+  shuffled_pairs(scratch.numbers.data(), n, seed, first, threads, pairs);
   std::vector<std::uint32_t> order(n);
   if (keys != nullptr) keys->resize(n);
   share_rounds(first, threads, [&](std::size_t r) {
     const std::uint32_t b = first[r], count = first[r + 1] - b;
-    std::vector<std::uint64_t> sorted(count);
-    sort_by_key(pairs.data() + b, sorted.data(), count);
-    refine(points, sorted.data(), count, order.data() + b, keys != nullptr ? keys->data() + b : nullptr);
+    sort_by_key(pairs + b, sorted + b, count);
+    refine(points, sorted + b, count, order.data() + b, keys != nullptr ? keys->data() + b : nullptr);
   });
   return order;
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -167,9 +168,9 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
 // The walking kernel: the serial method, or the partition method's threads (`keys`: each
 // vertex's Hilbert key, in insertion order).
 Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
-                          std::vector<std::uint32_t> keys, const Plan& plan, const Options& options,
-                          Stats& stats) {
-  detail::Mesh mesh(detail::Vertices(pts.get(), n, plan.symbolic), plan.threads);
+                          std::vector<std::uint32_t> keys, detail::MeshArrays arrays, const Plan& plan,
+                          const Options& options, Stats& stats) {
+  detail::Mesh mesh(detail::Vertices(pts.get(), n, plan.symbolic), std::move(arrays));
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
@@ -186,14 +187,17 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
 }
 
 // The insertion order (vertex v is input point order[v]) and, for the partition method, each
-// vertex's Hilbert key in that order.
+// vertex's Hilbert key in that order. `mesh`, when given, is the walking mesh's memory, made
+// before the order so that the order's work needs no fresh pages.
 std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const Plan& p, const Options& options,
-                                           std::vector<std::uint32_t>& keys) {
+                                           std::vector<std::uint32_t>& keys, detail::MeshArrays* mesh) {
   const auto n = static_cast<std::uint32_t>(points.size());
   if (!p.brio) return detail::random_permutation(n, options.seed);
   if (options.method == Method::Partition) keys.reserve(std::size_t{n} + 3);  // the bounding vertices' too
-  std::vector<std::uint32_t> order =
-      detail::brio_order(points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr);
+  detail::OrderScratch scratch;
+  if (mesh != nullptr) scratch = {mesh->words(), mesh->numbers()};
+  std::vector<std::uint32_t> order = detail::brio_order(
+      points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr, scratch);
 #ifdef __GLIBC__
   // The sort's buffers, freed, may stay with the allocator (glibc keeps freed blocks below
   // its mmap threshold, which a first large block raises): given back now, they do not add
@@ -222,15 +226,17 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   check_finite(points);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
   const int scale = detail::exact_scale_exponent(points);
+  std::optional<detail::MeshArrays> mesh;
+  if (p.walk) mesh.emplace(n, p.threads);
   std::vector<std::uint32_t> keys;
-  const std::vector<std::uint32_t> order = insertion_order(points, p, options, keys);
+  const std::vector<std::uint32_t> order = insertion_order(points, p, options, keys, mesh ? &*mesh : nullptr);
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
 
   Stats stats;
   stats.threads = p.threads;
   stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
-  Triangulation out = p.walk ? run_walking(std::move(pts), n, order, std::move(keys), p, options, stats)
+  Triangulation out = p.walk ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*mesh), p, options, stats)
                              : run_dag(std::move(pts), n, order, p, options, stats);
   // After the mesh is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out, p.threads);

@@ -1,8 +1,10 @@
 // The walking kernel's mesh, its serial driver and its finish (cavity.hpp).
 #include <algorithm>
 #include <atomic>
-#include <numeric>
 #include <chrono>
+#include <memory>
+#include <new>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 
@@ -41,19 +43,33 @@ void populate(std::vector<T>& a, unsigned threads) {
 
 }  // namespace
 
-Mesh::Mesh(const Vertices& vertices, unsigned threads) : vertices_(vertices) {
-  const std::uint64_t n = vertices.n();
+MeshArrays::MeshArrays(std::uint64_t n, unsigned threads) {
   if (n > kMaxWalkingPoints) throw InputError("too many points for the walking kernel (at most " +
                                               std::to_string(kMaxWalkingPoints) + ")");
   // 2k + 1 triangles for k points, at every step.
   const std::size_t slots = 2 * n + 1;
-  vertex_store_.reserve(3 * slots);
-  link_store_.reserve(3 * slots);
-  populate(vertex_store_, threads);
-  populate(link_store_, threads);
-  vertex_store_.resize(3 * slots);
-  link_store_.resize(3 * slots);
-  v_ = vertex_store_.data();
+  v.reserve(3 * slots);
+  link.reserve(3 * slots);
+  populate(v, threads);
+  populate(link, threads);
+  v.resize(3 * slots);
+  link.resize(3 * slots);
+}
+
+std::span<std::uint64_t> MeshArrays::words() {
+  // Words begin their lifetime where the vertex numbers were (trivial types: nothing is
+  // written); the mesh begins theirs again (Mesh::Mesh).
+  const std::size_t count = v.size() * sizeof(VertexId) / sizeof(std::uint64_t);
+  std::uninitialized_default_construct_n(reinterpret_cast<std::uint64_t*>(v.data()), count);
+  return {std::launder(reinterpret_cast<std::uint64_t*>(v.data())), count};
+}
+
+Mesh::Mesh(const Vertices& vertices, MeshArrays arrays)
+    : vertices_(vertices), vertex_store_(std::move(arrays.v)), link_store_(std::move(arrays.link)) {
+  if (vertex_store_.size() != 3 * (2 * std::size_t{vertices.n()} + 1) || link_store_.size() != vertex_store_.size())
+    throw std::logic_error("ridt: mesh arrays made for another number of points");
+  std::uninitialized_default_construct_n(vertex_store_.data(), vertex_store_.size());  // after words()
+  v_ = std::launder(vertex_store_.data());
   link_ = link_store_.data();
   top_ = 1;
   v_[0] = vertices.n(), v_[1] = vertices.n() + 1, v_[2] = vertices.n() + 2;
