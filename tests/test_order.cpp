@@ -114,6 +114,11 @@ TEST(BrioOrder, RoundsAlongTheCurveAndTheSameForAnyThreads) {
     EXPECT_EQ(k, keys) << threads;
   }
   EXPECT_NE(brio_order(pts.data(), n, 6, 2), order);
+  // The same in memory the caller hands over, whatever it held (the walking mesh's arrays).
+  std::vector<std::uint64_t> words(2 * n, 0x5555555555555555u);
+  std::vector<std::uint32_t> numbers(n, 0xaaaaaaaau), k;
+  EXPECT_EQ(brio_order(pts.data(), n, 5, 2, &k, {words, numbers}), order);
+  EXPECT_EQ(k, keys);
 }
 
 // A box as wide as the doubles go, and a box of no width: still a permutation (and, under
