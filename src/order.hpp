@@ -48,8 +48,9 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
 /// BRIO", 2003): the points cut into the rounds above, each round a uniformly random sample
 /// from `seed` (as from a uniformly random order, though not random_permutation's: one drawn
 /// in the cache), each round sorted along the Hilbert curve. A point lands in the last round
-/// with probability 1/2, in the one before with 1/4, ..., as a random sample should; within a round, successive insertions are close in the
-/// plane and touch nearby memory. Up to `threads` threads; the same order for any number.
+/// with probability 1/2, in the one before with 1/4, ..., as a random sample should; within a
+/// round, successive insertions are close in the plane and touch nearby memory. Up to
+/// `threads` threads; the same order for any number.
 /// `keys`, when given, receives each vertex's hilbert_keys value in the order's terms (keys[v]
 /// is the key of point order[v]): along each round they never decrease.
 /// `scratch`, when given, is memory at hand for its work: at least 2n words and n numbers.

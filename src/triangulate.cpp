@@ -201,9 +201,10 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const 
   std::vector<std::uint32_t> order = detail::brio_order(
       points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr, scratch);
 #ifdef __GLIBC__
-  // The sort's buffers, freed, may stay with the allocator (glibc keeps freed blocks below
-  // its mmap threshold, which a first large block raises): given back now, they do not add
-  // some 12 bytes a point to the peak that the mesh sets.
+  // The order's buffers (its own, where no mesh lends it memory, and the cells' small ones),
+  // freed, may stay with the allocator (glibc keeps freed blocks below its mmap threshold,
+  // which a first large block raises): given back now, they do not add to the peak that the
+  // mesh sets.
   malloc_trim(0);
 #endif
   return order;

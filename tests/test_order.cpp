@@ -119,6 +119,24 @@ TEST(BrioOrder, RoundsAlongTheCurveAndTheSameForAnyThreads) {
   std::vector<std::uint32_t> numbers(n, 0xaaaaaaaau), k;
   EXPECT_EQ(brio_order(pts.data(), n, 5, 2, &k, {words, numbers}), order);
   EXPECT_EQ(k, keys);
+  // Scratch too small is not used.
+  std::vector<std::uint64_t> few(n);
+  EXPECT_EQ(brio_order(pts.data(), n, 5, 2, nullptr, {few, numbers}), order);
+}
+
+// Sizes below a round, a bin, and at the edges: a permutation, the same in scratch memory.
+TEST(BrioOrder, SmallSizes) {
+  for (const std::uint32_t n : {0u, 1u, 2u, 3u, 1023u, 1024u, 1025u, 40000u}) {
+    const std::vector<Point> pts = generate(Distribution::Uniform, n, 4);
+    const std::vector<std::uint32_t> order = brio_order(pts.data(), n, 7, 1);
+    std::vector<std::uint32_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(sorted[i], i) << n;
+    ASSERT_EQ(sorted.size(), n);
+    std::vector<std::uint64_t> words(2 * std::size_t{n}, ~std::uint64_t{0});
+    std::vector<std::uint32_t> numbers(n, ~0u);
+    EXPECT_EQ(brio_order(pts.data(), n, 7, 3, nullptr, {words, numbers}), order) << n;
+  }
 }
 
 // A box as wide as the doubles go, and a box of no width: still a permutation (and, under
