@@ -80,7 +80,7 @@ struct alignas(64) CavityScratch {
 
 /// The walking mesh's two arrays, made before the mesh: room for the 2n + 1 slots of n points,
 /// their pages made present by up to `threads` threads. Until the mesh takes them their memory
-/// may serve other work (scratch()): pages already present cost nothing more, where fresh ones
+/// may serve other work (words(), numbers()): pages already present cost nothing more, where fresh ones
 /// are faulted in and zeroed one by one, which on a virtual machine can cost several times
 /// the work done in them.
 struct MeshArrays {
@@ -101,8 +101,6 @@ class Mesh {
  public:
   /// The mesh of the bounding triangle alone in `arrays` (made for vertices.n() points).
   Mesh(const Vertices& vertices, MeshArrays arrays);
-  /// The same in arrays made here by up to `threads` threads.
-  explicit Mesh(const Vertices& vertices, unsigned threads = 1) : Mesh(vertices, MeshArrays(vertices.n(), threads)) {}
   Mesh(const Mesh&) = delete;
   Mesh& operator=(const Mesh&) = delete;
 

@@ -166,8 +166,8 @@ class KeptSlots {
     count_ = static_cast<TriangleId>(std::accumulate(kept_in.begin(), kept_in.end(), std::uint64_t{0}));
     for (TriangleId t = 0; t < count_; ++t)
       if (!kept(t)) gaps_.push_back(t);
-    dropped_ = gaps_;
-    for (TriangleId t = count_; t < slots; ++t) (kept(t) ? movers_ : dropped_).push_back(t);
+    for (TriangleId t = count_; t < slots; ++t)
+      if (kept(t)) movers_.push_back(t);
   }
 
   TriangleId count() const { return count_; }
@@ -184,8 +184,6 @@ class KeptSlots {
   }
   const std::vector<TriangleId>& gaps() const { return gaps_; }
   const std::vector<TriangleId>& movers() const { return movers_; }
-  /// The slots that are not kept (as many as there are bounding triangles and free slots).
-  const std::vector<TriangleId>& dropped() const { return dropped_; }
   // Worker w's part of [0, total).
   std::pair<std::size_t, std::size_t> share(unsigned w, std::size_t total) const {
     return {total * w / workers_, total * (w + 1) / workers_};
@@ -196,17 +194,22 @@ class KeptSlots {
   unsigned workers_;
   std::vector<std::uint64_t> bits_;
   TriangleId count_ = 0;
-  std::vector<TriangleId> gaps_, movers_, dropped_;
+  std::vector<TriangleId> gaps_, movers_;
 };
 
-// Unlinks the kept triangles from the dropped ones: a kept triangle's edge that a dropped one
-// shares becomes a hull edge (kNoLink), so the conversion needs no test of a neighbour's slot.
-// Free slots link nowhere.
+// Unlinks the kept triangles from the dropped ones (the gaps below count(), and the slots at
+// or above it that are not movers: as many as there are bounding triangles and free slots): a
+// kept triangle's edge that a dropped one shares becomes a hull edge (kNoLink), so the
+// conversion needs no test of a neighbour's slot. Free slots link nowhere.
 void unlink_dropped(Mesh& mesh, const KeptSlots& kept) {
   Link* link = mesh.link_array().data();
-  for (const TriangleId u : kept.dropped())
+  auto unlink = [link](TriangleId u) {
     for (int j = 0; j < 3; ++j)
       if (const Link l = link[3 * std::size_t{u} + j]; l != kNoLink) link[l] = kNoLink;
+  };
+  for (const TriangleId u : kept.gaps()) unlink(u);
+  for (TriangleId u = kept.count(); u < mesh.slots(); ++u)
+    if (!kept.kept(u)) unlink(u);
 }
 
 // Rewrites a kept slot in output terms, in place or into its gap: input indices for the
