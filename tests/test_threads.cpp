@@ -5,6 +5,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <thread>
@@ -194,6 +195,34 @@ TEST(Partition, ThreadsShareTheRoundsAndFewPointsArePutOff) {
   }
   EXPECT_EQ(points, pts.size());
   EXPECT_LT(t.stats.retries, pts.size() / 10);
+}
+
+// A thread that falls behind gives points away: thread 0 sleeps in the progress callback (it
+// runs on the calling thread), so the other ends its stretches first and asks it for points,
+// again and again. The triangles are the serial ones, and the thread that was awake inserted
+// more. (Large enough under the sanitizers too: a thread asks for points only when another
+// has some thousands left.)
+TEST(Partition, AThreadThatFallsBehindGivesPointsAway) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 240000, 13);
+  const Triangulation serial = triangulate(pts);
+  for (const unsigned threads : {2u, 3u}) {
+    Options o;
+    o.method = Method::Partition;
+    o.threads = threads;
+    o.progress = [](double share) {
+      std::fprintf(stderr, "progress %g\n", share);
+      if (share < 1) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    };
+    const Triangulation t = triangulate(pts, o);
+    EXPECT_EQ(audit(pts, t), "") << threads << " threads";
+    EXPECT_EQ(compare(t, serial), "") << threads << " threads";
+    ASSERT_EQ(t.stats.per_thread.size(), threads);
+    std::uint64_t points = 0, others = 0;
+    for (const ThreadStats& w : t.stats.per_thread) points += w.points;
+    for (unsigned i = 1; i < threads; ++i) others += t.stats.per_thread[i].points;
+    EXPECT_EQ(points, pts.size());
+    EXPECT_GT(others, t.stats.per_thread[0].points * (threads - 1) + pts.size() / 20) << threads << " threads";
+  }
 }
 
 TEST(Partition, RefusesTheDagAndTheRandomOrder) {
