@@ -283,7 +283,10 @@ class Partition {
       }
       if (!up && next <= s.a) break;
       // acquire: whatever the asker read of a last answer was read before this question.
-      if (w.ask.load(std::memory_order_acquire) == kAsked) answer(w, s, up, next);
+      if (w.ask.load(std::memory_order_acquire) == kAsked) {
+        answer(w, s, up, next);
+        continue;  // its stretch may have shrunk to nothing left to try
+      }
       const VertexId p = up ? next++ : --next;
       if (!try_insert(i, s.range, p, w.deferred, w.pool)) return false;
       if ((p & 63) == 0)
@@ -322,9 +325,10 @@ class Partition {
       const std::uint64_t offset = static_cast<std::uint32_t>(at - s.range.lo);
       (bottom ? give : keep).len = offset;
       (bottom ? keep : give) = {at, s.range.len - offset};
-      // Its next walk starts at w.last, and the walk down at s.start when it has yet to go down:
-      // both must stay its own.
-      ok = owns(keep, w.last) && (!up || (bottom && b == s.from) || owns(keep, s.start));
+      // Its next walk starts at w.last, and the walk down at s.start when points below it are
+      // left to it: both must stay its own.
+      const bool down_left = up && (bottom ? b : s.a) < s.from;
+      ok = owns(keep, w.last) && (!down_left || owns(keep, s.start));
     }
     TriangleId t = ok ? w.last : kNoTriangle;
     VertexId from = 0;
@@ -347,6 +351,7 @@ class Partition {
     w.given_slots = w.pool.end;
     if (a == s.a) s.a = b; else s.b = a;
     s.range = keep;
+    w.remaining.store(above + below - (b - a), std::memory_order_relaxed);
     // release: what it wrote in the part it gives, and `given`, before the answer.
     w.ask.store(kGiven, std::memory_order_release);
   }
@@ -389,13 +394,16 @@ class Partition {
       }
       // acquire: its answer, and what it wrote in the points it gives, before we read them.
       for (unsigned wait = 0; (state = v.ask.load(std::memory_order_acquire)) == kAsked; ++wait) wait_a_little(wait);
-      if (state == kGiven) {
-        s = v.given;
-        me.spare.emplace_back(me.pool.next, me.pool.end);
-        me.pool = {nullptr, 0, v.given_slots, v.given_slots + 2 * (s.b - s.a)};
-      }
+      Stretch given;
+      TriangleId slots = 0;
+      if (state == kGiven) given = v.given, slots = v.given_slots;
       v.ask.store(kWorking, std::memory_order_release);  // read: it may be asked again
-      if (state == kGiven) return true;
+      if (state == kGiven) {
+        s = given;
+        me.spare.emplace_back(me.pool.next, me.pool.end);
+        me.pool = {nullptr, 0, slots, slots + 2 * (s.b - s.a)};
+        return true;
+      }
     }
   }
 

@@ -156,6 +156,12 @@ TEST(Partition, SameResultAsSerialForEveryThreadCountAndSeed) {
   for (std::size_t i = 0; i < two.size(); i += 3) two[i] = {2, 5};
   two.push_back({7, -1});
   sets.emplace_back("three_points_repeated", two);
+  // Distinct points in a speck and one far away: most share a Hilbert key, so the cuts, and
+  // what a thread gives another, cannot fall between them.
+  std::vector<Point> speck = generate(Distribution::Uniform, kPartitionN, 3);
+  for (Point& q : speck) q = {q.x * 1e-9, q.y * 1e-9};
+  speck.push_back({1, 1});
+  sets.emplace_back("speck_and_outlier", speck);
   // A grid on a line of points: cocircular everywhere, and collinear runs along the borders.
   std::vector<Point> grid_line = generate(Distribution::Grid, kPartitionN, 2);
   for (int i = 0; i < kPartitionN / 10; ++i) grid_line.push_back({i * 1e-3, 0.5});
