@@ -435,7 +435,7 @@ class Partition {
       for (std::size_t k = 0; k < std::min(t.todo.size(), kStartTries); ++k) {
         const std::size_t c = (t.todo.size() / 2 + k) % t.todo.size();
         last_ = mesh_.walk(last_, t.todo[c]);
-        if (deep_in(t.range, last_, seen_)) {
+        if (deep_in(t.range, last_, workers_[0].seen)) {
           t.start = last_;
           t.split = c;
           break;
@@ -608,7 +608,6 @@ class Partition {
   std::atomic<std::uint64_t> inserted_{0};  // counted by the threads as they go
   std::uint64_t before_ = 0;      // done_ when the pass began
   std::vector<TriangleId> free_;  // free slots below the top
-  std::vector<TriangleId> seen_;  // deep_in's search, on the calling thread between passes
   TriangleId last_ = 0;           // a triangle, where the next walk of the calling thread starts
   std::uint64_t done_ = 0;        // points inserted or found equal to a vertex
   std::vector<DuplicateHit>& duplicates_;

@@ -216,7 +216,6 @@ TEST(Partition, AThreadThatFallsBehindGivesPointsAway) {
     o.method = Method::Partition;
     o.threads = threads;
     o.progress = [](double share) {
-      std::fprintf(stderr, "progress %g\n", share);
       if (share < 1) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     };
     const Triangulation t = triangulate(pts, o);
