@@ -80,13 +80,11 @@ std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, un
   return key;
 }
 
-void hilbert_keys(const Point* points, std::uint32_t n, unsigned threads, std::uint32_t* key) {
+void hilbert_keys(const Point* points, std::uint32_t n, unsigned threads, std::uint32_t* key,
+                  const Extent* known) {
   if (n == 0) return;
-  double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
-  for (std::uint32_t i = 1; i < n; ++i) {
-    x0 = std::min(x0, points[i].x), x1 = std::max(x1, points[i].x);
-    y0 = std::min(y0, points[i].y), y1 = std::max(y1, points[i].y);
-  }
+  const Extent box = known != nullptr ? *known : extent_of({points, n});
+  const double x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
   // Halving first keeps x1 - x0 finite for coordinates near the largest double; the offsets
   // below are halved the same way, so they run from 0 to `extent`.
   const double extent = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
@@ -288,7 +286,8 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
 }
 
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
-                                      unsigned threads, std::vector<std::uint32_t>* keys, OrderScratch scratch) {
+                                      unsigned threads, std::vector<std::uint32_t>* keys, OrderScratch scratch,
+                                      const Extent* extent) {
   std::vector<std::uint32_t> first;
   for (std::uint32_t b = 0; b < n; b = round_end(b)) first.push_back(b);
   first.push_back(n);
@@ -300,7 +299,7 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   if (scratch.numbers.size() < n) own_numbers.resize(n), scratch.numbers = own_numbers;
   std::uint64_t* pairs = scratch.words.data();
   std::uint64_t* sorted = pairs + n;
-  hilbert_keys(points, n, threads, scratch.numbers.data());
+  hilbert_keys(points, n, threads, scratch.numbers.data(), extent);
   shuffled_pairs(scratch.numbers.data(), n, seed, first, threads, pairs);
   std::vector<std::uint32_t> order(n);
   if (keys != nullptr) keys->resize(n);

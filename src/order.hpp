@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::detail {
@@ -20,8 +21,10 @@ std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
 /// hilbert_key of each point, over the bounding box of the n points (one scale for both axes,
 /// so the curve's cells are square), computed by up to `threads` threads.
 std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, unsigned threads = 1);
-/// The same into key[0 .. n).
-void hilbert_keys(const Point* points, std::uint32_t n, unsigned threads, std::uint32_t* key);
+/// The same into key[0 .. n); `extent`, when given, is the points' (extent_of), whose box
+/// spares a pass over them.
+void hilbert_keys(const Point* points, std::uint32_t n, unsigned threads, std::uint32_t* key,
+                  const Extent* extent = nullptr);
 
 /// Sorts ids[0 .. count) along the Hilbert curve: by key[id], the hilbert_keys of `points`,
 /// then every cell of the curve that holds more than a few of them again along a curve over
@@ -53,14 +56,15 @@ void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* i
 /// `threads` threads; the same order for any number.
 /// `keys`, when given, receives each vertex's hilbert_keys value in the order's terms (keys[v]
 /// is the key of point order[v]): along each round they never decrease.
-/// `scratch`, when given, is memory at hand for its work: at least 2n words and n numbers.
+/// `scratch`, when given, is memory at hand for its work: at least 2n words and n numbers;
+/// `extent`, when given, the points' (as for hilbert_keys).
 struct OrderScratch {
   std::span<std::uint64_t> words;
   std::span<std::uint32_t> numbers;
 };
 std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std::uint64_t seed,
                                       unsigned threads = 1, std::vector<std::uint32_t>* keys = nullptr,
-                                      OrderScratch scratch = {});
+                                      OrderScratch scratch = {}, const Extent* extent = nullptr);
 
 /// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box
 /// (hilbert_sort).

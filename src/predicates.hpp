@@ -127,32 +127,52 @@ inline int incircle(const Point& a, const Point& b, const Point& c, const Point&
   return s != 0 ? s : incircle_hard(a, b, c, d);
 }
 
+/// What one pass over the points finds: their bounding box, the smallest and the largest
+/// nonzero magnitude of a coordinate, and whether every coordinate is finite (the box and the
+/// magnitudes mean nothing where one is not). Parts of the points scanned apart merge.
+struct Extent {
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+  double smallest = HUGE_VAL, largest = 0;
+  bool finite = true;
+
+  void add(const Point& p) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    const double ax = std::fabs(p.x), ay = std::fabs(p.y);
+    // No branch: NaN fails every comparison, so it and the infinities clear `finite`.
+    finite &= (ax <= 0x1.fffffffffffffp1023) & (ay <= 0x1.fffffffffffffp1023);
+    largest = std::max(largest, std::max(ax, ay));
+    smallest = std::min(smallest, std::min(ax != 0 ? ax : HUGE_VAL, ay != 0 ? ay : HUGE_VAL));
+  }
+  void add(const Extent& e) {
+    x0 = std::min(x0, e.x0), x1 = std::max(x1, e.x1), y0 = std::min(y0, e.y0), y1 = std::max(y1, e.y1);
+    smallest = std::min(smallest, e.smallest), largest = std::max(largest, e.largest);
+    finite = finite && e.finite;
+  }
+};
+
+inline Extent extent_of(std::span<const Point> points) {
+  Extent e;
+  for (const Point& p : points) e.add(p);
+  return e;
+}
+
 /// Huge or tiny coordinates make the products in the filters overflow or underflow, and
 /// every predicate then takes the slow path. Scaling every point by one power of two 2^k
 /// changes the sign of no predicate, and is exact while every coordinate stays normal. Returns
 /// the k that brings half the larger side of the points' bounding box into [1/2, 1) when it
-/// lies outside [low, high] and that scaling is exact, else 0 (leave the points as they are).
-/// triangulate and check apply it to the whole input, the predicates' slow path to the three
-/// or four points of one call.
-inline int exact_scale_exponent(std::span<const Point> points, double low = 0x1p-200,
-                                double high = 0x1p200) {
-  if (points.empty()) return 0;
-  double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
-  double smallest = HUGE_VAL, largest = 0;  // nonzero magnitudes of coordinates
-  for (const Point& p : points) {
-    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    for (const double v : {std::fabs(p.x), std::fabs(p.y)}) {
-      largest = std::max(largest, v);
-      if (v != 0) smallest = std::min(smallest, v);
-    }
-  }
-  const double half = std::max(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);  // halves cannot overflow
+/// lies outside [low, high] and that scaling is exact, else 0 (leave the points as they are;
+/// no points: 0). `e` is the points' extent, of finite coordinates.
+inline int exact_scale_exponent(const Extent& e, double low = 0x1p-200, double high = 0x1p200) {
+  const double half = std::max(e.x1 / 2 - e.x0 / 2, e.y1 / 2 - e.y0 / 2);  // halves cannot overflow
   if (!(half > 0) || (half >= low && half <= high)) return 0;
-  int e = 0;
-  std::frexp(half, &e);  // half in [2^(e-1), 2^e): scaled, in [1/2, 1)
-  const int k = -e;
-  const bool exact = std::ldexp(smallest, k) >= 0x1p-1022 && std::ldexp(largest, k) < 0x1p1020;
+  int exponent = 0;
+  std::frexp(half, &exponent);  // half in [2^(exponent-1), 2^exponent): scaled, in [1/2, 1)
+  const int k = -exponent;
+  const bool exact = std::ldexp(e.smallest, k) >= 0x1p-1022 && std::ldexp(e.largest, k) < 0x1p1020;
   return exact ? k : 0;
+}
+inline int exact_scale_exponent(std::span<const Point> points, double low = 0x1p-200, double high = 0x1p200) {
+  return exact_scale_exponent(extent_of(points), low, high);
 }
 
 /// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.

@@ -78,13 +78,26 @@ Plan plan(std::size_t n, const Options& options) {
   return p;
 }
 
-void check_finite(std::span<const Point> points) {
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point& p = points[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
-      throw InputError("point " + std::to_string(i) + " has a " +
-                       (std::isnan(p.x) || std::isnan(p.y) ? "NaN" : "infinite") + " coordinate");
-  }
+// The points' extent (predicates.hpp), in one pass on up to `threads` threads; throws
+// InputError naming the first point with a coordinate that is not finite.
+detail::Extent scan(std::span<const Point> points, unsigned threads) {
+  constexpr std::size_t kGrain = std::size_t{1} << 16;
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(points.size() / kGrain, 1, threads));
+  std::vector<detail::Extent> part(parts);
+  detail::on_threads(parts, [&](unsigned t) {
+    part[t] = detail::extent_of(points.subspan(points.size() * t / parts, points.size() * (t + 1) / parts -
+                                                                              points.size() * t / parts));
+  });
+  detail::Extent e;
+  for (const detail::Extent& x : part) e.add(x);
+  if (!e.finite)
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Point& p = points[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw InputError("point " + std::to_string(i) + " has " +
+                         (std::isnan(p.x) || std::isnan(p.y) ? "a NaN" : "an infinite") + " coordinate");
+    }
+  return e;
 }
 
 // The points in insertion order (vertex v is input point order[v]), scaled by 2^scale, then
@@ -191,15 +204,17 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
 // The insertion order (vertex v is input point order[v]) and, for the partition method, each
 // vertex's Hilbert key in that order. `mesh`, when given, is the walking mesh's memory, made
 // before the order so that the order's work needs no fresh pages.
-std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const Plan& p, const Options& options,
-                                           std::vector<std::uint32_t>& keys, detail::MeshArrays* mesh) {
+std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const detail::Extent& extent, const Plan& p,
+                                           const Options& options, std::vector<std::uint32_t>& keys,
+                                           detail::MeshArrays* mesh) {
   const auto n = static_cast<std::uint32_t>(points.size());
   if (!p.brio) return detail::random_permutation(n, options.seed);
   if (options.method == Method::Partition) keys.reserve(std::size_t{n} + 3);  // the bounding vertices' too
   detail::OrderScratch scratch;
   if (mesh != nullptr) scratch = {mesh->words(), mesh->numbers()};
   std::vector<std::uint32_t> order = detail::brio_order(
-      points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr, scratch);
+      points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr, scratch,
+      &extent);
 #ifdef __GLIBC__
   // The order's buffers (its own, where no mesh lends it memory, and the cells' small ones),
   // freed, may stay with the allocator (glibc keeps freed blocks below its mmap threshold,
@@ -226,13 +241,13 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   const auto t0 = Clock::now();
   const Plan p = plan(points.size(), options);
   const auto n = static_cast<std::uint32_t>(points.size());
-  check_finite(points);
+  const detail::Extent extent = scan(points, p.threads);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
-  const int scale = detail::exact_scale_exponent(points);
+  const int scale = detail::exact_scale_exponent(extent);
   std::optional<detail::MeshArrays> mesh;
   if (p.walk) mesh.emplace(n, p.threads);
   std::vector<std::uint32_t> keys;
-  const std::vector<std::uint32_t> order = insertion_order(points, p, options, keys, mesh ? &*mesh : nullptr);
+  const std::vector<std::uint32_t> order = insertion_order(points, extent, p, options, keys, mesh ? &*mesh : nullptr);
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
 

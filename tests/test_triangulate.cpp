@@ -306,6 +306,33 @@ TEST(BadInput, NanAndInfinityAreRejected) {
   EXPECT_THROW(triangulate(pts), InputError);
 }
 
+// The input is scanned in parts, one a thread: the message names the first bad point, wherever
+// it lies, for every method and thread count.
+TEST(BadInput, TheFirstBadPointIsNamed) {
+  std::vector<Point> pts = generate(Distribution::Uniform, 300000, 4);
+  pts[250001].x = -INFINITY;
+  pts[150001].y = std::nan("");
+  for (const Method m : {Method::Serial, Method::Partition, Method::Optimistic})
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      Options o;
+      o.method = m;
+      o.threads = threads;
+      try {
+        triangulate(pts, o);
+        ADD_FAILURE() << "no error";
+      } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "point 150001 has a NaN coordinate");
+      }
+    }
+  pts[150001].y = 0.5;
+  try {
+    triangulate(pts);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "point 250001 has an infinite coordinate");
+  }
+}
+
 // ---- The robustness fixtures of delaunator ----
 
 class Fixture : public ::testing::TestWithParam<const char*> {};
