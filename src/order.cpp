@@ -5,7 +5,6 @@
 #include <atomic>
 #include <cmath>
 #include <numeric>
-#include <thread>
 #include <utility>
 
 #include "parallel.hpp"
@@ -114,11 +113,7 @@ void hilbert_keys(const Point* points, std::uint32_t n, unsigned threads, std::u
     for (; i < end; ++i) key[i] = hilbert_key(cell(points[i].x, x0), cell(points[i].y, y0));
   };
   const unsigned parts = std::max(1u, std::min(threads, n / 65536 + 1));
-  {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 1; t < parts; ++t) pool.emplace_back(part, t, parts);
-    part(0, parts);
-  }
+  on_threads(parts, [&](unsigned t) { part(t, parts); });
 }
 
 namespace {
@@ -265,9 +260,7 @@ void share_rounds(const std::vector<std::uint32_t>& first, unsigned threads, Sor
   auto sort_share = [&](unsigned t) {
     for (const std::size_t r : share[t]) sort(r);
   };
-  std::vector<std::jthread> pool;
-  for (unsigned t = 1; t < parts; ++t) pool.emplace_back(sort_share, t);
-  sort_share(0);
+  on_threads(parts, sort_share);
 }
 
 }  // namespace

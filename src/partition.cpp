@@ -47,6 +47,7 @@
 #include "cavity.hpp"
 #include "driver.hpp"
 #include "order.hpp"
+#include "parallel.hpp"
 #include "threads.hpp"
 
 namespace ridt::detail {
@@ -546,11 +547,7 @@ class Partition {
       go_idle(workers_[i]);  // a thread that asked it, on an error, is answered
       pass_end_[i] = Clock::now();  // the wait for the others, from here to the last one's end
     };
-    {
-      std::vector<std::jthread> pool;
-      for (unsigned i = 1; i < threads_; ++i) pool.emplace_back(work, i);
-      work(0);
-    }
+    on_threads(threads_, work);
     if (failure) std::rethrow_exception(failure);
     const Clock::time_point end = *std::max_element(pass_end_.begin(), pass_end_.end());
     std::uint64_t inserted = 0;

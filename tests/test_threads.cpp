@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +14,7 @@
 
 #include "generate.hpp"
 #include "helpers.hpp"
+#include "parallel.hpp"
 
 namespace ridt::test {
 namespace {
@@ -459,6 +462,72 @@ INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
                          [](const auto& info) { return std::string(info.param.name); });
 INSTANTIATE_TEST_SUITE_P(Methods, Workers, ::testing::ValuesIn(kVariants, kVariants + 3),
                          [](const auto& info) { return std::string(info.param.name); });
+
+
+// ---- The parked threads of on_threads (parallel.cpp) ----
+
+// Every part runs once, on its own thread, and what the parts wrote is seen after the call;
+// a call from inside a part, or from two threads at once, starts its own threads and still
+// runs every part.
+TEST(ParkedThreads, EveryPartRunsOnceNestedAndConcurrent) {
+  for (int round = 0; round < 50; ++round) {
+    for (const unsigned count : {1u, 2u, 3u, 8u}) {
+      std::vector<int> ran(count, 0);
+      std::vector<std::thread::id> who(count);
+      detail::on_threads(count, [&](unsigned w) { ++ran[w], who[w] = std::this_thread::get_id(); });
+      EXPECT_EQ(std::count(ran.begin(), ran.end(), 1), static_cast<long>(count));
+      EXPECT_EQ(who[0], std::this_thread::get_id());
+      std::sort(who.begin(), who.end());
+      EXPECT_EQ(std::unique(who.begin(), who.end()), who.end());
+    }
+  }
+  std::vector<int> inner(4 * 3, 0);
+  detail::on_threads(4, [&](unsigned w) { detail::on_threads(3, [&](unsigned v) { ++inner[3 * w + v]; }); });
+  EXPECT_EQ(std::count(inner.begin(), inner.end(), 1), 12);
+  // Two callers at once: one has the parked threads, the other starts its own.
+  std::vector<long> sums(2, 0);
+  auto caller = [&](int c) {
+    for (int i = 0; i < 200; ++i) {
+      std::vector<long> part(3, 0);
+      detail::on_threads(3, [&](unsigned w) { part[w] = w + 1; });
+      sums[c] += part[0] + part[1] + part[2];
+    }
+  };
+  {
+    std::jthread other(caller, 1);
+    caller(0);
+  }
+  EXPECT_EQ(sums[0], 1200);
+  EXPECT_EQ(sums[1], 1200);
+}
+
+// A child of fork() has none of its parent's threads: its calls park threads of its own, and
+// a triangulation there gives the parent's triangles.
+TEST(ParkedThreads, AForkedChildParksItsOwn) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, kN, 3);
+  Options o;
+  o.method = Method::Partition;
+  o.threads = 3;
+  o.canonical_order = true;
+  const Triangulation parent = triangulate(pts, o);  // the parent's threads are parked now
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // The result is the exit status; a child that waits for threads it does not have is
+    // ended by the alarm.
+    ::alarm(120);
+    bool same = false;
+    try {
+      same = triangulate(pts, o).triangles == parent.triangles;
+    } catch (...) {
+    }
+    ::_exit(same ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
 
 }  // namespace
 }  // namespace ridt::test
