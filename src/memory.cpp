@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "parallel.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::detail {
@@ -200,6 +201,23 @@ void Reservation::discard(std::size_t from, std::size_t to) {
   if (to > from) madvise(m_.base + from, to - from, MADV_DONTNEED);
 #else
   (void)from, (void)to;
+#endif
+}
+
+void make_present(void* data, std::size_t bytes, unsigned threads) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr std::uintptr_t kPage = 4096;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kPage - 1);
+  if (end <= begin || end - begin < (std::uintptr_t{1} << 20)) return;
+  const std::uintptr_t pages = (end - begin) / kPage;
+  threads = static_cast<unsigned>(std::clamp<std::uintptr_t>(pages / 256, 1, std::max(threads, 1u)));
+  on_threads(threads, [=](unsigned t) {
+    const std::uintptr_t from = begin + pages * t / threads * kPage, to = begin + pages * (t + 1) / threads * kPage;
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+  });
+#else
+  (void)data, (void)bytes, (void)threads;
 #endif
 }
 

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <utility>
 
+#include "memory.hpp"
 #include "parallel.hpp"
 #include "random.hpp"
 
@@ -294,8 +295,9 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   std::uint64_t* sorted = pairs + n;
   hilbert_keys(points, n, threads, scratch.numbers.data(), extent);
   shuffled_pairs(scratch.numbers.data(), n, seed, first, threads, pairs);
-  std::vector<std::uint32_t> order(n);
-  if (keys != nullptr) keys->resize(n);
+  std::vector<std::uint32_t> order;
+  resize_present(order, n, threads);
+  if (keys != nullptr) resize_present(*keys, n, threads);
   share_rounds(first, threads, [&](std::size_t r) {
     const std::uint32_t b = first[r], count = first[r + 1] - b;
     sort_by_key(pairs + b, sorted + b, count);

@@ -8,52 +8,21 @@
 #include <stdexcept>
 #include <thread>
 
-#include <sys/mman.h>
-
 #include "cavity.hpp"
 #include "driver.hpp"
+#include "memory.hpp"
 #include "parallel.hpp"
 
 namespace ridt::detail {
 
-namespace {
-
-// Makes the pages of vector a's storage, reserved and not yet touched, present, `threads` parts
-// at once: the kernel's faulting and zeroing of fresh pages then runs on every thread, where
-// the vector's own filling would fault them in one by one on one thread; on one thread, one
-// call in place of a fault a page is still some 15 % quicker. Only a request: without
-// MADV_POPULATE_WRITE (Linux 5.14) the filling faults them in as before.
-template <class T>
-void populate(std::vector<T>& a, unsigned threads) {
-#ifdef MADV_POPULATE_WRITE
-  constexpr std::uintptr_t kPage = 4096;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(a.data()) + kPage - 1) & ~(kPage - 1);
-  const auto end = (reinterpret_cast<std::uintptr_t>(a.data() + a.capacity())) & ~(kPage - 1);
-  if (end <= begin || end - begin < (std::uintptr_t{1} << 22)) return;
-  const std::uintptr_t pages = (end - begin) / kPage;
-  threads = std::max(threads, 1u);
-  on_threads(threads, [=](unsigned t) {
-    const std::uintptr_t from = begin + pages * t / threads * kPage, to = begin + pages * (t + 1) / threads * kPage;
-    madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
-  });
-#else
-  (void)a, (void)threads;
-#endif
-}
-
-}  // namespace
 
 MeshArrays::MeshArrays(std::uint64_t n, unsigned threads) {
   if (n > kMaxWalkingPoints) throw InputError("too many points for the walking kernel (at most " +
                                               std::to_string(kMaxWalkingPoints) + ")");
   // 2k + 1 triangles for k points, at every step.
   const std::size_t slots = 2 * n + 1;
-  v.reserve(3 * slots);
-  link.reserve(3 * slots);
-  populate(v, threads);
-  populate(link, threads);
-  v.resize(3 * slots);
-  link.resize(3 * slots);
+  resize_present(v, 3 * slots, threads);
+  resize_present(link, 3 * slots, threads);
 }
 
 std::span<std::uint64_t> MeshArrays::words() {
