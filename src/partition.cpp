@@ -84,8 +84,8 @@ class Partition {
     for (VertexId b = 0; b < n; b = round_end(b)) {
       const VertexId e = std::min(round_end(b), n);
       if (e - b < kMinStretch * threads_) {
-        std::vector<VertexId> all(e - b);
-        for (VertexId p = b; p < e; ++p) all[p - b] = p;
+        std::vector<PutOff> all(e - b);
+        for (VertexId p = b; p < e; ++p) all[p - b] = {p, kNoTriangle};
         insert_alone(all);
       } else {
         insert_round(b, e);
@@ -103,12 +103,24 @@ class Partition {
     Range range;
     TriangleId start = kNoTriangle;
   };
+  // A point put off, and a triangle that may lie near it: the one that holds it, or where its
+  // walk stopped (kNoTriangle: none). A later walk to it starts there when that looks nearer
+  // than the last point inserted (nearer()): the points put off lie along the regions'
+  // borders, and in curve order they jump from one stretch of a border to another, but a walk
+  // that was blocked may have stopped far from its point too. A slot that once held a
+  // triangle always holds one (a cavity's slots are filled again at once), so the hint stays
+  // a triangle of the mesh.
+  struct PutOff {
+    VertexId p;
+    TriangleId near;
+    bool operator<(const PutOff& o) const { return p < o.p; }
+  };
   // A thread's answer to another that asks it for points (Worker::ask).
   enum : int { kWorking, kAsked, kGiven, kRefused, kIdle };
 
   // A thread's state: stats.retries counts the points it put off.
   struct Worker : WorkerState<CavityScratch> {
-    std::vector<VertexId> deferred;
+    std::vector<PutOff> deferred;
     SlotPool pool;
     TriangleId last = 0;
     std::vector<std::pair<VertexId, VertexId>> held;  // the first pass's stretches it inserted
@@ -128,11 +140,30 @@ class Partition {
   // A region of the second pass and its points, in curve order.
   struct Task {
     Range range;
-    std::vector<VertexId> todo, deferred;
+    std::vector<PutOff> todo, deferred;  // hints in todo only where the region owns them
     TriangleId start = 0;   // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
     SlotPool pool;
   };
+
+  // Of triangle t and x's hint, the one whose first finite vertex lies nearer x's point: a
+  // guess at where a walk to it is shorter.
+  TriangleId nearer(TriangleId t, const PutOff& x) const {
+    if (x.near == kNoTriangle) return t;
+    const Vertices& v = mesh_.vertices();
+    auto distance2 = [&](TriangleId u) {
+      for (int i = 0; i < 3; ++i)
+        if (const VertexId a = mesh_.vertex(u, i); !v.symbolic(a)) {
+          const double dx = v[a].x - v[x.p].x, dy = v[a].y - v[x.p].y;
+          return dx * dx + dy * dy;
+        }
+      return HUGE_VAL;
+    };
+    return distance2(x.near) < distance2(t) ? x.near : t;
+  }
+
+  // Whether slot t holds a triangle (kNoTriangle: no).
+  bool live(TriangleId t) const { return t < mesh_.slots() && mesh_.vertex(t, 0) != kNoVertex; }
 
   // Whether triangle t has all three vertices in region r (tested together, without a branch
   // between them: the answers are hard to predict).
@@ -228,7 +259,7 @@ class Partition {
         w.remaining.store(s.b - s.a, std::memory_order_relaxed);
         w.ask.store(kWorking, std::memory_order_relaxed);
       } else {  // no start: every point is put off, and the thread begins by asking for some
-        for (VertexId p = s.a; p < s.b; ++p) w.deferred.push_back(p);
+        for (VertexId p = s.a; p < s.b; ++p) w.deferred.push_back({p, kNoTriangle});
         if (s.a < s.b) held.emplace_back(s.a, s.b);
         w.remaining.store(0, std::memory_order_relaxed);
         w.ask.store(kIdle, std::memory_order_relaxed);
@@ -236,7 +267,7 @@ class Partition {
     }
     run_threads([&](unsigned i) { first_pass(i, stretch[i]); });
     // What no thread inserted: the points put off, and the slots the pools did not hand out.
-    std::vector<VertexId> left;
+    std::vector<PutOff> left;
     for (Worker& w : workers_) {
       left.insert(left.end(), w.deferred.begin(), w.deferred.end());
       w.deferred.clear();
@@ -411,7 +442,7 @@ class Partition {
   // The second pass: the points put off lie along the borders between the first pass's
   // stretches; regions cut in the middle of each stretch put each such border inside one. The
   // last region wraps round to key 0. Returns what is left.
-  std::vector<VertexId> second_pass(std::vector<VertexId> left, std::vector<std::pair<VertexId, VertexId>> held) {
+  std::vector<PutOff> second_pass(std::vector<PutOff> left, std::vector<std::pair<VertexId, VertexId>> held) {
     std::vector<std::uint32_t> from;  // the smallest key of each region
     for (const auto& [a, b] : held)
       if (a < b) from.push_back(key_[a + (b - a) / 2]);
@@ -423,10 +454,13 @@ class Partition {
     for (std::size_t j = 0; j < from.size(); ++j)
       tasks_[j].range = {from[j], j + 1 < from.size() ? std::uint64_t{from[j + 1]} - from[j]
                                                        : (std::uint64_t{1} << 32) - (from[j] - from[0])};
-    for (const VertexId p : left) {
+    for (PutOff x : left) {
       // The last region whose first key is at most p's, or the last of all (which wraps round).
-      const auto above = std::upper_bound(from.begin(), from.end(), key_[p]) - from.begin();
-      tasks_[above > 0 ? static_cast<std::size_t>(above - 1) : from.size() - 1].todo.push_back(p);
+      const auto above = std::upper_bound(from.begin(), from.end(), key_[x.p]) - from.begin();
+      Task& t = tasks_[above > 0 ? static_cast<std::size_t>(above - 1) : from.size() - 1];
+      // A hint the region does not own may change under another thread: read it now or never.
+      if (!live(x.near) || !owns(t.range, x.near)) x.near = kNoTriangle;
+      t.todo.push_back(x);
     }
     // Before the threads start: each region's start, and slots for all its points, the free
     // ones first.
@@ -435,7 +469,7 @@ class Partition {
       t.split = t.todo.size();  // none found: every point is put off
       for (std::size_t k = 0; k < std::min(t.todo.size(), kStartTries); ++k) {
         const std::size_t c = (t.todo.size() / 2 + k) % t.todo.size();
-        last_ = mesh_.walk(last_, t.todo[c]);
+        last_ = mesh_.walk(t.todo[c].near != kNoTriangle ? t.todo[c].near : last_, t.todo[c].p);
         if (deep_in(t.range, last_, workers_[0].seen)) {
           t.start = last_;
           t.split = c;
@@ -482,18 +516,22 @@ class Partition {
   // start again back to todo[0]. False when the run stops.
   bool insert_task(unsigned i, Task& t) {
     Worker& w = workers_[i];
+    auto insert = [&](const PutOff& x) {
+      w.last = nearer(w.last, x);  // the hint is its region's, and so still (PutOff)
+      return try_insert(i, t.range, x.p, t.deferred, t.pool);
+    };
     w.last = t.start;
     for (std::size_t k = t.split; k < t.todo.size(); ++k)
-      if (!try_insert(i, t.range, t.todo[k], t.deferred, t.pool)) return false;
+      if (!insert(t.todo[k])) return false;
     w.last = t.start;
     for (std::size_t k = t.split; k-- > 0;)
-      if (!try_insert(i, t.range, t.todo[k], t.deferred, t.pool)) return false;
+      if (!insert(t.todo[k])) return false;
     return true;
   }
 
   // Point p into region r on thread i, from `pool`, or put off into `deferred`. False when
   // the run stops: an error, or the progress callback threw.
-  bool try_insert(unsigned i, const Range& r, VertexId p, std::vector<VertexId>& deferred, SlotPool& pool) {
+  bool try_insert(unsigned i, const Range& r, VertexId p, std::vector<PutOff>& deferred, SlotPool& pool) {
     Worker& w = workers_[i];
     if (++w.tried == 1024) {
       w.tried = 0;
@@ -505,7 +543,7 @@ class Partition {
     // A point put off leaves the next walk to start where this one stopped, in the region and
     // nearer the points to come than the last insertion.
     if (!r.holds(key_[p]) || !mesh_.walk(w.last, p, mine)) {
-      deferred.push_back(p);
+      deferred.push_back({p, w.last});
       ++w.stats.retries;
       return true;
     }
@@ -516,7 +554,7 @@ class Partition {
       return true;
     }
     if (!mesh_.find_cavity(t, p, w.scratch, mine)) {
-      deferred.push_back(p);
+      deferred.push_back({p, w.last});
       ++w.stats.retries;
       return true;
     }
@@ -570,7 +608,7 @@ class Partition {
   }
 
   // The points of `list` by the calling thread, in order, with no regions.
-  void insert_alone(const std::vector<VertexId>& list) {
+  void insert_alone(const std::vector<PutOff>& list) {
     Worker& w = workers_[0];
     SlotPool pool;
     pool.list = free_.data();
@@ -579,8 +617,9 @@ class Partition {
     const std::size_t grown = 2 * list.size() - pool.listed;
     pool.next = mesh_.grow(static_cast<TriangleId>(grown));
     pool.end = pool.next + static_cast<TriangleId>(grown);
-    for (const VertexId p : list) {
+    for (const auto [p, near] : list) {
       progress_(done_++);
+      last_ = nearer(last_, {p, live(near) ? near : kNoTriangle});
       if (const VertexId hit = mesh_.insert(p, last_, w.scratch, pool); hit != kNoVertex)
         w.duplicates.push_back({p, hit});
       else
