@@ -28,6 +28,24 @@ def test_concurrent_calls_from_a_thread_pool():
         assert (f >= 0).all()
 
 
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="no fork() on this platform")
+def test_threads_after_fork():
+    # The library keeps its threads parked between calls; a forked child (multiprocessing's
+    # default start on Linux) has none of them, and must triangulate on threads of its own.
+    pts = np.random.default_rng(5).random((200_000, 2))
+    want = triangle_set(ridt.Delaunay(pts, threads=2).simplices)
+    pid = os.fork()
+    if pid == 0:  # the child: its answer is its exit status; a hang is ended by the alarm
+        signal.alarm(120)
+        try:
+            ok = triangle_set(ridt.Delaunay(pts, threads=2).simplices) == want
+        except BaseException:
+            ok = False
+        os._exit(0 if ok else 1)
+    _, status = os.waitpid(pid, 0)
+    assert os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0
+
+
 def test_gil_is_released_while_triangulating():
     # A Python thread keeps counting while the main thread is inside the library.
     pts = np.random.default_rng(1).random((1_500_000, 2))
