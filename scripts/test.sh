@@ -43,7 +43,7 @@ echo "== ThreadSanitizer: the threaded tests"
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=thread \
   -DRIDT_BUILD_BENCH=OFF -DRIDT_BUILD_TOOLS=OFF >/dev/null
 cmake --build build-tsan -j "$jobs" --target ridt_thread_tests
-TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 build-tsan/tests/ridt_thread_tests
+TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:die_after_fork=0 build-tsan/tests/ridt_thread_tests
 
 echo "== Install and find_package(ridt)"
 rm -rf build/install build/consumer

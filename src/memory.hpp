@@ -94,14 +94,16 @@ class Reservation {
 /// Below 1 MiB it does nothing.
 void make_present(void* data, std::size_t bytes, unsigned threads);
 
-/// `a` sized to n (zeros), its storage made present by up to `threads` threads first.
+/// `a` resized to n (new elements zero), the storage of the new elements made present by up
+/// to `threads` threads first.
 template <typename T>
 void resize_present(std::vector<T>& a, std::size_t n, unsigned threads) {
-  if (n > a.capacity()) {
-    std::vector<T>().swap(a);
-    a.reserve(n);
-    make_present(a.data(), n * sizeof(T), threads);
+  if (n <= a.size()) {
+    a.resize(n);
+    return;
   }
+  a.reserve(n);
+  make_present(a.data() + a.size(), (n - a.size()) * sizeof(T), threads);
   a.resize(n);
 }
 

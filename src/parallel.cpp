@@ -1,7 +1,8 @@
 // The threads that on_threads parks between calls (parallel.hpp).
 #include "parallel.hpp"
 
-#include <unistd.h>
+#include <pthread.h>
+#include <signal.h>
 
 #include <atomic>
 #include <cstdint>
@@ -14,18 +15,16 @@ namespace {
 constexpr unsigned kMostParked = 256;
 
 thread_local bool tl_parked = false;  // this thread is one of the pool's
+thread_local bool tl_holding = false;  // this thread is running a call on the pool's threads
 
 class Pool {
  public:
   bool run(unsigned count, TaskRef task) {
-    if (tl_parked || count - 1 > kMostParked) return false;
+    // A part that calls again, on a parked thread or on the caller's (which holds the mutex,
+    // and may not try it again), starts threads of its own.
+    if (tl_parked || tl_holding || count - 1 > kMostParked) return false;
     const std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
     if (!lock.owns_lock()) return false;  // another call has them: it starts its own
-    if (pid_ != ::getpid()) {
-      // A child of fork() has none of the parent's threads: it parks its own.
-      workers_.clear();
-      pid_ = ::getpid();
-    }
     const unsigned helpers = count - 1;
     try {
       while (workers_.size() < helpers) start_one();
@@ -40,11 +39,13 @@ class Pool {
       workers_[i]->generation.notify_one();
     }
     std::exception_ptr failure;
+    tl_holding = true;
     try {
       task(0);
     } catch (...) {  // the others still read `task`'s body: wait for them first
       failure = std::current_exception();
     }
+    tl_holding = false;
     // Acquire: all the workers wrote, before the caller reads it.
     for (std::uint32_t left; (left = pending_.load(std::memory_order_acquire)) != 0;)
       pending_.wait(left, std::memory_order_acquire);
@@ -61,14 +62,24 @@ class Pool {
     workers_.push_back(std::make_unique<Worker>());
     Worker* w = workers_.back().get();
     const auto index = static_cast<unsigned>(workers_.size());
+    // A parked thread takes no signal sent to the process: those are the application's
+    // threads' to take, whichever thread first made the pool. (A new thread starts with its
+    // creator's mask, set back at once.)
+    sigset_t all, before;
+    sigfillset(&all);
+    for (const int fault : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGTRAP, SIGABRT, SIGSYS})
+      sigdelset(&all, fault);  // raised by the thread itself: its handler must still run
+    pthread_sigmask(SIG_SETMASK, &all, &before);
     try {
       // Detached, and the pool is never destroyed: a parked thread at the process's exit
       // holds nothing that exit would wait for or free under it.
       std::thread([this, w, index] { park(*w, index); }).detach();
     } catch (...) {
+      pthread_sigmask(SIG_SETMASK, &before, nullptr);
       workers_.pop_back();
       throw;
     }
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
   }
 
   void park(Worker& w, unsigned index) {
@@ -82,17 +93,29 @@ class Pool {
   }
 
   std::mutex mutex_;  // held by the call that uses the workers
-  pid_t pid_ = ::getpid();
   std::vector<std::unique_ptr<Worker>> workers_;
   TaskRef task_{nullptr, nullptr};
   std::atomic<std::uint32_t> pending_{0};  // workers still running the task
 };
 
+// The process's pool. A child of fork() has none of its parent's threads, and its copy of the
+// pool may even be held by a call that was running in the parent: the child starts from a
+// new pool (the old one is left as it is, never freed), set while the child still has one
+// thread.
+Pool* g_pool = nullptr;
+
+Pool& pool() {
+  static const bool made = [] {
+    g_pool = new Pool;
+    pthread_atfork(nullptr, nullptr, [] { g_pool = new Pool; });
+    return true;
+  }();
+  (void)made;
+  return *g_pool;
+}
+
 }  // namespace
 
-bool run_parked(unsigned count, TaskRef task) {
-  static Pool* const pool = new Pool;  // never destroyed (see start_one)
-  return pool->run(count, task);
-}
+bool run_parked(unsigned count, TaskRef task) { return pool().run(count, task); }
 
 }  // namespace ridt::detail

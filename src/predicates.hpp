@@ -161,8 +161,9 @@ inline Extent extent_of(std::span<const Point> points) {
 /// changes the sign of no predicate, and is exact while every coordinate stays normal. Returns
 /// the k that brings half the larger side of the points' bounding box into [1/2, 1) when it
 /// lies outside [low, high] and that scaling is exact, else 0 (leave the points as they are;
-/// no points: 0). `e` is the points' extent, of finite coordinates.
+/// no points, or a coordinate that is not finite: 0). `e` is the points' extent.
 inline int exact_scale_exponent(const Extent& e, double low = 0x1p-200, double high = 0x1p200) {
+  if (!e.finite) return 0;
   const double half = std::max(e.x1 / 2 - e.x0 / 2, e.y1 / 2 - e.y0 / 2);  // halves cannot overflow
   if (!(half > 0) || (half >= low && half <= high)) return 0;
   int exponent = 0;

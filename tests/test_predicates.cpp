@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "predicates.hpp"
 
@@ -66,6 +67,46 @@ TEST(Orient2d, IntegersNear2To53) {
   EXPECT_EQ(orient2d({c, c}, {c + 3, c + 3}, {c + 7, c + 7}), 0);
   EXPECT_EQ(orient2d({c, c}, {c + 3, c + 3}, {c + 7, c + 8}), 1);
   EXPECT_EQ(orient2d({c, c}, {c + 3, c + 3}, {c + 8, c + 7}), -1);
+}
+
+// The exponent that brings the points' box to about 1, where that is exact; 0 for boxes
+// already in range, for no points, one point or a coordinate that is not finite. An extent
+// merged from parts equals the whole one's.
+TEST(ExactScale, ExponentFromTheExtent) {
+  const std::vector<Point> tiny = {{1e-300, 2e-300}, {3e-300, -1e-300}};
+  const int k = exact_scale_exponent(tiny);
+  EXPECT_GT(k, 900);
+  EXPECT_LT(std::ldexp(3e-300, k), 4.0);
+  EXPECT_GE(std::ldexp(2e-300, k), 0.5);
+  EXPECT_LT(exact_scale_exponent(std::vector<Point>{{1e300, 0}, {-1e300, 5e299}}), -900);
+  EXPECT_EQ(exact_scale_exponent(std::vector<Point>{{0.5, 2}, {1, 3}}), 0);
+  EXPECT_EQ(exact_scale_exponent(std::vector<Point>{}), 0);
+  EXPECT_EQ(exact_scale_exponent(std::vector<Point>{{1e-300, 1e-300}}), 0);
+  EXPECT_EQ(exact_scale_exponent(std::vector<Point>{{0, 0}, {0, 0}}), 0);
+  // Scaling would make the subnormal coordinate's neighbour lose bits: no scale.
+  EXPECT_EQ(exact_scale_exponent(std::vector<Point>{{1e200, 0}, {-1e200, 4.9e-324}}), 0);
+  for (const std::size_t bad : {0u, 1u}) {
+    std::vector<Point> pts = tiny;
+    pts[bad].x = std::nan("");
+    EXPECT_EQ(exact_scale_exponent(pts), 0) << bad;
+    EXPECT_FALSE(extent_of(pts).finite);
+    pts[bad].x = -INFINITY;
+    EXPECT_FALSE(extent_of(pts).finite);
+  }
+  std::vector<Point> many;
+  for (int i = 0; i < 1000; ++i) many.push_back({std::ldexp(1.0 + i, -700), std::ldexp(500.0 - i, -690)});
+  Extent parts;
+  for (std::size_t b = 0; b < many.size(); b += 333)
+    parts.add(extent_of(std::span<const Point>(many).subspan(b, std::min<std::size_t>(333, many.size() - b))));
+  const Extent whole = extent_of(many);
+  EXPECT_EQ(parts.x0, whole.x0);
+  EXPECT_EQ(parts.x1, whole.x1);
+  EXPECT_EQ(parts.y0, whole.y0);
+  EXPECT_EQ(parts.y1, whole.y1);
+  EXPECT_EQ(parts.smallest, whole.smallest);
+  EXPECT_EQ(parts.largest, whole.largest);
+  EXPECT_EQ(exact_scale_exponent(parts), exact_scale_exponent(many));
+  EXPECT_NE(exact_scale_exponent(many), 0);
 }
 
 TEST(Incircle, UnitCircleExactAndOneUlpOff) {

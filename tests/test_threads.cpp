@@ -502,9 +502,11 @@ TEST(ParkedThreads, EveryPartRunsOnceNestedAndConcurrent) {
 }
 
 // A child of fork() has none of its parent's threads: its calls park threads of its own, and
-// a triangulation there gives the parent's triangles.
+// a triangulation there gives the parent's triangles. Large enough for every part to run on
+// threads under the sanitizers too (ThreadSanitizer then needs die_after_fork=0: by default it
+// ends a child of a threaded process that starts a thread).
 TEST(ParkedThreads, AForkedChildParksItsOwn) {
-  const std::vector<Point> pts = generate(Distribution::Uniform, kN, 3);
+  const std::vector<Point> pts = generate(Distribution::Uniform, 60000, 3);
   Options o;
   o.method = Method::Partition;
   o.threads = 3;
