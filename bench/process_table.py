@@ -50,6 +50,13 @@ def machine():
 
 
 def compiler(build):
+    """The compiler that built the tool in `build`, as `ridt --version` says, else CMake's cache."""
+    try:
+        v = subprocess.run([os.path.join(build, "ridt"), "--version"], capture_output=True, text=True)
+        if v.returncode == 0 and v.stdout.strip():
+            return v.stdout.strip()
+    except OSError:
+        pass
     try:
         for line in open(os.path.join(build, "CMakeCache.txt")):
             if line.startswith("CMAKE_CXX_COMPILER:"):

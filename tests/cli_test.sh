@@ -19,6 +19,10 @@ stderr_has() { if grep -q -- "$1" "$dir/err"; then pass; else fail "stderr lacks
 stdout_has() { if grep -q -- "$1" "$dir/out"; then pass; else fail "stdout lacks '$1'"; cat "$dir/out"; fi; }
 absent() { if [ ! -e "$1" ]; then pass; else fail "$1 should not exist"; fi; }
 
+# The version names the release and the compiler; no subcommand is needed for it.
+expect 0 "--version" -- "$ridt" --version
+stdout_has "^ridt [0-9][0-9.]* (.*, assertions o[nf]*)$"
+
 # Every distribution, every point format, checked.
 for d in uniform normal grid clusters; do
   for ext in txt node bin; do

@@ -351,6 +351,23 @@ int run_interpolate(const InterpolateArgs& a) {
   return 0;
 }
 
+/// "ridt VERSION (COMPILER, assertions on|off)": what benchmark pages record of the binary.
+std::string version() {
+#if defined(__clang__)
+  const std::string compiler = std::string("clang ") + __clang_version__;
+#elif defined(__GNUC__)
+  const std::string compiler = std::string("g++ ") + __VERSION__;
+#else
+  const std::string compiler = "unknown compiler";
+#endif
+#ifdef NDEBUG
+  const char* asserts = "assertions off";
+#else
+  const char* asserts = "assertions on";
+#endif
+  return std::string("ridt ") + RIDT_VERSION + " (" + compiler + ", " + asserts + ")";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -358,6 +375,7 @@ int main(int argc, char** argv) {
   ridt::set_memory_cache_limit(0);
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", version());
 
   TriangulateArgs ta;
   CLI::App* tri = app.add_subcommand("triangulate", "triangulate a point file");
@@ -439,6 +457,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "ridt: error: %s\nrun 'ridt --help' for usage\n", e.what());
