@@ -201,7 +201,22 @@ int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d
 
 int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
   const int s = incircle_hard(a, b, c, d);
-  if (s != 0) return s;
+  return s != 0 ? s : incircle_tie(a, b, c, d);
+}
+
+bool on_small_lattice(const Point* points, std::uint32_t n) {
+  if (n == 0) return false;
+  double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Point& p = points[i];
+    if (!small_integer(p.x) || !small_integer(p.y)) return false;
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    if (x1 - x0 > 0x1p12 || y1 - y0 > 0x1p12) return false;
+  }
+  return true;
+}
+
+int incircle_tie(const Point& a, const Point& b, const Point& c, const Point& d) {
   // Cofactors of the lifted coordinate in rows a, b, c, d of det[x y z 1].
   struct Row {
     const Point* p;

@@ -181,6 +181,23 @@ inline bool lex_less(const Point& a, const Point& b) {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
 
+/// Whether every coordinate of the n points is an integer (of magnitude below 2^52) and their
+/// bounding box is at most 2^12 wide and high, as a grid's often is. Then every difference of
+/// coordinates, product and sum in orient2d_lattice and incircle_sos_lattice is an integer
+/// below 2^53, computed exactly: no filter and no error bound is needed. Stops at the first
+/// point that is not such, so other inputs pay one test.
+bool on_small_lattice(const Point* points, std::uint32_t n);
+
+/// orient2d for points on a small lattice (on_small_lattice): the determinant is exact.
+inline int orient2d_lattice(const Point& a, const Point& b, const Point& c) {
+  const double det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+  return (det > 0) - (det < 0);
+}
+
+/// The perturbed incircle's sign when the exact determinant is 0 (a, b, c, d cocircular): the
+/// rule described at incircle_sos below.
+int incircle_tie(const Point& a, const Point& b, const Point& c, const Point& d);
+
 /// incircle with Simulation of Simplicity: never 0 when (a, b, c) is a proper
 /// counter-clockwise triangle and d differs from a, b and c.
 ///
@@ -194,6 +211,20 @@ int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Poin
 inline int incircle_sos(const Point& a, const Point& b, const Point& c, const Point& d) {
   const int s = incircle_filter(a, b, c, d);
   return s != 0 ? s : incircle_sos_hard(a, b, c, d);
+}
+
+/// incircle_sos for points on a small lattice (on_small_lattice): the determinant is exact, so
+/// its sign answers, and the perturbation only where it is 0. A grid's cocircular squares make
+/// that every other test; through the filter each cost a failed bound and an exactness check.
+inline int incircle_sos_lattice(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double adx = a.x - d.x, ady = a.y - d.y;
+  const double bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+                     (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+                     (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  if (det != 0) return det > 0 ? 1 : -1;
+  return incircle_tie(a, b, c, d);
 }
 
 }  // namespace ridt::detail

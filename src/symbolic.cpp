@@ -66,4 +66,14 @@ int Vertices::incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) 
   }
 }
 
+int Vertices::orient_special(VertexId a, VertexId b, VertexId c) const {
+  if (std::max(a, std::max(b, c)) >= first_symbolic_) return orient_symbolic(a, b, c);
+  return orient2d_lattice(points_[a], points_[b], points_[c]);
+}
+
+int Vertices::incircle_special(VertexId a, VertexId b, VertexId c, VertexId p) const {
+  if (std::max(a, std::max(b, c)) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
+  return incircle_sos_lattice(points_[a], points_[b], points_[c], points_[p]);
+}
+
 }  // namespace ridt::detail

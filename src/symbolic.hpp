@@ -25,7 +25,8 @@ class Vertices {
   /// `points` holds n + 3 points: the n vertices, then the three bounding ones (read only when
   /// `symbolic` is false).
   Vertices(const Point* points, std::uint32_t n, bool symbolic)
-      : points_(points), n_(n), first_symbolic_(symbolic ? n : 0xffffffffu) {}
+      : points_(points), n_(n), first_symbolic_(symbolic ? n : 0xffffffffu),
+        special_(symbolic && on_small_lattice(points, n) ? 0 : first_symbolic_) {}
 
   std::uint32_t n() const { return n_; }
   const Point& operator[](VertexId v) const { return points_[v]; }
@@ -35,29 +36,33 @@ class Vertices {
 
   /// +1 counter-clockwise, -1 clockwise, 0 collinear (never 0 with a symbolic vertex).
   int orient(VertexId a, VertexId b, VertexId c) const {
-    if (std::max(a, std::max(b, c)) >= first_symbolic_) return orient_symbolic(a, b, c);
+    if (std::max(a, std::max(b, c)) >= special_) return orient_special(a, b, c);
     return orient2d(points_[a], points_[b], points_[c]);
   }
   /// +1 if point p lies inside the circle of the counter-clockwise triangle (a, b, c), -1
   /// outside; never 0 (symbolic perturbation). p is never a bounding vertex.
   int incircle(VertexId a, VertexId b, VertexId c, VertexId p) const {
-    if (std::max(a, std::max(b, c)) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
+    if (std::max(a, std::max(b, c)) >= special_) return incircle_special(a, b, c, p);
     return incircle_sos(points_[a], points_[b], points_[c], points_[p]);
   }
 
   /// The same with c's point already at hand (the walk's and the cavity's point, kept in
   /// registers across their tests).
   int orient(VertexId a, VertexId b, VertexId c, const Point& pc) const {
-    if (std::max(a, b) >= first_symbolic_) return orient_symbolic(a, b, c);
+    if (std::max(a, b) >= special_) return orient_special(a, b, c);
     return orient2d(points_[a], points_[b], pc);
   }
   int incircle(VertexId a, VertexId b, VertexId c, VertexId p, const Point& pp) const {
-    if (std::max(a, std::max(b, c)) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
+    if (std::max(a, std::max(b, c)) >= special_) return incircle_special(a, b, c, p);
     return incircle_sos(points_[a], points_[b], points_[c], pp);
   }
 
   int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
   int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;
+  /// The predicates where a vertex id reaches special_: the symbolic rules for a bounding
+  /// vertex, else the points' lattice forms.
+  int orient_special(VertexId a, VertexId b, VertexId c) const;
+  int incircle_special(VertexId a, VertexId b, VertexId c, VertexId p) const;
 
  private:
   const Point* points_ = nullptr;
@@ -65,6 +70,12 @@ class Vertices {
   // n when the bounding vertices are symbolic, else past every vertex id: the predicates take
   // the symbolic rules exactly when a vertex id reaches it (one comparison, on every test).
   std::uint32_t first_symbolic_ = 0xffffffffu;
+  // Where the predicates leave their common path, on the same one comparison: first_symbolic_,
+  // or 0 when every point lies on a small lattice (on_small_lattice), whose predicates compute
+  // exactly without a filter (a grid's cocircular squares then skip the filter's failed bound
+  // and the exactness check, every other incircle test). Only with symbolic bounding
+  // vertices: the paper's finite ones lie far off any such lattice.
+  std::uint32_t special_ = 0xffffffffu;
 };
 
 }  // namespace ridt::detail

@@ -245,5 +245,43 @@ TEST(IncircleSos, AgreesWithExactWhenNotCocircular) {
   EXPECT_EQ(incircle_sos(a, b, c, {9, 9}), -1);
 }
 
+TEST(Lattice, WhichPointSetsQualify) {
+  const std::vector<Point> grid = {{0, 0}, {1, 0}, {4096, 4096}, {-3, 7}};
+  EXPECT_TRUE(on_small_lattice(grid.data(), 3));
+  EXPECT_FALSE(on_small_lattice(grid.data(), 4));  // the box is 4099 wide
+  const std::vector<Point> offset = {{1e15, -1e15}, {1e15 + 4096, -1e15 + 1}};
+  EXPECT_TRUE(on_small_lattice(offset.data(), 2));  // far from 0, but integers in a small box
+  const std::vector<Point> half = {{0, 0}, {0.5, 1}};
+  EXPECT_FALSE(on_small_lattice(half.data(), 2));
+  const std::vector<Point> big = {{0x1p52, 0}, {0x1p52 + 2, 0}};
+  EXPECT_FALSE(on_small_lattice(big.data(), 2));  // differences of such are not always exact
+  EXPECT_FALSE(on_small_lattice(grid.data(), 0));
+}
+
+TEST(Lattice, PredicatesAgreeWithTheFilteredOnes) {
+  // Every quadruple of a 5 x 5 grid within a 4096 box: many collinear triples and cocircular
+  // quadruples, the cases where the lattice forms skip the filter.
+  std::vector<Point> pts;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j) pts.push_back({i * 1023.0 - 2000, j * 1024.0 + 1e12});
+  ASSERT_TRUE(on_small_lattice(pts.data(), static_cast<std::uint32_t>(pts.size())));
+  long ties = 0, collinear = 0;
+  for (const Point& a : pts)
+    for (const Point& b : pts)
+      for (const Point& c : pts) {
+        const int o = orient2d(a, b, c);
+        ASSERT_EQ(orient2d_lattice(a, b, c), o);
+        collinear += o == 0;
+        if (o <= 0) continue;
+        for (const Point& d : pts) {
+          if (d == a || d == b || d == c) continue;
+          ties += incircle(a, b, c, d) == 0;
+          ASSERT_EQ(incircle_sos_lattice(a, b, c, d), incircle_sos(a, b, c, d));
+        }
+      }
+  EXPECT_GT(ties, 0);
+  EXPECT_GT(collinear, 0);
+}
+
 }  // namespace
 }  // namespace ridt::detail
