@@ -5,9 +5,14 @@
 #
 #   scripts/scaling.sh [--build DIR] [--out DIR] [--quick]
 #
-# --build DIR: time the `ridt` and `ridt_cgal_triangulate` already in DIR (for a machine without
-#   the build's dependencies: build them elsewhere and link them statically, as docs/scaling.md
-#   says); without it, builds them in build/report first (scripts/deps.sh bench installs what it needs).
+# --build DIR: time the `ridt` and `ridt_cgal_triangulate` already in DIR; without it, builds
+#   them in build/report first (scripts/deps.sh bench installs what it needs). For a machine
+#   without the build's dependencies, link both statically where they are, then copy DIR there:
+#     L=/usr/lib/x86_64-linux-gnu; cmake -S . -B build/static -G Ninja -DCMAKE_BUILD_TYPE=Release \
+#       -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=ON -DRIDT_BUILD_PYTHON=OFF -DRIDT_BUILD_MPI=OFF \
+#       -DCMAKE_EXE_LINKER_FLAGS=-static -DPNG_LIBRARY=$L/libpng16.a -DZLIB_LIBRARY=$L/libz.a \
+#       -DGMP_LIBRARY_RELEASE=$L/libgmp.a -DGMPXX_LIBRARIES=$L/libgmpxx.a -DMPFR_LIBRARIES=$L/libmpfr.a
+#     cmake --build build/static --target ridt_tool ridt_cgal_triangulate
 # --out DIR: write the page there instead of docs/ (its results/ beside it).
 # --quick: 10^5 points, 2 repetitions: tries the pipeline in a minute.
 # Threads: 1, 2, 4, ... up to the machine's hardware threads, and that count. Run it with nothing
