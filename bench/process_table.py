@@ -49,6 +49,16 @@ def machine():
     return f"{cpu}, {os.cpu_count()} cores, {mem:.0f} GiB, {platform.system()} {platform.release()}"
 
 
+def tools(build):
+    """The paths of `ridt` and `ridt_cgal_triangulate` in `build`; exits when one is missing."""
+    ridt = os.path.join(build, "ridt")
+    cgal = os.path.join(build, "ridt_cgal_triangulate")
+    for tool in (ridt, cgal):
+        if not os.access(tool, os.X_OK):
+            sys.exit(f"{tool} is missing: build it first (cmake --build {build})")
+    return ridt, cgal
+
+
 def compiler(build):
     """The compiler that built the tool in `build`, as `ridt --version` says, else CMake's cache."""
     try:
@@ -76,11 +86,7 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--out", default=None, help="Markdown file (a .csv beside it)")
     a = ap.parse_args()
-    ridt = os.path.join(a.build, "ridt")
-    cgal = os.path.join(a.build, "ridt_cgal_triangulate")
-    for tool in (ridt, cgal):
-        if not os.access(tool, os.X_OK):
-            sys.exit(f"{tool} is missing: build it first (cmake --build {a.build})")
+    ridt, cgal = tools(a.build)
     t = str(a.threads)
     codes = [
         ("CGAL range insert", lambda f: [cgal, f]),

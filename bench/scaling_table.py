@@ -29,7 +29,7 @@ import sys
 import tempfile
 import time
 
-from process_table import compiler, machine
+from process_table import compiler, machine, tools
 
 DAG_METHODS = {"optimistic", "pessimistic", "batch"}
 
@@ -80,11 +80,7 @@ def main():
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--out", default=None, help="Markdown page; results/scaling.csv beside it")
     a = ap.parse_args()
-    ridt = os.path.join(a.build, "ridt")
-    cgal = os.path.join(a.build, "ridt_cgal_triangulate")
-    for tool in (ridt, cgal):
-        if not os.access(tool, os.X_OK):
-            sys.exit(f"{tool} is missing: build it first (cmake --build {a.build})")
+    ridt, cgal = tools(a.build)
 
     runs, summary = [], []
     with tempfile.TemporaryDirectory() as tmp:
