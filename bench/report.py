@@ -101,7 +101,7 @@ def process_section(results):
         "along a curve. Ratio: the median over repetitions of ridt's time over CGAL's in the same "
         "repetition (below 1: ridt is faster); B/pt: the process's peak resident memory a point, the "
         "input's 16 bytes included. Spread and medians: [results/process.md](results/process.md).\n\n"
-        + table(header, body, ["---:", "---"] + ["---:"] * (len(header) - 2)) + "\n"
+        + table(header, body, ["---:", "---"] + ["---:"] * (len(header) - 2)) + "\n\n"
         "This machine's two cores are shared with others, so its 2-thread figures are noisy. "
         "[scaling.md](scaling.md), written by `scripts/scaling.sh` on a 16-core machine with nothing "
         "else running, has every method on 1 to 16 threads at 10^6 and 10^7 points, and "
