@@ -81,9 +81,10 @@ run interpolate env PYTHONPATH="$build/python" "$py" bench/interpolate_table.py 
 run plots "$py" bench/plot_threads.py "$tmp/threads.csv" "$tmp"
 run plots_root "$py" bench/plot_threads.py "$tmp/table3.csv" "$tmp" root_
 
-# Only now, with every part measured, replace what the last report wrote.
-rm -rf "$out"
+# Only now, with every part measured, replace what the last report wrote (scaling*, which
+# scripts/scaling.sh writes on a many-core machine, stays).
 mkdir -p "$out"
+find "$out" -maxdepth 1 -type f ! -name 'scaling*' -delete
 cp "$tmp"/*.txt "$tmp"/*.csv "$tmp"/*.md "$tmp"/*.png "$out"/
 rm -f "$out/commands.txt" "$out/plots.txt" "$out/plots_root.txt"
 sed -i "s#$tmp#$out#g" "$commands"
