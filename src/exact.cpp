@@ -184,12 +184,7 @@ int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d
   const double m = std::max({std::fabs(a.x - d.x), std::fabs(a.y - d.y), std::fabs(b.x - d.x),
                              std::fabs(b.y - d.y), std::fabs(c.x - d.x), std::fabs(c.y - d.y)});
   if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, m, 0x1p12)) {
-    // Every difference, product and sum below is an exact integer.
-    const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
-    const double cdx = c.x - d.x, cdy = c.y - d.y;
-    const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-                       (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-                       (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+    const double det = incircle_determinant(a, b, c, d);  // every step an exact integer
     return (det > 0) - (det < 0);
   }
   // Degree 4: within 2^+-200.

@@ -181,6 +181,16 @@ inline bool lex_less(const Point& a, const Point& b) {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
 
+/// The incircle determinant in plain double arithmetic, the differences taken from d: exact
+/// where every step is an exact integer (small integer coordinates), else only an estimate.
+inline double incircle_determinant(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double adx = a.x - d.x, ady = a.y - d.y;
+  const double bdx = b.x - d.x, bdy = b.y - d.y;
+  const double cdx = c.x - d.x, cdy = c.y - d.y;
+  return (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+         (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+}
+
 /// Whether every coordinate of the n points is an integer (of magnitude below 2^52) and their
 /// bounding box is at most 2^12 wide and high, as a grid's often is. Then every difference of
 /// coordinates, product and sum in orient2d_lattice and incircle_sos_lattice is an integer
@@ -217,12 +227,7 @@ inline int incircle_sos(const Point& a, const Point& b, const Point& c, const Po
 /// its sign answers, and the perturbation only where it is 0. A grid's cocircular squares make
 /// that every other test; through the filter each cost a failed bound and an exactness check.
 inline int incircle_sos_lattice(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const double adx = a.x - d.x, ady = a.y - d.y;
-  const double bdx = b.x - d.x, bdy = b.y - d.y;
-  const double cdx = c.x - d.x, cdy = c.y - d.y;
-  const double det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-                     (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
-                     (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  const double det = incircle_determinant(a, b, c, d);
   if (det != 0) return det > 0 ? 1 : -1;
   return incircle_tie(a, b, c, d);
 }
