@@ -109,6 +109,8 @@ class Mesh {
   TriangleId slots() const { return top_; }
   VertexId vertex(TriangleId t, int i) const { return v_[3 * std::size_t{t} + i]; }
   Link link(TriangleId t, int i) const { return link_[3 * std::size_t{t} + i]; }
+  /// The vertex of triangle_of(l) across from its edge edge_of(l).
+  VertexId opposite(Link l) const { return v_[static_cast<std::uint32_t>(l)]; }
 
   /// Walks from triangle t to one whose closure holds point p, and returns it. Each step
   /// crosses an edge that has p strictly on its far side, never the one it came in by. In a
@@ -116,13 +118,15 @@ class Mesh {
   /// relation of its triangles seen from any point is acyclic), and the symbolic bounding
   /// vertices keep it one.
   TriangleId walk(TriangleId t, VertexId p) const {
-    walk(t, p, [](TriangleId) { return true; });
+    walk(t, p, [](Link) { return true; });
     return t;
   }
-  /// The same, entering only the triangles that `owned` allows (the partition method's
-  /// regions; it is asked before a triangle's vertices are read): of the edges that have p on
+  /// The same, entering only the triangles that `owned` allows: of the edges that have p on
   /// their far side it takes one into such a triangle. True when it got there; else t is the
-  /// last triangle it reached.
+  /// last triangle it reached. `owned(l)` is asked of the triangle entered by link l (its edge
+  /// edge_of(l)), before any vertex of it but opposite(l) is read. The partition method's
+  /// regions: a thread walks from a triangle of its own, and a triangle entered from one of its
+  /// own shares two vertices with it, so the vertex opposite the edge decides.
   template <class Owned>
   bool walk(TriangleId& t, VertexId p, Owned&& owned) const {
     const Point q = vertices_[p];
@@ -135,7 +139,7 @@ class Mesh {
       bool blocked = false;
       for (int k = 0, i = first; k < count; ++k, i = next3(i)) {
         if (vertices_.orient(tv[next3(i)], tv[prev3(i)], p, q) < 0) {
-          if (owned(triangle_of(tl[i]))) {
+          if (owned(tl[i])) {
             out = i;
             break;
           }
@@ -162,7 +166,8 @@ class Mesh {
 
   /// Finds the cavity of p, which holds triangle t (whose closure holds p, and p is no
   /// vertex of it), into s.cavity and s.boundary. False, with nothing found, when it would
-  /// take a triangle that `owned` refuses. Reads only.
+  /// take a triangle that `owned` refuses (asked as walk asks it, of the link by which the
+  /// cavity enters the triangle from one of its own). Reads only.
   template <class Owned>
   bool find_cavity(TriangleId t, VertexId p, CavityScratch& s, Owned&& owned) const {
     const Point q = vertices_[p];
@@ -195,8 +200,8 @@ class Mesh {
       const Link e = stack[--top];
       const Link l = link_[e];
       if (inside[top]) {
+        if (!owned(l)) return false;
         const TriangleId u = triangle_of(l);
-        if (!owned(u)) return false;
         if (size + 1 + 2 > s.cavity.size()) {  // rare: a large cavity
           s.make_room(size + 1);
           cavity = s.cavity.data(), boundary = s.boundary.data(), stack = s.stack.data(), inside = s.inside.data();
@@ -249,7 +254,7 @@ class Mesh {
   VertexId insert(VertexId p, TriangleId& last, CavityScratch& s, SlotPool& pool) {
     last = walk(last, p);
     if (const VertexId hit = coincident(last, p); hit != kNoVertex) return hit;
-    find_cavity(last, p, s, [](TriangleId) { return true; });
+    find_cavity(last, p, s, [](Link) { return true; });
     last = fill_cavity(p, s, pool);
     return kNoVertex;
   }

@@ -6,7 +6,9 @@
 // split the plane into regions, and every vertex (old or new) belongs to the thread whose
 // region holds it. A thread inserts a point of its stretch only when every triangle its walk
 // enters and every triangle of its cavity has all three vertices in its region; else it puts
-// the point off. Then:
+// the point off. Its walks start in a triangle of its own, and every triangle they enter, or
+// its cavity takes, shares an edge with one already its own: only the vertex across that
+// edge is tested. Then:
 //
 //   - a triangle a thread changes has all its vertices in the thread's region, and the new
 //     ones too (the point and the cavity's boundary edges), so no two threads write one
@@ -172,6 +174,12 @@ class Partition {
     return (std::max(a, std::max(b, c)) < n_) & r.holds(key_[a]) & r.holds(key_[b]) & r.holds(key_[c]);
   }
 
+  // Whether vertex v is in region r.
+  bool owns_vertex(const Range& r, VertexId v) const { return (v < n_) & r.holds(key_[v]); }
+  // Whether the triangle entered by link l from one with all its vertices in region r has all
+  // of them there too (Mesh::walk's `owned`).
+  bool enters(const Range& r, Link l) const { return owns_vertex(r, mesh_.opposite(l)); }
+
   // Whether region r's triangles reachable from t through the region number some dozens: a
   // thread that starts in a small pocket of its region cut off by the border would put off
   // every point. Reads only triangles of r and their neighbours.
@@ -244,7 +252,7 @@ class Partition {
     // Before the threads start, with the mesh at rest: each thread's start, and slots for all
     // its points (two a point inserted), from a range for the whole round.
     const TriangleId base = mesh_.grow(2 * m);
-    const auto anywhere = [](TriangleId) { return true; };
+    const auto anywhere = [](Link) { return true; };
     std::vector<Stretch> stretch(threads_);
     std::vector<std::pair<VertexId, VertexId>> held;
     for (unsigned i = 0; i < threads_; ++i) {
@@ -367,7 +375,7 @@ class Partition {
     // From where its next walk starts, along a walk to the part it gives; else, where the region's
     // shape blocks that walk, from a triangle deep in the part found by a search through its
     // region.
-    const auto held = [&](TriangleId u) { return owns(s.range, u); };
+    const auto held = [&](Link l) { return enters(s.range, l); };
     if (ok && !find_start(held, give, a, b, t, from, w.seen)) {
       t = reach(s.range, give, w.last, w.seen);
       ok = t != kNoTriangle && find_start(held, give, a, b, t, from, w.seen);
@@ -539,7 +547,7 @@ class Partition {
       if (stop_.load(std::memory_order_relaxed)) return false;
       if (i == 0) progress_(before_ + inserted_.load(std::memory_order_relaxed));
     }
-    auto mine = [&](TriangleId t) { return owns(r, t); };
+    auto mine = [&](Link l) { return enters(r, l); };
     // A point put off leaves the next walk to start where this one stopped, in the region and
     // nearer the points to come than the last insertion.
     if (!r.holds(key_[p]) || !mesh_.walk(w.last, p, mine)) {
