@@ -1,6 +1,7 @@
 // The walking kernel's mesh, its serial driver and its finish (cavity.hpp).
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <memory>
 #include <new>
@@ -20,9 +21,15 @@ MeshArrays::MeshArrays(std::uint64_t n, unsigned threads) {
   if (n > kMaxWalkingPoints) throw InputError("too many points for the walking kernel (at most " +
                                               std::to_string(kMaxWalkingPoints) + ")");
   // 2k + 1 triangles for k points, at every step.
-  const std::size_t slots = 2 * n + 1;
-  resize_present(v, 3 * slots, threads);
-  resize_present(link, 3 * slots, threads);
+  const std::size_t size = 3 * (2 * n + 1);
+  v.reserve(size), link.reserve(size);
+  make_present(v.data(), size * sizeof(VertexId), threads);
+  make_present(link.data(), size * sizeof(Link), threads);
+  // A vector's new elements are zeroed, on one thread: each array on its own, side by side.
+  on_threads(threads >= 2 ? 2 : 1, [&](unsigned w) {
+    if (w == 0) v.resize(size);
+    if (w == 1 || threads < 2) link.resize(size);
+  });
 }
 
 std::span<std::uint64_t> MeshArrays::words() {
@@ -53,7 +60,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-constexpr auto kAnyTriangle = [](TriangleId) { return true; };
+constexpr auto kAnyTriangle = [](Link) { return true; };
 
 }  // namespace
 
@@ -133,10 +140,13 @@ class KeptSlots {
       kept_in[w] = count;
     });
     count_ = static_cast<TriangleId>(std::accumulate(kept_in.begin(), kept_in.end(), std::uint64_t{0}));
-    for (TriangleId t = 0; t < count_; ++t)
-      if (!kept(t)) gaps_.push_back(t);
-    for (TriangleId t = count_; t < slots; ++t)
-      if (kept(t)) movers_.push_back(t);
+    // Word by word: nearly every word below count() is all kept, and few above it are.
+    for (std::size_t k = 0; 64 * k < count_; ++k)
+      for (std::uint64_t gap = ~bits_[k]; gap != 0; gap &= gap - 1)
+        if (const auto t = static_cast<TriangleId>(64 * k + std::countr_zero(gap)); t < count_) gaps_.push_back(t);
+    for (std::size_t k = count_ / 64; k < words_; ++k)
+      for (std::uint64_t kept = bits_[k]; kept != 0; kept &= kept - 1)
+        if (const auto t = static_cast<TriangleId>(64 * k + std::countr_zero(kept)); t >= count_) movers_.push_back(t);
   }
 
   TriangleId count() const { return count_; }
