@@ -127,7 +127,8 @@ class Mesh {
   /// edge_of(l)), before any vertex of it but opposite(l) is read. The partition method's
   /// regions: a thread walks from a triangle of its own, and a triangle entered from one of its
   /// own shares two vertices with it, so the vertex opposite the edge decides.
-  template <class Owned>
+  /// kLattice: the predicates' lattice forms (Vertices::lattice() must hold).
+  template <bool kLattice = false, class Owned>
   bool walk(TriangleId& t, VertexId p, Owned&& owned) const {
     const Point q = vertices_[p];
     // At first all three edges; then the two that the edge we came in by is not, in turn.
@@ -138,7 +139,7 @@ class Mesh {
       int out = 3;
       bool blocked = false;
       for (int k = 0, i = first; k < count; ++k, i = next3(i)) {
-        if (vertices_.orient(tv[next3(i)], tv[prev3(i)], p, q) < 0) {
+        if (vertices_.orient<kLattice>(tv[next3(i)], tv[prev3(i)], p, q) < 0) {
           if (owned(tl[i])) {
             out = i;
             break;
@@ -168,7 +169,7 @@ class Mesh {
   /// vertex of it), into s.cavity and s.boundary. False, with nothing found, when it would
   /// take a triangle that `owned` refuses (asked as walk asks it, of the link by which the
   /// cavity enters the triangle from one of its own). Reads only.
-  template <class Owned>
+  template <bool kLattice = false, class Owned>
   bool find_cavity(TriangleId t, VertexId p, CavityScratch& s, Owned&& owned) const {
     const Point q = vertices_[p];
     TriangleId* cavity = s.cavity.data();
@@ -185,7 +186,7 @@ class Mesh {
       const Link l = link_[e];
       if (l == kNoLink) return false;
       const VertexId* uv = v_ + 3 * std::size_t{triangle_of(l)};
-      return vertices_.incircle(uv[0], uv[1], uv[2], p, q) > 0;
+      return vertices_.incircle<kLattice>(uv[0], uv[1], uv[2], p, q) > 0;
     };
     std::size_t size = 1, edges = 0, top = 0;
     cavity[0] = t;
@@ -251,10 +252,12 @@ class Mesh {
 
   /// Inserts p with no regions: walks from `last` (left at a triangle by p), returns the
   /// vertex p coincides with (nothing inserted), else kNoVertex.
+  template <bool kLattice = false>
   VertexId insert(VertexId p, TriangleId& last, CavityScratch& s, SlotPool& pool) {
-    last = walk(last, p);
+    constexpr auto anywhere = [](Link) { return true; };
+    walk<kLattice>(last, p, anywhere);
     if (const VertexId hit = coincident(last, p); hit != kNoVertex) return hit;
-    find_cavity(last, p, s, [](Link) { return true; });
+    find_cavity<kLattice>(last, p, s, anywhere);
     last = fill_cavity(p, s, pool);
     return kNoVertex;
   }

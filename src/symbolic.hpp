@@ -47,15 +47,32 @@ class Vertices {
   }
 
   /// The same with c's point already at hand (the walk's and the cavity's point, kept in
-  /// registers across their tests).
+  /// registers across their tests; c is never a bounding vertex). kLattice: only where
+  /// lattice() holds, whose forms it then computes in line (a grid's every test takes them),
+  /// leaving the common path to the symbolic rules alone.
+  template <bool kLattice = false>
   int orient(VertexId a, VertexId b, VertexId c, const Point& pc) const {
-    if (std::max(a, b) >= special_) return orient_special(a, b, c);
-    return orient2d(points_[a], points_[b], pc);
+    if constexpr (kLattice) {
+      if (std::max(a, b) >= first_symbolic_) return orient_symbolic(a, b, c);
+      return orient2d_lattice(points_[a], points_[b], pc);
+    } else {
+      if (std::max(a, b) >= special_) return orient_special(a, b, c);
+      return orient2d(points_[a], points_[b], pc);
+    }
   }
+  template <bool kLattice = false>
   int incircle(VertexId a, VertexId b, VertexId c, VertexId p, const Point& pp) const {
-    if (std::max(a, std::max(b, c)) >= special_) return incircle_special(a, b, c, p);
-    return incircle_sos(points_[a], points_[b], points_[c], pp);
+    if constexpr (kLattice) {
+      if (std::max(a, std::max(b, c)) >= first_symbolic_) return incircle_symbolic(a, b, c, p);
+      return incircle_sos_lattice(points_[a], points_[b], points_[c], pp);
+    } else {
+      if (std::max(a, std::max(b, c)) >= special_) return incircle_special(a, b, c, p);
+      return incircle_sos(points_[a], points_[b], points_[c], pp);
+    }
   }
+  /// Whether every point lies on a small lattice (on_small_lattice), with symbolic bounding
+  /// vertices: the predicates' kLattice forms then apply.
+  bool lattice() const { return special_ == 0; }
 
   int orient_symbolic(VertexId a, VertexId b, VertexId c) const;
   int incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) const;

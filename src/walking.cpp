@@ -62,10 +62,9 @@ using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 constexpr auto kAnyTriangle = [](Link) { return true; };
 
-}  // namespace
-
-void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates, Stats& stats,
-                    Progress& progress) {
+// insert_walking with the predicates' lattice forms (kLattice) or the general ones.
+template <bool kLattice>
+void insert_all(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
   const std::uint32_t n = mesh.vertices().n();
   CavityScratch s;
   SlotPool pool;
@@ -75,7 +74,8 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
   if (!profile) {
     for (VertexId p = 0; p < n; ++p) {
       progress(p);
-      if (const VertexId hit = mesh.insert(p, last, s, pool); hit != kNoVertex) duplicates.push_back({p, hit});
+      if (const VertexId hit = mesh.insert<kLattice>(p, last, s, pool); hit != kNoVertex)
+        duplicates.push_back({p, hit});
     }
   } else {
     // Fig. 8's phases: location is the walk, legalization finding the cavity (the triangles
@@ -83,7 +83,8 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
     for (VertexId p = 0; p < n; ++p) {
       progress(p);
       const auto t0 = Clock::now();
-      const TriangleId t = mesh.walk(last, p);
+      TriangleId t = last;
+      mesh.walk<kLattice>(t, p, kAnyTriangle);
       const VertexId hit = mesh.coincident(t, p);
       const auto t1 = Clock::now();
       stats.time_locate_s += seconds(t1 - t0);
@@ -92,7 +93,7 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
         last = t;
         continue;
       }
-      mesh.find_cavity(t, p, s, kAnyTriangle);
+      mesh.find_cavity<kLattice>(t, p, s, kAnyTriangle);
       const auto t2 = Clock::now();
       stats.time_legalize_s += seconds(t2 - t1);
       last = mesh.fill_cavity(p, s, pool);
@@ -101,6 +102,16 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
   }
   mesh.give_back(pool);
   stats.flips += s.replaced;
+}
+
+}  // namespace
+
+void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates, Stats& stats,
+                    Progress& progress) {
+  if (mesh.vertices().lattice())
+    insert_all<true>(mesh, profile, duplicates, stats, progress);
+  else
+    insert_all<false>(mesh, profile, duplicates, stats, progress);
 }
 
 void Mesh::give_back(SlotPool& pool) {
