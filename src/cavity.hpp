@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -99,6 +100,9 @@ struct MeshArrays {
 
 class Mesh {
  public:
+  /// Mesh::walk's `cross` that crosses every edge.
+  static constexpr auto kAnyEdge = [](Link) { return true; };
+
   /// The mesh of the bounding triangle alone in `arrays` (made for vertices.n() points).
   Mesh(const Vertices& vertices, MeshArrays arrays);
   Mesh(const Mesh&) = delete;
@@ -118,18 +122,18 @@ class Mesh {
   /// relation of its triangles seen from any point is acyclic), and the symbolic bounding
   /// vertices keep it one.
   TriangleId walk(TriangleId t, VertexId p) const {
-    walk(t, p, [](Link) { return true; });
+    walk(t, p, kAnyEdge);
     return t;
   }
-  /// The same, entering only the triangles that `owned` allows: of the edges that have p on
-  /// their far side it takes one into such a triangle. True when it got there; else t is the
-  /// last triangle it reached. `owned(l)` is asked of the triangle entered by link l (its edge
-  /// edge_of(l)), before any vertex of it but opposite(l) is read. The partition method's
-  /// regions: a thread walks from a triangle of its own, and a triangle entered from one of its
-  /// own shares two vertices with it, so the vertex opposite the edge decides.
+  /// The same, crossing only the edges that `cross` allows: of the edges that have p on their
+  /// far side it takes one that `cross` allows, asked either of the edge's two vertices
+  /// (cross(a, b), before the link across the edge is read) or of that link (cross(l), the
+  /// triangle it enters). True when it got there; else t is the last triangle it reached.
+  /// (The partition method's regions: partition.cpp.)
   /// kLattice: the predicates' lattice forms (Vertices::lattice() must hold).
-  template <bool kLattice = false, class Owned>
-  bool walk(TriangleId& t, VertexId p, Owned&& owned) const {
+  template <bool kLattice = false, class Cross>
+  bool walk(TriangleId& t, VertexId p, Cross&& cross) const {
+    constexpr bool kByVertices = std::is_invocable_v<Cross, VertexId, VertexId>;
     const Point q = vertices_[p];
     // At first all three edges; then the two that the edge we came in by is not, in turn.
     int first = 0, count = 3;
@@ -139,8 +143,14 @@ class Mesh {
       int out = 3;
       bool blocked = false;
       for (int k = 0, i = first; k < count; ++k, i = next3(i)) {
-        if (vertices_.orient<kLattice>(tv[next3(i)], tv[prev3(i)], p, q) < 0) {
-          if (owned(tl[i])) {
+        const VertexId a = tv[next3(i)], b = tv[prev3(i)];
+        if (vertices_.orient<kLattice>(a, b, p, q) < 0) {
+          bool crossed;
+          if constexpr (kByVertices)
+            crossed = cross(a, b);
+          else
+            crossed = cross(tl[i]);
+          if (crossed) {
             out = i;
             break;
           }
@@ -167,8 +177,11 @@ class Mesh {
 
   /// Finds the cavity of p, which holds triangle t (whose closure holds p, and p is no
   /// vertex of it), into s.cavity and s.boundary. False, with nothing found, when it would
-  /// take a triangle that `owned` refuses (asked as walk asks it, of the link by which the
-  /// cavity enters the triangle from one of its own). Reads only.
+  /// take a triangle that `owned` refuses. `owned(l)` is asked of the triangle the cavity
+  /// enters by link l (its edge edge_of(l)) from one already in it, before any vertex of it
+  /// but opposite(l) is read. (The partition method: a cavity of the thread's own triangles
+  /// grows by one that shares two vertices with one of them, so the vertex opposite the edge
+  /// decides.) Reads only.
   template <bool kLattice = false, class Owned>
   bool find_cavity(TriangleId t, VertexId p, CavityScratch& s, Owned&& owned) const {
     const Point q = vertices_[p];
@@ -254,10 +267,9 @@ class Mesh {
   /// vertex p coincides with (nothing inserted), else kNoVertex.
   template <bool kLattice = false>
   VertexId insert(VertexId p, TriangleId& last, CavityScratch& s, SlotPool& pool) {
-    constexpr auto anywhere = [](Link) { return true; };
-    walk<kLattice>(last, p, anywhere);
+    walk<kLattice>(last, p, kAnyEdge);
     if (const VertexId hit = coincident(last, p); hit != kNoVertex) return hit;
-    find_cavity<kLattice>(last, p, s, anywhere);
+    find_cavity<kLattice>(last, p, s, [](Link) { return true; });
     last = fill_cavity(p, s, pool);
     return kNoVertex;
   }

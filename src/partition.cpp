@@ -4,20 +4,27 @@
 // The points come in the BRIO order, each round along a Hilbert curve, with the curve's key
 // of each vertex. A large round is cut into one stretch of the curve a thread; the cut keys
 // split the plane into regions, and every vertex (old or new) belongs to the thread whose
-// region holds it. A thread inserts a point of its stretch only when every triangle its walk
-// enters and every triangle of its cavity has all three vertices in its region; else it puts
-// the point off. Its walks start in a triangle of its own, and every triangle they enter, or
-// its cavity takes, shares an edge with one already its own: only the vertex across that
-// edge is tested. Then:
+// region holds it. A thread inserts a point of its stretch only when the triangle its walk
+// ends in and every triangle of its cavity have all three vertices in its region; else it
+// puts the point off. Its cavity starts in that triangle and grows by triangles that share
+// an edge with one already in it: only the vertex across that edge is tested. Its walk keeps
+// to such triangles of its own too, and where that stops it, goes on across edges with a
+// vertex in its region. Then:
 //
 //   - a triangle a thread changes has all its vertices in the thread's region, and the new
 //     ones too (the point and the cavity's boundary edges), so no two threads write one
 //     triangle, and a slot a thread writes holds its own triangles all through the pass;
-//   - a neighbour of such a triangle shares two of its vertices, so it is the same thread's
-//     or holds vertices of two regions: such mixed triangles no thread changes during the
-//     pass, and reading them, to test them, races with nothing;
+//   - a triangle with a vertex in a thread's region is that thread's or holds vertices of two
+//     regions: no other thread changes it during the pass, and reading it races with nothing.
+//     The triangles a walk enters (across an edge with a vertex in the region), and those a
+//     cavity tests (neighbours of its own, with two vertices there), are such;
 //   - the links a thread rewrites are those of edges with both ends in its region, which only
-//     it reads.
+//     it reads: a walk reads the link across an edge with a vertex in its region, a cavity
+//     those of its own triangles' edges.
+//
+// On clustered points a walk between two clusters crosses the empty space between them, whose
+// triangles join clusters of several regions: a walk kept to the region's own triangles
+// stopped there, and such walks were nine in ten of the points put off.
 //
 // So the threads share the mesh with plain loads and stores, and the passes are ordered by
 // the joins between them.
@@ -179,8 +186,18 @@ class Partition {
   // Whether vertex v is in region r.
   bool owns_vertex(const Range& r, VertexId v) const { return (v < n_) & r.holds(key_[v]); }
   // Whether the triangle entered by link l from one with all its vertices in region r has all
-  // of them there too (Mesh::walk's `owned`).
+  // of them there too (Mesh::find_cavity's `owned`).
   bool enters(const Range& r, Link l) const { return owns_vertex(r, mesh_.opposite(l)); }
+  // Whether a walk in region r may cross the edge a b: one of its vertices is in r.
+  bool crosses(const Range& r, VertexId a, VertexId b) const { return owns_vertex(r, a) | owns_vertex(r, b); }
+  // Mesh::walk's `cross` for a walk that enters only region r's own triangles (from one of
+  // them), and for one that crosses the edges with a vertex in r.
+  auto own_triangles(const Range& r) const {
+    return [this, &r](Link l) { return enters(r, l); };
+  }
+  auto own_edges(const Range& r) const {
+    return [this, &r](VertexId a, VertexId b) { return crosses(r, a, b); };
+  }
 
   // Whether region r's triangles reachable from t through the region number some dozens: a
   // thread that starts in a small pocket of its region cut off by the border would put off
@@ -254,7 +271,7 @@ class Partition {
     // Before the threads start, with the mesh at rest: each thread's start, and slots for all
     // its points (two a point inserted), from a range for the whole round.
     const TriangleId base = mesh_.grow(2 * m);
-    const auto anywhere = [](Link) { return true; };
+    const auto anywhere = Mesh::kAnyEdge;
     std::vector<Stretch> stretch(threads_);
     std::vector<std::pair<VertexId, VertexId>> held;
     for (unsigned i = 0; i < threads_; ++i) {
@@ -377,7 +394,7 @@ class Partition {
     // From where its next walk starts, along a walk to the part it gives; else, where the region's
     // shape blocks that walk, from a triangle deep in the part found by a search through its
     // region.
-    const auto held = [&](Link l) { return enters(s.range, l); };
+    const auto held = own_edges(s.range);
     if (ok && !find_start(held, give, a, b, t, from, w.seen)) {
       t = reach(s.range, give, w.last, w.seen);
       ok = t != kNoTriangle && find_start(held, give, a, b, t, from, w.seen);
@@ -552,13 +569,19 @@ class Partition {
       if (stop_.load(std::memory_order_relaxed)) return false;
       if (i == 0) progress_(before_ + inserted_.load(std::memory_order_relaxed));
     }
-    auto mine = [&](Link l) { return enters(r, l); };
-    // A point put off leaves the next walk to start where this one stopped, in the region and
-    // nearer the points to come than the last insertion.
-    if (!r.holds(key_[p]) || !mesh_.walk<kLattice>(w.last, p, mine)) {
-      deferred.push_back({p, w.last});
-      ++w.stats.retries;
-      return true;
+    // The walk keeps to the region's own triangles (one key read a step); where that stops
+    // it, it goes on through triangles with a vertex in the region (two), to a triangle that
+    // must be the region's. A point put off leaves the next walk to start where the first
+    // walk stopped (in the region, and nearer the points to come than the last insertion),
+    // and where the second got to as its hint.
+    if (!r.holds(key_[p]) || !mesh_.walk<kLattice>(w.last, p, own_triangles(r))) [[unlikely]] {
+      TriangleId t = w.last;
+      if (!r.holds(key_[p]) || !walk_on(r, t, p)) {
+        deferred.push_back({p, t});
+        ++w.stats.retries;
+        return true;
+      }
+      w.last = t;
     }
     const TriangleId t = w.last;
     if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
@@ -566,8 +589,8 @@ class Partition {
       ++w.done;
       return true;
     }
-    if (!mesh_.find_cavity<kLattice>(t, p, w.scratch, mine)) {
-      deferred.push_back({p, w.last});
+    if (!mesh_.find_cavity<kLattice>(t, p, w.scratch, [&](Link l) { return enters(r, l); })) {
+      deferred.push_back({p, t});
       ++w.stats.retries;
       return true;
     }
@@ -576,6 +599,12 @@ class Partition {
     ++w.stats.points;
     ++w.done;
     return true;
+  }
+
+  // The walk from t to p across edges with a vertex in region r, to a triangle of r: whether
+  // it got there (out of line: the common path has no use for it).
+  [[gnu::noinline]] bool walk_on(const Range& r, TriangleId& t, VertexId p) const {
+    return mesh_.walk<kLattice>(t, p, own_edges(r)) && owns(r, t);
   }
 
   // body(i) on each thread i, the calling one taking 0; rethrows the first failure once all

@@ -84,7 +84,7 @@ void insert_all(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates,
       progress(p);
       const auto t0 = Clock::now();
       TriangleId t = last;
-      mesh.walk<kLattice>(t, p, kAnyTriangle);
+      mesh.walk<kLattice>(t, p, Mesh::kAnyEdge);
       const VertexId hit = mesh.coincident(t, p);
       const auto t1 = Clock::now();
       stats.time_locate_s += seconds(t1 - t0);
