@@ -4,10 +4,12 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <mutex>
+#include <thread>
 
 #include "threads.hpp"
 
@@ -23,7 +25,9 @@ constexpr unsigned kMostParked = 256;
 // waker's own when the machine's cores look far apart to it (each in a cache domain of its
 // own, as on virtual machines): the two then share one core until the load balancer moves one,
 // and a run of 10^6 points on 2 threads took as long as on one, in one run of five on a
-// 16-core virtual machine. A thread that watches keeps its core.
+// 16-core virtual machine. A thread that watches keeps its core. Only while the threads of
+// the last call were no more than the machine's: more of them would take cores from those
+// still at work.
 constexpr std::chrono::microseconds kWatch{500};
 
 // Whether ready() became true within kWatch, checked all the while.
@@ -55,6 +59,8 @@ class Pool {
       return false;
     }
     task_ = task;
+    static const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    watching_.store(count <= cores, std::memory_order_relaxed);
     pending_.store(helpers, std::memory_order_relaxed);
     // Release: the task, and all the caller wrote before, to each worker that wakes.
     for (unsigned i = 0; i < helpers; ++i) {
@@ -70,7 +76,7 @@ class Pool {
     }
     tl_holding = false;
     // Acquire: all the workers wrote, before the caller reads it.
-    watch([&] { return pending_.load(std::memory_order_acquire) == 0; });
+    if (watching_.load(std::memory_order_relaxed)) watch([&] { return pending_.load(std::memory_order_acquire) == 0; });
     for (std::uint32_t left; (left = pending_.load(std::memory_order_acquire)) != 0;)
       pending_.wait(left, std::memory_order_acquire);
     if (failure) std::rethrow_exception(failure);
@@ -109,7 +115,8 @@ class Pool {
   void park(Worker& w, unsigned index) {
     tl_parked = true;
     for (std::uint32_t seen = 0;;) {
-      if (!watch([&] { return w.generation.load(std::memory_order_acquire) != seen; }))
+      if (!watching_.load(std::memory_order_relaxed) ||
+          !watch([&] { return w.generation.load(std::memory_order_acquire) != seen; }))
         w.generation.wait(seen, std::memory_order_acquire);
       seen = w.generation.load(std::memory_order_acquire);
       task_(index);  // on_threads' bodies do not throw
@@ -121,6 +128,7 @@ class Pool {
   std::vector<std::unique_ptr<Worker>> workers_;
   TaskRef task_{nullptr, nullptr};
   std::atomic<std::uint32_t> pending_{0};  // workers still running the task
+  std::atomic<bool> watching_{false};      // whether idle threads watch before they sleep (watch)
 };
 
 // The process's pool. A child of fork() has none of its parent's threads, and its copy of the
