@@ -100,8 +100,8 @@ struct MeshArrays {
 
 class Mesh {
  public:
-  /// Mesh::walk's `cross` that crosses every edge.
-  static constexpr auto kAnyEdge = [](Link) { return true; };
+  /// walk's `cross` and find_cavity's `owned` that allow every edge and triangle.
+  static constexpr auto kAnywhere = [](Link) { return true; };
 
   /// The mesh of the bounding triangle alone in `arrays` (made for vertices.n() points).
   Mesh(const Vertices& vertices, MeshArrays arrays);
@@ -122,7 +122,7 @@ class Mesh {
   /// relation of its triangles seen from any point is acyclic), and the symbolic bounding
   /// vertices keep it one.
   TriangleId walk(TriangleId t, VertexId p) const {
-    walk(t, p, kAnyEdge);
+    walk(t, p, kAnywhere);
     return t;
   }
   /// The same, crossing only the edges that `cross` allows: of the edges that have p on their
@@ -267,7 +267,7 @@ class Mesh {
   /// vertex p coincides with (nothing inserted), else kNoVertex.
   template <bool kLattice = false>
   VertexId insert(VertexId p, TriangleId& last, CavityScratch& s, SlotPool& pool) {
-    walk<kLattice>(last, p, kAnyEdge);
+    walk<kLattice>(last, p, kAnywhere);
     if (const VertexId hit = coincident(last, p); hit != kNoVertex) return hit;
     find_cavity<kLattice>(last, p, s, [](Link) { return true; });
     last = fill_cavity(p, s, pool);

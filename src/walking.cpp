@@ -60,7 +60,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-constexpr auto kAnyTriangle = [](Link) { return true; };
 
 // insert_walking with the predicates' lattice forms (kLattice) or the general ones.
 template <bool kLattice>
@@ -84,7 +83,7 @@ void insert_all(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates,
       progress(p);
       const auto t0 = Clock::now();
       TriangleId t = last;
-      mesh.walk<kLattice>(t, p, Mesh::kAnyEdge);
+      mesh.walk<kLattice>(t, p, Mesh::kAnywhere);
       const VertexId hit = mesh.coincident(t, p);
       const auto t1 = Clock::now();
       stats.time_locate_s += seconds(t1 - t0);
@@ -93,7 +92,7 @@ void insert_all(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates,
         last = t;
         continue;
       }
-      mesh.find_cavity<kLattice>(t, p, s, kAnyTriangle);
+      mesh.find_cavity<kLattice>(t, p, s, Mesh::kAnywhere);
       const auto t2 = Clock::now();
       stats.time_legalize_s += seconds(t2 - t1);
       last = mesh.fill_cavity(p, s, pool);
