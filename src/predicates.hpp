@@ -55,6 +55,19 @@ inline bool exact_in_double(std::initializer_list<double> coords, double m, doub
 }
 int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& d);
 
+/// The sign of the orientation of (a, b, c) where double precision settles it, else 0; always
+/// 0 when a coordinate is NaN (or the products overflow).
+inline int orient2d_filter(const Point& a, const Point& b, const Point& c) {
+  const double acx = a.x - c.x, bcx = b.x - c.x;
+  const double acy = a.y - c.y, bcy = b.y - c.y;
+  const double l = acx * bcy;
+  const double r = acy * bcx;
+  const double det = l - r;
+  const double bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
+  if (std::fabs(det) > bound) return det > 0 ? 1 : -1;
+  return 0;
+}
+
 /// Sign of the orientation of (a, b, c): +1 if counter-clockwise, -1 if clockwise, 0 if
 /// collinear. Exact for every finite input.
 inline int orient2d(const Point& a, const Point& b, const Point& c) {
@@ -72,7 +85,8 @@ inline int orient2d(const Point& a, const Point& b, const Point& c) {
 }
 
 /// The sign of the incircle determinant where double precision settles it (nearly always):
-/// +1 inside, -1 outside, 0 when it cannot tell.
+/// +1 inside, -1 outside, 0 when it cannot tell; always 0 when a coordinate is NaN (every
+/// comparison with the determinant fails).
 inline int incircle_filter(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double adx = a.x - d.x, ady = a.y - d.y;
   const double bdx = b.x - d.x, bdy = b.y - d.y;

@@ -66,6 +66,10 @@ int Vertices::incircle_symbolic(VertexId a, VertexId b, VertexId c, VertexId p) 
   }
 }
 
+int Vertices::orient_open(VertexId a, VertexId b, VertexId c) const { return orient(a, b, c); }
+
+int Vertices::incircle_open(VertexId a, VertexId b, VertexId c, VertexId p) const { return incircle(a, b, c, p); }
+
 int Vertices::orient_special(VertexId a, VertexId b, VertexId c) const {
   if (std::max(a, std::max(b, c)) >= first_symbolic_) return orient_symbolic(a, b, c);
   return orient2d_lattice(points_[a], points_[b], points_[c]);

@@ -117,7 +117,7 @@ detail::Block<Point> copy_in_order(std::span<const Point> points, const std::vec
       pts[v] = scale == 0 ? p : Point{std::ldexp(p.x, scale), std::ldexp(p.y, scale)};
     }
   });
-  pts[n] = pts[n + 1] = pts[n + 2] = Point{};  // symbolic: never read
+  pts[n] = pts[n + 1] = pts[n + 2] = detail::Vertices::kBoundingNaN;  // symbolic (finite: placed later)
   return pts;
 }
 

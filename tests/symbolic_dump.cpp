@@ -1,7 +1,11 @@
 // Prints the kernel's decisions for predicates that involve the symbolic bounding vertices,
 // for all small integer points; symbolic_rules.py checks each line against a concrete
-// far-away placement of the bounding vertices evaluated with exact integers.
+// far-away placement of the bounding vertices evaluated with exact integers. Each decision is
+// also asked of the walking kernel's forms (the point passed, the bounding vertices' points
+// NaN), on these lattice points and on the same points moved off the lattice by 1/2, which
+// changes no sign; it aborts where any form disagrees.
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "kernel.hpp"
@@ -14,9 +18,45 @@ int main() {
   for (int x = -2; x <= 2; ++x)
     for (int y = -2; y <= 2; ++y) pts.push_back({double(x), double(y)});
   const auto n = static_cast<VertexId>(pts.size());
+  using ridt::detail::Vertices;
   auto buffer = ridt::detail::allocate_huge<Point>(n + 3);
-  for (VertexId v = 0; v < n; ++v) buffer[v] = pts[v];
-  const ridt::detail::Kernel k(std::move(buffer), n, /*symbolic=*/true);
+  std::vector<Point> moved(n + 3, Vertices::kBoundingNaN);
+  for (VertexId v = 0; v < n; ++v) buffer[v] = pts[v], moved[v] = {pts[v].x + 0.5, pts[v].y + 0.5};
+  for (VertexId v = n; v < n + 3; ++v) buffer[v] = Vertices::kBoundingNaN;
+  const ridt::detail::Kernel kernel(std::move(buffer), n, /*symbolic=*/true);
+  const Vertices lattice(&kernel.point(0), n, true), general(moved.data(), n, true);
+  if (!lattice.lattice() || general.lattice()) {
+    std::fprintf(stderr, "the test's point sets are not what they should be\n");
+    return 1;
+  }
+  auto agree = [](bool same, const char* what, VertexId a, VertexId b, VertexId c, VertexId d) {
+    if (same) return;
+    std::fprintf(stderr, "%s(%u, %u, %u, %u): the walking kernel's forms disagree\n", what, a, b, c, d);
+    std::abort();
+  };
+  // The kernel's decision, and the same from every form that can take it (c finite).
+  struct {
+    const ridt::detail::Kernel& kernel;
+    const Vertices &lattice, &general;
+    decltype(agree) check;
+    int orient(VertexId a, VertexId b, VertexId c) const {
+      const int s = kernel.orient(a, b, c);
+      check(general.orient(a, b, c) == s, "orient", a, b, c, 0);
+      if (c < lattice.n())
+        check(lattice.orient<true>(a, b, c, lattice[c]) == s && lattice.orient<false>(a, b, c, lattice[c]) == s &&
+                  general.orient<false>(a, b, c, general[c]) == s,
+              "orient", a, b, c, 0);
+      return s;
+    }
+    int incircle(VertexId a, VertexId b, VertexId c, VertexId d) const {
+      const int s = kernel.incircle(a, b, c, d);
+      check(general.incircle(a, b, c, d) == s && lattice.incircle<true>(a, b, c, d, lattice[d]) == s &&
+                lattice.incircle<false>(a, b, c, d, lattice[d]) == s &&
+                general.incircle<false>(a, b, c, d, general[d]) == s,
+            "incircle", a, b, c, d);
+      return s;
+    }
+  } k{kernel, lattice, general, agree};
   auto at = [&](VertexId v) { return pts[v]; };
   for (VertexId p = 0; p < n; ++p)
     for (VertexId q = 0; q < n; ++q) {
