@@ -56,11 +56,13 @@ struct SlotPool {
 /// What one inserting thread keeps to itself: the cavity's triangles and boundary, the
 /// traversal's stack, counters. The arrays are used through raw pointers with room checked
 /// once a cavity triangle (a cavity of m triangles has m + 2 boundary edges, at most m + 2 of
-/// them pending on the stack, and m + 2 slots for its fan).
+/// them pending on the stack, and m + 2 slots for its fan, and one more of each for a copy
+/// of the first after the last).
 struct alignas(64) CavityScratch {
+  // A boundary edge a -> b, counter-clockwise round the cavity: b is the next edge's a.
   struct Boundary {
-    VertexId a, b;  // the edge a -> b, counter-clockwise round the cavity
-    Link outside;   // the edge's place in the triangle outside, or kNoLink
+    VertexId a;
+    Link outside;  // the edge's place in the triangle outside, or kNoLink
   };
   std::vector<TriangleId> cavity;  // the cavity's slots, then the two new ones
   std::vector<Boundary> boundary;
@@ -73,9 +75,9 @@ struct alignas(64) CavityScratch {
   CavityScratch() { make_room(64); }
   /// Room for a cavity of m triangles.
   void make_room(std::size_t m) {
-    if (m + 2 <= cavity.size()) return;
+    if (m + 3 <= cavity.size()) return;
     const std::size_t room = std::max<std::size_t>(2 * m, 64);
-    cavity.resize(room + 2), boundary.resize(room + 2), stack.resize(room + 2), inside.resize(room + 2);
+    cavity.resize(room + 3), boundary.resize(room + 3), stack.resize(room + 3), inside.resize(room + 3);
   }
 };
 
@@ -216,7 +218,7 @@ class Mesh {
       if (inside[top]) {
         if (!owned(l)) return false;
         const TriangleId u = triangle_of(l);
-        if (size + 1 + 2 > s.cavity.size()) {  // rare: a large cavity
+        if (size + 1 + 3 > s.cavity.size()) {  // rare: a large cavity
           s.make_room(size + 1);
           cavity = s.cavity.data(), boundary = s.boundary.data(), stack = s.stack.data(), inside = s.inside.data();
         }
@@ -231,8 +233,7 @@ class Mesh {
         continue;
       }
       const int i = edge_of(e);
-      const VertexId* ev = v_ + (e - i);
-      boundary[edges++] = {ev[next3(i)], ev[prev3(i)], l};
+      boundary[edges++] = {v_[e - i + next3(i)], l};
     }
     s.size = size, s.edges = edges;
     return true;
@@ -246,19 +247,24 @@ class Mesh {
     slots[s.size] = pool.take();
     slots[s.size + 1] = pool.take();
     s.replaced += s.size - 1;
-    const CavityScratch::Boundary* boundary = s.boundary.data();
+    CavityScratch::Boundary* boundary = s.boundary.data();
+    // The first slot and edge again after the last: the fan closes without a test.
+    slots[k] = slots[0];
+    boundary[k] = boundary[0];
+    TriangleId before = slots[k - 1];
     for (std::size_t i = 0; i < k; ++i) {
       const TriangleId t = slots[i];
       VertexId* tv = v_ + 3 * std::size_t{t};
       Link* tl = link_ + 3 * std::size_t{t};
       const CavityScratch::Boundary& e = boundary[i];
-      tv[0] = p, tv[1] = e.a, tv[2] = e.b;
+      tv[0] = p, tv[1] = e.a, tv[2] = boundary[i + 1].a;
       // Edge 0 (a -> b) is the boundary edge; edge 1 (b -> p) borders the next triangle of the
       // fan at its edge 2 (p -> b), and edge 2 the previous one at its edge 1.
       tl[0] = e.outside;
       if (e.outside != kNoLink) link_[e.outside] = static_cast<Link>(3 * t);
-      tl[1] = static_cast<Link>(3 * slots[i + 1 < k ? i + 1 : 0] + 2);
-      tl[2] = static_cast<Link>(3 * slots[i > 0 ? i - 1 : k - 1] + 1);
+      tl[1] = static_cast<Link>(3 * slots[i + 1] + 2);
+      tl[2] = static_cast<Link>(3 * before + 1);
+      before = t;
     }
     return slots[0];
   }
