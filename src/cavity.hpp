@@ -167,12 +167,12 @@ class Mesh {
   }
 
   /// Whether point p coincides with a vertex of triangle t (whose closure holds it): the
-  /// vertex, or kNoVertex.
+  /// vertex, or kNoVertex. (A symbolic bounding vertex's point is NaN, equal to none.)
   VertexId coincident(TriangleId t, VertexId p) const {
     const Point& q = vertices_[p];
     for (int i = 0; i < 3; ++i) {
       const VertexId w = vertex(t, i);
-      if (!vertices_.symbolic(w) && vertices_[w] == q) return w;
+      if (vertices_[w] == q) return w;
     }
     return kNoVertex;
   }
