@@ -82,6 +82,8 @@ def process_section(results):
     for r in data:
         if r["code"] not in codes and not r["code"].startswith("CGAL"):
             codes.append(r["code"])
+    serial = next((c for c in codes if c.startswith("ridt serial")), None)
+    threaded = next((c for c in codes if c.startswith("ridt partition")), None)
     by = defaultdict(dict)
     for r in data:
         by[(int(r["n"]), r["dist"])][r["code"]] = r
@@ -92,15 +94,24 @@ def process_section(results):
         for c in codes:
             r = got.get(c)
             row.append(f"{float(r['paired_ratio']):.2f} ({float(r['bytes_per_point']):.0f})" if r else "–")
+        if serial and threaded:
+            a, b = got.get(serial), got.get(threaded)
+            row.append(f"{float(a['paired_ratio']) / float(b['paired_ratio']):.2f}" if a and b else "–")
         body.append(row)
     header = ["n", "distribution", "CGAL s", "CGAL B/pt"] + [f"{c}: ratio (B/pt)" for c in codes]
+    speedup = ""
+    if serial and threaded:
+        header.append(f"{threaded[5:]} over {serial[5:]}")
+        speedup = (f"The last column: how many times faster {threaded[5:]} ran than {serial[5:]}, the ratio "
+                   "of their paired ratios. ")
     return (
         "## Whole process against CGAL\n\n"
         "Each code is one process on a `.bin` file of float64 pairs: read, triangulate, write nothing. "
         "CGAL is `Delaunay_triangulation_2` (Epick) with its range insert, which sorts the points "
         "along a curve. Ratio: the median over repetitions of ridt's time over CGAL's in the same "
         "repetition (below 1: ridt is faster); B/pt: the process's peak resident memory a point, the "
-        "input's 16 bytes included. Spread and medians: [results/process.md](results/process.md).\n\n"
+        "input's 16 bytes included. " + speedup + "Spread and medians: "
+        "[results/process.md](results/process.md).\n\n"
         + table(header, body, ["---:", "---"] + ["---:"] * (len(header) - 2)) + "\n\n"
         "This machine's two cores are shared with others, so its 2-thread figures are noisy. "
         "[scaling.md](scaling.md), written by `scripts/scaling.sh` on a 16-core machine with nothing "

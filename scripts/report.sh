@@ -5,8 +5,9 @@
 #   scripts/report.sh [--quick | --large] [--build DIR]
 #
 # --quick: sizes up to 10^5 and fewer repetitions (a few minutes), to try the pipeline; without
-# it, the paper's sizes up to 10^6 (some 30 minutes on 2 cores); --large: also 10^7 points in
-# the whole-process and Python tables (another hour: scipy takes minutes a run there). Run it on a quiet machine: every figure is a median of interleaved runs, and
+# it, the paper's sizes up to 10^6, and 10^6 and 10^7 in the whole-process table (some 45
+# minutes on 2 cores); --large: also 10^7 points in the Python table (another hour: scipy takes
+# minutes a run there). Run it on a quiet machine: every figure is a median of interleaved runs, and
 # anything else running skews them. Installs what it needs first (scripts/deps.sh bench, as
 # root): the test dependencies, Qhull, node and delaunator for the peers table.
 set -euo pipefail
@@ -49,11 +50,10 @@ else
   threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
   paper_args=(--n 1000,10000,100000,1000000 --dist uniform --reps 5 --threads 1,2)
   peers_args=(--sizes 10000,100000,1000000 --reps 5)
-  process_args=(--sizes 1000000 --reps 9)
+  process_args=(--sizes 1000000,10000000 --reps 9)
   python_args=(--sizes 10000,100000,1000000 --big "" --reps 3)
   interpolate_args=(--n 1000000 --grid 2000 --reps 3)
   if [ "$mode" = large ]; then
-    process_args=(--sizes 1000000,10000000 --reps 9)
     python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
   fi
 fi
