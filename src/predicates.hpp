@@ -71,16 +71,15 @@ inline int orient2d_filter(const Point& a, const Point& b, const Point& c) {
 /// Sign of the orientation of (a, b, c): +1 if counter-clockwise, -1 if clockwise, 0 if
 /// collinear. Exact for every finite input.
 inline int orient2d(const Point& a, const Point& b, const Point& c) {
+  if (const int s = orient2d_filter(a, b, c); s != 0) return s;
+  // Unsure, or a NaN from an overflow: small integers compute exactly, the rest goes on.
   const double acx = a.x - c.x, bcx = b.x - c.x;
   const double acy = a.y - c.y, bcy = b.y - c.y;
-  const double l = acx * bcy;
-  const double r = acy * bcx;
-  const double det = l - r;
-  const double bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
-  // NaN from an overflow fails the test and goes on.
-  if (std::fabs(det) > bound) return det > 0 ? 1 : -1;
   const double m = std::max({std::fabs(acx), std::fabs(bcx), std::fabs(acy), std::fabs(bcy)});
-  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y}, m, 0x1p25)) return (det > 0) - (det < 0);
+  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y}, m, 0x1p25)) {
+    const double det = acx * bcy - acy * bcx;
+    return (det > 0) - (det < 0);
+  }
   return orient2d_hard(a, b, c);
 }
 
