@@ -57,6 +57,7 @@
 #include "driver.hpp"
 #include "order.hpp"
 #include "parallel.hpp"
+#include "region.hpp"
 #include "threads.hpp"
 
 namespace ridt::detail {
@@ -65,13 +66,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-// A thread's region: the vertices whose keys lie in [lo, lo + len) round the circle of 32-bit
-// keys (the regions of a pass tile the circle); the bounding vertices are in none.
-struct Range {
-  std::uint32_t lo = 0;
-  std::uint64_t len = 0;  // up to 2^32: the whole circle
-  bool holds(std::uint32_t key) const { return static_cast<std::uint32_t>(key - lo) < len; }
-};
 // A round is cut among the threads when each thread gets at least this many points.
 constexpr VertexId kMinStretch = 1024;
 // Tries to find a thread's first triangle among its first points before the pass.
@@ -111,7 +105,7 @@ class Partition {
   // `from`, whose triangle `start` lies deep in the region, up to b, then from `from` down to a.
   struct Stretch {
     VertexId a = 0, b = 0, from = 0;
-    Range range;
+    Region range;
     TriangleId start = kNoTriangle;
   };
   // A point put off, and a triangle that may lie near it: the one that holds it, or where its
@@ -150,7 +144,7 @@ class Partition {
   };
   // A region of the second pass and its points, in curve order.
   struct Task {
-    Range range;
+    Region range;
     std::vector<PutOff> todo, deferred;  // hints in todo only where the region owns them
     TriangleId start = 0;   // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
@@ -173,36 +167,39 @@ class Partition {
     return distance2(x.near) < distance2(t) ? x.near : t;
   }
 
+  // The region of keys [lo, lo + len) round the circle.
+  Region region(std::uint32_t lo, std::uint64_t len) const { return {key_, n_, lo, len}; }
+
   // Whether slot t holds a triangle (kNoTriangle: no).
   bool live(TriangleId t) const { return t < mesh_.slots() && mesh_.vertex(t, 0) != kNoVertex; }
 
   // Whether triangle t has all three vertices in region r (tested together, without a branch
   // between them: the answers are hard to predict).
-  bool owns(const Range& r, TriangleId t) const {
+  bool owns(const Region& r, TriangleId t) const {
     const VertexId a = mesh_.vertex(t, 0), b = mesh_.vertex(t, 1), c = mesh_.vertex(t, 2);
-    return (std::max(a, std::max(b, c)) < n_) & r.holds(key_[a]) & r.holds(key_[b]) & r.holds(key_[c]);
+    return (std::max(a, std::max(b, c)) < n_) & r.holds(a) & r.holds(b) & r.holds(c);
   }
 
   // Whether vertex v is in region r.
-  bool owns_vertex(const Range& r, VertexId v) const { return (v < n_) & r.holds(key_[v]); }
+  bool owns_vertex(const Region& r, VertexId v) const { return (v < n_) & r.holds(v); }
   // Whether the triangle entered by link l from one with all its vertices in region r has all
   // of them there too (Mesh::find_cavity's `owned`).
-  bool enters(const Range& r, Link l) const { return owns_vertex(r, mesh_.opposite(l)); }
+  bool enters(const Region& r, Link l) const { return owns_vertex(r, mesh_.opposite(l)); }
   // Whether a walk in region r may cross the edge a b: one of its vertices is in r.
-  bool crosses(const Range& r, VertexId a, VertexId b) const { return owns_vertex(r, a) | owns_vertex(r, b); }
+  bool crosses(const Region& r, VertexId a, VertexId b) const { return owns_vertex(r, a) | owns_vertex(r, b); }
   // Mesh::walk's `cross` for a walk that enters only region r's own triangles (from one of
   // them), and for one that crosses the edges with a vertex in r.
-  auto own_triangles(const Range& r) const {
+  auto own_triangles(const Region& r) const {
     return [this, &r](Link l) { return enters(r, l); };
   }
-  auto own_edges(const Range& r) const {
+  auto own_edges(const Region& r) const {
     return [this, &r](VertexId a, VertexId b) { return crosses(r, a, b); };
   }
 
   // Whether region r's triangles reachable from t through the region number some dozens: a
   // thread that starts in a small pocket of its region cut off by the border would put off
   // every point. Reads only triangles of r and their neighbours.
-  bool deep_in(const Range& r, TriangleId t, std::vector<TriangleId>& seen) const {
+  bool deep_in(const Region& r, TriangleId t, std::vector<TriangleId>& seen) const {
     if (!owns(r, t)) return false;
     constexpr std::size_t kEnough = 48;
     seen.assign(1, t);
@@ -220,7 +217,7 @@ class Partition {
   // only triangles that `enter` allows, to the points from the middle of [a, b) on. The point
   // it holds, or false.
   template <class Enter>
-  bool find_start(Enter&& enter, const Range& r, VertexId a, VertexId b, TriangleId& t, VertexId& from,
+  bool find_start(Enter&& enter, const Region& r, VertexId a, VertexId b, TriangleId& t, VertexId& from,
                   std::vector<TriangleId>& seen) const {
     const VertexId size = b - a;
     for (VertexId k = 0; k < std::min<VertexId>(size, kStartTries); ++k) {
@@ -235,7 +232,7 @@ class Partition {
 
   // A triangle deep in region r, found by a breadth-first search from t through the
   // triangles of `within` (which holds r and t), or none among the first few thousand.
-  TriangleId reach(const Range& within, const Range& r, TriangleId t, std::vector<TriangleId>& seen) const {
+  TriangleId reach(const Region& within, const Region& r, TriangleId t, std::vector<TriangleId>& seen) const {
     constexpr std::size_t kMost = std::size_t{1} << 15;
     std::vector<TriangleId> queue{t};
     std::unordered_set<TriangleId> visited{t};
@@ -278,7 +275,7 @@ class Partition {
       Worker& w = workers_[i];
       Stretch& s = stretch[i];
       s.a = cut[i], s.b = cut[i + 1];
-      s.range = {from[i], i + 1 < threads_ ? std::uint64_t{from[i + 1]} - from[i] : (std::uint64_t{1} << 32) - from[i]};
+      s.range = region(from[i], i + 1 < threads_ ? std::uint64_t{from[i + 1]} - from[i] : (std::uint64_t{1} << 32) - from[i]);
       w.pool = {nullptr, 0, base + 2 * (s.a - b), base + 2 * (s.b - b)};
       w.giving = true;
       if (s.a < s.b && find_start(anywhere, s.range, s.a, s.b, last_, s.from, w.seen)) {
@@ -377,13 +374,13 @@ class Partition {
         a = top, b = s.b;
     }
     bool ok = a < b;
-    Range keep = s.range, give = s.range;
+    Region keep = s.range, give = s.range;
     if (ok) {
       const bool bottom = a == s.a;
       const std::uint32_t at = key_[bottom ? b : a];  // the cut's key: the rest's first, or the gift's
       const std::uint64_t offset = static_cast<std::uint32_t>(at - s.range.lo);
-      (bottom ? give : keep).len = offset;
-      (bottom ? keep : give) = {at, s.range.len - offset};
+      (bottom ? give : keep) = region(s.range.lo, offset);
+      (bottom ? keep : give) = region(at, s.range.len - offset);
       // Its next walk starts at w.last, and the walk down at s.start when points below it are
       // left to it: both must stay its own.
       const bool down_left = up && (bottom ? b : s.a) < s.from;
@@ -479,8 +476,8 @@ class Partition {
     std::sort(left.begin(), left.end());  // curve order: the round is sorted by key
     tasks_.assign(from.size(), Task{});
     for (std::size_t j = 0; j < from.size(); ++j)
-      tasks_[j].range = {from[j], j + 1 < from.size() ? std::uint64_t{from[j + 1]} - from[j]
-                                                       : (std::uint64_t{1} << 32) - (from[j] - from[0])};
+      tasks_[j].range = region(from[j], j + 1 < from.size() ? std::uint64_t{from[j + 1]} - from[j]
+                                                             : (std::uint64_t{1} << 32) - (from[j] - from[0]));
     for (PutOff x : left) {
       // The last region whose first key is at most p's, or the last of all (which wraps round).
       const auto above = std::upper_bound(from.begin(), from.end(), key_[x.p]) - from.begin();
@@ -560,7 +557,7 @@ class Partition {
   // the run stops: an error, or the progress callback threw. The walk, the cavity and their
   // predicates all in line (flatten): with the class made twice (kLattice), the compiler
   // otherwise left the predicates out of line, 2-5 % more instructions on uniform points.
-  [[gnu::flatten]] bool try_insert(unsigned i, const Range& r, VertexId p, std::vector<PutOff>& deferred,
+  [[gnu::flatten]] bool try_insert(unsigned i, const Region& r, VertexId p, std::vector<PutOff>& deferred,
                                    SlotPool& pool) {
     Worker& w = workers_[i];
     if (++w.tried == 1024) {
@@ -574,7 +571,7 @@ class Partition {
     // must be the region's. A point put off leaves the next walk to start where the first
     // walk stopped (in the region, and nearer the points to come than the last insertion),
     // and where the second got to as its hint.
-    const bool in_region = r.holds(key_[p]);
+    const bool in_region = r.holds(p);
     if (!in_region || !mesh_.walk<kLattice>(w.last, p, own_triangles(r))) [[unlikely]] {
       TriangleId t = w.last;
       if (!in_region || !walk_on(r, t, p)) {
@@ -604,7 +601,7 @@ class Partition {
 
   // The walk from t to p across edges with a vertex in region r, to a triangle of r: whether
   // it got there (out of line: the common path has no use for it).
-  [[gnu::noinline]] bool walk_on(const Range& r, TriangleId& t, VertexId p) const {
+  [[gnu::noinline]] bool walk_on(const Region& r, TriangleId& t, VertexId p) const {
     return mesh_.walk<kLattice>(t, p, own_edges(r)) && owns(r, t);
   }
 

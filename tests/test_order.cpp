@@ -8,6 +8,7 @@
 
 #include "generate.hpp"
 #include "order.hpp"
+#include "region.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -122,6 +123,37 @@ TEST(BrioOrder, RoundsAlongTheCurveAndTheSameForAnyThreads) {
   // Scratch too small is not used.
   std::vector<std::uint64_t> few(n);
   EXPECT_EQ(brio_order(pts.data(), n, 5, 2, nullptr, {few, numbers}), order);
+}
+
+// A partition thread's region tested by id (region.hpp) holds exactly the vertices whose
+// keys lie in its interval of keys: intervals that start or end at a vertex's key or between
+// keys, that wrap past key 0, hold nothing or the whole circle, on rounds of every size and on
+// points many of which share a key (a grid's coarse cells).
+TEST(Region, HoldsTheVerticesWhoseKeysLieInIt) {
+  std::uint64_t z = 77;
+  auto next = [&z] { return z = z * 6364136223846793005u + 1442695040888963407u, static_cast<std::uint32_t>(z >> 32); };
+  for (const Distribution dist : {Distribution::Uniform, Distribution::Grid})
+    for (const std::uint32_t n : {1u, 700u, 1024u, 1025u, 3000u, 70001u}) {
+      const std::vector<Point> pts = generate(dist, n, 3);
+      std::vector<std::uint32_t> keys;
+      brio_order(pts.data(), n, 5, 1, &keys);
+      constexpr std::uint64_t kCircle = std::uint64_t{1} << 32;
+      std::vector<std::pair<std::uint32_t, std::uint64_t>> cases = {
+          {0, 0}, {0, kCircle}, {123456, kCircle}, {0, kCircle / 2}, {0x80000000u, kCircle / 2}, {0xffffffffu, 1},
+          {0xffffffffu, 2}, {keys[0], 0}, {keys[0], 1}, {keys[n - 1], kCircle - 1}, {keys[n / 2], kCircle - keys[n / 2]},
+          {5, kCircle - 3}, {keys[n / 3] + 1, kCircle - 1}, {keys[n - 1], kCircle - 1 - (keys[n - 1] - keys[0])}};
+      for (int k = 0; k < 60; ++k) {
+        const std::uint32_t lo = k % 2 ? keys[next() % n] : next();
+        const std::uint64_t len = k % 3 == 0 ? static_cast<std::uint32_t>(keys[next() % n] - lo) : next() + (k % 5 == 0 ? kCircle / 2 : 0);
+        cases.emplace_back(lo, std::min(len, kCircle));
+      }
+      for (const auto& [lo, len] : cases) {
+        const Region r(keys.data(), n, lo, len);
+        for (std::uint32_t v = 0; v < n; ++v)
+          ASSERT_EQ(r.holds(v), static_cast<std::uint32_t>(keys[v] - lo) < len)
+              << "n " << n << " lo " << lo << " len " << len << " v " << v << " key " << keys[v];
+      }
+    }
 }
 
 // Sizes below a round, a bin, and at the edges: a permutation, the same in scratch memory.
