@@ -86,8 +86,7 @@ void insert_walking(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplica
                     Progress& progress);
 
 /// The partition method with `threads` threads (partition.cpp); key[v] is vertex v's Hilbert
-/// key, non-decreasing along each BRIO round, with room for the three bounding vertices (n + 3
-/// entries: read, never used).
+/// key (n of them), non-decreasing along each BRIO round.
 void insert_partition(Mesh& mesh, const std::uint32_t* key, unsigned threads,
                       std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress);
 

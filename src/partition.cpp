@@ -566,7 +566,7 @@ class Partition {
       if (stop_.load(std::memory_order_relaxed)) return false;
       if (i == 0) progress_(before_ + inserted_.load(std::memory_order_relaxed));
     }
-    // The walk keeps to the region's own triangles (one key read a step); where that stops
+    // The walk keeps to the region's own triangles (one id test a step); where that stops
     // it, it goes on through triangles with a vertex in the region (two), to a triangle that
     // must be the region's. A point put off leaves the next walk to start where the first
     // walk stopped (in the region, and nearer the points to come than the last insertion),
@@ -674,7 +674,7 @@ class Partition {
   }
 
   Mesh& mesh_;
-  const std::uint32_t* key_;  // n + 3: the bounding vertices' are never read as keys
+  const std::uint32_t* key_;  // n: the bounding vertices have none
   VertexId n_;
   unsigned threads_;
   std::vector<Worker> workers_;

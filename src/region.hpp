@@ -18,6 +18,7 @@ namespace ridt::detail {
 /// 32-bit ids. holds() reads that round's entry, which stays in cache, and not the vertex's
 /// key, which would be a miss of its own. Made before any thread reads it.
 struct Region {
+  // Read only: a region that changes is made again (the ids follow from these).
   std::uint32_t lo = 0;
   std::uint64_t len = 0;
   struct Ids {

@@ -190,7 +190,6 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
   if (options.method == Method::Partition) {
-    keys.resize(std::size_t{n} + 3);  // within the room reserved for it
     detail::insert_partition(mesh, keys.data(), plan.threads, duplicates, stats, progress);
   } else {
     detail::insert_walking(mesh, options.experiment.profile, duplicates, stats, progress);
@@ -209,7 +208,6 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const 
                                            detail::MeshArrays* mesh) {
   const auto n = static_cast<std::uint32_t>(points.size());
   if (!p.brio) return detail::random_permutation(n, options.seed);
-  if (options.method == Method::Partition) keys.reserve(std::size_t{n} + 3);  // the bounding vertices' too
   detail::OrderScratch scratch;
   if (mesh != nullptr) scratch = {mesh->words(), mesh->numbers()};
   std::vector<std::uint32_t> order = detail::brio_order(
