@@ -1,7 +1,8 @@
 // ridt's insertion orders and location modes side by side with other Delaunay
 // codes, on the same points in the same run: CGAL's Delaunay_triangulation_2
 // (range insert, which sorts along a curve too), Qhull (qdelaunay's options,
-// Qt), and delaunator (JavaScript, through node) where they are installed.
+// Qt), Shewchuk's Triangle (its default divide and conquer) and delaunator
+// (JavaScript, through node) where they are installed.
 // Every time is the median of --reps runs, the codes in a new random order each
 // repetition; the ratio is to CGAL's median. Memory is what one run adds to the
 // peak of a fresh process that holds its input, per point (the input is not
@@ -37,6 +38,14 @@
 #ifdef RIDT_WITH_QHULL
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
+}
+#endif
+#ifdef RIDT_WITH_TRIANGLE
+#define REAL double
+#define VOID void
+#define ANSI_DECLARATORS
+extern "C" {
+#include <triangle.h>
 }
 #endif
 
@@ -149,6 +158,23 @@ std::vector<Code> codes(std::uint32_t n) {
                      std::abort();
                    return std::pair{s, triangles};
                  }});
+#endif
+#ifdef RIDT_WITH_TRIANGLE
+  // Switches: z (ids from 0), Q (quiet), N (no copy of the points out), B (no
+  // boundary markers), n (each triangle's neighbours, as ridt gives them).
+  c.push_back({"Triangle", [](const Input &in) {
+                 std::vector<double> xy = in.flat; // Triangle takes a non-const array
+                 const auto t0 = Clock::now();
+                 triangulateio pts{}, out{};
+                 pts.pointlist = xy.data();
+                 pts.numberofpoints = static_cast<int>(xy.size() / 2);
+                 char options[] = "zQNBn";
+                 triangulate(options, &pts, &out, nullptr);
+                 const auto triangles = static_cast<std::size_t>(out.numberoftriangles);
+                 trifree(out.trianglelist);
+                 trifree(out.neighborlist);
+                 return std::pair{since(t0), triangles};
+               }});
 #endif
   return c;
 }

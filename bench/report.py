@@ -125,7 +125,7 @@ def peers_section(results):
     sizes = sorted({int(r["n"]) for r in data})
     out = ["## Against other codes\n",
            "In one process, on the same points, every code once a repetition in a new random order: "
-           "ridt in each of its modes, CGAL, and Qhull and delaunator where installed. Seconds "
+           "ridt in each of its modes, CGAL, and Triangle, Qhull and delaunator where installed. Seconds "
            "(ratio to CGAL's median), and the memory a run adds a point, the output included. "
            "Full output: [results/peers.txt](results/peers.txt).\n"]
     for n in sizes:

@@ -9,7 +9,8 @@
 # minutes on 2 cores); --large: also 10^7 points in the Python table (another hour: scipy takes
 # minutes a run there). Run it on a quiet machine: every figure is a median of interleaved runs, and
 # anything else running skews them. Installs what it needs first (scripts/deps.sh bench, as
-# root): the test dependencies, Qhull, node and delaunator for the peers table.
+# root): the test dependencies, Qhull, Triangle (from Debian's non-free component, which it
+# adds where apt lacks it), node and delaunator for the peers table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -29,7 +30,7 @@ py=/usr/bin/python3
 out=docs/results
 log() { printf '\n== %s\n' "$*" >&2; }
 
-log "dependencies (scripts/deps.sh bench: the test set, Qhull, node and delaunator)"
+log "dependencies (scripts/deps.sh bench: the test set, Qhull, Triangle, node and delaunator)"
 bash scripts/deps.sh bench >&2
 
 log "build ($build, Release, with the Python module)"
