@@ -10,7 +10,10 @@
 //
 //   ridt_bench_peers [--sizes N,N,...] [--dists uniform,...] [--reps R] [--csv
 //   FILE]
-//                    [--node-modules DIR]
+//                    [--node-modules DIR] [--check]
+//
+// --check: exit 1 when two codes return different numbers of triangles for the
+// same points (a code that lost points, or a peer set up wrongly).
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -286,6 +289,8 @@ int main(int argc, char **argv) {
   std::vector<std::string> dists = {"uniform", "normal", "grid", "clusters"};
   int reps = 5;
   std::string csv, modules;
+  bool check = false;
+  int disagreements = 0;
   if (const char *m = std::getenv("RIDT_NODE_MODULES"))
     modules = m;
   if (argc == 5 && std::string(argv[1]) == "--measure")
@@ -305,11 +310,13 @@ int main(int argc, char **argv) {
       csv = argv[++i];
     } else if (a == "--node-modules" && i + 1 < argc) {
       modules = argv[++i];
+    } else if (a == "--check") {
+      check = true;
     } else {
       std::fprintf(stderr,
                    "usage: %s [--sizes N,N,...] [--dists "
                    "uniform,normal,grid,clusters] [--reps R] "
-                   "[--csv FILE] [--node-modules DIR]\n",
+                   "[--csv FILE] [--node-modules DIR] [--check]\n",
                    argv[0]);
       return 2;
     }
@@ -371,10 +378,24 @@ int main(int argc, char **argv) {
         row(list[c].name, median(times[c]), added[c], triangles[c]);
       if (!d.times.empty())
         row("delaunator (node)", median(d.times), d.extra, d.triangles);
+      if (check) {
+        std::vector<std::pair<std::string, std::size_t>> counts;
+        for (std::size_t c = 0; c < list.size(); ++c)
+          counts.emplace_back(list[c].name, triangles[c]);
+        if (!d.times.empty())
+          counts.emplace_back("delaunator (node)", d.triangles);
+        for (const auto &[name, count] : counts)
+          if (count != counts.front().second) {
+            std::fprintf(stderr, "%s, n = %u: %s gave %zu triangles, %s %zu\n",
+                         dist_name.c_str(), n, name.c_str(), count,
+                         counts.front().first.c_str(), counts.front().second);
+            ++disagreements;
+          }
+      }
       std::fflush(stdout);
     }
   }
   if (out)
     std::fclose(out);
-  return 0;
+  return disagreements > 0 ? 1 : 0;
 }
