@@ -42,6 +42,18 @@ class BigInt {
 
   int sign() const { return n_ == 0 ? 0 : (neg_ ? -1 : 1); }
 
+  // The value as m * 2^(exponent + emin) with |m| in [1, 2^64) (0 for zero), m within a
+  // relative 2^-62 of the truth: the top three limbs, each rounded once, the rest dropped.
+  double scaled(int emin, int& exponent) const {
+    exponent = emin;
+    if (n_ == 0) return 0;
+    double m = static_cast<double>(w_[n_ - 1]);
+    if (n_ >= 2) m += std::ldexp(static_cast<double>(w_[n_ - 2]), -64);
+    if (n_ >= 3) m += std::ldexp(static_cast<double>(w_[n_ - 3]), -128);
+    exponent += 64 * (n_ - 1);
+    return neg_ ? -m : m;
+  }
+
   friend BigInt operator+(const BigInt& a, const BigInt& b) { return add(a, b, b.neg_); }
   friend BigInt operator-(const BigInt& a, const BigInt& b) { return add(a, b, !b.neg_); }
 
@@ -178,6 +190,25 @@ int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& 
   const BigInt det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
                      clift * (adx * bdy - bdx * ady);
   return det.sign();
+}
+
+void barycentric_exact(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y, q.x, q.y});
+  const BigInt ax = BigInt::from_double(a.x, e), ay = BigInt::from_double(a.y, e);
+  const BigInt bx = BigInt::from_double(b.x, e), by = BigInt::from_double(b.y, e);
+  const BigInt cx = BigInt::from_double(c.x, e), cy = BigInt::from_double(c.y, e);
+  const BigInt qx = BigInt::from_double(q.x, e), qy = BigInt::from_double(q.y, e);
+  // Twice the signed areas of (q, b, c), (a, q, c), (a, b, q) and (a, b, c), in units of 2^2e.
+  auto area = [](const BigInt& ux, const BigInt& uy, const BigInt& vx, const BigInt& vy, const BigInt& wx,
+                 const BigInt& wy) { return (ux - wx) * (vy - wy) - (uy - wy) * (vx - wx); };
+  const BigInt part[3] = {area(qx, qy, bx, by, cx, cy), area(ax, ay, qx, qy, cx, cy), area(ax, ay, bx, by, qx, qy)};
+  int whole_exponent = 0;
+  const double whole = area(ax, ay, bx, by, cx, cy).scaled(0, whole_exponent);
+  for (int i = 0; i < 3; ++i) {
+    int exponent = 0;
+    const double m = part[i].scaled(0, exponent);
+    weight[i] = m == 0 ? 0.0 : std::ldexp(m / whole, exponent - whole_exponent);
+  }
 }
 
 int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d) {

@@ -45,18 +45,14 @@ struct Field {
   std::int32_t neighbour(std::size_t tri, int i) const { return neighbors[3 * tri + i]; }
   const double* value(VertexId v) const { return values.data.data() + v * values.components; }
 
-  // out = the barycentric interpolant of triangle tri at q.
+  // out = the barycentric interpolant of triangle tri at q, its weights within 2^-44 of the
+  // exact ones (detail::barycentric): at a corner the corner's value, on a side the side's
+  // linear interpolant, bounded for the thinnest sliver.
   void linear(std::size_t tri, const Point& q, double* out) const {
-    const Point& a = corner(tri, 0);
-    const Point& b = corner(tri, 1);
-    const Point& c = corner(tri, 2);
-    const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-    const double qx = q.x - a.x, qy = q.y - a.y;
-    const double det = bx * cy - by * cx;
-    const double lb = (qx * cy - qy * cx) / det, lc = (bx * qy - by * qx) / det;
-    const double la = 1 - lb - lc;
+    double w[3];
+    detail::barycentric(corner(tri, 0), corner(tri, 1), corner(tri, 2), q, w);
     const double *va = value(vertex(tri, 0)), *vb = value(vertex(tri, 1)), *vc = value(vertex(tri, 2));
-    for (std::size_t k = 0; k < values.components; ++k) out[k] = la * va[k] + lb * vb[k] + lc * vc[k];
+    for (std::size_t k = 0; k < values.components; ++k) out[k] = w[0] * va[k] + w[1] * vb[k] + w[2] * vc[k];
   }
 };
 

@@ -189,6 +189,36 @@ inline int exact_scale_exponent(std::span<const Point> points, double low = 0x1p
   return exact_scale_exponent(extent_of(points), low, high);
 }
 
+void barycentric_exact(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]);
+
+/// The barycentric coordinates of q in the counter-clockwise triangle (a, b, c), not
+/// degenerate: weight[i] is the signed area of the triangle with q in place of corner i over
+/// the whole triangle's. Each weight is within 2^-44 of its exact value (absolutely) and
+/// within a few units in its last place where the filter decides: the four areas are computed
+/// in double precision with the orientation filter's error bound, and exactly (exact.cpp)
+/// where a bound is over 2^-45 of the whole area (a sliver, a query near a side of a long
+/// triangle, coordinates that overflow or underflow) or where a part's sign is not certain (q
+/// on or next to a side). So q at a corner gets exactly 1 there and 0 elsewhere, and q on a
+/// side exactly 0 for the opposite corner.
+inline void barycentric(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]) {
+  struct Area {
+    double value, bound;
+  };
+  auto area = [](const Point& u, const Point& v, const Point& w) {
+    const double l = (u.x - w.x) * (v.y - w.y), r = (u.y - w.y) * (v.x - w.x);
+    return Area{l - r, kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow};
+  };
+  const Area whole = area(a, b, c);
+  const Area part[3] = {area(q, b, c), area(a, q, c), area(a, b, q)};
+  const double room = 0x1p-45 * std::fabs(whole.value);
+  auto sure = [room](const Area& x) { return x.bound <= room && std::fabs(x.value) > x.bound; };
+  if (sure(whole) && sure(part[0]) && sure(part[1]) && sure(part[2])) {
+    for (int i = 0; i < 3; ++i) weight[i] = part[i].value / whole.value;
+    return;
+  }
+  barycentric_exact(a, b, c, q, weight);
+}
+
 /// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.
 inline bool lex_less(const Point& a, const Point& b) {
   return a.x < b.x || (a.x == b.x && a.y < b.y);

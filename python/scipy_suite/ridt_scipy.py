@@ -1,0 +1,221 @@
+"""A pytest plugin that runs scipy's own test files against ridt.
+
+Loaded with ``-p ridt_scipy`` (this folder on PYTHONPATH), before pytest imports any test
+module, it puts ridt's classes and functions in the place of scipy's 2-D ones, in every module
+the test files import them from:
+
+- scipy.spatial: Delaunay, Voronoi, tsearch (also in scipy.spatial._qhull);
+- scipy.interpolate: LinearNDInterpolator, NearestNDInterpolator, griddata (also in
+  scipy.interpolate.interpnd, ._interpnd and ._ndgriddata).
+
+What ridt does not claim is not run against Qhull in its place: input that is not 2-D,
+ConvexHull, HalfspaceIntersection and Qhull's own object skip the test with a reason that
+starts with "outside ridt's claim", and scipy's classes ridt does not have yet skip it with
+"not in ridt yet"; the summary counts both. Every ridt.Delaunay a test builds is checked by the
+exact validator when the test ends, and a test listed in exceptions.txt (one that pins Qhull's
+arbitrary choice among equally valid answers) must fail, strictly, with every triangulation it
+built valid.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import Counter
+from typing import Any, Dict, List
+
+import numpy as np
+import pytest
+
+import ridt
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUTSIDE = "outside ridt's claim"
+MISSING = "not in ridt yet"
+
+_built: List[Any] = []  # the ridt.Delaunay objects built during the current test
+_used: Counter = Counter()  # how often each replacement was called, over the whole session
+
+
+def _dimension(points: Any) -> int:
+    """The dimension of `points` as scipy reads it: an (n, d) array, a tuple of d coordinate
+    arrays, or a triangulation."""
+    if isinstance(points, (ridt.Delaunay, ridt.Voronoi)):
+        return 2
+    if isinstance(points, tuple):
+        return len(points)
+    a = np.asarray(points)
+    return a.shape[-1] if a.ndim >= 2 else 1
+
+
+def _outside(what: str) -> None:
+    pytest.skip(f"{OUTSIDE}: {what}")
+
+
+class _Replacing(type):
+    """A class whose instances are ridt's: isinstance() accepts ridt's objects."""
+
+    def __instancecheck__(cls, obj: Any) -> bool:
+        return isinstance(obj, cls._ridt)
+
+
+def _replacement(name: str, ridt_class: Any, first_arg: str = "points") -> type:
+    def __new__(cls, *args: Any, **kwargs: Any) -> Any:
+        points = args[0] if args else kwargs.get(first_arg)
+        d = _dimension(points)
+        if d != 2:
+            _outside(f"{name} in {d}-D")
+        _used[name] += 1
+        obj = ridt_class(*args, **kwargs)
+        if isinstance(obj, ridt.Delaunay):
+            _built.append(obj)
+        elif hasattr(obj, "tri") and isinstance(obj.tri, ridt.Delaunay):
+            _built.append(obj.tri)
+        return obj
+
+    return _Replacing(name, (), {"__new__": __new__, "_ridt": ridt_class, "__doc__": ridt_class.__doc__})
+
+
+def _not_claimed(name: str) -> type:
+    def __new__(cls, *args: Any, **kwargs: Any) -> Any:
+        _outside(name)
+
+    return type(name, (), {"__new__": __new__})
+
+
+def _not_yet(name: str) -> Any:
+    def missing(*args: Any, **kwargs: Any) -> Any:
+        pytest.skip(f"{MISSING}: {name}")
+
+    return missing
+
+
+def _griddata(points: Any, values: Any, xi: Any, *args: Any, **kwargs: Any) -> Any:
+    d = _dimension(points)
+    if d != 2:
+        _outside(f"griddata in {d}-D")
+    _used["griddata"] += 1
+    return ridt.griddata(points, values, xi, *args, **kwargs)
+
+
+def _tsearch(tri: Any, xi: Any) -> Any:
+    _used["tsearch"] += 1
+    return tri.find_simplex(xi)
+
+
+def replacements() -> Dict[str, Any]:
+    return {
+        "Delaunay": _replacement("Delaunay", ridt.Delaunay),
+        "Voronoi": _replacement("Voronoi", ridt.Voronoi),
+        "LinearNDInterpolator": _replacement("LinearNDInterpolator", ridt.LinearNDInterpolator),
+        "NearestNDInterpolator": _replacement("NearestNDInterpolator", ridt.NearestNDInterpolator, "x"),
+        "CloughTocher2DInterpolator": getattr(ridt, "CloughTocher2DInterpolator", None)
+        and _replacement("CloughTocher2DInterpolator", ridt.CloughTocher2DInterpolator),
+        "griddata": _griddata,
+        "tsearch": _tsearch,
+        "ConvexHull": _not_claimed("ConvexHull"),
+        "HalfspaceIntersection": _not_claimed("HalfspaceIntersection"),
+        "_Qhull": _not_claimed("Qhull's own object (_Qhull)"),
+        "estimate_gradients_2d_global": getattr(ridt, "estimate_gradients_2d_global", None),
+    }
+
+
+MODULES = ("scipy.spatial", "scipy.spatial._qhull", "scipy.spatial.qhull", "scipy.interpolate",
+           "scipy.interpolate.interpnd", "scipy.interpolate._interpnd", "scipy.interpolate._ndgriddata",
+           "scipy.interpolate.ndgriddata")  # where scipy's test files import them from
+
+
+def _install() -> None:
+    import importlib
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        modules = []
+        for name in MODULES:  # the private names differ between scipy's versions
+            try:
+                modules.append(importlib.import_module(name))
+            except ModuleNotFoundError:
+                pass
+    for name, value in replacements().items():
+        if value is None:
+            value = _not_yet(name)
+        for module in modules:
+            if name in vars(module):
+                setattr(module, name, value)
+
+
+def _exceptions() -> Dict[str, str]:
+    """exceptions.txt: `test id  why` lines; '#' starts a comment."""
+    out = {}
+    with open(os.path.join(HERE, "exceptions.txt"), encoding="utf-8") as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line:
+                test, _, why = line.partition(" ")
+                out[test] = why.strip()
+    return out
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    _install()
+    config._ridt_exceptions = _exceptions()  # type: ignore[attr-defined]
+    config._ridt_seen = set()  # type: ignore[attr-defined]
+
+
+def _short_id(item: pytest.Item) -> str:
+    return "::".join([os.path.basename(item.location[0])] + item.nodeid.split("::")[1:])
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: List[pytest.Item]) -> None:
+    exceptions = config._ridt_exceptions  # type: ignore[attr-defined]
+    for item in items:
+        key = _short_id(item)
+        if key in exceptions:
+            config._ridt_seen.add(key)  # type: ignore[attr-defined]
+            item.add_marker(pytest.mark.xfail(reason=f"pins Qhull's choice: {exceptions[key]}", strict=True))
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_call(item: pytest.Item):
+    _built.clear()
+    outcome = yield
+    # Every triangulation the test built, checked exactly whatever the test asserted.
+    for tri in _built:
+        if tri.nsimplex:
+            valid, message = ridt.check(tri.points, tri.simplices)
+            assert valid, f"ridt's triangulation of {tri.npoints} points is not valid: {message}"
+    _built.clear()
+    return outcome
+
+
+def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:
+    stats = terminalreporter.stats
+    reasons: Counter = Counter()
+    for report in stats.get("skipped", []):
+        reason = str(report.longrepr[2]) if isinstance(report.longrepr, tuple) else str(report.longrepr)
+        reasons[OUTSIDE if OUTSIDE in reason else MISSING if MISSING in reason else "other: " + reason] += 1
+    tw = terminalreporter
+    tw.section("scipy's tests against ridt")
+    tw.line(f"passed against ridt: {len(stats.get('passed', []))}")
+    tw.line(f"failed: {len(stats.get('failed', []))}")
+    tw.line(f"listed exceptions (pin Qhull's choice; ridt's output validated): {len(stats.get('xfailed', []))}")
+    for reason, count in sorted(reasons.items()):
+        tw.line(f"skipped, {reason}: {count}")
+    tw.line("replacements called: " + ", ".join(f"{k} {v}" for k, v in sorted(_used.items())))
+    for problem in _problems(config):
+        tw.line(problem)
+
+
+def _problems(config: pytest.Config) -> List[str]:
+    out = []
+    unseen = set(config._ridt_exceptions) - config._ridt_seen  # type: ignore[attr-defined]
+    if unseen:
+        out.append(f"exceptions.txt names tests that were not collected: {sorted(unseen)}")
+    if not _used["Delaunay"] or not _used["LinearNDInterpolator"] or not _used["griddata"]:
+        out.append("ridt's classes were never called: the replacement did not take")
+    return out
+
+
+def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
+    if _problems(session.config) and session.exitstatus == 0:
+        session.exitstatus = 1
