@@ -211,6 +211,16 @@ void barycentric_exact(const Point& a, const Point& b, const Point& c, const Poi
   }
 }
 
+double doubled_area_exact(const Point& a, const Point& b, const Point& c) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y});
+  const BigInt cx = BigInt::from_double(c.x, e), cy = BigInt::from_double(c.y, e);
+  const BigInt acx = BigInt::from_double(a.x, e) - cx, acy = BigInt::from_double(a.y, e) - cy;
+  const BigInt bcx = BigInt::from_double(b.x, e) - cx, bcy = BigInt::from_double(b.y, e) - cy;
+  int exponent = 0;
+  const double m = (acx * bcy - acy * bcx).scaled(2 * e, exponent);
+  return std::ldexp(m, exponent);
+}
+
 int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double m = std::max({std::fabs(a.x - d.x), std::fabs(a.y - d.y), std::fabs(b.x - d.x),
                              std::fabs(b.y - d.y), std::fabs(c.x - d.x), std::fabs(c.y - d.y)});

@@ -460,4 +460,38 @@ std::vector<std::int32_t> nearest_vertex(std::span<const Point> points, const Tr
   return out;
 }
 
+std::array<double, 3> barycentric(const Point& a, const Point& b, const Point& c, const Point& q) {
+  std::array<double, 3> w{};
+  detail::barycentric(a, b, c, q, w.data());
+  return w;
+}
+
+double doubled_area(const Point& a, const Point& b, const Point& c) { return detail::doubled_area(a, b, c); }
+
+void barycentric_transforms(std::span<const Point> points, std::span<const VertexId> triangles,
+                            std::span<double> out, unsigned threads) {
+  if (triangles.size() % 3 != 0 || out.size() != triangles.size() * 2)
+    throw InputError("barycentric_transforms: " + std::to_string(out.size()) + " numbers of room for " +
+                     std::to_string(triangles.size() / 3) + " triangles (6 each)");
+  for (const VertexId v : triangles)
+    if (v >= points.size()) throw InputError("barycentric_transforms: a vertex is not one of the points");
+  detail::parallel_for(triangles.size() / 3, threads, kGrain, [&](std::size_t first, std::size_t last) {
+    for (std::size_t t = first; t < last; ++t) {
+      const Point &p0 = points[triangles[3 * t]], &p1 = points[triangles[3 * t + 1]], &r = points[triangles[3 * t + 2]];
+      // M = [p0 - r, p1 - r] as columns; T = M^-1 = adj(M) / det(M).
+      const double a = p0.x - r.x, b = p1.x - r.x, c = p0.y - r.y, d = p1.y - r.y;
+      const double det = detail::doubled_area(p0, p1, r);
+      const double norm = std::max(std::fabs(a) + std::fabs(c), std::fabs(b) + std::fabs(d));
+      const double inverse_norm = std::max(std::fabs(d) + std::fabs(c), std::fabs(b) + std::fabs(a)) / std::fabs(det);
+      double* o = &out[6 * t];
+      if (!(norm * inverse_norm <= 0x1p40)) {
+        std::fill_n(o, 4, std::numeric_limits<double>::quiet_NaN());
+      } else {
+        o[0] = d / det, o[1] = -b / det, o[2] = -c / det, o[3] = a / det;
+      }
+      o[4] = r.x, o[5] = r.y;
+    }
+  });
+}
+
 }  // namespace ridt

@@ -189,6 +189,18 @@ inline int exact_scale_exponent(std::span<const Point> points, double low = 0x1p
   return exact_scale_exponent(extent_of(points), low, high);
 }
 
+double doubled_area_exact(const Point& a, const Point& b, const Point& c);
+
+/// Twice the signed area of (a, b, c) (the orientation determinant), within a relative 2^-50
+/// of the exact value: in double precision where the filter's bound allows, else exactly and
+/// rounded (infinite only where the area itself overflows).
+inline double doubled_area(const Point& a, const Point& b, const Point& c) {
+  const double l = (a.x - c.x) * (b.y - c.y), r = (a.y - c.y) * (b.x - c.x);
+  const double det = l - r, bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
+  if (bound <= 0x1p-50 * std::fabs(det)) return det;
+  return doubled_area_exact(a, b, c);
+}
+
 void barycentric_exact(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]);
 
 /// The barycentric coordinates of q in the counter-clockwise triangle (a, b, c), not

@@ -2,6 +2,7 @@
 // natural neighbour (Sibson).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -71,6 +72,26 @@ void interpolate_linear(std::span<const Point> points, const Triangulation& t, V
 void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
                                   const Grid& grid, std::span<double> out,
                                   double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+
+/// The barycentric coordinates of q in the counter-clockwise triangle (a, b, c), not
+/// degenerate: weight i is the area of the triangle with q in corner i's place over the whole
+/// triangle's. Each is within 2^-44 of its exact value: double precision where the
+/// orientation filter vouches for it, exact arithmetic where it cannot (slivers, q on or next
+/// to a side, huge or tiny coordinates). q at a corner gets exactly 1 there and 0 elsewhere; q
+/// on a side exactly 0 for the opposite corner.
+std::array<double, 3> barycentric(const Point& a, const Point& b, const Point& c, const Point& q);
+
+/// Twice the signed area of (a, b, c), positive counter-clockwise, within a relative 2^-50 of
+/// the exact value (exact arithmetic where double precision cannot tell).
+double doubled_area(const Point& a, const Point& b, const Point& c);
+
+/// scipy.spatial.Delaunay's `transform`: for triangle t, the 2 x 2 matrix T and the point r
+/// (its third corner) with which (w0, w1) = T (x - r) are x's first two barycentric
+/// coordinates, written as out[6 t .. 6 t + 6) = T row by row, then r. The determinant is
+/// exact (doubled_area); where the triangle is so thin that T's reciprocal condition number
+/// is below 2^-40, T's entries are NaN, as scipy's are for its near-degenerate simplices.
+void barycentric_transforms(std::span<const Point> points, std::span<const VertexId> triangles,
+                            std::span<double> out, unsigned threads = 1);
 
 /// For each query, the index of a nearest point among the triangulation's vertices (a greedy
 /// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not

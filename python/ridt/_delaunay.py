@@ -33,6 +33,11 @@ def _check_qhull_options(options: Optional[str]) -> None:
                 f"no tuning options (accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})")
 
 
+def _refuse_masked(points: Any) -> None:
+    if np.ma.isMaskedArray(points):
+        raise ValueError("Input points cannot be a masked array")
+
+
 class Delaunay:
     """Delaunay triangulation in the plane, with scipy.spatial.Delaunay's interface.
 
@@ -47,8 +52,10 @@ class Delaunay:
     ----------
     points : array_like, shape (npoints, 2)
         Coordinates, any real dtype and layout, all finite.
-    furthest_site, incremental : bool
-        Not supported (raise NotImplementedError when true).
+    furthest_site : bool
+        Not supported (raises NotImplementedError when true).
+    incremental : bool
+        Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
         Accepted for compatibility when it holds only options that concern Qhull's own
         robustness (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError.
@@ -68,9 +75,10 @@ class Delaunay:
     paraboloid_scale, paraboloid_shift : float
         The lift: z = scale * (x^2 + y^2) + shift, as Qhull's option Qbb sets it.
     transform : ndarray of double, shape (nsimplex, 3, 2)
-        Affine maps to barycentric coordinates: c = T[:2] @ (x - T[2]).
+        Affine maps to barycentric coordinates: c = T[:2] @ (x - T[2]); the determinant exact,
+        NaN for a triangle too thin for the map (see the property).
     vertex_to_simplex : ndarray of intc, shape (npoints,)
-        A triangle of each vertex; -1 for the duplicates left out.
+        A triangle of each point (for a duplicate left out, one of the equal point kept).
     convex_hull : ndarray of intc, shape (nhull, 2)
         The hull's edges, counter-clockwise, collinear hull points included.
     coplanar : ndarray of intc, shape (nduplicates, 3)
@@ -88,15 +96,14 @@ class Delaunay:
         if furthest_site:
             raise NotImplementedError(
                 "furthest_site=True: ridt computes the nearest-site Delaunay triangulation only")
-        if incremental:
-            raise NotImplementedError(
-                "incremental=True: ridt triangulates a whole point set in one call; to add points, "
-                "triangulate them all again (fast: some 0.6 s for a million points)")
         _check_qhull_options(qhull_options)
+        _refuse_masked(points)
         self._points = _api.as_points(points, "points", "ridt.Delaunay")
         self._threads = _api.thread_count(threads)
-        self._tri = _api.run(self._points, method=method, threads=self._threads, order=order, locate=locate,
-                             seed=seed, progress=progress)
+        self._options = dict(method=method, order=order, locate=locate, seed=seed)
+        self._tri = _api.run(self._points, threads=self._threads, progress=progress, **self._options)
+        self._incremental = bool(incremental)
+        self._clear()
         if self._tri.warning:
             warnings.warn(f"ridt: {self._tri.warning}: the triangulation is empty", DegenerateInputWarning,
                           stacklevel=2)
@@ -114,7 +121,9 @@ class Delaunay:
 
     @property
     def vertices(self) -> np.ndarray:
-        """The same as simplices (scipy's older name)."""
+        """The same as simplices (scipy's older name, deprecated there as here)."""
+        warnings.warn("Delaunay attribute 'vertices' is deprecated in favour of 'simplices' and will be removed "
+                      "in Scipy 1.11.0.", DeprecationWarning, stacklevel=2)
         return self.simplices
 
     @property
@@ -162,6 +171,8 @@ class Delaunay:
     def vertex_to_simplex(self) -> np.ndarray:
         v2s = np.full(self.npoints, -1, dtype=np.intc)
         v2s[self.simplices.ravel()] = np.repeat(np.arange(self.nsimplex, dtype=np.intc), 3)
+        d = self._tri.duplicates.view(np.intc)
+        v2s[d[:, 0]] = v2s[d[:, 1]]  # a duplicate left out: a triangle of the equal point kept
         return v2s
 
     @cached_property
@@ -169,7 +180,7 @@ class Delaunay:
         d = self._tri.duplicates.view(np.intc)
         out = np.empty((d.shape[0], 3), dtype=np.intc)
         out[:, 0] = d[:, 0]
-        out[:, 1] = self.vertex_to_simplex[d[:, 1]]
+        out[:, 1] = self.vertex_to_simplex[d[:, 0]]
         out[:, 2] = d[:, 1]
         return out
 
@@ -233,18 +244,12 @@ class Delaunay:
 
     @cached_property
     def transform(self) -> np.ndarray:
-        p = self._points[self.simplices]  # (nsimplex, 3, 2)
-        r = p[:, 2]
-        a, c = (p[:, 0] - r).T
-        b, d = (p[:, 1] - r).T
-        det = a * d - b * c
-        with np.errstate(divide="ignore", invalid="ignore"):
-            inv = np.stack([np.stack([d, -b], axis=1), np.stack([-c, a], axis=1)], axis=1) / det[:, None, None]
-        out = np.empty((self.nsimplex, 3, 2))
-        out[:, :2, :] = inv
-        out[:, 2, :] = r
-        out[det == 0] = np.nan
-        return out
+        """scipy's affine maps to barycentric coordinates, (nsimplex, 3, 2): c = T[:2] @ (x - T[2])
+        gives x's first two coordinates in each triangle. The determinant is exact; a triangle
+        so thin that the map cannot carry its coordinates (reciprocal condition number below
+        2^-40) gets NaN, as scipy gives its near-degenerate simplices. find_simplex and the
+        interpolators do not use it: their weights are exact where a filter cannot vouch."""
+        return _core.transforms(self._points, self._tri.triangles, self._threads)
 
     def find_simplex(self, xi: Any, bruteforce: bool = False, tol: Optional[float] = None, *,
                      threads: Optional[int] = None) -> np.ndarray:
@@ -267,12 +272,43 @@ class Delaunay:
         found = _core.locate(self._points, self._tri.triangles, self._tri.neighbors, q, nthreads)
         return found.view(np.intc).reshape(shape)
 
+    def __getstate__(self) -> dict:
+        # The triangulation is a function of the points, so the points and options are enough.
+        return {"points": self._points, "threads": self._threads, "options": self._options,
+                "incremental": self._incremental}
+
+    def __setstate__(self, state: dict) -> None:
+        self._points = state["points"]
+        self._threads = state["threads"]
+        self._options = state["options"]
+        self._incremental = state["incremental"]
+        self._tri = _api.run(self._points, threads=self._threads, progress=None, **self._options)
+        self.furthest_site = False
+        self.good = None
+
+    def _clear(self) -> None:
+        """Forgets what was derived from an earlier triangulation."""
+        for name in ("convex_hull", "vertex_to_simplex", "coplanar", "vertex_neighbor_vertices", "_lift",
+                     "equations", "transform", "min_bound", "max_bound"):
+            self.__dict__.pop(name, None)
+
     def add_points(self, points: Any, restart: bool = False) -> None:
-        raise NotImplementedError(
-            "ridt.Delaunay is not incremental: triangulate all the points again with Delaunay(points)")
+        """Adds points to a triangulation made with ``incremental=True``: the result is the
+        Delaunay triangulation of all the points, the same triangles as a fresh
+        ``Delaunay(all_points)`` (the triangulation is unique, so ``restart`` changes nothing).
+        The points are triangulated anew, which at ridt's speed costs about what scipy's
+        incremental insertion does for a few per cent of new points."""
+        if not self._incremental:
+            raise RuntimeError("incremental mode not enabled or already closed")
+        _refuse_masked(points)
+        more = _api.as_points(points, "points", "ridt.Delaunay.add_points")
+        self._points = np.ascontiguousarray(np.concatenate([self._points, more]))
+        self._tri = _api.run(self._points, threads=self._threads, progress=None, **self._options)
+        self._clear()
 
     def close(self) -> None:
-        """Nothing to release (scipy's incremental mode needs it); kept for compatibility."""
+        """Ends incremental mode (scipy's): add_points then raises RuntimeError."""
+        self._incremental = False
 
     def to_matplotlib(self):
         """A matplotlib.tri.Triangulation of the same triangles, with its neighbours filled in

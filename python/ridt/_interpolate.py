@@ -5,13 +5,14 @@ ridt.NearestNDInterpolator, ridt.NaturalNeighborInterpolator and ridt.griddata
 
 from __future__ import annotations
 
+import warnings
 from functools import cached_property
 from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
 from . import _api, _core
-from ._delaunay import Delaunay, _check_qhull_options
+from ._delaunay import Delaunay, DegenerateInputWarning, _check_qhull_options, _refuse_masked
 
 
 class Voronoi:
@@ -57,20 +58,53 @@ class Voronoi:
                  qhull_options: Optional[str] = None, *, threads: int = 1):
         if furthest_site:
             raise NotImplementedError("furthest_site=True: ridt computes the nearest-site diagram only")
-        if incremental:
-            raise NotImplementedError("incremental=True: ridt computes a whole diagram in one call")
         _check_qhull_options(qhull_options)
-        self._points = _api.as_points(points, "points", "ridt.Voronoi")
-        threads = _api.thread_count(threads)
-        self._tri = _api.run(self._points, method="auto", threads=threads, order="brio", locate="auto", seed=1,
+        self._incremental = bool(incremental)
+        _refuse_masked(points)
+        options = qhull_options.decode() if isinstance(qhull_options, bytes) else qhull_options
+        # scipy's default is "Qbb Qc Qz": Qz adds a point at infinity to Qhull's input, which
+        # shows as one more region, empty, that no point owns.
+        at_infinity = options is None or "Qz" in options.split()
+        self._build(_api.as_points(points, "points", "ridt.Voronoi"), _api.thread_count(threads), at_infinity)
+
+    def _build(self, points: np.ndarray, threads: int, at_infinity: bool) -> None:
+        self._points, self._threads, self._at_infinity = points, threads, at_infinity
+        self._tri = _api.run(points, method="auto", threads=threads, order="brio", locate="auto", seed=1,
                              progress=None)
         if self._tri.warning:
             raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
-        (self.vertices, self._offsets, self._cell_vertices, point_cell, ridge_points,
-         self._ridge_vertices) = _core.voronoi(self._points, self._tri, threads)
+        (self.vertices, offsets, self._cell_vertices, point_cell, ridge_points,
+         self._ridge_vertices) = _core.voronoi(points, self._tri, threads)
+        if at_infinity:  # region 0 is the empty one of the point at infinity
+            offsets = np.concatenate([offsets[:1], offsets])
+            point_cell = point_cell + 1
+        self._offsets = offsets
         self.ridge_points = ridge_points.view(np.intc)
         self.point_region = point_cell.astype(np.intp)
         self.furthest_site = False
+
+    def __getstate__(self) -> dict:
+        return {"points": self._points, "threads": self._threads, "at_infinity": self._at_infinity,
+                "incremental": self._incremental}
+
+    def __setstate__(self, state: dict) -> None:
+        self._incremental = state["incremental"]
+        self._build(state["points"], state["threads"], state["at_infinity"])
+
+    def add_points(self, points: Any, restart: bool = False) -> None:
+        """Adds points to a diagram made with ``incremental=True``: the result is the diagram of
+        all the points, as a fresh ``Voronoi(all_points)`` gives it."""
+        if not self._incremental:
+            raise RuntimeError("incremental mode not enabled or already closed")
+        _refuse_masked(points)
+        more = _api.as_points(points, "points", "ridt.Voronoi.add_points")
+        for name in ("_ints", "ridge_vertices", "regions", "ridge_directions", "ridge_dict"):
+            self.__dict__.pop(name, None)
+        self._build(np.ascontiguousarray(np.concatenate([self._points, more])), self._threads, self._at_infinity)
+
+    def close(self) -> None:
+        """Ends incremental mode (scipy's): add_points then raises RuntimeError."""
+        self._incremental = False
 
     @property
     def points(self) -> np.ndarray:
@@ -120,8 +154,17 @@ class Voronoi:
     def ridge_dict(self) -> Dict[Tuple[int, int], List[int]]:
         return {(int(a), int(b)): list(uv) for (a, b), uv in zip(self.ridge_points.tolist(), self.ridge_vertices)}
 
-    def close(self) -> None:
-        """Nothing to release (scipy's incremental mode only)."""
+
+def _coordinates(points: Any, who: str) -> np.ndarray:
+    """Points as scipy.interpolate takes them: an array (n, 2) or a tuple of two coordinate
+    arrays (broadcast together; a tuple of one item is that item), checked by as_points."""
+    if isinstance(points, tuple):
+        if len(points) == 1:
+            points = points[0]
+        else:
+            axes = np.broadcast_arrays(*[np.asarray(p) for p in points])
+            points = np.stack([a.reshape(-1) for a in axes], axis=-1)
+    return _api.as_points(points, "points", who)
 
 
 def _as_values(values: Any, n: int, who: str) -> Tuple[np.ndarray, Tuple[int, ...], bool]:
@@ -207,10 +250,12 @@ class _TriangulationInterpolator:
         who = f"ridt.{self._name}"
         self._threads = _api.thread_count(threads)
         if isinstance(points, Delaunay):
+            if rescale:
+                raise ValueError("Rescaling is not supported when passing a Delaunay triangulation as ``points``.")
             self.tri = points
             pts = points.points
         else:
-            pts = _api.as_points(points, "points", who)
+            pts = _coordinates(points, who)
             self.tri = None
         self._offset = np.zeros(2)
         self._scale = np.ones(2)
@@ -285,24 +330,74 @@ class NaturalNeighborInterpolator(_TriangulationInterpolator):
 
 class NearestNDInterpolator:
     """Nearest-neighbour interpolation with scipy.interpolate.NearestNDInterpolator's interface
-    (in the plane): the value of a nearest point, found by a walk on the Delaunay graph."""
+    (in the plane): the value of a nearest point, found by a walk on the Delaunay graph, or,
+    where the points have no triangle (fewer than three distinct, or all on a line), by their
+    order along the line. The values keep their dtype, as scipy's do."""
 
     def __init__(self, x: Any, y: Any, rescale: bool = False, tree_options: Any = None, *, threads: int = 1):
-        self._inner = LinearNDInterpolator(x, y, rescale=rescale, threads=threads)
+        who = "ridt.NearestNDInterpolator"
+        pts = x.points if isinstance(x, Delaunay) else _coordinates(x, who)
+        self.values = np.asarray(y)
+        if self.values.ndim == 0 or self.values.shape[0] != pts.shape[0]:
+            raise ValueError(f"{who}: values must have {pts.shape[0]} rows, one a point; got shape {self.values.shape}")
+        self._threads = _api.thread_count(threads)
+        self._offset, self._scale = np.zeros(2), np.ones(2)
+        if rescale:
+            self._offset = pts.mean(axis=0)
+            ptp = np.ptp(pts, axis=0)
+            self._scale = np.where(ptp > 0, ptp, 1.0)
+            pts = np.ascontiguousarray((pts - self._offset) / self._scale)
+        self.points = pts
+        self._rescaled = bool(rescale)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DegenerateInputWarning)
+            self.tri = Delaunay(pts, threads=self._threads)
+        self._line = None if self.tri.nsimplex else _Line(pts, self.tri.triangulation.duplicates)
 
     def __call__(self, *args: Any) -> np.ndarray:
-        inner = self._inner
         xi, shape = _as_queries(args, "ridt.NearestNDInterpolator")
-        if inner._rescaled:
-            xi = np.ascontiguousarray((xi - inner._offset) / inner._scale)
-        which = _core.nearest(inner.tri.points, inner.tri._tri, xi, inner._threads)
-        out = np.full((len(xi), inner.values.shape[1]), np.nan)
-        ok = which >= 0
-        out[ok] = inner.values[which[ok]]
-        if inner._complex:
-            half = out.shape[1] // 2
-            out = out[:, :half] + 1j * out[:, half:]
-        return out.reshape(shape + inner._trailing)
+        if self._rescaled:
+            xi = np.ascontiguousarray((xi - self._offset) / self._scale)
+        if self._line is None:
+            which = _core.nearest(self.points, self.tri.triangulation, xi, self._threads)
+        else:
+            which = self._line.nearest(xi)
+        lost = which < 0  # a query that is not finite
+        out = self.values[np.where(lost, 0, which)]
+        if lost.any():
+            if out.dtype.kind not in "fc":
+                out = out.astype(np.float64)
+            out[lost] = np.nan
+        return out.reshape(shape + self.values.shape[1:])
+
+
+class _Line:
+    """Points with no triangle: one distinct point, or all on a line. A query's nearest point is
+    the one nearest its projection on the line, found by bisection in their order along it."""
+
+    def __init__(self, points: np.ndarray, duplicates: np.ndarray):
+        keep = np.ones(len(points), dtype=bool)
+        keep[duplicates[:, 0]] = False
+        self.index = np.flatnonzero(keep)
+        distinct = points[self.index]
+        order = np.lexsort((distinct[:, 1], distinct[:, 0]))  # along the line, for collinear points
+        self.index, self.points = self.index[order], distinct[order]
+        self.origin = self.points[0]
+        self.direction = self.points[-1] - self.origin
+        self.t = (self.points - self.origin) @ self.direction
+
+    def nearest(self, xi: np.ndarray) -> np.ndarray:
+        out = np.full(len(xi), -1, dtype=np.intp)
+        finite = np.isfinite(xi).all(axis=1)
+        if len(self.index) == 0:
+            return out
+        q = xi[finite]
+        k = np.searchsorted(self.t, (q - self.origin) @ self.direction)
+        # The neighbours of the bisection's place, wide enough for the rounding of t.
+        candidates = np.clip(k[:, None] + np.arange(-2, 2)[None, :], 0, len(self.t) - 1)
+        d2 = ((self.points[candidates] - q[:, None, :]) ** 2).sum(axis=2)
+        out[finite] = self.index[candidates[np.arange(len(q)), d2.argmin(axis=1)]]
+        return out
 
 
 def griddata(points: Any, values: Any, xi: Any, method: str = "linear", fill_value: Any = np.nan,

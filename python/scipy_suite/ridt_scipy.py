@@ -12,7 +12,7 @@ What ridt does not claim is not run against Qhull in its place: input that is no
 ConvexHull, HalfspaceIntersection and Qhull's own object skip the test with a reason that
 starts with "outside ridt's claim", and scipy's classes ridt does not have yet skip it with
 "not in ridt yet"; the summary counts both. Every ridt.Delaunay a test builds is checked by the
-exact validator when the test ends, and a test listed in exceptions.txt (one that pins Qhull's
+exact validator as it is made, and a test listed in exceptions.txt (one that pins Qhull's
 arbitrary choice among equally valid answers) must fail, strictly, with every triangulation it
 built valid.
 """
@@ -32,7 +32,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 OUTSIDE = "outside ridt's claim"
 MISSING = "not in ridt yet"
 
-_built: List[Any] = []  # the ridt.Delaunay objects built during the current test
 _used: Counter = Counter()  # how often each replacement was called, over the whole session
 
 
@@ -45,6 +44,15 @@ def _dimension(points: Any) -> int:
         return len(points)
     a = np.asarray(points)
     return a.shape[-1] if a.ndim >= 2 else 1
+
+
+def _validate(tri: "ridt.Delaunay") -> None:
+    """Every triangulation a test builds, checked exactly as it is made (a test may then change
+    its arrays in place, as test_nd_simplex sorts them), whatever the test asserts."""
+    _used["validated"] += 1
+    if tri.nsimplex:
+        valid, message = ridt.check(tri.points, tri.simplices)
+        assert valid, f"ridt's triangulation of {tri.npoints} points is not valid: {message}"
 
 
 def _outside(what: str) -> None:
@@ -66,10 +74,9 @@ def _replacement(name: str, ridt_class: Any, first_arg: str = "points") -> type:
             _outside(f"{name} in {d}-D")
         _used[name] += 1
         obj = ridt_class(*args, **kwargs)
-        if isinstance(obj, ridt.Delaunay):
-            _built.append(obj)
-        elif hasattr(obj, "tri") and isinstance(obj.tri, ridt.Delaunay):
-            _built.append(obj.tri)
+        tri = getattr(obj, "tri", obj)
+        if isinstance(tri, ridt.Delaunay):
+            _validate(tri)
         return obj
 
     return _Replacing(name, (), {"__new__": __new__, "_ridt": ridt_class, "__doc__": ridt_class.__doc__})
@@ -173,19 +180,6 @@ def pytest_collection_modifyitems(config: pytest.Config, items: List[pytest.Item
         if key in exceptions:
             config._ridt_seen.add(key)  # type: ignore[attr-defined]
             item.add_marker(pytest.mark.xfail(reason=f"pins Qhull's choice: {exceptions[key]}", strict=True))
-
-
-@pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_call(item: pytest.Item):
-    _built.clear()
-    outcome = yield
-    # Every triangulation the test built, checked exactly whatever the test asserted.
-    for tri in _built:
-        if tri.nsimplex:
-            valid, message = ridt.check(tri.points, tri.simplices)
-            assert valid, f"ridt's triangulation of {tri.npoints} points is not valid: {message}"
-    _built.clear()
-    return outcome
 
 
 def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:

@@ -327,6 +327,21 @@ Triangulation alive.
       },
       py::arg("points"), py::arg("triangulation"), py::arg("queries"), py::arg("threads"));
 
+  m.def(
+      "transforms",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
+        py::array_t<double> out({static_cast<py::ssize_t>(t.size() / 3), py::ssize_t{3}, py::ssize_t{2}});
+        const std::span<double> o(out.mutable_data(), t.size() * 2);
+        {
+          py::gil_scoped_release nogil;
+          ridt::barycentric_transforms(pts, t, o, threads);
+        }
+        return out;
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("threads"));
+
   m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
   m.def("cached_memory", &ridt::cached_memory);
 }

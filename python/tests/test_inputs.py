@@ -57,9 +57,7 @@ def test_wrong_shapes_and_types(pts, error, match):
 def test_unsupported_scipy_options_name_the_reason():
     with pytest.raises(NotImplementedError, match="furthest"):
         ridt.Delaunay(PTS, furthest_site=True)
-    with pytest.raises(NotImplementedError, match="incremental"):
-        ridt.Delaunay(PTS, incremental=True)
-    with pytest.raises(NotImplementedError, match="not incremental"):
+    with pytest.raises(RuntimeError, match="incremental mode not enabled"):
         ridt.Delaunay(PTS).add_points(PTS)
     with pytest.raises(ValueError, match="QG4"):
         ridt.Delaunay(PTS, qhull_options="Qbb QG4")

@@ -181,7 +181,9 @@ def test_voronoi_duplicates_and_degenerate_input():
     p = np.array([[0, 0], [1, 0], [0, 1], [1, 1], [0.4, 0.6], [1, 0]], dtype=float)
     vd = ridt.Voronoi(p)
     assert vd.point_region[5] == vd.point_region[1]
-    assert len(vd.regions) == 5
+    # scipy's default options hold Qz: one more region, empty, owned by no point.
+    assert len(vd.regions) == 6 and vd.regions[0] == [] and 0 not in vd.point_region
+    assert len(ridt.Voronoi(p, qhull_options="Qbb Qc").regions) == 5
     with pytest.raises(ridt.InputError):
         ridt.Voronoi([[0, 0], [1, 1], [2, 2]])
     with pytest.raises(NotImplementedError):
