@@ -15,6 +15,7 @@
 #include "cavity.hpp"
 #include "circumcentre.hpp"
 #include "parallel.hpp"
+#include "predicates.hpp"
 
 namespace ridt {
 namespace {
@@ -169,6 +170,99 @@ Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned 
   cells(t, cut, threads, out);
   ridges(t, cut, threads, out);
   return out;
+}
+
+namespace {
+
+// The pairs of neighbouring triangles (lower, higher) whose four points are cocircular.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> cocircular_pairs(std::span<const Point> points,
+                                                                      const Triangulation& t,
+                                                                      const std::vector<std::size_t>& cut,
+                                                                      unsigned threads) {
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(cut.size() - 1);
+  each_part(cut, threads, [&](std::size_t p, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k)
+      for (int i = 0; i < 3; ++i) {
+        const std::int32_t u = t.neighbors[3 * k + i];
+        if (u < 0 || static_cast<std::size_t>(u) < k) continue;
+        // u's vertex across the shared side: the one that is not on it.
+        const VertexId* w = &t.triangles[3 * static_cast<std::size_t>(u)];
+        const VertexId a = t.triangles[3 * k + next3(i)], b = t.triangles[3 * k + prev3(i)];
+        const VertexId d = w[0] != a && w[0] != b ? w[0] : w[1] != a && w[1] != b ? w[1] : w[2];
+        const VertexId* c = &t.triangles[3 * k];
+        if (detail::incircle(points[c[0]], points[c[1]], points[c[2]], points[d]) == 0)
+          found[p].emplace_back(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(u));
+      }
+  });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
+  return pairs;
+}
+
+// Each triangle's group of cocircular neighbours, named by its lowest triangle.
+std::vector<std::uint32_t> groups(std::size_t count, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+  std::vector<std::uint32_t> root(count);
+  for (std::size_t k = 0; k < count; ++k) root[k] = static_cast<std::uint32_t>(k);
+  auto find = [&](std::uint32_t k) {
+    while (root[k] != k) k = root[k] = root[root[k]];
+    return k;
+  };
+  for (const auto& [a, b] : pairs) {
+    const std::uint32_t ra = find(a), rb = find(b);
+    if (ra != rb) root[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  for (std::size_t k = 0; k < count; ++k) root[k] = find(static_cast<std::uint32_t>(k));
+  return root;
+}
+
+}  // namespace
+
+std::vector<std::int32_t> merge_cocircular(std::span<const Point> points, const Triangulation& t, Voronoi& vd,
+                                           unsigned threads) {
+  detail::check_arrays("merge_cocircular", points.size(), t.triangles, t.neighbors);
+  if (vd.vertices.size() != t.size()) throw InputError("merge_cocircular: the diagram is not this triangulation's, or is merged already");
+  const std::size_t count = t.size();
+  std::vector<std::int32_t> vertex(count);
+  for (std::size_t k = 0; k < count; ++k) vertex[k] = static_cast<std::int32_t>(k);
+  const auto pairs = cocircular_pairs(points, t, stretches(count, threads), threads);
+  if (pairs.empty()) return vertex;
+  // New vertex numbers in the order of each group's lowest triangle, which comes first.
+  const std::vector<std::uint32_t> root = groups(count, pairs);
+  std::vector<Point> merged;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (root[k] == k) {
+      vertex[k] = static_cast<std::int32_t>(merged.size());
+      merged.push_back(vd.vertices[k]);
+    } else {
+      vertex[k] = vertex[root[k]];
+    }
+  }
+  vd.vertices = std::move(merged);
+  // Cells: each group's triangles around a site are consecutive (the group is a convex
+  // polygon's), so a repeat follows its first, or closes a bounded cell onto its start.
+  std::size_t at = 0;
+  for (std::size_t c = 0; c < vd.cells(); ++c) {
+    const std::size_t first = vd.cell_offsets[c], last = vd.cell_offsets[c + 1], start = at;
+    for (std::size_t k = first; k < last; ++k) {
+      const std::int32_t v = vd.cell_vertices[k] < 0 ? -1 : vertex[static_cast<std::size_t>(vd.cell_vertices[k])];
+      if (at > start && vd.cell_vertices[at - 1] == v) continue;
+      vd.cell_vertices[at++] = v;
+    }
+    if (at - start > 1 && vd.cell_vertices[at - 1] == vd.cell_vertices[start]) --at;
+    vd.cell_offsets[c] = static_cast<std::uint32_t>(start);
+  }
+  vd.cell_offsets[vd.cells()] = static_cast<std::uint32_t>(at);
+  vd.cell_vertices.resize(at);
+  // Ridges: both ends renumbered; those inside a group have length zero.
+  std::size_t kept = 0;
+  for (const Ridge& r : vd.ridges) {
+    Ridge m = r;
+    m.u = vertex[static_cast<std::size_t>(r.u)];
+    if (r.v >= 0) m.v = vertex[static_cast<std::size_t>(r.v)];
+    if (m.u != m.v) vd.ridges[kept++] = m;
+  }
+  vd.ridges.resize(kept);
+  return vertex;
 }
 
 }  // namespace ridt

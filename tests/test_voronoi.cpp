@@ -139,5 +139,48 @@ TEST(Voronoi, RefusesATriangulationOfOtherPoints) {
   EXPECT_THROW(voronoi(std::span(pts).first(2), t), InputError);
 }
 
+TEST(Voronoi, CocircularNeighboursShareOneVertex) {
+  // A 3 x 3 grid: four squares, each two triangles on one circle; the diagram has a vertex a
+  // square and a ridge for each of the grid's 12 sides, none for the diagonals.
+  std::vector<Point> pts;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) pts.push_back({double(i), double(j)});
+  const Triangulation t = triangulate(pts);
+  Voronoi vd = voronoi(pts, t);
+  const std::vector<std::int32_t> vertex = merge_cocircular(pts, t, vd);
+  ASSERT_EQ(vd.vertices.size(), 4u);
+  EXPECT_EQ(vd.ridges.size(), 12u);
+  for (const Ridge& r : vd.ridges) {
+    EXPECT_NE(r.u, r.v);
+    EXPECT_EQ(std::fabs(pts[r.a].x - pts[r.b].x) + std::fabs(pts[r.a].y - pts[r.b].y), 1.0);
+  }
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point& c = vd.vertices[static_cast<std::size_t>(vertex[k])];
+    for (int i = 0; i < 3; ++i)  // the vertex is its triangles' circumcentre
+      EXPECT_DOUBLE_EQ(std::hypot(pts[t.triangles[3 * k + i]].x - c.x, pts[t.triangles[3 * k + i]].y - c.y),
+                       std::sqrt(0.5));
+  }
+  // The centre's cell is the square of the four vertices; each vertex once in every cell.
+  const auto centre = vd.cell(static_cast<std::size_t>(vd.point_cell[4]));
+  EXPECT_EQ(centre.size(), 4u);
+  for (std::size_t c = 0; c < vd.cells(); ++c) {
+    std::vector<std::int32_t> seen(vd.cell(c).begin(), vd.cell(c).end());
+    std::sort(seen.begin(), seen.end());
+    EXPECT_EQ(std::adjacent_find(seen.begin(), seen.end()), seen.end());
+  }
+}
+
+TEST(Voronoi, MergingChangesNothingInGeneralPosition) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 5000, 4);
+  const Triangulation t = triangulate(pts);
+  const Voronoi before = voronoi(pts, t, 2);
+  Voronoi after = before;
+  merge_cocircular(pts, t, after, 2);
+  EXPECT_EQ(before.vertices.size(), after.vertices.size());
+  EXPECT_EQ(before.cell_vertices, after.cell_vertices);
+  EXPECT_EQ(before.ridges.size(), after.ridges.size());
+  EXPECT_THROW(merge_cocircular(std::span(pts).first(10), t, after), InputError);
+}
+
 }  // namespace
 }  // namespace ridt

@@ -60,4 +60,17 @@ struct Voronoi {
 /// double. Throws InputError when `t` does not fit `points`.
 Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads = 1);
 
+/// Makes `vd` (voronoi(points, t)) the diagram proper, as Qhull reports it: where neighbouring
+/// triangles are cocircular (four points on one circle, decided by the exact in-circle test,
+/// not the perturbation that picks the triangulation's diagonal), their circumcentres are one
+/// Voronoi vertex; a grid's 2 x 2 squares give one vertex each, not two. The vertices are
+/// renumbered in the order of their first triangle (vertex v is then the circumcentre of the
+/// lowest-numbered triangle of its group, not of triangle v), cells list each vertex once, and
+/// the ridges of length zero between the triangles of a group are dropped. Returns each
+/// triangle's vertex. Without cocircular neighbours (points in general position) nothing
+/// changes. A merged diagram's cells no longer name triangles: io::clipped_cell takes the
+/// unmerged one.
+std::vector<std::int32_t> merge_cocircular(std::span<const Point> points, const Triangulation& t, Voronoi& vd,
+                                           unsigned threads = 1);
+
 }  // namespace ridt

@@ -111,6 +111,11 @@ class Voronoi:
         return self._points
 
     @property
+    def triangulation(self) -> _core.Triangulation:
+        """ridt's Delaunay triangulation of the points, whose dual the diagram is."""
+        return self._tri
+
+    @property
     def npoints(self) -> int:
         return int(self._points.shape[0])
 

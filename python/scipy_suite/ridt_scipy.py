@@ -46,13 +46,21 @@ def _dimension(points: Any) -> int:
     return a.shape[-1] if a.ndim >= 2 else 1
 
 
-def _validate(tri: "ridt.Delaunay") -> None:
+_current = [""]  # the test that runs now
+_verdicts: Dict[str, List[str]] = {}  # the validator's words on each test's triangulations
+_invalid: List[str] = []
+
+
+def _validate(points: np.ndarray, triangles: np.ndarray) -> None:
     """Every triangulation a test builds, checked exactly as it is made (a test may then change
-    its arrays in place, as test_nd_simplex sorts them), whatever the test asserts."""
+    its arrays in place, as test_nd_simplex sorts them), whatever the test asserts. A failure
+    fails the session too, so that an expected failure cannot hide it."""
     _used["validated"] += 1
-    if tri.nsimplex:
-        valid, message = ridt.check(tri.points, tri.simplices)
-        assert valid, f"ridt's triangulation of {tri.npoints} points is not valid: {message}"
+    valid, message = ridt.check(points, triangles) if len(triangles) else (True, "empty (degenerate input)")
+    _verdicts.setdefault(_current[0], []).append(message)
+    if not valid:
+        _invalid.append(f"{_current[0]}: {message}")
+        raise AssertionError(f"ridt's triangulation of {len(points)} points is not valid: {message}")
 
 
 def _outside(what: str) -> None:
@@ -74,9 +82,9 @@ def _replacement(name: str, ridt_class: Any, first_arg: str = "points") -> type:
             _outside(f"{name} in {d}-D")
         _used[name] += 1
         obj = ridt_class(*args, **kwargs)
-        tri = getattr(obj, "tri", obj)
-        if isinstance(tri, ridt.Delaunay):
-            _validate(tri)
+        owner = getattr(obj, "tri", obj)  # an interpolator's Delaunay, or the object itself
+        if isinstance(owner, (ridt.Delaunay, ridt.Voronoi)):
+            _validate(owner.points, owner.triangulation.triangles)
         return obj
 
     return _Replacing(name, (), {"__new__": __new__, "_ridt": ridt_class, "__doc__": ridt_class.__doc__})
@@ -182,6 +190,10 @@ def pytest_collection_modifyitems(config: pytest.Config, items: List[pytest.Item
             item.add_marker(pytest.mark.xfail(reason=f"pins Qhull's choice: {exceptions[key]}", strict=True))
 
 
+def pytest_runtest_setup(item: pytest.Item) -> None:
+    _current[0] = _short_id(item)
+
+
 def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:
     stats = terminalreporter.stats
     reasons: Counter = Counter()
@@ -196,6 +208,10 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     for reason, count in sorted(reasons.items()):
         tw.line(f"skipped, {reason}: {count}")
     tw.line("replacements called: " + ", ".join(f"{k} {v}" for k, v in sorted(_used.items())))
+    for test in sorted(config._ridt_seen):  # type: ignore[attr-defined]
+        verdicts = Counter(v.split(":")[0] for v in _verdicts.get(test, []))
+        tw.line(f"  exception {test}: validator on its {sum(verdicts.values())} triangulations: "
+                + ", ".join(f"{k} {n}" for k, n in sorted(verdicts.items())))
     for problem in _problems(config):
         tw.line(problem)
 
@@ -205,6 +221,7 @@ def _problems(config: pytest.Config) -> List[str]:
     unseen = set(config._ridt_exceptions) - config._ridt_seen  # type: ignore[attr-defined]
     if unseen:
         out.append(f"exceptions.txt names tests that were not collected: {sorted(unseen)}")
+    out += [f"not a valid triangulation: {x}" for x in _invalid]
     if not _used["Delaunay"] or not _used["LinearNDInterpolator"] or not _used["griddata"]:
         out.append("ridt's classes were never called: the replacement did not take")
     return out
