@@ -93,6 +93,37 @@ double doubled_area(const Point& a, const Point& b, const Point& c);
 void barycentric_transforms(std::span<const Point> points, std::span<const VertexId> triangles,
                             std::span<double> out, unsigned threads = 1);
 
+/// Gradients for the cubic (Clough-Tocher) interpolant, as scipy's
+/// estimate_gradients_2d_global finds them: those that minimise, over the triangulation's
+/// edges, the integral of the squared second derivative of the cubic along each edge that the
+/// values and gradients at its ends define (Nielson's minimum-norm network). Solved by sweeps
+/// over the points in their order, each point's gradient set to the best for its neighbours'
+/// (Gauss-Seidel), until a sweep changes no gradient by more than `tol` (relative to the
+/// gradient where it exceeds 1) or after `maxiter` sweeps. `gradients` receives
+/// points.size() * values.components * 2 numbers: for point i and component c, d/dx at
+/// 2 (i * components + c) and d/dy after it; a duplicate left out gets its kept point's.
+/// Returns the sweeps made, or 0 when `maxiter` were not enough (the gradients are then those
+/// of the last sweep). Linear data get their exact gradient. Throws InputError for sizes that
+/// do not match, a tol that is not positive or a maxiter below 1.
+int estimate_gradients(std::span<const Point> points, const Triangulation& t, Values values,
+                       std::span<double> gradients, double tol = 1e-6, int maxiter = 400);
+
+/// The piecewise cubic Clough-Tocher interpolant: each triangle split at its centroid into
+/// three cubic pieces that take the values and `gradients` (laid out as estimate_gradients
+/// writes them) at the corners, continuously differentiable inside and across the triangles;
+/// the derivative across each side is linear along it, taken along the line between the
+/// centroids of the two triangles that share it (across a hull side, along its normal), as
+/// scipy's CloughTocher2DInterpolator does. Exact on quadratics whose gradients are given.
+/// The piece is chosen and evaluated with the exact barycentric coordinates (barycentric), so
+/// at a data point the answer is its value. `fill` outside the hull; on threads.
+void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
+                               std::span<const double> gradients, std::span<const Point> queries,
+                               std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(),
+                               unsigned threads = 1);
+void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
+                               std::span<const double> gradients, const Grid& grid, std::span<double> out,
+                               double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+
 /// For each query, the index of a nearest point among the triangulation's vertices (a greedy
 /// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not
 /// finite or when there is no triangle.

@@ -15,12 +15,16 @@ and thread count.
 from ._api import check, triangulate
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._delaunay import Delaunay, DegenerateInputWarning
-from ._interpolate import (LinearNDInterpolator, NaturalNeighborInterpolator, NearestNDInterpolator, Voronoi,
+from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
+                           NaturalNeighborInterpolator, NearestNDInterpolator, Voronoi, estimate_gradients_2d_global,
                            griddata)
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "CloughTocher2DInterpolator",
+    "GradientEstimationWarning",
+    "estimate_gradients_2d_global",
     "Delaunay",
     "DegenerateInputWarning",
     "InputError",

@@ -290,7 +290,7 @@ class _TriangulationInterpolator:
                     grid = None
         if grid is not None:
             out = _core.interpolate_grid(self.tri.points, self.tri._tri, self.values, xs, ys, x_major,
-                                         float(self.fill_value), self._method, self._threads)
+                                         float(self.fill_value), self._method, self._threads, self._gradients())
             return out.reshape(shape + self._trailing)
         xi, shape = _as_queries(args, self._who)
         if self._rescaled:
@@ -301,13 +301,16 @@ class _TriangulationInterpolator:
             out = out[:, :half] + 1j * out[:, half:]
         return out.reshape(shape + self._trailing)
 
+    def _gradients(self) -> Optional[np.ndarray]:
+        return None
+
     def _evaluate(self, xi: np.ndarray) -> np.ndarray:
         if not self._complex:
             return _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, float(self.fill_value),
-                                     self._method, self._threads)
+                                     self._method, self._threads, self._gradients())
         fill = complex(self.fill_value)
         out = _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, fill.real, self._method,
-                                self._threads)
+                                self._threads, self._gradients())
         outside = self.tri.find_simplex(xi) < 0
         out[outside, out.shape[1] // 2:] = fill.imag
         return out
@@ -331,6 +334,72 @@ class NaturalNeighborInterpolator(_TriangulationInterpolator):
 
     _method = "natural"
     _name = "NaturalNeighborInterpolator"
+
+
+class GradientEstimationWarning(Warning):
+    """The gradients' sweeps stopped at maxiter before they settled (scipy's warning)."""
+
+
+def estimate_gradients_2d_global(tri: Delaunay, y: Any, maxiter: int = 400, tol: float = 1e-6) -> np.ndarray:
+    """scipy.interpolate's estimate_gradients_2d_global on a :class:`ridt.Delaunay`: the
+    gradients at the points that minimise the squared second derivative along the Delaunay
+    edges of the cubics the data define on them (Nielson's minimum-norm network), by
+    Gauss-Seidel sweeps until a sweep changes no gradient by more than `tol` (relative, where
+    the gradient exceeds 1), at most `maxiter`. Returns an array of y's shape plus a last axis
+    of 2 (d/dx, d/dy); warns with :class:`GradientEstimationWarning` when the sweeps did not
+    settle. Exact for linear data."""
+    if not isinstance(tri, Delaunay):
+        raise TypeError("tri must be a ridt.Delaunay")
+    y = np.asanyarray(y)
+    if y.ndim == 0 or y.shape[0] != tri.npoints:
+        raise ValueError("'y' has a wrong number of items")
+    if np.iscomplexobj(y):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", GradientEstimationWarning)
+            try:
+                re = estimate_gradients_2d_global(tri, y.real, maxiter=maxiter, tol=tol)
+                im = estimate_gradients_2d_global(tri, y.imag, maxiter=maxiter, tol=tol)
+                return re + 1j * im
+            except GradientEstimationWarning:
+                pass
+        warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
+                      GradientEstimationWarning, stacklevel=2)
+        return (estimate_gradients_2d_global(tri, y.real, maxiter=maxiter, tol=tol)
+                + 1j * estimate_gradients_2d_global(tri, y.imag, maxiter=maxiter, tol=tol))
+    if int(maxiter) < 1 or not float(tol) > 0:
+        raise ValueError(f"maxiter must be at least 1 and tol positive; got {maxiter} and {tol}")
+    v = np.ascontiguousarray(y.reshape(tri.npoints, -1), dtype=np.float64)
+    g, sweeps = _core.estimate_gradients(tri.points, tri.triangulation, v, float(tol), int(maxiter))
+    if sweeps == 0:
+        warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
+                      GradientEstimationWarning, stacklevel=2)
+    return g.reshape(y.shape + (2,))
+
+
+class CloughTocher2DInterpolator(_TriangulationInterpolator):
+    """Piecewise cubic, C1 interpolation with scipy.interpolate.CloughTocher2DInterpolator's
+    interface: ``CloughTocher2DInterpolator(points, values, fill_value=nan, tol=1e-6,
+    maxiter=400, rescale=False)``. Each triangle of ridt's exact triangulation is split at its
+    centroid into three cubic pieces that take the values and the gradients ``grad`` (estimated
+    as :func:`estimate_gradients_2d_global` does; set it to use others) at its corners; the
+    derivative across each side is linear, along the line between the two triangles'
+    centroids, as scipy does. Computed in C++ on ``threads`` threads; at a data point its
+    value exactly."""
+
+    _method = "cubic"
+    _name = "CloughTocher2DInterpolator"
+
+    def __init__(self, points: Any, values: Any, fill_value: Any = np.nan, tol: float = 1e-6, maxiter: int = 400,
+                 rescale: bool = False, *, threads: int = 1):
+        super().__init__(points, values, fill_value=fill_value, rescale=rescale, threads=threads)
+        k = self.values.shape[1] // (2 if self._complex else 1)
+        data = self.values[:, :k] + 1j * self.values[:, k:] if self._complex else self.values
+        self.grad = estimate_gradients_2d_global(self.tri, data, maxiter=maxiter, tol=tol)
+
+    def _gradients(self) -> np.ndarray:
+        g = np.asarray(self.grad)
+        g = np.concatenate([g.real, g.imag], axis=1) if self._complex else g
+        return np.ascontiguousarray(g, dtype=np.float64).reshape(len(self.values), -1)
 
 
 class NearestNDInterpolator:
@@ -409,17 +478,15 @@ def griddata(points: Any, values: Any, xi: Any, method: str = "linear", fill_val
              rescale: bool = False, *, threads: int = 1) -> np.ndarray:
     """Interpolate scattered data, with scipy.interpolate.griddata's arguments (in the plane).
 
-    ``method`` is 'linear', 'nearest' or 'cubic' in scipy; here 'linear', 'nearest' or
-    'natural' (Sibson's natural neighbours). ``xi`` is an array (..., 2) or a tuple (x, y) of
+    ``method`` is scipy's 'linear', 'nearest' or 'cubic' (Clough-Tocher), or 'natural'
+    (Sibson's natural neighbours). ``xi`` is an array (..., 2) or a tuple (x, y) of
     arrays that broadcast (e.g. from numpy.mgrid). ``threads`` is ridt's own (0 or -1: every
     core).
     """
-    if method == "cubic":
-        raise NotImplementedError("method='cubic' is not in ridt; use 'linear', 'natural' or 'nearest'")
-    if method not in ("linear", "nearest", "natural"):
-        raise ValueError(f"method must be 'linear', 'nearest' or 'natural'; got {method!r}")
+    if method not in ("linear", "nearest", "natural", "cubic"):
+        raise ValueError(f"method must be 'linear', 'cubic', 'nearest' or 'natural'; got {method!r}")
     args = xi if isinstance(xi, tuple) else (xi,)
     if method == "nearest":
         return NearestNDInterpolator(points, values, rescale=rescale, threads=threads)(*args)
-    cls = LinearNDInterpolator if method == "linear" else NaturalNeighborInterpolator
+    cls = {"linear": LinearNDInterpolator, "cubic": CloughTocher2DInterpolator}.get(method, NaturalNeighborInterpolator)
     return cls(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(*args)

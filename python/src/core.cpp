@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -120,7 +121,7 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
 template <class Where>
 py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulation& t, const Points& values,
                                    const Where& where, std::size_t rows, double fill, const std::string& method,
-                                   unsigned threads) {
+                                   unsigned threads, const std::optional<Points>& gradients = std::nullopt) {
   const auto pts = as_points(points, "points");
   if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
   const auto k = static_cast<std::size_t>(values.shape(1));
@@ -129,7 +130,11 @@ py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulati
   const std::span<double> out(a.mutable_data(), rows * k);
   {
     py::gil_scoped_release nogil;
-    if (method == "natural")
+    if (method == "cubic") {
+      if (!gradients) throw std::invalid_argument("the cubic needs gradients");
+      const std::span<const double> g(gradients->data(), static_cast<std::size_t>(gradients->size()));
+      ridt::interpolate_clough_tocher(pts, t, v, g, where, out, fill, threads);
+    } else if (method == "natural")
       ridt::interpolate_natural_neighbor(pts, t, v, where, out, fill, threads);
     else
       ridt::interpolate_linear(pts, t, v, where, out, fill, threads);
@@ -294,25 +299,43 @@ Triangulation alive.
   m.def(
       "interpolate",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& queries, double fill,
-         const std::string& method, unsigned threads) {
+         const std::string& method, unsigned threads, const std::optional<Points>& gradients) {
         const auto q = as_points(queries, "queries");
-        return interpolate_at(points, t, values, q, q.size(), fill, method, threads);
+        return interpolate_at(points, t, values, q, q.size(), fill, method, threads, gradients);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("queries"), py::arg("fill"),
-      py::arg("method"), py::arg("threads"));
+      py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
 
   m.def(
       "interpolate_grid",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
-         bool x_major, double fill, const std::string& method, unsigned threads) {
+         bool x_major, double fill, const std::string& method, unsigned threads, const std::optional<Points>& gradients) {
         if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
         const ridt::Grid g{{x.data(), static_cast<std::size_t>(x.size())},
                            {y.data(), static_cast<std::size_t>(y.size())},
                            x_major};
-        return interpolate_at(points, t, values, g, g.size(), fill, method, threads);
+        return interpolate_at(points, t, values, g, g.size(), fill, method, threads, gradients);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"),
-      py::arg("x_major"), py::arg("fill"), py::arg("method"), py::arg("threads"));
+      py::arg("x_major"), py::arg("fill"), py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
+
+  m.def(
+      "estimate_gradients",
+      [](const Points& points, const ridt::Triangulation& t, const Points& values, double tol, int maxiter) {
+        const auto pts = as_points(points, "points");
+        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
+        const auto k = static_cast<std::size_t>(values.shape(1));
+        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
+        py::array_t<double> g({static_cast<py::ssize_t>(pts.size()), static_cast<py::ssize_t>(k), py::ssize_t{2}});
+        int sweeps = 0;
+        {
+          py::gil_scoped_release nogil;
+          sweeps = ridt::estimate_gradients(pts, t, v, std::span<double>(g.mutable_data(), pts.size() * k * 2), tol,
+                                            maxiter);
+        }
+        return py::make_tuple(g, sweeps);
+      },
+      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("tol"), py::arg("maxiter"));
 
   m.def(
       "nearest",

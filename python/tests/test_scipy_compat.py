@@ -158,7 +158,8 @@ def _objects():
     pts = rng.random((300, 2))
     vals = np.sin(3 * pts[:, 0]) + 1j * pts[:, 1]
     return pts, [ridt.Delaunay(pts), ridt.Voronoi(pts), ridt.LinearNDInterpolator(pts, vals, fill_value=-1),
-                 ridt.NearestNDInterpolator(pts, vals), ridt.NaturalNeighborInterpolator(pts, vals.real)]
+                 ridt.NearestNDInterpolator(pts, vals), ridt.NaturalNeighborInterpolator(pts, vals.real),
+                 ridt.CloughTocher2DInterpolator(pts, vals)]
 
 
 def _answers(obj, q):
@@ -248,3 +249,43 @@ def test_transform_is_exact_where_finite_and_nan_on_slivers():
     m = np.stack([corners[:, 0] - corners[:, 2], corners[:, 1] - corners[:, 2]], axis=2)
     cond = np.array([np.linalg.cond(x, 1) for x in m[~finite]])
     assert (cond > 1e11).all() and (~finite).sum() < 40
+
+
+def test_cubic_equals_scipys_where_the_triangulations_agree():
+    rng = np.random.default_rng(14)
+    pts = rng.random((3000, 2))  # general position: one Delaunay triangulation, Qhull's and ridt's
+    vals = np.sin(5 * pts[:, 0]) * np.cos(3 * pts[:, 1]) + 1j * pts[:, 0] ** 2
+    q = rng.random((4000, 2)) * 1.1 - 0.05
+    ours = ridt.CloughTocher2DInterpolator(pts, vals, fill_value=-1 + 2j, threads=2)
+    theirs = scipy.interpolate.CloughTocher2DInterpolator(pts, vals, fill_value=-1 + 2j)
+    np.testing.assert_allclose(ours.grad, theirs.grad, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(ours(q), theirs(q), rtol=0, atol=1e-12)
+    g = np.linspace(0, 1, 101)
+    grid = ridt.griddata(pts, vals.real, (g[:, None], g[None, :]), method="cubic", rescale=True)
+    np.testing.assert_allclose(grid, scipy.interpolate.griddata(pts, vals.real, (g[:, None], g[None, :]),
+                                                                 method="cubic", rescale=True), rtol=0, atol=1e-12)
+    assert (ours(pts) == vals).all()  # the data at the points, exactly
+
+
+def test_gradients_are_exact_for_linear_data_and_warn_when_unsettled():
+    rng = np.random.default_rng(15)
+    pts = rng.random((200, 2))
+    tri = ridt.Delaunay(pts)
+    g = ridt.estimate_gradients_2d_global(tri, np.c_[3 + 3 * pts[:, 0] + 14.15 * pts[:, 1], 1 - pts[:, 1]])
+    assert g.shape == (200, 2, 2)
+    np.testing.assert_allclose(g[:, 0], np.broadcast_to([3, 14.15], (200, 2)), atol=1e-6)
+    np.testing.assert_allclose(g[:, 1], np.broadcast_to([0, -1], (200, 2)), atol=1e-6)
+    with pytest.warns(ridt.GradientEstimationWarning):
+        ridt.estimate_gradients_2d_global(tri, rng.random(200), maxiter=1)
+    with pytest.raises(ValueError):
+        ridt.estimate_gradients_2d_global(tri, rng.random(199))
+
+
+def test_cubic_uses_the_gradients_it_is_given():
+    pts = np.array([(0, 0), (1, 0), (0.5, np.sqrt(3) / 2)])
+    ip = ridt.CloughTocher2DInterpolator(pts, [1.0, 0, 0])
+    before = ip([[0.3, 0.2]])
+    ip.grad[...] = 0
+    assert ip([[0.3, 0.2]]) != before
+    twin = pickle.loads(pickle.dumps(ip))
+    assert twin([[0.3, 0.2]]) == ip([[0.3, 0.2]])

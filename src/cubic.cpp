@@ -1,0 +1,239 @@
+// The cubic interpolant (ridt/interpolate.hpp): gradients estimated on the Delaunay graph, then
+// the Clough-Tocher split of each triangle into three cubic Bezier pieces.
+//
+// The pieces' control points, for a triangle P0 P1 P2 with centroid C and, at each corner, the
+// value f and gradient g (Farin, "Triangular Bernstein-Bezier patches", 1986):
+//   at a corner:               f_i
+//   on the sides, by a corner: f_i + (P_j - P_i).g_i / 3 (j the side's other end)
+//   towards C, by a corner:    a_i = f_i + (C - P_i).g_i / 3
+//   by each side's middle:     t, such that the derivative across the side is linear along it
+//   next along P_i C:          s_i = (a_i + t of the two sides at P_i) / 3
+//   at C:                      (s_0 + s_1 + s_2) / 3
+// The last two rows make the pieces meet with continuous derivatives inside the triangle; the
+// sides' t make two triangles meet so, since each side's cross derivative is then the linear
+// function of the two corners' gradients, the same from both sides. The direction "across" must
+// be the same from both sides: the line between the two triangles' centroids; on the hull, as
+// if the triangle's mirror image through the side's midpoint lay across it (from the opposite
+// corner to the side's midpoint), which keeps the whole construction affine-invariant.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "field.hpp"
+
+namespace ridt {
+namespace {
+
+using detail::Field;
+using detail::next3;
+using detail::prev3;
+
+// One triangle's Clough-Tocher interpolant at q. The field's values hold, a point, the k values
+// and then their k gradients (d/dx, d/dy each).
+class CloughTocher {
+ public:
+  explicit CloughTocher(const Field& f) : f_(f), k_(f.values.components / 3) {}
+
+  void operator()(std::size_t tri, const Point& q, double* out) const {
+    const Point p[3] = {f_.corner(tri, 0), f_.corner(tri, 1), f_.corner(tri, 2)};
+    double b[3];
+    detail::barycentric(p[0], p[1], p[2], q, b);
+    for (int i = 0; i < 3; ++i)
+      if (b[i] == 1) {  // at a corner (exactly: the weights are exact there): its values
+        std::copy_n(f_.value(f_.vertex(tri, i)), k_, out);
+        return;
+      }
+    const Point c = centroid(p[0], p[1], p[2]);
+    // The direction across each side (side i is across from corner i) as barycentric weights
+    // of its two ends and the centroid, the same for every component.
+    Across across[3];
+    for (int i = 0; i < 3; ++i) across[i] = direction(tri, i, p, c);
+    // The piece: the one across from the corner of least weight.
+    const int m = b[0] <= b[1] && b[0] <= b[2] ? 0 : b[1] <= b[2] ? 1 : 2;
+    const int ia = next3(m), ib = prev3(m);
+    const double u = b[ia] - b[m], v = b[ib] - b[m], w = 3 * b[m];
+    const double* value[3] = {f_.value(f_.vertex(tri, 0)), f_.value(f_.vertex(tri, 1)), f_.value(f_.vertex(tri, 2))};
+    for (std::size_t k = 0; k < k_; ++k) {
+      Corner corner[3];
+      for (int i = 0; i < 3; ++i) {
+        const double gx = value[i][k_ + 2 * k], gy = value[i][k_ + 2 * k + 1];
+        corner[i].f = value[i][k];
+        corner[i].next = value[i][k] + ((p[next3(i)].x - p[i].x) * gx + (p[next3(i)].y - p[i].y) * gy) / 3;
+        corner[i].prev = value[i][k] + ((p[prev3(i)].x - p[i].x) * gx + (p[prev3(i)].y - p[i].y) * gy) / 3;
+        corner[i].in = value[i][k] + ((c.x - p[i].x) * gx + (c.y - p[i].y) * gy) / 3;
+      }
+      double t[3];  // by the middle of side i, from corner next3(i) to prev3(i)
+      for (int i = 0; i < 3; ++i) {
+        const Corner &a = corner[next3(i)], &e = corner[prev3(i)];
+        const Across& d = across[i];
+        const double d0 = d.a * a.f + d.b * a.next + d.c * a.in;
+        const double d2 = d.a * e.prev + d.b * e.f + d.c * e.in;
+        t[i] = ((d0 + d2) / 2 - d.a * a.next - d.b * e.prev) / d.c;
+      }
+      double s[3];
+      for (int i = 0; i < 3; ++i) s[i] = (corner[i].in + t[next3(i)] + t[prev3(i)]) / 3;
+      const double centre = (s[0] + s[1] + s[2]) / 3;
+      const Corner &a = corner[ia], &e = corner[ib];
+      out[k] = a.f * u * u * u + e.f * v * v * v + centre * w * w * w +
+               3 * (a.next * u * u * v + e.prev * u * v * v + a.in * u * u * w + e.in * v * v * w + s[ia] * u * w * w +
+                    s[ib] * v * w * w) +
+               6 * t[m] * u * v * w;
+    }
+  }
+
+ private:
+  struct Corner {
+    double f, next, prev, in;  // the value, the control points towards the next and previous corners and C
+  };
+  struct Across {
+    double a, b, c;  // weights of the side's first and second end and the centroid, summing to 0
+  };
+
+  static Point centroid(const Point& a, const Point& b, const Point& c) {
+    return {a.x + ((b.x - a.x) + (c.x - a.x)) / 3, a.y + ((b.y - a.y) + (c.y - a.y)) / 3};
+  }
+
+  // Side i runs from A = p[next3(i)] to B = p[prev3(i)]; the direction d towards the
+  // neighbour's centroid (on the hull, from corner i to the side's midpoint), written
+  // d = b (B - A) + c (C - A). The determinant is exact (a third of the triangle's doubled
+  // area), so that a sliver still gets finite weights.
+  Across direction(std::size_t tri, int i, const Point* p, const Point& c) const {
+    const Point& a = p[next3(i)];
+    const Point& e = p[prev3(i)];
+    Point d;
+    const std::int32_t u = f_.neighbour(tri, i);
+    if (u >= 0) {
+      const auto n = static_cast<std::size_t>(u);
+      const Point o = centroid(f_.corner(n, 0), f_.corner(n, 1), f_.corner(n, 2));
+      d = {o.x - c.x, o.y - c.y};
+    } else {
+      d = {(a.x - p[i].x) + (e.x - p[i].x), (a.y - p[i].y) + (e.y - p[i].y)};
+    }
+    const double e1x = e.x - a.x, e1y = e.y - a.y, e2x = c.x - a.x, e2y = c.y - a.y;
+    const double det = detail::doubled_area(a, e, p[i]) / 3;
+    const double wb = (d.x * e2y - d.y * e2x) / det, wc = (e1x * d.y - e1y * d.x) / det;
+    return {-wb - wc, wb, wc};
+  }
+
+  const Field& f_;
+  std::size_t k_;
+};
+
+// Each vertex's neighbours on the Delaunay graph, once each: the next corner of every triangle
+// around it, and across each hull side the one it misses.
+struct Graph {
+  std::vector<std::uint32_t> offset;
+  std::vector<VertexId> adjacent;
+
+  Graph(std::size_t n, const Triangulation& t) : offset(n + 1, 0) {
+    auto each = [&](auto&& visit) {
+      for (std::size_t tri = 0; tri < t.size(); ++tri)
+        for (int i = 0; i < 3; ++i) {
+          visit(t.triangles[3 * tri + i], t.triangles[3 * tri + next3(i)]);
+          if (t.neighbors[3 * tri + i] < 0)  // the hull side next3(i) -> prev3(i)
+            visit(t.triangles[3 * tri + prev3(i)], t.triangles[3 * tri + next3(i)]);
+        }
+    };
+    each([&](VertexId v, VertexId) { ++offset[v + 1]; });
+    for (std::size_t v = 0; v < n; ++v) offset[v + 1] += offset[v];
+    adjacent.resize(offset[n]);
+    std::vector<std::uint32_t> at(offset.begin(), offset.end() - 1);
+    each([&](VertexId v, VertexId w) { adjacent[at[v]++] = w; });
+  }
+};
+
+}  // namespace
+
+int estimate_gradients(std::span<const Point> points, const Triangulation& t, Values values,
+                       std::span<double> gradients, double tol, int maxiter) {
+  detail::check_arrays("estimate_gradients", points.size(), t.triangles, t.neighbors);
+  detail::check_values("estimate_gradients", points.size(), values);
+  const std::size_t n = points.size(), m = values.components;
+  if (gradients.size() != 2 * n * m)
+    throw InputError("estimate_gradients: room for " + std::to_string(gradients.size()) + " numbers, not " +
+                     std::to_string(2 * n * m));
+  if (!(tol > 0)) throw InputError("estimate_gradients: tol must be positive");
+  if (maxiter < 1) throw InputError("estimate_gradients: maxiter must be at least 1");
+  std::fill(gradients.begin(), gradients.end(), 0.0);
+  const Graph g(n, t);
+  int most = 0;
+  bool converged = true;
+  for (std::size_t k = 0; k < m; ++k) {
+    auto f = [&](std::size_t v) { return values.data[v * m + k]; };
+    auto grad = [&](std::size_t v) { return &gradients[2 * (v * m + k)]; };
+    int done = 0;
+    for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep) {
+      double worst = 0;
+      for (std::size_t v = 0; v < n; ++v) {
+        // The gradient at v that minimises the edges' curvature given the neighbours':
+        // Q g = s, summed over the edges e = w - v of length L.
+        double q00 = 0, q01 = 0, q11 = 0, s0 = 0, s1 = 0;
+        for (std::uint32_t j = g.offset[v]; j < g.offset[v + 1]; ++j) {
+          const VertexId w = g.adjacent[j];
+          const double ex = points[w].x - points[v].x, ey = points[w].y - points[v].y;
+          const double l2 = ex * ex + ey * ey, l3 = l2 * std::sqrt(l2);
+          const double* gw = grad(w);
+          const double r = (6 * (f(w) - f(v)) - 2 * (ex * gw[0] + ey * gw[1])) / l3;
+          q00 += 4 * ex * ex / l3, q01 += 4 * ex * ey / l3, q11 += 4 * ey * ey / l3;
+          s0 += r * ex, s1 += r * ey;
+        }
+        const double det = q00 * q11 - q01 * q01;
+        if (!(det != 0) || !std::isfinite(det)) continue;  // no neighbours: no vertex
+        const double gx = (q11 * s0 - q01 * s1) / det, gy = (q00 * s1 - q01 * s0) / det;
+        double* gv = grad(v);
+        const double change = std::max(std::fabs(gv[0] - gx), std::fabs(gv[1] - gy)) /
+                              std::max(1.0, std::max(std::fabs(gx), std::fabs(gy)));
+        worst = std::max(worst, change);
+        gv[0] = gx, gv[1] = gy;
+      }
+      if (worst < tol) done = sweep;
+    }
+    converged = converged && done > 0;
+    most = std::max(most, done);
+  }
+  for (const Duplicate& d : t.duplicates)
+    std::copy_n(&gradients[2 * d.kept * m], 2 * m, &gradients[2 * d.dropped * m]);
+  return converged ? most : 0;
+}
+
+namespace {
+
+// The values and gradients side by side, a point's k values and then its 2k gradient numbers,
+// as the field carries them through the renumbering.
+std::vector<double> values_and_gradients(const char* who, std::size_t n, Values values,
+                                         std::span<const double> gradients) {
+  detail::check_values(who, n, values);
+  const std::size_t m = values.components;
+  if (gradients.size() != 2 * n * m)
+    throw InputError(std::string(who) + ": " + std::to_string(gradients.size()) + " gradient numbers for " +
+                     std::to_string(n) + " points of " + std::to_string(m) + " components (2 each)");
+  std::vector<double> both(3 * n * m);
+  for (std::size_t v = 0; v < n; ++v) {
+    std::copy_n(&values.data[v * m], m, &both[3 * v * m]);
+    std::copy_n(&gradients[2 * v * m], 2 * m, &both[3 * v * m + m]);
+  }
+  return both;
+}
+
+}  // namespace
+
+void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
+                               std::span<const double> gradients, std::span<const Point> queries,
+                               std::span<double> out, double fill, unsigned threads) {
+  const char* who = "interpolate_clough_tocher";
+  const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients);
+  detail::interpolate<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components, queries,
+                                    out, fill, threads);
+}
+
+void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
+                               std::span<const double> gradients, const Grid& grid, std::span<double> out,
+                               double fill, unsigned threads) {
+  const char* who = "interpolate_clough_tocher";
+  const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients);
+  detail::interpolate_grid<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components,
+                                         grid, out, fill, threads);
+}
+
+}  // namespace ridt

@@ -1,0 +1,180 @@
+// The cubic interpolant (ridt/interpolate.hpp, src/cubic.cpp): gradients exact for linear data,
+// quadratics reproduced from their gradients, the data at the points, continuity of the value
+// and of the derivative across the triangles' sides, the grid's answers equal to the located
+// queries', the same bits on threads, and exact barycentric coordinates on slivers.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "generate.hpp"
+#include "helpers.hpp"
+#include "ridt/interpolate.hpp"
+#include "ridt/locate.hpp"
+
+namespace ridt {
+namespace {
+
+double quadratic(const Point& p) { return 1 + 2 * p.x - p.y + 3 * p.x * p.x - 2 * p.x * p.y + 0.5 * p.y * p.y; }
+Point quadratic_gradient(const Point& p) { return {2 + 6 * p.x - 2 * p.y, -1 - 2 * p.x + p.y}; }
+
+struct Data {
+  std::vector<Point> points;
+  Triangulation t;
+  std::vector<double> values, gradients;
+};
+
+Data quadratic_data(std::size_t n, unsigned seed) {
+  Data d;
+  d.points = generate(Distribution::Uniform, n, seed);
+  d.t = triangulate(d.points);
+  for (const Point& p : d.points) {
+    d.values.push_back(quadratic(p));
+    const Point g = quadratic_gradient(p);
+    d.gradients.push_back(g.x), d.gradients.push_back(g.y);
+  }
+  return d;
+}
+
+std::vector<Point> inside(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.2, 0.8);
+  std::vector<Point> q(n);
+  for (Point& p : q) p = {u(rng), u(rng)};
+  return q;
+}
+
+TEST(Cubic, GradientsOfLinearDataAreExact) {
+  const std::vector<Point> pts = generate(Distribution::Normal, 3000, 2);
+  const Triangulation t = triangulate(pts);
+  std::vector<double> v;
+  for (const Point& p : pts) v.push_back(3 - 2 * p.x + 14.15 * p.y);
+  std::vector<double> g(2 * pts.size());
+  EXPECT_GT(estimate_gradients(pts, t, Values{v, 1}, g, 1e-12, 400), 0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    EXPECT_NEAR(g[2 * i], -2, 1e-9);
+    EXPECT_NEAR(g[2 * i + 1], 14.15, 1e-9);
+  }
+}
+
+TEST(Cubic, QuadraticsFromTheirGradientsAndTheDataAtThePoints) {
+  const Data d = quadratic_data(2000, 3);
+  const std::vector<Point> q = inside(20000, 4);
+  std::vector<double> out(q.size());
+  interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, d.gradients, q, out, -1, 2);
+  for (std::size_t k = 0; k < q.size(); ++k) EXPECT_NEAR(out[k], quadratic(q[k]), 1e-12) << k;
+  std::vector<double> at(d.points.size());
+  interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, d.gradients, d.points, at);
+  for (std::size_t i = 0; i < d.points.size(); ++i) EXPECT_EQ(at[i], d.values[i]);
+}
+
+TEST(Cubic, ValueAndDerivativeContinuousAcrossSides) {
+  // Random data and gradients: the pieces must still meet with a continuous value and slope.
+  Data d = quadratic_data(400, 5);
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> z;
+  for (double& v : d.values) v = z(rng);
+  for (double& g : d.gradients) g = z(rng);
+  auto height = [&](std::size_t tri, int i) {  // of triangle tri over its side across from corner i
+    const Point& c = d.points[d.t.triangles[3 * tri + i]];
+    const Point& a = d.points[d.t.triangles[3 * tri + (i + 1) % 3]];
+    const Point& b = d.points[d.t.triangles[3 * tri + (i + 2) % 3]];
+    return std::fabs((a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x)) / std::hypot(b.x - a.x, b.y - a.y);
+  };
+  for (std::size_t tri = 0; tri < d.t.size(); ++tri)
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t u = d.t.neighbors[3 * tri + i];
+      if (u < 0) continue;
+      const Point& a = d.points[d.t.triangles[3 * tri + (i + 1) % 3]];
+      const Point& b = d.points[d.t.triangles[3 * tri + (i + 2) % 3]];
+      int j = 0;  // u's corner across the side
+      while (d.t.neighbors[3 * std::size_t(u) + j] != static_cast<std::int32_t>(tri)) ++j;
+      const Point m{a.x + 0.5 * (b.x - a.x), a.y + 0.5 * (b.y - a.y)};
+      const Point n{(b.y - a.y), -(b.x - a.x)};  // across the side, either way
+      const double len = std::hypot(n.x, n.y);
+      // One-sided slopes at the side from each triangle, second-order differences at steps h
+      // and h / 2 extrapolated (Richardson) so that thin triangles' large third derivatives
+      // cancel; h small against both triangles' heights, so the probes stay in the two.
+      auto slopes = [&](double h) {
+        std::vector<Point> q;
+        for (double s : {-2.0, -1.0, 0.0, 1.0, 2.0}) q.push_back({m.x + s * h * n.x / len, m.y + s * h * n.y / len});
+        std::vector<double> v(q.size());
+        interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, d.gradients, q, v);
+        return std::array<double, 4>{(3 * v[2] - 4 * v[1] + v[0]) / (2 * h), (-3 * v[2] + 4 * v[3] - v[4]) / (2 * h),
+                                     v[1] - v[2], v[3] - v[2]};
+      };
+      const double h = 1e-3 * std::min(height(tri, i), height(std::size_t(u), j));
+      const auto coarse = slopes(h), fine = slopes(h / 2);
+      const double left = (4 * fine[0] - coarse[0]) / 3, right = (4 * fine[1] - coarse[1]) / 3;
+      EXPECT_NEAR(left, right, 1e-5 * (1 + std::fabs(left))) << tri << " " << i;
+      // And both sides tend to the value on it.
+      EXPECT_LE(std::fabs(fine[2]), h * (1 + 2 * std::fabs(left)));
+      EXPECT_LE(std::fabs(fine[3]), h * (1 + 2 * std::fabs(left)));
+    }
+}
+
+TEST(Cubic, GridEqualsTheLocatedQueriesAndThreadsGiveTheSameBits) {
+  const Data d = quadratic_data(5000, 7);
+  std::vector<double> x, y;
+  for (int i = 0; i < 101; ++i) x.push_back(i / 100.0), y.push_back(1 - i / 100.0);
+  const Grid grid{x, y, false};
+  std::vector<Point> q;
+  for (const double yy : y)
+    for (const double xx : x) q.push_back({xx, yy});
+  std::vector<double> by_grid(grid.size()), by_queries(q.size()), on_two(q.size());
+  interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, d.gradients, grid, by_grid, -7, 1);
+  interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, d.gradients, q, by_queries, -7, 1);
+  interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, d.gradients, q, on_two, -7, 2);
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    // A node on a side may be answered from either triangle: equal to rounding.
+    EXPECT_NEAR(by_grid[k], by_queries[k], 1e-12) << k;
+    EXPECT_EQ(by_queries[k], on_two[k]) << k;
+  }
+}
+
+TEST(Cubic, SliversGetFiniteAnswers) {
+  // Points rounded onto a line's neighbourhood: triangles whose area rounds to nothing in
+  // double precision; every query inside the hull gets a finite answer, the data at the data.
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Point> pts = {{0, 1}, {1, 0}};
+  for (int k = 0; k < 300; ++k) {
+    const double t = u(rng);
+    pts.push_back({t, std::nextafter(t, k % 2 ? 2.0 : -1.0)});
+  }
+  const Triangulation t = triangulate(pts);
+  std::vector<double> v;
+  for (const Point& p : pts) v.push_back(std::sin(7 * p.x) + p.y);
+  std::vector<double> g(2 * pts.size());
+  estimate_gradients(pts, t, Values{v, 1}, g);
+  std::vector<Point> centroids;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point &a = pts[t.triangles[3 * k]], &b = pts[t.triangles[3 * k + 1]], &c = pts[t.triangles[3 * k + 2]];
+    centroids.push_back({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3});
+  }
+  std::vector<double> out(centroids.size()), at(pts.size());
+  interpolate_clough_tocher(pts, t, Values{v, 1}, g, centroids, out);
+  interpolate_clough_tocher(pts, t, Values{v, 1}, g, pts, at);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (locate(pts, t, std::span(&centroids[k], 1))[0] >= 0) EXPECT_TRUE(std::isfinite(out[k])) << k;
+  }
+  for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(at[i], v[i]);
+}
+
+TEST(Cubic, BadArgumentsAreRefused) {
+  const Data d = quadratic_data(100, 9);
+  std::vector<double> g(2 * d.points.size()), out(3);
+  const std::vector<Point> q(3, Point{0.5, 0.5});
+  EXPECT_THROW(estimate_gradients(d.points, d.t, Values{d.values, 1}, std::span(g).first(10)), InputError);
+  EXPECT_THROW(estimate_gradients(d.points, d.t, Values{d.values, 1}, g, 0.0), InputError);
+  EXPECT_THROW(estimate_gradients(d.points, d.t, Values{d.values, 1}, g, 1e-6, 0), InputError);
+  EXPECT_THROW(interpolate_clough_tocher(d.points, d.t, Values{d.values, 1}, std::span(g).first(4), q, out),
+               InputError);
+  EXPECT_EQ(estimate_gradients(d.points, d.t, Values{d.values, 1}, g, 1e-300, 1), 0);  // did not settle
+}
+
+}  // namespace
+}  // namespace ridt
