@@ -3,9 +3,14 @@
 
 #include <sys/mman.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
+#include "generate.hpp"
+#include "predicates.hpp"
 #include "ridt/check.hpp"
+#include "ridt/furthest.hpp"
 
 namespace ridt {
 namespace {
@@ -117,6 +122,51 @@ TEST(Check, RefusesMoreTrianglesThanItsCountersHold) {
               "1431655766 triangles are more than the validator takes (at most 1431655765)");
   }
   ::munmap(range, ids * sizeof(VertexId));
+}
+
+}  // namespace
+}  // namespace ridt
+
+namespace ridt {
+namespace {
+
+TEST(FurthestSite, ValidOnEveryDistributionAndOnACircle) {
+  for (const Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters}) {
+    const std::vector<Point> pts = generate(d, 3000, 5);
+    const Triangulation f = triangulate_furthest_site(pts);
+    const CheckResult r = check_furthest_site(pts, f.triangles);
+    EXPECT_TRUE(r.valid) << r.message;
+    EXPECT_EQ(f.size(), f.hull.size() - 2);
+    // Every circle holds every point, checked here point by point.
+    for (std::size_t t = 0; t < f.size(); ++t)
+      for (const Point& p : pts)
+        ASSERT_GE(detail::incircle(pts[f.triangles[3 * t]], pts[f.triangles[3 * t + 1]], pts[f.triangles[3 * t + 2]], p), 0);
+  }
+  // Cocircular corners (a regular polygon, rounded): any triangulation of them qualifies.
+  std::vector<Point> circle;
+  for (int k = 0; k < 64; ++k) circle.push_back({std::cos(k * 0.0981747704), std::sin(k * 0.0981747704)});
+  circle.push_back({0.1, 0.2});
+  const Triangulation f = triangulate_furthest_site(circle);
+  EXPECT_TRUE(check_furthest_site(circle, f.triangles).valid) << check_furthest_site(circle, f.triangles).message;
+}
+
+TEST(FurthestSite, DegenerateInputAndTheValidatorsRefusals) {
+  const std::vector<Point> line = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};
+  const Triangulation empty = triangulate_furthest_site(line);
+  EXPECT_EQ(empty.size(), 0u);
+  EXPECT_FALSE(empty.warning.empty());
+  EXPECT_TRUE(check_furthest_site(line, empty.triangles).valid);
+  const std::vector<Point> pts = {{0, 0}, {0, 1}, {1, 0}, {0.5, 0.5}, {1.1, 1.1}, {1, 0}};
+  const Triangulation f = triangulate_furthest_site(pts);
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_EQ(f.duplicates.size(), 1u);
+  EXPECT_TRUE(check_furthest_site(pts, f.triangles).valid);
+  // The nearest-site triangulation, the other diagonal, a missing triangle: each refused.
+  EXPECT_FALSE(check_furthest_site(pts, triangulate(pts).triangles).valid);
+  const std::vector<VertexId> other = {0, 2, 1, 2, 4, 1};
+  EXPECT_FALSE(check_furthest_site(pts, other).valid);
+  EXPECT_FALSE(check_furthest_site(pts, std::span(f.triangles).first(3)).valid);
+  EXPECT_FALSE(check(pts, f.triangles).valid);
 }
 
 }  // namespace

@@ -33,4 +33,13 @@ inline constexpr std::size_t kCheckMaxTriangles = 0xffffffffu / 3;
 /// kCheckMaxTriangles triangles (the triangulation of some 715 million points).
 CheckResult check(std::span<const Point> points, std::span<const VertexId> triangles);
 
+/// Checks with exact arithmetic that `triangles` is the farthest-point Delaunay triangulation
+/// of `points` (triangulate_furthest_site's, counter-clockwise): every triangle
+/// counter-clockwise and not degenerate; each directed edge used at most once; across each
+/// interior edge the opposite vertex inside or on the circle (locally farthest-point
+/// Delaunay, which with the boundary below makes every circle hold every point); the boundary
+/// edges exactly the convex hull's corners in order; no other vertex. Empty is valid only
+/// when the points have fewer than three hull corners.
+CheckResult check_furthest_site(std::span<const Point> points, std::span<const VertexId> triangles);
+
 }  // namespace ridt

@@ -153,7 +153,7 @@ def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: s
 
 def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str = "brio", locate: str = "auto",
         seed: int = 1, progress: ProgressLike = None, canonical: bool = False, bounding: str = "symbolic",
-        k: float = 10.0) -> _core.Triangulation:
+        k: float = 10.0, furthest_site: bool = False) -> _core.Triangulation:
     """triangulate() on points that as_points() has already checked and converted."""
     method = _choice(method, "method", METHODS)
     order = _choice(order, "order", ORDERS)
@@ -168,14 +168,17 @@ def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str =
         raise ValueError(f"ridt takes fewer than 2**31 points; got {pts.shape[0]}")
     return _core.triangulate(pts, resolve_method(method, nthreads, order, locate), nthreads, order, locate,
                              int(seed), bounding, float(k), bool(canonical),
-                             progress_callback(progress, pts.shape[0]))
+                             progress_callback(progress, pts.shape[0]), bool(furthest_site))
 
 
-def check(points: Any, triangles: Any) -> Tuple[bool, str]:
+def check(points: Any, triangles: Any, furthest_site: bool = False) -> Tuple[bool, str]:
     """Checks exactly that `triangles` ((ntriangles, 3) vertex indices into `points`) is a
     Delaunay triangulation of the distinct points: counter-clockwise, not degenerate, every
     interior edge locally Delaunay, the boundary the whole convex hull, every distinct point a
-    vertex. Returns (valid, message): the message says what was checked or the first problem.
+    vertex. With `furthest_site`, that it is the farthest-point Delaunay triangulation (either
+    orientation: scipy's clockwise triangles are turned first): every circle holds every point,
+    the hull's corners its only vertices. Returns (valid, message): the message says what was
+    checked or the first problem.
     """
     pts = as_points(points)
     t = np.asarray(triangles)
@@ -185,5 +188,11 @@ def check(points: Any, triangles: Any) -> Tuple[bool, str]:
         raise ValueError(f"triangles must have shape (ntriangles, 3); got shape {t.shape}")
     if t.size and (t.min() < 0 or t.max() >= pts.shape[0]):
         return False, f"a vertex index is not one of the {pts.shape[0]} points"
-    valid, message, _ = _core.check(pts, np.ascontiguousarray(t, dtype=np.uint32))
+    t = np.ascontiguousarray(t, dtype=np.uint32)
+    if furthest_site and len(t):
+        p = pts[t]
+        clockwise = (p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) < (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0])
+        if clockwise.all():
+            t = np.ascontiguousarray(t[:, [0, 2, 1]])
+    valid, message, _ = _core.check(pts, t, bool(furthest_site))
     return bool(valid), message

@@ -53,7 +53,8 @@ class Delaunay:
     points : array_like, shape (npoints, 2)
         Coordinates, any real dtype and layout, all finite.
     furthest_site : bool
-        Not supported (raises NotImplementedError when true).
+        The farthest-point Delaunay triangulation: of the hull's corners, every circumcircle
+        holding every point (exact); its triangles clockwise, as scipy's are.
     incremental : bool
         Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
@@ -93,22 +94,29 @@ class Delaunay:
     def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
                  qhull_options: Optional[str] = None, *, method: str = "auto", threads: int = 1,
                  order: str = "brio", locate: str = "auto", seed: int = 1, progress: _api.ProgressLike = None):
-        if furthest_site:
-            raise NotImplementedError(
-                "furthest_site=True: ridt computes the nearest-site Delaunay triangulation only")
         _check_qhull_options(qhull_options)
         _refuse_masked(points)
         self._points = _api.as_points(points, "points", "ridt.Delaunay")
         self._threads = _api.thread_count(threads)
-        self._options = dict(method=method, order=order, locate=locate, seed=seed)
-        self._tri = _api.run(self._points, threads=self._threads, progress=progress, **self._options)
+        self._options = dict(method=method, order=order, locate=locate, seed=seed, furthest_site=bool(furthest_site))
         self._incremental = bool(incremental)
-        self._clear()
+        self._run(progress)
         if self._tri.warning:
             warnings.warn(f"ridt: {self._tri.warning}: the triangulation is empty", DegenerateInputWarning,
                           stacklevel=2)
-        self.furthest_site = False
+
+    def _run(self, progress: _api.ProgressLike = None) -> None:
+        self._tri = _api.run(self._points, threads=self._threads, progress=progress, **self._options)
+        self.furthest_site = self._options["furthest_site"]
         self.good = None
+        if self.furthest_site:
+            # Qhull's facets of the upper hull come clockwise; the same triangles, so turned.
+            self._simplices = np.ascontiguousarray(self._tri.triangles.view(np.intc)[:, [0, 2, 1]])
+            self._neighbors = np.ascontiguousarray(self._tri.neighbors.view(np.intc)[:, [0, 2, 1]])
+        else:
+            self._simplices = self._tri.triangles.view(np.intc)
+            self._neighbors = self._tri.neighbors.view(np.intc)
+        self._clear()
 
     # --- what the library returned, as scipy's dtypes (views, no copies) ---
     @property
@@ -117,7 +125,7 @@ class Delaunay:
 
     @property
     def simplices(self) -> np.ndarray:
-        return self._tri.triangles.view(np.intc)
+        return self._simplices
 
     @property
     def vertices(self) -> np.ndarray:
@@ -128,7 +136,7 @@ class Delaunay:
 
     @property
     def neighbors(self) -> np.ndarray:
-        return self._tri.neighbors.view(np.intc)
+        return self._neighbors
 
     @property
     def npoints(self) -> int:
@@ -188,7 +196,7 @@ class Delaunay:
     def vertex_neighbor_vertices(self) -> Tuple[np.ndarray, np.ndarray]:
         # Each interior edge is a directed edge of both its triangles; a hull edge of one only,
         # so the hull adds its edges reversed. No edge then comes twice.
-        t = self.simplices
+        t = self._tri.triangles.view(np.intc)  # counter-clockwise, whatever simplices shows
         hull = self.convex_hull
         src = np.concatenate([t.ravel(), hull[:, 1]])
         dst = np.concatenate([t[:, [1, 2, 0]].ravel(), hull[:, 0]])
@@ -249,7 +257,7 @@ class Delaunay:
         so thin that the map cannot carry its coordinates (reciprocal condition number below
         2^-40) gets NaN, as scipy gives its near-degenerate simplices. find_simplex and the
         interpolators do not use it: their weights are exact where a filter cannot vouch."""
-        return _core.transforms(self._points, self._tri.triangles, self._threads)
+        return _core.transforms(self._points, self.simplices.view(np.uint32), self._threads)
 
     def find_simplex(self, xi: Any, bruteforce: bool = False, tol: Optional[float] = None, *,
                      threads: Optional[int] = None) -> np.ndarray:
@@ -282,9 +290,7 @@ class Delaunay:
         self._threads = state["threads"]
         self._options = state["options"]
         self._incremental = state["incremental"]
-        self._tri = _api.run(self._points, threads=self._threads, progress=None, **self._options)
-        self.furthest_site = False
-        self.good = None
+        self._run()
 
     def _clear(self) -> None:
         """Forgets what was derived from an earlier triangulation."""
@@ -303,8 +309,7 @@ class Delaunay:
         _refuse_masked(points)
         more = _api.as_points(points, "points", "ridt.Delaunay.add_points")
         self._points = np.ascontiguousarray(np.concatenate([self._points, more]))
-        self._tri = _api.run(self._points, threads=self._threads, progress=None, **self._options)
-        self._clear()
+        self._run()
 
     def close(self) -> None:
         """Ends incremental mode (scipy's): add_points then raises RuntimeError."""

@@ -28,8 +28,11 @@ class Voronoi:
     Parameters
     ----------
     points : array_like, shape (npoints, 2)
-    furthest_site, incremental : bool
-        Not supported (NotImplementedError when true).
+    furthest_site : bool
+        The farthest-point diagram: the dual of the farthest-point Delaunay triangulation; a
+        point inside the hull has an empty region.
+    incremental : bool
+        Allow add_points (scipy's incremental mode).
     qhull_options : str, optional
         As for :class:`ridt.Delaunay`: only Qhull's robustness options, accepted and ignored.
     threads : int
@@ -56,39 +59,44 @@ class Voronoi:
 
     def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
                  qhull_options: Optional[str] = None, *, threads: int = 1):
-        if furthest_site:
-            raise NotImplementedError("furthest_site=True: ridt computes the nearest-site diagram only")
         _check_qhull_options(qhull_options)
         self._incremental = bool(incremental)
         _refuse_masked(points)
         options = qhull_options.decode() if isinstance(qhull_options, bytes) else qhull_options
         # scipy's default is "Qbb Qc Qz": Qz adds a point at infinity to Qhull's input, which
         # shows as one more region, empty, that no point owns.
-        at_infinity = options is None or "Qz" in options.split()
+        at_infinity = (options is None or "Qz" in options.split()) and not furthest_site
+        self.furthest_site = bool(furthest_site)
         self._build(_api.as_points(points, "points", "ridt.Voronoi"), _api.thread_count(threads), at_infinity)
 
     def _build(self, points: np.ndarray, threads: int, at_infinity: bool) -> None:
         self._points, self._threads, self._at_infinity = points, threads, at_infinity
         self._tri = _api.run(points, method="auto", threads=threads, order="brio", locate="auto", seed=1,
-                             progress=None)
+                             progress=None, furthest_site=self.furthest_site)
         if self._tri.warning:
             raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
         (self.vertices, offsets, self._cell_vertices, point_cell, ridge_points,
          self._ridge_vertices) = _core.voronoi(points, self._tri, threads)
-        if at_infinity:  # region 0 is the empty one of the point at infinity
+        # The points with no region of the farthest-point diagram (those inside the hull) get an
+        # empty one each, as in scipy; with Qz, region 0 is the point at infinity's, empty.
+        lacking = np.flatnonzero(point_cell < 0)
+        if len(lacking):
+            point_cell[lacking] = len(offsets) - 1 + np.arange(len(lacking), dtype=point_cell.dtype)
+            offsets = np.concatenate([offsets, np.full(len(lacking), offsets[-1], dtype=offsets.dtype)])
+        if at_infinity:
             offsets = np.concatenate([offsets[:1], offsets])
             point_cell = point_cell + 1
         self._offsets = offsets
         self.ridge_points = ridge_points.view(np.intc)
         self.point_region = point_cell.astype(np.intp)
-        self.furthest_site = False
 
     def __getstate__(self) -> dict:
         return {"points": self._points, "threads": self._threads, "at_infinity": self._at_infinity,
-                "incremental": self._incremental}
+                "incremental": self._incremental, "furthest_site": self.furthest_site}
 
     def __setstate__(self, state: dict) -> None:
         self._incremental = state["incremental"]
+        self.furthest_site = state["furthest_site"]
         self._build(state["points"], state["threads"], state["at_infinity"])
 
     def add_points(self, points: Any, restart: bool = False) -> None:

@@ -51,12 +51,12 @@ _verdicts: Dict[str, List[str]] = {}  # the validator's words on each test's tri
 _invalid: List[str] = []
 
 
-def _validate(points: np.ndarray, triangles: np.ndarray) -> None:
+def _validate(points: np.ndarray, triangles: np.ndarray, furthest_site: bool) -> None:
     """Every triangulation a test builds, checked exactly as it is made (a test may then change
     its arrays in place, as test_nd_simplex sorts them), whatever the test asserts. A failure
     fails the session too, so that an expected failure cannot hide it."""
     _used["validated"] += 1
-    valid, message = ridt.check(points, triangles) if len(triangles) else (True, "empty (degenerate input)")
+    valid, message = ridt.check(points, triangles, furthest_site) if len(triangles) else (True, "empty (degenerate input)")
     _verdicts.setdefault(_current[0], []).append(message)
     if not valid:
         _invalid.append(f"{_current[0]}: {message}")
@@ -84,7 +84,7 @@ def _replacement(name: str, ridt_class: Any, first_arg: str = "points") -> type:
         obj = ridt_class(*args, **kwargs)
         owner = getattr(obj, "tri", obj)  # an interpolator's Delaunay, or the object itself
         if isinstance(owner, (ridt.Delaunay, ridt.Voronoi)):
-            _validate(owner.points, owner.triangulation.triangles)
+            _validate(owner.points, owner.triangulation.triangles, owner.furthest_site)
         return obj
 
     return _Replacing(name, (), {"__new__": __new__, "_ridt": ridt_class, "__doc__": ridt_class.__doc__})

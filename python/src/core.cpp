@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "ridt/check.hpp"
+#include "ridt/furthest.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 #include "ridt/ridt.hpp"
@@ -85,7 +86,8 @@ py::dict stats_dict(const ridt::Stats& s) {
 
 ridt::Triangulation run(const Points& points, const std::string& method, unsigned threads,
                         const std::string& order, const std::string& locate, std::uint64_t seed,
-                        const std::string& bounding, double k, bool canonical, py::object progress) {
+                        const std::string& bounding, double k, bool canonical, py::object progress,
+                        bool furthest_site) {
   ridt::Options o;
   o.method = parse<ridt::Method>({{"serial", ridt::Method::Serial},
                                   {"pessimistic", ridt::Method::Pessimistic},
@@ -113,7 +115,7 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   };
   const std::span<const ridt::Point> pts = as_points(points, "points");
   py::gil_scoped_release nogil;
-  return ridt::triangulate(pts, o);
+  return furthest_site ? ridt::triangulate_furthest_site(pts, o) : ridt::triangulate(pts, o);
 }
 
 // The interpolant of `values` (n by k) at `where`: queries, or a grid's nodes, `rows` answers
@@ -227,7 +229,7 @@ Triangulation alive.
 
   m.def("triangulate", &run, py::arg("points"), py::arg("method"), py::arg("threads"), py::arg("order"),
         py::arg("locate"), py::arg("seed"), py::arg("bounding"), py::arg("k"), py::arg("canonical"),
-        py::arg("progress"));
+        py::arg("progress"), py::arg("furthest_site") = false);
 
   m.def(
       "locate",
@@ -249,17 +251,17 @@ Triangulation alive.
 
   m.def(
       "check",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles) {
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles, bool furthest_site) {
         const auto pts = as_points(points, "points");
         const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
         ridt::CheckResult r;
         {
           py::gil_scoped_release nogil;
-          r = ridt::check(pts, t);
+          r = furthest_site ? ridt::check_furthest_site(pts, t) : ridt::check(pts, t);
         }
         return py::make_tuple(r.valid, r.message, r.problems);
       },
-      py::arg("points"), py::arg("triangles"));
+      py::arg("points"), py::arg("triangles"), py::arg("furthest_site") = false);
 
   m.def(
       "voronoi",

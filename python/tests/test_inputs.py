@@ -55,8 +55,6 @@ def test_wrong_shapes_and_types(pts, error, match):
 
 
 def test_unsupported_scipy_options_name_the_reason():
-    with pytest.raises(NotImplementedError, match="furthest"):
-        ridt.Delaunay(PTS, furthest_site=True)
     with pytest.raises(RuntimeError, match="incremental mode not enabled"):
         ridt.Delaunay(PTS).add_points(PTS)
     with pytest.raises(ValueError, match="QG4"):

@@ -184,5 +184,3 @@ def test_voronoi_duplicates_and_degenerate_input():
     assert len(ridt.Voronoi(p, qhull_options="Qbb Qc").regions) == 5
     with pytest.raises(ridt.InputError):
         ridt.Voronoi([[0, 0], [1, 1], [2, 2]])
-    with pytest.raises(NotImplementedError):
-        ridt.Voronoi(p, furthest_site=True)

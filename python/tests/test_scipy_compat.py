@@ -289,3 +289,21 @@ def test_cubic_uses_the_gradients_it_is_given():
     assert ip([[0.3, 0.2]]) != before
     twin = pickle.loads(pickle.dumps(ip))
     assert twin([[0.3, 0.2]]) == ip([[0.3, 0.2]])
+
+
+def test_furthest_site_equals_scipys_in_general_position():
+    rng = np.random.default_rng(16)
+    pts = rng.normal(size=(500, 2))
+    ours = ridt.Delaunay(pts, furthest_site=True)
+    theirs = scipy.spatial.Delaunay(pts, furthest_site=True)
+    assert ours.furthest_site and ridt.check(pts, ours.simplices, furthest_site=True)[0]
+    rot = lambda t: tuple(np.roll(t, -int(np.argmin(t))))  # noqa: E731  (each triangle from its least corner)
+    assert sorted(map(rot, ours.simplices)) == sorted(map(rot, theirs.simplices))  # clockwise both
+    q = rng.normal(size=(200, 2))
+    assert ((ours.find_simplex(q) >= 0) == (theirs.find_simplex(q) >= 0)).all()
+    vo, vt = ridt.Voronoi(pts, furthest_site=True), scipy.spatial.Voronoi(pts, furthest_site=True)
+    key = lambda v: sorted(map(tuple, np.round(v, 9)))  # noqa: E731
+    assert key(vo.vertices) == key(vt.vertices)
+    assert len(vo.regions) == len(vt.regions) and sorted(map(len, vo.regions)) == sorted(map(len, vt.regions))
+    inside = np.setdiff1d(np.arange(len(pts)), ours.convex_hull.ravel())
+    assert all(vo.regions[vo.point_region[i]] == [] for i in inside)
