@@ -16,7 +16,9 @@
 // if the triangle's mirror image through the side's midpoint lay across it (from the opposite
 // corner to the side's midpoint), which keeps the whole construction affine-invariant.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -120,33 +122,135 @@ class CloughTocher {
   std::size_t k_;
 };
 
-// Each vertex's neighbours on the Delaunay graph, once each: the next corner of every triangle
-// around it, and across each hull side the one it misses.
-struct Graph {
-  std::vector<std::uint32_t> offset;
-  std::vector<VertexId> adjacent;
+// A vertex's value and gradient during the sweeps, side by side for the neighbours' reads.
+struct Node {
+  double f, gx, gy;
+};
 
-  Graph(std::size_t n, const Triangulation& t) : offset(n + 1, 0) {
+// The minimum-norm network's system, its vertices numbered in the order the triangles first
+// meet them (near in the plane, near in memory, where the input's order is often random):
+// each vertex's neighbours on the Delaunay graph, once each, with 1 / L^3 of the edge, and the
+// inverse of the vertex's matrix Q = sum 4 e e^T / L^3, which depends on the geometry alone.
+struct Network {
+  std::vector<VertexId> order;  // new number -> input index
+  std::vector<Point> at;        // the points in the new order
+  std::vector<std::uint32_t> offset;
+  std::vector<std::uint32_t> to;
+  std::vector<double> inv_l3;
+  std::vector<std::array<double, 3>> q_inverse;  // [[a b] [b c]]; NaN where Q is singular
+  // The vertices by colour, no two neighbours of one colour, so that a colour's vertices can
+  // be updated at once on threads: colour c's are by_colour[first[c] .. first[c + 1]).
+  std::vector<std::uint32_t> by_colour, first;
+
+  Network(std::span<const Point> points, const Triangulation& t) {
+    std::vector<std::uint32_t> id(points.size(), kNone);
+    std::vector<VertexId> tri(t.triangles.size());
+    for (std::size_t k = 0; k < tri.size(); ++k) {
+      std::uint32_t& v = id[t.triangles[k]];
+      if (v == kNone) v = static_cast<std::uint32_t>(order.size()), order.push_back(t.triangles[k]);
+      tri[k] = v;
+    }
+    const std::size_t count = order.size();
+    at.resize(count);
+    for (std::size_t v = 0; v < count; ++v) at[v] = points[order[v]];
+    // The next corner of every triangle around a vertex, and across each hull side the one
+    // that misses it.
     auto each = [&](auto&& visit) {
-      for (std::size_t tri = 0; tri < t.size(); ++tri)
+      for (std::size_t k = 0; k < tri.size(); k += 3)
         for (int i = 0; i < 3; ++i) {
-          visit(t.triangles[3 * tri + i], t.triangles[3 * tri + next3(i)]);
-          if (t.neighbors[3 * tri + i] < 0)  // the hull side next3(i) -> prev3(i)
-            visit(t.triangles[3 * tri + prev3(i)], t.triangles[3 * tri + next3(i)]);
+          visit(tri[k + i], tri[k + next3(i)]);
+          if (t.neighbors[k + i] < 0) visit(tri[k + prev3(i)], tri[k + next3(i)]);
         }
     };
-    each([&](VertexId v, VertexId) { ++offset[v + 1]; });
-    for (std::size_t v = 0; v < n; ++v) offset[v + 1] += offset[v];
-    adjacent.resize(offset[n]);
-    std::vector<std::uint32_t> at(offset.begin(), offset.end() - 1);
-    each([&](VertexId v, VertexId w) { adjacent[at[v]++] = w; });
+    offset.assign(count + 1, 0);
+    each([&](std::uint32_t v, std::uint32_t) { ++offset[v + 1]; });
+    for (std::size_t v = 0; v < count; ++v) offset[v + 1] += offset[v];
+    to.resize(offset[count]);
+    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    each([&](std::uint32_t v, std::uint32_t w) { to[fill[v]++] = w; });
+    inv_l3.resize(to.size());
+    q_inverse.resize(count);
+    for (std::size_t v = 0; v < count; ++v) {
+      double q00 = 0, q01 = 0, q11 = 0;
+      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
+        const double ex = at[to[j]].x - at[v].x, ey = at[to[j]].y - at[v].y, l2 = ex * ex + ey * ey;
+        inv_l3[j] = 1 / (l2 * std::sqrt(l2));
+        q00 += 4 * ex * ex * inv_l3[j], q01 += 4 * ex * ey * inv_l3[j], q11 += 4 * ey * ey * inv_l3[j];
+      }
+      const double det = q00 * q11 - q01 * q01;
+      q_inverse[v] = det != 0 && std::isfinite(det) ? std::array<double, 3>{q11 / det, -q01 / det, q00 / det}
+                                                    : std::array<double, 3>{NAN, NAN, NAN};
+    }
+    colour();
   }
+
+  // Greedy colouring in vertex order: each vertex the least colour none of its coloured
+  // neighbours has (a planar graph's take a handful).
+  void colour() {
+    const std::size_t count = at.size();
+    std::vector<std::uint8_t> c(count, 0xff);
+    std::size_t colours = 0;
+    for (std::size_t v = 0; v < count; ++v) {
+      std::uint64_t taken = 0;
+      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j)
+        if (c[to[j]] < 64) taken |= std::uint64_t{1} << c[to[j]];
+      int least = 0;
+      while (taken >> least & 1) ++least;
+      c[v] = static_cast<std::uint8_t>(least);
+      colours = std::max<std::size_t>(colours, least + 1);
+    }
+    first.assign(colours + 1, 0);
+    for (std::size_t v = 0; v < count; ++v) ++first[c[v] + 1];
+    for (std::size_t k = 0; k < colours; ++k) first[k + 1] += first[k];
+    by_colour.resize(count);
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t v = 0; v < count; ++v) by_colour[fill[c[v]]++] = static_cast<std::uint32_t>(v);
+  }
+
+  // One Gauss-Seidel sweep, a colour at a time, each colour's vertices on threads: each
+  // vertex's gradient set to the one that minimises its edges' curvature given its
+  // neighbours' (Q g = sum (6 (f_w - f_v) - 2 e.g_w) e / L^3). The same numbers for every
+  // thread count. Returns the largest change, relative to the gradient where that exceeds 1.
+  double sweep(std::vector<Node>& node, unsigned threads) const {
+    double worst = 0;
+    std::mutex merge;
+    for (std::size_t c = 0; c + 1 < first.size(); ++c)
+      detail::parallel_for(first[c + 1] - first[c], threads, 1 << 13, [&](std::size_t from, std::size_t until) {
+        double most = 0;
+        for (std::size_t k = first[c] + from; k < first[c] + until; ++k) most = std::max(most, update(by_colour[k], node));
+        const std::lock_guard<std::mutex> lock(merge);
+        worst = std::max(worst, most);
+      });
+    return worst;
+  }
+
+  double update(std::uint32_t v, std::vector<Node>& node) const {
+    const std::array<double, 3>& q = q_inverse[v];
+    if (std::isnan(q[0])) return 0;
+    const Point p = at[v];
+    const double f = node[v].f;
+    double s0 = 0, s1 = 0;
+    for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
+      const Node& w = node[to[j]];
+      const double ex = at[to[j]].x - p.x, ey = at[to[j]].y - p.y;
+      const double r = (6 * (w.f - f) - 2 * (ex * w.gx + ey * w.gy)) * inv_l3[j];
+      s0 += r * ex, s1 += r * ey;
+    }
+    const double gx = q[0] * s0 + q[1] * s1, gy = q[1] * s0 + q[2] * s1;
+    Node& u = node[v];
+    const double change =
+        std::max(std::fabs(u.gx - gx), std::fabs(u.gy - gy)) / std::max(1.0, std::max(std::fabs(gx), std::fabs(gy)));
+    u.gx = gx, u.gy = gy;
+    return change;
+  }
+
+  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
 };
 
 }  // namespace
 
 int estimate_gradients(std::span<const Point> points, const Triangulation& t, Values values,
-                       std::span<double> gradients, double tol, int maxiter) {
+                       std::span<double> gradients, double tol, int maxiter, unsigned threads) {
   detail::check_arrays("estimate_gradients", points.size(), t.triangles, t.neighbors);
   detail::check_values("estimate_gradients", points.size(), values);
   const std::size_t n = points.size(), m = values.components;
@@ -156,41 +260,22 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
   if (!(tol > 0)) throw InputError("estimate_gradients: tol must be positive");
   if (maxiter < 1) throw InputError("estimate_gradients: maxiter must be at least 1");
   std::fill(gradients.begin(), gradients.end(), 0.0);
-  const Graph g(n, t);
+  const Network net(points, t);
+  const std::size_t count = net.order.size();
+  std::vector<Node> node(count);
   int most = 0;
   bool converged = true;
   for (std::size_t k = 0; k < m; ++k) {
-    auto f = [&](std::size_t v) { return values.data[v * m + k]; };
-    auto grad = [&](std::size_t v) { return &gradients[2 * (v * m + k)]; };
+    for (std::size_t v = 0; v < count; ++v) node[v] = {values.data[net.order[v] * m + k], 0, 0};
     int done = 0;
-    for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep) {
-      double worst = 0;
-      for (std::size_t v = 0; v < n; ++v) {
-        // The gradient at v that minimises the edges' curvature given the neighbours':
-        // Q g = s, summed over the edges e = w - v of length L.
-        double q00 = 0, q01 = 0, q11 = 0, s0 = 0, s1 = 0;
-        for (std::uint32_t j = g.offset[v]; j < g.offset[v + 1]; ++j) {
-          const VertexId w = g.adjacent[j];
-          const double ex = points[w].x - points[v].x, ey = points[w].y - points[v].y;
-          const double l2 = ex * ex + ey * ey, l3 = l2 * std::sqrt(l2);
-          const double* gw = grad(w);
-          const double r = (6 * (f(w) - f(v)) - 2 * (ex * gw[0] + ey * gw[1])) / l3;
-          q00 += 4 * ex * ex / l3, q01 += 4 * ex * ey / l3, q11 += 4 * ey * ey / l3;
-          s0 += r * ex, s1 += r * ey;
-        }
-        const double det = q00 * q11 - q01 * q01;
-        if (!(det != 0) || !std::isfinite(det)) continue;  // no neighbours: no vertex
-        const double gx = (q11 * s0 - q01 * s1) / det, gy = (q00 * s1 - q01 * s0) / det;
-        double* gv = grad(v);
-        const double change = std::max(std::fabs(gv[0] - gx), std::fabs(gv[1] - gy)) /
-                              std::max(1.0, std::max(std::fabs(gx), std::fabs(gy)));
-        worst = std::max(worst, change);
-        gv[0] = gx, gv[1] = gy;
-      }
-      if (worst < tol) done = sweep;
-    }
+    for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep)
+      if (net.sweep(node, threads) < tol) done = sweep;
     converged = converged && done > 0;
     most = std::max(most, done);
+    for (std::size_t v = 0; v < count; ++v) {
+      gradients[2 * (net.order[v] * m + k)] = node[v].gx;
+      gradients[2 * (net.order[v] * m + k) + 1] = node[v].gy;
+    }
   }
   for (const Duplicate& d : t.duplicates)
     std::copy_n(&gradients[2 * d.kept * m], 2 * m, &gradients[2 * d.dropped * m]);

@@ -97,16 +97,17 @@ void barycentric_transforms(std::span<const Point> points, std::span<const Verte
 /// estimate_gradients_2d_global finds them: those that minimise, over the triangulation's
 /// edges, the integral of the squared second derivative of the cubic along each edge that the
 /// values and gradients at its ends define (Nielson's minimum-norm network). Solved by sweeps
-/// over the points in their order, each point's gradient set to the best for its neighbours'
-/// (Gauss-Seidel), until a sweep changes no gradient by more than `tol` (relative to the
-/// gradient where it exceeds 1) or after `maxiter` sweeps. `gradients` receives
+/// over the points, each point's gradient set to the best for its neighbours' (Gauss-Seidel;
+/// the points taken in colour classes of the Delaunay graph, each class on `threads` threads,
+/// the same numbers for any thread count), until a sweep changes no gradient by more than
+/// `tol` (relative to the gradient where it exceeds 1) or after `maxiter` sweeps. `gradients` receives
 /// points.size() * values.components * 2 numbers: for point i and component c, d/dx at
 /// 2 (i * components + c) and d/dy after it; a duplicate left out gets its kept point's.
 /// Returns the sweeps made, or 0 when `maxiter` were not enough (the gradients are then those
 /// of the last sweep). Linear data get their exact gradient. Throws InputError for sizes that
 /// do not match, a tol that is not positive or a maxiter below 1.
 int estimate_gradients(std::span<const Point> points, const Triangulation& t, Values values,
-                       std::span<double> gradients, double tol = 1e-6, int maxiter = 400);
+                       std::span<double> gradients, double tol = 1e-6, int maxiter = 400, unsigned threads = 1);
 
 /// The piecewise cubic Clough-Tocher interpolant: each triangle split at its centroid into
 /// three cubic pieces that take the values and `gradients` (laid out as estimate_gradients

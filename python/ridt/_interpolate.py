@@ -348,14 +348,17 @@ class GradientEstimationWarning(Warning):
     """The gradients' sweeps stopped at maxiter before they settled (scipy's warning)."""
 
 
-def estimate_gradients_2d_global(tri: Delaunay, y: Any, maxiter: int = 400, tol: float = 1e-6) -> np.ndarray:
+def estimate_gradients_2d_global(tri: Delaunay, y: Any, maxiter: int = 400, tol: float = 1e-6, *,
+                                 threads: Optional[int] = None) -> np.ndarray:
     """scipy.interpolate's estimate_gradients_2d_global on a :class:`ridt.Delaunay`: the
     gradients at the points that minimise the squared second derivative along the Delaunay
     edges of the cubics the data define on them (Nielson's minimum-norm network), by
     Gauss-Seidel sweeps until a sweep changes no gradient by more than `tol` (relative, where
     the gradient exceeds 1), at most `maxiter`. Returns an array of y's shape plus a last axis
     of 2 (d/dx, d/dy); warns with :class:`GradientEstimationWarning` when the sweeps did not
-    settle. Exact for linear data."""
+    settle. Exact for linear data. ``threads`` (ridt's own; default: the triangulation's)
+    share each sweep; the result does not depend on them."""
+    nthreads = tri._threads if threads is None else _api.thread_count(threads)
     if not isinstance(tri, Delaunay):
         raise TypeError("tri must be a ridt.Delaunay")
     y = np.asanyarray(y)
@@ -365,19 +368,19 @@ def estimate_gradients_2d_global(tri: Delaunay, y: Any, maxiter: int = 400, tol:
         with warnings.catch_warnings():
             warnings.simplefilter("error", GradientEstimationWarning)
             try:
-                re = estimate_gradients_2d_global(tri, y.real, maxiter=maxiter, tol=tol)
-                im = estimate_gradients_2d_global(tri, y.imag, maxiter=maxiter, tol=tol)
+                re = estimate_gradients_2d_global(tri, y.real, maxiter=maxiter, tol=tol, threads=nthreads)
+                im = estimate_gradients_2d_global(tri, y.imag, maxiter=maxiter, tol=tol, threads=nthreads)
                 return re + 1j * im
             except GradientEstimationWarning:
                 pass
         warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
                       GradientEstimationWarning, stacklevel=2)
-        return (estimate_gradients_2d_global(tri, y.real, maxiter=maxiter, tol=tol)
-                + 1j * estimate_gradients_2d_global(tri, y.imag, maxiter=maxiter, tol=tol))
+        return (estimate_gradients_2d_global(tri, y.real, maxiter=maxiter, tol=tol, threads=nthreads)
+                + 1j * estimate_gradients_2d_global(tri, y.imag, maxiter=maxiter, tol=tol, threads=nthreads))
     if int(maxiter) < 1 or not float(tol) > 0:
         raise ValueError(f"maxiter must be at least 1 and tol positive; got {maxiter} and {tol}")
     v = np.ascontiguousarray(y.reshape(tri.npoints, -1), dtype=np.float64)
-    g, sweeps = _core.estimate_gradients(tri.points, tri.triangulation, v, float(tol), int(maxiter))
+    g, sweeps = _core.estimate_gradients(tri.points, tri.triangulation, v, float(tol), int(maxiter), nthreads)
     if sweeps == 0:
         warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
                       GradientEstimationWarning, stacklevel=2)
@@ -402,7 +405,7 @@ class CloughTocher2DInterpolator(_TriangulationInterpolator):
         super().__init__(points, values, fill_value=fill_value, rescale=rescale, threads=threads)
         k = self.values.shape[1] // (2 if self._complex else 1)
         data = self.values[:, :k] + 1j * self.values[:, k:] if self._complex else self.values
-        self.grad = estimate_gradients_2d_global(self.tri, data, maxiter=maxiter, tol=tol)
+        self.grad = estimate_gradients_2d_global(self.tri, data, maxiter=maxiter, tol=tol, threads=self._threads)
 
     def _gradients(self) -> np.ndarray:
         g = np.asarray(self.grad)

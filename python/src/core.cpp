@@ -323,7 +323,8 @@ Triangulation alive.
 
   m.def(
       "estimate_gradients",
-      [](const Points& points, const ridt::Triangulation& t, const Points& values, double tol, int maxiter) {
+      [](const Points& points, const ridt::Triangulation& t, const Points& values, double tol, int maxiter,
+         unsigned threads) {
         const auto pts = as_points(points, "points");
         if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
         const auto k = static_cast<std::size_t>(values.shape(1));
@@ -333,11 +334,12 @@ Triangulation alive.
         {
           py::gil_scoped_release nogil;
           sweeps = ridt::estimate_gradients(pts, t, v, std::span<double>(g.mutable_data(), pts.size() * k * 2), tol,
-                                            maxiter);
+                                            maxiter, threads);
         }
         return py::make_tuple(g, sweeps);
       },
-      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("tol"), py::arg("maxiter"));
+      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("tol"), py::arg("maxiter"),
+      py::arg("threads") = 1u);
 
   m.def(
       "nearest",
