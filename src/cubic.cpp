@@ -32,12 +32,13 @@ using detail::next3;
 using detail::prev3;
 
 // One triangle's Clough-Tocher interpolant at q. The field's values hold, a point, the k values
-// and then their k gradients (d/dx, d/dy each).
+// and then their k gradients (d/dx, d/dy each). The triangle's control points are kept for the
+// next query in the same triangle (a grid's nodes come a triangle at a time).
 class CloughTocher {
  public:
-  explicit CloughTocher(const Field& f) : f_(f), k_(f.values.components / 3) {}
+  explicit CloughTocher(const Field& f) : f_(f), k_(f.values.components / 3), net_(k_) {}
 
-  void operator()(std::size_t tri, const Point& q, double* out) const {
+  void operator()(std::size_t tri, const Point& q, double* out) {
     const Point p[3] = {f_.corner(tri, 0), f_.corner(tri, 1), f_.corner(tri, 2)};
     double b[3];
     detail::barycentric(p[0], p[1], p[2], q, b);
@@ -46,41 +47,18 @@ class CloughTocher {
         std::copy_n(f_.value(f_.vertex(tri, i)), k_, out);
         return;
       }
-    const Point c = centroid(p[0], p[1], p[2]);
-    // The direction across each side (side i is across from corner i) as barycentric weights
-    // of its two ends and the centroid, the same for every component.
-    Across across[3];
-    for (int i = 0; i < 3; ++i) across[i] = direction(tri, i, p, c);
+    if (tri != tri_) control_points(tri, p);
     // The piece: the one across from the corner of least weight.
     const int m = b[0] <= b[1] && b[0] <= b[2] ? 0 : b[1] <= b[2] ? 1 : 2;
     const int ia = next3(m), ib = prev3(m);
     const double u = b[ia] - b[m], v = b[ib] - b[m], w = 3 * b[m];
-    const double* value[3] = {f_.value(f_.vertex(tri, 0)), f_.value(f_.vertex(tri, 1)), f_.value(f_.vertex(tri, 2))};
     for (std::size_t k = 0; k < k_; ++k) {
-      Corner corner[3];
-      for (int i = 0; i < 3; ++i) {
-        const double gx = value[i][k_ + 2 * k], gy = value[i][k_ + 2 * k + 1];
-        corner[i].f = value[i][k];
-        corner[i].next = value[i][k] + ((p[next3(i)].x - p[i].x) * gx + (p[next3(i)].y - p[i].y) * gy) / 3;
-        corner[i].prev = value[i][k] + ((p[prev3(i)].x - p[i].x) * gx + (p[prev3(i)].y - p[i].y) * gy) / 3;
-        corner[i].in = value[i][k] + ((c.x - p[i].x) * gx + (c.y - p[i].y) * gy) / 3;
-      }
-      double t[3];  // by the middle of side i, from corner next3(i) to prev3(i)
-      for (int i = 0; i < 3; ++i) {
-        const Corner &a = corner[next3(i)], &e = corner[prev3(i)];
-        const Across& d = across[i];
-        const double d0 = d.a * a.f + d.b * a.next + d.c * a.in;
-        const double d2 = d.a * e.prev + d.b * e.f + d.c * e.in;
-        t[i] = ((d0 + d2) / 2 - d.a * a.next - d.b * e.prev) / d.c;
-      }
-      double s[3];
-      for (int i = 0; i < 3; ++i) s[i] = (corner[i].in + t[next3(i)] + t[prev3(i)]) / 3;
-      const double centre = (s[0] + s[1] + s[2]) / 3;
-      const Corner &a = corner[ia], &e = corner[ib];
-      out[k] = a.f * u * u * u + e.f * v * v * v + centre * w * w * w +
-               3 * (a.next * u * u * v + e.prev * u * v * v + a.in * u * u * w + e.in * v * v * w + s[ia] * u * w * w +
-                    s[ib] * v * w * w) +
-               6 * t[m] * u * v * w;
+      const Net& n = net_[k];
+      const Corner &a = n.corner[ia], &e = n.corner[ib];
+      out[k] = a.f * u * u * u + e.f * v * v * v + n.centre * w * w * w +
+               3 * (a.next * u * u * v + e.prev * u * v * v + a.in * u * u * w + e.in * v * v * w +
+                    n.s[ia] * u * w * w + n.s[ib] * v * w * w) +
+               6 * n.t[m] * u * v * w;
     }
   }
 
@@ -88,9 +66,46 @@ class CloughTocher {
   struct Corner {
     double f, next, prev, in;  // the value, the control points towards the next and previous corners and C
   };
+  // One component's control points on the triangle.
+  struct Net {
+    Corner corner[3];
+    double t[3];  // by the middle of side i, from corner next3(i) to prev3(i)
+    double s[3];  // next to C on the way from corner i
+    double centre;
+  };
   struct Across {
     double a, b, c;  // weights of the side's first and second end and the centroid, summing to 0
   };
+
+  void control_points(std::size_t tri, const Point* p) {
+    tri_ = tri;
+    const Point c = centroid(p[0], p[1], p[2]);
+    // The direction across each side (side i is across from corner i) as barycentric weights
+    // of its two ends and the centroid, the same for every component.
+    Across across[3];
+    for (int i = 0; i < 3; ++i) across[i] = direction(tri, i, p, c);
+    const double* value[3] = {f_.value(f_.vertex(tri, 0)), f_.value(f_.vertex(tri, 1)), f_.value(f_.vertex(tri, 2))};
+    for (std::size_t k = 0; k < k_; ++k) {
+      Net& n = net_[k];
+      for (int i = 0; i < 3; ++i) {
+        const double gx = value[i][k_ + 2 * k], gy = value[i][k_ + 2 * k + 1];
+        Corner& o = n.corner[i];
+        o.f = value[i][k];
+        o.next = o.f + ((p[next3(i)].x - p[i].x) * gx + (p[next3(i)].y - p[i].y) * gy) / 3;
+        o.prev = o.f + ((p[prev3(i)].x - p[i].x) * gx + (p[prev3(i)].y - p[i].y) * gy) / 3;
+        o.in = o.f + ((c.x - p[i].x) * gx + (c.y - p[i].y) * gy) / 3;
+      }
+      for (int i = 0; i < 3; ++i) {
+        const Corner &a = n.corner[next3(i)], &e = n.corner[prev3(i)];
+        const Across& d = across[i];
+        const double d0 = d.a * a.f + d.b * a.next + d.c * a.in;
+        const double d2 = d.a * e.prev + d.b * e.f + d.c * e.in;
+        n.t[i] = ((d0 + d2) / 2 - d.a * a.next - d.b * e.prev) / d.c;
+      }
+      for (int i = 0; i < 3; ++i) n.s[i] = (n.corner[i].in + n.t[next3(i)] + n.t[prev3(i)]) / 3;
+      n.centre = (n.s[0] + n.s[1] + n.s[2]) / 3;
+    }
+  }
 
   static Point centroid(const Point& a, const Point& b, const Point& c) {
     return {a.x + ((b.x - a.x) + (c.x - a.x)) / 3, a.y + ((b.y - a.y) + (c.y - a.y)) / 3};
@@ -120,6 +135,8 @@ class CloughTocher {
 
   const Field& f_;
   std::size_t k_;
+  std::vector<Net> net_;
+  std::size_t tri_ = ~std::size_t{0};  // the triangle net_ is for
 };
 
 // A vertex's value and gradient during the sweeps, side by side for the neighbours' reads.
