@@ -281,7 +281,8 @@ class Delaunay:
         return found.view(np.intc).reshape(shape)
 
     def __getstate__(self) -> dict:
-        # The triangulation is a function of the points, so the points and options are enough.
+        # The triangulation is a function of the points, so the points and options are enough
+        # (an unpickled one may list its triangles in another order: a fresh build's).
         return {"points": self._points, "threads": self._threads, "options": self._options,
                 "incremental": self._incremental}
 
@@ -299,21 +300,31 @@ class Delaunay:
             self.__dict__.pop(name, None)
 
     def add_points(self, points: Any, restart: bool = False) -> None:
-        """Adds points to a triangulation made with ``incremental=True``: the result is the
-        Delaunay triangulation of all the points, the same triangles as a fresh
-        ``Delaunay(all_points)`` (the triangulation is unique, so ``restart`` changes nothing).
-        The points are triangulated anew, which at ridt's speed costs about what scipy's
-        incremental insertion does for a few per cent of new points."""
+        """Adds points to a triangulation made with ``incremental=True``: each is inserted into
+        the existing triangulation (one thread, along a Hilbert curve over the batch), and the
+        result is the Delaunay triangulation of all the points, the same triangles as a fresh
+        ``Delaunay(all_points)`` (perhaps in another order; the triangulation is unique, so
+        ``restart`` changes nothing)."""
         if not self._incremental:
             raise RuntimeError("incremental mode not enabled or already closed")
         _refuse_masked(points)
         more = _api.as_points(points, "points", "ridt.Delaunay.add_points")
         self._points = np.ascontiguousarray(np.concatenate([self._points, more]))
-        self._run()
+        if self.furthest_site:  # the farthest-point triangulation of the hull's corners, anew
+            self._run()
+            return
+        if getattr(self, "_inc", None) is None:
+            self._inc = _core.Incremental(self._points[:len(self._points) - len(more)], self._tri)
+        self._inc.add(more)
+        self._tri = self._inc.triangulation()
+        self._simplices = self._tri.triangles.view(np.intc)
+        self._neighbors = self._tri.neighbors.view(np.intc)
+        self._clear()
 
     def close(self) -> None:
         """Ends incremental mode (scipy's): add_points then raises RuntimeError."""
         self._incremental = False
+        self._inc = None
 
     def to_matplotlib(self):
         """A matplotlib.tri.Triangulation of the same triangles, with its neighbours filled in

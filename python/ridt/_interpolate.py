@@ -69,10 +69,12 @@ class Voronoi:
         self.furthest_site = bool(furthest_site)
         self._build(_api.as_points(points, "points", "ridt.Voronoi"), _api.thread_count(threads), at_infinity)
 
-    def _build(self, points: np.ndarray, threads: int, at_infinity: bool) -> None:
+    def _build(self, points: np.ndarray, threads: int, at_infinity: bool,
+               tri: Optional[_core.Triangulation] = None) -> None:
         self._points, self._threads, self._at_infinity = points, threads, at_infinity
-        self._tri = _api.run(points, method="auto", threads=threads, order="brio", locate="auto", seed=1,
-                             progress=None, furthest_site=self.furthest_site)
+        self._tri = tri if tri is not None else _api.run(points, method="auto", threads=threads, order="brio",
+                                                         locate="auto", seed=1, progress=None,
+                                                         furthest_site=self.furthest_site)
         if self._tri.warning:
             raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
         (self.vertices, offsets, self._cell_vertices, point_cell, ridge_points,
@@ -100,19 +102,27 @@ class Voronoi:
         self._build(state["points"], state["threads"], state["at_infinity"])
 
     def add_points(self, points: Any, restart: bool = False) -> None:
-        """Adds points to a diagram made with ``incremental=True``: the result is the diagram of
-        all the points, as a fresh ``Voronoi(all_points)`` gives it."""
+        """Adds points to a diagram made with ``incremental=True``: they are inserted into the
+        existing triangulation, and the result is the diagram of all the points, as a fresh
+        ``Voronoi(all_points)`` gives it (perhaps numbered otherwise)."""
         if not self._incremental:
             raise RuntimeError("incremental mode not enabled or already closed")
         _refuse_masked(points)
         more = _api.as_points(points, "points", "ridt.Voronoi.add_points")
         for name in ("_ints", "ridge_vertices", "regions", "ridge_directions", "ridge_dict"):
             self.__dict__.pop(name, None)
-        self._build(np.ascontiguousarray(np.concatenate([self._points, more])), self._threads, self._at_infinity)
+        tri = None
+        if not self.furthest_site:  # inserted into the existing triangulation
+            if getattr(self, "_inc", None) is None:
+                self._inc = _core.Incremental(self._points, self._tri)
+            self._inc.add(more)
+            tri = self._inc.triangulation()
+        self._build(np.ascontiguousarray(np.concatenate([self._points, more])), self._threads, self._at_infinity, tri)
 
     def close(self) -> None:
         """Ends incremental mode (scipy's): add_points then raises RuntimeError."""
         self._incremental = False
+        self._inc = None
 
     @property
     def points(self) -> np.ndarray:

@@ -15,6 +15,7 @@
 
 #include "ridt/check.hpp"
 #include "ridt/furthest.hpp"
+#include "ridt/incremental.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 #include "ridt/ridt.hpp"
@@ -226,6 +227,25 @@ Triangulation alive.
       .def_property_readonly("stats", [](const ridt::Triangulation& t) { return stats_dict(t.stats); },
                              "counters and timings of the run")
       .def("__len__", &ridt::Triangulation::size);
+
+  py::class_<ridt::IncrementalTriangulation>(m, "Incremental",
+                                              "A triangulation that takes more points (ridt.Delaunay's add_points)")
+      .def(py::init([](const Points& points, const ridt::Triangulation& t) {
+             const auto pts = as_points(points, "points");
+             py::gil_scoped_release nogil;
+             return ridt::IncrementalTriangulation(pts, t);
+           }),
+           py::arg("points"), py::arg("triangulation"))
+      .def(
+          "add",
+          [](ridt::IncrementalTriangulation& self, const Points& points) {
+            const auto pts = as_points(points, "points");
+            py::gil_scoped_release nogil;
+            self.add(pts);
+          },
+          py::arg("points"))
+      .def("triangulation", [](const ridt::IncrementalTriangulation& self) { return self.triangulation(); },
+           "a copy of the triangulation of every point so far");
 
   m.def("triangulate", &run, py::arg("points"), py::arg("method"), py::arg("threads"), py::arg("order"),
         py::arg("locate"), py::arg("seed"), py::arg("bounding"), py::arg("k"), py::arg("canonical"),

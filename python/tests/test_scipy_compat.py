@@ -200,21 +200,35 @@ def test_a_pickled_object_answers_the_same_in_another_process(tmp_path):
             np.testing.assert_array_equal(a, b)
 
 
+def _triangle_set(simplices):
+    return sorted(tuple(np.roll(t, -int(np.argmin(t)))) for t in simplices.tolist())
+
+
 def test_incremental_insertion_equals_a_fresh_build():
     rng = np.random.default_rng(12)
-    chunks = [rng.random((10, 2)), np.array([[0, 0], [0, 1], [1, 0], [1, 1.0]]), rng.random((50, 2)),
-              rng.random((3, 2))]
+    # Inside and far outside the first hull, equal points old and new, a grid's cocircular squares.
+    chunks = [rng.random((10, 2)), np.array([[0, 0], [0, 1], [1, 0], [1, 1.0]]), rng.random((50, 2)) * 3 - 1,
+              np.array([[0.5, 0.5], [0.5, 0.5], [7, 7], [0, 0]]), np.mgrid[0:4, 0:4].reshape(2, -1).T * 0.25]
     inc = ridt.Delaunay(chunks[0], incremental=True)
     vinc = ridt.Voronoi(chunks[0], incremental=True)
-    for c in chunks[1:]:
+    for k, c in enumerate(chunks[1:], 2):
         inc.add_points(c)
         vinc.add_points(c, restart=True)
-    whole = np.concatenate(chunks)
-    fresh = ridt.Delaunay(whole)
-    assert np.array_equal(inc.points, whole)
-    assert np.array_equal(inc.simplices, fresh.simplices) and np.array_equal(inc.neighbors, fresh.neighbors)
-    assert np.array_equal(inc.convex_hull, fresh.convex_hull)
-    assert np.array_equal(vinc.vertices, ridt.Voronoi(whole).vertices)
+        whole = np.concatenate(chunks[:k])
+        fresh = ridt.Delaunay(whole)
+        assert np.array_equal(inc.points, whole)
+        assert _triangle_set(inc.simplices) == _triangle_set(fresh.simplices)
+        assert ridt.check(whole, inc.simplices)[0]
+        assert np.array_equal(inc.convex_hull, fresh.convex_hull)
+        assert np.array_equal(inc.coplanar[:, [0, 2]], fresh.coplanar[:, [0, 2]])
+        # Neighbours: the triangle across from each corner shares the other two.
+        for t, (tri, nb) in enumerate(zip(inc.simplices, inc.neighbors)):
+            for i in range(3):
+                if nb[i] >= 0:
+                    assert set(tri) - {tri[i]} <= set(inc.simplices[nb[i]]) and t in inc.neighbors[nb[i]]
+        fv = ridt.Voronoi(whole)
+        assert sorted(map(tuple, np.round(vinc.vertices, 12))) == sorted(map(tuple, np.round(fv.vertices, 12)))
+        assert len(vinc.regions) == len(fv.regions)
     inc.close()
     vinc.close()
     with pytest.raises(RuntimeError):
