@@ -258,9 +258,7 @@ IncrementalTriangulation::IncrementalTriangulation(std::span<const Point> points
     for (const std::uint32_t p : detail::hilbert_order(points.data(), static_cast<std::uint32_t>(points.size())))
       if (!dropped[p]) m.insert(vs, p);
   }
-  result_ = m.extract(options.threads);
-  result_.stats = t.stats;
-  result_.stats.points = m.n, result_.stats.duplicates = m.duplicates.size(), result_.stats.distinct = m.n - m.duplicates.size();
+  result_ = std::move(t);  // the triangulation of these points, as triangulate() gave it
 }
 
 IncrementalTriangulation::~IncrementalTriangulation() = default;
