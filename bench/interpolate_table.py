@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
-"""Interpolation onto a grid and Voronoi diagrams: ridt's Python package beside scipy's on the
-same points, each call in a fresh process, the codes in a new random order every repetition.
+"""Interpolation onto a grid, Voronoi diagrams and incremental insertion: ridt's Python package
+beside scipy's on the same points, each call in a fresh process, the codes in a new random order
+every repetition.
 
   bench/interpolate_table.py [--python /usr/bin/python3] [--n 1000000] [--grid 2000] [--reps 3]
-                             [--out docs/results/interpolate.md]
+                             [--add-points-reps 1] [--out docs/results/interpolate.md]
 
-griddata: `griddata(points, values, (gx, gy))`, linear, of n uniform points onto a grid of
-grid x grid nodes over the unit square, the triangulation included. Voronoi: `Voronoi(points)`,
+griddata: `griddata(points, values, (gx, gy))`, linear, and again cubic (Clough-Tocher, its
+gradients estimated), of n uniform points onto a grid of grid x grid nodes over the unit
+square, the triangulation included. add_points: `add_points(more)` of n / 10 more uniform
+points into `Delaunay(points, incremental=True)` (made before the clock starts); scipy's
+(Qhull's incremental mode) takes minutes at 10^6, so it runs --add-points-reps times. Voronoi: `Voronoi(points)`,
 the diagram with its arrays (vertices, ridge_points, point_region); and again with its
 `regions` and `ridge_vertices` lists of lists read too (scipy builds them in the constructor,
 ridt when first read). Time: the median wall seconds of the call; memory: the process's peak resident size
@@ -35,14 +39,20 @@ CHILD = textwrap.dedent("""
     values = np.sin(6 * pts[:, 0]) * np.cos(5 * pts[:, 1])
     if code == "scipy":
         import scipy.interpolate as si, scipy.spatial as ss
-        griddata, Voronoi, kw = si.griddata, ss.Voronoi, {}
+        griddata, Voronoi, Delaunay, kw = si.griddata, ss.Voronoi, ss.Delaunay, {}
     else:
         import ridt
         ridt.set_memory_cache_limit(0)
-        griddata, Voronoi, kw = ridt.griddata, ridt.Voronoi, {"threads": int(code.split()[1])}
-    if task == "griddata":
+        griddata, Voronoi, Delaunay = ridt.griddata, ridt.Voronoi, ridt.Delaunay
+        kw = {"threads": int(code.split()[1])}
+    if task in ("griddata", "griddata_cubic"):
         gx, gy = np.mgrid[0:1:grid * 1j, 0:1:grid * 1j]
-        run = lambda: griddata(pts, values, (gx, gy), **kw)
+        method = "cubic" if task == "griddata_cubic" else "linear"
+        run = lambda: griddata(pts, values, (gx, gy), method=method, **kw)
+    elif task == "add_points":
+        more = np.random.default_rng(2).random((len(pts) // 10, 2))
+        tri = Delaunay(pts, incremental=True, **kw)
+        run = lambda: tri.add_points(more)
     elif task == "voronoi":
         run = lambda: Voronoi(pts, **kw)
     else:
@@ -63,7 +73,8 @@ CHILD = textwrap.dedent("""
 
 CODES = ["ridt 1", "ridt 2", "scipy"]
 LABEL = {"ridt 1": "ridt, 1 thread", "ridt 2": "ridt, 2 threads", "scipy": "scipy"}
-CALL = {"griddata": "griddata, linear", "voronoi": "Voronoi", "voronoi_lists": "Voronoi, with its lists"}
+CALL = {"griddata": "griddata, linear", "griddata_cubic": "griddata, cubic", "voronoi": "Voronoi",
+        "voronoi_lists": "Voronoi, with its lists", "add_points": "add_points of n/10"}
 
 
 def run(python, task, code, path, grid):
@@ -80,21 +91,24 @@ def main():
     ap.add_argument("--n", type=int, default=1_000_000)
     ap.add_argument("--grid", type=int, default=2000)
     ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--add-points-reps", type=int, default=1)
+    ap.add_argument("--tasks", default=",".join(CALL), help="which calls, comma-separated: " + ", ".join(CALL))
     ap.add_argument("--out", default="docs/results/interpolate.md")
     args = ap.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "points.npy")
         np.save(path, np.random.default_rng(1).random((args.n, 2)))
-        for task in CALL:
+        for task in args.tasks.split(","):
             got = {c: [] for c in CODES}
-            for _ in range(args.reps):
+            reps = args.add_points_reps if task == "add_points" else args.reps
+            for _ in range(reps):
                 for code in random.sample(CODES, len(CODES)):
                     got[code].append(run(args.python, task, code, path, args.grid))
             for code in CODES:
                 ok = [r for r in got[code] if r is not None]
-                row = {"task": CALL[task], "n": args.n, "grid": args.grid if task == "griddata" else "",
-                       "code": LABEL[code], "runs": len(ok), "failed": args.reps - len(ok)}
+                row = {"task": CALL[task], "n": args.n, "grid": args.grid if task.startswith("griddata") else "",
+                       "code": LABEL[code], "runs": len(ok), "failed": reps - len(ok)}
                 if ok:
                     row["time_s"] = statistics.median(r["time"] for r in ok)
                     row["extra_b_per_point"] = statistics.median(r["extra"] for r in ok) / args.n
@@ -111,7 +125,8 @@ def main():
         w.writerows(rows)
     with open(args.out, "w") as f:
         f.write(f"Machine: {machine()}. {args.n:,} uniform points; griddata onto a {args.grid} x {args.grid} "
-                f"grid; medians of {args.reps} interleaved runs, each in a fresh process.\n\n")
+                f"grid; add_points of {args.n // 10:,} more; medians of {args.reps} interleaved runs "
+                f"({args.add_points_reps} for add_points), each in a fresh process.\n\n")
         f.write("| call | code | s | × scipy | peak B/pt |\n|---|---|---:|---:|---:|\n")
         for r in rows:
             if "time_s" not in r:

@@ -271,11 +271,12 @@ def interpolate_section(results):
              f"{float(r['scipy_over_code']):.1f}", f"{float(r['extra_b_per_point']):.0f}"]
             for r in data if r.get("time_s")]
     return (
-        "## Interpolation and Voronoi against scipy\n\n"
-        "`ridt.griddata` (linear) onto a grid, the triangulation included; `ridt.Voronoi`, the diagram "
-        "and its arrays; and `ridt.Voronoi` with its `regions` and `ridge_vertices` lists of lists read "
-        "too (scipy builds them in its constructor, ridt when first read); against scipy's on the same "
-        "uniform points, each call in a fresh process; × scipy: scipy's time over the code's. Output: "
+        "## Interpolation, Voronoi and incremental insertion against scipy\n\n"
+        "`ridt.griddata` (linear, then cubic) onto a grid, the triangulation included; `ridt.Voronoi`, "
+        "the diagram and its arrays; `ridt.Voronoi` with its `regions` and `ridge_vertices` lists of "
+        "lists read too (scipy builds them in its constructor, ridt when first read); and `add_points` "
+        "of n/10 more points into an incremental `Delaunay` of n; against scipy's on the same uniform "
+        "points, each call in a fresh process; × scipy: scipy's time over the code's. Output: "
         "[results/interpolate.md](results/interpolate.md).\n\n"
         + table(["call", "n", "grid", "code", "s", "× scipy", "B/pt"], body,
                 ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")

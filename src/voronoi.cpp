@@ -152,55 +152,46 @@ void ridges(const Triangulation& t, const std::vector<std::size_t>& cut, unsigne
   });
 }
 
-}  // namespace
+using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 
-Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads) {
-  detail::check_arrays("voronoi", points.size(), t.triangles, t.neighbors);
-  const std::size_t count = t.size();
-  const std::vector<std::size_t> cut = stretches(count, threads);
-  Voronoi out;
-  out.vertices.resize(count);
-  each_part(cut, threads, [&](std::size_t, std::size_t first, std::size_t last) {
-    for (std::size_t k = first; k < last; ++k) {
-      const VertexId* v = &t.triangles[3 * k];
-      out.vertices[k] = detail::circumcentre(points[v[0]], points[v[1]], points[v[2]]);
-    }
-  });
-  out.point_cell.assign(points.size(), -1);
-  cells(t, cut, threads, out);
-  ridges(t, cut, threads, out);
-  return out;
+// The neighbours of triangle k, higher-numbered, whose fourth point lies on k's circle (exact
+// in-circle test; the perturbation plays no part): (k, neighbour) appended to `found`. `p`
+// holds k's three points.
+void cocircular_with(std::span<const Point> points, const Triangulation& t, std::size_t k, const Point* p,
+                     Pairs& found) {
+  for (int i = 0; i < 3; ++i) {
+    const std::int32_t u = t.neighbors[3 * k + i];
+    if (u < 0 || static_cast<std::size_t>(u) < k) continue;
+    // u's vertex across the shared side: the one that is not on it.
+    const VertexId* w = &t.triangles[3 * static_cast<std::size_t>(u)];
+    const VertexId a = t.triangles[3 * k + next3(i)], b = t.triangles[3 * k + prev3(i)];
+    const VertexId d = w[0] != a && w[0] != b ? w[0] : w[1] != a && w[1] != b ? w[1] : w[2];
+    if (detail::incircle(p[0], p[1], p[2], points[d]) == 0)
+      found.emplace_back(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(u));
+  }
 }
 
-namespace {
-
-// The pairs of neighbouring triangles (lower, higher) whose four points are cocircular.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> cocircular_pairs(std::span<const Point> points,
-                                                                      const Triangulation& t,
-                                                                      const std::vector<std::size_t>& cut,
-                                                                      unsigned threads) {
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(cut.size() - 1);
-  each_part(cut, threads, [&](std::size_t p, std::size_t first, std::size_t last) {
-    for (std::size_t k = first; k < last; ++k)
-      for (int i = 0; i < 3; ++i) {
-        const std::int32_t u = t.neighbors[3 * k + i];
-        if (u < 0 || static_cast<std::size_t>(u) < k) continue;
-        // u's vertex across the shared side: the one that is not on it.
-        const VertexId* w = &t.triangles[3 * static_cast<std::size_t>(u)];
-        const VertexId a = t.triangles[3 * k + next3(i)], b = t.triangles[3 * k + prev3(i)];
-        const VertexId d = w[0] != a && w[0] != b ? w[0] : w[1] != a && w[1] != b ? w[1] : w[2];
-        const VertexId* c = &t.triangles[3 * k];
-        if (detail::incircle(points[c[0]], points[c[1]], points[c[2]], points[d]) == 0)
-          found[p].emplace_back(static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(u));
-      }
-  });
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (const auto& f : found) pairs.insert(pairs.end(), f.begin(), f.end());
+Pairs joined(std::vector<Pairs>& parts) {
+  Pairs pairs;
+  for (const Pairs& f : parts) pairs.insert(pairs.end(), f.begin(), f.end());
   return pairs;
 }
 
+// All pairs of neighbouring triangles (lower, higher) whose four points are cocircular.
+Pairs cocircular_pairs(std::span<const Point> points, const Triangulation& t, const std::vector<std::size_t>& cut,
+                       unsigned threads) {
+  std::vector<Pairs> found(cut.size() - 1);
+  each_part(cut, threads, [&](std::size_t part, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Point p[3] = {points[t.triangles[3 * k]], points[t.triangles[3 * k + 1]], points[t.triangles[3 * k + 2]]};
+      cocircular_with(points, t, k, p, found[part]);
+    }
+  });
+  return joined(found);
+}
+
 // Each triangle's group of cocircular neighbours, named by its lowest triangle.
-std::vector<std::uint32_t> groups(std::size_t count, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+std::vector<std::uint32_t> groups(std::size_t count, const Pairs& pairs) {
   std::vector<std::uint32_t> root(count);
   for (std::size_t k = 0; k < count; ++k) root[k] = static_cast<std::uint32_t>(k);
   auto find = [&](std::uint32_t k) {
@@ -215,16 +206,10 @@ std::vector<std::uint32_t> groups(std::size_t count, const std::vector<std::pair
   return root;
 }
 
-}  // namespace
-
-std::vector<std::int32_t> merge_cocircular(std::span<const Point> points, const Triangulation& t, Voronoi& vd,
-                                           unsigned threads) {
-  detail::check_arrays("merge_cocircular", points.size(), t.triangles, t.neighbors);
-  if (vd.vertices.size() != t.size()) throw InputError("merge_cocircular: the diagram is not this triangulation's, or is merged already");
-  const std::size_t count = t.size();
+// The merge itself, given the cocircular pairs: see merge_cocircular.
+std::vector<std::int32_t> apply_merge(Voronoi& vd, std::size_t count, const Pairs& pairs) {
   std::vector<std::int32_t> vertex(count);
   for (std::size_t k = 0; k < count; ++k) vertex[k] = static_cast<std::int32_t>(k);
-  const auto pairs = cocircular_pairs(points, t, stretches(count, threads), threads);
   if (pairs.empty()) return vertex;
   // New vertex numbers in the order of each group's lowest triangle, which comes first.
   const std::vector<std::uint32_t> root = groups(count, pairs);
@@ -263,6 +248,41 @@ std::vector<std::int32_t> merge_cocircular(std::span<const Point> points, const 
   }
   vd.ridges.resize(kept);
   return vertex;
+}
+
+}  // namespace
+
+Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads, bool merge) {
+  detail::check_arrays("voronoi", points.size(), t.triangles, t.neighbors);
+  const std::size_t count = t.size();
+  const std::vector<std::size_t> cut = stretches(count, threads);
+  Voronoi out;
+  out.vertices.resize(count);
+  // The circumcentres, and with `merge` the cocircular neighbours, found while each
+  // triangle's points are at hand (the points are in the caller's order: each read may miss).
+  std::vector<Pairs> found(cut.size() - 1);
+  each_part(cut, threads, [&](std::size_t part, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const VertexId* v = &t.triangles[3 * k];
+      const Point p[3] = {points[v[0]], points[v[1]], points[v[2]]};
+      out.vertices[k] = detail::circumcentre(p[0], p[1], p[2]);
+      if (merge) cocircular_with(points, t, k, p, found[part]);
+    }
+  });
+  out.point_cell.assign(points.size(), -1);
+  cells(t, cut, threads, out);
+  ridges(t, cut, threads, out);
+  if (merge) apply_merge(out, count, joined(found));
+  return out;
+}
+
+
+std::vector<std::int32_t> merge_cocircular(std::span<const Point> points, const Triangulation& t, Voronoi& vd,
+                                           unsigned threads) {
+  detail::check_arrays("merge_cocircular", points.size(), t.triangles, t.neighbors);
+  if (vd.vertices.size() != t.size())
+    throw InputError("merge_cocircular: the diagram is not this triangulation's, or is merged already");
+  return apply_merge(vd, t.size(), cocircular_pairs(points, t, stretches(t.size(), threads), threads));
 }
 
 }  // namespace ridt

@@ -182,5 +182,21 @@ TEST(Voronoi, MergingChangesNothingInGeneralPosition) {
   EXPECT_THROW(merge_cocircular(std::span(pts).first(10), t, after), InputError);
 }
 
+TEST(Voronoi, MergedInOnePassEqualsMergedAfter) {
+  for (const Distribution d : {Distribution::Grid, Distribution::Clusters}) {
+    const std::vector<Point> pts = generate(d, 20000, 6);
+    const Triangulation t = triangulate(pts);
+    Voronoi after = voronoi(pts, t, 2);
+    merge_cocircular(pts, t, after, 2);
+    const Voronoi once = voronoi(pts, t, 2, true);
+    EXPECT_EQ(once.vertices.size(), after.vertices.size());
+    EXPECT_EQ(once.cell_offsets, after.cell_offsets);
+    EXPECT_EQ(once.cell_vertices, after.cell_vertices);
+    ASSERT_EQ(once.ridges.size(), after.ridges.size());
+    for (std::size_t k = 0; k < once.ridges.size(); ++k) EXPECT_TRUE(once.ridges[k].u == after.ridges[k].u && once.ridges[k].v == after.ridges[k].v);
+    if (d == Distribution::Grid) EXPECT_LT(once.vertices.size(), t.size());  // a grid's squares merged
+  }
+}
+
 }  // namespace
 }  // namespace ridt

@@ -57,8 +57,10 @@ struct Voronoi {
 /// The Voronoi diagram of `points` from their triangulation `t` (a result of triangulate on
 /// the same points), on `threads` threads (0: the machine's hardware threads). The combinatorial
 /// structure is exact (it is the triangulation's); the vertices are circumcentres rounded to
-/// double. Throws InputError when `t` does not fit `points`.
-Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads = 1);
+/// double. With `merge`, the diagram proper: as merge_cocircular makes it, the cocircular
+/// neighbours found in the same pass as the circumcentres. Throws InputError when `t` does not
+/// fit `points`.
+Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads = 1, bool merge = false);
 
 /// Makes `vd` (voronoi(points, t)) the diagram proper, as Qhull reports it: where neighbouring
 /// triangles are cocircular (four points on one circle, decided by the exact in-circle test,

@@ -33,6 +33,17 @@ def _check_qhull_options(options: Optional[str]) -> None:
                 f"no tuning options (accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})")
 
 
+def _qhull_flags(options: Optional[str]) -> frozenset:
+    """The options that change what ridt reports, as Qhull's do: Qbb (the paraboloid's lift
+    scaled), Qc (coplanar points listed), Qz (a point at infinity). scipy's default holds all
+    three; options given hold only what they say."""
+    if options is None:
+        return frozenset({"Qbb", "Qc", "Qz"})
+    if isinstance(options, bytes):
+        options = options.decode()
+    return frozenset(options.split()) & {"Qbb", "Qc", "Qz"}
+
+
 def _refuse_masked(points: Any) -> None:
     if np.ma.isMaskedArray(points):
         raise ValueError("Input points cannot be a masked array")
@@ -58,8 +69,10 @@ class Delaunay:
     incremental : bool
         Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
-        Accepted for compatibility when it holds only options that concern Qhull's own
-        robustness (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError.
+        Accepted when it holds only options that concern Qhull's robustness or what it reports
+        (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError. As in Qhull, Qbb
+        scales the paraboloid's lift (paraboloid_scale, paraboloid_shift) and Qc lists the
+        duplicates in coplanar; None means scipy's default, "Qbb Qc Qz Q12".
     method, threads, order, locate, seed, progress
         ridt's own, as in :func:`ridt.triangulate`. ``threads`` (0 or -1: every core) also
         serves ``find_simplex``.
@@ -99,6 +112,7 @@ class Delaunay:
         self._points = _api.as_points(points, "points", "ridt.Delaunay")
         self._threads = _api.thread_count(threads)
         self._options = dict(method=method, order=order, locate=locate, seed=seed, furthest_site=bool(furthest_site))
+        self._qhull = _qhull_flags(qhull_options)
         self._incremental = bool(incremental)
         self._run(progress)
         if self._tri.warning:
@@ -186,6 +200,8 @@ class Delaunay:
     @cached_property
     def coplanar(self) -> np.ndarray:
         d = self._tri.duplicates.view(np.intc)
+        if "Qc" not in self._qhull:  # Qhull lists its coplanar points only when asked
+            d = d[:0]
         out = np.empty((d.shape[0], 3), dtype=np.intc)
         out[:, 0] = d[:, 0]
         out[:, 1] = self.vertex_to_simplex[d[:, 0]]
@@ -207,13 +223,14 @@ class Delaunay:
 
     @cached_property
     def _lift(self) -> Tuple[float, float]:
-        if self.npoints == 0:
+        if self.npoints == 0 or "Qbb" not in self._qhull:
             return 1.0, 0.0
         z = np.einsum("ij,ij->i", self._points, self._points)
         low, high = float(z.min()), float(z.max())
         # Qhull's Qbb: the lifted coordinate scaled to [0, m], m the largest coordinate's size,
-        # over [low, 1.1 high] (Qz's point at infinity sits at 1.1 times the highest lift).
-        span = 1.1 * high - low
+        # over [low, 1.1 high] with Qz (its point at infinity sits at 1.1 times the highest
+        # lift), else over [low, high].
+        span = (1.1 if "Qz" in self._qhull else 1.0) * high - low
         if not span > 0:
             return 1.0, 0.0
         scale = float(np.abs(self._points).max()) / span
@@ -284,13 +301,14 @@ class Delaunay:
         # The triangulation is a function of the points, so the points and options are enough
         # (an unpickled one may list its triangles in another order: a fresh build's).
         return {"points": self._points, "threads": self._threads, "options": self._options,
-                "incremental": self._incremental}
+                "incremental": self._incremental, "qhull": self._qhull}
 
     def __setstate__(self, state: dict) -> None:
         self._points = state["points"]
         self._threads = state["threads"]
         self._options = state["options"]
         self._incremental = state["incremental"]
+        self._qhull = state["qhull"]
         self._run()
 
     def _clear(self) -> None:

@@ -290,8 +290,7 @@ Triangulation alive.
         ridt::Voronoi v;
         {
           py::gil_scoped_release nogil;
-          v = ridt::voronoi(pts, t, threads);
-          ridt::merge_cocircular(pts, t, v, threads);
+          v = ridt::voronoi(pts, t, threads, true);
         }
         const auto r = static_cast<py::ssize_t>(v.ridges.size());
         py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});

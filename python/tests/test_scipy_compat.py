@@ -330,3 +330,16 @@ def test_furthest_site_equals_scipys_in_general_position():
     assert len(vo.regions) == len(vt.regions) and sorted(map(len, vo.regions)) == sorted(map(len, vt.regions))
     inside = np.setdiff1d(np.arange(len(pts)), ours.convex_hull.ravel())
     assert all(vo.regions[vo.point_region[i]] == [] for i in inside)
+
+
+@pytest.mark.parametrize("options", [None, "Qbb", "Qc", "Qbb Qc Qz", "Qt", "Qz Qc"])
+def test_qhull_options_that_change_what_is_reported(options):
+    rng = np.random.default_rng(17)
+    pts = rng.random((40, 2))
+    pts = np.r_[pts, pts[:4]]
+    ours, theirs = ridt.Delaunay(pts, qhull_options=options), scipy.spatial.Delaunay(pts, qhull_options=options)
+    assert ours.coplanar.shape == theirs.coplanar.shape  # Qc lists the duplicates
+    np.testing.assert_allclose([ours.paraboloid_scale, ours.paraboloid_shift],
+                               [theirs.paraboloid_scale, theirs.paraboloid_shift], rtol=1e-12)  # Qbb, Qz
+    v = ridt.Voronoi(pts[:40], qhull_options=options)
+    assert len(v.regions) == len(scipy.spatial.Voronoi(pts[:40], qhull_options=options).regions)  # Qz
