@@ -159,7 +159,7 @@ struct Network {
   // be updated at once on threads: colour c's are by_colour[first[c] .. first[c + 1]).
   std::vector<std::uint32_t> by_colour, first;
 
-  Network(std::span<const Point> points, const Triangulation& t) {
+  Network(std::span<const Point> points, const Triangulation& t, unsigned threads) {
     std::vector<std::uint32_t> id(points.size(), kNone);
     std::vector<VertexId> tri(t.triangles.size());
     for (std::size_t k = 0; k < tri.size(); ++k) {
@@ -187,17 +187,19 @@ struct Network {
     each([&](std::uint32_t v, std::uint32_t w) { to[fill[v]++] = w; });
     inv_l3.resize(to.size());
     q_inverse.resize(count);
-    for (std::size_t v = 0; v < count; ++v) {
-      double q00 = 0, q01 = 0, q11 = 0;
-      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
-        const double ex = at[to[j]].x - at[v].x, ey = at[to[j]].y - at[v].y, l2 = ex * ex + ey * ey;
-        inv_l3[j] = 1 / (l2 * std::sqrt(l2));
-        q00 += 4 * ex * ex * inv_l3[j], q01 += 4 * ex * ey * inv_l3[j], q11 += 4 * ey * ey * inv_l3[j];
+    detail::parallel_for(count, threads, 1 << 14, [&](std::size_t first_v, std::size_t last_v) {
+      for (std::size_t v = first_v; v < last_v; ++v) {
+        double q00 = 0, q01 = 0, q11 = 0;
+        for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
+          const double ex = at[to[j]].x - at[v].x, ey = at[to[j]].y - at[v].y, l2 = ex * ex + ey * ey;
+          inv_l3[j] = 1 / (l2 * std::sqrt(l2));
+          q00 += 4 * ex * ex * inv_l3[j], q01 += 4 * ex * ey * inv_l3[j], q11 += 4 * ey * ey * inv_l3[j];
+        }
+        const double det = q00 * q11 - q01 * q01;
+        q_inverse[v] = det != 0 && std::isfinite(det) ? std::array<double, 3>{q11 / det, -q01 / det, q00 / det}
+                                                      : std::array<double, 3>{NAN, NAN, NAN};
       }
-      const double det = q00 * q11 - q01 * q01;
-      q_inverse[v] = det != 0 && std::isfinite(det) ? std::array<double, 3>{q11 / det, -q01 / det, q00 / det}
-                                                    : std::array<double, 3>{NAN, NAN, NAN};
-    }
+    });
     colour();
   }
 
@@ -241,6 +243,25 @@ struct Network {
     return worst;
   }
 
+  // The start of the sweeps: at each vertex the plane that fits its neighbours' values best,
+  // each edge weighted 1 / L^3 as in Q (exact for linear data, which then need no sweep).
+  // The sweeps reach the same minimum from it as from zero (scipy's start), in fewer sweeps.
+  void start(std::vector<Node>& node, unsigned threads) const {
+    detail::parallel_for(node.size(), threads, 1 << 14, [&](std::size_t first_v, std::size_t last_v) {
+      for (std::size_t v = first_v; v < last_v; ++v) {
+        const std::array<double, 3>& q = q_inverse[v];
+        if (std::isnan(q[0])) continue;
+        double s0 = 0, s1 = 0;
+        for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
+          const double ex = at[to[j]].x - at[v].x, ey = at[to[j]].y - at[v].y;
+          const double r = 4 * (node[to[j]].f - node[v].f) * inv_l3[j];
+          s0 += r * ex, s1 += r * ey;
+        }
+        node[v].gx = q[0] * s0 + q[1] * s1, node[v].gy = q[1] * s0 + q[2] * s1;
+      }
+    });
+  }
+
   double update(std::uint32_t v, std::vector<Node>& node) const {
     const std::array<double, 3>& q = q_inverse[v];
     if (std::isnan(q[0])) return 0;
@@ -277,13 +298,14 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
   if (!(tol > 0)) throw InputError("estimate_gradients: tol must be positive");
   if (maxiter < 1) throw InputError("estimate_gradients: maxiter must be at least 1");
   std::fill(gradients.begin(), gradients.end(), 0.0);
-  const Network net(points, t);
+  const Network net(points, t, threads);
   const std::size_t count = net.order.size();
   std::vector<Node> node(count);
   int most = 0;
   bool converged = true;
   for (std::size_t k = 0; k < m; ++k) {
     for (std::size_t v = 0; v < count; ++v) node[v] = {values.data[net.order[v] * m + k], 0, 0};
+    net.start(node, threads);
     int done = 0;
     for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep)
       if (net.sweep(node, threads) < tol) done = sweep;

@@ -53,6 +53,7 @@ struct IncrementalTriangulation::Mesh {
     std::int32_t outside;
   };
   std::vector<Side> sides;
+  std::vector<std::pair<VertexId, std::uint32_t>> starts;  // (a side's first vertex, the side)
   std::uint32_t turn = 0;
 
   Mesh(std::span<const Point> points, const Options& o) : options(o) {
@@ -139,13 +140,19 @@ struct IncrementalTriangulation::Mesh {
           if (w[j] != e.from && w[j] != e.to) back[j] = static_cast<std::int32_t>(m);
       }
     }
-    // Around p: across from `from` lies the fan triangle of the side that starts at `to`,
-    // across from `to` the one of the side that ends at `from`.
-    for (std::size_t s = 0; s < sides.size(); ++s)
-      for (std::size_t r = 0; r < sides.size(); ++r) {
-        if (sides[r].from == sides[s].to) nb[3 * made[s]] = static_cast<std::int32_t>(made[r]);
-        if (sides[r].to == sides[s].from) nb[3 * made[s] + 1] = static_cast<std::int32_t>(made[r]);
-      }
+    // Around p: across from `from` lies the fan triangle of the next side (the one that starts
+    // at `to`), across from `to` that of the previous one. The sides form one cycle, each
+    // vertex the start of one: found by their starts, sorted (a cavity can be large: a point
+    // far outside a hull of many vertices).
+    starts.clear();
+    for (std::size_t s = 0; s < sides.size(); ++s) starts.emplace_back(sides[s].from, static_cast<std::uint32_t>(s));
+    std::sort(starts.begin(), starts.end());
+    for (std::size_t s = 0; s < sides.size(); ++s) {
+      const auto next = std::lower_bound(starts.begin(), starts.end(), std::pair{sides[s].to, std::uint32_t{0}});
+      const std::uint32_t r = next->second;
+      nb[3 * made[s]] = static_cast<std::int32_t>(made[r]);
+      nb[3 * made[r] + 1] = static_cast<std::int32_t>(made[s]);
+    }
     last = made[0];
     return kNone;
   }

@@ -4,6 +4,7 @@
 // sets, and from a start with no triangle.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -90,6 +91,14 @@ TEST(Incremental, DelaunatorsRobustnessFixturesInThreeBatches) {
     const std::size_t a = pts.size() / 3, b = 2 * pts.size() / 3;
     expect_fresh_after_each(slice(pts, 0, a), {slice(pts, a, b), slice(pts, b, pts.size())});
   }
+}
+
+TEST(Incremental, LargeCavitiesAroundACircle) {
+  // Many cocircular points, then points whose cavities take most of the mesh: the centre, and
+  // points far outside a hull of thousands of vertices.
+  std::vector<Point> circle;
+  for (int k = 0; k < 3000; ++k) circle.push_back({std::cos(k * 0.00209439510239), std::sin(k * 0.00209439510239)});
+  expect_fresh_after_each(circle, {{{0, 0}}, {{1e6, 3}}, {{-1e6, -1e6}, {0.25, 0.5}}});
 }
 
 TEST(Incremental, HugeAndTinyCoordinates) {

@@ -99,8 +99,9 @@ void barycentric_transforms(std::span<const Point> points, std::span<const Verte
 /// values and gradients at its ends define (Nielson's minimum-norm network). Solved by sweeps
 /// over the points, each point's gradient set to the best for its neighbours' (Gauss-Seidel;
 /// the points taken in colour classes of the Delaunay graph, each class on `threads` threads,
-/// the same numbers for any thread count), until a sweep changes no gradient by more than
-/// `tol` (relative to the gradient where it exceeds 1) or after `maxiter` sweeps. `gradients` receives
+/// the same numbers for any thread count), from each point's best-fitting plane through its
+/// neighbours' values, until a sweep changes no gradient by more than `tol` (relative to the
+/// gradient where it exceeds 1) or after `maxiter` sweeps. `gradients` receives
 /// points.size() * values.components * 2 numbers: for point i and component c, d/dx at
 /// 2 (i * components + c) and d/dy after it; a duplicate left out gets its kept point's.
 /// Returns the sweeps made, or 0 when `maxiter` were not enough (the gradients are then those
