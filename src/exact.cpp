@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "predicates.hpp"
+#include "ridt/predicates.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -281,3 +282,11 @@ int incircle_tie(const Point& a, const Point& b, const Point& c, const Point& d)
 }
 
 }  // namespace ridt::detail
+
+namespace ridt {
+
+int orientation(const Point& a, const Point& b, const Point& c) { return detail::orient2d(a, b, c); }
+
+int in_circle(const Point& a, const Point& b, const Point& c, const Point& d) { return detail::incircle(a, b, c, d); }
+
+}  // namespace ridt

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "predicates.hpp"
+#include "ridt/predicates.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -281,6 +282,23 @@ TEST(Lattice, PredicatesAgreeWithTheFilteredOnes) {
       }
   EXPECT_GT(ties, 0);
   EXPECT_GT(collinear, 0);
+}
+
+TEST(PublicPredicates, TheLibrarysSigns) {
+  // A line of exactly representable points, a unit square (cocircular), near-collinear
+  // triples a unit in the last place apart, huge and tiny coordinates.
+  const Point a{0.5, 0.5}, b{12, 12}, c{24, 24};
+  EXPECT_EQ(ridt::orientation(a, b, c), 0);
+  EXPECT_EQ(ridt::orientation(a, b, {24, std::nextafter(24.0, 25.0)}), 1);
+  EXPECT_EQ(ridt::orientation(a, b, {24, std::nextafter(24.0, 23.0)}), -1);
+  EXPECT_EQ(ridt::in_circle({0, 0}, {1, 0}, {1, 1}, {0, 1}), 0);
+  EXPECT_EQ(ridt::in_circle({0, 0}, {1, 0}, {1, 1}, {0.5, 0.5}), 1);
+  EXPECT_EQ(ridt::in_circle({0, 0}, {1, 0}, {1, 1}, {2, 2}), -1);
+  for (const double s : {1e-300, 1e300}) {
+    EXPECT_EQ(ridt::orientation({0, 0}, {s, 0}, {0, s}), 1);
+    EXPECT_EQ(ridt::in_circle({0, 0}, {s, 0}, {s, s}, {0, s}), 0);
+  }
+  EXPECT_EQ(ridt::orientation(a, b, c), orient2d(a, b, c));
 }
 
 }  // namespace

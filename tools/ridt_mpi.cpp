@@ -37,7 +37,7 @@
 
 #include "io.hpp"
 #include "io_common.hpp"
-#include "predicates.hpp"
+#include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace {
@@ -476,7 +476,7 @@ class Buckets {
     auto test = [&](std::size_t cell) {
       for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k) {
         const std::uint32_t i = items_[k];
-        if (want(i) && (q.kind == 2 || ridt::detail::incircle(a, b, t, points_[i]) >= 0)) take(i);
+        if (want(i) && (q.kind == 2 || ridt::in_circle(a, b, t, points_[i]) >= 0)) take(i);
       }
     };
     if (!std::isfinite(c.r)) {
@@ -551,7 +551,7 @@ std::vector<Site> hull_of_sorted(const std::vector<Site>& s) {
   std::size_t k = 0;
   auto at = [&](std::size_t j) { return Point{s[h[j]].x, s[h[j]].y}; };
   auto add = [&](std::size_t i, std::size_t floor) {
-    while (k >= floor && ridt::detail::orient2d(at(k - 2), at(k - 1), {s[i].x, s[i].y}) <= 0) --k;
+    while (k >= floor && ridt::orientation(at(k - 2), at(k - 1), {s[i].x, s[i].y}) <= 0) --k;
     h[k++] = static_cast<std::uint32_t>(i);
   };
   for (std::size_t i = 0; i < s.size(); ++i) add(i, 2);  // the lower chain
@@ -583,7 +583,7 @@ std::vector<std::vector<Point>> gather_hulls(Mpi& mpi, const std::vector<Site>& 
 // Whether some point of a hull lies strictly to the right of the line from a to b.
 bool beyond(const std::vector<Point>& hull, const Point& a, const Point& b) {
   for (const Point& p : hull)
-    if (ridt::detail::orient2d(a, b, p) < 0) return true;
+    if (ridt::orientation(a, b, p) < 0) return true;
   return false;
 }
 
@@ -599,7 +599,7 @@ std::optional<std::uint32_t> across(const std::vector<Point>& s, std::size_t own
   double best_t = INFINITY;
   for (std::size_t i = 0; i < own; ++i) {
     const Point p = s[i];
-    if (ridt::detail::orient2d(a, b, p) >= 0) continue;
+    if (ridt::orientation(a, b, p) >= 0) continue;
     // |p - (m + t n)| = |a - (m + t n)|: t = (|p - m|^2 - half^2) / (2 (p - m) . n), with n unit.
     const double len = std::hypot(nx, ny);
     const double dx = p.x - mx, dy = p.y - my;
@@ -796,7 +796,7 @@ int run(Mpi& mpi, const Args& a) {
           // And this rank's hull vertices beyond: along a nearly straight stretch of the hull,
           // neighbour after neighbour would otherwise take a round each.
           for (const std::uint32_t h : my_hull)
-            if (ridt::detail::orient2d({q.a, q.b}, {q.c, q.d}, known.points[h]) < 0) picked.push_back(h);
+            if (ridt::orientation({q.a, q.b}, {q.c, q.d}, known.points[h]) < 0) picked.push_back(h);
         } else {
           if (q.kind == 0) buckets->each(q, take, wanted);
           else buckets->each(q, take, [](std::uint32_t) { return true; });
