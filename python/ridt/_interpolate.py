@@ -190,6 +190,17 @@ def _coordinates(points: Any, who: str) -> np.ndarray:
     return _api.as_points(points, "points", who)
 
 
+def _rescaled(pts: np.ndarray, rescale: bool) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """scipy's rescale: the points centred and scaled by their extent on each axis (an axis of
+    no extent left unscaled); the points, the offset and the scale."""
+    if not rescale:
+        return pts, np.zeros(2), np.ones(2)
+    offset = pts.mean(axis=0)
+    ptp = np.ptp(pts, axis=0)
+    scale = np.where(ptp > 0, ptp, 1.0)
+    return np.ascontiguousarray((pts - offset) / scale), offset, scale
+
+
 def _as_values(values: Any, n: int, who: str) -> Tuple[np.ndarray, Tuple[int, ...], bool]:
     """values as float64 (n, k) in C order, the trailing shape, and whether they were complex."""
     v = np.asarray(values)
@@ -280,15 +291,8 @@ class _TriangulationInterpolator:
         else:
             pts = _coordinates(points, who)
             self.tri = None
-        self._offset = np.zeros(2)
-        self._scale = np.ones(2)
         self._rescaled = bool(rescale)
-        if rescale:
-            self._offset = pts.mean(axis=0)
-            ptp = np.ptp(pts, axis=0)
-            self._scale = np.where(ptp > 0, ptp, 1.0)
-            pts = np.ascontiguousarray((pts - self._offset) / self._scale)
-            self.tri = None
+        pts, self._offset, self._scale = _rescaled(pts, self._rescaled)
         if self.tri is None:
             self.tri = Delaunay(pts, threads=self._threads)
         self.points = pts
@@ -436,14 +440,9 @@ class NearestNDInterpolator:
         if self.values.ndim == 0 or self.values.shape[0] != pts.shape[0]:
             raise ValueError(f"{who}: values must have {pts.shape[0]} rows, one a point; got shape {self.values.shape}")
         self._threads = _api.thread_count(threads)
-        self._offset, self._scale = np.zeros(2), np.ones(2)
-        if rescale:
-            self._offset = pts.mean(axis=0)
-            ptp = np.ptp(pts, axis=0)
-            self._scale = np.where(ptp > 0, ptp, 1.0)
-            pts = np.ascontiguousarray((pts - self._offset) / self._scale)
-        self.points = pts
         self._rescaled = bool(rescale)
+        pts, self._offset, self._scale = _rescaled(pts, self._rescaled)
+        self.points = pts
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", DegenerateInputWarning)
             self.tri = Delaunay(pts, threads=self._threads)
