@@ -1,7 +1,9 @@
-// What the benchmarks share: the median they quote and their comma-separated arguments.
+// What the benchmarks share: the median they quote, their numbers' format and their
+// comma-separated arguments.
 #pragma once
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +14,13 @@ namespace ridt::bench {
 inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0 : v[v.size() / 2];
+}
+
+/// v printed with a printf format for one double ("%.4f").
+inline std::string format(const char* fmt, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
 }
 
 /// "a,b,c" -> {"a", "b", "c"}.

@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "common.hpp"
-#include "generate.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/ridt.hpp"
 
 #ifdef RIDT_WITH_CGAL
@@ -58,9 +58,7 @@ using ridt::bench::median;
 using ridt::bench::split;
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 #ifdef RIDT_WITH_CGAL
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -72,17 +70,16 @@ struct Input {
 #ifdef RIDT_WITH_CGAL
   std::vector<K::Point_2> cgal;
 #endif
-  std::vector<double> flat; // x0, y0, x1, y1, ...
+  std::vector<double> flat;  // x0, y0, x1, y1, ...
 };
 
 struct Code {
   std::string name;
   // Triangulates once; returns seconds and the number of triangles.
-  std::function<std::pair<double, std::size_t>(const Input &)> run;
+  std::function<std::pair<double, std::size_t>(const Input&)> run;
 };
 
-ridt::Options ridt_options(ridt::Method m, ridt::Order order,
-                           ridt::Locate locate, unsigned threads) {
+ridt::Options ridt_options(ridt::Method m, ridt::Order order, ridt::Locate locate, unsigned threads) {
   ridt::Options o;
   o.method = m;
   o.order = order;
@@ -95,7 +92,7 @@ ridt::Options ridt_options(ridt::Method m, ridt::Order order,
 std::vector<Code> codes(std::uint32_t n) {
   std::vector<Code> c;
   auto ridt_code = [](std::string name, ridt::Options o) {
-    return Code{std::move(name), [o](const Input &in) {
+    return Code{std::move(name), [o](const Input& in) {
                   const ridt::Triangulation t = ridt::triangulate(in.points, o);
                   return std::pair{t.stats.time_triangulate_s, t.size()};
                 }};
@@ -104,69 +101,54 @@ std::vector<Code> codes(std::uint32_t n) {
   // The paper's random order costs some 3 s a million points here: left out
   // above 10^6.
   if (n <= 1000000)
-    c.push_back(
-        ridt_code("ridt random dag",
-                  ridt_options(Method::Serial, Order::Random, Locate::Dag, 1)));
-  c.push_back(
-      ridt_code("ridt brio dag",
-                ridt_options(Method::Serial, Order::Brio, Locate::Dag, 1)));
-  c.push_back(
-      ridt_code("ridt brio walk",
-                ridt_options(Method::Serial, Order::Brio, Locate::Walk, 1)));
-  c.push_back(
-      ridt_code("ridt optimistic 2",
-                ridt_options(Method::Optimistic, Order::Brio, Locate::Dag, 2)));
-  c.push_back(ridt_code("ridt batch 2", ridt_options(Method::Batch, Order::Brio,
-                                                     Locate::Dag, 2)));
-  c.push_back(ridt_code("ridt partition 2", ridt_options(Method::Partition, Order::Brio,
-                                                         Locate::Walk, 2)));
+    c.push_back(ridt_code("ridt random dag", ridt_options(Method::Serial, Order::Random, Locate::Dag, 1)));
+  c.push_back(ridt_code("ridt brio dag", ridt_options(Method::Serial, Order::Brio, Locate::Dag, 1)));
+  c.push_back(ridt_code("ridt brio walk", ridt_options(Method::Serial, Order::Brio, Locate::Walk, 1)));
+  c.push_back(ridt_code("ridt optimistic 2", ridt_options(Method::Optimistic, Order::Brio, Locate::Dag, 2)));
+  c.push_back(ridt_code("ridt batch 2", ridt_options(Method::Batch, Order::Brio, Locate::Dag, 2)));
+  c.push_back(ridt_code("ridt partition 2", ridt_options(Method::Partition, Order::Brio, Locate::Walk, 2)));
 #ifdef RIDT_WITH_CGAL
-  c.push_back(
-      {"CGAL", [](const Input &in) {
-         const auto t0 = Clock::now();
-         CGAL::Delaunay_triangulation_2<K> dt;
-         dt.insert(in.cgal.begin(), in.cgal.end());
-         const double s = since(t0);
-         return std::pair{s, static_cast<std::size_t>(dt.number_of_faces())};
-       }});
+  c.push_back({"CGAL", [](const Input& in) {
+                 const auto t0 = Clock::now();
+                 CGAL::Delaunay_triangulation_2<K> dt;
+                 dt.insert(in.cgal.begin(), in.cgal.end());
+                 const double s = since(t0);
+                 return std::pair{s, static_cast<std::size_t>(dt.number_of_faces())};
+               }});
 #endif
 #ifdef RIDT_WITH_QHULL
   // Some 9 s a million points here: left out above 10^6 too.
   if (n <= 1000000)
-    c.push_back({"Qhull", [](const Input &in) {
-                   std::vector<double> xy =
-                       in.flat; // qhull takes a non-const array
+    c.push_back({"Qhull", [](const Input& in) {
+                   std::vector<double> xy = in.flat;  // qhull takes a non-const array
                    const auto t0 = Clock::now();
                    qhT qh_storage;
-                   qhT *qh = &qh_storage;
+                   qhT* qh = &qh_storage;
                    QHULL_LIB_CHECK
                    qh_zero(qh, stderr);
                    char options[] = "qhull d Qt Qbb Qc Qz Q12";
                    const int code =
-                       qh_new_qhull(qh, 2, static_cast<int>(xy.size() / 2),
-                                    xy.data(), False, options, nullptr, stderr);
+                       qh_new_qhull(qh, 2, static_cast<int>(xy.size() / 2), xy.data(), False, options, nullptr, stderr);
                    std::size_t triangles = 0;
                    if (code == 0) {
-                     facetT *facet;
+                     facetT* facet;
                      FORALLfacets {
-                       if (!facet->upperdelaunay)
-                         ++triangles;
+                       if (!facet->upperdelaunay) ++triangles;
                      }
                    }
                    qh_freeqhull(qh, !qh_ALL);
                    int curlong, totlong;
                    qh_memfreeshort(qh, &curlong, &totlong);
                    const double s = since(t0);
-                   if (code != 0)
-                     std::abort();
+                   if (code != 0) std::abort();
                    return std::pair{s, triangles};
                  }});
 #endif
 #ifdef RIDT_WITH_TRIANGLE
   // Switches: z (ids from 0), Q (quiet), N (no copy of the points out), B (no
   // boundary markers), n (each triangle's neighbours, as ridt gives them).
-  c.push_back({"Triangle", [](const Input &in) {
-                 std::vector<double> xy = in.flat; // Triangle takes a non-const array
+  c.push_back({"Triangle", [](const Input& in) {
+                 std::vector<double> xy = in.flat;  // Triangle takes a non-const array
                  const auto t0 = Clock::now();
                  triangulateio pts{}, out{};
                  pts.pointlist = xy.data();
@@ -183,11 +165,10 @@ std::vector<Code> codes(std::uint32_t n) {
 }
 
 // A figure of /proc/self/status, in bytes (it gives kilobytes).
-double status_bytes(const char *key) {
+double status_bytes(const char* key) {
   std::ifstream f("/proc/self/status");
   for (std::string line; std::getline(f, line);)
-    if (line.rfind(key, 0) == 0)
-      return std::stod(line.substr(std::strlen(key))) * 1024;
+    if (line.rfind(key, 0) == 0) return std::stod(line.substr(std::strlen(key))) * 1024;
   return -1;
 }
 
@@ -195,11 +176,9 @@ Input make_input(ridt::Distribution dist, std::uint32_t n) {
   Input in;
   in.points = ridt::generate(dist, n, 1);
 #ifdef RIDT_WITH_CGAL
-  for (const auto &p : in.points)
-    in.cgal.emplace_back(p.x, p.y);
+  for (const auto& p : in.points) in.cgal.emplace_back(p.x, p.y);
 #endif
-  for (const auto &p : in.points)
-    in.flat.push_back(p.x), in.flat.push_back(p.y);
+  for (const auto& p : in.points) in.flat.push_back(p.x), in.flat.push_back(p.y);
   return in;
 }
 
@@ -210,7 +189,7 @@ int measure(std::size_t c, ridt::Distribution dist, std::uint32_t n) {
   const Input in = make_input(dist, n);
   const Code code = codes(n).at(c);
   // The peak is reset to what is resident now (Linux 4.0 and later).
-  if (FILE *f = std::fopen("/proc/self/clear_refs", "w")) {
+  if (FILE* f = std::fopen("/proc/self/clear_refs", "w")) {
     std::fputs("5", f);
     std::fclose(f);
   }
@@ -220,14 +199,12 @@ int measure(std::size_t c, ridt::Distribution dist, std::uint32_t n) {
   return 0;
 }
 
-double added_bytes(std::size_t c, const std::string &dist, std::uint32_t n) {
-  const std::string cmd = "/proc/" + std::to_string(getpid()) +
-                          "/exe --measure " + std::to_string(c) + " " + dist +
-                          " " + std::to_string(n);
+double added_bytes(std::size_t c, const std::string& dist, std::uint32_t n) {
+  const std::string cmd = "/proc/" + std::to_string(getpid()) + "/exe --measure " + std::to_string(c) + " " + dist +
+      " " + std::to_string(n);
   double added = -1;
-  if (FILE *p = popen(cmd.c_str(), "r")) {
-    if (std::fscanf(p, "%lf", &added) != 1)
-      added = -1;
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    if (std::fscanf(p, "%lf", &added) != 1) added = -1;
     pclose(p);
   }
   return added;
@@ -241,67 +218,54 @@ struct Delaunator {
 
 // delaunator through node, on the same points written to a file; empty when
 // node or the module is missing.
-Delaunator run_delaunator(const std::string &modules,
-                          const std::vector<ridt::Point> &pts, int reps) {
+Delaunator run_delaunator(const std::string& modules, const std::vector<ridt::Point>& pts, int reps) {
   Delaunator d;
-  if (modules.empty())
-    return d;
-  const std::string file =
-      "/tmp/ridt_bench_peers_" + std::to_string(getpid()) + ".bin";
+  if (modules.empty()) return d;
+  const std::string file = "/tmp/ridt_bench_peers_" + std::to_string(getpid()) + ".bin";
   {
     std::ofstream f(file, std::ios::binary);
-    f.write(reinterpret_cast<const char *>(pts.data()),
-            static_cast<std::streamsize>(pts.size() * sizeof(ridt::Point)));
+    f.write(reinterpret_cast<const char*>(pts.data()), static_cast<std::streamsize>(pts.size() * sizeof(ridt::Point)));
   }
-  const std::string script =
-      std::string(RIDT_SOURCE_DIR) + "/bench/delaunator.mjs";
-  const std::string cmd = "node '" + script + "' '" + file + "' " +
-                          std::to_string(reps) + " '" + modules + "'";
+  const std::string script = std::string(RIDT_SOURCE_DIR) + "/bench/delaunator.mjs";
+  const std::string cmd = "node '" + script + "' '" + file + "' " + std::to_string(reps) + " '" + modules + "'";
   std::string out;
-  if (FILE *p = popen(cmd.c_str(), "r")) {
+  if (FILE* p = popen(cmd.c_str(), "r")) {
     char buf[4096];
-    while (std::fgets(buf, sizeof buf, p))
-      out += buf;
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
     pclose(p);
   }
   std::remove(file.c_str());
   // {"times":[a,b,...],"triangles":N,"extra_rss_bytes":M}
   const auto times_at = out.find("[");
   const auto times_end = out.find("]");
-  if (times_at == std::string::npos || times_end == std::string::npos)
-    return d;
+  if (times_at == std::string::npos || times_end == std::string::npos) return d;
   std::stringstream list(out.substr(times_at + 1, times_end - times_at - 1));
-  for (std::string item; std::getline(list, item, ',');)
-    d.times.push_back(std::stod(item));
+  for (std::string item; std::getline(list, item, ',');) d.times.push_back(std::stod(item));
   const auto tri = out.find("\"triangles\":");
   const auto mem = out.find("\"extra_rss_bytes\":");
-  if (tri != std::string::npos)
-    d.triangles = std::stoull(out.substr(tri + 12));
-  if (mem != std::string::npos)
-    d.extra = std::stod(out.substr(mem + 18));
+  if (tri != std::string::npos) d.triangles = std::stoull(out.substr(tri + 12));
+  if (mem != std::string::npos) d.extra = std::stod(out.substr(mem + 18));
   return d;
 }
 
-} // namespace
+}  // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   std::vector<std::uint32_t> sizes = {10000, 100000, 1000000};
   std::vector<std::string> dists = {"uniform", "normal", "grid", "clusters"};
   int reps = 5;
   std::string csv, modules;
   bool check = false;
   int disagreements = 0;
-  if (const char *m = std::getenv("RIDT_NODE_MODULES"))
-    modules = m;
+  if (const char* m = std::getenv("RIDT_NODE_MODULES")) modules = m;
   if (argc == 5 && std::string(argv[1]) == "--measure")
-    return measure(std::stoul(argv[2]), *ridt::parse_distribution(argv[3]),
+    return measure(std::stoul(argv[2]), ridt::parse<ridt::Distribution>(argv[3]),
                    static_cast<std::uint32_t>(std::stoul(argv[4])));
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--sizes" && i + 1 < argc) {
       sizes.clear();
-      for (const auto &s : split(argv[++i]))
-        sizes.push_back(static_cast<std::uint32_t>(std::stoul(s)));
+      for (const auto& s : split(argv[++i])) sizes.push_back(static_cast<std::uint32_t>(std::stoul(s)));
     } else if (a == "--dists" && i + 1 < argc) {
       dists = split(argv[++i]);
     } else if (a == "--reps" && i + 1 < argc) {
@@ -321,31 +285,26 @@ int main(int argc, char **argv) {
       return 2;
     }
   }
-  if (!modules.empty() && std::system("node --version > /dev/null 2>&1") != 0)
-    modules.clear();
-  FILE *out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
+  if (!modules.empty() && std::system("node --version > /dev/null 2>&1") != 0) modules.clear();
+  FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
   if (out)
-    std::fprintf(out, "distribution,n,code,median_s,ratio_to_cgal,added_bytes_"
-                      "per_point,triangles\n");
-  std::printf("Medians of %d runs [s]; ratio = time / CGAL's; B/pt = peak "
-              "memory a run adds, per point\n",
-              reps);
+    std::fprintf(out,
+                 "distribution,n,code,median_s,ratio_to_cgal,added_bytes_"
+                 "per_point,triangles\n");
+  std::printf(
+      "Medians of %d runs [s]; ratio = time / CGAL's; B/pt = peak "
+      "memory a run adds, per point\n",
+      reps);
   std::mt19937 shuffle(12345);
-  for (const std::string &dist_name : dists) {
-    const std::optional<ridt::Distribution> dist =
-        ridt::parse_distribution(dist_name);
-    if (!dist) {
-      std::fprintf(stderr, "unknown distribution %s\n", dist_name.c_str());
-      return 2;
-    }
+  for (const std::string& dist_name : dists) {
+    const std::optional<ridt::Distribution> dist = ridt::parse<ridt::Distribution>(dist_name);
     for (const std::uint32_t n : sizes) {
       const Input in = make_input(*dist, n);
       const std::vector<Code> list = codes(n);
       std::vector<std::vector<double>> times(list.size());
       std::vector<std::size_t> triangles(list.size());
       std::vector<std::size_t> order(list.size());
-      for (std::size_t i = 0; i < order.size(); ++i)
-        order[i] = i;
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
       for (int r = 0; r < reps; ++r) {
         std::shuffle(order.begin(), order.end(), shuffle);
         for (const std::size_t c : order) {
@@ -355,47 +314,37 @@ int main(int argc, char **argv) {
         }
       }
       std::vector<double> added(list.size());
-      for (std::size_t c = 0; c < list.size(); ++c)
-        added[c] = added_bytes(c, dist_name, n);
+      for (std::size_t c = 0; c < list.size(); ++c) added[c] = added_bytes(c, dist_name, n);
       const Delaunator d = run_delaunator(modules, in.points, reps);
 
       double cgal = 0;
       for (std::size_t c = 0; c < list.size(); ++c)
-        if (list[c].name == "CGAL")
-          cgal = median(times[c]);
-      std::printf("\n%s, n = %u\n%-20s %10s %8s %8s %10s\n", dist_name.c_str(),
-                  n, "code", "median_s", "ratio", "B/pt", "triangles");
-      auto row = [&](const std::string &name, double t, double bytes,
-                     std::size_t tris) {
+        if (list[c].name == "CGAL") cgal = median(times[c]);
+      std::printf("\n%s, n = %u\n%-20s %10s %8s %8s %10s\n", dist_name.c_str(), n, "code", "median_s", "ratio", "B/pt",
+                  "triangles");
+      auto row = [&](const std::string& name, double t, double bytes, std::size_t tris) {
         const double ratio = cgal > 0 ? t / cgal : 0;
-        std::printf("%-20s %10.4f %8.3f %8.0f %10zu\n", name.c_str(), t, ratio,
-                    bytes / n, tris);
+        std::printf("%-20s %10.4f %8.3f %8.0f %10zu\n", name.c_str(), t, ratio, bytes / n, tris);
         if (out)
-          std::fprintf(out, "%s,%u,%s,%.6f,%.4f,%.1f,%zu\n", dist_name.c_str(),
-                       n, name.c_str(), t, ratio, bytes / n, tris);
+          std::fprintf(out, "%s,%u,%s,%.6f,%.4f,%.1f,%zu\n", dist_name.c_str(), n, name.c_str(), t, ratio, bytes / n,
+                       tris);
       };
-      for (std::size_t c = 0; c < list.size(); ++c)
-        row(list[c].name, median(times[c]), added[c], triangles[c]);
-      if (!d.times.empty())
-        row("delaunator (node)", median(d.times), d.extra, d.triangles);
+      for (std::size_t c = 0; c < list.size(); ++c) row(list[c].name, median(times[c]), added[c], triangles[c]);
+      if (!d.times.empty()) row("delaunator (node)", median(d.times), d.extra, d.triangles);
       if (check) {
         std::vector<std::pair<std::string, std::size_t>> counts;
-        for (std::size_t c = 0; c < list.size(); ++c)
-          counts.emplace_back(list[c].name, triangles[c]);
-        if (!d.times.empty())
-          counts.emplace_back("delaunator (node)", d.triangles);
-        for (const auto &[name, count] : counts)
+        for (std::size_t c = 0; c < list.size(); ++c) counts.emplace_back(list[c].name, triangles[c]);
+        if (!d.times.empty()) counts.emplace_back("delaunator (node)", d.triangles);
+        for (const auto& [name, count] : counts)
           if (count != counts.front().second) {
-            std::fprintf(stderr, "%s, n = %u: %s gave %zu triangles, %s %zu\n",
-                         dist_name.c_str(), n, name.c_str(), count,
-                         counts.front().first.c_str(), counts.front().second);
+            std::fprintf(stderr, "%s, n = %u: %s gave %zu triangles, %s %zu\n", dist_name.c_str(), n, name.c_str(),
+                         count, counts.front().first.c_str(), counts.front().second);
             ++disagreements;
           }
       }
       std::fflush(stdout);
     }
   }
-  if (out)
-    std::fclose(out);
+  if (out) std::fclose(out);
   return disagreements > 0 ? 1 : 0;
 }

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "common.hpp"
-#include "generate.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/ridt.hpp"
 
 #ifdef RIDT_WITH_CGAL
@@ -54,8 +54,8 @@ int main(int argc, char** argv) {
   int reps = 5;
   std::string csv;
   std::vector<std::uint32_t> sizes = {100, 500, 1000, 5000, 10000, 50000, 100000, 500000, 1000000};
-  const ridt::Distribution dists[] = {ridt::Distribution::Uniform, ridt::Distribution::Normal,
-                                      ridt::Distribution::Grid, ridt::Distribution::Clusters};
+  const ridt::Distribution dists[] = {ridt::Distribution::Uniform, ridt::Distribution::Normal, ridt::Distribution::Grid,
+                                      ridt::Distribution::Clusters};
   bool wanted[4] = {true, true, true, true};
   bool usage = false;
   for (int i = 1; i < argc && !usage; ++i) {
@@ -67,9 +67,7 @@ int main(int argc, char** argv) {
     } else if (!std::strcmp(argv[i], "--dists") && i + 1 < argc) {
       std::fill(std::begin(wanted), std::end(wanted), false);
       for (const std::string& name : split(argv[++i])) {
-        const auto d = ridt::parse_distribution(name);
-        if (!d) usage = true;
-        else wanted[static_cast<int>(*d)] = true;
+        wanted[static_cast<int>(ridt::parse<ridt::Distribution>(name))] = true;
       }
     } else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) {
       reps = std::atoi(argv[++i]);
@@ -80,7 +78,10 @@ int main(int argc, char** argv) {
     }
   }
   if (usage || reps < 1) {
-    std::fprintf(stderr, "usage: %s [--max-n N] [--sizes N,N,...] [--dists uniform,normal,grid,clusters] [--reps R] [--csv FILE]\n", argv[0]);
+    std::fprintf(
+        stderr,
+        "usage: %s [--max-n N] [--sizes N,N,...] [--dists uniform,normal,grid,clusters] [--reps R] [--csv FILE]\n",
+        argv[0]);
     return 2;
   }
   FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
@@ -88,9 +89,12 @@ int main(int argc, char** argv) {
 
   std::printf("Table 1: serial times [s], median of %d runs, ridt random order vs CGAL range insert\n", reps);
   std::printf("%9s", "n");
-  for (auto d : dists) std::printf(" | %-8s %8s %6s", ridt::to_string(d), "CGAL", "ratio");
+  for (auto d : dists) std::printf(" | %-8s %8s %6s", ridt::to_string(d).data(), "CGAL", "ratio");
   std::printf("\n");
-  struct Share { std::uint32_t n; double loc, split, leg; };
+  struct Share {
+    std::uint32_t n;
+    double loc, split, leg;
+  };
   std::vector<Share> fig8;
   for (std::uint32_t n : sizes) {
     if (n > max_n) continue;
@@ -120,7 +124,7 @@ int main(int argc, char** argv) {
       std::fflush(stdout);
       if (d == ridt::Distribution::Uniform) fig8.push_back({n, median(loc), median(split), median(leg)});
       if (out)
-        std::fprintf(out, "%s,%u,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f\n", ridt::to_string(d), n, a, b,
+        std::fprintf(out, "%s,%u,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f\n", ridt::to_string(d).data(), n, a, b,
                      b > 0 ? a / b : 0.0, median(loc), median(split), median(leg));
     }
     std::printf("\n");

@@ -33,14 +33,14 @@ namespace io = ridt::io;
 
 bool same_bits(const Point& a, const Point& b) {
   return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
-         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
+      std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
 }
 
 // A private folder for the round trips, removed at exit.
 const std::filesystem::path& scratch_dir() {
   static const std::filesystem::path dir = [] {
-    std::filesystem::path d = std::filesystem::temp_directory_path() /
-                              ("ridt-fuzz-readers-" + std::to_string(::getpid()));
+    std::filesystem::path d =
+        std::filesystem::temp_directory_path() / ("ridt-fuzz-readers-" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
     std::atexit([] {
       std::error_code ec;
@@ -69,8 +69,7 @@ void points(std::string_view data, const char* name) {
       finding(std::string("round trip through ") + format + " changed the count");
     for (std::size_t i = 0; i < back.points.size(); ++i)
       if (!same_bits(back.points[i], file.points[i]))
-        finding(std::string("round trip through ") + format + " changed point " +
-                std::to_string(i));
+        finding(std::string("round trip through ") + format + " changed point " + std::to_string(i));
   }
 }
 
@@ -84,7 +83,7 @@ void triangles(std::string_view data, const char* name, int first_index) {
   if (tris.size() % 3 != 0) finding("a triangle file gave a partial triangle");
   // The validator takes any triangle list: out-of-range indices, repeated and flipped
   // triangles, against points with a duplicate and three on a line.
-  static const std::vector<Point> points = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {0.5, 0.5},
+  static const std::vector<Point> points = {{0, 0}, {1, 0}, {0, 1}, {1, 1},      {0.5, 0.5},
                                             {2, 2}, {0, 0}, {3, 0}, {0.25, 0.75}};
   const ridt::CheckResult verdict = ridt::check(points, tris);
   if (verdict.valid != (verdict.problems == 0) || verdict.message.empty())
@@ -97,13 +96,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   if (size == 0) return 0;
   const std::string_view data(reinterpret_cast<const char*>(bytes) + 1, size - 1);
   switch (bytes[0] % 7) {
-    case 0: points(data, "in.txt"); break;
-    case 1: points(data, "in.node"); break;
-    case 2: points(data, "in.bin"); break;
-    case 3: triangles(data, "in.ele", 0); break;
-    case 4: triangles(data, "in.ele", 1); break;
-    case 5: triangles(data, "in.txt", 1); break;
-    case 6: triangles(data, "in.bin", 0); break;
+    case 0:
+      points(data, "in.txt");
+      break;
+    case 1:
+      points(data, "in.node");
+      break;
+    case 2:
+      points(data, "in.bin");
+      break;
+    case 3:
+      triangles(data, "in.ele", 0);
+      break;
+    case 4:
+      triangles(data, "in.ele", 1);
+      break;
+    case 5:
+      triangles(data, "in.txt", 1);
+      break;
+    case 6:
+      triangles(data, "in.bin", 0);
+      break;
   }
   return 0;
 }

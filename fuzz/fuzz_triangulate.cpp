@@ -29,25 +29,31 @@ using namespace ridt;
 }
 
 // Small integers, halves, thirds and values a few units in the last place from them.
-constexpr double kValues[16] = {-3, -2, -1, 0, 1, 2, 3, 4,
-                                0.5, -0.5, 1.0 / 3, 2.0 / 3,
-                                1 + 0x1p-52, 2 - 0x1p-51, 0x1p-30, -1 - 0x1p-52};
+constexpr double kValues[16] = {-3,  -2,   -1,      0,       1,           2,           3,       4,
+                                0.5, -0.5, 1.0 / 3, 2.0 / 3, 1 + 0x1p-52, 2 - 0x1p-51, 0x1p-30, -1 - 0x1p-52};
 
 // The transformation `kind` (bytes[0] % 8) of a point.
 Point transform(int kind, Point p) {
   switch (kind) {
-    case 1: return {p.x * 1e-300, p.y * 1e-300};      // tiny: products underflow
-    case 2: return {p.x * 1e300, p.y * 1e300};        // huge: squares overflow
-    case 3: return {p.x + 1e15, p.y + 1e15};          // few bits left for the fraction
-    case 4: return {std::floor(p.x) + 0x1p53 - 8,     // integers near 2^53
-                    std::floor(p.y) + 0x1p53 - 8};
-    case 5: return {p.x * 0x1p-1060, p.y * 0x1p-1060};  // subnormal differences
-    case 6: return {p.x * 0x1p1000, p.y * 0x1p1000};    // near the top of the range
-    case 7: {                                           // a small rotation, rounded
+    case 1:
+      return {p.x * 1e-300, p.y * 1e-300};  // tiny: products underflow
+    case 2:
+      return {p.x * 1e300, p.y * 1e300};  // huge: squares overflow
+    case 3:
+      return {p.x + 1e15, p.y + 1e15};  // few bits left for the fraction
+    case 4:
+      return {std::floor(p.x) + 0x1p53 - 8,  // integers near 2^53
+              std::floor(p.y) + 0x1p53 - 8};
+    case 5:
+      return {p.x * 0x1p-1060, p.y * 0x1p-1060};  // subnormal differences
+    case 6:
+      return {p.x * 0x1p1000, p.y * 0x1p1000};  // near the top of the range
+    case 7: {  // a small rotation, rounded
       const double c = std::cos(1e-3), s = std::sin(1e-3);
       return {c * p.x - s * p.y, s * p.x + c * p.y};
     }
-    default: return p;
+    default:
+      return p;
   }
 }
 
@@ -76,8 +82,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   if (size == 0 || size > 4097) return 0;
   const std::vector<Point> pts = points_of(bytes, size);
   // A different order for each length.
-  if (const std::string problem = test::audit_every_mode(pts, modes(), size); !problem.empty())
-    finding(problem);
+  if (const std::string problem = test::audit_every_mode(pts, modes(), size); !problem.empty()) finding(problem);
   // The paper's finite bounding triangle: right, or it says that it lost hull edges.
   Options finite;
   finite.experiment.bounding = Bounding::Finite;

@@ -39,7 +39,7 @@
 #include <utility>
 #include <vector>
 
-#include "random.hpp"
+#include "order/random.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
 
@@ -51,9 +51,7 @@ extern "C" void __sanitizer_set_death_callback(void (*callback)()) __attribute__
 // options still apply on top): every report is a finding, and it ends in abort(), which the
 // SIGABRT handler below turns into a saved input.
 extern "C" const char* __asan_default_options() { return "abort_on_error=1"; }
-extern "C" const char* __ubsan_default_options() {
-  return "halt_on_error=1:abort_on_error=1:print_stacktrace=1";
-}
+extern "C" const char* __ubsan_default_options() { return "halt_on_error=1:abort_on_error=1:print_stacktrace=1"; }
 
 namespace {
 
@@ -197,23 +195,39 @@ std::vector<Bytes> read_dictionary(const std::string& path) {
 // --- mutations -------------------------------------------------------------------------------
 
 // Numbers at the limits of the types a reader converts to, and text a number may become.
-constexpr std::string_view kNumbers[] = {
-    "0",          "-0",         "1",          "-1",
-    "2147483647", "-2147483648", "4294967295", "4294967296",
-    "9223372036854775807", "-9223372036854775808", "9223372036854775808",
-    "18446744073709551615", "18446744073709551616", "1e308", "-1e309", "4.9e-324",
-    "2.2250738585072014e-308", "nan", "inf", "-inf", "0x10", "1e", "+", "-"};
+constexpr std::string_view kNumbers[] = {"0",
+                                         "-0",
+                                         "1",
+                                         "-1",
+                                         "2147483647",
+                                         "-2147483648",
+                                         "4294967295",
+                                         "4294967296",
+                                         "9223372036854775807",
+                                         "-9223372036854775808",
+                                         "9223372036854775808",
+                                         "18446744073709551615",
+                                         "18446744073709551616",
+                                         "1e308",
+                                         "-1e309",
+                                         "4.9e-324",
+                                         "2.2250738585072014e-308",
+                                         "nan",
+                                         "inf",
+                                         "-inf",
+                                         "0x10",
+                                         "1e",
+                                         "+",
+                                         "-"};
 
 // Bytes at the edges of their classes: control, space, digits, signs, punctuation, high bit.
-constexpr unsigned char kBytes[] = {0x00, 0x01, 0x09, 0x0a, 0x0d, 0x20, '#', '+', ',', '-',
+constexpr unsigned char kBytes[] = {0x00, 0x01, 0x09, 0x0a, 0x0d, 0x20, '#',  '+',  ',',  '-',
                                     '.',  '0',  '1',  '9',  'e',  'x',  0x7f, 0x80, 0xef, 0xff};
 
 class Mutator {
  public:
-  Mutator(std::vector<Bytes> corpus, std::vector<Bytes> dictionary, std::size_t max_len,
-          std::uint64_t seed)
-      : corpus_(std::move(corpus)), dictionary_(std::move(dictionary)), max_len_(max_len),
-        seed_(seed) {}
+  Mutator(std::vector<Bytes> corpus, std::vector<Bytes> dictionary, std::size_t max_len, std::uint64_t seed)
+      : corpus_(std::move(corpus)), dictionary_(std::move(dictionary)), max_len_(max_len), seed_(seed) {}
 
   const std::vector<Bytes>& corpus() const { return corpus_; }
 
@@ -229,9 +243,7 @@ class Mutator {
   }
 
  private:
-  static std::size_t pick(ridt::detail::Rng& rng, std::size_t n) {
-    return static_cast<std::size_t>(rng.below(n));
-  }
+  static std::size_t pick(ridt::detail::Rng& rng, std::size_t n) { return static_cast<std::size_t>(rng.below(n)); }
 
   void mutate(Bytes& b, ridt::detail::Rng& rng) const {
     switch (rng.below(9)) {
@@ -242,8 +254,7 @@ class Mutator {
         if (!b.empty()) b[pick(rng, b.size())] = static_cast<char>(rng.below(256));
         break;
       case 2:  // a byte at the edge of its class
-        if (!b.empty())
-          b[pick(rng, b.size())] = static_cast<char>(kBytes[pick(rng, std::size(kBytes))]);
+        if (!b.empty()) b[pick(rng, b.size())] = static_cast<char>(kBytes[pick(rng, std::size(kBytes))]);
         break;
       case 3:  // erase a stretch
         if (!b.empty()) {
@@ -272,8 +283,7 @@ class Mutator {
         break;
       }
       case 7:  // a dictionary token
-        if (!dictionary_.empty())
-          b.insert(pick(rng, b.size() + 1), dictionary_[pick(rng, dictionary_.size())]);
+        if (!dictionary_.empty()) b.insert(pick(rng, b.size() + 1), dictionary_[pick(rng, dictionary_.size())]);
         break;
       case 8:  // a number in the text replaced by one at a limit
         replace_number(b, rng);
@@ -330,17 +340,24 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) usage_error(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--seed") seed = parse_count(arg, value());
-    else if (arg == "--mutations") mutations = parse_count(arg, value());
-    else if (arg == "--max-len") max_len = parse_count(arg, value());
-    else if (arg == "--only") only = parse_count(arg, value());
-    else if (arg == "--dict") dictionary_path = value();
+    if (arg == "--seed")
+      seed = parse_count(arg, value());
+    else if (arg == "--mutations")
+      mutations = parse_count(arg, value());
+    else if (arg == "--max-len")
+      max_len = parse_count(arg, value());
+    else if (arg == "--only")
+      only = parse_count(arg, value());
+    else if (arg == "--dict")
+      dictionary_path = value();
     else if (arg == "--save") {
       const std::string dir = value();
       if (dir.size() >= sizeof g_save_dir) usage_error("--save folder name too long");
       std::strcpy(g_save_dir, dir.c_str());
-    } else if (arg.starts_with("--")) usage_error("unknown option " + arg);
-    else dirs.push_back(arg);
+    } else if (arg.starts_with("--"))
+      usage_error("unknown option " + arg);
+    else
+      dirs.push_back(arg);
   }
   if (dirs.empty()) usage_error("no corpus folder given");
 
@@ -355,13 +372,10 @@ int main(int argc, char** argv) {
   for (int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, on_fatal_signal);
   std::signal(SIGALRM, on_hang);
 
-  const auto input = [&](std::uint64_t k) {
-    return k < corpus.size() ? corpus[k] : mutator.make(k - corpus.size());
-  };
+  const auto input = [&](std::uint64_t k) { return k < corpus.size() ? corpus[k] : mutator.make(k - corpus.size()); };
   if (only) {  // any number is well defined: past the corpus, it is a mutation
     run(input(*only), *only);
-    std::printf("fuzz_replay: input %llu ran without a finding\n",
-                static_cast<unsigned long long>(*only));
+    std::printf("fuzz_replay: input %llu ran without a finding\n", static_cast<unsigned long long>(*only));
     return 0;
   }
   // A digest of every input run, printed so that two runs can be seen to run the same inputs.
@@ -373,9 +387,10 @@ int main(int argc, char** argv) {
     digest = ridt::detail::mix64(digest ^ in.size());  // FNV-1a bytes, then the length
     run(in, k);
   }
-  std::printf("fuzz_replay: %zu corpus inputs and %llu mutations (seed %llu, inputs' digest "
-              "%016llx) ran without a finding\n",
-              corpus.size(), static_cast<unsigned long long>(mutations),
-              static_cast<unsigned long long>(seed), static_cast<unsigned long long>(digest));
+  std::printf(
+      "fuzz_replay: %zu corpus inputs and %llu mutations (seed %llu, inputs' digest "
+      "%016llx) ran without a finding\n",
+      corpus.size(), static_cast<unsigned long long>(mutations), static_cast<unsigned long long>(seed),
+      static_cast<unsigned long long>(digest));
   return 0;
 }

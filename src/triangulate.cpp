@@ -6,18 +6,17 @@
 #include <limits>
 #include <optional>
 #include <string>
-#include <thread>
 
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
 
-#include "cavity.hpp"
-#include "driver.hpp"
-#include "order.hpp"
-#include "parallel.hpp"
-#include "predicates.hpp"
+#include "methods/method.hpp"
+#include "order/order.hpp"
+#include "predicates/predicates.hpp"
 #include "ridt/ridt.hpp"
+#include "runtime/parallel.hpp"
+#include "walk/mesh.hpp"
 
 namespace ridt {
 namespace {
@@ -25,9 +24,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The options made definite: threads counted, the location chosen. Throws InputError for a
-// combination that cannot run, saying why.
+// The options made definite: the method chosen, threads counted, the location chosen. Throws
+// InputError for a combination that cannot run, saying why.
 struct Plan {
+  const detail::MethodEntry* method = nullptr;
   unsigned threads = 1;
   bool walk = false;
   bool from_root = false;  // Locate::Root: the DAG, each descent from its root
@@ -35,58 +35,90 @@ struct Plan {
   bool symbolic = true;
 };
 
+// Method::Auto: serial on one thread (and for the profile, which times the serial method); on
+// more, partition where the location may walk and the order lets it (walking asked for: it
+// says what the order lacks), else optimistic.
+Method choose(Method method, unsigned threads, const Options& options) {
+  if (method != Method::Auto) return method;
+  if (threads == 1 || options.experiment.profile) return Method::Serial;
+  const bool brio_walk = options.order == Order::Brio && options.locate == Locate::Auto;
+  return brio_walk || options.locate == Locate::Walk ? Method::Partition : Method::Optimistic;
+}
+
+// "serial or partition": the methods that walk, for a message.
+std::string walking_methods() {
+  std::string list;
+  for (const detail::MethodEntry& m : detail::methods())
+    if (m.walk != nullptr) list += std::string(list.empty() ? "" : " and ") + std::string(to_string(m.method));
+  return list;
+}
+
+// Where the method walks and where it descends the DAG, from the location asked for.
+void plan_location(Plan& p, const Options& options) {
+  const detail::MethodEntry& m = *p.method;
+  const std::string name(to_string(m.method));
+  switch (options.locate) {
+    case Locate::Auto:
+      p.walk = m.walk != nullptr && (p.brio || m.dag == nullptr);
+      break;
+    case Locate::Dag:
+      p.walk = false;
+      break;
+    case Locate::Walk:
+      p.walk = true;
+      break;
+    case Locate::Root:
+      p.from_root = true;
+      break;
+  }
+  if (m.dag == nullptr) {
+    if (p.from_root)
+      throw InputError("the " + name + " method keeps no DAG to descend from its root (use --locate walk or auto)");
+    if (!p.brio)
+      throw InputError("the " + name +
+                       " method needs the BRIO order: its threads own stretches of each round's "
+                       "curve (use --order brio)");
+    if (!p.walk) throw InputError("the " + name + " method keeps no DAG: it walks (use --locate walk or auto)");
+  } else if (p.walk && m.walk == nullptr) {
+    throw InputError("walking location works with the " + walking_methods() +
+                     " methods only: the paper's "
+                     "threaded methods locate points while others insert, by descending the history DAG, whose "
+                     "nodes never change (use --locate dag)");
+  }
+  if (p.walk && !p.brio)
+    throw InputError(
+        "walking location needs the BRIO order: in random order each walk crosses about sqrt(n) "
+        "triangles (use --order brio)");
+}
+
 Plan plan(std::size_t n, const Options& options) {
   Plan p;
   // Three bounding vertices follow the points, and ids must stay below kIdMask.
   if (n > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
   p.symbolic = options.experiment.bounding == Bounding::Symbolic;
   p.brio = options.order == Order::Brio;
-  if (options.method != Method::Serial) {
-    p.threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-    // Optimistic owners are numbered 1 .. kMaxOwner (mesh.hpp).
-    if (p.threads > detail::kMaxOwner)
-      throw InputError("at most " + std::to_string(detail::kMaxOwner) + " threads (got " +
-                       std::to_string(p.threads) + ")");
-  }
-  if (options.experiment.profile && options.method != Method::Serial)
+  const unsigned threads = detail::thread_count(options.threads);
+  p.method = &detail::method_entry(choose(options.method, threads, options));
+  if (p.method->threaded) p.threads = threads;
+  if (p.threads > kMaxThreads)
+    throw InputError("at most " + std::to_string(kMaxThreads) + " threads (got " + std::to_string(p.threads) + ")");
+  if (options.experiment.profile && p.method->threaded)
     throw InputError("profiling (Fig. 8) times the serial method only");
-  const bool walks = options.method == Method::Serial || options.method == Method::Partition;
-  switch (options.locate) {
-    case Locate::Auto: p.walk = walks && p.brio; break;
-    case Locate::Dag: p.walk = false; break;
-    case Locate::Walk: p.walk = true; break;
-    case Locate::Root: p.from_root = true; break;
-  }
-  if (p.from_root && options.method == Method::Partition)
-    throw InputError("the partition method keeps no DAG to descend from its root (use --locate walk or auto)");
-  if (options.method == Method::Partition) {
-    if (!p.brio)
-      throw InputError("the partition method needs the BRIO order: its threads own stretches of "
-                       "each round's curve (use --order brio)");
-    if (!p.walk)
-      throw InputError("the partition method keeps no DAG: it walks (use --locate walk or auto)");
-  } else if (p.walk && !walks) {
-    throw InputError("walking location works with the serial and partition methods only: the "
-                     "paper's threaded methods locate points while others insert, by descending "
-                     "the history DAG, whose nodes never change (use --locate dag)");
-  }
-  if (p.walk && !p.brio)
-    throw InputError("walking location needs the BRIO order: in random order each walk "
-                     "crosses about sqrt(n) triangles (use --order brio)");
+  plan_location(p, options);
   if (!p.symbolic && !(options.experiment.k >= 2))
     throw InputError("the finite bounding triangle needs k >= 2 (got " + std::to_string(options.experiment.k) + ")");
   return p;
 }
 
-// The points' extent (predicates.hpp), in one pass on up to `threads` threads; throws
+// The points' extent (predicates/predicates.hpp), in one pass on up to `threads` threads; throws
 // InputError naming the first point with a coordinate that is not finite.
 detail::Extent scan(std::span<const Point> points, unsigned threads) {
   constexpr std::size_t kGrain = std::size_t{1} << 16;
   const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(points.size() / kGrain, 1, threads));
   std::vector<detail::Extent> part(parts);
   detail::on_threads(parts, [&](unsigned t) {
-    part[t] = detail::extent_of(points.subspan(points.size() * t / parts, points.size() * (t + 1) / parts -
-                                                                              points.size() * t / parts));
+    part[t] = detail::extent_of(
+        points.subspan(points.size() * t / parts, points.size() * (t + 1) / parts - points.size() * t / parts));
   });
   detail::Extent e;
   for (const detail::Extent& x : part) e.add(x);
@@ -103,8 +135,8 @@ detail::Extent scan(std::span<const Point> points, unsigned threads) {
 // The points in insertion order (vertex v is input point order[v]), scaled by 2^scale, then
 // the three bounding vertices. Inserting them from a copy in that order keeps the points that
 // successive insertions read close together in memory.
-detail::Block<Point> copy_in_order(std::span<const Point> points, const std::vector<std::uint32_t>& order,
-                                   int scale, unsigned threads) {
+detail::Block<Point> copy_in_order(std::span<const Point> points, const std::vector<std::uint32_t>& order, int scale,
+                                   unsigned threads) {
   const std::size_t n = points.size();
   auto pts = detail::allocate_huge<Point>(n + 3);
   detail::parallel_for(n, threads, 65536, [&](std::size_t first, std::size_t last) {
@@ -150,38 +182,21 @@ void place_finite_bounding(Point* pts, std::uint32_t n, const std::vector<std::u
                          "; use the symbolic one");
 }
 
-// The history DAG's kernel and the paper's methods.
+// The history DAG's kernel and the method that drives it.
 Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
                       const Plan& plan, const Options& options, Stats& stats) {
   detail::Kernel kernel(std::move(pts), n, plan.symbolic, plan.brio);
-  const Experiment& x = options.experiment;
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
-  switch (options.method) {
-    case Method::Serial:
-      detail::insert_serial(kernel, x.profile, plan.from_root, duplicates, stats, progress);
-      break;
-    case Method::Pessimistic:
-      detail::insert_pessimistic(kernel, plan.threads, plan.from_root, x.paper_locking, x.time_threads, duplicates,
-                                 stats, progress);
-      break;
-    case Method::Optimistic:
-      detail::insert_optimistic(kernel, plan.threads, plan.from_root, x.time_threads, duplicates, stats, progress);
-      break;
-    case Method::Batch:
-      detail::insert_batch(kernel, plan.threads, plan.from_root, duplicates, stats, progress);
-      break;
-    case Method::Partition:
-      break;  // refused by plan()
-  }
+  plan.method->dag(kernel, {plan.threads, plan.from_root, options.experiment, nullptr, duplicates, stats, progress});
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
   return detail::finish(kernel, order, duplicates, options, plan.threads);
 }
 
-// The walking kernel: the serial method, or the partition method's threads (`keys`: each
-// vertex's Hilbert key, in insertion order).
+// The walking kernel and the method that drives it (`keys`: each vertex's Hilbert key, in
+// insertion order, where the method asked for them).
 Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
                           std::vector<std::uint32_t> keys, detail::MeshArrays arrays, const Plan& plan,
                           const Options& options, Stats& stats) {
@@ -189,11 +204,7 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
-  if (options.method == Method::Partition) {
-    detail::insert_partition(mesh, keys.data(), plan.threads, duplicates, stats, progress);
-  } else {
-    detail::insert_walking(mesh, options.experiment.profile, duplicates, stats, progress);
-  }
+  plan.method->walk(mesh, {plan.threads, false, options.experiment, keys.data(), duplicates, stats, progress});
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
   if (plan.symbolic) pts.reset();  // the finish reads no point: the copy goes before it
@@ -210,9 +221,8 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const 
   if (!p.brio) return detail::random_permutation(n, options.seed);
   detail::OrderScratch scratch;
   if (mesh != nullptr) scratch = {mesh->words(), mesh->numbers()};
-  std::vector<std::uint32_t> order = detail::brio_order(
-      points.data(), n, options.seed, p.threads, options.method == Method::Partition ? &keys : nullptr, scratch,
-      &extent);
+  std::vector<std::uint32_t> order =
+      detail::brio_order(points.data(), n, options.seed, p.threads, p.method->keys ? &keys : nullptr, scratch, &extent);
 #ifdef __GLIBC__
   // The order's buffers (its own, where no mesh lends it memory, and the cells' small ones),
   // freed, may stay with the allocator (glibc keeps freed blocks below its mmap threshold,
@@ -240,7 +250,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   const Plan p = plan(points.size(), options);
   const auto n = static_cast<std::uint32_t>(points.size());
   const detail::Extent extent = scan(points, p.threads);
-  // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates.hpp).
+  // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates/predicates.hpp).
   const int scale = detail::exact_scale_exponent(extent);
   std::optional<detail::MeshArrays> mesh;
   if (p.walk) mesh.emplace(n, p.threads);
@@ -251,9 +261,11 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
 
   Stats stats;
   stats.threads = p.threads;
+  stats.method = p.method->method;
   stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
-  Triangulation out = p.walk ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*mesh), p, options, stats)
-                             : run_dag(std::move(pts), n, order, p, options, stats);
+  Triangulation out = p.walk
+      ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*mesh), p, options, stats)
+      : run_dag(std::move(pts), n, order, p, options, stats);
   // After the mesh is gone, so that the sort's copies do not raise the peak.
   if (options.canonical_order) detail::canonicalize(out, p.threads);
   merge_stats(out, std::move(stats));

@@ -68,15 +68,15 @@ inline std::string audit(std::span<const Point> points, const Triangulation& t) 
       if (static_cast<std::size_t>(nb) >= nt) return "neighbour out of range";
       bool back = false;
       for (int j = 0; j < 3; ++j)
-        back = back || (t.triangles[3 * nb + (j + 1) % 3] == b &&
-                        t.triangles[3 * nb + (j + 2) % 3] == a &&
-                        t.neighbors[3 * nb + j] == static_cast<std::int32_t>(k));
+        back = back ||
+            (t.triangles[3 * nb + (j + 1) % 3] == b && t.triangles[3 * nb + (j + 2) % 3] == a &&
+             t.neighbors[3 * nb + j] == static_cast<std::int32_t>(k));
       if (!back) return "triangle " + std::to_string(k) + " and its neighbour disagree";
     }
   }
   if (t.hull.size() != boundary)
-    return "hull has " + std::to_string(t.hull.size()) + " vertices for " +
-           std::to_string(boundary) + " boundary edges";
+    return "hull has " + std::to_string(t.hull.size()) + " vertices for " + std::to_string(boundary) +
+        " boundary edges";
   for (std::size_t i = 0; i < t.hull.size(); ++i)
     if (next[t.hull[i]] != static_cast<std::int64_t>(t.hull[(i + 1) % t.hull.size()]))
       return "hull is not the cycle of boundary edges at position " + std::to_string(i);
@@ -100,14 +100,13 @@ inline std::string audit(std::span<const Point> points, const Triangulation& t) 
   std::sort(expected.begin(), expected.end(),
             [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
   if (expected.size() != t.duplicates.size())
-    return "expected " + std::to_string(expected.size()) + " duplicates, got " +
-           std::to_string(t.duplicates.size());
+    return "expected " + std::to_string(expected.size()) + " duplicates, got " + std::to_string(t.duplicates.size());
   std::vector<bool> dropped(points.size(), false);
   for (std::size_t i = 0; i < expected.size(); ++i) {
     if (expected[i].dropped != t.duplicates[i].dropped || expected[i].kept != t.duplicates[i].kept)
-      return "duplicate " + std::to_string(i) + " is " + std::to_string(t.duplicates[i].dropped) +
-             " -> " + std::to_string(t.duplicates[i].kept) + ", expected " +
-             std::to_string(expected[i].dropped) + " -> " + std::to_string(expected[i].kept);
+      return "duplicate " + std::to_string(i) + " is " + std::to_string(t.duplicates[i].dropped) + " -> " +
+          std::to_string(t.duplicates[i].kept) + ", expected " + std::to_string(expected[i].dropped) + " -> " +
+          std::to_string(expected[i].kept);
     dropped[expected[i].dropped] = true;
   }
   for (VertexId v : t.triangles)
@@ -127,8 +126,7 @@ inline std::string compare(const Triangulation& a, const Triangulation& b) {
   if (canonical_hull(a.hull) != canonical_hull(b.hull)) return "different hulls";
   if (a.duplicates.size() != b.duplicates.size()) return "different duplicates";
   for (std::size_t i = 0; i < a.duplicates.size(); ++i)
-    if (a.duplicates[i].dropped != b.duplicates[i].dropped ||
-        a.duplicates[i].kept != b.duplicates[i].kept)
+    if (a.duplicates[i].dropped != b.duplicates[i].dropped || a.duplicates[i].kept != b.duplicates[i].kept)
       return "different duplicates";
   return "";
 }
@@ -160,8 +158,7 @@ inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Ord
                              {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk},
                              {"serial random root", Method::Serial, 1, Order::Random, Locate::Root}};
   for (const auto& [name, method] : {std::pair{"pessimistic", Method::Pessimistic},
-                                     std::pair{"optimistic", Method::Optimistic},
-                                     std::pair{"batch", Method::Batch}}) {
+                                     std::pair{"optimistic", Method::Optimistic}, std::pair{"batch", Method::Batch}}) {
     std::ostringstream label;
     label << name << ' ' << threads << (threaded_order == Order::Brio ? " brio" : " random");
     modes.push_back({label.str(), method, threads, threaded_order, Locate::Dag});
@@ -171,8 +168,8 @@ inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Ord
                    Order::Random, Locate::Root});
   // The partition method walks, in the BRIO order only.
   if (threaded_order == Order::Brio)
-    modes.push_back({"partition " + std::to_string(threads) + " brio", Method::Partition, threads, Order::Brio,
-                     Locate::Walk});
+    modes.push_back(
+        {"partition " + std::to_string(threads) + " brio", Method::Partition, threads, Order::Brio, Locate::Walk});
   return modes;
 }
 
@@ -184,8 +181,7 @@ inline std::string audit_every_mode(std::span<const Point> points, const std::ve
   Triangulation reference;
   for (std::size_t i = 0; i < modes.size(); ++i) {
     Triangulation t = triangulate(points, modes[i].options(seed));
-    if (const std::string problem = audit(points, t); !problem.empty())
-      return modes[i].name + ": " + problem;
+    if (const std::string problem = audit(points, t); !problem.empty()) return modes[i].name + ": " + problem;
     if (i == 0) {
       reference = std::move(t);
     } else if (const std::string diff = compare(reference, t); !diff.empty()) {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "audit.hpp"
-#include "generate.hpp"
 #include "ridt/check.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::test {
@@ -28,14 +28,11 @@ inline Triangulation triangulate_checked(const std::vector<Point>& pts, Options 
 
 /// A JSON array of [x, y] pairs, as in the delaunator fixtures.
 /// delaunator's robustness fixtures (tests/fixtures/delaunator, RIDT_FIXTURES).
-inline constexpr const char* kDelaunatorFixtures[] = {
-    "ukraine", "robustness1", "robustness2", "robustness3",
-    "robustness4", "issue13", "issue43", "issue44"};
+inline constexpr const char* kDelaunatorFixtures[] = {"ukraine",     "robustness1", "robustness2", "robustness3",
+                                                      "robustness4", "issue13",     "issue43",     "issue44"};
 
 /// The path of fixture `name`.
-inline std::string fixture_path(const std::string& name) {
-  return std::string(RIDT_FIXTURES) + "/" + name + ".json";
-}
+inline std::string fixture_path(const std::string& name) { return std::string(RIDT_FIXTURES) + "/" + name + ".json"; }
 
 /// The [x, y] pairs of a JSON file; a missing or unreadable file throws, so the test fails.
 inline std::vector<Point> read_json_points(const std::string& path) {
@@ -58,7 +55,7 @@ inline auto every_distribution() {
   return ::testing::Values(Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters);
 }
 inline std::string distribution_name(const ::testing::TestParamInfo<Distribution>& info) {
-  return to_string(info.param);
+  return std::string(to_string(info.param));
 }
 
 }  // namespace ridt::test

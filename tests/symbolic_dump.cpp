@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "kernel.hpp"
+#include "dag/kernel.hpp"
 
 using ridt::Point;
 using ridt::VertexId;
@@ -63,26 +63,26 @@ int main() {
       if (p == q) continue;
       for (VertexId b = n; b < n + 3; ++b) {
         // orient with one bounding vertex, in each of its three positions
-        std::printf("O %g %g %g %g B%u %d %d %d\n", at(p).x, at(p).y, at(q).x, at(q).y, b - n,
-                    k.orient(p, q, b), k.orient(q, b, p), k.orient(b, p, q));
+        std::printf("O %g %g %g %g B%u %d %d %d\n", at(p).x, at(p).y, at(q).x, at(q).y, b - n, k.orient(p, q, b),
+                    k.orient(q, b, p), k.orient(b, p, q));
         // incircle of the triangle (p, q, b) made counter-clockwise, against every other point
         const bool ccw = k.orient(p, q, b) > 0;
         const VertexId a = ccw ? p : q, c = ccw ? q : p;
         for (VertexId d = 0; d < n; ++d)
           if (d != p && d != q)
-            std::printf("C1 %g %g %g %g B%u %g %g %d %d\n", at(a).x, at(a).y, at(c).x, at(c).y,
-                        b - n, at(d).x, at(d).y, k.incircle(a, c, b, d), k.incircle(b, a, c, d));
+            std::printf("C1 %g %g %g %g B%u %g %g %d %d\n", at(a).x, at(a).y, at(c).x, at(c).y, b - n, at(d).x, at(d).y,
+                        k.incircle(a, c, b, d), k.incircle(b, a, c, d));
       }
     }
   for (VertexId a = 0; a < n; ++a)
     for (VertexId i = 0; i < 3; ++i) {
       const VertexId bi = n + i, bj = n + (i + 1) % 3;
-      std::printf("O2 %g %g B%u B%u %d %d\n", at(a).x, at(a).y, i, (i + 1) % 3,
-                  k.orient(a, bi, bj), k.orient(a, bj, bi));
+      std::printf("O2 %g %g B%u B%u %d %d\n", at(a).x, at(a).y, i, (i + 1) % 3, k.orient(a, bi, bj),
+                  k.orient(a, bj, bi));
       for (VertexId d = 0; d < n; ++d)
         if (d != a)
-          std::printf("C2 %g %g B%u B%u %g %g %d %d\n", at(a).x, at(a).y, i, (i + 1) % 3,
-                      at(d).x, at(d).y, k.incircle(a, bi, bj, d), k.incircle(bj, a, bi, d));
+          std::printf("C2 %g %g B%u B%u %g %g %d %d\n", at(a).x, at(a).y, i, (i + 1) % 3, at(d).x, at(d).y,
+                      k.incircle(a, bi, bj, d), k.incircle(bj, a, bi, d));
     }
   std::printf("O3 %d %d\n", k.orient(n, n + 1, n + 2), k.orient(n, n + 2, n + 1));
   return 0;

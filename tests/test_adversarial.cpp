@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "generate.hpp"
 #include "helpers.hpp"
-#include "random.hpp"
+#include "order/random.hpp"
+#include "ridt/generate.hpp"
 
 namespace ridt::test {
 namespace {
@@ -129,8 +129,7 @@ std::vector<Point> near_2_to_53(int side, int random) {
     for (int j = 1; j <= side; ++j) pts.push_back({top - i, top - j});
   detail::Rng rng(7);
   for (int k = 0; k < random; ++k)
-    pts.push_back({top - 1 - static_cast<double>(rng.below(side)),
-                   top - 1 - static_cast<double>(rng.below(1u << 20))});
+    pts.push_back({top - 1 - static_cast<double>(rng.below(side)), top - 1 - static_cast<double>(rng.below(1u << 20))});
   return pts;
 }
 
@@ -175,8 +174,7 @@ std::vector<Set> sets() {
     // Shifted integers stay exact below 2^53, so the circle stays a circle; scaled, it does not.
     out.push_back({base.name + "_times_1e_minus_300", [base] { return scaled(base.make(), 1e-300); }});
     out.push_back({base.name + "_times_1e300", [base] { return scaled(base.make(), 1e300); }});
-    out.push_back({base.name + "_plus_1e15", [base] { return shifted(base.make(), 1e15); },
-                   i == 0 ? base.hull : 0});
+    out.push_back({base.name + "_plus_1e15", [base] { return shifted(base.make(), 1e15); }, i == 0 ? base.hull : 0});
   }
   const int grid = scaled_side(300);
   out.push_back({"near_2_to_53", [=] { return near_2_to_53(grid, scaled_count(10000)); }});

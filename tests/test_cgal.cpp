@@ -9,10 +9,10 @@
 #include <cmath>
 #include <map>
 
-#include "generate.hpp"
 #include "helpers.hpp"
-#include "predicates.hpp"
-#include "random.hpp"
+#include "order/random.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/generate.hpp"
 
 namespace ridt::test {
 namespace {
@@ -46,13 +46,12 @@ TEST_P(AgainstCgal, SameTriangles) {
 // Grid points are cocircular: several triangulations are Delaunay, so only general-position
 // distributions are compared.
 INSTANTIATE_TEST_SUITE_P(GeneralPosition, AgainstCgal,
-                         ::testing::Combine(::testing::Values(Distribution::Uniform,
-                                                              Distribution::Normal,
+                         ::testing::Combine(::testing::Values(Distribution::Uniform, Distribution::Normal,
                                                               Distribution::Clusters),
                                             ::testing::Values(10, 1000, 100000)),
                          [](const auto& info) {
                            return std::string(to_string(std::get<0>(info.param))) + "_" +
-                                  std::to_string(std::get<1>(info.param));
+                               std::to_string(std::get<1>(info.param));
                          });
 
 // Each point's index mapped to the smallest index of an equal point: CGAL keeps whichever of
@@ -73,8 +72,7 @@ TriangleSet unique_triangles(const std::vector<Point>& pts, const std::vector<Ve
   const std::vector<VertexId> rep = representatives(pts);
   std::map<std::pair<VertexId, VertexId>, VertexId> across;  // edge a -> b: the third vertex
   for (std::size_t i = 0; i + 2 < tris.size(); i += 3)
-    for (int k = 0; k < 3; ++k)
-      across[{rep[tris[i + k]], rep[tris[i + (k + 1) % 3]]}] = rep[tris[i + (k + 2) % 3]];
+    for (int k = 0; k < 3; ++k) across[{rep[tris[i + k]], rep[tris[i + (k + 1) % 3]]}] = rep[tris[i + (k + 2) % 3]];
   auto p2 = [&](VertexId v) { return K::Point_2(pts[v].x, pts[v].y); };
   std::vector<VertexId> kept;
   for (std::size_t i = 0; i + 2 < tris.size(); i += 3) {
@@ -117,8 +115,7 @@ int naive_orient(const Point& a, const Point& b, const Point& c) {
 int naive_incircle(const Point& a, const Point& b, const Point& c, const Point& d) {
   const double adx = a.x - d.x, ady = a.y - d.y, bdx = b.x - d.x, bdy = b.y - d.y;
   const double cdx = c.x - d.x, cdy = c.y - d.y;
-  return sign((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
-              (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+  return sign((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) + (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
               (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady));
 }
 
@@ -172,8 +169,7 @@ TEST_P(PredicatesAgainstCgal, NearlyCollinearAndCocircular) {
   EXPECT_GT(signs[2], kCases / 20);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scales, PredicatesAgainstCgal,
-                         ::testing::Values(1e-150, 1e-20, 1.0, 3.0e7, 1e20, 1e150),
+INSTANTIATE_TEST_SUITE_P(Scales, PredicatesAgainstCgal, ::testing::Values(1e-150, 1e-20, 1.0, 3.0e7, 1e20, 1e150),
                          [](const auto& info) {
                            const int e = std::ilogb(info.param);
                            return (e < 0 ? "two_to_minus_" : "two_to_") + std::to_string(std::abs(e));

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "generate.hpp"
-#include "predicates.hpp"
+#include "predicates/predicates.hpp"
 #include "ridt/check.hpp"
 #include "ridt/furthest.hpp"
+#include "ridt/generate.hpp"
 
 namespace ridt {
 namespace {
@@ -110,16 +110,14 @@ TEST(Check, CollinearHullPointsMustBeVertices) {
 // list is a reserved, never touched range of address space (some 17 GB), so no memory is used.
 TEST(Check, RefusesMoreTrianglesThanItsCountersHold) {
   const std::size_t ids = 3 * (kCheckMaxTriangles + 1);
-  void* range = ::mmap(nullptr, ids * sizeof(VertexId), PROT_NONE,
-                       MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  void* range = ::mmap(nullptr, ids * sizeof(VertexId), PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
   ASSERT_NE(range, MAP_FAILED);
   const std::span<const VertexId> tris(static_cast<const VertexId*>(range), ids);
   try {
     check(kQuad, tris);
     ADD_FAILURE() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "1431655766 triangles are more than the validator takes (at most 1431655765)");
+    EXPECT_EQ(std::string(e.what()), "1431655766 triangles are more than the validator takes (at most 1431655765)");
   }
   ::munmap(range, ids * sizeof(VertexId));
 }
@@ -131,7 +129,8 @@ namespace ridt {
 namespace {
 
 TEST(FurthestSite, ValidOnEveryDistributionAndOnACircle) {
-  for (const Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters}) {
+  for (const Distribution d :
+       {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters}) {
     const std::vector<Point> pts = generate(d, 3000, 5);
     const Triangulation f = triangulate_furthest_site(pts);
     const CheckResult r = check_furthest_site(pts, f.triangles);
@@ -140,7 +139,8 @@ TEST(FurthestSite, ValidOnEveryDistributionAndOnACircle) {
     // Every circle holds every point, checked here point by point.
     for (std::size_t t = 0; t < f.size(); ++t)
       for (const Point& p : pts)
-        ASSERT_GE(detail::incircle(pts[f.triangles[3 * t]], pts[f.triangles[3 * t + 1]], pts[f.triangles[3 * t + 2]], p), 0);
+        ASSERT_GE(
+            detail::incircle(pts[f.triangles[3 * t]], pts[f.triangles[3 * t + 1]], pts[f.triangles[3 * t + 2]], p), 0);
   }
   // Cocircular corners (a regular polygon, rounded): any triangulation of them qualifies.
   std::vector<Point> circle;

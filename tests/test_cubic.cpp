@@ -1,4 +1,4 @@
-// The cubic interpolant (ridt/interpolate.hpp, src/cubic.cpp): gradients exact for linear data,
+// The cubic interpolant (ridt/interpolate.hpp, src/queries/cubic.cpp): gradients exact for linear data,
 // quadratics reproduced from their gradients, the data at the points, continuity of the value
 // and of the derivative across the triangles' sides, the grid's answers equal to the located
 // queries', the same bits on threads, and exact barycentric coordinates on slivers.
@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "generate.hpp"
 #include "helpers.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 
@@ -159,7 +159,9 @@ TEST(Cubic, SliversGetFiniteAnswers) {
   interpolate_clough_tocher(pts, t, Values{v, 1}, g, centroids, out);
   interpolate_clough_tocher(pts, t, Values{v, 1}, g, pts, at);
   for (std::size_t k = 0; k < out.size(); ++k) {
-    if (locate(pts, t, std::span(&centroids[k], 1))[0] >= 0) EXPECT_TRUE(std::isfinite(out[k])) << k;
+    if (locate(pts, t, std::span(&centroids[k], 1))[0] >= 0) {
+      EXPECT_TRUE(std::isfinite(out[k])) << k;
+    }
   }
   for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(at[i], v[i]);
 }

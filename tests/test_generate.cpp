@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "generate.hpp"
+#include "ridt/generate.hpp"
 
 namespace ridt {
 namespace {
@@ -50,8 +50,16 @@ TEST(Generate, GridIsIntegerRows) {
 }
 
 TEST(Generate, Names) {
-  EXPECT_EQ(parse_distribution("clusters"), Distribution::Clusters);
-  EXPECT_FALSE(parse_distribution("gaussian").has_value());
+  EXPECT_EQ(parse<Distribution>("clusters"), Distribution::Clusters);
+  EXPECT_EQ(to_string(Distribution::Grid), "grid");
+  EXPECT_THROW(parse<Distribution>("gaussian"), InputError);
+  for (const Named<Method>& m : names<Method>()) EXPECT_EQ(parse<Method>(m.name), m.value);
+  try {
+    parse<Locate>("jump");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "unknown location 'jump' (use auto, dag, walk or root)");
+  }
 }
 
 }  // namespace

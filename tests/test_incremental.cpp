@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "generate.hpp"
 #include "helpers.hpp"
 #include "ridt/check.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/incremental.hpp"
 
 namespace ridt {

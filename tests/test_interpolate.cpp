@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "generate.hpp"
 #include "helpers.hpp"
-#include "predicates.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/interpolate.hpp"
 
 namespace ridt {
@@ -49,7 +49,7 @@ TEST_P(Interpolation, ExactOnLinearFunctionsAndFillOutside) {
   for (const Point& p : pts) lo = std::min({lo, p.x, p.y}), hi = std::max({hi, p.x, p.y});
   std::vector<Point> q = random_queries(20000, lo - 0.1 * (hi - lo), hi + 0.1 * (hi - lo), 5);
   q.insert(q.end(), pts.begin(), pts.begin() + 100);  // at the points
-  for (std::size_t k = 0; k < 100; ++k) {             // on edges: midpoints
+  for (std::size_t k = 0; k < 100; ++k) {  // on edges: midpoints
     const VertexId* v = &t.triangles[3 * k];
     q.push_back({(pts[v[0]].x + pts[v[1]].x) / 2, (pts[v[0]].y + pts[v[1]].y) / 2});
   }
@@ -72,8 +72,7 @@ TEST_P(Interpolation, ExactOnLinearFunctionsAndFillOutside) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Distributions, Interpolation,
-                         test::every_distribution(), test::distribution_name);
+INSTANTIATE_TEST_SUITE_P(Distributions, Interpolation, test::every_distribution(), test::distribution_name);
 
 TEST(Interpolation, SeveralComponentsAndTheDataAtThePoints) {
   const std::vector<Point> pts = generate(Distribution::Uniform, 2000, 9);
@@ -193,7 +192,8 @@ TEST_P(GridInterpolation, EqualsTheLocatedQueries) {
   const std::vector<Point> pts = generate(GetParam(), 4000, 11);
   const Triangulation t = triangulate(pts);
   double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
-  for (const Point& p : pts) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  for (const Point& p : pts)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   const std::vector<double> f = values_of(pts, [](const Point& p) { return std::sin(3 * p.x) + p.y * p.y; });
   // Axes past the hull on every side; on the grid distribution, nodes on every vertex and
   // every edge; one axis decreasing and uneven.
@@ -216,8 +216,8 @@ TEST_P(GridInterpolation, EqualsTheLocatedQueries) {
         interpolate_natural_neighbor(pts, t, {f, 1}, g, got, -7.0, 2);
       else
         interpolate_linear(pts, t, {f, 1}, g, got, -7.0, 2);
-      const std::vector<double> want = natural ? interpolate_natural_neighbor(pts, t, {f, 1}, q, -7.0)
-                                               : interpolate_linear(pts, t, {f, 1}, q, -7.0);
+      const std::vector<double> want =
+          natural ? interpolate_natural_neighbor(pts, t, {f, 1}, q, -7.0) : interpolate_linear(pts, t, {f, 1}, q, -7.0);
       std::size_t inside = 0;
       for (std::size_t k = 0; k < q.size(); ++k) {
         ASSERT_EQ(got[k] == -7.0, !in_hull(pts, t, q[k])) << k << " at " << q[k].x << ", " << q[k].y;
@@ -228,8 +228,7 @@ TEST_P(GridInterpolation, EqualsTheLocatedQueries) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Distributions, GridInterpolation,
-                         test::every_distribution(), test::distribution_name);
+INSTANTIATE_TEST_SUITE_P(Distributions, GridInterpolation, test::every_distribution(), test::distribution_name);
 
 TEST(GridInterpolation, ThreadsGiveTheSameBits) {
   // Enough triangles for each thread to take a stretch: every node still has one owner.

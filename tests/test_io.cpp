@@ -28,8 +28,7 @@ class IoTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("ridt_io_" + std::to_string(::getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() / ("ridt_io_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -221,8 +220,8 @@ TEST_F(IoTest, MalformedTextLineNamesFileAndLine) {
   write_file("points.txt", "0 0\n# comment\n1.5 abc\n");
   EXPECT_EQ(error_of([&] { read_points(path("points.txt")); }),
             path("points.txt") + ":3: expected two numbers \"x y\" or \"x,y\", got \"1.5 abc\"");
-  for (const char* bad : {"1", "1 2 3", "1,2,", ",1 2", "1,,2", "1;2", "1 2x", "0x1 2", "1 - 2",
-                          "1e 2", "+-1 2", "1..2 3"}) {
+  for (const char* bad :
+       {"1", "1 2 3", "1,2,", ",1 2", "1,,2", "1;2", "1 2x", "0x1 2", "1 - 2", "1e 2", "+-1 2", "1..2 3"}) {
     SCOPED_TRACE(bad);
     write_file("bad.txt", std::string("0 0\n\n") + bad + "\n4 4\n");
     const std::string msg = error_of([&] { read_points(path("bad.txt")); });
@@ -235,11 +234,9 @@ TEST_F(IoTest, NanAndInfinityRejectedInText) {
   write_file("n.txt", "0 0\n1 1\nnan 2\n");
   EXPECT_EQ(error_of([&] { read_points(path("n.txt")); }), path("n.txt") + ":3: coordinate is NaN");
   write_file("i.txt", "0 0\n1 -inf\n");
-  EXPECT_EQ(error_of([&] { read_points(path("i.txt")); }),
-            path("i.txt") + ":2: coordinate is infinite");
+  EXPECT_EQ(error_of([&] { read_points(path("i.txt")); }), path("i.txt") + ":2: coordinate is infinite");
   write_file("r.txt", "1e400 0\n");
-  EXPECT_EQ(error_of([&] { read_points(path("r.txt")); }),
-            path("r.txt") + ":1: coordinate \"1e400\" is out of range");
+  EXPECT_EQ(error_of([&] { read_points(path("r.txt")); }), path("r.txt") + ":1: coordinate \"1e400\" is out of range");
   write_file("n.node", "2 2 0 0\n0 0 0\n1 NaN 1\n");
   EXPECT_TRUE(Has(error_of([&] { read_points(path("n.node")); }), "n.node:3: coordinate is NaN"));
   write_file("i.node", "1 2\n0 1 infinity\n");
@@ -251,8 +248,7 @@ TEST_F(IoTest, NanAndInfinityRejectedInBin) {
   pts[12].y = std::numeric_limits<double>::quiet_NaN();
   // write_points does not judge the values; the reader does.
   write_points(path("n.bin"), pts);
-  EXPECT_EQ(error_of([&] { read_points(path("n.bin")); }),
-            path("n.bin") + ": point 12 has a NaN coordinate");
+  EXPECT_EQ(error_of([&] { read_points(path("n.bin")); }), path("n.bin") + ": point 12 has a NaN coordinate");
   pts[12].y = 0;
   pts[3].x = -std::numeric_limits<double>::infinity();
   write_points(path("i.bin"), pts);
@@ -279,7 +275,8 @@ TEST_F(IoTest, NodeCountMismatch) {
 
 TEST_F(IoTest, NodeBadIndices) {
   write_file("first.node", "2 2 0 0\n2 0 0\n3 1 0\n");
-  EXPECT_TRUE(Has(error_of([&] { read_points(path("first.node")); }), "first.node:2: the first point index must be 0 or 1, got 2"));
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("first.node")); }),
+                  "first.node:2: the first point index must be 0 or 1, got 2"));
   write_file("gap.node", "# c\n3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n");
   EXPECT_TRUE(Has(error_of([&] { read_points(path("gap.node")); }), "gap.node:5: expected point index 3, got 4"));
   write_file("notint.node", "1 2 0 0\n0.5 0 0\n");
@@ -297,7 +294,8 @@ TEST_F(IoTest, NodeBadHeaderAndFieldCounts) {
   EXPECT_TRUE(Has(error_of([&] { read_points(path("markers.node")); }), "markers.node:1: "));
   // Header 1 attribute + marker: 5 fields a line, no more and no fewer.
   write_file("few.node", "2 2 1 1\n0 0 0 1.5 0\n1 1 1 2.5\n");
-  EXPECT_TRUE(Has(error_of([&] { read_points(path("few.node")); }), "few.node:3: expected 5 fields \"index x y attributes marker\", got \"1 1 1 2.5\""));
+  EXPECT_TRUE(Has(error_of([&] { read_points(path("few.node")); }),
+                  "few.node:3: expected 5 fields \"index x y attributes marker\", got \"1 1 1 2.5\""));
   write_file("many.node", "1 2 0 0\n0 0 0 9\n");
   EXPECT_TRUE(Has(error_of([&] { read_points(path("many.node")); }), "many.node:2: expected 3 fields"));
   write_file("word.node", "1 2 0 0\n0 1 abc\n");
@@ -319,9 +317,11 @@ TEST_F(IoTest, ReadTrianglesEle) {
 
 TEST_F(IoTest, ReadTrianglesEleErrors) {
   write_file("neg.ele", "2 3 0\n1 1 2 3\n2 3 0 1\n");
-  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("neg.ele"), 1); }), "neg.ele:3: vertex index 0 is below the first index 1"));
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("neg.ele"), 1); }),
+                  "neg.ele:3: vertex index 0 is below the first index 1"));
   write_file("count.ele", "3 3 0\n0 0 1 2\n");
-  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("count.ele"), 0); }), "header says 3 triangles but the file has 1"));
+  EXPECT_TRUE(
+      Has(error_of([&] { read_triangles(path("count.ele"), 0); }), "header says 3 triangles but the file has 1"));
   write_file("gap.ele", "2 3 0\n0 0 1 2\n2 0 1 2\n");
   EXPECT_TRUE(Has(error_of([&] { read_triangles(path("gap.ele"), 0); }), "gap.ele:3: "));
   write_file("six.ele", "1 6 0\n0 0 1 2 3 4 5\n");
@@ -351,11 +351,13 @@ TEST_F(IoTest, ReadTrianglesBinAndText) {
   EXPECT_EQ(read_triangles(path("t.txt"), 1), (std::vector<VertexId>{0, 1, 2, 3, 4, 5}));
   EXPECT_EQ(read_triangles(path("t.txt"), 0), (std::vector<VertexId>{1, 2, 3, 4, 5, 6}));
   write_file("bad.txt", "0 1 2\n0 1\n");
-  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("bad.txt"), 0); }), "bad.txt:2: expected three vertex indices \"a b c\", got \"0 1\""));
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("bad.txt"), 0); }),
+                  "bad.txt:2: expected three vertex indices \"a b c\", got \"0 1\""));
   write_file("frac.txt", "0 1 2.5\n");
   EXPECT_TRUE(Has(error_of([&] { read_triangles(path("frac.txt"), 0); }), "frac.txt:1: "));
   write_file("neg.txt", "0 1 2\n");
-  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("neg.txt"), 1); }), "neg.txt:1: vertex index 0 is below the first index 1"));
+  EXPECT_TRUE(Has(error_of([&] { read_triangles(path("neg.txt"), 1); }),
+                  "neg.txt:1: vertex index 0 is below the first index 1"));
   write_file("minus.txt", "0 -1 2\n");
   EXPECT_TRUE(Has(error_of([&] { read_triangles(path("minus.txt"), 0); }), "minus.txt:1: "));
 }
@@ -516,11 +518,9 @@ TEST_F(IoTest, WriteOffAndObj) {
   Square s;
   s.points[1] = {0.1, -0.0};
   write_triangulation(path("t.off"), s.points, s.t, 1);  // 0-based whatever the input numbering
-  EXPECT_EQ(read_file("t.off"),
-            "OFF\n5 2 0\n0 0 0\n0.1 -0 0\n1 1 0\n0 1 0\n0 0 0\n3 0 1 2\n3 0 2 3\n");
+  EXPECT_EQ(read_file("t.off"), "OFF\n5 2 0\n0 0 0\n0.1 -0 0\n1 1 0\n0 1 0\n0 0 0\n3 0 1 2\n3 0 2 3\n");
   write_triangulation(path("t.obj"), s.points, s.t, 0);  // always 1-based
-  EXPECT_EQ(read_file("t.obj"),
-            "v 0 0 0\nv 0.1 -0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nf 1 2 3\nf 1 3 4\n");
+  EXPECT_EQ(read_file("t.obj"), "v 0 0 0\nv 0.1 -0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nf 1 2 3\nf 1 3 4\n");
 }
 
 TEST_F(IoTest, WriteSvg) {
@@ -533,8 +533,7 @@ TEST_F(IoTest, WriteSvg) {
   EXPECT_TRUE(Has(svg, "<path "));
   EXPECT_TRUE(Has(svg, "<polygon "));
   std::size_t circles = 0;
-  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1))
-    ++circles;
+  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
   EXPECT_EQ(circles, s.points.size());
   // Each of the 5 edges is drawn once: 5 moves in the path.
   const std::size_t d = svg.find(" d=\"");
@@ -561,9 +560,10 @@ TEST_F(IoTest, SvgRefusesTooManyTrianglesAndCreatesNothing) {
   t.triangles.assign(3 * (kSvgMaxTriangles + 1), 0);
   const std::vector<Point> pts = {{0, 0}};
   const std::string msg = error_of([&] { write_triangulation(path("big.svg"), pts, t, 0); });
-  EXPECT_EQ(msg, path("big.svg") + ": " + std::to_string(kSvgMaxTriangles + 1) +
-                     " triangles are too many to draw usefully (at most 200000); write .off or .ele "
-                     "instead");
+  EXPECT_EQ(msg,
+            path("big.svg") + ": " + std::to_string(kSvgMaxTriangles + 1) +
+                " triangles are too many to draw usefully (at most 200000); write .off or .ele "
+                "instead");
   EXPECT_FALSE(fs::exists(path("big.svg")));
   EXPECT_TRUE(listing().empty());
   // An existing target is left untouched.

@@ -6,9 +6,9 @@
 #include <random>
 #include <vector>
 
-#include "generate.hpp"
 #include "helpers.hpp"
-#include "predicates.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/locate.hpp"
 
 namespace ridt {
@@ -18,7 +18,7 @@ namespace {
 bool holds(const std::vector<Point>& pts, const Triangulation& tri, std::size_t t, const Point& q) {
   const VertexId* v = &tri.triangles[3 * t];
   return detail::orient2d(pts[v[0]], pts[v[1]], q) >= 0 && detail::orient2d(pts[v[1]], pts[v[2]], q) >= 0 &&
-         detail::orient2d(pts[v[2]], pts[v[0]], q) >= 0;
+      detail::orient2d(pts[v[2]], pts[v[0]], q) >= 0;
 }
 
 // Every answer holds its query, and -1 comes exactly when the query is outside the hull.
@@ -48,7 +48,8 @@ std::vector<Point> random_queries(std::size_t m, double lo, double hi, std::uint
 }
 
 TEST(Locate, RandomQueriesInsideAndOutsideEveryDistribution) {
-  for (const Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters}) {
+  for (const Distribution d :
+       {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters}) {
     const std::vector<Point> pts = generate(d, 3000, 7);
     const Triangulation tri = test::triangulate_checked(pts);
     double lo = pts[0].x, hi = lo;

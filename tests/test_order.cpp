@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <set>
 
-#include "generate.hpp"
-#include "order.hpp"
-#include "region.hpp"
+#include "methods/region.hpp"
+#include "order/order.hpp"
+#include "ridt/generate.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -53,14 +53,13 @@ TEST(HilbertKey, ConsecutiveCellsAreNeighbours) {
     const std::uint32_t side = 1u << k, step = 1u << (16 - k);
     std::vector<std::pair<std::uint32_t, std::pair<int, int>>> cells;
     for (std::uint32_t x = 0; x < side; ++x)
-      for (std::uint32_t y = 0; y < side; ++y)
-        cells.push_back({hilbert_key(x * step, y * step), {int(x), int(y)}});
+      for (std::uint32_t y = 0; y < side; ++y) cells.push_back({hilbert_key(x * step, y * step), {int(x), int(y)}});
     std::sort(cells.begin(), cells.end());
     EXPECT_EQ(cells.front().second, std::make_pair(0, 0)) << k;
     for (std::size_t i = 1; i < cells.size(); ++i) {
       ASSERT_NE(cells[i].first, cells[i - 1].first) << k;
       const int d = std::abs(cells[i].second.first - cells[i - 1].second.first) +
-                    std::abs(cells[i].second.second - cells[i - 1].second.second);
+          std::abs(cells[i].second.second - cells[i - 1].second.second);
       ASSERT_EQ(d, 1) << "k=" << k << " at " << i;
     }
   }
@@ -125,7 +124,7 @@ TEST(BrioOrder, RoundsAlongTheCurveAndTheSameForAnyThreads) {
   EXPECT_EQ(brio_order(pts.data(), n, 5, 2, nullptr, {few, numbers}), order);
 }
 
-// A partition thread's region tested by id (region.hpp) holds exactly the vertices whose
+// A partition thread's region tested by id (methods/region.hpp) holds exactly the vertices whose
 // keys lie in its interval of keys: intervals that start or end at a vertex's key or between
 // keys, that wrap past key 0, hold nothing or the whole circle, on rounds of every size and on
 // points many of which share a key (a grid's coarse cells).
@@ -139,12 +138,24 @@ TEST(Region, HoldsTheVerticesWhoseKeysLieInIt) {
       brio_order(pts.data(), n, 5, 1, &keys);
       constexpr std::uint64_t kCircle = std::uint64_t{1} << 32;
       std::vector<std::pair<std::uint32_t, std::uint64_t>> cases = {
-          {0, 0}, {0, kCircle}, {123456, kCircle}, {0, kCircle / 2}, {0x80000000u, kCircle / 2}, {0xffffffffu, 1},
-          {0xffffffffu, 2}, {keys[0], 0}, {keys[0], 1}, {keys[n - 1], kCircle - 1}, {keys[n / 2], kCircle - keys[n / 2]},
-          {5, kCircle - 3}, {keys[n / 3] + 1, kCircle - 1}, {keys[n - 1], kCircle - 1 - (keys[n - 1] - keys[0])}};
+          {0, 0},
+          {0, kCircle},
+          {123456, kCircle},
+          {0, kCircle / 2},
+          {0x80000000u, kCircle / 2},
+          {0xffffffffu, 1},
+          {0xffffffffu, 2},
+          {keys[0], 0},
+          {keys[0], 1},
+          {keys[n - 1], kCircle - 1},
+          {keys[n / 2], kCircle - keys[n / 2]},
+          {5, kCircle - 3},
+          {keys[n / 3] + 1, kCircle - 1},
+          {keys[n - 1], kCircle - 1 - (keys[n - 1] - keys[0])}};
       for (int k = 0; k < 60; ++k) {
         const std::uint32_t lo = k % 2 ? keys[next() % n] : next();
-        const std::uint64_t len = k % 3 == 0 ? static_cast<std::uint32_t>(keys[next() % n] - lo) : next() + (k % 5 == 0 ? kCircle / 2 : 0);
+        const std::uint64_t len =
+            k % 3 == 0 ? static_cast<std::uint32_t>(keys[next() % n] - lo) : next() + (k % 5 == 0 ? kCircle / 2 : 0);
         cases.emplace_back(lo, std::min(len, kCircle));
       }
       for (const auto& [lo, len] : cases) {
@@ -190,8 +201,7 @@ TEST(HilbertOrder, SurvivesExtremeAndDegenerateBoxes) {
   EXPECT_TRUE(hilbert_order(nullptr, 0).empty());
 }
 
-double mean_step(const std::vector<Point>& pts, const std::vector<std::uint32_t>& order,
-                 std::uint32_t skip) {
+double mean_step(const std::vector<Point>& pts, const std::vector<std::uint32_t>& order, std::uint32_t skip) {
   double sum = 0;
   std::size_t steps = 0;
   for (std::size_t i = 1; i < order.size(); ++i) {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "predicates.hpp"
+#include "predicates/predicates.hpp"
 #include "ridt/predicates.hpp"
 
 namespace ridt::detail {
@@ -126,7 +126,7 @@ TEST(Incircle, CocircularIntegerPointsNear2To53) {
     EXPECT_EQ(incircle(a, b, d, {c, c - 5}), 0) << c;
     EXPECT_EQ(incircle(a, b, d, {c - 4, c - 3}), 0) << c;
     EXPECT_EQ(incircle(a, b, d, {c + 5, c + 1}), -1) << c;  // 26 > 25
-    EXPECT_EQ(incircle(a, b, d, {c + 4, c - 2}), 1) << c;   // 20 < 25
+    EXPECT_EQ(incircle(a, b, d, {c + 4, c - 2}), 1) << c;  // 20 < 25
   }
 }
 
@@ -163,8 +163,7 @@ TEST(Predicates, RescaledFilterAgreesWithIntegers) {
       const int o = orient2d(p[0], p[1], p[2]);
       ASSERT_EQ(o, orient2d_exact(p[0], p[1], p[2])) << scale << " " << trial;
       if (o <= 0) continue;
-      ASSERT_EQ(incircle(p[0], p[1], p[2], p[3]), incircle_exact(p[0], p[1], p[2], p[3]))
-          << scale << " " << trial;
+      ASSERT_EQ(incircle(p[0], p[1], p[2], p[3]), incircle_exact(p[0], p[1], p[2], p[3])) << scale << " " << trial;
       orients += 1;
       circles += incircle(p[0], p[1], p[2], p[3]) == 0;
     }

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "helpers.hpp"
-#include "order.hpp"
-#include "predicates.hpp"
+#include "order/order.hpp"
+#include "predicates/predicates.hpp"
 
 namespace ridt::test {
 namespace {
@@ -71,7 +71,7 @@ TEST(Regression, FiniteBoundingTriangleAroundTinyAndFlatSets) {
 TEST(Regression, FiniteBoundingTriangleLosingEveryTriangleSaysSo) {
   const double c = std::cos(1e-3), s = std::sin(1e-3);
   auto rotated = [&](double x, double y) { return Point{c * x - s * y, s * x + c * y}; };
-  const std::vector<Point> pts = {rotated(-3, 1), rotated(-3, -3), rotated(-3, -3), rotated(-3, -3),
+  const std::vector<Point> pts = {rotated(-3, 1),  rotated(-3, -3), rotated(-3, -3), rotated(-3, -3),
                                   rotated(-3, -3), rotated(-3, -3), rotated(-3, 2)};
   ASSERT_NE(detail::orient2d(pts[0], pts[1], pts[6]), 0);  // not collinear
   Options finite;

@@ -12,9 +12,9 @@
 #include <cstdlib>
 #include <thread>
 
-#include "generate.hpp"
 #include "helpers.hpp"
-#include "parallel.hpp"
+#include "ridt/generate.hpp"
+#include "runtime/parallel.hpp"
 
 namespace ridt::test {
 namespace {
@@ -25,9 +25,9 @@ struct Variant {
   const char* name;
 };
 constexpr Variant kVariants[] = {{Method::Pessimistic, false, "pessimistic"},
-                                  {Method::Pessimistic, true, "pessimistic_paper"},
-                                  {Method::Optimistic, false, "optimistic"},
-                                  {Method::Batch, false, "batch"}};
+                                 {Method::Pessimistic, true, "pessimistic_paper"},
+                                 {Method::Optimistic, false, "optimistic"},
+                                 {Method::Batch, false, "batch"}};
 constexpr unsigned kThreadCounts[] = {1, 2, 3, 4, 8};
 
 // Smaller under sanitizers, which run these tests many times slower.
@@ -39,8 +39,7 @@ constexpr int kN = 30000;
 
 std::vector<std::pair<std::string, std::vector<Point>>> inputs() {
   std::vector<std::pair<std::string, std::vector<Point>>> sets;
-  for (Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid,
-                         Distribution::Clusters})
+  for (Distribution d : {Distribution::Uniform, Distribution::Normal, Distribution::Grid, Distribution::Clusters})
     sets.emplace_back(to_string(d), generate(d, kN, 17));
   std::vector<Point> dup = generate(Distribution::Uniform, 2000, 3);
   for (int i = 0; i < 500; ++i) dup.push_back(dup[i * 3]);
@@ -49,8 +48,7 @@ std::vector<std::pair<std::string, std::vector<Point>>> inputs() {
   for (int i = 0; i < 1000; ++i) lines.push_back({double(i), 0}), lines.push_back({i + 0.5, 3});
   sets.emplace_back("two_lines", lines);
   std::vector<Point> circle;
-  for (int i = 0; i < 1000; ++i)
-    circle.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000)});
+  for (int i = 0; i < 1000; ++i) circle.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000)});
   sets.emplace_back("polygon", circle);
   sets.emplace_back("one_line", std::vector<Point>{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {5, 5}});
   sets.emplace_back("tiny", std::vector<Point>{{0, 0}, {1, 0}});
@@ -463,8 +461,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
 INSTANTIATE_TEST_SUITE_P(Methods, Workers, ::testing::ValuesIn(kVariants, kVariants + 3),
                          [](const auto& info) { return std::string(info.param.name); });
 
-
-// ---- The parked threads of on_threads (parallel.cpp) ----
+// ---- The parked threads of on_threads (runtime/parallel.cpp) ----
 
 // Every part runs once, on its own thread, and what the parts wrote is seen after the call;
 // a call from inside a part, or from two threads at once, starts its own threads and still
@@ -521,8 +518,7 @@ TEST(ParkedThreads, AForkedChildParksItsOwn) {
     bool same = false;
     try {
       same = triangulate(pts, o).triangles == parent.triangles;
-    } catch (...) {
-    }
+    } catch (...) {}
     ::_exit(same ? 0 : 1);
   }
   int status = 0;

@@ -5,15 +5,15 @@
 #include <cmath>
 #include <numeric>
 
-#include "generate.hpp"
 #include "helpers.hpp"
-#include "random.hpp"
+#include "order/random.hpp"
+#include "ridt/generate.hpp"
 
 namespace ridt::test {
 namespace {
 
-constexpr Distribution kDistributions[] = {Distribution::Uniform, Distribution::Normal,
-                                           Distribution::Grid, Distribution::Clusters};
+constexpr Distribution kDistributions[] = {Distribution::Uniform, Distribution::Normal, Distribution::Grid,
+                                           Distribution::Clusters};
 
 class EveryDistribution : public ::testing::TestWithParam<std::tuple<Distribution, int>> {};
 
@@ -28,11 +28,10 @@ TEST_P(EveryDistribution, PassesTheExactValidator) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, EveryDistribution,
-                         ::testing::Combine(::testing::ValuesIn(kDistributions),
-                                            ::testing::Values(10, 1000, 100000)),
+                         ::testing::Combine(::testing::ValuesIn(kDistributions), ::testing::Values(10, 1000, 100000)),
                          [](const auto& info) {
                            return std::string(to_string(std::get<0>(info.param))) + "_" +
-                                  std::to_string(std::get<1>(info.param));
+                               std::to_string(std::get<1>(info.param));
                          });
 
 TEST(Triangulate, SameTrianglesForEverySeed) {
@@ -195,8 +194,7 @@ TEST(Degenerate, PointsOnTwoLines) {
 
 TEST(Degenerate, RegularPolygon) {
   std::vector<Point> pts;
-  for (int i = 0; i < 1000; ++i)
-    pts.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000)});
+  for (int i = 0; i < 1000; ++i) pts.push_back({std::cos(2 * M_PI * i / 1000), std::sin(2 * M_PI * i / 1000)});
   const Triangulation t = triangulate_checked(pts);
   EXPECT_EQ(t.size(), 998u);
 }

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <vector>
 
-#include "generate.hpp"
 #include "helpers.hpp"
 #include "io.hpp"
+#include "ridt/generate.hpp"
 #include "ridt/voronoi.hpp"
 
 namespace ridt {
@@ -40,7 +40,8 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
   for (std::size_t k = 0; k < t.size(); ++k) {
     const Point& c = vd.vertices[k];
     double d[3];
-    for (int i = 0; i < 3; ++i) d[i] = std::hypot(pts[t.triangles[3 * k + i]].x - c.x, pts[t.triangles[3 * k + i]].y - c.y);
+    for (int i = 0; i < 3; ++i)
+      d[i] = std::hypot(pts[t.triangles[3 * k + i]].x - c.x, pts[t.triangles[3 * k + i]].y - c.y);
     EXPECT_NEAR(d[0], d[1], 1e-9 * d[0]);
     EXPECT_NEAR(d[0], d[2], 1e-9 * d[0]);
   }
@@ -58,7 +59,8 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
   }
   // Every site has a cell; cells of the distinct points, bounded ones convex around their site.
   double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
-  for (const Point& p : pts) x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  for (const Point& p : pts)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
   EXPECT_EQ(vd.cells(), pts.size() - t.duplicates.size());
   double tiled = 0;
   const double box = (x1 - x0) * (y1 - y0);
@@ -84,8 +86,7 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
   EXPECT_NEAR(tiled, box, 1e-9 * box);
 }
 
-INSTANTIATE_TEST_SUITE_P(Distributions, VoronoiOf,
-                         test::every_distribution(), test::distribution_name);
+INSTANTIATE_TEST_SUITE_P(Distributions, VoronoiOf, test::every_distribution(), test::distribution_name);
 
 TEST(Voronoi, ThreadsGiveTheSameDiagram) {
   // Enough triangles for each thread to take a stretch of them.
@@ -193,8 +194,11 @@ TEST(Voronoi, MergedInOnePassEqualsMergedAfter) {
     EXPECT_EQ(once.cell_offsets, after.cell_offsets);
     EXPECT_EQ(once.cell_vertices, after.cell_vertices);
     ASSERT_EQ(once.ridges.size(), after.ridges.size());
-    for (std::size_t k = 0; k < once.ridges.size(); ++k) EXPECT_TRUE(once.ridges[k].u == after.ridges[k].u && once.ridges[k].v == after.ridges[k].v);
-    if (d == Distribution::Grid) EXPECT_LT(once.vertices.size(), t.size());  // a grid's squares merged
+    for (std::size_t k = 0; k < once.ridges.size(); ++k)
+      EXPECT_TRUE(once.ridges[k].u == after.ridges[k].u && once.ridges[k].v == after.ridges[k].v);
+    if (d == Distribution::Grid) {
+      EXPECT_LT(once.vertices.size(), t.size());  // a grid's squares merged
+    }
   }
 }
 

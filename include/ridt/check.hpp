@@ -12,7 +12,7 @@ namespace ridt {
 /// The verdict of check().
 struct CheckResult {
   bool valid = false;
-  std::string message;       ///< one line: what was checked, or the first problem found
+  std::string message;  ///< one line: what was checked, or the first problem found
   std::size_t problems = 0;  ///< number of problems found
 };
 

@@ -28,16 +28,15 @@ struct Values {
 /// machine's hardware threads). Throws InputError for sizes that do not match.
 std::vector<double> interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
                                        std::span<const Point> queries,
-                                       double fill = std::numeric_limits<double>::quiet_NaN(),
-                                       unsigned threads = 1);
+                                       double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
 
 /// The same with Sibson's natural-neighbour coordinates: the share of each point's Voronoi
 /// cell that the query's cell would take were it inserted. Smooth (C1 away from the points),
 /// exact on linear functions up to rounding, equal to the data at the points; which points
 /// are natural neighbours is decided exactly (the in-circle predicate). On the hull's edges it
 /// is linear along the edge, its limit from inside.
-std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t,
-                                                 Values values, std::span<const Point> queries,
+std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
+                                                 std::span<const Point> queries,
                                                  double fill = std::numeric_limits<double>::quiet_NaN(),
                                                  unsigned threads = 1);
 
@@ -90,8 +89,8 @@ double doubled_area(const Point& a, const Point& b, const Point& c);
 /// coordinates, written as out[6 t .. 6 t + 6) = T row by row, then r. The determinant is
 /// exact (doubled_area); where the triangle is so thin that T's reciprocal condition number
 /// is below 2^-40, T's entries are NaN, as scipy's are for its near-degenerate simplices.
-void barycentric_transforms(std::span<const Point> points, std::span<const VertexId> triangles,
-                            std::span<double> out, unsigned threads = 1);
+void barycentric_transforms(std::span<const Point> points, std::span<const VertexId> triangles, std::span<double> out,
+                            unsigned threads = 1);
 
 /// Gradients for the cubic (Clough-Tocher) interpolant, as scipy's
 /// estimate_gradients_2d_global finds them: those that minimise, over the triangulation's
@@ -119,9 +118,8 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
 /// The piece is chosen and evaluated with the exact barycentric coordinates (barycentric), so
 /// at a data point the answer is its value. `fill` outside the hull; on threads.
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
-                               std::span<const double> gradients, std::span<const Point> queries,
-                               std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(),
-                               unsigned threads = 1);
+                               std::span<const double> gradients, std::span<const Point> queries, std::span<double> out,
+                               double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, const Grid& grid, std::span<double> out,
                                double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);

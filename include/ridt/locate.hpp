@@ -18,9 +18,8 @@ namespace ridt {
 /// Hilbert curve, each walk starting where the last one ended, so sorted and unsorted queries
 /// cost about the same; `threads` threads (0: the machine's hardware threads) take a share of
 /// them each. Throws InputError when the arrays' sizes do not match.
-void locate(std::span<const Point> points, std::span<const VertexId> triangles,
-            std::span<const std::int32_t> neighbors, std::span<const Point> queries,
-            std::span<std::int32_t> out, unsigned threads = 1);
+void locate(std::span<const Point> points, std::span<const VertexId> triangles, std::span<const std::int32_t> neighbors,
+            std::span<const Point> queries, std::span<std::int32_t> out, unsigned threads = 1);
 
 /// The same for a Triangulation of `points`, returning the answers.
 std::vector<std::int32_t> locate(std::span<const Point> points, const Triangulation& triangulation,

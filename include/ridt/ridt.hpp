@@ -20,6 +20,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ridt {
@@ -38,10 +39,13 @@ inline constexpr std::int32_t kNoNeighbor = -1;
 
 /// Who drives the insertion kernel.
 enum class Method {
-  Serial,       ///< one thread, the paper's Fig. 4
+  /// Serial on one thread (or with Experiment::profile); on more, Partition where the order
+  /// and the location allow it, else Optimistic. Stats::method says which ran.
+  Auto,
+  Serial,  ///< one thread, the paper's Fig. 4
   Pessimistic,  ///< threads share one triangulation; one critical section for the leaf step (Fig. 10)
-  Optimistic,   ///< threads lock only the triangles an insertion changes (try-lock, back off)
-  Batch,        ///< threads - 1 locators queue DAG nodes for one modifier thread
+  Optimistic,  ///< threads lock only the triangles an insertion changes (try-lock, back off)
+  Batch,  ///< threads - 1 locators queue DAG nodes for one modifier thread
   /// Threads own regions of the plane (stretches of each BRIO round's curve) and insert into
   /// one mesh without a lock and without a DAG; the points near a region's border go to a
   /// second pass with other borders, and what is left to one thread. BRIO order, walking.
@@ -51,13 +55,13 @@ enum class Method {
 /// The order in which points are inserted.
 enum class Order {
   Random,  ///< a uniformly random permutation: the paper's order
-  Brio,    ///< biased randomized: random rounds of doubling size, each along a Hilbert curve
+  Brio,  ///< biased randomized: random rounds of doubling size, each along a Hilbert curve
 };
 
 /// How an insertion finds the triangle that holds its point.
 enum class Locate {
   Auto,  ///< Walk where the method and the order allow it, else Dag
-  Dag,   ///< descend the history DAG in rounds along a curve (serial and the paper's methods)
+  Dag,  ///< descend the history DAG in rounds along a curve (serial and the paper's methods)
   Walk,  ///< walk from the last insertion; keeps no DAG (serial and partition, BRIO order)
   /// The paper's own location: every point descends the history DAG from its root when its
   /// turn comes, with no rounds and no look-ahead (serial and the paper's three methods).
@@ -67,7 +71,7 @@ enum class Locate {
 /// The starting triangle that encloses every point.
 enum class Bounding {
   Symbolic,  ///< vertices at infinity, decided combinatorially: the hull is always complete
-  Finite,    ///< the paper's (K,0), (0,K), (-K,-K) around the box centre, K = k * box size
+  Finite,  ///< the paper's (K,0), (0,K), (-K,-K) around the box centre, K = k * box size
 };
 
 /// Switches for the paper's experiments (section 4) and their variants. A user who wants the
@@ -91,8 +95,8 @@ struct Experiment {
 /// Options of a triangulation. Every choice gives the same triangles; they differ in speed.
 struct Options {
   Method method = Method::Serial;
-  /// Threads of a threaded method; 0 = the machine's hardware threads. Batch: threads - 1
-  /// locators and one modifier.
+  /// Threads of a threaded method (at most kMaxThreads); 0 = the machine's hardware threads.
+  /// Batch: threads - 1 locators and one modifier.
   unsigned threads = 0;
   std::uint64_t seed = 1;  ///< seed of the random insertion order
   Order order = Order::Brio;
@@ -111,43 +115,44 @@ struct Options {
 /// What one thread did (the paper's Tables 2 and 3, per thread).
 struct ThreadStats {
   std::string role = "worker";  ///< "worker"; batch: "modifier" or "locator"
-  std::uint64_t points = 0;     ///< points it inserted (a locator: located; duplicates included)
-  double time_insert_s = 0;     ///< from its start to its end
-  double time_critical_s = 0;   ///< pessimistic: holding the lock; optimistic: holding triangles
+  std::uint64_t points = 0;  ///< points it inserted (a locator: located; duplicates included)
+  double time_insert_s = 0;  ///< from its start to its end
+  double time_critical_s = 0;  ///< pessimistic: holding the lock; optimistic: holding triangles
   /// Pessimistic: waiting for the lock; optimistic: backing off after a failed try-lock; both
   /// also waiting for the others at the end of a round. Batch: the modifier waiting for a
   /// hint, a locator waiting for room in the queue.
   double time_wait_s = 0;
-  std::uint64_t retries = 0;    ///< optimistic: insertions restarted after a failed try-lock
+  std::uint64_t retries = 0;  ///< optimistic: insertions restarted after a failed try-lock
 };
 
 /// Counters and timings of one run.
 struct Stats {
-  unsigned threads = 1;          ///< threads that inserted points
-  std::uint64_t points = 0;      ///< input points
-  std::uint64_t distinct = 0;    ///< distinct points
+  unsigned threads = 1;  ///< threads that inserted points
+  std::uint64_t points = 0;  ///< input points
+  std::uint64_t distinct = 0;  ///< distinct points
   std::uint64_t duplicates = 0;  ///< input points dropped as duplicates
-  std::uint64_t dag_nodes = 0;   ///< triangle records made (each one a node of the history DAG); 0 when walking
+  std::uint64_t dag_nodes = 0;  ///< triangle records made (each one a node of the history DAG); 0 when walking
   /// Edge flips during legalization. Walking (cavity insertion): the flips the same insertions
   /// would have made, the triangles each cavity replaced beyond the first.
   std::uint64_t flips = 0;
-  std::uint64_t edge_splits = 0; ///< points inserted on an edge (2 -> 4 splits); 0 when walking
-  double time_triangulate_s = 0; ///< the whole call: set-up, insertion, finish
-  double time_insert_s = 0;      ///< wall time of the insertion phase
-  double time_critical_s = 0;    ///< summed over threads (threaded methods, Experiment::time_threads)
-  double time_wait_s = 0;        ///< summed over threads (threaded methods, Experiment::time_threads)
+  std::uint64_t edge_splits = 0;  ///< points inserted on an edge (2 -> 4 splits); 0 when walking
+  double time_triangulate_s = 0;  ///< the whole call: set-up, insertion, finish
+  double time_insert_s = 0;  ///< wall time of the insertion phase
+  double time_critical_s = 0;  ///< summed over threads (threaded methods, Experiment::time_threads)
+  double time_wait_s = 0;  ///< summed over threads (threaded methods, Experiment::time_threads)
   /// Optimistic: insertions restarted after a failed try-lock; partition: points put off to a
   /// later pass because they met another thread's region.
   std::uint64_t retries = 0;
-  Locate locate = Locate::Dag;   ///< the location used (Locate::Auto made definite)
-  double time_idle_s = 0;        ///< batch: the modifier waiting for hints
-  double time_stall_s = 0;       ///< batch: locators waiting for room in the queue, summed
-  double queue_depth_mean = 0;   ///< batch: hints queued ahead of the modifier, on average
-  std::uint64_t stale_hints = 0; ///< batch: hints no longer a leaf when the modifier took them
+  Method method = Method::Serial;  ///< the method that ran (Method::Auto made definite)
+  Locate locate = Locate::Dag;  ///< the location used (Locate::Auto made definite)
+  double time_idle_s = 0;  ///< batch: the modifier waiting for hints
+  double time_stall_s = 0;  ///< batch: locators waiting for room in the queue, summed
+  double queue_depth_mean = 0;  ///< batch: hints queued ahead of the modifier, on average
+  std::uint64_t stale_hints = 0;  ///< batch: hints no longer a leaf when the modifier took them
   std::vector<ThreadStats> per_thread;
-  double time_locate_s = 0;      ///< only with Experiment::profile
-  double time_split_s = 0;       ///< only with Experiment::profile
-  double time_legalize_s = 0;    ///< only with Experiment::profile
+  double time_locate_s = 0;  ///< only with Experiment::profile
+  double time_split_s = 0;  ///< only with Experiment::profile
+  double time_legalize_s = 0;  ///< only with Experiment::profile
 };
 
 /// A dropped duplicate input point and the input index that stands for it (the smallest
@@ -159,10 +164,10 @@ struct Duplicate {
 
 /// The result: flat arrays, as plain data.
 struct Triangulation {
-  std::vector<VertexId> triangles;     ///< #T by 3, counter-clockwise
-  std::vector<std::int32_t> neighbors; ///< #T by 3, neighbour i across from vertex i, -1 on the hull
-  std::vector<VertexId> hull;          ///< convex hull, counter-clockwise, collinear hull points included
-  std::vector<Duplicate> duplicates;   ///< sorted by `dropped`
+  std::vector<VertexId> triangles;  ///< #T by 3, counter-clockwise
+  std::vector<std::int32_t> neighbors;  ///< #T by 3, neighbour i across from vertex i, -1 on the hull
+  std::vector<VertexId> hull;  ///< convex hull, counter-clockwise, collinear hull points included
+  std::vector<Duplicate> duplicates;  ///< sorted by `dropped`
   /// Why the triangulation is empty ("fewer than three distinct points", "all points are
   /// collinear"), or a problem of Bounding::Finite ("hull edge lost"); empty when all is well.
   std::string warning;
@@ -176,6 +181,137 @@ class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// The most threads a run takes (Options::threads).
+inline constexpr unsigned kMaxThreads = 1024;
+
+/// One value of an option and the name the tool, the Python package, the tests and the
+/// benchmarks give it, with a line of help.
+template <class E>
+struct Named {
+  std::string_view name;
+  E value;
+  std::string_view help;
+};
+
+/// The names of each option's values: their one definition (`option` names the option in a
+/// message). names<E>() lists them, to_string(e) names one, parse<E>(text) reads one.
+template <class E>
+struct OptionNames;
+
+template <>
+struct OptionNames<Method> {
+  static constexpr std::string_view option = "method";
+  static constexpr Named<Method> values[] = {
+      {"auto", Method::Auto, "serial on one thread, else partition where it can run, else optimistic"},
+      {"serial", Method::Serial, "one thread, the paper's Fig. 4"},
+      {"pessimistic", Method::Pessimistic, "the paper's: threads share the DAG, one lock for the leaf step"},
+      {"optimistic", Method::Optimistic, "the paper's: threads lock only the triangles they change"},
+      {"batch", Method::Batch, "the paper's: threads - 1 locators feed one modifier"},
+      {"partition", Method::Partition, "threads own regions of the plane; no lock, no DAG"},
+  };
+};
+
+template <>
+struct OptionNames<Order> {
+  static constexpr std::string_view option = "order";
+  static constexpr Named<Order> values[] = {
+      {"brio", Order::Brio, "random rounds, each along a Hilbert curve"},
+      {"random", Order::Random, "a uniformly random permutation, the paper's"},
+  };
+};
+
+template <>
+struct OptionNames<Locate> {
+  static constexpr std::string_view option = "location";
+  static constexpr Named<Locate> values[] = {
+      {"auto", Locate::Auto, "walk where the method and the order allow it, else dag"},
+      {"dag", Locate::Dag, "the history DAG, in rounds along a curve"},
+      {"walk", Locate::Walk, "from the last insertion, no DAG (serial and partition, brio order)"},
+      {"root", Locate::Root, "the paper's: every point descends the DAG from its root"},
+  };
+};
+
+template <>
+struct OptionNames<Bounding> {
+  static constexpr std::string_view option = "bounding";
+  static constexpr Named<Bounding> values[] = {
+      {"symbolic", Bounding::Symbolic, "vertices at infinity: the hull is always complete"},
+      {"finite", Bounding::Finite, "the paper's triangle, k times the box; can lose hull edges"},
+  };
+};
+
+/// Every value of option type E with its name and help.
+template <class E>
+constexpr std::span<const Named<E>> names() {
+  return OptionNames<E>::values;
+}
+
+/// The name of `value` ("partition" for Method::Partition).
+template <class E>
+constexpr std::string_view to_string(E value) {
+  for (const Named<E>& n : names<E>())
+    if (n.value == value) return n.name;
+  return "?";
+}
+
+/// "a, b or c": the names of E's values, for a message.
+template <class E>
+std::string name_list() {
+  std::string list;
+  const std::span<const Named<E>> all = names<E>();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    list += std::string(i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + std::string(all[i].name);
+  return list;
+}
+
+/// The value named `text`; throws InputError naming the choices when there is none.
+template <class E>
+E parse(std::string_view text) {
+  for (const Named<E>& n : names<E>())
+    if (n.name == text) return n.value;
+  throw InputError("unknown " + std::string(OptionNames<E>::option) + " '" + std::string(text) + "' (use " +
+                   name_list<E>() + ")");
+}
+
+/// Calls visit(name, member) for each counter and time of Stats (not per_thread), in the order
+/// the tool prints them: the one list the tool, the Python package and the benchmarks read.
+/// A member is a pointer to a field of Stats: `stats.*member` is its value.
+template <class Visit>
+constexpr void for_each_stat(Visit&& visit) {
+  visit("method", &Stats::method);
+  visit("threads", &Stats::threads);
+  visit("locate", &Stats::locate);
+  visit("points", &Stats::points);
+  visit("distinct", &Stats::distinct);
+  visit("duplicates", &Stats::duplicates);
+  visit("dag_nodes", &Stats::dag_nodes);
+  visit("flips", &Stats::flips);
+  visit("edge_splits", &Stats::edge_splits);
+  visit("retries", &Stats::retries);
+  visit("time_triangulate_s", &Stats::time_triangulate_s);
+  visit("time_insert_s", &Stats::time_insert_s);
+  visit("time_critical_s", &Stats::time_critical_s);
+  visit("time_wait_s", &Stats::time_wait_s);
+  visit("time_idle_s", &Stats::time_idle_s);
+  visit("time_stall_s", &Stats::time_stall_s);
+  visit("queue_depth_mean", &Stats::queue_depth_mean);
+  visit("stale_hints", &Stats::stale_hints);
+  visit("time_locate_s", &Stats::time_locate_s);
+  visit("time_split_s", &Stats::time_split_s);
+  visit("time_legalize_s", &Stats::time_legalize_s);
+}
+
+/// The same for each thread's ThreadStats.
+template <class Visit>
+constexpr void for_each_thread_stat(Visit&& visit) {
+  visit("role", &ThreadStats::role);
+  visit("points", &ThreadStats::points);
+  visit("retries", &ThreadStats::retries);
+  visit("time_insert_s", &ThreadStats::time_insert_s);
+  visit("time_critical_s", &ThreadStats::time_critical_s);
+  visit("time_wait_s", &ThreadStats::time_wait_s);
+}
 
 /// Triangulates `points`; the library copies what it keeps.
 Triangulation triangulate(std::span<const Point> points, const Options& options = {});

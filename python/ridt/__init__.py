@@ -16,8 +16,8 @@ from ._api import check, triangulate
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
-                           NaturalNeighborInterpolator, NearestNDInterpolator, Voronoi, estimate_gradients_2d_global,
-                           griddata)
+                           NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
+from ._voronoi import Voronoi
 
 __version__ = "0.1.0"
 

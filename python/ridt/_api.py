@@ -12,9 +12,11 @@ from . import _core
 
 ProgressLike = Union[Callable[[float], Any], Any, None]
 
-METHODS = ("auto", "serial", "pessimistic", "optimistic", "batch", "partition")
-ORDERS = ("brio", "random")
-LOCATES = ("auto", "dag", "walk", "root")
+# Each option's names, as the library defines them.
+METHODS = _core.NAMES["method"]
+ORDERS = _core.NAMES["order"]
+LOCATES = _core.NAMES["location"]
+BOUNDINGS = _core.NAMES["bounding"]
 
 
 def as_points(points: Any, name: str = "points", what: str = "ridt") -> np.ndarray:
@@ -55,8 +57,8 @@ def thread_count(threads: Any) -> int:
     threads = int(threads)
     if threads == -1:
         return 0
-    if threads < 0 or threads > 4096:
-        raise ValueError(f"threads must be 1 to 4096, or 0 or -1 for every core; got {threads}")
+    if threads < 0 or threads > _core.MAX_THREADS:
+        raise ValueError(f"threads must be 1 to {_core.MAX_THREADS}, or 0 or -1 for every core; got {threads}")
     return threads
 
 
@@ -66,18 +68,6 @@ def _choice(value: Any, name: str, choices: Tuple[str, ...]) -> str:
     if value not in choices:
         raise ValueError(f"{name} must be one of {', '.join(repr(c) for c in choices)}; got {value!r}")
     return value
-
-
-def resolve_method(method: str, threads: int, order: str, locate: str) -> str:
-    """'auto': serial on one thread; on more, partition where it can run (BRIO order, no DAG),
-    else optimistic."""
-    if method != "auto":
-        return method
-    if threads == 1:
-        return "serial"
-    if order == "brio" and locate in ("auto", "walk"):
-        return "partition"
-    return "optimistic"
 
 
 def progress_callback(progress: ProgressLike, n: int) -> Optional[Callable[[float], None]]:
@@ -124,7 +114,8 @@ def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: s
         Any real dtype and memory layout; every coordinate finite.
     method : {'auto', 'serial', 'partition', 'pessimistic', 'optimistic', 'batch'}
         'auto' is 'serial' on one thread and 'partition' (threads own regions of the plane,
-        no lock) on more.
+        no lock) on more where the order and location allow it, else 'optimistic'; the
+        triangulation's ``stats['method']`` says which ran.
     threads : int
         Threads of a threaded method; 0 or -1 for every core.
     order : {'brio', 'random'}
@@ -158,7 +149,7 @@ def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str =
     method = _choice(method, "method", METHODS)
     order = _choice(order, "order", ORDERS)
     locate = _choice(locate, "locate", LOCATES)
-    _choice(bounding, "bounding", ("symbolic", "finite"))
+    _choice(bounding, "bounding", BOUNDINGS)
     nthreads = thread_count(threads)
     if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or not 0 <= int(seed) < 2**64:
         raise ValueError(f"seed must be an integer from 0 to 2**64 - 1; got {seed!r}")
@@ -166,7 +157,7 @@ def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str =
         raise ValueError(f"k must be a finite number of at least 2; got {k!r}")
     if pts.shape[0] >= 2**31:
         raise ValueError(f"ridt takes fewer than 2**31 points; got {pts.shape[0]}")
-    return _core.triangulate(pts, resolve_method(method, nthreads, order, locate), nthreads, order, locate,
+    return _core.triangulate(pts, method, nthreads, order, locate,
                              int(seed), bounding, float(k), bool(canonical),
                              progress_callback(progress, pts.shape[0]), bool(furthest_site))
 

@@ -5,6 +5,9 @@ from typing import Any, Callable, Dict, List, Optional, Tuple
 import numpy as np
 import numpy.typing as npt
 
+NAMES: Dict[str, Tuple[str, ...]]
+MAX_THREADS: int
+
 class InputError(ValueError): ...
 
 class Triangulation:

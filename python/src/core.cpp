@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "ridt/check.hpp"
@@ -27,18 +27,8 @@ namespace {
 
 using Points = py::array_t<double, py::array::c_style>;
 
-template <class E>
-E parse(const std::map<std::string, E>& names, const std::string& what, const std::string& value) {
-  const auto it = names.find(value);
-  if (it != names.end()) return it->second;
-  std::string known;
-  for (const auto& [name, e] : names) known += (known.empty() ? "" : ", ") + ("'" + name + "'");
-  throw py::value_error(what + " must be one of " + known + ", not '" + value + "'");
-}
-
 std::span<const ridt::Point> as_points(const Points& a, const char* name) {
-  if (a.ndim() != 2 || a.shape(1) != 2)
-    throw py::value_error(std::string(name) + " must have shape (n, 2)");
+  if (a.ndim() != 2 || a.shape(1) != 2) throw py::value_error(std::string(name) + " must have shape (n, 2)");
   return {reinterpret_cast<const ridt::Point*>(a.data()), static_cast<std::size_t>(a.shape(0))};
 }
 
@@ -54,53 +44,44 @@ auto buffer(Get get, std::size_t cols) {
   };
 }
 
+// A value of Stats or ThreadStats for Python: an option's name, else the value itself.
+template <class T>
+py::object stat_value(const T& v) {
+  if constexpr (std::is_enum_v<T>)
+    return py::str(std::string(ridt::to_string(v)));
+  else
+    return py::cast(v);
+}
+
 py::dict stats_dict(const ridt::Stats& s) {
-  static const char* locate_names[] = {"auto", "dag", "walk", "root"};
   py::dict d;
-  d["threads"] = s.threads;
-  d["points"] = s.points;
-  d["distinct"] = s.distinct;
-  d["duplicates"] = s.duplicates;
-  d["locate"] = locate_names[static_cast<int>(s.locate)];
-  d["dag_nodes"] = s.dag_nodes;
-  d["flips"] = s.flips;
-  d["edge_splits"] = s.edge_splits;
-  d["retries"] = s.retries;
-  d["time_triangulate_s"] = s.time_triangulate_s;
-  d["time_insert_s"] = s.time_insert_s;
-  d["time_critical_s"] = s.time_critical_s;
-  d["time_wait_s"] = s.time_wait_s;
+  ridt::for_each_stat([&](const char* name, auto member) { d[name] = stat_value(s.*member); });
   py::list per_thread;
   for (const ridt::ThreadStats& t : s.per_thread) {
     py::dict e;
-    e["role"] = t.role;
-    e["points"] = t.points;
-    e["time_insert_s"] = t.time_insert_s;
-    e["time_critical_s"] = t.time_critical_s;
-    e["time_wait_s"] = t.time_wait_s;
-    e["retries"] = t.retries;
+    ridt::for_each_thread_stat([&](const char* name, auto member) { e[name] = stat_value(t.*member); });
     per_thread.append(e);
   }
   d["per_thread"] = per_thread;
   return d;
 }
 
-ridt::Triangulation run(const Points& points, const std::string& method, unsigned threads,
-                        const std::string& order, const std::string& locate, std::uint64_t seed,
-                        const std::string& bounding, double k, bool canonical, py::object progress,
-                        bool furthest_site) {
+// Every option's names, as the library defines them: {"method": ("auto", "serial", ...), ...}.
+template <class E>
+void add_names(py::dict& d) {
+  py::list names;
+  for (const ridt::Named<E>& n : ridt::names<E>()) names.append(std::string(n.name));
+  d[std::string(ridt::OptionNames<E>::option).c_str()] = py::tuple(names);
+}
+
+ridt::Triangulation run(const Points& points, const std::string& method, unsigned threads, const std::string& order,
+                        const std::string& locate, std::uint64_t seed, const std::string& bounding, double k,
+                        bool canonical, py::object progress, bool furthest_site) {
   ridt::Options o;
-  o.method = parse<ridt::Method>({{"serial", ridt::Method::Serial},
-                                  {"pessimistic", ridt::Method::Pessimistic},
-                                  {"optimistic", ridt::Method::Optimistic},
-                                  {"batch", ridt::Method::Batch},
-                                  {"partition", ridt::Method::Partition}},
-                                 "method", method);
-  o.order = parse<ridt::Order>({{"brio", ridt::Order::Brio}, {"random", ridt::Order::Random}}, "order", order);
-  o.locate = parse<ridt::Locate>({{"auto", ridt::Locate::Auto}, {"dag", ridt::Locate::Dag}, {"walk", ridt::Locate::Walk}, {"root", ridt::Locate::Root}},
-                                 "locate", locate);
-  o.experiment.bounding = parse<ridt::Bounding>({{"symbolic", ridt::Bounding::Symbolic}, {"finite", ridt::Bounding::Finite}},
-                                     "bounding", bounding);
+  o.method = ridt::parse<ridt::Method>(method);
+  o.order = ridt::parse<ridt::Order>(order);
+  o.locate = ridt::parse<ridt::Locate>(locate);
+  o.experiment.bounding = ridt::parse<ridt::Bounding>(bounding);
   o.threads = threads;
   o.seed = seed;
   o.experiment.k = k;
@@ -195,23 +176,21 @@ py::list lists(const py::array_t<std::int32_t, py::array::c_style>& flat,
   return out;
 }
 
-}  // namespace
-
-PYBIND11_MODULE(_core, m) {
-  m.doc() = "ridt's C++ library (use the ridt package, which checks and converts arguments)";
-  py::register_exception<ridt::InputError>(m, "InputError", PyExc_ValueError);
-
+void bind_triangulation(py::module_& m) {
   py::class_<ridt::Triangulation>(m, "Triangulation", R"doc(
 The Delaunay triangulation of a point set, as computed by ridt.triangulate().
 
 Its arrays are views of the library's own buffers, not copies; each keeps the
 Triangulation alive.
 )doc")
-      .def_property_readonly("triangles", buffer<ridt::VertexId>([](const ridt::Triangulation& t) { return std::span(t.triangles); }, 3),
-                             "(ntriangles, 3) uint32: vertex indices into the points, counter-clockwise")
-      .def_property_readonly("neighbors", buffer<std::int32_t>([](const ridt::Triangulation& t) { return std::span(t.neighbors); }, 3),
-                             "(ntriangles, 3) int32: neighbors[k, i] is the triangle across from vertex i, -1 on the hull")
-      .def_property_readonly("hull", buffer<ridt::VertexId>([](const ridt::Triangulation& t) { return std::span(t.hull); }, 1),
+      .def_property_readonly(
+          "triangles", buffer<ridt::VertexId>([](const ridt::Triangulation& t) { return std::span(t.triangles); }, 3),
+          "(ntriangles, 3) uint32: vertex indices into the points, counter-clockwise")
+      .def_property_readonly(
+          "neighbors", buffer<std::int32_t>([](const ridt::Triangulation& t) { return std::span(t.neighbors); }, 3),
+          "(ntriangles, 3) int32: neighbors[k, i] is the triangle across from vertex i, -1 on the hull")
+      .def_property_readonly("hull",
+                             buffer<ridt::VertexId>([](const ridt::Triangulation& t) { return std::span(t.hull); }, 1),
                              "(nhull,) uint32: the convex hull's vertices, counter-clockwise, collinear ones included")
       .def_property_readonly("duplicates",
                              buffer<ridt::VertexId>(
@@ -222,14 +201,17 @@ Triangulation alive.
                                  },
                                  2),
                              "(nduplicates, 2) uint32: rows (dropped, kept): a point left out and the equal point kept")
-      .def_property_readonly("warning", [](const ridt::Triangulation& t) { return t.warning; },
-                             "why the triangulation is empty ('' when it is not)")
-      .def_property_readonly("stats", [](const ridt::Triangulation& t) { return stats_dict(t.stats); },
-                             "counters and timings of the run")
+      .def_property_readonly(
+          "warning", [](const ridt::Triangulation& t) { return t.warning; },
+          "why the triangulation is empty ('' when it is not)")
+      .def_property_readonly(
+          "stats", [](const ridt::Triangulation& t) { return stats_dict(t.stats); }, "counters and timings of the run")
       .def("__len__", &ridt::Triangulation::size);
+}
 
+void bind_incremental(py::module_& m) {
   py::class_<ridt::IncrementalTriangulation>(m, "Incremental",
-                                              "A triangulation that takes more points (ridt.Delaunay's add_points)")
+                                             "A triangulation that takes more points (ridt.Delaunay's add_points)")
       .def(py::init([](const Points& points, const ridt::Triangulation& t) {
              const auto pts = as_points(points, "points");
              py::gil_scoped_release nogil;
@@ -244,13 +226,17 @@ Triangulation alive.
             self.add(pts);
           },
           py::arg("points"))
-      .def("triangulation", [](const ridt::IncrementalTriangulation& self) { return self.triangulation(); },
-           "a copy of the triangulation of every point so far");
+      .def(
+          "triangulation", [](const ridt::IncrementalTriangulation& self) { return self.triangulation(); },
+          "a copy of the triangulation of every point so far");
 
   m.def("triangulate", &run, py::arg("points"), py::arg("method"), py::arg("threads"), py::arg("order"),
         py::arg("locate"), py::arg("seed"), py::arg("bounding"), py::arg("k"), py::arg("canonical"),
         py::arg("progress"), py::arg("furthest_site") = false);
+}
 
+// Location in a finished triangulation, and the validator.
+void bind_queries(py::module_& m) {
   m.def(
       "locate",
       [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
@@ -282,7 +268,41 @@ Triangulation alive.
         return py::make_tuple(r.valid, r.message, r.problems);
       },
       py::arg("points"), py::arg("triangles"), py::arg("furthest_site") = false);
+}
 
+// Per point and per triangle: the nearest vertex of each query, each triangle's transform.
+void bind_nearest(py::module_& m) {
+  m.def(
+      "nearest",
+      [](const Points& points, const ridt::Triangulation& t, const Points& queries, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        const auto q = as_points(queries, "queries");
+        std::vector<std::int32_t> out;
+        {
+          py::gil_scoped_release nogil;
+          out = ridt::nearest_vertex(pts, t, q, threads);
+        }
+        return py::array_t<std::int32_t>(out.size(), out.data());
+      },
+      py::arg("points"), py::arg("triangulation"), py::arg("queries"), py::arg("threads"));
+
+  m.def(
+      "transforms",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles, unsigned threads) {
+        const auto pts = as_points(points, "points");
+        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
+        py::array_t<double> out({static_cast<py::ssize_t>(t.size() / 3), py::ssize_t{3}, py::ssize_t{2}});
+        const std::span<double> o(out.mutable_data(), t.size() * 2);
+        {
+          py::gil_scoped_release nogil;
+          ridt::barycentric_transforms(pts, t, o, threads);
+        }
+        return out;
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("threads"));
+}
+
+void bind_voronoi(py::module_& m) {
   m.def(
       "voronoi",
       [](const Points& points, const ridt::Triangulation& t, unsigned threads) {
@@ -316,7 +336,9 @@ Triangulation alive.
   m.def("lists", &lists, py::arg("flat"), py::arg("offsets"), py::arg("ints"),
         "Rows of `flat` as a list of lists: row r is flat[offsets[r]:offsets[r + 1]]; each value v >= 0\n"
         "is the object ints[v] (shared, not a new int), -1 is -1.");
+}
 
+void bind_interpolation(py::module_& m) {
   m.def(
       "interpolate",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& queries, double fill,
@@ -330,15 +352,15 @@ Triangulation alive.
   m.def(
       "interpolate_grid",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
-         bool x_major, double fill, const std::string& method, unsigned threads, const std::optional<Points>& gradients) {
+         bool x_major, double fill, const std::string& method, unsigned threads,
+         const std::optional<Points>& gradients) {
         if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
-        const ridt::Grid g{{x.data(), static_cast<std::size_t>(x.size())},
-                           {y.data(), static_cast<std::size_t>(y.size())},
-                           x_major};
+        const ridt::Grid g{
+            {x.data(), static_cast<std::size_t>(x.size())}, {y.data(), static_cast<std::size_t>(y.size())}, x_major};
         return interpolate_at(points, t, values, g, g.size(), fill, method, threads, gradients);
       },
-      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"),
-      py::arg("x_major"), py::arg("fill"), py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
+      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("x_major"),
+      py::arg("fill"), py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
 
   m.def(
       "estimate_gradients",
@@ -359,36 +381,26 @@ Triangulation alive.
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("tol"), py::arg("maxiter"),
       py::arg("threads") = 1u);
+}
 
-  m.def(
-      "nearest",
-      [](const Points& points, const ridt::Triangulation& t, const Points& queries, unsigned threads) {
-        const auto pts = as_points(points, "points");
-        const auto q = as_points(queries, "queries");
-        std::vector<std::int32_t> out;
-        {
-          py::gil_scoped_release nogil;
-          out = ridt::nearest_vertex(pts, t, q, threads);
-        }
-        return py::array_t<std::int32_t>(out.size(), out.data());
-      },
-      py::arg("points"), py::arg("triangulation"), py::arg("queries"), py::arg("threads"));
+}  // namespace
 
-  m.def(
-      "transforms",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles, unsigned threads) {
-        const auto pts = as_points(points, "points");
-        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
-        py::array_t<double> out({static_cast<py::ssize_t>(t.size() / 3), py::ssize_t{3}, py::ssize_t{2}});
-        const std::span<double> o(out.mutable_data(), t.size() * 2);
-        {
-          py::gil_scoped_release nogil;
-          ridt::barycentric_transforms(pts, t, o, threads);
-        }
-        return out;
-      },
-      py::arg("points"), py::arg("triangles"), py::arg("threads"));
-
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "ridt's C++ library (use the ridt package, which checks and converts arguments)";
+  py::register_exception<ridt::InputError>(m, "InputError", PyExc_ValueError);
+  py::dict names;
+  add_names<ridt::Method>(names);
+  add_names<ridt::Order>(names);
+  add_names<ridt::Locate>(names);
+  add_names<ridt::Bounding>(names);
+  m.attr("NAMES") = names;
+  m.attr("MAX_THREADS") = ridt::kMaxThreads;
+  bind_triangulation(m);
+  bind_incremental(m);
+  bind_queries(m);
+  bind_nearest(m);
+  bind_voronoi(m);
+  bind_interpolation(m);
   m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
   m.def("cached_memory", &ridt::cached_memory);
 }

@@ -3,9 +3,11 @@
 // formatted with std::to_chars into a large buffer and written to a temporary file beside the
 // target, which is renamed onto the target only when complete.
 //
-// This file picks the format by the file's extension; each format lives in its own io_*.cpp.
+// The format comes from the file's extension, through the registry (formats.cpp); each format
+// lives in its own io_*.cpp.
 #include "io.hpp"
 
+#include "formats.hpp"
 #include "io_common.hpp"
 
 namespace ridt::io {
@@ -19,22 +21,13 @@ PointFile read_points(const std::string& path) {
 }
 
 PointFile parse_points(std::string_view data, const std::string& name) {
-  const std::string ext = extension_of(name);
-  if (ext == ".node") return read_node(name, data);
-  if (ext == ".bin") return read_bin_points(name, data);
-  return read_text_points(name, data);
+  return format_of(name, &Format::read_points, "point input").read_points(name, data);
 }
 
 void write_points(const std::string& path, std::span<const Point> points) {
-  const std::string ext = extension_of(path);
+  const Format& f = format_of(path, &Format::write_points, "point output");
   Writer out(path);
-  if (ext == ".bin") {
-    write_bin_points(out, points);
-  } else if (ext == ".node") {
-    write_node(out, points);
-  } else {
-    write_text_points(out, points);
-  }
+  f.write_points(out, points);
   out.commit();
 }
 
@@ -69,51 +62,15 @@ std::vector<VertexId> read_parts(const std::string& path) {
   return out;
 }
 
-std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,
-                                      int first_index) {
-  const std::string ext = extension_of(name);
-  if (ext == ".ele") return read_ele(name, data, first_index);
-  if (ext == ".bin") return read_bin_triangles(name, data);
-  return read_text_triangles(name, data, first_index);
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index) {
+  return format_of(name, &Format::read_triangles, "triangle input").read_triangles(name, data, first_index);
 }
 
-void check_triangulation_extension(const std::string& path) {
-  const std::string ext = extension_of(path);
-  for (const char* known : {".ele", ".neigh", ".off", ".obj", ".svg", ".bin"})
-    if (ext == known) return;
-  throw IoError("unknown output extension '" + ext +
-                "' (use .ele, .neigh, .off, .obj, .svg or .bin)");
-}
+void check_triangulation_extension(const std::string& path) { format_of(path, &Format::write_triangulation, "output"); }
 
-void write_triangulation(const std::string& path, std::span<const Point> points,
-                         const Triangulation& t, int first_index) {
-  check_triangulation_extension(path);
-  const std::string ext = extension_of(path);
-  const std::size_t nt = t.size();
-  const std::span<const VertexId> tris = std::span(t.triangles).first(3 * nt);
-  if (ext == ".svg") {
-    write_svg(path, points, t);
-    return;
-  }
-  if (ext == ".neigh" && t.neighbors.size() < 3 * nt) {
-    fail_file(path, "the triangulation has " + std::to_string(t.neighbors.size()) +
-                        " neighbour entries for " + std::to_string(nt) + " triangles");
-  }
-  if (ext == ".off" || ext == ".obj") check_indices(path, tris, points.size(), "a triangle");
-
-  Writer out(path);
-  if (ext == ".ele") {
-    write_ele(out, tris, first_index);
-  } else if (ext == ".neigh") {
-    write_neigh(out, std::span(t.neighbors).first(3 * nt), first_index);
-  } else if (ext == ".off") {
-    write_off(out, points, tris);
-  } else if (ext == ".obj") {
-    write_obj(out, points, tris);
-  } else {  // .bin
-    write_bin_triangles(out, tris);
-  }
-  out.commit();
+void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
+                         int first_index) {
+  format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index});
 }
 
 }  // namespace ridt::io

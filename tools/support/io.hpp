@@ -53,6 +53,13 @@ class PointFile {
   std::shared_ptr<const void> owner_;
 };
 
+/// The extensions of each kind of file, for a help text ("a, b or text").
+std::string point_formats();
+std::string triangle_formats();
+std::string triangulation_formats();
+std::string voronoi_formats();
+std::string values_formats();
+
 /// Reads points; throws IoError on a missing file, a malformed line, a NaN or infinite
 /// coordinate, or a .node count that does not match.
 PointFile read_points(const std::string& path);
@@ -73,16 +80,15 @@ std::vector<VertexId> read_triangles(const std::string& path, int first_index);
 std::vector<VertexId> read_parts(const std::string& path);
 
 /// The same for content in memory (`name` as for parse_points).
-std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name,
-                                      int first_index);
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index);
 
 /// Throws IoError unless `path` has an extension that write_triangulation knows.
 void check_triangulation_extension(const std::string& path);
 
 /// Writes a triangulation (format by extension); indices start at `first_index` in .ele,
 /// .neigh and .off/.obj keep their own conventions (0-based and 1-based).
-void write_triangulation(const std::string& path, std::span<const Point> points,
-                         const Triangulation& t, int first_index);
+void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
+                         int first_index);
 
 /// An axis-parallel box [x0, x1] x [y0, y1].
 struct Box {
@@ -95,14 +101,14 @@ Box box_around(std::span<const Point> points, double margin);
 
 /// Cell c of `vd` clipped to `box`, counter-clockwise (empty when it misses the box);
 /// `t` is the triangulation the diagram came from (its hull edges carry the rays).
-std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
-                                std::size_t c, const Box& box);
+std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulation& t, const Voronoi& vd, std::size_t c,
+                                const Box& box);
 
 /// Writes a Voronoi diagram: .svg (the cells clipped to `box`, and the sites), .off (each cell
 /// clipped to `box` a face) or .json (vertices, cells with -1 at infinity, each point's cell,
 /// ridges as [a, b, u, v]).
-void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t,
-                   const Voronoi& vd, const Box& box);
+void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
+                   const Box& box);
 
 /// Reads values, one row of `components` numbers a point: text (numbers apart by white space or
 /// a comma, '#' comments) or .bin (little-endian float64); `components` 0 means one row a line

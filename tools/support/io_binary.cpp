@@ -14,8 +14,9 @@ void check_finite(const std::string& path, std::span<const Point> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double x = points[i].x, y = points[i].y;
     if (std::isfinite(x) && std::isfinite(y)) continue;
-    fail_file(path, "point " + std::to_string(i) + " has " +
-                        (std::isnan(x) || std::isnan(y) ? "a NaN" : "an infinite") + " coordinate");
+    fail_file(path,
+              "point " + std::to_string(i) + " has " + (std::isnan(x) || std::isnan(y) ? "a NaN" : "an infinite") +
+                  " coordinate");
   }
 }
 
@@ -61,8 +62,9 @@ std::optional<PointFile> map_bin_points(const std::string& path) {
 
 std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data) {
   if (data.size() % 12 != 0) {
-    fail_file(path, "size " + std::to_string(data.size()) +
-                        " bytes is not a multiple of 12 (triples of uint32 vertex indices)");
+    fail_file(
+        path,
+        "size " + std::to_string(data.size()) + " bytes is not a multiple of 12 (triples of uint32 vertex indices)");
   }
   std::vector<VertexId> out(data.size() / 4);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = load_u32_le(data.data() + 4 * i);

@@ -37,9 +37,7 @@ namespace fs = std::filesystem;
 // ---------------------------------------------------------------------------------------------
 // Small helpers.
 
-inline std::string extension_of(const std::string& path) {
-  return fs::path(path).extension().string();
-}
+inline std::string extension_of(const std::string& path) { return fs::path(path).extension().string(); }
 
 [[noreturn]] inline void fail_file(const std::string& path, const std::string& why) {
   throw IoError(path + ": " + why);
@@ -66,9 +64,7 @@ inline std::string quoted(std::string_view s) {
   return out;
 }
 
-constexpr bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
+constexpr bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 inline std::string_view trim(std::string_view s) {
   while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
@@ -83,8 +79,6 @@ struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
-
-
 /// The whole file, or IoError("cannot read FILE: <reason>").
 inline std::string read_file_whole(const std::string& path) {
   errno = 0;
@@ -94,8 +88,7 @@ inline std::string read_file_whole(const std::string& path) {
   const std::uintmax_t hint = fs::file_size(path, ec);
   std::string data;
   // One byte more than the size, so that a regular file is read by one call that hits EOF.
-  data.resize(!ec && hint < (std::uintmax_t{1} << 40) ? static_cast<std::size_t>(hint) + 1
-                                                       : std::size_t{1} << 16);
+  data.resize(!ec && hint < (std::uintmax_t{1} << 40) ? static_cast<std::size_t>(hint) + 1 : std::size_t{1} << 16);
   std::size_t used = 0;
   for (;;) {
     if (used == data.size()) data.resize(data.size() * 2);
@@ -200,15 +193,12 @@ inline Parse parse_int(std::string_view s, std::int64_t& v) {
   return Parse::Ok;
 }
 
-inline std::string not_a_number(std::string_view field) {
-  return "coordinate " + quoted(field) + " is not a number";
-}
+inline std::string not_a_number(std::string_view field) { return "coordinate " + quoted(field) + " is not a number"; }
 
 /// A coordinate: the field must be a finite number; `format_error()` is the message for a
 /// field that is not a number at all (built only when needed).
 template <class Message>
-inline double coordinate(const std::string& path, std::size_t line, std::string_view field,
-                  Message&& format_error) {
+inline double coordinate(const std::string& path, std::size_t line, std::string_view field, Message&& format_error) {
   double v = 0;
   switch (parse_double(field, v)) {
     case Parse::Ok:
@@ -224,8 +214,7 @@ inline double coordinate(const std::string& path, std::size_t line, std::string_
 }
 
 /// An integer field with a name for messages.
-inline std::int64_t integer(const std::string& path, std::size_t line, std::string_view field,
-                     const char* what) {
+inline std::int64_t integer(const std::string& path, std::size_t line, std::string_view field, const char* what) {
   std::int64_t v = 0;
   switch (parse_int(field, v)) {
     case Parse::Ok:
@@ -256,10 +245,8 @@ inline double load_f64_le(const char* p) {
   return std::bit_cast<double>(v);
 }
 
-
 /// A vertex field of a triangle file, renumbered from `first_index` to 0.
-inline VertexId vertex(const std::string& path, std::size_t line, std::string_view field,
-                int first_index) {
+inline VertexId vertex(const std::string& path, std::size_t line, std::string_view field, int first_index) {
   const std::int64_t v = integer(path, line, field, "vertex index");
   // Both bounds are compared before anything is subtracted: v is any 64-bit value, and
   // v - first_index overflows near either end of that range. The largest index stays within
@@ -268,13 +255,11 @@ inline VertexId vertex(const std::string& path, std::size_t line, std::string_vi
   const std::int64_t highest = lowest + std::numeric_limits<VertexId>::max();
   if (v < lowest) {
     fail_line(path, line,
-              "vertex index " + std::to_string(v) + " is below the first index " +
-                  std::to_string(first_index));
+              "vertex index " + std::to_string(v) + " is below the first index " + std::to_string(first_index));
   }
   if (v > highest) {
     fail_line(path, line,
-              "vertex index " + std::to_string(v) + " is too large (at most " +
-                  std::to_string(highest) + ")");
+              "vertex index " + std::to_string(v) + " is too large (at most " + std::to_string(highest) + ")");
   }
   return static_cast<VertexId>(v - lowest);
 }
@@ -390,12 +375,10 @@ class Writer {
   static std::string temp_name(const std::string& path) {
     static std::atomic<unsigned> counter{0};
     return path + ".tmp-" + std::to_string(static_cast<long long>(::getpid())) + "-" +
-           std::to_string(counter.fetch_add(1));
+        std::to_string(counter.fetch_add(1));
   }
 
-  [[noreturn]] void fail(int err) const {
-    throw IoError("cannot write " + path_ + ": " + errno_text(err));
-  }
+  [[noreturn]] void fail(int err) const { throw IoError("cannot write " + path_ + ": " + errno_text(err)); }
 
   void room(std::size_t n) {
     if (kCapacity - pos_ < n) flush();
@@ -424,12 +407,12 @@ class Writer {
 };
 
 /// IoError unless every index of `ids` names one of `n` points.
-inline void check_indices(const std::string& path, std::span<const VertexId> ids, std::size_t n,
-                   const char* what) {
+inline void check_indices(const std::string& path, std::span<const VertexId> ids, std::size_t n, const char* what) {
   for (std::size_t i = 0; i < ids.size(); ++i) {
     if (ids[i] >= n) {
-      fail_file(path, std::string(what) + " refers to vertex " + std::to_string(ids[i]) +
-                          " but there are only " + std::to_string(n) + " points");
+      fail_file(path,
+                std::string(what) + " refers to vertex " + std::to_string(ids[i]) + " but there are only " +
+                    std::to_string(n) + " points");
     }
   }
 }

@@ -6,8 +6,9 @@ namespace ridt::io::detail {
 void write_svg(const std::string& path, std::span<const Point> points, const Triangulation& t) {
   const std::size_t nt = t.size();
   if (nt > kSvgMaxTriangles) {
-    fail_file(path, std::to_string(nt) + " triangles are too many to draw usefully (at most " +
-                        std::to_string(kSvgMaxTriangles) + "); write .off or .ele instead");
+    fail_file(path,
+              std::to_string(nt) + " triangles are too many to draw usefully (at most " +
+                  std::to_string(kSvgMaxTriangles) + "); write .off or .ele instead");
   }
   check_indices(path, std::span(t.triangles).first(3 * nt), points.size(), "a triangle");
   check_indices(path, t.hull, points.size(), "the hull");

@@ -10,9 +10,7 @@ PointFile read_text_points(const std::string& path, std::string_view text) {
     Fields f{line, true};
     std::string_view a, b, extra;
     const bool two = f.next(a) && f.next(b) && !f.next(extra) && !f.bad;
-    const auto format_error = [&] {
-      return "expected two numbers \"x y\" or \"x,y\", got " + quoted(line);
-    };
+    const auto format_error = [&] { return "expected two numbers \"x y\" or \"x,y\", got " + quoted(line); };
     if (!two) fail_line(path, line_no, format_error());
     // Both fields' syntax first, so that "1e999 abc" is a format error, not a range one.
     double x = 0, y = 0;
@@ -29,8 +27,7 @@ PointFile read_text_points(const std::string& path, std::string_view text) {
   return PointFile(std::move(points));
 }
 
-std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text,
-                                          int first_index) {
+std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index) {
   std::vector<VertexId> out;
   out.reserve(3 * count_lines(text));
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {

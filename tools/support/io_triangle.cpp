@@ -22,14 +22,12 @@ PointFile read_node(const std::string& path, std::string_view text) {
       std::string_view field;
       while (f.next(field)) {
         if (k == 4) {
-          fail_line(path, line_no,
-                    "expected a header \"points 2 [attributes [markers]]\", got " + quoted(line));
+          fail_line(path, line_no, "expected a header \"points 2 [attributes [markers]]\", got " + quoted(line));
         }
         v[k++] = field;
       }
       if (k < 2) {
-        fail_line(path, line_no,
-                  "expected a header \"points 2 [attributes [markers]]\", got " + quoted(line));
+        fail_line(path, line_no, "expected a header \"points 2 [attributes [markers]]\", got " + quoted(line));
       }
       n = integer(path, line_no, v[0], "number of points");
       const std::int64_t dim = integer(path, line_no, v[1], "dimension");
@@ -37,11 +35,9 @@ PointFile read_node(const std::string& path, std::string_view text) {
       if (k > 3) markers = integer(path, line_no, v[3], "number of boundary markers");
       if (n < 0) fail_line(path, line_no, "negative number of points " + std::to_string(n));
       if (dim != 2) fail_line(path, line_no, "dimension is " + std::to_string(dim) + ", must be 2");
-      if (attrs < 0 || attrs > 1000000)
-        fail_line(path, line_no, "bad number of attributes " + std::to_string(attrs));
+      if (attrs < 0 || attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(attrs));
       if (markers != 0 && markers != 1) {
-        fail_line(path, line_no,
-                  "number of boundary markers must be 0 or 1, got " + std::to_string(markers));
+        fail_line(path, line_no, "number of boundary markers must be 0 or 1, got " + std::to_string(markers));
       }
       fields_per_line = 3 + static_cast<std::size_t>(attrs) + static_cast<std::size_t>(markers);
       layout = "index x y";
@@ -55,8 +51,7 @@ PointFile read_node(const std::string& path, std::string_view text) {
     Fields f{line, false};
     std::string_view idx, xs, ys;
     const auto count_error = [&] {
-      return "expected " + std::to_string(fields_per_line) + " fields \"" + layout + "\", got " +
-             quoted(line);
+      return "expected " + std::to_string(fields_per_line) + " fields \"" + layout + "\", got " + quoted(line);
     };
     if (!f.next(idx) || !f.next(xs) || !f.next(ys)) fail_line(path, line_no, count_error());
     // The remaining fields: attributes (numbers), then the marker (an integer).
@@ -82,8 +77,8 @@ PointFile read_node(const std::string& path, std::string_view text) {
       out.first_index = static_cast<int>(i);
     } else if (i != out.first_index + static_cast<std::int64_t>(count)) {
       fail_line(path, line_no,
-                "expected point index " + std::to_string(out.first_index + count) + ", got " +
-                    std::to_string(i) + " (indices must be consecutive)");
+                "expected point index " + std::to_string(out.first_index + count) + ", got " + std::to_string(i) +
+                    " (indices must be consecutive)");
     }
     const double x = coordinate(path, line_no, xs, [&] { return not_a_number(xs); });
     const double y = coordinate(path, line_no, ys, [&] { return not_a_number(ys); });
@@ -92,8 +87,7 @@ PointFile read_node(const std::string& path, std::string_view text) {
   });
   if (!have_header) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
   if (count != static_cast<std::size_t>(n)) {
-    fail_file(path, "header says " + std::to_string(n) + " points but the file has " +
-                        std::to_string(count));
+    fail_file(path, "header says " + std::to_string(n) + " points but the file has " + std::to_string(count));
   }
   return PointFile(std::move(out.points), out.first_index);
 }
@@ -122,11 +116,9 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
       if (k > 2) attrs = integer(path, line_no, v[2], "number of attributes");
       if (n < 0) fail_line(path, line_no, "negative number of triangles " + std::to_string(n));
       if (nodes != 3) {
-        fail_line(path, line_no,
-                  "nodes per triangle is " + std::to_string(nodes) + ", must be 3");
+        fail_line(path, line_no, "nodes per triangle is " + std::to_string(nodes) + ", must be 3");
       }
-      if (attrs < 0 || attrs > 1000000)
-        fail_line(path, line_no, "bad number of attributes " + std::to_string(attrs));
+      if (attrs < 0 || attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(attrs));
       fields_per_line = 4 + static_cast<std::size_t>(attrs);
       out.reserve(3 * std::min(static_cast<std::size_t>(n), text.size() / 8 + 1));
       have_header = true;
@@ -136,7 +128,7 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
     std::string_view idx, a, b, c, field;
     const auto count_error = [&] {
       return "expected " + std::to_string(fields_per_line) + " fields \"index a b c" +
-             (attrs > 0 ? " attributes" : "") + "\", got " + quoted(line);
+          (attrs > 0 ? " attributes" : "") + "\", got " + quoted(line);
     };
     if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
     std::size_t k = 4;
@@ -151,14 +143,13 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
     const std::int64_t i = integer(path, line_no, idx, "triangle index");
     if (count == 0) {
       if (i != 0 && i != 1) {
-        fail_line(path, line_no,
-                  "the first triangle index must be 0 or 1, got " + std::to_string(i));
+        fail_line(path, line_no, "the first triangle index must be 0 or 1, got " + std::to_string(i));
       }
       first_triangle = i;
     } else if (i != first_triangle + static_cast<std::int64_t>(count)) {
       fail_line(path, line_no,
-                "expected triangle index " + std::to_string(first_triangle + count) + ", got " +
-                    std::to_string(i) + " (indices must be consecutive)");
+                "expected triangle index " + std::to_string(first_triangle + count) + ", got " + std::to_string(i) +
+                    " (indices must be consecutive)");
     }
     out.push_back(vertex(path, line_no, a, first_index));
     out.push_back(vertex(path, line_no, b, first_index));
@@ -167,8 +158,7 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
   });
   if (!have_header) fail_file(path, "no header line \"triangles 3 [attributes]\"");
   if (count != static_cast<std::size_t>(n)) {
-    fail_file(path, "header says " + std::to_string(n) + " triangles but the file has " +
-                        std::to_string(count));
+    fail_file(path, "header says " + std::to_string(n) + " triangles but the file has " + std::to_string(count));
   }
   return out;
 }

@@ -65,8 +65,9 @@ std::vector<double> read_values(const std::string& path, std::size_t& components
   if (detail::extension_of(path) == ".bin") {
     if (components == 0) components = 1;
     if (data.size() % (8 * components) != 0)
-      detail::fail_file(path, "size " + std::to_string(data.size()) + " bytes is not a multiple of " +
-                                  std::to_string(8 * components) + " (rows of float64)");
+      detail::fail_file(path,
+                        "size " + std::to_string(data.size()) + " bytes is not a multiple of " +
+                            std::to_string(8 * components) + " (rows of float64)");
     out.resize(data.size() / 8);
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = detail::load_f64_le(data.data() + 8 * i);
     return out;

@@ -51,8 +51,8 @@ Box box_around(std::span<const Point> points, double margin) {
   return {b.x0 - margin * w, b.y0 - margin * h, b.x1 + margin * w, b.y1 + margin * h};
 }
 
-std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
-                                std::size_t c, const Box& box) {
+std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulation& t, const Voronoi& vd, std::size_t c,
+                                const Box& box) {
   const auto cell = vd.cell(c);
   std::vector<Point> poly;
   for (const std::int32_t v : cell)
@@ -71,8 +71,8 @@ std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulati
     const Point& a = points[other(cell[0], 1)];
     const Point out{p.y - b.y, b.x - p.x}, in{a.y - p.y, p.x - a.x};
     // Far enough that the closing segment stays beyond the box.
-    const double size = std::max({box.x1 - box.x0, box.y1 - box.y0, std::fabs(box.x0), std::fabs(box.x1),
-                                  std::fabs(box.y0), std::fabs(box.y1)});
+    const double size = std::max(
+        {box.x1 - box.x0, box.y1 - box.y0, std::fabs(box.x0), std::fabs(box.x1), std::fabs(box.y0), std::fabs(box.y1)});
     auto far = [&](const Point& from, const Point& d) {
       const double len = std::hypot(d.x, d.y);
       const double k = 4 * (size + std::hypot(from.x - p.x, from.y - p.y)) / len;
@@ -85,14 +85,15 @@ std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulati
   return clip(std::move(poly), box);
 }
 
-void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t,
-                   const Voronoi& vd, const Box& box) {
+void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
+                   const Box& box) {
   const std::string ext = detail::extension_of(path);
   if (ext != ".svg" && ext != ".off" && ext != ".json")
     throw IoError("unknown Voronoi output extension '" + ext + "' (use .svg, .off or .json)");
   if (ext == ".svg" && vd.cells() > kSvgMaxTriangles)
-    detail::fail_file(path, std::to_string(vd.cells()) + " cells are too many to draw usefully (at most " +
-                                std::to_string(kSvgMaxTriangles) + "); write .json or .off instead");
+    detail::fail_file(path,
+                      std::to_string(vd.cells()) + " cells are too many to draw usefully (at most " +
+                          std::to_string(kSvgMaxTriangles) + "); write .json or .off instead");
   Writer out(path);
   if (ext == ".json") {
     out.put("{\"vertices\":[");

@@ -1,0 +1,361 @@
+// Fig. 4, line 24: remove the bounding vertices and everything incident to them; then number
+// the remaining triangles compactly, give neighbours across the hull as -1, trace the hull and
+// resolve duplicates so the output names the smallest input index of each group of equal points.
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+#include <thread>
+#include <type_traits>
+#include <unordered_map>
+
+#include "methods/method.hpp"
+#include "runtime/parallel.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// The bits set in x. std::popcount is a library call without the POPCNT instruction, which
+// the baseline x86-64 target lacks; this is a dozen inline operations.
+constexpr int ones(std::uint64_t x) {
+  x -= (x >> 1) & 0x5555555555555555u;
+  x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+  x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu;
+  return static_cast<int>((x * 0x0101010101010101u) >> 56);
+}
+static_assert(ones(0) == 0 && ones(~std::uint64_t{0}) == 64 && ones(0x8000000000000001u) == 2);
+
+// Three entries, copied one by one (std::copy_n of a run this short is a call to memmove).
+template <class T>
+void copy3(const T* from, T* to) {
+  to[0] = from[0], to[1] = from[1], to[2] = from[2];
+}
+
+// (x0, x1, x2) rotated to start at x[s].
+template <class T>
+void rotate3(T* x, int s) {
+  const T a = x[0], b = x[1], c = x[2];
+  if (s == 1) x[0] = b, x[1] = c, x[2] = a;
+  if (s == 2) x[0] = c, x[1] = a, x[2] = b;
+}
+
+}  // namespace
+
+void canonicalize(Triangulation& out, unsigned threads) {
+  const std::size_t count = out.size();
+  auto& tv = out.triangles;
+  auto& tn = out.neighbors;
+  for (std::size_t t = 0; t < count; ++t) {
+    VertexId* v = &tv[3 * t];
+    std::int32_t* n = &tn[3 * t];
+    const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    rotate3(v, s);
+    rotate3(n, s);
+  }
+  // Sorted by first vertex with a counting sort (the first vertex of a triangle is now its
+  // smallest, and each vertex is first in some two triangles), then each group by the other
+  // two vertices: linear time, where a comparison sort through the indices missed the cache
+  // at every step.
+  VertexId first_max = 0;
+  for (std::size_t t = 0; t < count; ++t) first_max = std::max(first_max, tv[3 * t]);
+  std::vector<std::uint32_t> start(count > 0 ? std::size_t{first_max} + 2 : 1, 0);
+  for (std::size_t t = 0; t < count; ++t) ++start[tv[3 * t] + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::uint32_t> order(count);
+  // start[a] runs to the end of group a while it is filled, then moves back one place.
+  for (std::size_t t = 0; t < count; ++t) order[start[tv[3 * t]]++] = static_cast<std::uint32_t>(t);
+  std::copy_backward(start.begin(), start.end() - 1, start.end());
+  start[0] = 0;
+  for (std::size_t a = 0; a + 1 < start.size(); ++a)
+    if (start[a + 1] - start[a] > 1)
+      std::sort(order.begin() + start[a], order.begin() + start[a + 1], [&](std::uint32_t x, std::uint32_t y) {
+        return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
+      });
+  std::vector<std::uint32_t>().swap(start);
+  // The neighbours renumbered, then each array gathered into its new order, one at a time:
+  // the reads are at random, but their addresses are known ahead, so they are asked for some
+  // way ahead and their misses overlap (moving the triangles along the permutation's cycles, in
+  // place, waited for one miss after another and took as long as the insertion). One array's
+  // copy, 24 bytes a point, is the price.
+  {
+    std::vector<std::int32_t> rank(count);
+    for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
+    for (std::int32_t& nb : tn) nb = nb < 0 ? kNoNeighbor : rank[nb];
+  }
+  auto gather = [&](auto& a) {
+    std::remove_reference_t<decltype(a)> sorted(a.size());
+    parallel_for(count, std::max(threads, 1u), 65536, [&](std::size_t first, std::size_t last) {
+      constexpr std::size_t kAhead = 16;
+      for (std::size_t i = first; i < last; ++i) {
+        if (i + kAhead < last) __builtin_prefetch(&a[3 * std::size_t{order[i + kAhead]}]);
+        copy3(&a[3 * std::size_t{order[i]}], &sorted[3 * i]);
+      }
+    });
+    a.swap(sorted);
+  };
+  gather(tv);
+  gather(tn);
+}
+
+Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index, const std::vector<DuplicateHit>& duplicates,
+                            std::vector<Duplicate>& out) {
+  Standing standing(input_index);
+  // The smallest input index of each group stands for all of them.
+  auto& keep = standing.keep;  // input index of a mesh vertex -> standing index
+  for (const DuplicateHit& d : duplicates) {
+    const VertexId v = input_index[d.vertex];
+    auto [it, fresh] = keep.try_emplace(v, v);
+    it->second = std::min(it->second, input_index[d.dropped]);
+  }
+  for (const DuplicateHit& d : duplicates) {
+    const VertexId v = input_index[d.vertex], dropped = input_index[d.dropped];
+    const VertexId kept = keep[v];
+    if (dropped != kept) out.push_back({dropped, kept});
+    if (v != kept) out.push_back({v, kept});
+  }
+  std::sort(out.begin(), out.end(), [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const Duplicate& a, const Duplicate& b) { return a.dropped == b.dropped; }),
+            out.end());
+  for (auto it = keep.begin(); it != keep.end();) it = it->first == it->second ? keep.erase(it) : std::next(it);
+  return standing;
+}
+
+std::vector<VertexId> trace_hull(std::vector<std::pair<VertexId, VertexId>>& edges) {
+  // Follow the boundary edges (counter-clockwise: the interior is on their left) from the
+  // smallest vertex index.
+  std::vector<VertexId> hull;
+  if (edges.empty()) return hull;
+  std::sort(edges.begin(), edges.end());
+  auto from = [&](VertexId v) {
+    auto it = std::lower_bound(edges.begin(), edges.end(), std::pair{v, VertexId{0}});
+    return it != edges.end() && it->first == v ? it->second : kNone;
+  };
+  const VertexId start = edges.front().first;
+  VertexId v = start;
+  do {
+    hull.push_back(v);
+    v = from(v);
+  } while (v != kNone && v != start && hull.size() <= edges.size());
+  return hull;
+}
+
+void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std::size_t hull_edges,
+                  const Options& options, const std::function<void(std::vector<Point>&)>& input_points) {
+  Stats& s = out.stats;
+  s.points = n;
+  s.duplicates = out.duplicates.size();
+  s.distinct = n - s.duplicates;
+  if (s.distinct < 3) {
+    out.warning = "fewer than three distinct points: no triangle";
+  } else if (count == 0 && options.experiment.bounding == Bounding::Symbolic) {
+    out.warning = "all points are collinear: no triangle";  // else there would be a triangle
+  } else if (options.experiment.bounding == Bounding::Finite) {
+    // The paper's finite bounding triangle can leave a reflex boundary or drop points, or
+    // every triangle, when the circle of a thin one holds a bounding vertex.
+    std::vector<Point> pts(n);
+    input_points(pts);
+    const std::size_t h = out.hull.size();
+    if (count == 0) {
+      VertexId far = 0;  // a point other than pts[0]
+      while (far < n && pts[far] == pts[0]) ++far;
+      bool collinear = true;
+      for (VertexId v = 0; collinear && v < n; ++v) collinear = orient2d(pts[0], pts[far], pts[v]) == 0;
+      if (collinear) {
+        out.warning = "all points are collinear: no triangle";
+        return;
+      }
+    }
+    bool convex = h == hull_edges;
+    for (std::size_t i = 0; convex && i < h; ++i)
+      convex = orient2d(pts[out.hull[i]], pts[out.hull[(i + 1) % h]], pts[out.hull[(i + 2) % h]]) >= 0;
+    // Euler: a triangulation of all distinct points with h boundary vertices has 2d - 2 - h.
+    const bool complete = count == 2 * s.distinct - 2 - h;
+    if (!convex || !complete)
+      out.warning = "finite bounding triangle (k = " + std::to_string(options.experiment.k) +
+          ") lost convex hull edges: the result is not the Delaunay triangulation of the "
+          "points; use the symbolic bounding triangle";
+  }
+}
+
+namespace {
+
+// The records of the history DAG that are output triangles (leaves without a bounding vertex):
+// a bit for each record and, for each word of 64 records, how many kept records come before
+// it. A kept record's new id is its rank among the kept ones: the kept records before its word
+// and those before it in the word (a popcount). The bits and ranks take 12 bytes for 64
+// records and stay in cache, where reading the neighbours' records for their ids would miss
+// it at every read.
+//
+// The work is shared in blocks of 1024 words (65,536 records) taken in turn from a counter:
+// the kept records crowd the later blocks, the last insertions' records, so equal shares of the
+// records would be unequal work. A run that fits in one block runs on the caller alone.
+class KeptRecords {
+ public:
+  KeptRecords(TriangleId records, unsigned threads)
+      : records_(records),
+        words_((std::size_t{records} + 63) / 64),
+        blocks_((words_ + kBlockWords - 1) / kBlockWords),
+        workers_(static_cast<unsigned>(std::clamp<std::size_t>(blocks_, 1, std::max(threads, 1u)))),
+        bits_(words_),
+        rank_before_(words_ + 1, 0) {}
+
+  // Pass 1: marks the kept records and moves each block's kept records to its front, in order,
+  // with the input indices that stand for their vertices. A record moves only down and is read
+  // before anything is written over it. Returns how many records are triangles (DAG nodes).
+  std::uint64_t compact(TriangleStore& tris, std::uint32_t n, const Standing& standing) {
+    // Ids 1 .. kMaxOwner are never written (dag/records.hpp).
+    auto unused = [](TriangleId t) { return t != 0 && t < kFirstChild; };
+    auto kept = [&](const Triangle& r) { return is_leaf(r.child) && r.v[0] < n && r.v[1] < n && r.v[2] < n; };
+    std::vector<std::uint64_t> made(workers_, 0);
+    for_each_block([&](unsigned w, std::size_t b) {
+      const auto [begin, end] = range(b);
+      TriangleId to = begin;
+      // The input indices of the vertices are read at random: those of a record kAhead on are
+      // prefetched, so the misses overlap.
+      constexpr TriangleId kAhead = 16;
+      for (std::size_t k = first_word(b); k < first_word(b + 1); ++k) {
+        std::uint64_t bits = 0;
+        const auto stop = static_cast<TriangleId>(std::min<std::size_t>(64 * k + 64, records_));
+        for (auto t = static_cast<TriangleId>(64 * k); t < stop; ++t) {
+          if (t + kAhead < end && !unused(t + kAhead) && kept(tris[t + kAhead]))
+            for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&standing.input_index[v]);
+          if (unused(t)) continue;
+          const Triangle& r = tris[t];
+          made[w] += r.v[0] != kNone;
+          if (!kept(r)) continue;
+          bits |= std::uint64_t{1} << (t & 63);
+          tris[to++] = Triangle{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])}, {r.n[0], r.n[1], r.n[2]}, 0};
+        }
+        bits_[k] = bits;
+        rank_before_[k + 1] = static_cast<std::uint32_t>(ones(bits));
+      }
+    });
+    std::partial_sum(rank_before_.begin(), rank_before_.end(), rank_before_.begin());
+    return std::accumulate(made.begin(), made.end(), std::uint64_t{0});
+  }
+
+  // After compact(): the moved records' neighbours given as their new ids (-1 across the hull).
+  void renumber_neighbours(TriangleStore& tris) {
+    for_each_block([&](unsigned, std::size_t b) {
+      for (TriangleId t = range(b).first, stop = t + moved(b); t < stop; ++t)
+        for (TriangleId& u : tris[t].n) u = static_cast<TriangleId>(neighbour_id(u));
+    });
+  }
+
+  // body(worker, block) for every block, on workers() threads.
+  template <class Body>
+  void for_each_block(Body&& body) {
+    std::atomic<std::size_t> next{0};
+    on_threads(workers_, [&](unsigned w) {
+      // relaxed: the blocks need only be distinct; the joins order the results.
+      for (std::size_t b; (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks_;) body(w, b);
+    });
+  }
+
+  std::uint32_t count() const { return rank_before_[words_]; }
+  unsigned workers() const { return workers_; }
+  std::size_t blocks() const { return blocks_; }
+  // Block b's records; after compact(), its kept ones are [first, first + moved(b)).
+  std::pair<TriangleId, TriangleId> range(std::size_t b) const {
+    return {static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b), records_)),
+            static_cast<TriangleId>(std::min<std::size_t>(64 * first_word(b + 1), records_))};
+  }
+  TriangleId moved(std::size_t b) const { return rank_before_[first_word(b + 1)] - rank_before_[first_word(b)]; }
+  // Record u's output id as a neighbour: -1 for none or a record that is not kept.
+  std::int32_t neighbour_id(TriangleId u) const {
+    if (u == kNone || !((bits_[u >> 6] >> (u & 63)) & 1)) return kNoNeighbor;
+    const std::uint64_t below = bits_[u >> 6] & ((std::uint64_t{1} << (u & 63)) - 1);
+    return static_cast<std::int32_t>(rank_before_[u >> 6] + ones(below));
+  }
+
+ private:
+  static constexpr std::size_t kBlockWords = 1024;
+  std::size_t first_word(std::size_t b) const { return std::min(b * kBlockWords, words_); }
+
+  TriangleId records_;
+  std::size_t words_, blocks_;
+  unsigned workers_;
+  std::vector<std::uint64_t> bits_;
+  std::vector<std::uint32_t> rank_before_;
+};
+
+// Pass 2: the moved records copied out, block after block, into the output's triangles and
+// neighbours, and the records' pages given back behind the copy. The output is reserved, not
+// filled, so its pages are first touched as it grows: with the records' pages given back
+// meanwhile, the peak is that of the records and not of the records and the output together.
+// With two workers or more, one copies the vertices and another the neighbours (already
+// renumbered), and a page goes once both are past it. Returns the hull's edges.
+std::vector<std::pair<VertexId, VertexId>> copy_out(TriangleStore& tris, const KeptRecords& kept, bool renumbered,
+                                                    Triangulation& out) {
+  const unsigned copiers = renumbered ? 2 : 1;
+  std::atomic<std::uint64_t> copied[2] = {0, 0};  // each copier's progress, in records
+  const std::uint64_t step = tris.release_step();
+  std::atomic<std::uint64_t> released{0};  // records whose pages are given back
+  auto release_behind = [&]() {
+    std::uint64_t done = copied[0].load(std::memory_order_acquire);
+    if (copiers == 2) done = std::min(done, copied[1].load(std::memory_order_acquire));
+    std::uint64_t p = released.load(std::memory_order_relaxed);
+    if (done >= p + step && released.compare_exchange_strong(p, done, std::memory_order_relaxed))
+      tris.release_pages(static_cast<TriangleId>(p), static_cast<TriangleId>(done));
+  };
+  // Copier c writes the vertices (c = 0, and the neighbours too when alone) or the neighbours,
+  // and the one that writes the neighbours finds the hull's edges.
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
+  on_threads(copiers, [&](unsigned c) {
+    const bool vertices = c == 0, neighbours = c == 1 || copiers == 1;
+    if (vertices) out.triangles.reserve(3 * std::size_t{kept.count()});
+    if (neighbours) out.neighbors.reserve(3 * std::size_t{kept.count()});
+    constexpr std::size_t kBlock = 4096;  // triangles copied out at once
+    std::vector<VertexId> vs(vertices ? 3 * kBlock : 0);
+    std::vector<std::int32_t> ns(neighbours ? 3 * kBlock : 0);
+    std::size_t k = 0;  // entries in the block
+    // Copies what the block holds; every record below `done` is then copied.
+    auto flush = [&](std::uint64_t done) {
+      if (vertices) out.triangles.insert(out.triangles.end(), vs.begin(), vs.begin() + k);
+      if (neighbours) out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
+      k = 0;
+      copied[c].store(done, std::memory_order_release);
+      release_behind();
+    };
+    for (std::size_t b = 0; b < kept.blocks(); ++b) {
+      const auto [begin, end] = kept.range(b);
+      for (TriangleId t = begin; t < begin + kept.moved(b); ++t) {
+        const Triangle& r = tris[t];
+        for (int i = 0; i < 3; ++i, ++k) {
+          if (vertices) vs[k] = r.v[i];
+          if (!neighbours) continue;
+          ns[k] = renumbered ? static_cast<std::int32_t>(r.n[i]) : kept.neighbour_id(r.n[i]);
+          if (ns[k] == kNoNeighbor) hull_edges.emplace_back(r.v[next(i)], r.v[prev(i)]);
+        }
+        if (k == 3 * kBlock) flush(t + 1);
+      }
+      flush(end);
+    }
+  });
+  return hull_edges;
+}
+
+}  // namespace
+
+Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
+                     const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads) {
+  Triangulation out;
+  const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
+  TriangleStore& tris = kernel.triangles_for_finish();
+  KeptRecords kept(tris.size(), threads);
+  out.stats.dag_nodes = kept.compact(tris, kernel.n(), standing);
+  // The points are no longer needed (but for the finite bounding triangle's check below).
+  if (options.experiment.bounding == Bounding::Symbolic) kernel.release_points();
+  // With two copiers, the neighbours' new ids would make the neighbour copier's work twice the
+  // vertex copier's: they are written into the moved records first, on every worker.
+  const bool renumber = kept.workers() > 1;
+  if (renumber) kept.renumber_neighbours(tris);
+  std::vector<std::pair<VertexId, VertexId>> hull_edges = copy_out(tris, kept, renumber, out);
+  out.hull = trace_hull(hull_edges);
+  set_warnings(out, kernel.n(), kept.count(), hull_edges.size(), options, [&](std::vector<Point>& pts) {
+    for (VertexId v = 0; v < kernel.n(); ++v) pts[input_index[v]] = kernel.point(v);
+  });
+  return out;
+}
+
+}  // namespace ridt::detail

@@ -1,0 +1,187 @@
+// What the threaded methods share: a spin lock, a back-off, per-thread timing, and a driver
+// that takes the workers through the rounds of dag/rounds.hpp.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <barrier>
+#include <chrono>
+#include <cstdint>
+#include <exception>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "dag/kernel.hpp"
+#include "dag/rounds.hpp"
+#include "methods/method.hpp"
+#include "order/random.hpp"
+#include "runtime/parallel.hpp"
+
+namespace ridt::detail {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+/// A cheap clock for timing each insertion: the time-stamp counter on x86 (constant-rate on
+/// every processor of the last decade; a read costs a few nanoseconds where the steady clock
+/// costs some 25 in a virtual machine), else the steady clock in nanoseconds. A duration is
+/// taken on one thread, so counters that differ between cores do not matter. TickRate
+/// converts ticks to seconds, calibrated against the steady clock over a whole run.
+inline std::uint64_t ticks() {
+#if defined(__x86_64__) || defined(__i386__)
+  return __builtin_ia32_rdtsc();
+#else
+  return static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count());
+#endif
+}
+
+class TickRate {
+ public:
+  TickRate() : clock_(Clock::now()), ticks_(ticks()) {}
+  /// Seconds per tick over the time since construction.
+  double seconds_per_tick() const {
+    const std::uint64_t elapsed = ticks() - ticks_;
+    return elapsed > 0 ? seconds(Clock::now() - clock_) / static_cast<double>(elapsed) : 0.0;
+  }
+
+ private:
+  Clock::time_point clock_;
+  std::uint64_t ticks_;
+};
+
+/// The pessimistic critical section lasts about a microsecond: a thread that finds the lock
+/// taken spins (reading, not writing, so the line stays shared) instead of sleeping in the
+/// kernel, which costs more than the wait. After a while it yields, so oversubscribed runs
+/// still progress.
+class SpinLock {
+ public:
+  void lock() {
+    for (int spins = 0;; ++spins) {
+      // acquire: the holder's changes to the mesh happen before ours.
+      if (!locked_.exchange(true, std::memory_order_acquire)) return;
+      while (locked_.load(std::memory_order_relaxed)) {
+        if (++spins < kSpinsBeforeYield) {
+          cpu_relax();
+        } else {
+          std::this_thread::yield();
+          spins = 0;
+        }
+      }
+    }
+  }
+  // release: our changes to the mesh happen before the next holder's.
+  void unlock() { locked_.store(false, std::memory_order_release); }
+
+ private:
+  static constexpr int kSpinsBeforeYield = 4096;  // a few microseconds of pause instructions
+  alignas(64) std::atomic<bool> locked_{false};  // its own cache line
+};
+
+/// Randomized exponential back-off after a failed try-lock: two threads that collided wait
+/// different times, so they do not collide again in step. Yields once the wait is long, so an
+/// oversubscribed machine lets the owner run.
+class Backoff {
+ public:
+  explicit Backoff(std::uint64_t seed) : rng_(seed, /*stream=*/7) {}
+  void pause() {
+    const std::uint64_t spins = 1 + rng_.below(std::uint64_t{1} << exponent_);
+    if (exponent_ < kMaxExponent) ++exponent_;
+    if (exponent_ >= kYieldExponent) std::this_thread::yield();
+    for (std::uint64_t i = 0; i < spins; ++i) cpu_relax();
+  }
+  void reset() { exponent_ = kMinExponent; }
+
+ private:
+  // 2^4 pauses (tens of nanoseconds) first: most conflicts end within one insertion, about a
+  // microsecond; 2^12 at most.
+  static constexpr int kMinExponent = 4, kYieldExponent = 10, kMaxExponent = 12;
+  Rng rng_;
+  int exponent_ = kMinExponent;
+};
+
+/// Runs `threads` workers through the rounds: in each round the workers first locate the
+/// round's points along the curve (the DAG is only read then; dag/rounds.hpp), all wait, then
+/// they insert the round's points [first, end) in the random order; all wait again. Work is
+/// handed out in chunks from a counter, so a worker on a faster (or less shared) core takes
+/// more of it and nobody waits long at the end of a round: insert_chunk(w, begin, end, hint)
+/// inserts the points [begin, end), hint[v - begin] being a leaf that held point v when the
+/// round began. `from_root`: no rounds and no location phase, one pass over all the points with
+/// hint null (each descent starts at the root, Locate::Root). Worker 0 is the calling thread,
+/// and reports `progress` after its chunks. `wait[w]` receives the time worker w spent waiting
+/// for the others. The first exception of any worker is rethrown once all have
+/// stopped; the others stop at the next phase.
+template <class InsertChunk>
+void run_in_rounds(const Kernel& kernel, unsigned threads, bool from_root, std::vector<Clock::duration>& wait,
+                   Progress& progress, InsertChunk&& insert_chunk) {
+  // From the root (Locate::Root): one round of all the points, no location phase, and no hint
+  // (insert_chunk gets null).
+  std::optional<RoundLocator> rounds;
+  if (!from_root) rounds.emplace(kernel, threads);
+  const std::size_t round_count = from_root ? 1 : rounds->rounds();
+  auto first_of = [&](std::size_t r) { return from_root ? (r == 0 ? 0 : kernel.n()) : rounds->first(r); };
+  std::vector<TriangleId> hint(from_root ? 0 : rounds->largest());
+  // Per round, the next position to locate (along the curve) and to insert (in the order).
+  std::vector<std::atomic<VertexId>> located(round_count), inserted(round_count);
+  for (std::size_t r = 0; r < round_count; ++r) {
+    located[r].store(first_of(r), std::memory_order_relaxed);
+    inserted[r].store(first_of(r), std::memory_order_relaxed);
+  }
+  std::barrier<> sync(static_cast<std::ptrdiff_t>(threads));
+  std::atomic<bool> stop{false};
+  std::vector<std::exception_ptr> errors(threads);
+  wait.assign(threads, Clock::duration{});
+  auto worker = [&](unsigned w) {
+    auto arrive = [&] {
+      const auto t0 = Clock::now();
+      sync.arrive_and_wait();
+      wait[w] += Clock::now() - t0;
+    };
+    try {
+      // The first report says the insertion has begun (0), as the serial method's does: worker
+      // 0 reports only after its own chunks, and the other workers may take all of the early,
+      // small rounds.
+      if (w == 0) progress(0);
+      for (std::size_t r = 0; r < round_count; ++r) {
+        const VertexId first = first_of(r), end = first_of(r + 1);
+        // Chunks: enough of them that the workers finish together, each still long enough
+        // for the lanes of the descent and the look-ahead of the insertion to get going.
+        const VertexId size = end - first;
+        const VertexId locate_chunk = std::clamp<VertexId>(size / (8 * threads), 256, 4096);
+        constexpr VertexId kInsertChunk = 256;
+        if (!from_root) {
+          for (VertexId b; !stop.load(std::memory_order_relaxed) &&
+               (b = located[r].fetch_add(locate_chunk, std::memory_order_relaxed)) < end;)
+            rounds->locate(r, b - first, std::min<std::uint64_t>(end, std::uint64_t{b} + locate_chunk) - first,
+                           hint.data());
+          arrive();
+        }
+        for (VertexId b; !stop.load(std::memory_order_relaxed) &&
+             (b = inserted[r].fetch_add(kInsertChunk, std::memory_order_relaxed)) < end;) {
+          const VertexId e = std::min<std::uint64_t>(end, std::uint64_t{b} + kInsertChunk);
+          insert_chunk(w, b, e, from_root ? nullptr : hint.data() + (b - first));
+          if (w == 0) progress(e);
+        }
+        arrive();
+      }
+    } catch (...) {
+      // Thrown inside a phase, before this worker arrived: leaving the barrier lets the
+      // others finish their rounds without it.
+      errors[w] = std::current_exception();
+      stop.store(true, std::memory_order_relaxed);
+      sync.arrive_and_drop();
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    pool.reserve(threads - 1);
+    for (unsigned w = 1; w < threads; ++w) pool.emplace_back(worker, w);
+    worker(0);
+  }
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace ridt::detail

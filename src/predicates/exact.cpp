@@ -1,0 +1,296 @@
+// Exact evaluation of the predicates with integers.
+//
+// Every double is an integer multiple of its unit in the last place; within one predicate call
+// all coordinates are integer multiples of the smallest such unit U = 2^emin among them. The
+// determinants are homogeneous polynomials in coordinate differences, so their sign equals the
+// sign of the same polynomial evaluated on the integers x / U. Those integers have at most
+// 2098 bits (2^1024 / 2^-1074), so a degree-4 polynomial fits in 140 limbs of 64 bits. In the
+// common case (coordinates of similar size) the integers have one or two limbs and the
+// evaluation is cheap; only wildly different magnitudes in one call make it long.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "predicates/predicates.hpp"
+#include "ridt/predicates.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// Sign-magnitude integer with a fixed capacity and no heap use.
+class BigInt {
+ public:
+  static constexpr int kCap = 140;  // 4 * 34 limbs for a degree-4 product, plus carries
+
+  BigInt() {}  // the limbs are left uninitialized on purpose: only [0, n_) is ever read
+
+  // x / 2^emin, where x is an integer multiple of 2^emin.
+  static BigInt from_double(double x, int emin) {
+    BigInt r;
+    if (x == 0) return r;
+    int e = 0;
+    const double f = std::frexp(std::fabs(x), &e);  // |x| = f * 2^e, f in [0.5, 1)
+    auto mant = static_cast<std::uint64_t>(std::ldexp(f, 53));
+    const int shift = e - 53 - emin;  // >= 0 by the choice of emin
+    const int limb = shift / 64, bit = shift % 64;
+    for (int i = 0; i < limb; ++i) r.w_[i] = 0;
+    r.w_[limb] = mant << bit;
+    r.n_ = limb + 1;
+    if (bit != 0 && (mant >> (64 - bit)) != 0) r.w_[r.n_++] = mant >> (64 - bit);
+    r.neg_ = x < 0;
+    return r;
+  }
+
+  int sign() const { return n_ == 0 ? 0 : (neg_ ? -1 : 1); }
+
+  // The value as m * 2^(exponent + emin) with |m| in [1, 2^64) (0 for zero), m within a
+  // relative 2^-62 of the truth: the top three limbs, each rounded once, the rest dropped.
+  double scaled(int emin, int& exponent) const {
+    exponent = emin;
+    if (n_ == 0) return 0;
+    double m = static_cast<double>(w_[n_ - 1]);
+    if (n_ >= 2) m += std::ldexp(static_cast<double>(w_[n_ - 2]), -64);
+    if (n_ >= 3) m += std::ldexp(static_cast<double>(w_[n_ - 3]), -128);
+    exponent += 64 * (n_ - 1);
+    return neg_ ? -m : m;
+  }
+
+  friend BigInt operator+(const BigInt& a, const BigInt& b) { return add(a, b, b.neg_); }
+  friend BigInt operator-(const BigInt& a, const BigInt& b) { return add(a, b, !b.neg_); }
+
+  friend BigInt operator*(const BigInt& a, const BigInt& b) {
+    BigInt r;
+    if (a.n_ == 0 || b.n_ == 0) return r;
+    r.n_ = a.n_ + b.n_;
+    std::fill(r.w_, r.w_ + r.n_, 0);
+    for (int i = 0; i < a.n_; ++i) {
+      unsigned __int128 carry = 0;
+      for (int j = 0; j < b.n_; ++j) {
+        carry += static_cast<unsigned __int128>(a.w_[i]) * b.w_[j] + r.w_[i + j];
+        r.w_[i + j] = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+      r.w_[i + b.n_] = static_cast<std::uint64_t>(carry);
+    }
+    r.trim();
+    r.neg_ = a.neg_ != b.neg_;
+    return r;
+  }
+
+ private:
+  void trim() {
+    while (n_ > 0 && w_[n_ - 1] == 0) --n_;
+    if (n_ == 0) neg_ = false;
+  }
+
+  static int compare_magnitude(const BigInt& a, const BigInt& b) {
+    if (a.n_ != b.n_) return a.n_ < b.n_ ? -1 : 1;
+    for (int i = a.n_ - 1; i >= 0; --i)
+      if (a.w_[i] != b.w_[i]) return a.w_[i] < b.w_[i] ? -1 : 1;
+    return 0;
+  }
+
+  // a + (b with sign b_neg)
+  static BigInt add(const BigInt& a, const BigInt& b, bool b_neg) {
+    BigInt r;
+    if (a.neg_ == b_neg) {
+      const BigInt& big = a.n_ >= b.n_ ? a : b;
+      const BigInt& small = a.n_ >= b.n_ ? b : a;
+      std::uint64_t carry = 0;
+      for (int i = 0; i < big.n_; ++i) {
+        const std::uint64_t s = big.w_[i] + carry;
+        carry = s < carry;
+        const std::uint64_t t = i < small.n_ ? s + small.w_[i] : s;
+        carry += t < s;
+        r.w_[i] = t;
+      }
+      r.n_ = big.n_;
+      if (carry) r.w_[r.n_++] = carry;
+      r.neg_ = a.neg_;
+      return r;
+    }
+    const int cmp = compare_magnitude(a, b);
+    if (cmp == 0) return r;
+    const BigInt& big = cmp > 0 ? a : b;
+    const BigInt& small = cmp > 0 ? b : a;
+    std::uint64_t borrow = 0;
+    for (int i = 0; i < big.n_; ++i) {
+      const std::uint64_t sub = (i < small.n_ ? small.w_[i] : 0);
+      const std::uint64_t t = big.w_[i] - sub - borrow;
+      borrow = (big.w_[i] < sub) || (big.w_[i] - sub < borrow);
+      r.w_[i] = t;
+    }
+    r.n_ = big.n_;
+    r.neg_ = cmp > 0 ? a.neg_ : b_neg;
+    r.trim();
+    return r;
+  }
+
+  std::uint64_t w_[kCap];
+  int n_ = 0;
+  bool neg_ = false;
+};
+
+// Exponent of the unit in the last place of x (x != 0): x is an integer multiple of 2^result.
+int ulp_exponent(double x) {
+  int e = 0;
+  std::frexp(x, &e);
+  return e - 53;
+}
+
+int min_ulp_exponent(std::initializer_list<double> values) {
+  int emin = 1 << 20;
+  for (double v : values)
+    if (v != 0) emin = std::min(emin, ulp_exponent(v));
+  return emin;
+}
+
+// The points of one call scaled by exact_scale_exponent (predicates/predicates.hpp), where the filter
+// fails only for their size: then it decides as usual, and only true near-degeneracies reach
+// the integers. False when the points are fine as they are or cannot be scaled exactly.
+template <std::size_t N>
+bool rescale(Point (&p)[N], double low, double high) {
+  const int k = exact_scale_exponent(p, low, high);
+  if (k == 0) return false;
+  for (Point& q : p) q = {std::ldexp(q.x, k), std::ldexp(q.y, k)};
+  return true;
+}
+
+}  // namespace
+
+int orient2d_hard(const Point& a, const Point& b, const Point& c) {
+  // Degree 2: the filter works while the differences stay within 2^+-400.
+  Point s[3] = {a, b, c};
+  if (rescale(s, 0x1p-400, 0x1p400)) {
+    const double l = (s[0].x - s[2].x) * (s[1].y - s[2].y);
+    const double r = (s[0].y - s[2].y) * (s[1].x - s[2].x);
+    const double det = l - r, bound = kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow;
+    if (det > bound) return 1;
+    if (det < -bound) return -1;
+  }
+  return orient2d_exact(a, b, c);
+}
+
+int orient2d_exact(const Point& a, const Point& b, const Point& c) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y});
+  const BigInt cx = BigInt::from_double(c.x, e), cy = BigInt::from_double(c.y, e);
+  const BigInt acx = BigInt::from_double(a.x, e) - cx, acy = BigInt::from_double(a.y, e) - cy;
+  const BigInt bcx = BigInt::from_double(b.x, e) - cx, bcy = BigInt::from_double(b.y, e) - cy;
+  return (acx * bcy - acy * bcx).sign();
+}
+
+int incircle_exact(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y});
+  const BigInt dx = BigInt::from_double(d.x, e), dy = BigInt::from_double(d.y, e);
+  const BigInt adx = BigInt::from_double(a.x, e) - dx, ady = BigInt::from_double(a.y, e) - dy;
+  const BigInt bdx = BigInt::from_double(b.x, e) - dx, bdy = BigInt::from_double(b.y, e) - dy;
+  const BigInt cdx = BigInt::from_double(c.x, e) - dx, cdy = BigInt::from_double(c.y, e) - dy;
+  const BigInt alift = adx * adx + ady * ady;
+  const BigInt blift = bdx * bdx + bdy * bdy;
+  const BigInt clift = cdx * cdx + cdy * cdy;
+  const BigInt det =
+      alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady);
+  return det.sign();
+}
+
+void barycentric_exact(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y, q.x, q.y});
+  const BigInt ax = BigInt::from_double(a.x, e), ay = BigInt::from_double(a.y, e);
+  const BigInt bx = BigInt::from_double(b.x, e), by = BigInt::from_double(b.y, e);
+  const BigInt cx = BigInt::from_double(c.x, e), cy = BigInt::from_double(c.y, e);
+  const BigInt qx = BigInt::from_double(q.x, e), qy = BigInt::from_double(q.y, e);
+  // Twice the signed areas of (q, b, c), (a, q, c), (a, b, q) and (a, b, c), in units of 2^2e.
+  auto area = [](const BigInt& ux, const BigInt& uy, const BigInt& vx, const BigInt& vy, const BigInt& wx,
+                 const BigInt& wy) { return (ux - wx) * (vy - wy) - (uy - wy) * (vx - wx); };
+  const BigInt part[3] = {area(qx, qy, bx, by, cx, cy), area(ax, ay, qx, qy, cx, cy), area(ax, ay, bx, by, qx, qy)};
+  int whole_exponent = 0;
+  const double whole = area(ax, ay, bx, by, cx, cy).scaled(0, whole_exponent);
+  for (int i = 0; i < 3; ++i) {
+    int exponent = 0;
+    const double m = part[i].scaled(0, exponent);
+    weight[i] = m == 0 ? 0.0 : std::ldexp(m / whole, exponent - whole_exponent);
+  }
+}
+
+double doubled_area_exact(const Point& a, const Point& b, const Point& c) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y});
+  const BigInt cx = BigInt::from_double(c.x, e), cy = BigInt::from_double(c.y, e);
+  const BigInt acx = BigInt::from_double(a.x, e) - cx, acy = BigInt::from_double(a.y, e) - cy;
+  const BigInt bcx = BigInt::from_double(b.x, e) - cx, bcy = BigInt::from_double(b.y, e) - cy;
+  int exponent = 0;
+  const double m = (acx * bcy - acy * bcx).scaled(2 * e, exponent);
+  return std::ldexp(m, exponent);
+}
+
+int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double m = std::max({std::fabs(a.x - d.x), std::fabs(a.y - d.y), std::fabs(b.x - d.x), std::fabs(b.y - d.y),
+                             std::fabs(c.x - d.x), std::fabs(c.y - d.y)});
+  if (exact_in_double({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y}, m, 0x1p12)) {
+    const double det = incircle_determinant(a, b, c, d);  // every step an exact integer
+    return (det > 0) - (det < 0);
+  }
+  // Degree 4: within 2^+-200.
+  Point s[4] = {a, b, c, d};
+  if (rescale(s, 0x1p-200, 0x1p200))
+    if (const int sign = incircle_filter(s[0], s[1], s[2], s[3]); sign != 0) return sign;
+  return incircle_exact(a, b, c, d);
+}
+
+int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int s = incircle_hard(a, b, c, d);
+  return s != 0 ? s : incircle_tie(a, b, c, d);
+}
+
+bool on_small_lattice(const Point* points, std::uint32_t n) {
+  if (n == 0) return false;
+  double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Point& p = points[i];
+    if (!small_integer(p.x) || !small_integer(p.y)) return false;
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    if (x1 - x0 > 0x1p12 || y1 - y0 > 0x1p12) return false;
+  }
+  return true;
+}
+
+int incircle_tie(const Point& a, const Point& b, const Point& c, const Point& d) {
+  // Cofactors of the lifted coordinate in rows a, b, c, d of det[x y z 1].
+  struct Row {
+    const Point* p;
+    int which;
+  };
+  Row rows[4] = {{&a, 0}, {&b, 1}, {&c, 2}, {&d, 3}};
+  auto cofactor = [&](int which) {
+    switch (which) {
+      case 0:
+        return orient2d(b, c, d);
+      case 1:
+        return -orient2d(a, c, d);
+      case 2:
+        return orient2d(a, b, d);
+      default:
+        return -orient2d(a, b, c);
+    }
+  };
+  // The largest point's cofactor is 0 only when the other three are collinear, so it nearly
+  // always decides alone (a grid's cocircular squares come here at every other test): the
+  // full order only when it does not.
+  int largest = 0;
+  for (int i = 1; i < 4; ++i)
+    if (lex_less(*rows[largest].p, *rows[i].p)) largest = i;
+  if (const int first = cofactor(largest); first != 0) return first;
+  std::sort(rows, rows + 4, [](const Row& l, const Row& r) { return lex_less(*r.p, *l.p); });
+  for (const Row& row : rows)
+    if (const int f = cofactor(row.which); f != 0) return f;
+  return 0;  // only for a degenerate (a, b, c), which callers never pass
+}
+
+}  // namespace ridt::detail
+
+namespace ridt {
+
+int orientation(const Point& a, const Point& b, const Point& c) { return detail::orient2d(a, b, c); }
+
+int in_circle(const Point& a, const Point& b, const Point& c, const Point& d) { return detail::incircle(a, b, c, d); }
+
+}  // namespace ridt

@@ -1,0 +1,263 @@
+// What every interpolation in a finished triangulation shares (queries/interpolate.cpp, queries/cubic.cpp):
+// the field it reads (points, triangles, values), renumbered for cache locality when there are
+// many queries, and the two ways of answering: queries located one by one (exact walks, on
+// threads), or the nodes of a grid found by the triangles that hold them.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "predicates/predicates.hpp"
+#include "queries/arrays.hpp"
+#include "ridt/interpolate.hpp"
+#include "ridt/locate.hpp"
+#include "runtime/parallel.hpp"
+#include "walk/mesh.hpp"
+
+namespace ridt::detail {
+
+inline constexpr std::size_t kGrain = 1 << 14;  // queries a thread takes at least
+
+inline void check_values(const char* who, std::size_t n, const Values& values) {
+  if (values.components == 0 || values.data.size() != n * values.components)
+    throw InputError(std::string(who) + ": " + std::to_string(values.data.size()) + " values for " + std::to_string(n) +
+                     " points of " + std::to_string(values.components) + " components");
+}
+
+// What interpolation reads: the points, the triangulation, the values.
+
+// What interpolation reads: the points, the triangulation, the values (`components` numbers a
+// point: for the cubic, the values and then their gradients).
+struct Field {
+  std::span<const Point> points;
+  std::span<const VertexId> triangles;
+  std::span<const std::int32_t> neighbors;
+  Values values;
+
+  const Point& corner(std::size_t tri, int i) const { return points[triangles[3 * tri + i]]; }
+  VertexId vertex(std::size_t tri, int i) const { return triangles[3 * tri + i]; }
+  std::int32_t neighbour(std::size_t tri, int i) const { return neighbors[3 * tri + i]; }
+  const double* value(VertexId v) const { return values.data.data() + v * values.components; }
+
+  // out = the barycentric interpolant of triangle tri at q, its weights within 2^-44 of the
+  // exact ones (barycentric): at a corner the corner's value, on a side the side's
+  // linear interpolant, bounded for the thinnest sliver.
+  void linear(std::size_t tri, const Point& q, double* out) const {
+    double w[3];
+    barycentric(corner(tri, 0), corner(tri, 1), corner(tri, 2), q, w);
+    const double *va = value(vertex(tri, 0)), *vb = value(vertex(tri, 1)), *vc = value(vertex(tri, 2));
+    for (std::size_t k = 0; k < values.components; ++k) out[k] = w[0] * va[k] + w[1] * vb[k] + w[2] * vc[k];
+  }
+};
+
+// Sibson's coordinates at q, which triangle tri holds. Scratch space is reused between queries.
+
+struct Renumbered {
+  std::vector<Point> points;
+  std::vector<VertexId> triangles;
+  std::vector<double> values;
+
+  Renumbered(const Field& f, unsigned threads) : triangles(f.triangles.size()) {
+    std::vector<VertexId> id(f.points.size(), kNone), old;
+    old.reserve(f.points.size());
+    for (std::size_t k = 0; k < triangles.size(); ++k) {
+      VertexId& v = id[f.triangles[k]];
+      if (v == kNone) {
+        v = static_cast<VertexId>(old.size());
+        old.push_back(f.triangles[k]);
+      }
+      triangles[k] = v;
+    }
+    const std::size_t m = f.values.components;
+    points.resize(old.size());
+    values.resize(old.size() * m);
+    parallel_for(old.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) {
+        points[k] = f.points[old[k]];
+        std::copy_n(f.value(old[k]), m, &values[k * m]);
+      }
+    });
+  }
+
+  Field field(std::span<const std::int32_t> neighbors, std::size_t m) const {
+    return {points, triangles, neighbors, Values{values, m}};
+  }
+
+  static constexpr VertexId kNone = ~VertexId{0};
+};
+
+// What both kinds of call read, checked: the field, renumbered when there are about as many
+// answers (`count` of `what`, queries or nodes) as triangles.
+class Input {
+ public:
+  Input(const char* who, std::span<const Point> points, const Triangulation& t, Values values, std::size_t width,
+        std::size_t count, const char* what, std::span<double> out, unsigned threads)
+      : field_{points, t.triangles, t.neighbors, values} {
+    check_arrays(who, points.size(), t.triangles, t.neighbors);
+    check_values(who, points.size(), values);
+    const std::size_t m = values.components;
+    if (out.size() != count * width)
+      throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
+                       std::to_string(count) + " " + what + " of " + std::to_string(width) + " components");
+    if (count >= t.size()) {
+      renumbered_.emplace(field_, threads);
+      field_ = renumbered_->field(t.neighbors, m);
+    }
+  }
+  Input(const Input&) = delete;
+  Input& operator=(const Input&) = delete;
+
+  const Field& field() const { return field_; }
+
+ private:
+  Field field_;
+  std::optional<Renumbered> renumbered_;
+};
+
+// Answers each query with Answer, a class built on each thread from the field (so that its
+// scratch space is reused between queries) whose operator()(tri, q, out) writes `width`
+// numbers for q in triangle tri; `fill` outside the hull.
+template <class Answer>
+void interpolate(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
+                 std::size_t width, std::span<const Point> queries, std::span<double> out, double fill,
+                 unsigned threads) {
+  const Input input(who, points, t, values, width, queries.size(), "queries", out, threads);
+  const Field& field = input.field();
+  std::vector<std::int32_t> where(queries.size());
+  locate(field.points, field.triangles, field.neighbors, queries, where, threads);
+  parallel_for(queries.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+    Answer answer(field);
+    for (std::size_t k = first; k < last; ++k) {
+      if (where[k] >= 0)
+        answer(static_cast<std::size_t>(where[k]), queries[k], &out[k * width]);
+      else
+        std::fill_n(&out[k * width], width, fill);
+    }
+  });
+}
+
+class Axis {
+ public:
+  Axis(const char* who, const char* name, std::span<const double> v) : v_(v), n_(v.size()) {
+    bool up = true, down = true;
+    for (std::size_t k = 0; k < n_; ++k) {
+      if (!std::isfinite(v[k]))
+        throw InputError(std::string(who) + ": grid " + name + "[" + std::to_string(k) + "] is not finite");
+      if (k > 0) up = up && v[k] > v[k - 1], down = down && v[k] < v[k - 1];
+    }
+    if (!up && !down)
+      throw InputError(std::string(who) + ": the grid's " + name + " must be strictly increasing or decreasing");
+    reversed_ = n_ > 1 && down;
+    if (n_ > 1) lowest_ = value(0), per_step_ = static_cast<double>(n_ - 1) / (value(n_ - 1) - lowest_);
+  }
+
+  double value(std::size_t k) const { return v_[index(k)]; }
+  std::size_t index(std::size_t k) const { return reversed_ ? n_ - 1 - k : k; }
+
+  // The nodes with lo <= value <= hi: [first, last). A guess from the mean step, then steps to
+  // the exact ends, so uneven axes are right too, only slower.
+  std::pair<std::size_t, std::size_t> within(double lo, double hi) const {
+    std::size_t first = guess(lo), last = guess(hi);
+    while (first > 0 && value(first - 1) >= lo) --first;
+    while (first < n_ && value(first) < lo) ++first;
+    while (last < n_ && value(last) <= hi) ++last;
+    while (last > first && value(last - 1) > hi) --last;
+    return {first, std::max(first, last)};
+  }
+
+ private:
+  std::size_t guess(double x) const {
+    if (!(per_step_ > 0)) return 0;
+    const double k = std::floor((x - lowest_) * per_step_);
+    return k <= 0 ? 0 : k >= static_cast<double>(n_) ? n_ : static_cast<std::size_t>(k);
+  }
+
+  std::span<const double> v_;
+  std::size_t n_;
+  bool reversed_ = false;
+  double lowest_ = 0, per_step_ = 0;  // nodes a unit, on average
+};
+
+// The lowest-numbered triangle around the vertex at corner i of triangle tri.
+inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
+  const VertexId v = f.vertex(tri, i);
+  std::size_t lowest = tri;
+  // Counter-clockwise (across the side v -> next, across from the previous corner), then, if
+  // that reaches the hull, clockwise from tri.
+  for (int turn = 0; turn < 2; ++turn) {
+    std::size_t at = tri;
+    int corner = i;
+    for (std::size_t steps = 0; steps <= f.triangles.size(); ++steps) {
+      const std::int32_t u = f.neighbour(at, turn == 0 ? prev3(corner) : next3(corner));
+      if (u < 0) break;
+      at = static_cast<std::size_t>(u);
+      if (at == tri) return lowest;
+      corner = f.vertex(at, 0) == v ? 0 : f.vertex(at, 1) == v ? 1 : 2;
+      lowest = std::min(lowest, at);
+    }
+  }
+  return lowest;
+}
+
+// Calls take(tri, node, p), with take = make_take() on each thread, once for every grid node p that the closed hull holds, with a
+// triangle tri that holds it: each triangle visits the nodes of its bounding box and takes
+// those strictly inside, those on a hull side, those on an inner side whose other triangle
+// has a higher number, and a vertex when it is the lowest-numbered triangle around it. So
+// every node in the hull is taken exactly once, and threads that take stretches of the
+// triangles never write the same node.
+template <class MakeTake>
+void cover(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, unsigned threads, MakeTake&& make_take) {
+  const std::size_t count = f.triangles.size() / 3, nx = grid.x.size(), ny = grid.y.size();
+  parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
+    auto take = make_take();  // this thread's own, with its scratch space
+    for (std::size_t tri = first; tri < last; ++tri) {
+      const Point& a = f.corner(tri, 0);
+      const Point& b = f.corner(tri, 1);
+      const Point& c = f.corner(tri, 2);
+      const auto [i0, i1] = ax.within(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));
+      if (i0 == i1) continue;
+      const auto [j0, j1] = ay.within(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
+      for (std::size_t j = j0; j < j1; ++j) {
+        const double y = ay.value(j);
+        for (std::size_t i = i0; i < i1; ++i) {
+          const Point p{ax.value(i), y};
+          const int o[3] = {orient2d(b, c, p), orient2d(c, a, p), orient2d(a, b, p)};
+          if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;
+          const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+          if (zeros == 1) {
+            const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
+            const std::int32_t u = f.neighbour(tri, e);
+            if (u >= 0 && static_cast<std::size_t>(u) < tri) continue;
+          } else if (zeros == 2) {
+            const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex
+            if (lowest_around(f, tri, corner) != tri) continue;
+          }
+          const std::size_t gi = ax.index(i), gj = ay.index(j);
+          take(tri, grid.x_major ? gi * ny + gj : gj * nx + gi, p);
+        }
+      }
+    }
+  });
+}
+
+// The same at every node of a grid (see cover).
+template <class Answer>
+void interpolate_grid(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
+                      std::size_t width, const Grid& grid, std::span<double> out, double fill, unsigned threads) {
+  const Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
+  const Input input(who, points, t, values, width, grid.size(), "nodes", out, threads);
+  const Field& field = input.field();
+  parallel_for(out.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+    std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), fill);
+  });
+  cover(field, ax, ay, grid, threads, [&] {
+    return [&, answer = Answer(field)](std::size_t tri, std::size_t node, const Point& p) mutable {
+      answer(tri, p, &out[node * width]);
+    };
+  });
+}
+
+}  // namespace ridt::detail

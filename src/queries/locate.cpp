@@ -1,0 +1,147 @@
+// Point location in a finished triangulation (ridt/locate.hpp): visibility walks from each
+// answer to the next query, in the queries' own order while that keeps the walks short (a
+// grid, a scan line, sorted queries), else along a Hilbert curve through them.
+#include "ridt/locate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <string>
+#include <thread>
+
+#include "order/order.hpp"
+#include "predicates/predicates.hpp"
+#include "queries/arrays.hpp"
+#include "runtime/parallel.hpp"
+#include "walk/mesh.hpp"
+
+namespace ridt {
+namespace {
+
+using detail::next3;
+using detail::prev3;
+
+// The result's arrays: triangle t has vertices triangles[3t + i] and, across from vertex i,
+// the neighbour neighbors[3t + i] (-1 on the hull).
+struct Result {
+  const Point* points;
+  const VertexId* triangles;
+  const std::int32_t* neighbors;
+  std::size_t size;  // triangles
+
+  const Point& corner(std::size_t t, int i) const { return points[triangles[3 * t + i]]; }
+
+  // Whether the closed triangle t holds q.
+  bool holds(std::size_t t, const Point& q) const {
+    for (int i = 0; i < 3; ++i)
+      if (detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) < 0) return false;
+    return true;
+  }
+
+  // Walks from triangle t towards q, crossing an edge that has q strictly on its far side,
+  // never the one it came in by. In a Delaunay triangulation such a walk cannot cycle
+  // (Edelsbrunner 1990), so it ends at a triangle that holds q, or at a hull edge with q
+  // beyond it: q is then outside the hull, whose edges' lines support it. t is left at the last
+  // triangle reached, and `steps` grows by the triangles it crossed. The step limit only guards
+  // against arrays that are not a Delaunay triangulation; a scan of every triangle answers then.
+  std::int32_t walk(std::size_t& t, const Point& q, std::size_t& steps) const {
+    int from = 3;
+    for (std::size_t s = 0; s <= size; ++s, ++steps) {
+      int out = 3;
+      for (int i = 0; i < 3; ++i) {
+        if (i == from) continue;
+        if (detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) < 0) {
+          out = i;
+          break;
+        }
+      }
+      if (out == 3) return static_cast<std::int32_t>(t);
+      const std::int32_t u = neighbors[3 * t + out];
+      if (u < 0) return -1;
+      from = 3;
+      for (int j = 0; j < 3; ++j)
+        if (neighbors[3 * std::size_t(u) + j] == static_cast<std::int32_t>(t)) from = j;
+      t = static_cast<std::size_t>(u);
+    }
+    for (std::size_t s = 0; s < size; ++s)
+      if (holds(s, q)) return static_cast<std::int32_t>(s);
+    return -1;
+  }
+};
+
+bool finite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// Walks the finite queries of [begin, end) in Hilbert order over their own box, from t.
+void locate_sorted(const Result& mesh, const Point* queries, std::size_t begin, std::size_t end, std::size_t& t,
+                   std::int32_t* out) {
+  std::vector<Point> local;
+  std::vector<std::uint32_t> where;  // local position -> query index
+  local.reserve(end - begin);
+  where.reserve(end - begin);
+  for (std::size_t i = begin; i < end; ++i) {
+    if (finite(queries[i])) {
+      local.push_back(queries[i]);
+      where.push_back(static_cast<std::uint32_t>(i - begin));
+    } else {
+      out[i] = -1;
+    }
+  }
+  const auto count = static_cast<std::uint32_t>(local.size());
+  const std::vector<std::uint32_t> key = detail::hilbert_keys(local.data(), count);
+  std::vector<std::uint32_t> order(count);
+  for (std::uint32_t i = 0; i < count; ++i) order[i] = i;
+  detail::hilbert_sort(local.data(), key.data(), order.data(), count);
+  std::size_t steps = 0;
+  for (const std::uint32_t i : order) out[begin + where[i]] = mesh.walk(t, local[i], steps);
+}
+
+// Answers queries [begin, end). First in their own order, each walk starting at the last
+// answer: while the walks average at most kSteps triangles (after a first allowance for the
+// walk to the first query), the queries come in an order near in the plane and a sort would
+// only cost. Once they do not, the rest are sorted along the curve.
+void locate_share(const Result& mesh, const Point* queries, std::size_t begin, std::size_t end, std::int32_t* out) {
+  constexpr std::size_t kSteps = 6, kAllowance = 1024;
+  std::size_t t = 0, steps = 0, i = begin;
+  for (; i < end; ++i) {
+    if (!finite(queries[i])) {
+      out[i] = -1;
+      continue;
+    }
+    out[i] = mesh.walk(t, queries[i], steps);
+    if (steps > kSteps * (i - begin + kAllowance)) {
+      ++i;
+      break;
+    }
+  }
+  if (i < end) locate_sorted(mesh, queries, i, end, t, out);
+}
+
+}  // namespace
+
+void locate(std::span<const Point> points, std::span<const VertexId> triangles, std::span<const std::int32_t> neighbors,
+            std::span<const Point> queries, std::span<std::int32_t> out, unsigned threads) {
+  detail::check_arrays("locate", points.size(), triangles, neighbors);
+  if (out.size() != queries.size())
+    throw InputError("locate: " + std::to_string(queries.size()) + " queries but room for " +
+                     std::to_string(out.size()) + " answers");
+  if (queries.size() > 0xffffffffu) throw InputError("locate: more than 2^32 queries");
+  const std::size_t size = triangles.size() / 3;
+  if (size == 0) {
+    std::fill(out.begin(), out.end(), -1);
+    return;
+  }
+  const Result mesh{points.data(), triangles.data(), neighbors.data(), size};
+  // A share of fewer than some 16,000 queries is not worth a thread.
+  detail::parallel_for(queries.size(), threads, 16384, [&](std::size_t first, std::size_t last) {
+    locate_share(mesh, queries.data(), first, last, out.data());
+  });
+}
+
+std::vector<std::int32_t> locate(std::span<const Point> points, const Triangulation& triangulation,
+                                 std::span<const Point> queries, unsigned threads) {
+  std::vector<std::int32_t> out(queries.size());
+  locate(points, triangulation.triangles, triangulation.neighbors, queries, out, threads);
+  return out;
+}
+
+}  // namespace ridt

@@ -1,0 +1,239 @@
+#include "runtime/memory.hpp"
+
+#include <sys/mman.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <mutex>
+#include <new>
+#include <utility>
+#include <vector>
+
+#include "ridt/ridt.hpp"
+#include "runtime/parallel.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// The sanitizers' builds keep nothing by default: a block reused by the next run would hide
+// a read after its release from them.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr std::size_t kDefaultLimit = 0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr std::size_t kDefaultLimit = 0;
+#else
+constexpr std::size_t kDefaultLimit = std::size_t{512} << 20;
+#endif
+#else
+constexpr std::size_t kDefaultLimit = std::size_t{512} << 20;
+#endif
+
+struct Cache {
+  // A kept block (from allocate_huge) or range (from a Reservation, when `block` is null),
+  // counted as `bytes`: a range's committed bytes.
+  struct Entry {
+    std::size_t bytes;
+    void* block;
+    Reservation::Mapping range;
+  };
+  std::mutex mutex;
+  std::vector<Entry> kept;  // the last given back last
+  std::size_t held = 0;  // bytes in `kept`
+  std::size_t limit = kDefaultLimit;
+
+  std::size_t room() const { return limit > held ? limit - held : 0; }
+  // What of a range with `committed` bytes would be kept now: its start, in whole huge pages.
+  std::size_t keepable(std::size_t committed) const { return std::min(committed, room() / kHugePage * kHugePage); }
+  // Removes and returns the most recently kept entry that `match` accepts (its pages are the
+  // likeliest to be in the TLB and cache), if any. Under the mutex.
+  template <class Match>
+  bool take(Match&& match, Entry& out) {
+    for (auto it = kept.rbegin(); it != kept.rend(); ++it) {
+      if (!match(*it)) continue;
+      out = *it;
+      held -= it->bytes;
+      kept.erase(std::next(it).base());
+      return true;
+    }
+    return false;
+  }
+  // Frees the oldest entries until at most `keep` bytes are held. Under the mutex.
+  void shrink(std::size_t keep) {
+    std::size_t i = 0;
+    for (; i < kept.size() && held > keep; ++i) {
+      held -= kept[i].bytes;
+      free_entry(kept[i]);
+    }
+    kept.erase(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  static void free_entry(const Entry& e) {
+    if (e.block != nullptr)
+      std::free(e.block);
+    else
+      munmap(e.range.map, e.range.map_bytes);
+  }
+  ~Cache() { shrink(0); }
+};
+
+Cache& cache() {
+  static Cache c;
+  return c;
+}
+
+std::size_t round_up(std::size_t x, std::size_t to) { return (x + to - 1) / to * to; }
+
+}  // namespace
+
+void* take_cached_block(std::size_t bytes) {
+  Cache& c = cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  Cache::Entry e;
+  return c.take([&](const Cache::Entry& k) { return k.block != nullptr && k.bytes == bytes; }, e) ? e.block : nullptr;
+}
+
+void release_block(void* p, std::size_t bytes) {
+  Cache& c = cache();
+  {
+    const std::lock_guard<std::mutex> guard(c.mutex);
+    if (bytes != 0 && bytes <= c.room()) {
+      try {
+        c.kept.push_back({bytes, p, {}});
+        c.held += bytes;
+        return;
+      } catch (const std::bad_alloc&) {
+        // no room for the entry: the block is freed instead
+      }
+    }
+  }
+  std::free(p);
+}
+
+Reservation::Reservation(std::size_t bytes, bool huge) {
+  Cache& c = cache();
+  {
+    const std::lock_guard<std::mutex> guard(c.mutex);
+    Cache::Entry e;
+    if (c.take([&](const Cache::Entry& k) { return k.block == nullptr && k.range.reserved >= bytes; }, e)) m_ = e.range;
+  }
+  if (m_.map == nullptr) {
+    // Address space only: PROT_NONE is neither usable nor charged to the commit limit, and
+    // most systems grant tens of GiB. Where a limit on address space refuses, ask for less.
+    const std::size_t align = huge ? kHugePage : 4096;
+    for (bytes = round_up(std::max<std::size_t>(bytes, 1), align);; bytes = round_up(bytes / 2, align)) {
+      void* p = mmap(nullptr, bytes + align, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+      if (p != MAP_FAILED) {
+        const auto at = reinterpret_cast<std::uintptr_t>(p);
+        m_ = {p, bytes + align, reinterpret_cast<std::byte*>(round_up(at, align)), bytes, 0, false};
+        break;
+      }
+      if (bytes <= kHugePage) throw std::bad_alloc();
+    }
+  }
+#ifdef MADV_HUGEPAGE
+  // A kept range may have been made without: what is faulted in from now on is huge.
+  if (huge && !m_.huge) m_.huge = madvise(m_.base, m_.reserved, MADV_HUGEPAGE) == 0;
+#endif
+}
+
+Reservation& Reservation::operator=(Reservation&& other) noexcept {
+  if (this != &other) {
+    this->~Reservation();
+    m_ = std::exchange(other.m_, {});
+  }
+  return *this;
+}
+
+Reservation::~Reservation() {
+  if (m_.map == nullptr) return;
+  Cache& c = cache();
+  std::size_t keep = 0;
+  {
+    const std::lock_guard<std::mutex> guard(c.mutex);
+    keep = c.keepable(m_.committed);
+    if (keep > 0 && keep < m_.committed) {
+      // What is over the limit goes back, before another thread can take the range: mapped
+      // afresh, its pages are freed and it is reserved address space again, unmarked.
+      if (mmap(m_.base + keep, m_.committed - keep, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_FIXED,
+               -1, 0) == MAP_FAILED) {
+        keep = 0;
+      } else {
+        m_.committed = keep;
+        m_.huge = false;  // marked again when taken for huge pages
+      }
+    }
+    if (keep > 0) {
+      try {
+        c.kept.push_back({keep, nullptr, m_});
+        c.held += keep;
+      } catch (const std::bad_alloc&) {
+        keep = 0;  // no room for the entry: the range is unmapped instead
+      }
+    }
+  }
+  if (keep == 0) munmap(m_.map, m_.map_bytes);
+  m_ = {};
+}
+
+void Reservation::commit(std::size_t bytes, std::size_t step) {
+  if (bytes <= m_.committed) return;
+  if (bytes > m_.reserved) throw std::bad_alloc();
+  const std::size_t target = std::min(round_up(bytes, step), m_.reserved);
+  if (mprotect(m_.base + m_.committed, target - m_.committed, PROT_READ | PROT_WRITE) != 0) throw std::bad_alloc();
+  m_.committed = target;
+}
+
+std::size_t Reservation::keepable() const {
+  Cache& c = cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  return c.keepable(m_.committed);
+}
+
+void Reservation::discard(std::size_t from, std::size_t to) {
+#ifdef MADV_DONTNEED
+  const std::size_t kPage = m_.huge ? kHugePage : 4096;
+  from = round_up(from, kPage);
+  to = std::min(to, m_.committed) / kPage * kPage;
+  if (to > from) madvise(m_.base + from, to - from, MADV_DONTNEED);
+#else
+  (void)from, (void)to;
+#endif
+}
+
+void make_present(void* data, std::size_t bytes, unsigned threads) {
+#ifdef MADV_POPULATE_WRITE
+  constexpr std::uintptr_t kPage = 4096;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kPage - 1) & ~(kPage - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kPage - 1);
+  if (end <= begin || end - begin < (std::uintptr_t{1} << 20)) return;
+  const std::uintptr_t pages = (end - begin) / kPage;
+  threads = static_cast<unsigned>(std::clamp<std::uintptr_t>(pages / 256, 1, std::max(threads, 1u)));
+  on_threads(threads, [=](unsigned t) {
+    const std::uintptr_t from = begin + pages * t / threads * kPage, to = begin + pages * (t + 1) / threads * kPage;
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE);
+  });
+#else
+  (void)data, (void)bytes, (void)threads;
+#endif
+}
+
+}  // namespace ridt::detail
+
+namespace ridt {
+
+std::size_t set_memory_cache_limit(std::size_t bytes) {
+  detail::Cache& c = detail::cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  const std::size_t previous = c.limit;
+  c.limit = bytes;
+  c.shrink(bytes);
+  return previous;
+}
+
+std::size_t cached_memory() {
+  detail::Cache& c = detail::cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  return c.held;
+}
+
+}  // namespace ridt

@@ -1,0 +1,76 @@
+// The library's two parallel loops: a body on each of a few threads, and a range cut into
+// parts, one a thread. The caller's thread always takes part 0.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <memory>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+namespace ridt::detail {
+
+/// Tells the core we are spinning (frees resources for the other hardware thread).
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+/// The threads to use: `threads`, or the machine's hardware threads for 0.
+inline unsigned thread_count(unsigned threads) {
+  return threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
+/// A body to run on several threads, by reference: body(w) for the w-th thread.
+struct TaskRef {
+  void* body;
+  void (*call)(void*, unsigned);
+  void operator()(unsigned w) const { call(body, w); }
+};
+
+/// Runs task(w) for w in [0, count), w = 0 on the calling thread and the rest on threads that
+/// the process keeps parked between calls (runtime/parallel.cpp), and returns once all have ended; or
+/// runs nothing and returns false when they are busy with another call, or the caller is one
+/// of them. A thread started for each part costs some 0.5 ms on a virtual machine, before it
+/// runs and on the thread that starts it, against some 0.05 ms to wake a parked one; a
+/// triangulation runs some thirty such parts.
+bool run_parked(unsigned count, TaskRef task);
+
+/// Runs body(w) for w in [0, count), each on its own thread, the caller taking w = 0; returns
+/// once all have ended. The body must not throw (parallel_for catches for its parts).
+template <class Body>
+void on_threads(unsigned count, Body&& body) {
+  if (count > 1) {
+    using B = std::remove_reference_t<Body>;
+    void* at = const_cast<std::remove_const_t<B>*>(std::addressof(body));
+    if (run_parked(count, {at, [](void* b, unsigned w) { (*static_cast<B*>(b))(w); }})) return;
+  }
+  std::vector<std::jthread> pool;
+  for (unsigned w = 1; w < count; ++w) pool.emplace_back(body, w);
+  body(0u);
+}  // the pool joins on leaving
+
+/// Runs body(first, last) over [0, count) in up to `threads` parts (0: the hardware's threads)
+/// of at least `grain` each; the first exception of any part is rethrown once all ended.
+template <class Body>
+void parallel_for(std::size_t count, unsigned threads, std::size_t grain, Body&& body) {
+  const auto parts =
+      static_cast<unsigned>(std::clamp<std::size_t>(count / std::max<std::size_t>(grain, 1), 1, thread_count(threads)));
+  std::vector<std::exception_ptr> failed(parts);
+  on_threads(parts, [&](unsigned p) {
+    try {
+      body(count * p / parts, count * (p + 1) / parts);
+    } catch (...) {
+      failed[p] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
+
+}  // namespace ridt::detail

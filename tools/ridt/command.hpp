@@ -1,0 +1,82 @@
+// The tool's subcommands and what they share. Each subcommand is a file: it adds its options
+// to the app and returns what runs when it is chosen (main.cpp).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "io.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt::tool {
+
+inline constexpr int kExitInvalid = 1;  ///< check: the triangulation is not valid
+inline constexpr int kExitUsage = 2;  ///< bad input or usage
+
+/// A subcommand: its CLI11 app, and what runs when it is chosen (returns the exit status).
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+Command add_triangulate(CLI::App& app);
+Command add_generate(CLI::App& app);
+Command add_check(CLI::App& app);
+Command add_voronoi(CLI::App& app);
+Command add_interpolate(CLI::App& app);
+
+/// A seed as text: the whole of it a decimal integer that fits 64 bits.
+extern const CLI::Validator kSeed;
+
+/// Numbers apart by commas, e.g. "200,100" or "0,0,1,1"; `what` names them in a message.
+std::vector<double> numbers(const std::string& text, const char* what);
+
+/// The box of --box ("x0,y0,x1,y1"), or the points' box and 10 % around when `text` is empty.
+io::Box box_option(const std::string& text, std::span<const Point> points);
+
+/// The process's peak resident memory in bytes.
+long long peak_rss_bytes();
+
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// "name: help; ..." for an option whose values are E's (ridt::names), its default first.
+template <class E>
+std::string choices_help(const std::string& intro, E fallback) {
+  std::string help = intro + (intro.empty() ? "" : ": ");
+  for (const Named<E>& n : names<E>()) {
+    help += std::string(n.name) + (n.value == fallback ? " (default)" : "") + ", " + std::string(n.help) + "; ";
+  }
+  return help.substr(0, help.size() - 2);
+}
+
+/// One line on stderr that says how far a long run is, only when stderr is a terminal: never
+/// in a pipe or a file, and never on stdout, where --stats goes. It appears once the run has
+/// taken half a second, changes at most ten times a second, and is erased when done.
+class ProgressLine {
+ public:
+  ProgressLine();
+  ~ProgressLine() { clear(); }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  bool on() const { return on_; }
+  /// "ridt: PHASE" and, for a fraction in [0, 1), its percentage.
+  void show(const char* phase, double fraction = -1);
+  /// Erases the line (before a message, and at the end).
+  void clear();
+
+ private:
+  bool on_, shown_ = false;
+  std::chrono::steady_clock::time_point start_;
+  double last_ = 0;
+  const char* phase_ = nullptr;
+};
+
+}  // namespace ridt::tool

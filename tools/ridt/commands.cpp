@@ -1,0 +1,72 @@
+// ridt generate, ridt check and ridt voronoi: the small subcommands.
+#include "command.hpp"
+#include "ridt/check.hpp"
+#include "ridt/generate.hpp"
+#include "ridt/voronoi.hpp"
+
+namespace ridt::tool {
+
+Command add_generate(CLI::App& app) {
+  struct Args {
+    std::string dist, output;
+    std::uint32_t n = 0;
+    std::uint64_t seed = 1;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* gen = app.add_subcommand("generate", "write points of one of the paper's distributions");
+  gen->add_option("--dist", a->dist, choices_help("", Distribution::Uniform))->required();
+  gen->add_option("-n", a->n, "number of points")->required();
+  gen->add_option("--seed", a->seed, "seed")->check(kSeed);
+  gen->add_option("-o,--output", a->output, "output: " + io::point_formats())->required();
+  return {gen, [a] {
+            io::write_points(a->output, generate(parse<Distribution>(a->dist), a->n, a->seed));
+            return 0;
+          }};
+}
+
+Command add_check(CLI::App& app) {
+  struct Args {
+    std::string points, triangles;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* chk = app.add_subcommand("check", "validate a triangulation exactly");
+  chk->add_option("points", a->points, "the points")->required();
+  chk->add_option("triangles", a->triangles,
+                  "the triangles: " + io::triangle_formats() + ", or the .parts index of ridt-mpi's parts")
+      ->required();
+  return {chk, [a] {
+            const io::PointFile p = io::read_points(a->points);
+            const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
+            const CheckResult r = check(p.points, t);
+            std::printf("%s\n", r.message.c_str());
+            return r.valid ? 0 : kExitInvalid;
+          }};
+}
+
+Command add_voronoi(CLI::App& app) {
+  struct Args {
+    std::string input, output, box;
+    unsigned threads = 1;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* vor = app.add_subcommand("voronoi", "the Voronoi diagram of points");
+  vor->add_option("points", a->input, "the points: " + io::point_formats())->required();
+  vor->add_option("-o,--output", a->output, "output: " + io::voronoi_formats())->required();
+  vor->add_option("--box", a->box,
+                  "x0,y0,x1,y1: the box .svg and .off clip to (default: the points' box and "
+                  "10 % around)");
+  vor->add_option("--threads", a->threads, "threads (0: all hardware threads; default 1)");
+  return {vor, [a] {
+            const io::PointFile p = io::read_points(a->input);
+            Options o;
+            o.method = Method::Auto;
+            o.threads = a->threads;
+            const Triangulation t = triangulate(p.points, o);
+            if (!t.warning.empty()) throw InputError("no Voronoi vertex: " + t.warning);
+            const Voronoi vd = voronoi(p.points, t, a->threads);
+            io::write_voronoi(a->output, p.points, t, vd, box_option(a->box, p.points));
+            return 0;
+          }};
+}
+
+}  // namespace ridt::tool

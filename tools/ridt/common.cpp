@@ -1,0 +1,75 @@
+// What the subcommands share (command.hpp).
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+
+#include "command.hpp"
+
+namespace ridt::tool {
+
+// CLI11 2.1 converts with strtoull, which takes "-1" as 2^64 - 1 and any larger number as
+// 2^64 - 1 too, so the text is checked before it is converted.
+const CLI::Validator kSeed(
+    [](std::string& text) -> std::string {
+      std::uint64_t v = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (ec == std::errc() && end == text.data() + text.size()) return "";
+      return "a seed is an integer from 0 to 18446744073709551615, got '" + text + "'";
+    },
+    "SEED");
+
+std::vector<double> numbers(const std::string& text, const char* what) {
+  std::vector<double> out;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    double v = 0;
+    const char* first = text.data() + at;
+    const char* last = text.data() + comma;
+    const auto r = std::from_chars(first, last, v);
+    if (r.ec != std::errc() || r.ptr != last || !std::isfinite(v))
+      throw InputError(std::string(what) + ": '" + text + "' is not a list of finite numbers apart by commas");
+    out.push_back(v);
+    at = comma + 1;
+  }
+  return out;
+}
+
+io::Box box_option(const std::string& text, std::span<const Point> points) {
+  if (text.empty()) return io::box_around(points, 0.1);
+  const std::vector<double> b = numbers(text, "--box");
+  if (b.size() != 4 || !(b[0] < b[2]) || !(b[1] < b[3]))
+    throw InputError("--box: give x0,y0,x1,y1 with x0 < x1 and y0 < y1");
+  return {b[0], b[1], b[2], b[3]};
+}
+
+long long peak_rss_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<long long>(u.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+ProgressLine::ProgressLine() : on_(isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+
+void ProgressLine::show(const char* phase, double fraction) {
+  if (!on_) return;
+  const double now = seconds_since(start_);
+  if (now < 0.5 || (shown_ && now - last_ < 0.1 && phase == phase_)) return;
+  if (fraction >= 0 && fraction < 1)
+    std::fprintf(stderr, "\r\033[Kridt: %s %3.0f%%", phase, 100 * fraction);
+  else
+    std::fprintf(stderr, "\r\033[Kridt: %s", phase);
+  std::fflush(stderr);
+  shown_ = true, last_ = now, phase_ = phase;
+}
+
+void ProgressLine::clear() {
+  if (!shown_) return;
+  std::fputs("\r\033[K", stderr);
+  std::fflush(stderr);
+  shown_ = false;
+}
+
+}  // namespace ridt::tool

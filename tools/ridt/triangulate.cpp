@@ -1,0 +1,161 @@
+// ridt triangulate INPUT [-o OUTPUT] [--method M] [--threads N] [--order O] [--locate L]
+//                        [--seed S] [--stats[=json|table]] and the paper's experiment switches.
+#include <sstream>
+
+#include "command.hpp"
+
+namespace ridt::tool {
+namespace {
+
+struct Args {
+  std::string input, output, stats;
+  std::string method = "auto", order = "brio", locate = "auto", bounding = "symbolic";
+  std::uint64_t seed = 1;
+  double k = 10;
+  unsigned threads = 0;
+  bool profile = false, paper_locking = false, no_thread_timing = false;
+};
+
+std::string number(double v) {
+  std::ostringstream o;
+  o.precision(6);
+  o << v;
+  return o.str();
+}
+
+// A value of Stats as JSON: an option's name quoted, a count, a time.
+template <class T>
+std::string json(const T& v) {
+  if constexpr (std::is_enum_v<T>)
+    return "\"" + std::string(to_string(v)) + "\"";
+  else if constexpr (std::is_same_v<T, std::string>)
+    return "\"" + v + "\"";
+  else if constexpr (std::is_floating_point_v<T>)
+    return number(v);
+  else
+    return std::to_string(v);
+}
+
+using Fields = std::vector<std::pair<std::string, std::string>>;
+
+// The run's options and sizes, the library's stats (ridt::for_each_stat), the tool's times.
+Fields stats_fields(const Args& a, const Triangulation& t, double t_read, double t_write) {
+  Fields f = {{"seed", json(a.seed)},
+              {"order", json(a.order)},
+              {"bounding", json(a.bounding)},
+              {"triangles", json(t.size())},
+              {"hull", json(t.hull.size())}};
+  for_each_stat([&](const char* name, auto member) { f.emplace_back(name, json(t.stats.*member)); });
+  f.emplace_back("time_read_s", json(t_read));
+  f.emplace_back("time_write_s", json(t_write));
+  f.emplace_back("peak_rss_bytes", json(peak_rss_bytes()));
+  return f;
+}
+
+void print_table(const Fields& f, const Stats& s) {
+  for (const auto& [key, value] : f) std::printf("%-20s %s\n", key.c_str(), value.c_str());
+  std::printf("\n%6s %-9s %10s %14s %16s %12s %8s\n", "thread", "role", "points", "insertion [s]", "critical [s]",
+              "waiting [s]", "retries");
+  const auto row = [](const char* thread, const char* role, const ThreadStats& p) {
+    std::printf("%6s %-9s %10llu %14.6f %16.6f %12.6f %8llu\n", thread, role, static_cast<unsigned long long>(p.points),
+                p.time_insert_s, p.time_critical_s, p.time_wait_s, static_cast<unsigned long long>(p.retries));
+  };
+  for (std::size_t i = 0; i < s.per_thread.size(); ++i)
+    row(std::to_string(i).c_str(), s.per_thread[i].role.c_str(), s.per_thread[i]);
+  row("all", "", {"", s.points, s.time_insert_s, s.time_critical_s, s.time_wait_s, s.retries});
+}
+
+void print_json(Fields f, const Stats& s) {
+  std::string per_thread = "[";
+  for (std::size_t i = 0; i < s.per_thread.size(); ++i) {
+    per_thread += (i ? ", " : "") + std::string("{\"thread\": ") + std::to_string(i);
+    for_each_thread_stat([&](const char* name, auto member) {
+      per_thread += ", \"" + std::string(name) + "\": " + json(s.per_thread[i].*member);
+    });
+    per_thread += "}";
+  }
+  f.emplace_back("per_thread", per_thread + "]");
+  std::printf("{");
+  for (std::size_t i = 0; i < f.size(); ++i)
+    std::printf("%s\"%s\": %s", i ? ", " : "", f[i].first.c_str(), f[i].second.c_str());
+  std::printf("}\n");
+}
+
+Options options(const Args& a) {
+  Options o;
+  o.method = parse<Method>(a.method);
+  o.order = parse<Order>(a.order);
+  o.locate = parse<Locate>(a.locate);
+  o.threads = a.threads;
+  o.seed = a.seed;
+  o.canonical_order = !a.output.empty();  // files are identical for every seed and method
+  o.experiment.bounding = parse<Bounding>(a.bounding);
+  o.experiment.k = a.k;
+  o.experiment.profile = a.profile;
+  o.experiment.paper_locking = a.paper_locking;
+  o.experiment.time_threads = !a.no_thread_timing;
+  if (a.stats != "" && a.stats != "json" && a.stats != "table")
+    throw InputError("unknown stats format '" + a.stats + "' (use json or table)");
+  if (!a.output.empty()) io::check_triangulation_extension(a.output);
+  return o;
+}
+
+int run(const Args& a) {
+  Options o = options(a);
+  ProgressLine progress;
+  if (progress.on()) o.progress = [&](double done) { progress.show(done < 1 ? "inserting" : "finishing", done); };
+  auto t0 = std::chrono::steady_clock::now();
+  const io::PointFile in = io::read_points(a.input);
+  const double t_read = seconds_since(t0);
+  const Triangulation t = triangulate(in.points, o);
+  progress.clear();
+  if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
+  t0 = std::chrono::steady_clock::now();
+  if (!a.output.empty()) {
+    progress.show("writing");
+    io::write_triangulation(a.output, in.points, t, in.first_index);
+    progress.clear();
+  }
+  const double t_write = seconds_since(t0);
+  if (a.stats.empty() && !a.profile) return 0;
+  const Fields f = stats_fields(a, t, t_read, t_write);
+  a.stats == "table" ? print_table(f, t.stats) : print_json(f, t.stats);
+  return 0;
+}
+
+// The paper's experiment switches (Options::experiment), apart in the help.
+void add_experiment(CLI::App* tri, Args& a) {
+  const std::string x = "Experiment (the paper's section 4)";
+  tri->add_flag("--paper-locking", a.paper_locking, "pessimistic: lock from the leaves' parents, as the paper does")
+      ->group(x);
+  tri->add_flag("--no-thread-timing", a.no_thread_timing, "threaded methods: do not time critical sections and waiting")
+      ->group(x);
+  tri->add_flag("--profile", a.profile, "serial: time location, split and legalization (Fig. 8)")->group(x);
+  tri->add_option("--bounding", a.bounding, choices_help("the starting triangle", Bounding::Symbolic))->group(x);
+  tri->add_option("--k", a.k, "finite bounding triangle: K = k * box size (default 10)")->group(x);
+}
+
+}  // namespace
+
+Command add_triangulate(CLI::App& app) {
+  auto a = std::make_shared<Args>();
+  CLI::App* tri = app.add_subcommand("triangulate", "triangulate a point file");
+  tri->add_option("input", a->input, "points: " + io::point_formats())->required();
+  tri->add_option("-o,--output", a->output, "triangles: " + io::triangulation_formats());
+  tri->add_option("--seed", a->seed, "seed of the random insertion order")->check(kSeed);
+  tri->add_option("--method", a->method, choices_help("", Method::Auto));
+  tri->add_option("--threads", a->threads,
+                  "threads of a threaded method (0, the default: all hardware threads; batch: threads - 1 locators "
+                  "and one modifier)");
+  tri->add_option("--order", a->order, choices_help("insertion order", Order::Brio));
+  tri->add_option("--locate", a->locate, choices_help("point location", Locate::Auto));
+  CLI::Option* stats =
+      tri->add_option("--stats", a->stats, "print counters and times: json (default) or table")->expected(0, 1);
+  add_experiment(tri, *a);
+  return {tri, [a, stats] {
+            if (*stats && a->stats.empty()) a->stats = "json";
+            return run(*a);
+          }};
+}
+
+}  // namespace ridt::tool

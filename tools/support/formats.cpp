@@ -1,0 +1,80 @@
+// The file formats, one line each (formats.hpp). The writers of triangulations take a uniform
+// call here; each format's own code is in its io_*.cpp.
+#include "formats.hpp"
+
+namespace ridt::io::detail {
+namespace {
+
+// Writes through a Writer that commits only when the whole file is written.
+template <class Body>
+void whole(const std::string& path, Body body) {
+  Writer out(path);
+  body(out);
+  out.commit();
+}
+
+void ele_out(const std::string& path, const TriangulationOut& o) {
+  whole(path, [&](Writer& out) { write_ele(out, o.triangles(), o.first_index); });
+}
+
+void neigh_out(const std::string& path, const TriangulationOut& o) {
+  const std::size_t nt = o.t.size();
+  if (o.t.neighbors.size() < 3 * nt)
+    fail_file(path,
+              "the triangulation has " + std::to_string(o.t.neighbors.size()) + " neighbour entries for " +
+                  std::to_string(nt) + " triangles");
+  whole(path, [&](Writer& out) { write_neigh(out, std::span(o.t.neighbors).first(3 * nt), o.first_index); });
+}
+
+void off_out(const std::string& path, const TriangulationOut& o) {
+  check_indices(path, o.triangles(), o.points.size(), "a triangle");
+  whole(path, [&](Writer& out) { write_off(out, o.points, o.triangles()); });
+}
+
+void obj_out(const std::string& path, const TriangulationOut& o) {
+  check_indices(path, o.triangles(), o.points.size(), "a triangle");
+  whole(path, [&](Writer& out) { write_obj(out, o.points, o.triangles()); });
+}
+
+void svg_out(const std::string& path, const TriangulationOut& o) { write_svg(path, o.points, o.t); }
+
+std::vector<VertexId> bin_triangles_in(const std::string& path, std::string_view data, int /*first_index*/) {
+  return read_bin_triangles(path, data);
+}
+
+void bin_out(const std::string& path, const TriangulationOut& o) {
+  whole(path, [&](Writer& out) { write_bin_triangles(out, o.triangles()); });
+}
+
+// clang-format off
+// extension, description,                         points in,       triangles in,       points out,        triangulation out
+constexpr Format kFormats[] = {
+    {".node", "Triangle's nodes",                   read_node,       nullptr,            write_node,        nullptr},
+    {".ele", "Triangle's elements",                 nullptr,         read_ele,           nullptr,           ele_out},
+    {".neigh", "Triangle's neighbours",             nullptr,         nullptr,            nullptr,           neigh_out},
+    {".off", "OFF mesh",                            nullptr,         nullptr,            nullptr,           off_out},
+    {".obj", "Wavefront OBJ",                       nullptr,         nullptr,            nullptr,           obj_out},
+    {".svg", "a drawing",                           nullptr,         nullptr,            nullptr,           svg_out},
+    {".bin", "little-endian float64 or uint32",     read_bin_points, bin_triangles_in,   write_bin_points,  bin_out},
+    {"", "text, a point or triangle a line",        read_text_points, read_text_triangles, write_text_points, nullptr},
+};
+// clang-format on
+
+}  // namespace
+
+std::span<const Format> formats() { return kFormats; }
+
+}  // namespace ridt::io::detail
+
+namespace ridt::io {
+
+std::string point_formats() { return detail::extensions_with(&detail::Format::read_points); }
+std::string triangle_formats() { return detail::extensions_with(&detail::Format::read_triangles); }
+std::string triangulation_formats() { return detail::extensions_with(&detail::Format::write_triangulation); }
+std::string voronoi_formats() {
+  return ".svg (the cells clipped to the box, and the sites), .off (each clipped cell a face) or .json (vertices, "
+         "cells, ridges)";
+}
+std::string values_formats() { return ".csv (x,y,values), .bin (float64 values) or, for a grid, .png (a colour map)"; }
+
+}  // namespace ridt::io

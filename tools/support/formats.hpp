@@ -1,0 +1,64 @@
+// The registry of file formats, keyed by extension (formats.cpp): what each format reads and
+// writes. io.cpp asks it for the format of a path; a new format is its io_*.cpp and one line in
+// formats.cpp.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io_common.hpp"
+
+namespace ridt::io::detail {
+
+/// What a triangulation writer is given.
+struct TriangulationOut {
+  std::span<const Point> points;
+  const Triangulation& t;
+  int first_index;  ///< of the input .node, for formats numbered as Triangle's
+  std::span<const VertexId> triangles() const { return std::span(t.triangles).first(3 * t.size()); }
+};
+
+/// A format: its extension ("" stands for any other: text) and what it can do (null: not).
+struct Format {
+  std::string_view extension;
+  std::string_view description;
+  PointFile (*read_points)(const std::string& path, std::string_view data);
+  std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index);
+  void (*write_points)(Writer& out, std::span<const Point> points);
+  void (*write_triangulation)(const std::string& path, const TriangulationOut& out);
+};
+
+/// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws
+/// IoError naming the extensions that have it, `what` naming the role.
+template <class Role>
+const Format& format_of(const std::string& path, Role Format::*role, const char* what);
+
+/// The registered formats.
+std::span<const Format> formats();
+
+/// "a, b or c": the extensions of the formats with `role` (", or text" where any other is).
+template <class Role>
+std::string extensions_with(Role Format::*role) {
+  std::string list;
+  bool text = false;
+  std::vector<std::string_view> found;
+  for (const Format& f : formats())
+    if (f.*role != nullptr) f.extension.empty() ? void(text = true) : found.push_back(f.extension);
+  for (std::size_t i = 0; i < found.size(); ++i)
+    list += std::string(i == 0 ? "" : i + 1 == found.size() && !text ? " or " : ", ") + std::string(found[i]);
+  return text ? list + " or text" : list;
+}
+
+template <class Role>
+const Format& format_of(const std::string& path, Role Format::*role, const char* what) {
+  const std::string ext = extension_of(path);
+  for (const Format& f : formats())
+    if (f.extension == ext && f.*role != nullptr) return f;
+  for (const Format& f : formats())
+    if (f.extension.empty() && f.*role != nullptr) return f;
+  throw IoError("unknown " + std::string(what) + " extension '" + ext + "' (use " + extensions_with(role) + ")");
+}
+
+}  // namespace ridt::io::detail
