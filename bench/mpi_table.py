@@ -115,64 +115,53 @@ def spread(values, fmt):
     return fmt.format(med) if lo == hi else f"{fmt.format(med)} ({fmt.format(lo)}–{fmt.format(hi)})"
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--build", default="build")
-    ap.add_argument("--n", type=int, default=1000000)
-    ap.add_argument("--ranks", default="1,2,4,8")
-    ap.add_argument("--dists", default="uniform,clusters,terrain")
-    ap.add_argument("--large", type=int, default=10000000)
-    ap.add_argument("--large-ranks", type=int, default=4)
-    ap.add_argument("--out", default="docs/mpi-results.md")
-    a = ap.parse_args()
-    ranks = [int(x) for x in a.ranks.split(",")]
-    dists = a.dists.split(",")
-    lines = []
-    fit = {}  # per distribution at the most ranks: the model's constants
-    mem_fit = {}  # per distribution: (points owned, peak bytes) of every rank of every run
-    large = []
-    with tempfile.TemporaryDirectory() as tmp:
-        if a.large:
-            large = large_rows(a.build, a.large, a.large_ranks, tmp, mem_fit)
-        for dist in dists:
-            pts = os.path.join(tmp, f"{dist}.bin")
-            make_points(a.build, dist, a.n, pts)
-            ref = os.path.join(tmp, "single.ele")
-            run([os.path.join(a.build, "ridt"), "triangulate", pts, "-o", ref])
-            merged = os.path.join(tmp, "merged.ele")
-            run(["mpirun", "-np", str(max(ranks)), "--oversubscribe", os.path.join(a.build, "ridt-mpi"), pts, "-o",
-                 merged, "--merge"])
-            if not filecmp.cmp(ref, merged, shallow=False):
-                sys.exit(f"{dist}: the merged result of {max(ranks)} ranks differs from the single process's")
-            t_single, b_single = single(a.build, pts)
-            for p in ranks:
-                rows = ranks_of(a.build, pts, p, os.path.join(tmp, "out.ele"))
-                own = [r["points"] for r in rows]
-                got = [r["received"] / max(r["points"], 1) for r in rows]
-                sent = [r["bytes_sent"] / max(r["points"], 1) for r in rows]
-                comm = [r["comm_s"] / max(r["total_s"], 1e-9) for r in rows]
-                peak = [r["peak_mib"] for r in rows]
-                rounds = max(r["rounds"] for r in rows)
-                lines.append(f"| {dist} | {p} | {spread(own, '{:,.0f}')} | {spread(got, '{:.3f}')} | {rounds:.0f} | "
-                             f"{spread(sent, '{:.0f}')} | {spread(comm, '{:.2f}')} | {spread(peak, '{:.0f}')} |")
-                mem_fit.setdefault(dist, []).extend((r["points"], r["peak_mib"] * 2**20) for r in rows)
-                if p == max(ranks):
-                    fit[dist] = {
-                        "halo": statistics.median(r["received"] / math.sqrt(max(r["points"], 1)) for r in rows),
-                        "bytes": statistics.median(sent),
-                        "rounds": rounds,
-                        # One core each, not oversubscribed: the single process's time a point,
-                        # once a round (each round triangulates again).
-                        "compute": rounds * t_single,
-                        "single_s": t_single,
-                        "single_b": b_single,
-                    }
+def measure(a, dist, ranks, tmp, lines, fit, mem_fit):
+    """One distribution: the merged result checked, then each rank count's row; the model's
+    constants at the most ranks."""
+    pts = os.path.join(tmp, f"{dist}.bin")
+    make_points(a.build, dist, a.n, pts)
+    ref = os.path.join(tmp, "single.ele")
+    run([os.path.join(a.build, "ridt"), "triangulate", pts, "-o", ref])
+    merged = os.path.join(tmp, "merged.ele")
+    run(["mpirun", "-np", str(max(ranks)), "--oversubscribe", os.path.join(a.build, "ridt-mpi"), pts, "-o",
+         merged, "--merge"])
+    if not filecmp.cmp(ref, merged, shallow=False):
+        sys.exit(f"{dist}: the merged result of {max(ranks)} ranks differs from the single process's")
+    t_single, b_single = single(a.build, pts)
+    for p in ranks:
+        rows = ranks_of(a.build, pts, p, os.path.join(tmp, "out.ele"))
+        own = [r["points"] for r in rows]
+        got = [r["received"] / max(r["points"], 1) for r in rows]
+        sent = [r["bytes_sent"] / max(r["points"], 1) for r in rows]
+        comm = [r["comm_s"] / max(r["total_s"], 1e-9) for r in rows]
+        peak = [r["peak_mib"] for r in rows]
+        rounds = max(r["rounds"] for r in rows)
+        lines.append(f"| {dist} | {p} | {spread(own, '{:,.0f}')} | {spread(got, '{:.3f}')} | {rounds:.0f} | "
+                     f"{spread(sent, '{:.0f}')} | {spread(comm, '{:.2f}')} | {spread(peak, '{:.0f}')} |")
+        mem_fit.setdefault(dist, []).extend((r["points"], r["peak_mib"] * 2**20) for r in rows)
+        if p == max(ranks):
+            fit[dist] = {
+                "halo": statistics.median(r["received"] / math.sqrt(max(r["points"], 1)) for r in rows),
+                "bytes": statistics.median(sent),
+                "rounds": rounds,
+                # One core each, not oversubscribed: the single process's time a point,
+                # once a round (each round triangulates again).
+                "compute": rounds * t_single,
+                "single_s": t_single,
+                "single_b": b_single,
+            }
 
+
+def fit_memory(mem_fit, fit):
     for dist, pairs in mem_fit.items():  # peak = fixed + per point, least squares over every rank
         xs, ys = [x for x, _ in pairs], [y for _, y in pairs]
         mx, my = statistics.mean(xs), statistics.mean(ys)
         slope = sum((x - mx) * (y - my) for x, y in pairs) / max(sum((x - mx) ** 2 for x in xs), 1e-9)
         fit[dist]["peak"], fit[dist]["fixed"] = slope, my - slope * mx
+
+
+def ranks_page(a, lines, large):
+    """The page's measured part: per rank, and the large run."""
     out = []
     out.append("# ridt-mpi per rank, and a model for a cluster\n")
     out.append(f"Written by `bench/mpi_table.py --n {a.n} --ranks {a.ranks} --dists {a.dists} --large {a.large} "
@@ -198,6 +187,12 @@ def main():
         out.append("|---|---:|---|---|---:|---:|---:|---:|---:|---:|")
         out.extend(large)
         out.append("")
+    return out
+
+
+def model_page(fit):
+    """The model for a cluster, from the fitted constants."""
+    out = []
     out.append("## The model\n")
     out.append("A node holds n = N / P points. Its time is read + redistribute + compute + exchange:\n")
     out.append("- read: 16 n bytes from a parallel file system whose bandwidth B_fs is shared by the P nodes "
@@ -241,6 +236,31 @@ def main():
                            f"{t_comp:.1f} | {t_ex:.3f} | {t_read + t_red + t_comp + t_ex:.1f} | "
                            f"{mem / 2**30:.1f} GiB | {traffic / 2**30:.2f} GiB |")
     out.append("")
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--n", type=int, default=1000000)
+    ap.add_argument("--ranks", default="1,2,4,8")
+    ap.add_argument("--dists", default="uniform,clusters,terrain")
+    ap.add_argument("--large", type=int, default=10000000)
+    ap.add_argument("--large-ranks", type=int, default=4)
+    ap.add_argument("--out", default="docs/mpi-results.md")
+    a = ap.parse_args()
+    ranks = [int(x) for x in a.ranks.split(",")]
+    lines = []
+    fit = {}  # per distribution at the most ranks: the model's constants
+    mem_fit = {}  # per distribution: (points owned, peak bytes) of every rank of every run
+    large = []
+    with tempfile.TemporaryDirectory() as tmp:
+        if a.large:
+            large = large_rows(a.build, a.large, a.large_ranks, tmp, mem_fit)
+        for dist in a.dists.split(","):
+            measure(a, dist, ranks, tmp, lines, fit, mem_fit)
+    fit_memory(mem_fit, fit)
+    out = ranks_page(a, lines, large) + model_page(fit)
     os.makedirs(os.path.dirname(a.out) or ".", exist_ok=True)
     with open(a.out, "w") as f:
         f.write("\n".join(out))

@@ -89,6 +89,60 @@ ridt::Options ridt_options(ridt::Method m, ridt::Order order, ridt::Locate locat
   return o;
 }
 
+#ifdef RIDT_WITH_CGAL
+std::pair<double, std::size_t> run_cgal(const Input& in) {
+  const auto t0 = Clock::now();
+  CGAL::Delaunay_triangulation_2<K> dt;
+  dt.insert(in.cgal.begin(), in.cgal.end());
+  const double s = since(t0);
+  return std::pair{s, static_cast<std::size_t>(dt.number_of_faces())};
+}
+#endif
+
+#ifdef RIDT_WITH_QHULL
+std::pair<double, std::size_t> run_qhull(const Input& in) {
+  std::vector<double> xy = in.flat;  // qhull takes a non-const array
+  const auto t0 = Clock::now();
+  qhT qh_storage;
+  qhT* qh = &qh_storage;
+  QHULL_LIB_CHECK
+  qh_zero(qh, stderr);
+  char options[] = "qhull d Qt Qbb Qc Qz Q12";
+  const int code = qh_new_qhull(qh, 2, static_cast<int>(xy.size() / 2), xy.data(), False, options, nullptr, stderr);
+  std::size_t triangles = 0;
+  if (code == 0) {
+    facetT* facet;
+    FORALLfacets {
+      if (!facet->upperdelaunay) ++triangles;
+    }
+  }
+  qh_freeqhull(qh, !qh_ALL);
+  int curlong, totlong;
+  qh_memfreeshort(qh, &curlong, &totlong);
+  const double s = since(t0);
+  if (code != 0) std::abort();
+  return std::pair{s, triangles};
+}
+#endif
+
+#ifdef RIDT_WITH_TRIANGLE
+// Switches: z (ids from 0), Q (quiet), N (no copy of the points out), B (no boundary markers),
+// n (each triangle's neighbours, as ridt gives them).
+std::pair<double, std::size_t> run_triangle(const Input& in) {
+  std::vector<double> xy = in.flat;  // Triangle takes a non-const array
+  const auto t0 = Clock::now();
+  triangulateio pts{}, out{};
+  pts.pointlist = xy.data();
+  pts.numberofpoints = static_cast<int>(xy.size() / 2);
+  char options[] = "zQNBn";
+  triangulate(options, &pts, &out, nullptr);
+  const auto triangles = static_cast<std::size_t>(out.numberoftriangles);
+  trifree(out.trianglelist);
+  trifree(out.neighborlist);
+  return std::pair{since(t0), triangles};
+}
+#endif
+
 std::vector<Code> codes(std::uint32_t n) {
   std::vector<Code> c;
   auto ridt_code = [](std::string name, ridt::Options o) {
@@ -98,8 +152,7 @@ std::vector<Code> codes(std::uint32_t n) {
                 }};
   };
   using ridt::Locate, ridt::Method, ridt::Order;
-  // The paper's random order costs some 3 s a million points here: left out
-  // above 10^6.
+  // The paper's random order costs some 3 s a million points here: left out above 10^6.
   if (n <= 1000000)
     c.push_back(ridt_code("ridt random dag", ridt_options(Method::Serial, Order::Random, Locate::Dag, 1)));
   c.push_back(ridt_code("ridt brio dag", ridt_options(Method::Serial, Order::Brio, Locate::Dag, 1)));
@@ -108,58 +161,13 @@ std::vector<Code> codes(std::uint32_t n) {
   c.push_back(ridt_code("ridt batch 2", ridt_options(Method::Batch, Order::Brio, Locate::Dag, 2)));
   c.push_back(ridt_code("ridt partition 2", ridt_options(Method::Partition, Order::Brio, Locate::Walk, 2)));
 #ifdef RIDT_WITH_CGAL
-  c.push_back({"CGAL", [](const Input& in) {
-                 const auto t0 = Clock::now();
-                 CGAL::Delaunay_triangulation_2<K> dt;
-                 dt.insert(in.cgal.begin(), in.cgal.end());
-                 const double s = since(t0);
-                 return std::pair{s, static_cast<std::size_t>(dt.number_of_faces())};
-               }});
+  c.push_back({"CGAL", run_cgal});
 #endif
 #ifdef RIDT_WITH_QHULL
-  // Some 9 s a million points here: left out above 10^6 too.
-  if (n <= 1000000)
-    c.push_back({"Qhull", [](const Input& in) {
-                   std::vector<double> xy = in.flat;  // qhull takes a non-const array
-                   const auto t0 = Clock::now();
-                   qhT qh_storage;
-                   qhT* qh = &qh_storage;
-                   QHULL_LIB_CHECK
-                   qh_zero(qh, stderr);
-                   char options[] = "qhull d Qt Qbb Qc Qz Q12";
-                   const int code =
-                       qh_new_qhull(qh, 2, static_cast<int>(xy.size() / 2), xy.data(), False, options, nullptr, stderr);
-                   std::size_t triangles = 0;
-                   if (code == 0) {
-                     facetT* facet;
-                     FORALLfacets {
-                       if (!facet->upperdelaunay) ++triangles;
-                     }
-                   }
-                   qh_freeqhull(qh, !qh_ALL);
-                   int curlong, totlong;
-                   qh_memfreeshort(qh, &curlong, &totlong);
-                   const double s = since(t0);
-                   if (code != 0) std::abort();
-                   return std::pair{s, triangles};
-                 }});
+  if (n <= 1000000) c.push_back({"Qhull", run_qhull});  // some 9 s a million points here
 #endif
 #ifdef RIDT_WITH_TRIANGLE
-  // Switches: z (ids from 0), Q (quiet), N (no copy of the points out), B (no
-  // boundary markers), n (each triangle's neighbours, as ridt gives them).
-  c.push_back({"Triangle", [](const Input& in) {
-                 std::vector<double> xy = in.flat;  // Triangle takes a non-const array
-                 const auto t0 = Clock::now();
-                 triangulateio pts{}, out{};
-                 pts.pointlist = xy.data();
-                 pts.numberofpoints = static_cast<int>(xy.size() / 2);
-                 char options[] = "zQNBn";
-                 triangulate(options, &pts, &out, nullptr);
-                 const auto triangles = static_cast<std::size_t>(out.numberoftriangles);
-                 trifree(out.trianglelist);
-                 trifree(out.neighborlist);
-                 return std::pair{since(t0), triangles};
-               }});
+  c.push_back({"Triangle", run_triangle});
 #endif
   return c;
 }
@@ -248,103 +256,128 @@ Delaunator run_delaunator(const std::string& modules, const std::vector<ridt::Po
   return d;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Args {
   std::vector<std::uint32_t> sizes = {10000, 100000, 1000000};
   std::vector<std::string> dists = {"uniform", "normal", "grid", "clusters"};
   int reps = 5;
   std::string csv, modules;
   bool check = false;
+};
+
+bool parse_args(int argc, char** argv, Args& a) {
+  if (const char* m = std::getenv("RIDT_NODE_MODULES")) a.modules = m;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--sizes" && i + 1 < argc) {
+      a.sizes.clear();
+      for (const auto& s : split(argv[++i])) a.sizes.push_back(static_cast<std::uint32_t>(std::stoul(s)));
+    } else if (arg == "--dists" && i + 1 < argc) {
+      a.dists = split(argv[++i]);
+    } else if (arg == "--reps" && i + 1 < argc) {
+      a.reps = std::atoi(argv[++i]);
+    } else if (arg == "--csv" && i + 1 < argc) {
+      a.csv = argv[++i];
+    } else if (arg == "--node-modules" && i + 1 < argc) {
+      a.modules = argv[++i];
+    } else if (arg == "--check") {
+      a.check = true;
+    } else {
+      return false;
+    }
+  }
+  if (!a.modules.empty() && std::system("node --version > /dev/null 2>&1") != 0) a.modules.clear();
+  return true;
+}
+
+// Each code once a repetition, in an order shuffled anew each time: times and triangle counts.
+void interleaved(const std::vector<Code>& list, const Input& in, int reps, std::mt19937& shuffle,
+                 std::vector<std::vector<double>>& times, std::vector<std::size_t>& triangles) {
+  times.assign(list.size(), {});
+  triangles.assign(list.size(), 0);
+  std::vector<std::size_t> order(list.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  for (int r = 0; r < reps; ++r) {
+    std::shuffle(order.begin(), order.end(), shuffle);
+    for (const std::size_t c : order) {
+      const auto [s, t] = list[c].run(in);
+      times[c].push_back(s);
+      triangles[c] = t;
+    }
+  }
+}
+
+// A row of the table: a code's median, its ratio to CGAL's, the memory it adds a point.
+struct Row {
+  std::string name;
+  double seconds, bytes;
+  std::size_t triangles;
+};
+
+// The rows of one distribution and size, printed (and to the CSV); with --check, the number
+// of codes whose triangle count differs from the first's.
+int report(const Args& a, const std::string& dist, std::uint32_t n, const std::vector<Row>& rows, FILE* out) {
+  double cgal = 0;
+  for (const Row& r : rows)
+    if (r.name == "CGAL") cgal = r.seconds;
+  std::printf("\n%s, n = %u\n%-20s %10s %8s %8s %10s\n", dist.c_str(), n, "code", "median_s", "ratio", "B/pt",
+              "triangles");
   int disagreements = 0;
-  if (const char* m = std::getenv("RIDT_NODE_MODULES")) modules = m;
+  for (const Row& r : rows) {
+    const double ratio = cgal > 0 ? r.seconds / cgal : 0;
+    std::printf("%-20s %10.4f %8.3f %8.0f %10zu\n", r.name.c_str(), r.seconds, ratio, r.bytes / n, r.triangles);
+    if (out)
+      std::fprintf(out, "%s,%u,%s,%.6f,%.4f,%.1f,%zu\n", dist.c_str(), n, r.name.c_str(), r.seconds, ratio, r.bytes / n,
+                   r.triangles);
+    if (a.check && r.triangles != rows.front().triangles) {
+      std::fprintf(stderr, "%s, n = %u: %s gave %zu triangles, %s %zu\n", dist.c_str(), n, r.name.c_str(), r.triangles,
+                   rows.front().name.c_str(), rows.front().triangles);
+      ++disagreements;
+    }
+  }
+  std::fflush(stdout);
+  return disagreements;
+}
+
+int table(const Args& a, FILE* out) {
+  std::mt19937 shuffle(12345);
+  int disagreements = 0;
+  for (const std::string& dist_name : a.dists) {
+    const ridt::Distribution dist = ridt::parse<ridt::Distribution>(dist_name);
+    for (const std::uint32_t n : a.sizes) {
+      const Input in = make_input(dist, n);
+      const std::vector<Code> list = codes(n);
+      std::vector<std::vector<double>> times;
+      std::vector<std::size_t> triangles;
+      interleaved(list, in, a.reps, shuffle, times, triangles);
+      std::vector<Row> rows;
+      for (std::size_t c = 0; c < list.size(); ++c)
+        rows.push_back({list[c].name, median(times[c]), added_bytes(c, dist_name, n), triangles[c]});
+      const Delaunator d = run_delaunator(a.modules, in.points, a.reps);
+      if (!d.times.empty()) rows.push_back({"delaunator (node)", median(d.times), d.extra, d.triangles});
+      disagreements += report(a, dist_name, n, rows, out);
+    }
+  }
+  return disagreements;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
   if (argc == 5 && std::string(argv[1]) == "--measure")
     return measure(std::stoul(argv[2]), ridt::parse<ridt::Distribution>(argv[3]),
                    static_cast<std::uint32_t>(std::stoul(argv[4])));
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--sizes" && i + 1 < argc) {
-      sizes.clear();
-      for (const auto& s : split(argv[++i])) sizes.push_back(static_cast<std::uint32_t>(std::stoul(s)));
-    } else if (a == "--dists" && i + 1 < argc) {
-      dists = split(argv[++i]);
-    } else if (a == "--reps" && i + 1 < argc) {
-      reps = std::atoi(argv[++i]);
-    } else if (a == "--csv" && i + 1 < argc) {
-      csv = argv[++i];
-    } else if (a == "--node-modules" && i + 1 < argc) {
-      modules = argv[++i];
-    } else if (a == "--check") {
-      check = true;
-    } else {
-      std::fprintf(stderr,
-                   "usage: %s [--sizes N,N,...] [--dists "
-                   "uniform,normal,grid,clusters] [--reps R] "
-                   "[--csv FILE] [--node-modules DIR] [--check]\n",
-                   argv[0]);
-      return 2;
-    }
+  Args a;
+  if (!parse_args(argc, argv, a)) {
+    std::fprintf(stderr,
+                 "usage: %s [--sizes N,N,...] [--dists uniform,normal,grid,clusters] [--reps R] [--csv FILE] "
+                 "[--node-modules DIR] [--check]\n",
+                 argv[0]);
+    return 2;
   }
-  if (!modules.empty() && std::system("node --version > /dev/null 2>&1") != 0) modules.clear();
-  FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
-  if (out)
-    std::fprintf(out,
-                 "distribution,n,code,median_s,ratio_to_cgal,added_bytes_"
-                 "per_point,triangles\n");
-  std::printf(
-      "Medians of %d runs [s]; ratio = time / CGAL's; B/pt = peak "
-      "memory a run adds, per point\n",
-      reps);
-  std::mt19937 shuffle(12345);
-  for (const std::string& dist_name : dists) {
-    const std::optional<ridt::Distribution> dist = ridt::parse<ridt::Distribution>(dist_name);
-    for (const std::uint32_t n : sizes) {
-      const Input in = make_input(*dist, n);
-      const std::vector<Code> list = codes(n);
-      std::vector<std::vector<double>> times(list.size());
-      std::vector<std::size_t> triangles(list.size());
-      std::vector<std::size_t> order(list.size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-      for (int r = 0; r < reps; ++r) {
-        std::shuffle(order.begin(), order.end(), shuffle);
-        for (const std::size_t c : order) {
-          const auto [s, t] = list[c].run(in);
-          times[c].push_back(s);
-          triangles[c] = t;
-        }
-      }
-      std::vector<double> added(list.size());
-      for (std::size_t c = 0; c < list.size(); ++c) added[c] = added_bytes(c, dist_name, n);
-      const Delaunator d = run_delaunator(modules, in.points, reps);
-
-      double cgal = 0;
-      for (std::size_t c = 0; c < list.size(); ++c)
-        if (list[c].name == "CGAL") cgal = median(times[c]);
-      std::printf("\n%s, n = %u\n%-20s %10s %8s %8s %10s\n", dist_name.c_str(), n, "code", "median_s", "ratio", "B/pt",
-                  "triangles");
-      auto row = [&](const std::string& name, double t, double bytes, std::size_t tris) {
-        const double ratio = cgal > 0 ? t / cgal : 0;
-        std::printf("%-20s %10.4f %8.3f %8.0f %10zu\n", name.c_str(), t, ratio, bytes / n, tris);
-        if (out)
-          std::fprintf(out, "%s,%u,%s,%.6f,%.4f,%.1f,%zu\n", dist_name.c_str(), n, name.c_str(), t, ratio, bytes / n,
-                       tris);
-      };
-      for (std::size_t c = 0; c < list.size(); ++c) row(list[c].name, median(times[c]), added[c], triangles[c]);
-      if (!d.times.empty()) row("delaunator (node)", median(d.times), d.extra, d.triangles);
-      if (check) {
-        std::vector<std::pair<std::string, std::size_t>> counts;
-        for (std::size_t c = 0; c < list.size(); ++c) counts.emplace_back(list[c].name, triangles[c]);
-        if (!d.times.empty()) counts.emplace_back("delaunator (node)", d.triangles);
-        for (const auto& [name, count] : counts)
-          if (count != counts.front().second) {
-            std::fprintf(stderr, "%s, n = %u: %s gave %zu triangles, %s %zu\n", dist_name.c_str(), n, name.c_str(),
-                         count, counts.front().first.c_str(), counts.front().second);
-            ++disagreements;
-          }
-      }
-      std::fflush(stdout);
-    }
-  }
+  FILE* out = a.csv.empty() ? nullptr : std::fopen(a.csv.c_str(), "w");
+  if (out) std::fprintf(out, "distribution,n,code,median_s,ratio_to_cgal,added_bytes_per_point,triangles\n");
+  std::printf("Medians of %d runs [s]; ratio = time / CGAL's; B/pt = peak memory a run adds, per point\n", a.reps);
+  const int disagreements = table(a, out);
   if (out) std::fclose(out);
   return disagreements > 0 ? 1 : 0;
 }

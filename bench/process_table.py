@@ -77,6 +77,30 @@ def compiler(build):
     return "unknown compiler"
 
 
+def write_page(a, rows):
+    """The Markdown page and the CSV beside it."""
+    with open(os.path.splitext(a.out)[0] + ".csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    with open(a.out, "w") as f:
+        f.write("# Whole-process timings against CGAL\n\n")
+        f.write(f"Written by `bench/process_table.py --build {a.build} --sizes {a.sizes} --dists {a.dists} "
+                f"--reps {a.reps} --threads {a.threads}` on {time.strftime('%Y-%m-%d')}.\n\n")
+        f.write(f"Machine: {machine()}. Compiler: {compiler(a.build)}.\n\n")
+        f.write("Each code is one process on a `.bin` file of float64 pairs: read, triangulate, write "
+                "nothing. Repetitions run the codes in a new random order each time. Time: median wall "
+                "seconds (min to max). Ratio: to CGAL's median; paired: the median of the ratios "
+                "within each repetition. Peak: the process's peak resident memory per point, "
+                "the input's 16 bytes included.\n\n")
+        f.write("| n | distribution | code | time s | min to max | ratio to CGAL | paired | peak B/pt |\n")
+        f.write("|---:|---|---|---:|---:|---:|---:|---:|\n")
+        for r in rows:
+            f.write(f"| {r['n']:,} | {r['dist']} | {r['code']} | {r['median_s']:.3f} | "
+                    f"{r['min_s']:.3f} to {r['max_s']:.3f} | {r['ratio']:.2f} | {r['paired_ratio']:.2f} | "
+                    f"{r['bytes_per_point']:.0f} |\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--build", default="build")
@@ -125,27 +149,7 @@ def main():
                     print(f"{n:>9} {dist:<9} {name:<26} {med:8.3f} s  x{r['ratio']:.3f}"
                           f" (paired {r['paired_ratio']:.3f})  {r['bytes_per_point']:6.1f} B/pt", flush=True)
     if a.out:
-        with open(os.path.splitext(a.out)[0] + ".csv", "w", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-            w.writeheader()
-            w.writerows(rows)
-        with open(a.out, "w") as f:
-            f.write("# Whole-process timings against CGAL\n\n")
-            f.write(f"Written by `bench/process_table.py --build {a.build} --sizes {a.sizes} --dists {a.dists} "
-                    f"--reps {a.reps} --threads {a.threads}` on {time.strftime('%Y-%m-%d')}.\n\n")
-            f.write(f"Machine: {machine()}. Compiler: {compiler(a.build)}.\n\n")
-            f.write("Each code is one process on a `.bin` file of float64 pairs: read, triangulate, write "
-                    "nothing. Repetitions run the codes in a new random order each time. Time: median wall "
-                    "seconds (min to max). Ratio: to CGAL's median; paired: the median of the ratios "
-                    "within each repetition. Peak: the process's peak resident memory per point, "
-                    "the input's 16 bytes included.\n\n")
-            f.write("| n | distribution | code | time s | min to max | ratio to CGAL | paired | peak B/pt |\n")
-            f.write("|---:|---|---|---:|---:|---:|---:|---:|\n")
-            for r in rows:
-                f.write(f"| {r['n']:,} | {r['dist']} | {r['code']} | {r['median_s']:.3f} | "
-                        f"{r['min_s']:.3f} to {r['max_s']:.3f} | {r['ratio']:.2f} | {r['paired_ratio']:.2f} | "
-                        f"{r['bytes_per_point']:.0f} |\n")
-
+        write_page(a, rows)
 
 if __name__ == "__main__":
     main()

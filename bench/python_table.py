@@ -96,43 +96,8 @@ def versions(python):
     return f"Python {v[0]}, numpy {v[1]}, scipy {v[2]}, matplotlib {v[3]}, ridt {v[4]}"
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--python", default="build/venv/bin/python")
-    ap.add_argument("--sizes", default="10000,100000,1000000")
-    ap.add_argument("--big", default="10000000")
-    ap.add_argument("--dists", default="uniform,normal,grid,clusters")
-    ap.add_argument("--big-dists", default="uniform", help="the distributions at the --big sizes")
-    ap.add_argument("--reps", type=int, default=3)
-    ap.add_argument("--out", default="docs/results/python.md")
-    args = ap.parse_args()
-    cases = [(d, int(n), args.reps) for n in args.sizes.split(",") if n for d in args.dists.split(",")]
-    cases += [(d, int(n), 1) for n in args.big.split(",") if n for d in args.big_dists.split(",")]
-    rows = []
-    with tempfile.TemporaryDirectory() as tmp:
-        for dist, n, reps in cases:
-            path = os.path.join(tmp, f"{dist}-{n}.npy")
-            np.save(path, points(dist, n))
-            got = {c: [] for c in CODES}
-            for _ in range(reps):
-                for code in random.sample(CODES, len(CODES)):
-                    got[code].append(run(args.python, code, path))
-            os.remove(path)
-            ridt_time = None
-            for code in CODES:
-                ok = [r for r in got[code] if r is not None]
-                row = {"n": n, "distribution": dist, "code": LABEL[code], "runs": len(ok), "failed": reps - len(ok)}
-                if ok:
-                    row["time_s"] = statistics.median(r["time"] for r in ok)
-                    row["extra_b_per_point"] = statistics.median(r["extra"] for r in ok) / n
-                rows.append(row)
-                print(json.dumps(row), file=sys.stderr, flush=True)
-    # Speed-ups of each code against scipy within the same case.
-    for r in rows:
-        ref = next((s for s in rows if s["n"] == r["n"] and s["distribution"] == r["distribution"]
-                    and s["code"] == LABEL["scipy"] and "time_s" in s), None)
-        r["scipy_over_code"] = ref["time_s"] / r["time_s"] if ref and "time_s" in r else None
-
+def write_page(args, rows):
+    """The Markdown page and the CSV beside it."""
     base = os.path.splitext(args.out)[0]
     with open(base + ".csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=["n", "distribution", "code", "runs", "failed", "time_s",
@@ -156,6 +121,45 @@ def main():
             f.write(f"| {r['n']:,} | {r['distribution']} | {r['code']} | {r['time_s']:.3f} | "
                     f"{r['scipy_over_code']:.1f} | {r['extra_b_per_point']:.0f} |\n")
         f.write("\n![time against n](python_time.png)\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--python", default="build/venv/bin/python")
+    ap.add_argument("--sizes", default="10000,100000,1000000")
+    ap.add_argument("--big", default="10000000")
+    ap.add_argument("--dists", default="uniform,normal,grid,clusters")
+    ap.add_argument("--big-dists", default="uniform", help="the distributions at the --big sizes")
+    ap.add_argument("--reps", type=int, default=3)
+    ap.add_argument("--out", default="docs/results/python.md")
+    args = ap.parse_args()
+    cases = [(d, int(n), args.reps) for n in args.sizes.split(",") if n for d in args.dists.split(",")]
+    cases += [(d, int(n), 1) for n in args.big.split(",") if n for d in args.big_dists.split(",")]
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for dist, n, reps in cases:
+            path = os.path.join(tmp, f"{dist}-{n}.npy")
+            np.save(path, points(dist, n))
+            got = {c: [] for c in CODES}
+            for _ in range(reps):
+                for code in random.sample(CODES, len(CODES)):
+                    got[code].append(run(args.python, code, path))
+            os.remove(path)
+            for code in CODES:
+                ok = [r for r in got[code] if r is not None]
+                row = {"n": n, "distribution": dist, "code": LABEL[code], "runs": len(ok), "failed": reps - len(ok)}
+                if ok:
+                    row["time_s"] = statistics.median(r["time"] for r in ok)
+                    row["extra_b_per_point"] = statistics.median(r["extra"] for r in ok) / n
+                rows.append(row)
+                print(json.dumps(row), file=sys.stderr, flush=True)
+    # Speed-ups of each code against scipy within the same case.
+    for r in rows:
+        ref = next((s for s in rows if s["n"] == r["n"] and s["distribution"] == r["distribution"]
+                    and s["code"] == LABEL["scipy"] and "time_s" in s), None)
+        r["scipy_over_code"] = ref["time_s"] / r["time_s"] if ref and "time_s" in r else None
+
+    write_page(args, rows)
     plot(rows, os.path.join(os.path.dirname(args.out), "python_time.png"))
 
 

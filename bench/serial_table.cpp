@@ -47,85 +47,96 @@ double cgal_seconds(const std::vector<ridt::Point>& pts) {
 #endif
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Args {
   std::uint32_t max_n = 1000000;
   int reps = 5;
   std::string csv;
   std::vector<std::uint32_t> sizes = {100, 500, 1000, 5000, 10000, 50000, 100000, 500000, 1000000};
-  const ridt::Distribution dists[] = {ridt::Distribution::Uniform, ridt::Distribution::Normal, ridt::Distribution::Grid,
-                                      ridt::Distribution::Clusters};
   bool wanted[4] = {true, true, true, true};
-  bool usage = false;
-  for (int i = 1; i < argc && !usage; ++i) {
+};
+
+bool parse_args(int argc, char** argv, Args& a) {
+  for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--max-n") && i + 1 < argc) {
-      max_n = std::atoi(argv[++i]);
+      a.max_n = std::atoi(argv[++i]);
     } else if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) {
-      sizes.clear();
-      for (const std::string& n : split(argv[++i])) sizes.push_back(static_cast<std::uint32_t>(std::stoul(n)));
+      a.sizes.clear();
+      for (const std::string& n : split(argv[++i])) a.sizes.push_back(static_cast<std::uint32_t>(std::stoul(n)));
     } else if (!std::strcmp(argv[i], "--dists") && i + 1 < argc) {
-      std::fill(std::begin(wanted), std::end(wanted), false);
-      for (const std::string& name : split(argv[++i])) {
-        wanted[static_cast<int>(ridt::parse<ridt::Distribution>(name))] = true;
-      }
+      std::fill(std::begin(a.wanted), std::end(a.wanted), false);
+      for (const std::string& name : split(argv[++i]))
+        a.wanted[static_cast<int>(ridt::parse<ridt::Distribution>(name))] = true;
     } else if (!std::strcmp(argv[i], "--reps") && i + 1 < argc) {
-      reps = std::atoi(argv[++i]);
+      a.reps = std::atoi(argv[++i]);
     } else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) {
-      csv = argv[++i];
+      a.csv = argv[++i];
     } else {
-      usage = true;
+      return false;
     }
   }
-  if (usage || reps < 1) {
+  return a.reps >= 1;
+}
+
+// Fig. 8's shares of the insertion time (profiled runs).
+struct Share {
+  std::uint32_t n;
+  double loc, split, leg;
+};
+
+// One cell of Table 1: ridt (the paper's random order) and CGAL on distribution d, n points;
+// the uniform cells also give Fig. 8's shares.
+void cell(const Args& a, ridt::Distribution d, std::uint32_t n, FILE* out, std::vector<Share>& fig8) {
+  const std::vector<ridt::Point> pts = ridt::generate(d, n, 1);
+  std::vector<double> ours, theirs, loc, split, leg;
+  for (int r = 0; r < a.reps; ++r) {
+    ridt::Options o;
+    o.order = ridt::Order::Random;  // the paper's Table 1; bench/peers_table.cpp has BRIO
+    o.seed = 1 + r;
+    ours.push_back(ridt::triangulate(pts, o).stats.time_triangulate_s);
+    theirs.push_back(cgal_seconds(pts));
+    o.experiment.profile = true;
+    const ridt::Stats s = ridt::triangulate(pts, o).stats;
+    const double total = s.time_locate_s + s.time_split_s + s.time_legalize_s;
+    loc.push_back(s.time_locate_s / total);
+    split.push_back(s.time_split_s / total);
+    leg.push_back(s.time_legalize_s / total);
+  }
+  const double ridt_s = median(ours), cgal_s = median(theirs);
+  std::printf(" | %8.4f %8.4f %6.2f", ridt_s, cgal_s, cgal_s > 0 ? ridt_s / cgal_s : 0.0);
+  std::fflush(stdout);
+  if (d == ridt::Distribution::Uniform) fig8.push_back({n, median(loc), median(split), median(leg)});
+  if (out)
+    std::fprintf(out, "%s,%u,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f\n", ridt::to_string(d).data(), n, ridt_s, cgal_s,
+                 cgal_s > 0 ? ridt_s / cgal_s : 0.0, median(loc), median(split), median(leg));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args a;
+  if (!parse_args(argc, argv, a)) {
     std::fprintf(
         stderr,
         "usage: %s [--max-n N] [--sizes N,N,...] [--dists uniform,normal,grid,clusters] [--reps R] [--csv FILE]\n",
         argv[0]);
     return 2;
   }
-  FILE* out = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
+  FILE* out = a.csv.empty() ? nullptr : std::fopen(a.csv.c_str(), "w");
   if (out) std::fprintf(out, "distribution,n,ridt_s,cgal_s,ratio,locate_share,split_share,legalize_share\n");
-
-  std::printf("Table 1: serial times [s], median of %d runs, ridt random order vs CGAL range insert\n", reps);
+  std::printf("Table 1: serial times [s], median of %d runs, ridt random order vs CGAL range insert\n", a.reps);
   std::printf("%9s", "n");
-  for (auto d : dists) std::printf(" | %-8s %8s %6s", ridt::to_string(d).data(), "CGAL", "ratio");
+  for (const auto& d : ridt::names<ridt::Distribution>())
+    std::printf(" | %-8s %8s %6s", d.name.data(), "CGAL", "ratio");
   std::printf("\n");
-  struct Share {
-    std::uint32_t n;
-    double loc, split, leg;
-  };
   std::vector<Share> fig8;
-  for (std::uint32_t n : sizes) {
-    if (n > max_n) continue;
+  for (std::uint32_t n : a.sizes) {
+    if (n > a.max_n) continue;
     std::printf("%9u", n);
-    for (auto d : dists) {
-      if (!wanted[static_cast<int>(d)]) {
+    for (const auto& d : ridt::names<ridt::Distribution>()) {
+      if (a.wanted[static_cast<int>(d.value)])
+        cell(a, d.value, n, out, fig8);
+      else
         std::printf(" | %8s %8s %6s", "-", "-", "-");
-        continue;
-      }
-      const std::vector<ridt::Point> pts = ridt::generate(d, n, 1);
-      std::vector<double> ours, theirs, loc, split, leg;
-      for (int r = 0; r < reps; ++r) {
-        ridt::Options o;
-        o.order = ridt::Order::Random;  // the paper's Table 1; bench/peers_table.cpp has BRIO
-        o.seed = 1 + r;
-        ours.push_back(ridt::triangulate(pts, o).stats.time_triangulate_s);
-        theirs.push_back(cgal_seconds(pts));
-        o.experiment.profile = true;
-        const ridt::Stats s = ridt::triangulate(pts, o).stats;
-        const double total = s.time_locate_s + s.time_split_s + s.time_legalize_s;
-        loc.push_back(s.time_locate_s / total);
-        split.push_back(s.time_split_s / total);
-        leg.push_back(s.time_legalize_s / total);
-      }
-      const double a = median(ours), b = median(theirs);
-      std::printf(" | %8.4f %8.4f %6.2f", a, b, b > 0 ? a / b : 0.0);
-      std::fflush(stdout);
-      if (d == ridt::Distribution::Uniform) fig8.push_back({n, median(loc), median(split), median(leg)});
-      if (out)
-        std::fprintf(out, "%s,%u,%.6f,%.6f,%.4f,%.4f,%.4f,%.4f\n", ridt::to_string(d).data(), n, a, b,
-                     b > 0 ? a / b : 0.0, median(loc), median(split), median(leg));
     }
     std::printf("\n");
   }

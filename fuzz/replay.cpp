@@ -327,13 +327,16 @@ void run(const Bytes& input, std::uint64_t number) {
   g_current = nullptr;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The command line.
+struct Args {
   std::uint64_t seed = 1, mutations = 0, max_len = 4096;
   std::optional<std::uint64_t> only;
   std::string dictionary_path;
   std::vector<std::string> dirs;
+};
+
+Args parse_args(int argc, char** argv) {
+  Args a;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const auto value = [&]() -> const char* {
@@ -341,15 +344,15 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     if (arg == "--seed")
-      seed = parse_count(arg, value());
+      a.seed = parse_count(arg, value());
     else if (arg == "--mutations")
-      mutations = parse_count(arg, value());
+      a.mutations = parse_count(arg, value());
     else if (arg == "--max-len")
-      max_len = parse_count(arg, value());
+      a.max_len = parse_count(arg, value());
     else if (arg == "--only")
-      only = parse_count(arg, value());
+      a.only = parse_count(arg, value());
     else if (arg == "--dict")
-      dictionary_path = value();
+      a.dictionary_path = value();
     else if (arg == "--save") {
       const std::string dir = value();
       if (dir.size() >= sizeof g_save_dir) usage_error("--save folder name too long");
@@ -357,13 +360,19 @@ int main(int argc, char** argv) {
     } else if (arg.starts_with("--"))
       usage_error("unknown option " + arg);
     else
-      dirs.push_back(arg);
+      a.dirs.push_back(arg);
   }
-  if (dirs.empty()) usage_error("no corpus folder given");
+  if (a.dirs.empty()) usage_error("no corpus folder given");
+  return a;
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args a = parse_args(argc, argv);
   std::vector<Bytes> dictionary;
-  if (!dictionary_path.empty()) dictionary = read_dictionary(dictionary_path);
-  const Mutator mutator(read_corpus(dirs), std::move(dictionary), max_len, seed);
+  if (!a.dictionary_path.empty()) dictionary = read_dictionary(a.dictionary_path);
+  const Mutator mutator(read_corpus(a.dirs), std::move(dictionary), a.max_len, a.seed);
   const std::vector<Bytes>& corpus = mutator.corpus();
   std::error_code ec;
   fs::create_directories(g_save_dir, ec);
@@ -373,14 +382,14 @@ int main(int argc, char** argv) {
   std::signal(SIGALRM, on_hang);
 
   const auto input = [&](std::uint64_t k) { return k < corpus.size() ? corpus[k] : mutator.make(k - corpus.size()); };
-  if (only) {  // any number is well defined: past the corpus, it is a mutation
-    run(input(*only), *only);
-    std::printf("fuzz_replay: input %llu ran without a finding\n", static_cast<unsigned long long>(*only));
+  if (a.only) {  // any number is well defined: past the corpus, it is a mutation
+    run(input(*a.only), *a.only);
+    std::printf("fuzz_replay: input %llu ran without a finding\n", static_cast<unsigned long long>(*a.only));
     return 0;
   }
   // A digest of every input run, printed so that two runs can be seen to run the same inputs.
   std::uint64_t digest = 0xcbf29ce484222325ULL;
-  const std::uint64_t total = corpus.size() + mutations;
+  const std::uint64_t total = corpus.size() + a.mutations;
   for (std::uint64_t k = 0; k < total; ++k) {
     const Bytes in = input(k);
     for (const char c : in) digest = (digest ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
@@ -390,7 +399,7 @@ int main(int argc, char** argv) {
   std::printf(
       "fuzz_replay: %zu corpus inputs and %llu mutations (seed %llu, inputs' digest "
       "%016llx) ran without a finding\n",
-      corpus.size(), static_cast<unsigned long long>(mutations), static_cast<unsigned long long>(seed),
+      corpus.size(), static_cast<unsigned long long>(a.mutations), static_cast<unsigned long long>(a.seed),
       static_cast<unsigned long long>(digest));
   return 0;
 }

@@ -11,6 +11,9 @@ cd "$(dirname "$0")/.."
 scripts/deps.sh test
 jobs=$(nproc)
 
+echo "== Layout: file and function sizes, src/ private to the library and its tests"
+/usr/bin/python3 scripts/layout.py
+
 echo "== Release build and tests"
 # Every option said, not left to the cache: scripts/demo.sh configures the same build/ with
 # the tests off. An empty test run is an error, never a pass.

@@ -157,10 +157,9 @@ inline std::vector<Mode> every_mode(unsigned threads, Order threaded_order = Ord
                              {"serial brio dag", Method::Serial, 1, Order::Brio, Locate::Dag},
                              {"serial brio walk", Method::Serial, 1, Order::Brio, Locate::Walk},
                              {"serial random root", Method::Serial, 1, Order::Random, Locate::Root}};
-  for (const auto& [name, method] : {std::pair{"pessimistic", Method::Pessimistic},
-                                     std::pair{"optimistic", Method::Optimistic}, std::pair{"batch", Method::Batch}}) {
+  for (const Method method : {Method::Pessimistic, Method::Optimistic, Method::Batch}) {
     std::ostringstream label;
-    label << name << ' ' << threads << (threaded_order == Order::Brio ? " brio" : " random");
+    label << to_string(method) << ' ' << threads << ' ' << to_string(threaded_order);
     modes.push_back({label.str(), method, threads, threaded_order, Locate::Dag});
   }
   // The paper's configuration: every descent from the root.

@@ -29,6 +29,56 @@
 
 namespace ridt::detail {
 
+/// One lane of descend_along: a stretch of the list, the point descending, and the path of its
+/// last descent.
+struct DescentLane {
+  enum class State : std::uint8_t { kStart, kClimb, kFetch, kStep, kDone };
+  VertexId next, stop;  // the lane's stretch of the list still to locate
+  VertexId v;  // the point descending
+  State state;
+  std::vector<TriangleId> path;  // the lane's last descent, root first
+
+  /// One step of the lane; false once its stretch is done.
+  template <class Sink>
+  bool advance(const Kernel& kernel, const VertexId* points, Sink& sink) {
+    switch (state) {
+      case State::kDone:
+        return false;
+      case State::kStart:
+        // Neighbours on the curve are numbered at random: v's coordinates are a miss, and so
+        // are the vertices of the last leaf, which the climb tests first.
+        v = points[next++];
+        kernel.prefetch_point(v);
+        kernel.prefetch_vertices(path.back());
+        state = State::kClimb;
+        return true;
+      case State::kClimb:
+        // The root holds everything; below it, climb to the deepest node that holds v. The
+        // rest of the path was read by the last descent and is in cache.
+        while (path.size() > 1 && !kernel.holds(path.back(), v)) path.pop_back();
+        state = State::kFetch;
+        [[fallthrough]];
+      case State::kFetch:
+        // The record at the end of the path was prefetched; now the points its test reads.
+        if (kernel.prefetch_step(path.back())) {
+          state = State::kStep;
+          return true;
+        }
+        sink(v, path.back());  // a leaf: the descent of v is done
+        state = next < stop ? State::kStart : State::kDone;
+        return state != State::kDone;
+      case State::kStep: {
+        const TriangleId t = kernel.step(path.back(), v);
+        kernel.prefetch(t);
+        path.push_back(t);
+        state = State::kFetch;
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
 /// Descends the DAG for each point of `points` (count of them, best in an order along a
 /// curve) and calls sink(v, leaf) with a leaf whose closed region holds v. Each descent starts
 /// from the deepest node of the previous path that still holds its point: for neighbours on a
@@ -37,67 +87,24 @@ namespace ridt::detail {
 /// lane's next step reads, and the misses of the lanes overlap.
 template <class Sink>
 void descend_along(const Kernel& kernel, const VertexId* points, VertexId count, Sink&& sink) {
-  // Enough lanes to cover the latency of a miss (about 200 ns here) with other lanes' steps.
+  // Enough lanes to cover the latency of a miss (about 200 ns) with other lanes' steps.
   constexpr unsigned kLanes = 16;
-  enum class State : std::uint8_t { kStart, kClimb, kFetch, kStep, kDone };
-  struct Lane {
-    VertexId next, stop;  // the lane's stretch of the list still to locate
-    VertexId v;  // the point descending
-    State state;
-    std::vector<TriangleId> path;  // the lane's last descent, root first
-  };
+  using State = DescentLane::State;
   // Short lists do not pay for the lanes' set-up.
   const unsigned used = std::clamp<unsigned>(count / 64, 1, kLanes);
-  Lane lanes[kLanes];
+  DescentLane lanes[kLanes];
   unsigned active = 0;
   for (unsigned l = 0; l < used; ++l) {
-    Lane& lane = lanes[l];
+    DescentLane& lane = lanes[l];
     lane.next = static_cast<VertexId>(std::uint64_t{count} * l / used);
     lane.stop = static_cast<VertexId>(std::uint64_t{count} * (l + 1) / used);
     lane.path.assign(1, Kernel::kRoot);
     lane.state = lane.next < lane.stop ? State::kStart : State::kDone;
     active += lane.state != State::kDone;
   }
-  while (active > 0) {
-    for (unsigned l = 0; l < used; ++l) {
-      Lane& lane = lanes[l];
-      switch (lane.state) {
-        case State::kDone:
-          break;
-        case State::kStart:
-          // Neighbours on the curve are numbered at random: v's coordinates are a miss, and
-          // so are the vertices of the last leaf, which the climb tests first.
-          lane.v = points[lane.next++];
-          kernel.prefetch_point(lane.v);
-          kernel.prefetch_vertices(lane.path.back());
-          lane.state = State::kClimb;
-          break;
-        case State::kClimb:
-          // The root holds everything; below it, climb to the deepest node that holds v.
-          // The rest of the path was read by the last descent and is in cache.
-          while (lane.path.size() > 1 && !kernel.holds(lane.path.back(), lane.v)) lane.path.pop_back();
-          lane.state = State::kFetch;
-          [[fallthrough]];
-        case State::kFetch:
-          // The record at the end of the path was prefetched; now the points its test reads.
-          if (kernel.prefetch_step(lane.path.back())) {
-            lane.state = State::kStep;
-          } else {  // a leaf: the descent of v is done
-            sink(lane.v, lane.path.back());
-            lane.state = lane.next < lane.stop ? State::kStart : State::kDone;
-            active -= lane.state == State::kDone;
-          }
-          break;
-        case State::kStep: {
-          const TriangleId t = kernel.step(lane.path.back(), lane.v);
-          kernel.prefetch(t);
-          lane.path.push_back(t);
-          lane.state = State::kFetch;
-          break;
-        }
-      }
-    }
-  }
+  while (active > 0)
+    for (unsigned l = 0; l < used; ++l)
+      if (lanes[l].state != State::kDone && !lanes[l].advance(kernel, points, sink)) --active;
 }
 
 class RoundLocator {

@@ -235,10 +235,10 @@ class KeptRecords {
   }
 
   // After compact(): the moved records' neighbours given as their new ids (-1 across the hull).
-  void renumber_neighbours(TriangleStore& tris) {
+  void renumber_neighbors(TriangleStore& tris) {
     for_each_block([&](unsigned, std::size_t b) {
       for (TriangleId t = range(b).first, stop = t + moved(b); t < stop; ++t)
-        for (TriangleId& u : tris[t].n) u = static_cast<TriangleId>(neighbour_id(u));
+        for (TriangleId& u : tris[t].n) u = static_cast<TriangleId>(neighbor_id(u));
     });
   }
 
@@ -262,7 +262,7 @@ class KeptRecords {
   }
   TriangleId moved(std::size_t b) const { return rank_before_[first_word(b + 1)] - rank_before_[first_word(b)]; }
   // Record u's output id as a neighbour: -1 for none or a record that is not kept.
-  std::int32_t neighbour_id(TriangleId u) const {
+  std::int32_t neighbor_id(TriangleId u) const {
     if (u == kNone || !((bits_[u >> 6] >> (u & 63)) & 1)) return kNoNeighbor;
     const std::uint64_t below = bits_[u >> 6] & ((std::uint64_t{1} << (u & 63)) - 1);
     return static_cast<std::int32_t>(rank_before_[u >> 6] + ones(below));
@@ -302,17 +302,17 @@ std::vector<std::pair<VertexId, VertexId>> copy_out(TriangleStore& tris, const K
   // and the one that writes the neighbours finds the hull's edges.
   std::vector<std::pair<VertexId, VertexId>> hull_edges;
   on_threads(copiers, [&](unsigned c) {
-    const bool vertices = c == 0, neighbours = c == 1 || copiers == 1;
+    const bool vertices = c == 0, neighbors = c == 1 || copiers == 1;
     if (vertices) out.triangles.reserve(3 * std::size_t{kept.count()});
-    if (neighbours) out.neighbors.reserve(3 * std::size_t{kept.count()});
+    if (neighbors) out.neighbors.reserve(3 * std::size_t{kept.count()});
     constexpr std::size_t kBlock = 4096;  // triangles copied out at once
     std::vector<VertexId> vs(vertices ? 3 * kBlock : 0);
-    std::vector<std::int32_t> ns(neighbours ? 3 * kBlock : 0);
+    std::vector<std::int32_t> ns(neighbors ? 3 * kBlock : 0);
     std::size_t k = 0;  // entries in the block
     // Copies what the block holds; every record below `done` is then copied.
     auto flush = [&](std::uint64_t done) {
       if (vertices) out.triangles.insert(out.triangles.end(), vs.begin(), vs.begin() + k);
-      if (neighbours) out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
+      if (neighbors) out.neighbors.insert(out.neighbors.end(), ns.begin(), ns.begin() + k);
       k = 0;
       copied[c].store(done, std::memory_order_release);
       release_behind();
@@ -323,8 +323,8 @@ std::vector<std::pair<VertexId, VertexId>> copy_out(TriangleStore& tris, const K
         const Triangle& r = tris[t];
         for (int i = 0; i < 3; ++i, ++k) {
           if (vertices) vs[k] = r.v[i];
-          if (!neighbours) continue;
-          ns[k] = renumbered ? static_cast<std::int32_t>(r.n[i]) : kept.neighbour_id(r.n[i]);
+          if (!neighbors) continue;
+          ns[k] = renumbered ? static_cast<std::int32_t>(r.n[i]) : kept.neighbor_id(r.n[i]);
           if (ns[k] == kNoNeighbor) hull_edges.emplace_back(r.v[next(i)], r.v[prev(i)]);
         }
         if (k == 3 * kBlock) flush(t + 1);
@@ -349,7 +349,7 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
   // With two copiers, the neighbours' new ids would make the neighbour copier's work twice the
   // vertex copier's: they are written into the moved records first, on every worker.
   const bool renumber = kept.workers() > 1;
-  if (renumber) kept.renumber_neighbours(tris);
+  if (renumber) kept.renumber_neighbors(tris);
   std::vector<std::pair<VertexId, VertexId>> hull_edges = copy_out(tris, kept, renumber, out);
   out.hull = trace_hull(hull_edges);
   set_warnings(out, kernel.n(), kept.count(), hull_edges.size(), options, [&](std::vector<Point>& pts) {

@@ -99,26 +99,84 @@ void locate(const Kernel& kernel, const std::vector<std::uint32_t>& key, Queue& 
   me.stats.time_wait_s = seconds(me.stalled);
 }
 
+// What the modifier counts: its waits for hints, the hints queued ahead of it, the stale ones.
+struct Tally {
+  Clock::duration idle{};
+  std::uint64_t depth_sum = 0, stale = 0;
+};
+
+// The modifier: takes the queue's hints in order, finishes each location from its hint and
+// inserts, prefetching what the coming insertions read. Stops early when a locator failed.
+void modify(Kernel& kernel, Queue& q, const Insertion& run, WorkerState<Scratch>& modifier, Tally& tally) {
+  const VertexId n = kernel.n();
+  // Prefetch distances, in positions: a hint's record, then what the insertion into it reads
+  // (its neighbours and vertices), then the ring beyond (as LookAhead does).
+  constexpr VertexId kRecord = 12, kAround = 8, kRing = 4;
+  auto ready = [&](VertexId p) -> const Slot* {
+    if (p >= n) return nullptr;
+    const Slot& s = q.slots[p % kCapacity];
+    return s.filled.load(std::memory_order_acquire) == p + 1 ? &s : nullptr;
+  };
+  for (VertexId p = 0; p < n; ++p) {
+    run.progress(p);
+    const Slot* s = ready(p);
+    if (s == nullptr) {
+      const auto t0 = Clock::now();
+      wait_until([&] { return (s = ready(p)) != nullptr; }, q.stop);
+      tally.idle += Clock::now() - t0;
+      if (s == nullptr) return;  // a locator failed
+    }
+    const TriangleId hint = s->node;
+    // release: our read of the slot happens before a locator refills it.
+    q.consumed.store(p + 1, std::memory_order_release);
+    // Hints queued beyond this one (counted per finished block, so at times behind).
+    const std::uint64_t queued = q.published.load(std::memory_order_relaxed);
+    tally.depth_sum += queued > p + 1 ? queued - p - 1 : 0;
+    if (const Slot* a = ready(p + kRecord)) kernel.prefetch(a->node);
+    if (const Slot* a = ready(p + kAround)) kernel.prefetch_around(a->node);
+    if (const Slot* a = ready(p + kRing)) kernel.prefetch_ring(a->node);
+    tally.stale += !is_leaf(kernel.triangles()[hint].load_child());
+    const TriangleId leaf = kernel.descend(hint, p);
+    const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, modifier.scratch);
+    if (hit != kNone) modifier.duplicates.push_back({p, hit});
+    ++modifier.stats.points;
+  }
+}
+
+// The run's batch statistics: the modifier waits for hints (idle), the locators for room in
+// the queue (stalls).
+void add_stats(WorkerState<Scratch>& modifier, std::vector<Locator>& locators, const Tally& tally, double total,
+               VertexId n, const Insertion& run) {
+  Stats& stats = run.stats;
+  modifier.stats.time_wait_s = stats.time_idle_s = seconds(tally.idle);
+  add_worker(modifier, 0.0, 0.0, total, run.duplicates, stats);
+  stats.stale_hints = tally.stale;
+  stats.queue_depth_mean = n > 0 ? static_cast<double>(tally.depth_sum) / n : 0.0;
+  for (Locator& l : locators) {
+    l.stats.role = "locator";
+    stats.time_stall_s += l.stats.time_wait_s;
+    stats.time_wait_s += l.stats.time_wait_s;
+    stats.per_thread.push_back(l.stats);
+  }
+}
+
 }  // namespace
 
 void insert_batch(Kernel& kernel, const Insertion& run) {
-  const unsigned threads = run.threads;
-  const bool from_root = run.from_root;
-  Stats& stats = run.stats;
-  if (threads == 1) {
+  if (run.threads == 1) {
     const auto t_start = Clock::now();
     insert_serial(kernel, run);
-    stats.per_thread.push_back({"modifier", kernel.n(), seconds(Clock::now() - t_start), 0, 0, 0});
+    run.stats.per_thread.push_back({"modifier", kernel.n(), seconds(Clock::now() - t_start), 0, 0, 0});
     return;
   }
   const VertexId n = kernel.n();
-  const std::vector<std::uint32_t> key = from_root ? std::vector<std::uint32_t>{} : hilbert_keys(&kernel.point(0), n);
+  const std::vector<std::uint32_t> key =
+      run.from_root ? std::vector<std::uint32_t>{} : hilbert_keys(&kernel.point(0), n);
   Queue q;
-  std::vector<Locator> locators(threads - 1);
+  std::vector<Locator> locators(run.threads - 1);
   WorkerState<Scratch> modifier;
   modifier.stats.role = "modifier";
-  Clock::duration idle{};
-  std::uint64_t depth_sum = 0, stale = 0;
+  Tally tally;
   const auto t_start = Clock::now();
   {
     std::vector<std::jthread> pool;
@@ -132,38 +190,7 @@ void insert_batch(Kernel& kernel, const Insertion& run) {
         }
       });
     try {
-      // Prefetch distances, in positions: a hint's record, then what the insertion into it
-      // reads (its neighbours and vertices), then the ring beyond (as LookAhead does).
-      constexpr VertexId kRecord = 12, kAround = 8, kRing = 4;
-      auto ready = [&](VertexId p) -> const Slot* {
-        if (p >= n) return nullptr;
-        const Slot& s = q.slots[p % kCapacity];
-        return s.filled.load(std::memory_order_acquire) == p + 1 ? &s : nullptr;
-      };
-      for (VertexId p = 0; p < n; ++p) {
-        run.progress(p);
-        const Slot* s = ready(p);
-        if (s == nullptr) {
-          const auto t0 = Clock::now();
-          wait_until([&] { return (s = ready(p)) != nullptr; }, q.stop);
-          idle += Clock::now() - t0;
-          if (s == nullptr) break;  // a locator failed
-        }
-        const TriangleId hint = s->node;
-        // release: our read of the slot happens before a locator refills it.
-        q.consumed.store(p + 1, std::memory_order_release);
-        // Hints queued beyond this one (counted per finished block, so at times behind).
-        const std::uint64_t queued = q.published.load(std::memory_order_relaxed);
-        depth_sum += queued > p + 1 ? queued - p - 1 : 0;
-        if (const Slot* a = ready(p + kRecord)) kernel.prefetch(a->node);
-        if (const Slot* a = ready(p + kAround)) kernel.prefetch_around(a->node);
-        if (const Slot* a = ready(p + kRing)) kernel.prefetch_ring(a->node);
-        stale += !is_leaf(kernel.triangles()[hint].load_child());
-        const TriangleId leaf = kernel.descend(hint, p);
-        const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, modifier.scratch);
-        if (hit != kNone) modifier.duplicates.push_back({p, hit});
-        ++modifier.stats.points;
-      }
+      modify(kernel, q, run, modifier, tally);
     } catch (...) {
       q.stop.store(true, std::memory_order_relaxed);
       throw;  // the pool's threads see `stop` and end; their destructors join them
@@ -171,17 +198,7 @@ void insert_batch(Kernel& kernel, const Insertion& run) {
   }
   for (const Locator& l : locators)
     if (l.error) std::rethrow_exception(l.error);
-  // The modifier waits for hints (idle), the locators for room in the queue (stalls).
-  modifier.stats.time_wait_s = stats.time_idle_s = seconds(idle);
-  add_worker(modifier, 0.0, 0.0, seconds(Clock::now() - t_start), run.duplicates, stats);
-  stats.stale_hints = stale;
-  stats.queue_depth_mean = n > 0 ? static_cast<double>(depth_sum) / n : 0.0;
-  for (Locator& l : locators) {
-    l.stats.role = "locator";
-    stats.time_stall_s += l.stats.time_wait_s;
-    stats.time_wait_s += l.stats.time_wait_s;
-    stats.per_thread.push_back(l.stats);
-  }
+  add_stats(modifier, locators, tally, seconds(Clock::now() - t_start), n, run);
 }
 
 }  // namespace ridt::detail

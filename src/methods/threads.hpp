@@ -102,6 +102,61 @@ class Backoff {
   int exponent_ = kMinExponent;
 };
 
+/// The rounds of run_in_rounds and the counters that hand out their work in chunks. From the
+/// root (Locate::Root): one round of all the points, no location phase, no hints.
+class RoundSchedule {
+ public:
+  RoundSchedule(const Kernel& kernel, unsigned threads, bool from_root)
+      : kernel_(kernel), threads_(threads), from_root_(from_root) {
+    if (!from_root) rounds_.emplace(kernel, threads);
+    count_ = from_root ? 1 : rounds_->rounds();
+    hint_.resize(from_root ? 0 : rounds_->largest());
+    located_ = std::vector<std::atomic<VertexId>>(count_);
+    inserted_ = std::vector<std::atomic<VertexId>>(count_);
+    for (std::size_t r = 0; r < count_; ++r) {
+      located_[r].store(first(r), std::memory_order_relaxed);
+      inserted_[r].store(first(r), std::memory_order_relaxed);
+    }
+  }
+
+  std::size_t count() const { return count_; }
+  bool locates() const { return !from_root_; }
+  VertexId first(std::size_t r) const { return from_root_ ? (r == 0 ? 0 : kernel_.n()) : rounds_->first(r); }
+
+  /// Locates chunks of round r's points along the curve until none is left or `stop`.
+  /// Chunks: enough of them that the workers finish together, each still long enough for the
+  /// lanes of the descent to get going.
+  void locate(std::size_t r, const std::atomic<bool>& stop) {
+    const VertexId begin = first(r), end = first(r + 1);
+    const VertexId chunk = std::clamp<VertexId>((end - begin) / (8 * threads_), 256, 4096);
+    for (VertexId b;
+         !stop.load(std::memory_order_relaxed) && (b = located_[r].fetch_add(chunk, std::memory_order_relaxed)) < end;)
+      rounds_->locate(r, b - begin, std::min<std::uint64_t>(end, std::uint64_t{b} + chunk) - begin, hint_.data());
+  }
+
+  /// Calls insert(b, e, hint) for chunks [b, e) of round r until none is left or `stop`; hint
+  /// is null from the root.
+  template <class Insert>
+  void insert(std::size_t r, const std::atomic<bool>& stop, Insert&& insert) {
+    constexpr VertexId kChunk = 256;  // long enough for the look-ahead of the insertion
+    const VertexId begin = first(r), end = first(r + 1);
+    for (VertexId b; !stop.load(std::memory_order_relaxed) &&
+         (b = inserted_[r].fetch_add(kChunk, std::memory_order_relaxed)) < end;)
+      insert(b, static_cast<VertexId>(std::min<std::uint64_t>(end, std::uint64_t{b} + kChunk)),
+             from_root_ ? nullptr : hint_.data() + (b - begin));
+  }
+
+ private:
+  const Kernel& kernel_;
+  unsigned threads_;
+  bool from_root_;
+  std::optional<RoundLocator> rounds_;
+  std::size_t count_ = 1;
+  std::vector<TriangleId> hint_;
+  // Per round, the next position to locate (along the curve) and to insert (in the order).
+  std::vector<std::atomic<VertexId>> located_, inserted_;
+};
+
 /// Runs `threads` workers through the rounds: in each round the workers first locate the
 /// round's points along the curve (the DAG is only read then; dag/rounds.hpp), all wait, then
 /// they insert the round's points [first, end) in the random order; all wait again. Work is
@@ -116,19 +171,7 @@ class Backoff {
 template <class InsertChunk>
 void run_in_rounds(const Kernel& kernel, unsigned threads, bool from_root, std::vector<Clock::duration>& wait,
                    Progress& progress, InsertChunk&& insert_chunk) {
-  // From the root (Locate::Root): one round of all the points, no location phase, and no hint
-  // (insert_chunk gets null).
-  std::optional<RoundLocator> rounds;
-  if (!from_root) rounds.emplace(kernel, threads);
-  const std::size_t round_count = from_root ? 1 : rounds->rounds();
-  auto first_of = [&](std::size_t r) { return from_root ? (r == 0 ? 0 : kernel.n()) : rounds->first(r); };
-  std::vector<TriangleId> hint(from_root ? 0 : rounds->largest());
-  // Per round, the next position to locate (along the curve) and to insert (in the order).
-  std::vector<std::atomic<VertexId>> located(round_count), inserted(round_count);
-  for (std::size_t r = 0; r < round_count; ++r) {
-    located[r].store(first_of(r), std::memory_order_relaxed);
-    inserted[r].store(first_of(r), std::memory_order_relaxed);
-  }
+  RoundSchedule schedule(kernel, threads, from_root);
   std::barrier<> sync(static_cast<std::ptrdiff_t>(threads));
   std::atomic<bool> stop{false};
   std::vector<std::exception_ptr> errors(threads);
@@ -144,26 +187,15 @@ void run_in_rounds(const Kernel& kernel, unsigned threads, bool from_root, std::
       // 0 reports only after its own chunks, and the other workers may take all of the early,
       // small rounds.
       if (w == 0) progress(0);
-      for (std::size_t r = 0; r < round_count; ++r) {
-        const VertexId first = first_of(r), end = first_of(r + 1);
-        // Chunks: enough of them that the workers finish together, each still long enough
-        // for the lanes of the descent and the look-ahead of the insertion to get going.
-        const VertexId size = end - first;
-        const VertexId locate_chunk = std::clamp<VertexId>(size / (8 * threads), 256, 4096);
-        constexpr VertexId kInsertChunk = 256;
-        if (!from_root) {
-          for (VertexId b; !stop.load(std::memory_order_relaxed) &&
-               (b = located[r].fetch_add(locate_chunk, std::memory_order_relaxed)) < end;)
-            rounds->locate(r, b - first, std::min<std::uint64_t>(end, std::uint64_t{b} + locate_chunk) - first,
-                           hint.data());
+      for (std::size_t r = 0; r < schedule.count(); ++r) {
+        if (schedule.locates()) {
+          schedule.locate(r, stop);
           arrive();
         }
-        for (VertexId b; !stop.load(std::memory_order_relaxed) &&
-             (b = inserted[r].fetch_add(kInsertChunk, std::memory_order_relaxed)) < end;) {
-          const VertexId e = std::min<std::uint64_t>(end, std::uint64_t{b} + kInsertChunk);
-          insert_chunk(w, b, e, from_root ? nullptr : hint.data() + (b - first));
+        schedule.insert(r, stop, [&](VertexId b, VertexId e, const TriangleId* hint) {
+          insert_chunk(w, b, e, hint);
           if (w == 0) progress(e);
-        }
+        });
         arrive();
       }
     } catch (...) {

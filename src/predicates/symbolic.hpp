@@ -61,10 +61,10 @@ class Vertices {
   /// registers across their tests; c is never a bounding vertex), for the walking kernel. The
   /// symbolic bounding vertices' points are NaN, so a test with one fails the filter as an
   /// unsure one does, and only then are the vertex ids looked at, off the common path (comparing
-  /// them first took 6.5 % of a uniform insertion's instructions). kLattice: only where
+  /// them first would cost some 6.5 % of a uniform insertion's instructions). kLattice: only where
   /// lattice() holds, whose forms it then computes in line (a grid's every test takes them);
   /// they test the ids first, as a grid's many zero determinants would otherwise each ask
-  /// again out of line (that measured slower).
+  /// again out of line.
   template <bool kLattice = false>
   int orient(VertexId a, VertexId b, VertexId c, const Point& pc) const {
     if constexpr (kLattice) {

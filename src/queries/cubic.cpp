@@ -120,7 +120,7 @@ class CloughTocher {
     const Point& a = p[next3(i)];
     const Point& e = p[prev3(i)];
     Point d;
-    const std::int32_t u = f_.neighbour(tri, i);
+    const std::int32_t u = f_.neighbor(tri, i);
     if (u >= 0) {
       const auto n = static_cast<std::size_t>(u);
       const Point o = centroid(f_.corner(n, 0), f_.corner(n, 1), f_.corner(n, 2));

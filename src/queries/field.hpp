@@ -39,7 +39,7 @@ struct Field {
 
   const Point& corner(std::size_t tri, int i) const { return points[triangles[3 * tri + i]]; }
   VertexId vertex(std::size_t tri, int i) const { return triangles[3 * tri + i]; }
-  std::int32_t neighbour(std::size_t tri, int i) const { return neighbors[3 * tri + i]; }
+  std::int32_t neighbor(std::size_t tri, int i) const { return neighbors[3 * tri + i]; }
   const double* value(VertexId v) const { return values.data.data() + v * values.components; }
 
   // out = the barycentric interpolant of triangle tri at q, its weights within 2^-44 of the
@@ -191,7 +191,7 @@ inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
     std::size_t at = tri;
     int corner = i;
     for (std::size_t steps = 0; steps <= f.triangles.size(); ++steps) {
-      const std::int32_t u = f.neighbour(at, turn == 0 ? prev3(corner) : next3(corner));
+      const std::int32_t u = f.neighbor(at, turn == 0 ? prev3(corner) : next3(corner));
       if (u < 0) break;
       at = static_cast<std::size_t>(u);
       if (at == tri) return lowest;
@@ -229,7 +229,7 @@ void cover(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, uns
           const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
           if (zeros == 1) {
             const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
-            const std::int32_t u = f.neighbour(tri, e);
+            const std::int32_t u = f.neighbor(tri, e);
             if (u >= 0 && static_cast<std::size_t>(u) < tri) continue;
           } else if (zeros == 2) {
             const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex

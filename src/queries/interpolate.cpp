@@ -34,7 +34,7 @@ class Sibson {
         std::copy_n(f_.value(f_.vertex(tri, i)), m, out);
         return;
       }
-      if (f_.neighbour(tri, i) < 0 && detail::orient2d(f_.corner(tri, next3(i)), f_.corner(tri, prev3(i)), q) == 0) {
+      if (f_.neighbor(tri, i) < 0 && detail::orient2d(f_.corner(tri, next3(i)), f_.corner(tri, prev3(i)), q) == 0) {
         f_.linear(tri, q, out);
         return;
       }
@@ -70,7 +70,7 @@ class Sibson {
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
       const auto c = static_cast<std::size_t>(cavity_[k]);
       for (int i = 0; i < 3; ++i) {
-        const std::int32_t u = f_.neighbour(c, i);
+        const std::int32_t u = f_.neighbor(c, i);
         if (u < 0 || in_cavity(u)) continue;
         const auto w = static_cast<std::size_t>(u);
         if (detail::incircle(f_.corner(w, 0), f_.corner(w, 1), f_.corner(w, 2), q) > 0) cavity_.push_back(u);
@@ -78,7 +78,7 @@ class Sibson {
     }
     for (const std::int32_t c : cavity_)
       for (int i = 0; i < 3; ++i) {
-        const std::int32_t u = f_.neighbour(static_cast<std::size_t>(c), i);
+        const std::int32_t u = f_.neighbor(static_cast<std::size_t>(c), i);
         if (u < 0 || !in_cavity(u))
           boundary_.push_back({f_.vertex(static_cast<std::size_t>(c), next3(i)),
                                f_.vertex(static_cast<std::size_t>(c), prev3(i)), static_cast<std::uint32_t>(c), i});
@@ -107,7 +107,7 @@ class Sibson {
       // v's corner i in tri: the side v -> next vertex, across from the previous corner, leads
       // on (the other side at v is the one we came by).
       const int i = f_.vertex(tri, 0) == v ? 0 : f_.vertex(tri, 1) == v ? 1 : 2;
-      const std::int32_t u = f_.neighbour(tri, prev3(i));
+      const std::int32_t u = f_.neighbor(tri, prev3(i));
       if (u < 0) break;
       tri = static_cast<std::size_t>(u);
     }

@@ -29,7 +29,7 @@ std::vector<VertexId> corners(std::span<const Point> points, const std::vector<V
 }
 
 // Neighbours from the triangles: the triangle across from each corner, -1 on the hull.
-std::vector<std::int32_t> neighbours_of(const std::vector<VertexId>& triangles) {
+std::vector<std::int32_t> neighbors_of(const std::vector<VertexId>& triangles) {
   std::map<std::pair<VertexId, VertexId>, std::int32_t> side;  // directed side -> its triangle
   const std::size_t count = triangles.size() / 3;
   for (std::size_t t = 0; t < count; ++t)
@@ -72,7 +72,7 @@ Triangulation triangulate_furthest_site(std::span<const Point> points, const Opt
     stack.emplace_back(i, k);
     stack.emplace_back(k, j);
   }
-  out.neighbors = neighbours_of(out.triangles);
+  out.neighbors = neighbors_of(out.triangles);
   return out;
 }
 

@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "io.hpp"
-#include "io_common.hpp"
 #include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
+#include "writer.hpp"
 
 namespace ridt::mpi {
 

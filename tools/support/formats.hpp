@@ -20,6 +20,24 @@ struct TriangulationOut {
   std::span<const VertexId> triangles() const { return std::span(t.triangles).first(3 * t.size()); }
 };
 
+/// What a Voronoi writer is given (`box`: what drawings and faces are clipped to).
+struct VoronoiOut {
+  const std::string& path;
+  std::span<const Point> points;
+  const Triangulation& t;
+  const Voronoi& vd;
+  const Box& box;
+};
+
+/// What a writer of interpolated values is given: `components` values a query, and for a grid
+/// its size (nx by ny, row by row; 0 for scattered queries).
+struct ValuesOut {
+  const std::string& path;
+  std::span<const Point> queries;
+  std::span<const double> values;
+  std::size_t components, nx, ny;
+};
+
 /// A format: its extension ("" stands for any other: text) and what it can do (null: not).
 struct Format {
   std::string_view extension;
@@ -28,6 +46,8 @@ struct Format {
   std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index);
   void (*write_points)(Writer& out, std::span<const Point> points);
   void (*write_triangulation)(const std::string& path, const TriangulationOut& out);
+  void (*write_voronoi)(Writer& out, const VoronoiOut& v);
+  void (*write_values)(Writer& out, const ValuesOut& v);
 };
 
 /// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws

@@ -73,4 +73,20 @@ void write_triangulation(const std::string& path, std::span<const Point> points,
   format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index});
 }
 
+void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
+                   const Box& box) {
+  const Format& f = format_of(path, &Format::write_voronoi, "Voronoi output");
+  Writer out(path);
+  f.write_voronoi(out, {path, points, t, vd, box});
+  out.commit();
+}
+
+void write_values(const std::string& path, std::span<const Point> queries, std::span<const double> values,
+                  std::size_t components, std::size_t nx, std::size_t ny) {
+  const Format& f = format_of(path, &Format::write_values, "values output");
+  Writer out(path);
+  f.write_values(out, {path, queries, values, components, nx, ny});
+  out.commit();
+}
+
 }  // namespace ridt::io

@@ -4,162 +4,163 @@
 
 namespace ridt::io::detail {
 
-PointFile read_node(const std::string& path, std::string_view text) {
-  struct {
-    std::vector<Point> points;
-    int first_index = 0;
-  } out;
-  bool have_header = false;
+namespace {
+
+// The fields of a header line: at least two, at most `most`, else an error that shows the
+// expected `form`.
+std::size_t header_fields(const std::string& path, std::size_t line_no, std::string_view line, std::string_view* v,
+                          std::size_t most, const std::string& form) {
+  Fields f{line, false};
+  std::size_t k = 0;
+  for (std::string_view field; f.next(field);) {
+    if (k == most) fail_line(path, line_no, form + quoted(line));
+    v[k++] = field;
+  }
+  if (k < 2) fail_line(path, line_no, form + quoted(line));
+  return k;
+}
+
+// Record `count`'s index `i` (`what`: "point" or "triangle"): the first 0 or 1, which sets
+// `first`, the others consecutive.
+void check_index(const std::string& path, std::size_t line_no, std::int64_t i, std::size_t count, std::int64_t& first,
+                 const char* what) {
+  if (count == 0) {
+    if (i != 0 && i != 1)
+      fail_line(path, line_no, "the first " + std::string(what) + " index must be 0 or 1, got " + std::to_string(i));
+    first = i;
+  } else if (i != first + static_cast<std::int64_t>(count)) {
+    fail_line(path, line_no,
+              "expected " + std::string(what) + " index " + std::to_string(first + static_cast<std::int64_t>(count)) +
+                  ", got " + std::to_string(i) + " (indices must be consecutive)");
+  }
+}
+
+// The fields after the first `k` of a record: numbers (attributes) up to field `attrs_end`,
+// then integers (a boundary marker), `total` fields in all.
+template <class CountError>
+void check_rest(Fields& f, std::size_t k, std::size_t attrs_end, std::size_t total, const std::string& path,
+                std::size_t line_no, const CountError& count_error) {
+  for (std::string_view field; f.next(field); ++k) {
+    if (k >= total) fail_line(path, line_no, count_error());
+    if (k < attrs_end) {
+      double a = 0;
+      if (parse_double(field, a) != Parse::Ok)
+        fail_line(path, line_no, "attribute " + quoted(field) + " is not a number");
+    } else {
+      integer(path, line_no, field, "boundary marker");
+    }
+  }
+  if (k != total) fail_line(path, line_no, count_error());
+}
+
+// A .node file's header: "points 2 [attributes [markers]]".
+struct NodeHeader {
   std::int64_t n = 0, attrs = 0, markers = 0;
-  std::size_t fields_per_line = 3;
-  std::size_t count = 0;
+  std::size_t fields = 3;  // a point's line
   std::string layout;  // "index x y ..." for messages
+};
+
+NodeHeader node_header(const std::string& path, std::size_t line_no, std::string_view line) {
+  std::string_view v[4];
+  const std::size_t k =
+      header_fields(path, line_no, line, v, 4, "expected a header \"points 2 [attributes [markers]]\", got ");
+  NodeHeader h;
+  h.n = integer(path, line_no, v[0], "number of points");
+  const std::int64_t dim = integer(path, line_no, v[1], "dimension");
+  if (k > 2) h.attrs = integer(path, line_no, v[2], "number of attributes");
+  if (k > 3) h.markers = integer(path, line_no, v[3], "number of boundary markers");
+  if (h.n < 0) fail_line(path, line_no, "negative number of points " + std::to_string(h.n));
+  if (dim != 2) fail_line(path, line_no, "dimension is " + std::to_string(dim) + ", must be 2");
+  if (h.attrs < 0 || h.attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(h.attrs));
+  if (h.markers != 0 && h.markers != 1)
+    fail_line(path, line_no, "number of boundary markers must be 0 or 1, got " + std::to_string(h.markers));
+  h.fields = 3 + static_cast<std::size_t>(h.attrs) + static_cast<std::size_t>(h.markers);
+  h.layout = std::string("index x y") + (h.attrs > 0 ? " attributes" : "") + (h.markers > 0 ? " marker" : "");
+  return h;
+}
+
+// A .ele file's header: "triangles 3 [attributes]".
+struct EleHeader {
+  std::int64_t n = 0, attrs = 0;
+  std::size_t fields = 4;
+};
+
+EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_view line) {
+  std::string_view v[3];
+  const std::size_t k =
+      header_fields(path, line_no, line, v, 3, "expected a header \"triangles 3 [attributes]\", got ");
+  EleHeader h;
+  h.n = integer(path, line_no, v[0], "number of triangles");
+  const std::int64_t nodes = integer(path, line_no, v[1], "nodes per triangle");
+  if (k > 2) h.attrs = integer(path, line_no, v[2], "number of attributes");
+  if (h.n < 0) fail_line(path, line_no, "negative number of triangles " + std::to_string(h.n));
+  if (nodes != 3) fail_line(path, line_no, "nodes per triangle is " + std::to_string(nodes) + ", must be 3");
+  if (h.attrs < 0 || h.attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(h.attrs));
+  h.fields = 4 + static_cast<std::size_t>(h.attrs);
+  return h;
+}
+
+}  // namespace
+
+PointFile read_node(const std::string& path, std::string_view text) {
+  std::optional<NodeHeader> h;
+  std::vector<Point> points;
+  std::int64_t first = 0;
+  std::size_t count = 0;
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {
-    if (!have_header) {
-      Fields f{line, false};
-      std::string_view v[4];
-      std::size_t k = 0;
-      std::string_view field;
-      while (f.next(field)) {
-        if (k == 4) {
-          fail_line(path, line_no, "expected a header \"points 2 [attributes [markers]]\", got " + quoted(line));
-        }
-        v[k++] = field;
-      }
-      if (k < 2) {
-        fail_line(path, line_no, "expected a header \"points 2 [attributes [markers]]\", got " + quoted(line));
-      }
-      n = integer(path, line_no, v[0], "number of points");
-      const std::int64_t dim = integer(path, line_no, v[1], "dimension");
-      if (k > 2) attrs = integer(path, line_no, v[2], "number of attributes");
-      if (k > 3) markers = integer(path, line_no, v[3], "number of boundary markers");
-      if (n < 0) fail_line(path, line_no, "negative number of points " + std::to_string(n));
-      if (dim != 2) fail_line(path, line_no, "dimension is " + std::to_string(dim) + ", must be 2");
-      if (attrs < 0 || attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(attrs));
-      if (markers != 0 && markers != 1) {
-        fail_line(path, line_no, "number of boundary markers must be 0 or 1, got " + std::to_string(markers));
-      }
-      fields_per_line = 3 + static_cast<std::size_t>(attrs) + static_cast<std::size_t>(markers);
-      layout = "index x y";
-      if (attrs > 0) layout += " attributes";
-      if (markers > 0) layout += " marker";
+    if (!h) {
+      h = node_header(path, line_no, line);
       // Never trust the header for a huge allocation: a point takes at least 6 bytes.
-      out.points.reserve(std::min(static_cast<std::size_t>(n), text.size() / 6 + 1));
-      have_header = true;
+      points.reserve(std::min(static_cast<std::size_t>(h->n), text.size() / 6 + 1));
       return;
     }
     Fields f{line, false};
     std::string_view idx, xs, ys;
     const auto count_error = [&] {
-      return "expected " + std::to_string(fields_per_line) + " fields \"" + layout + "\", got " + quoted(line);
+      return "expected " + std::to_string(h->fields) + " fields \"" + h->layout + "\", got " + quoted(line);
     };
     if (!f.next(idx) || !f.next(xs) || !f.next(ys)) fail_line(path, line_no, count_error());
-    // The remaining fields: attributes (numbers), then the marker (an integer).
-    std::string_view field;
-    std::size_t k = 3;
-    while (f.next(field)) {
-      if (k >= fields_per_line) fail_line(path, line_no, count_error());
-      if (k < 3 + static_cast<std::size_t>(attrs)) {
-        double a = 0;
-        if (parse_double(field, a) != Parse::Ok)
-          fail_line(path, line_no, "attribute " + quoted(field) + " is not a number");
-      } else {
-        integer(path, line_no, field, "boundary marker");
-      }
-      ++k;
-    }
-    if (k != fields_per_line) fail_line(path, line_no, count_error());
-    const std::int64_t i = integer(path, line_no, idx, "point index");
-    if (count == 0) {
-      if (i != 0 && i != 1) {
-        fail_line(path, line_no, "the first point index must be 0 or 1, got " + std::to_string(i));
-      }
-      out.first_index = static_cast<int>(i);
-    } else if (i != out.first_index + static_cast<std::int64_t>(count)) {
-      fail_line(path, line_no,
-                "expected point index " + std::to_string(out.first_index + count) + ", got " + std::to_string(i) +
-                    " (indices must be consecutive)");
-    }
+    check_rest(f, 3, 3 + static_cast<std::size_t>(h->attrs), h->fields, path, line_no, count_error);
+    check_index(path, line_no, integer(path, line_no, idx, "point index"), count, first, "point");
     const double x = coordinate(path, line_no, xs, [&] { return not_a_number(xs); });
     const double y = coordinate(path, line_no, ys, [&] { return not_a_number(ys); });
-    out.points.push_back({x, y});
+    points.push_back({x, y});
     ++count;
   });
-  if (!have_header) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
-  if (count != static_cast<std::size_t>(n)) {
-    fail_file(path, "header says " + std::to_string(n) + " points but the file has " + std::to_string(count));
-  }
-  return PointFile(std::move(out.points), out.first_index);
+  if (!h) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
+  if (count != static_cast<std::size_t>(h->n))
+    fail_file(path, "header says " + std::to_string(h->n) + " points but the file has " + std::to_string(count));
+  return PointFile(std::move(points), static_cast<int>(first));
 }
 
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index) {
+  std::optional<EleHeader> h;
   std::vector<VertexId> out;
-  bool have_header = false;
-  std::int64_t n = 0, attrs = 0;
-  std::size_t fields_per_line = 4;
-  std::size_t count = 0;
   std::int64_t first_triangle = 0;
-  const char* const header_form = "expected a header \"triangles 3 [attributes]\", got ";
+  std::size_t count = 0;
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {
-    if (!have_header) {
-      Fields f{line, false};
-      std::string_view v[3];
-      std::size_t k = 0;
-      std::string_view field;
-      while (f.next(field)) {
-        if (k == 3) fail_line(path, line_no, header_form + quoted(line));
-        v[k++] = field;
-      }
-      if (k < 2) fail_line(path, line_no, header_form + quoted(line));
-      n = integer(path, line_no, v[0], "number of triangles");
-      const std::int64_t nodes = integer(path, line_no, v[1], "nodes per triangle");
-      if (k > 2) attrs = integer(path, line_no, v[2], "number of attributes");
-      if (n < 0) fail_line(path, line_no, "negative number of triangles " + std::to_string(n));
-      if (nodes != 3) {
-        fail_line(path, line_no, "nodes per triangle is " + std::to_string(nodes) + ", must be 3");
-      }
-      if (attrs < 0 || attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(attrs));
-      fields_per_line = 4 + static_cast<std::size_t>(attrs);
-      out.reserve(3 * std::min(static_cast<std::size_t>(n), text.size() / 8 + 1));
-      have_header = true;
+    if (!h) {
+      h = ele_header(path, line_no, line);
+      out.reserve(3 * std::min(static_cast<std::size_t>(h->n), text.size() / 8 + 1));
       return;
     }
     Fields f{line, false};
-    std::string_view idx, a, b, c, field;
+    std::string_view idx, a, b, c;
     const auto count_error = [&] {
-      return "expected " + std::to_string(fields_per_line) + " fields \"index a b c" +
-          (attrs > 0 ? " attributes" : "") + "\", got " + quoted(line);
+      return "expected " + std::to_string(h->fields) + " fields \"index a b c" + (h->attrs > 0 ? " attributes" : "") +
+          "\", got " + quoted(line);
     };
     if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
-    std::size_t k = 4;
-    while (f.next(field)) {
-      if (k >= fields_per_line) fail_line(path, line_no, count_error());
-      double attr = 0;
-      if (parse_double(field, attr) != Parse::Ok)
-        fail_line(path, line_no, "attribute " + quoted(field) + " is not a number");
-      ++k;
-    }
-    if (k != fields_per_line) fail_line(path, line_no, count_error());
-    const std::int64_t i = integer(path, line_no, idx, "triangle index");
-    if (count == 0) {
-      if (i != 0 && i != 1) {
-        fail_line(path, line_no, "the first triangle index must be 0 or 1, got " + std::to_string(i));
-      }
-      first_triangle = i;
-    } else if (i != first_triangle + static_cast<std::int64_t>(count)) {
-      fail_line(path, line_no,
-                "expected triangle index " + std::to_string(first_triangle + count) + ", got " + std::to_string(i) +
-                    " (indices must be consecutive)");
-    }
+    check_rest(f, 4, h->fields, h->fields, path, line_no, count_error);
+    check_index(path, line_no, integer(path, line_no, idx, "triangle index"), count, first_triangle, "triangle");
     out.push_back(vertex(path, line_no, a, first_index));
     out.push_back(vertex(path, line_no, b, first_index));
     out.push_back(vertex(path, line_no, c, first_index));
     ++count;
   });
-  if (!have_header) fail_file(path, "no header line \"triangles 3 [attributes]\"");
-  if (count != static_cast<std::size_t>(n)) {
-    fail_file(path, "header says " + std::to_string(n) + " triangles but the file has " + std::to_string(count));
-  }
+  if (!h) fail_file(path, "no header line \"triangles 3 [attributes]\"");
+  if (count != static_cast<std::size_t>(h->n))
+    fail_file(path, "header says " + std::to_string(h->n) + " triangles but the file has " + std::to_string(count));
   return out;
 }
 

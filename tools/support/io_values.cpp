@@ -1,5 +1,6 @@
 // Values at points and at queries: text and .csv rows, raw float64, and a grid as a .png
 // picture (libpng, where the build found it).
+#include "formats.hpp"
 #include "io_common.hpp"
 
 #ifdef RIDT_HAVE_PNG
@@ -8,8 +9,6 @@
 
 namespace ridt::io {
 namespace {
-
-using detail::Writer;
 
 // A perceptually ordered colour map, dark blue through green to yellow, at t in [0, 1].
 void colour(double t, unsigned char* rgb) {
@@ -21,7 +20,7 @@ void colour(double t, unsigned char* rgb) {
     rgb[c] = static_cast<unsigned char>(std::lround(stops[k][c] + f * (stops[k + 1][c] - stops[k][c])));
 }
 
-void write_png(const std::string& path, std::span<const double> v, std::size_t nx, std::size_t ny) {
+void write_png(Writer& out, const std::string& path, std::span<const double> v, std::size_t nx, std::size_t ny) {
 #ifdef RIDT_HAVE_PNG
   double lo = HUGE_VAL, hi = -HUGE_VAL;
   for (const double x : v)
@@ -48,11 +47,9 @@ void write_png(const std::string& path, std::span<const double> v, std::size_t n
   if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, rgba.data(), 0, nullptr))
     detail::fail_file(path, std::string("cannot encode the picture: ") + image.message);
   png_image_free(&image);
-  Writer out(path);
   out.put(std::string_view(bytes.data(), size));
-  out.commit();
 #else
-  (void)v, (void)nx, (void)ny;
+  (void)out, (void)v, (void)nx, (void)ny;
   detail::fail_file(path, "this build writes no .png (it was built without libpng: apt-get install libpng-dev)");
 #endif
 }
@@ -91,31 +88,29 @@ std::vector<double> read_values(const std::string& path, std::size_t& components
   return out;
 }
 
-void write_values(const std::string& path, std::span<const Point> queries, std::span<const double> values,
-                  std::size_t components, std::size_t nx, std::size_t ny) {
-  const std::string ext = detail::extension_of(path);
-  if (ext == ".png") {
-    if (nx == 0 || ny == 0 || components != 1)
-      detail::fail_file(path, "a .png picture needs a grid (--grid) and one value a point");
-    write_png(path, values, nx, ny);
-    return;
-  }
-  if (ext != ".csv" && ext != ".bin")
-    throw IoError("unknown values output extension '" + ext + "' (use .csv, .bin or, for a grid, .png)");
-  Writer out(path);
-  if (ext == ".bin") {
-    for (const double v : values) out.put_f64_le(v);
-  } else {
-    out.put("x,y");
-    for (std::size_t k = 0; k < components; ++k) out.put(",v"), out.put_int(static_cast<std::int64_t>(k));
-    out.put('\n');
-    for (std::size_t i = 0; i < queries.size(); ++i) {
-      out.put_double(queries[i].x), out.put(','), out.put_double(queries[i].y);
-      for (std::size_t k = 0; k < components; ++k) out.put(','), out.put_double(values[i * components + k]);
-      out.put('\n');
-    }
-  }
-  out.commit();
+namespace detail {
+
+void write_values_png(Writer& out, const ValuesOut& v) {
+  if (v.nx == 0 || v.ny == 0 || v.components != 1)
+    fail_file(v.path, "a .png picture needs a grid (--grid) and one value a point");
+  write_png(out, v.path, v.values, v.nx, v.ny);
 }
+
+void write_values_bin(Writer& out, const ValuesOut& v) {
+  for (const double x : v.values) out.put_f64_le(x);
+}
+
+void write_values_csv(Writer& out, const ValuesOut& v) {
+  out.put("x,y");
+  for (std::size_t k = 0; k < v.components; ++k) out.put(",v"), out.put_int(static_cast<std::int64_t>(k));
+  out.put('\n');
+  for (std::size_t i = 0; i < v.queries.size(); ++i) {
+    out.put_double(v.queries[i].x), out.put(','), out.put_double(v.queries[i].y);
+    for (std::size_t k = 0; k < v.components; ++k) out.put(','), out.put_double(v.values[i * v.components + k]);
+    out.put('\n');
+  }
+}
+
+}  // namespace detail
 
 }  // namespace ridt::io

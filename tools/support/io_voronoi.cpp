@@ -1,4 +1,5 @@
 // Voronoi diagrams to files: a drawing (.svg), faces (.off), and the whole structure (.json).
+#include "formats.hpp"
 #include "io_common.hpp"
 
 namespace ridt::io {
@@ -85,81 +86,86 @@ std::vector<Point> clipped_cell(std::span<const Point> points, const Triangulati
   return clip(std::move(poly), box);
 }
 
-void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
-                   const Box& box) {
-  const std::string ext = detail::extension_of(path);
-  if (ext != ".svg" && ext != ".off" && ext != ".json")
-    throw IoError("unknown Voronoi output extension '" + ext + "' (use .svg, .off or .json)");
-  if (ext == ".svg" && vd.cells() > kSvgMaxTriangles)
-    detail::fail_file(path,
-                      std::to_string(vd.cells()) + " cells are too many to draw usefully (at most " +
-                          std::to_string(kSvgMaxTriangles) + "); write .json or .off instead");
-  Writer out(path);
-  if (ext == ".json") {
-    out.put("{\"vertices\":[");
-    for (std::size_t k = 0; k < vd.vertices.size(); ++k) {
+namespace detail {
+
+void write_voronoi_json(Writer& out, const VoronoiOut& v) {
+  const Voronoi& vd = v.vd;
+  out.put("{\"vertices\":[");
+  for (std::size_t k = 0; k < vd.vertices.size(); ++k) {
+    if (k) out.put(',');
+    put_point(out, vd.vertices[k]);
+  }
+  out.put("],\n\"cells\":[");
+  for (std::size_t c = 0; c < vd.cells(); ++c) {
+    out.put(c ? ",[" : "[");
+    const auto cell = vd.cell(c);
+    for (std::size_t k = 0; k < cell.size(); ++k) {
       if (k) out.put(',');
-      put_point(out, vd.vertices[k]);
+      out.put_int(cell[k]);
     }
-    out.put("],\n\"cells\":[");
-    for (std::size_t c = 0; c < vd.cells(); ++c) {
-      out.put(c ? ",[" : "[");
-      const auto cell = vd.cell(c);
-      for (std::size_t k = 0; k < cell.size(); ++k) {
-        if (k) out.put(',');
-        out.put_int(cell[k]);
-      }
-      out.put(']');
-    }
-    out.put("],\n\"point_cell\":[");
-    for (std::size_t i = 0; i < vd.point_cell.size(); ++i) {
-      if (i) out.put(',');
-      out.put_int(vd.point_cell[i]);
-    }
-    out.put("],\n\"ridges\":[");
-    for (std::size_t k = 0; k < vd.ridges.size(); ++k) {
-      const Ridge& r = vd.ridges[k];
-      out.put(k ? ",[" : "[");
-      out.put_int(r.a), out.put(','), out.put_int(r.b), out.put(','), out.put_int(r.u), out.put(','), out.put_int(r.v);
-      out.put(']');
-    }
-    out.put("]}\n");
-    out.commit();
-    return;
+    out.put(']');
   }
-  std::vector<std::vector<Point>> cells(vd.cells());
-  for (std::size_t c = 0; c < vd.cells(); ++c) cells[c] = clipped_cell(points, t, vd, c, box);
-  if (ext == ".off") {
-    std::size_t corners = 0, faces = 0;
-    for (const auto& poly : cells) corners += poly.size(), faces += !poly.empty();
-    out.put("OFF\n");
-    out.put_int(static_cast<std::int64_t>(corners));
-    out.put(' ');
-    out.put_int(static_cast<std::int64_t>(faces));
-    out.put(" 0\n");
-    for (const auto& poly : cells)
-      for (const Point& p : poly) {
-        out.put_double(p.x), out.put(' '), out.put_double(p.y), out.put(" 0\n");
-      }
-    std::int64_t next = 0;
-    for (const auto& poly : cells) {
-      if (poly.empty()) continue;
-      out.put_int(static_cast<std::int64_t>(poly.size()));
-      for (std::size_t k = 0; k < poly.size(); ++k) out.put(' '), out.put_int(next++);
-      out.put('\n');
-    }
-    out.commit();
-    return;
+  out.put("],\n\"point_cell\":[");
+  for (std::size_t i = 0; i < vd.point_cell.size(); ++i) {
+    if (i) out.put(',');
+    out.put_int(vd.point_cell[i]);
   }
-  // .svg: the box mapped to 1000 units along its longer side, y up.
+  out.put("],\n\"ridges\":[");
+  for (std::size_t k = 0; k < vd.ridges.size(); ++k) {
+    const Ridge& r = vd.ridges[k];
+    out.put(k ? ",[" : "[");
+    out.put_int(r.a), out.put(','), out.put_int(r.b), out.put(','), out.put_int(r.u), out.put(','), out.put_int(r.v);
+    out.put(']');
+  }
+  out.put("]}\n");
+}
+
+namespace {
+
+std::vector<std::vector<Point>> clipped_cells(const VoronoiOut& v) {
+  std::vector<std::vector<Point>> cells(v.vd.cells());
+  for (std::size_t c = 0; c < v.vd.cells(); ++c) cells[c] = clipped_cell(v.points, v.t, v.vd, c, v.box);
+  return cells;
+}
+
+}  // namespace
+
+void write_voronoi_off(Writer& out, const VoronoiOut& v) {
+  const std::vector<std::vector<Point>> cells = clipped_cells(v);
+  std::size_t corners = 0, faces = 0;
+  for (const auto& poly : cells) corners += poly.size(), faces += !poly.empty();
+  out.put("OFF\n");
+  out.put_int(static_cast<std::int64_t>(corners));
+  out.put(' ');
+  out.put_int(static_cast<std::int64_t>(faces));
+  out.put(" 0\n");
+  for (const auto& poly : cells)
+    for (const Point& p : poly) out.put_double(p.x), out.put(' '), out.put_double(p.y), out.put(" 0\n");
+  std::int64_t next = 0;
+  for (const auto& poly : cells) {
+    if (poly.empty()) continue;
+    out.put_int(static_cast<std::int64_t>(poly.size()));
+    for (std::size_t k = 0; k < poly.size(); ++k) out.put(' '), out.put_int(next++);
+    out.put('\n');
+  }
+}
+
+// The cells clipped to the box and the sites inside it, the box mapped to 1000 units along its
+// longer side, y up.
+void write_voronoi_svg(Writer& out, const VoronoiOut& v) {
+  if (v.vd.cells() > kSvgMaxTriangles)
+    fail_file(v.path,
+              std::to_string(v.vd.cells()) + " cells are too many to draw usefully (at most " +
+                  std::to_string(kSvgMaxTriangles) + "); write .json or .off instead");
+  const Box& box = v.box;
   const double w = box.x1 - box.x0, h = box.y1 - box.y0, scale = 1000 / std::max(w, h);
-  auto x = [&](double v) { return (v - box.x0) * scale; };
-  auto y = [&](double v) { return (box.y1 - v) * scale; };
+  auto x = [&](double c) { return (c - box.x0) * scale; };
+  auto y = [&](double c) { return (box.y1 - c) * scale; };
   out.put("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 ");
   out.put_fixed(w * scale, 3), out.put(' '), out.put_fixed(h * scale, 3);
   out.put("\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
   out.put("<g fill=\"#dbe9f6\" stroke=\"#2c6fad\" stroke-width=\"0.6\" stroke-linejoin=\"round\">\n");
-  for (const auto& poly : cells) {
+  for (const auto& poly : clipped_cells(v)) {
     if (poly.empty()) continue;
     out.put("<polygon points=\"");
     for (std::size_t k = 0; k < poly.size(); ++k) {
@@ -169,14 +175,15 @@ void write_voronoi(const std::string& path, std::span<const Point> points, const
     out.put("\"/>\n");
   }
   out.put("</g>\n<g fill=\"#b22222\">\n");
-  const double radius = std::clamp(300 / std::sqrt(static_cast<double>(points.size()) + 1), 0.3, 4.0);
-  for (const Point& p : points) {
+  const double radius = std::clamp(300 / std::sqrt(static_cast<double>(v.points.size()) + 1), 0.3, 4.0);
+  for (const Point& p : v.points) {
     if (p.x < box.x0 || p.x > box.x1 || p.y < box.y0 || p.y > box.y1) continue;
     out.put("<circle cx=\""), out.put_fixed(x(p.x), 3), out.put("\" cy=\""), out.put_fixed(y(p.y), 3);
     out.put("\" r=\""), out.put_fixed(radius, 3), out.put("\"/>\n");
   }
   out.put("</g>\n</svg>\n");
-  out.commit();
 }
+
+}  // namespace detail
 
 }  // namespace ridt::io

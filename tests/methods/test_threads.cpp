@@ -22,12 +22,10 @@ namespace {
 struct Variant {
   Method method;
   bool paper;
-  const char* name;
+  std::string name() const { return std::string(to_string(method)) + (paper ? "_paper" : ""); }
 };
-constexpr Variant kVariants[] = {{Method::Pessimistic, false, "pessimistic"},
-                                 {Method::Pessimistic, true, "pessimistic_paper"},
-                                 {Method::Optimistic, false, "optimistic"},
-                                 {Method::Batch, false, "batch"}};
+constexpr Variant kVariants[] = {
+    {Method::Pessimistic, false}, {Method::Pessimistic, true}, {Method::Optimistic, false}, {Method::Batch, false}};
 constexpr unsigned kThreadCounts[] = {1, 2, 3, 4, 8};
 
 // Smaller under sanitizers, which run these tests many times slower.
@@ -72,8 +70,7 @@ TEST_P(Threaded, SameTrianglesAsSerialForEveryThreadCount) {
         o.threads = threads;
         o.seed = 1 + 7919 * run++;  // a seed of its own for each run: the set must not change
         const Triangulation t = triangulate(pts, o);
-        const std::string what =
-            name + ", " + std::to_string(threads) + " threads, " + (order == Order::Brio ? "brio" : "random");
+        const std::string what = name + ", " + std::to_string(threads) + " threads, " + std::string(to_string(order));
         // The whole result: triangles, neighbours, hull, duplicates, then the same as serial.
         EXPECT_EQ(audit(pts, t), "") << what;
         EXPECT_EQ(compare(t, serial), "") << what;
@@ -386,11 +383,8 @@ TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
   const std::size_t kept = cached_memory();
   EXPECT_GT(kept, 0u);
   struct Abandon {};
-  const std::pair<Method, const char*> methods[] = {{Method::Serial, "serial"},
-                                                    {Method::Pessimistic, "pessimistic"},
-                                                    {Method::Optimistic, "optimistic"},
-                                                    {Method::Batch, "batch"}};
-  for (const auto& [m, name] : methods) {
+  for (const Method m : {Method::Serial, Method::Pessimistic, Method::Optimistic, Method::Batch}) {
+    const std::string name(to_string(m));
     for (const Order order : {Order::Random, Order::Brio}) {
       Options o;
       o.method = m;
@@ -457,9 +451,9 @@ TEST(MemoryCache, LimitedAddressSpace) {
 #endif
 
 INSTANTIATE_TEST_SUITE_P(Methods, Threaded, ::testing::ValuesIn(kVariants),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& info) { return info.param.name(); });
 INSTANTIATE_TEST_SUITE_P(Methods, Workers, ::testing::ValuesIn(kVariants, kVariants + 3),
-                         [](const auto& info) { return std::string(info.param.name); });
+                         [](const auto& info) { return info.param.name(); });
 
 // ---- The parked threads of on_threads (runtime/parallel.cpp) ----
 

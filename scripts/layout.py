@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
-"""Checks the sizes the code keeps to: no source file over 500 lines and no function over 60
-(the tests aside). Prints each that is over and exits 1; with --list, prints the longest.
+"""Checks the layout the code keeps to: no source file over 500 lines and no function over 60
+(the tests aside), and nothing outside src/ and the tests including from src/ (the tools, the
+Python module and the benchmarks include only include/ridt/ and their own folders). Prints each
+breach and exits 1; with --list N, prints the N longest functions too.
 
-    python3 scripts/sizes.py [--list N]
+    python3 scripts/layout.py [--list N]
 """
 from __future__ import annotations
 
@@ -102,6 +104,20 @@ def python_functions(path: Path):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))]
 
 
+def src_includes() -> list:
+    """`file:line: includes src/...` for each include of a library source outside src/ and the tests."""
+    found = []
+    for folder in ("tools", "python/src", "bench"):
+        for p in sorted((ROOT / folder).rglob("*")):
+            if p.suffix not in (".cpp", ".hpp") or not p.is_file():
+                continue
+            for number, line in enumerate(p.read_text().splitlines(), 1):
+                m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
+                if m and (ROOT / "src" / m.group(1)).is_file() and not (p.parent / m.group(1)).is_file():
+                    found.append(f"{p.relative_to(ROOT)}:{number}: includes src/{m.group(1)}")
+    return found
+
+
 def main() -> int:
     listing = int(sys.argv[sys.argv.index("--list") + 1]) if "--list" in sys.argv else 0
     files = sorted(p for f in FOLDERS for p in (ROOT / f).rglob("*")
@@ -120,6 +136,7 @@ def main() -> int:
         print(f"{length:5d}  {where}")
     print(f"{len(files)} files, {len(functions)} functions; longest file "
           f"{max(p.read_text().count(chr(10)) for p in files)} lines, longest function {max(functions)[0]} lines")
+    over += src_includes()
     for line in over:
         print(line)
     return 1 if over else 0

@@ -1,0 +1,137 @@
+// The partition method's second pass over the points put off, and what is left to one thread
+// (partition.hpp says how the method works).
+#include "methods/partition.hpp"
+
+namespace ridt::detail {
+
+template <bool kLattice>
+std::size_t Partition<kLattice>::prepare(Task& t, std::size_t taken) {
+  t.split = t.todo.size();  // none found: every point is put off
+  for (std::size_t k = 0; k < std::min(t.todo.size(), kStartTries); ++k) {
+    const std::size_t c = (t.todo.size() / 2 + k) % t.todo.size();
+    last_ = mesh_.walk(t.todo[c].near != kNoTriangle ? t.todo[c].near : last_, t.todo[c].p);
+    if (deep_in(t.range, last_, workers_[0].seen)) {
+      t.start = last_;
+      t.split = c;
+      break;
+    }
+  }
+  if (t.split == t.todo.size()) {
+    t.deferred = std::move(t.todo);
+    t.todo.clear();
+    t.split = 0;
+  }
+  const std::size_t need = 2 * t.todo.size();
+  const std::size_t listed = std::min(need, free_.size() - taken);
+  t.pool.list = free_.data() + taken;
+  t.pool.listed = listed;
+  t.pool.next = mesh_.grow(static_cast<TriangleId>(need - listed));
+  t.pool.end = t.pool.next + static_cast<TriangleId>(need - listed);
+  return listed;
+}
+
+template <bool kLattice>
+auto Partition<kLattice>::second_pass(std::vector<PutOff> left, std::vector<std::pair<VertexId, VertexId>> held)
+    -> std::vector<PutOff> {
+  std::vector<std::uint32_t> from;  // the smallest key of each region
+  for (const auto& [a, b] : held)
+    if (a < b) from.push_back(key_[a + (b - a) / 2]);
+  std::sort(from.begin(), from.end());
+  from.erase(std::unique(from.begin(), from.end()), from.end());
+  if (from.empty()) return left;
+  std::sort(left.begin(), left.end());  // curve order: the round is sorted by key
+  tasks_.assign(from.size(), Task{});
+  for (std::size_t j = 0; j < from.size(); ++j)
+    tasks_[j].range = region(
+        from[j],
+        j + 1 < from.size() ? std::uint64_t{from[j + 1]} - from[j] : (std::uint64_t{1} << 32) - (from[j] - from[0]));
+  for (PutOff x : left) {
+    // The last region whose first key is at most p's, or the last of all (which wraps round).
+    const auto above = std::upper_bound(from.begin(), from.end(), key_[x.p]) - from.begin();
+    Task& t = tasks_[above > 0 ? static_cast<std::size_t>(above - 1) : from.size() - 1];
+    // A hint the region does not own may change under another thread: read it now or never.
+    if (!live(x.near) || !owns(t.range, x.near)) x.near = kNoTriangle;
+    t.todo.push_back(x);
+  }
+  // Before the threads start: each region's start, and slots for all its points.
+  std::size_t taken = 0;
+  for (Task& t : tasks_) taken += prepare(t, taken);
+  std::atomic<std::size_t> next{0};
+  run_threads([&](unsigned i) {
+    // relaxed: the counter only hands out each region once; the joins order the rest.
+    for (std::size_t j; (j = next.fetch_add(1, std::memory_order_relaxed)) < tasks_.size();)
+      if (!insert_task(i, tasks_[j])) return;
+  });
+  // What the pools did not hand out is free now; the free slots they took are used.
+  std::vector<TriangleId> unused;
+  left.clear();
+  for (Task& t : tasks_) {
+    unused.insert(unused.end(), t.pool.list, t.pool.list + t.pool.listed);
+    for (; t.pool.next < t.pool.end; ++t.pool.next) {
+      mesh_.free_slot(t.pool.next);
+      unused.push_back(t.pool.next);
+    }
+    left.insert(left.end(), t.deferred.begin(), t.deferred.end());
+  }
+  unused.insert(unused.end(), free_.begin() + static_cast<std::ptrdiff_t>(taken), free_.end());
+  free_ = std::move(unused);
+  tasks_.clear();
+  return left;
+}
+
+template <bool kLattice>
+bool Partition<kLattice>::insert_task(unsigned i, Task& t) {
+  Worker& w = workers_[i];
+  auto insert = [&](const PutOff& x) {
+    w.last = nearer(w.last, x);  // the hint is its region's, and so still (PutOff)
+    return try_insert(i, t.range, x.p, t.deferred, t.pool);
+  };
+  w.last = t.start;
+  for (std::size_t k = t.split; k < t.todo.size(); ++k)
+    if (!insert(t.todo[k])) return false;
+  w.last = t.start;
+  for (std::size_t k = t.split; k-- > 0;)
+    if (!insert(t.todo[k])) return false;
+  return true;
+}
+
+template <bool kLattice>
+void Partition<kLattice>::release(TriangleId first, TriangleId end) {
+  for (TriangleId t = first; t < end; ++t) {
+    mesh_.free_slot(t);
+    free_.push_back(t);
+  }
+}
+
+template <bool kLattice>
+void Partition<kLattice>::insert_alone(const std::vector<PutOff>& list) {
+  Worker& w = workers_[0];
+  SlotPool pool;
+  pool.list = free_.data();
+  pool.listed = std::min(free_.size(), 2 * list.size());
+  const std::size_t listed = pool.listed;
+  const std::size_t grown = 2 * list.size() - pool.listed;
+  pool.next = mesh_.grow(static_cast<TriangleId>(grown));
+  pool.end = pool.next + static_cast<TriangleId>(grown);
+  for (const auto [p, near] : list) {
+    progress_(done_++);
+    last_ = nearer(last_, {p, live(near) ? near : kNoTriangle});
+    if (const VertexId hit = mesh_.insert<kLattice>(p, last_, w.scratch, pool); hit != kNoVertex)
+      w.duplicates.push_back({p, hit});
+    else
+      ++w.stats.points;
+  }
+  // The pool takes its listed slots from the back: those it left, at the front of its part
+  // of the list, stay free, and its range is given back.
+  free_.erase(free_.begin() + static_cast<std::ptrdiff_t>(pool.listed),
+              free_.begin() + static_cast<std::ptrdiff_t>(listed));
+  pool.listed = 0;
+  mesh_.give_back(pool);
+}
+
+// The second pass's members, for both forms of the predicates; the first pass's are made where
+// insert_partition uses them (partition.cpp).
+template class Partition<true>;
+template class Partition<false>;
+
+}  // namespace ridt::detail
