@@ -523,6 +523,37 @@ TEST_F(IoTest, WriteOffAndObj) {
   EXPECT_EQ(read_file("t.obj"), "v 0 0 0\nv 0.1 -0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nf 1 2 3\nf 1 3 4\n");
 }
 
+TEST_F(IoTest, WritePly) {
+  Square s;
+  s.points[1] = {0.1, -0.0};
+  write_triangulation(path("t.ply"), s.points, s.t, 1);  // 0-based whatever the input numbering
+  const std::string ply = read_file("t.ply");
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\ncomment ridt: the Delaunay triangulation\nelement vertex 5\n"
+      "property double x\nproperty double y\nproperty double z\nelement face 2\n"
+      "property list uchar uint vertex_indices\nend_header\n";
+  ASSERT_EQ(ply.substr(0, header.size()), header);
+  ASSERT_EQ(ply.size(), header.size() + 5 * 24 + 2 * 13);
+  const char* v = ply.data() + header.size();
+  for (std::size_t i = 0; i < 5; ++i) {
+    double x, y, z;
+    std::memcpy(&x, v + 24 * i, 8), std::memcpy(&y, v + 24 * i + 8, 8), std::memcpy(&z, v + 24 * i + 16, 8);
+    EXPECT_EQ(x, s.points[i].x) << i;
+    EXPECT_EQ(std::signbit(y), std::signbit(s.points[i].y)) << i;
+    EXPECT_EQ(y, s.points[i].y) << i;
+    EXPECT_EQ(z, 0.0);
+  }
+  const char* f = v + 5 * 24;
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(f[13 * k], 3);
+    for (int i = 0; i < 3; ++i) {
+      std::uint32_t id;
+      std::memcpy(&id, f + 13 * k + 1 + 4 * i, 4);
+      EXPECT_EQ(id, s.t.triangles[3 * k + i]);
+    }
+  }
+}
+
 TEST_F(IoTest, WriteSvg) {
   const Square s;
   write_triangulation(path("t.svg"), s.points, s.t, 0);
@@ -574,10 +605,10 @@ TEST_F(IoTest, SvgRefusesTooManyTrianglesAndCreatesNothing) {
 }
 
 TEST_F(IoTest, TriangulationExtensions) {
-  for (const char* ok : {"a.ele", "a.neigh", "a.off", "a.obj", "a.svg", "a.bin", "dir.x/b.c.ele"})
+  for (const char* ok : {"a.ele", "a.neigh", "a.off", "a.ply", "a.obj", "a.svg", "a.bin", "dir.x/b.c.ele"})
     EXPECT_NO_THROW(check_triangulation_extension(ok)) << ok;
   EXPECT_EQ(error_of([] { check_triangulation_extension("out.xyz"); }),
-            "unknown output extension '.xyz' (use .ele, .neigh, .off, .obj, .svg or .bin)");
+            "unknown output extension '.xyz' (use .ele, .neigh, .off, .ply, .obj, .svg or .bin)");
   for (const char* bad : {"out", "out.ELE", "out.txt", "out.node", "ele", "dir.ele/out"}) {
     SCOPED_TRACE(bad);
     EXPECT_TRUE(Has(error_of([&] { check_triangulation_extension(bad); }), "unknown output extension"));
@@ -590,7 +621,7 @@ TEST_F(IoTest, TriangulationExtensions) {
 TEST_F(IoTest, MissingDirectoryCreatesNothing) {
   const Square s;
   const std::string missing = path("no/such/dir");
-  for (const char* name : {"t.ele", "t.neigh", "t.off", "t.obj", "t.svg", "t.bin"}) {
+  for (const char* name : {"t.ele", "t.neigh", "t.off", "t.ply", "t.obj", "t.svg", "t.bin"}) {
     SCOPED_TRACE(name);
     const std::string target = missing + "/" + name;
     const std::string msg = error_of([&] { write_triangulation(target, s.points, s.t, 0); });
@@ -623,7 +654,7 @@ TEST_F(IoTest, BadTriangulationsAreRefused) {
   EXPECT_THROW(write_triangulation(path("t.neigh"), s.points, no_neighbors, 0), IoError);
   Triangulation out_of_range = s.t;
   out_of_range.triangles[4] = 9;
-  for (const char* name : {"t.off", "t.obj", "t.svg"})
+  for (const char* name : {"t.off", "t.ply", "t.obj", "t.svg"})
     EXPECT_THROW(write_triangulation(path(name), s.points, out_of_range, 0), IoError) << name;
   EXPECT_TRUE(listing().empty());
 }

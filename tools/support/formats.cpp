@@ -3,6 +3,9 @@
 #include "formats.hpp"
 
 namespace ridt::io::detail {
+
+void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.cpp
+
 namespace {
 
 // Writes through a Writer that commits only when the whole file is written.
@@ -53,6 +56,7 @@ constexpr Format kFormats[] = {
     {".ele", "Triangle's elements",         nullptr,          read_ele,            nullptr,           ele_out,   nullptr,            nullptr},
     {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr},
     {".off", "OFF mesh",                    nullptr,          nullptr,             nullptr,           off_out,   write_voronoi_off,  nullptr},
+    {".ply", "Stanford PLY, binary",        nullptr,          nullptr,             nullptr,           write_ply, nullptr,            nullptr},
     {".obj", "Wavefront OBJ",               nullptr,          nullptr,             nullptr,           obj_out,   nullptr,            nullptr},
     {".svg", "a drawing",                   nullptr,          nullptr,             nullptr,           svg_out,   write_voronoi_svg,  nullptr},
     {".json", "JSON",                       nullptr,          nullptr,             nullptr,           nullptr,   write_voronoi_json, nullptr},
