@@ -51,7 +51,7 @@ template <class E>
 std::string choices_help(const std::string& intro, E fallback) {
   std::string help = intro + (intro.empty() ? "" : ": ");
   for (const Named<E>& n : names<E>()) {
-    help += std::string(n.name) + (n.value == fallback ? " (default)" : "") + ", " + std::string(n.help) + "; ";
+    help += std::string(n.name) + (n.value == fallback ? " (default)" : "") + ": " + std::string(n.help) + "; ";
   }
   return help.substr(0, help.size() - 2);
 }
