@@ -17,7 +17,7 @@ if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
              python3-numpy python3-scipy python3-pytest python3-hypothesis python3-tqdm)
 fi
 if [ "${1:-build}" = test ] || [ "${1:-build}" = fuzz ]; then
-  packages+=(clang libclang-rt-14-dev)  # libFuzzer
+  packages+=(clang libclang-rt-14-dev clang-format-14)  # libFuzzer; the layout check
 fi
 if [ "${1:-build}" = python ]; then
   packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel pybind11-dev python3-pybind11 python3-numpy)

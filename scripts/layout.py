@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks the layout the code keeps to: no source file over 500 lines and no function over 60
-(the tests aside), and nothing outside src/ and the tests including from src/ (the tools, the
-Python module and the benchmarks include only include/ridt/ and their own folders). Prints each
+(the tests aside), nothing outside src/ and the tests including from src/ (the tools, the
+Python module and the benchmarks include only include/ridt/ and their own folders), and every
+C++ file as clang-format (14, .clang-format) lays it out. Prints each
 breach and exits 1; with --list N, prints the N longest functions too.
 
     python3 scripts/layout.py [--list N]
@@ -118,6 +119,23 @@ def src_includes() -> list:
     return found
 
 
+def unformatted() -> list:
+    """The C++ files that clang-format would change."""
+    import shutil
+    import subprocess
+    tool = shutil.which("clang-format-14") or shutil.which("clang-format")
+    if tool is None:
+        return ["clang-format not found (apt-get install clang-format-14)"]
+    files = [str(p) for f in FOLDERS + ("tests",) for p in sorted((ROOT / f).rglob("*"))
+             if p.suffix in (".cpp", ".hpp") and p.is_file()]
+    found = []
+    for k in range(0, len(files), 50):
+        r = subprocess.run([tool, "--dry-run", "--Werror", *files[k:k + 50]], capture_output=True, text=True)
+        found += sorted({line.split(":")[0] + ": not laid out as .clang-format says (clang-format -i FILE)"
+                         for line in r.stderr.splitlines() if "error:" in line})
+    return [str(Path(f).relative_to(ROOT)) if f.startswith(str(ROOT)) else f for f in found]
+
+
 def main() -> int:
     listing = int(sys.argv[sys.argv.index("--list") + 1]) if "--list" in sys.argv else 0
     files = sorted(p for f in FOLDERS for p in (ROOT / f).rglob("*")
@@ -137,6 +155,7 @@ def main() -> int:
     print(f"{len(files)} files, {len(functions)} functions; longest file "
           f"{max(p.read_text().count(chr(10)) for p in files)} lines, longest function {max(functions)[0]} lines")
     over += src_includes()
+    over += unformatted()
     for line in over:
         print(line)
     return 1 if over else 0
