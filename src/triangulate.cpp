@@ -11,6 +11,7 @@
 #include <malloc.h>
 #endif
 
+#include "finish/finish.hpp"
 #include "methods/method.hpp"
 #include "order/order.hpp"
 #include "predicates/predicates.hpp"

@@ -45,8 +45,10 @@ inline std::vector<VertexId> canonical_hull(std::vector<VertexId> hull) {
 ///  - the duplicates are exactly the points equal to a smaller-indexed one, each paired with
 ///    the smallest index of its kind, and no duplicate is a vertex;
 ///  - an empty result says why in the warning; the counts in the stats add up.
-inline std::string audit(std::span<const Point> points, const Triangulation& t) {
-  const CheckResult verdict = check(points, t.triangles);
+/// With `segments`, the validator is the constrained one.
+inline std::string audit(std::span<const Point> points, const Triangulation& t,
+                         std::span<const VertexId> segments = {}) {
+  const CheckResult verdict = check_constrained(points, t.triangles, segments);
   if (!verdict.valid) return "validator: " + verdict.message;
   const std::size_t nt = t.size();
   if (t.neighbors.size() != 3 * nt) return "neighbour list has the wrong size";

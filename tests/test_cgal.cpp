@@ -1,6 +1,7 @@
 // ridt against CGAL: Delaunay_triangulation_2 on points in general position, where the
 // Delaunay triangulation is unique and the triangle sets must be identical; on cocircular
 // fixtures, the triangles every Delaunay triangulation has; and the exact predicates.
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -12,6 +13,8 @@
 #include "helpers.hpp"
 #include "order/random.hpp"
 #include "predicates/predicates.hpp"
+#include "ridt/check.hpp"
+#include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
 
 namespace ridt::test {
@@ -197,6 +200,79 @@ TEST(PredicatesAgainstCgal, IntegersNear2To53) {
           << i;
   }
   EXPECT_GT(zeros, 100);
+}
+
+// CGAL's constrained Delaunay triangulation of `pts` with `segments` (pairs of indices), as a
+// triangle list.
+std::vector<VertexId> cgal_constrained(const std::vector<Point>& pts, const std::vector<VertexId>& segments) {
+  using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
+  using CTds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Cdt =
+      CGAL::Constrained_Delaunay_triangulation_2<K, CTds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> handle(pts.size());
+  for (VertexId i = 0; i < pts.size(); ++i) {
+    handle[i] = cdt.insert(K::Point_2(pts[i].x, pts[i].y));
+    handle[i]->info() = i;
+  }
+  for (std::size_t s = 0; s < segments.size(); s += 2)
+    cdt.insert_constraint(handle[segments[s]], handle[segments[s + 1]]);
+  std::vector<VertexId> tris;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i) tris.push_back(f->vertex(i)->info());
+  return tris;
+}
+
+// Whether the closed segments pq and rs share a point other than a common end (exactly).
+bool touch(const Point& p, const Point& q, const Point& r, const Point& s) {
+  const int a = detail::orient2d(p, q, r), b = detail::orient2d(p, q, s);
+  const int c = detail::orient2d(r, s, p), d = detail::orient2d(r, s, q);
+  if (a * b < 0 && c * d < 0) return true;
+  auto on = [](const Point& u, const Point& v, const Point& w, int o) {  // w on segment uv
+    return o == 0 && std::min(u.x, v.x) <= w.x && w.x <= std::max(u.x, v.x) && std::min(u.y, v.y) <= w.y &&
+        w.y <= std::max(u.y, v.y);
+  };
+  return (!(r == p || r == q) && on(p, q, r, a)) || (!(s == p || s == q) && on(p, q, s, b)) ||
+      (!(p == r || p == s) && on(r, s, p, c)) || (!(q == r || q == s) && on(r, s, q, d));
+}
+
+// Long segments between random points, none crossing or touching another but at a shared end.
+std::vector<VertexId> random_segments(const std::vector<Point>& pts, std::size_t wanted, std::uint64_t seed) {
+  detail::Rng rng(seed, 5);
+  std::vector<VertexId> segs;
+  for (std::size_t tries = 0; segs.size() < 2 * wanted && tries < 50 * wanted; ++tries) {
+    const auto a = static_cast<VertexId>(rng.below(pts.size())), b = static_cast<VertexId>(rng.below(pts.size()));
+    if (a == b || pts[a] == pts[b]) continue;
+    bool free = true;
+    for (std::size_t k = 0; free && k < segs.size(); k += 2)
+      free = !touch(pts[a], pts[b], pts[segs[k]], pts[segs[k + 1]]) || (a == segs[k] && b == segs[k + 1]);
+    if (free) segs.push_back(a), segs.push_back(b);
+  }
+  return segs;
+}
+
+// The validator accepts CGAL's constrained Delaunay triangulations, with long segments that
+// break the Delaunay property, in general position and on a grid (segments through grid
+// points, cocircular points everywhere), and check() without the segments rejects them.
+TEST(CgalConstrained, TheValidatorAcceptsCgalsConstrainedTriangulations) {
+  for (const Distribution d : {Distribution::Uniform, Distribution::Clusters, Distribution::Grid}) {
+    SCOPED_TRACE(std::string(to_string(d)));
+    const std::vector<Point> pts = generate(d, 5000, 5);
+    const std::vector<VertexId> segs = random_segments(pts, 150, 9);
+    ASSERT_GE(segs.size(), 2 * 100u);
+    const std::vector<VertexId> tris = cgal_constrained(pts, segs);
+    const CheckResult r = check_constrained(pts, tris, segs);
+    EXPECT_TRUE(r.valid) << r.message;
+    EXPECT_FALSE(check(pts, tris).valid);
+    EXPECT_TRUE(check_constrained(pts, cgal_constrained(pts, {}), {}).valid);
+    // Delaunay's triangles are no constrained triangulation of the segments.
+    EXPECT_FALSE(check_constrained(pts, triangulate(pts).triangles, segs).valid);
+    // ridt's: valid, and in general position (where the constrained triangulation is unique)
+    // CGAL's triangles.
+    const ConstrainedTriangulation ours = triangulate_constrained(pts, segs);
+    EXPECT_TRUE(check_constrained(pts, ours.triangles, segs).valid);
+    if (d != Distribution::Grid) EXPECT_EQ(canonical(ours.triangles), canonical(tris));
+  }
 }
 
 }  // namespace

@@ -33,6 +33,17 @@ inline constexpr std::size_t kCheckMaxTriangles = 0xffffffffu / 3;
 /// kCheckMaxTriangles triangles (the triangulation of some 715 million points).
 CheckResult check(std::span<const Point> points, std::span<const VertexId> triangles);
 
+/// The same for a constrained Delaunay triangulation of `points` with `segments` (pairs of
+/// indices into `points`, a flat array a0, b0, a1, b1, ...), its boundary the convex hull:
+///  - every segment is a union of edges: it is followed from end to end along edges through
+///    the points that lie exactly on it (a segment's end stands for its group of equal points);
+///  - an interior edge need be locally Delaunay only where it is not part of a segment (with
+///    the rest, this makes every triangle's circle hold no point that its triangle can see
+///    without crossing a segment);
+///  - and everything else check() asks. Without segments it is check().
+CheckResult check_constrained(std::span<const Point> points, std::span<const VertexId> triangles,
+                              std::span<const VertexId> segments);
+
 /// Checks with exact arithmetic that `triangles` is the farthest-point Delaunay triangulation
 /// of `points` (triangulate_furthest_site's, counter-clockwise): every triangle
 /// counter-clockwise and not degenerate; each directed edge used at most once; across each

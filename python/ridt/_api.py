@@ -162,14 +162,16 @@ def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str =
                              progress_callback(progress, pts.shape[0]), bool(furthest_site))
 
 
-def check(points: Any, triangles: Any, furthest_site: bool = False) -> Tuple[bool, str]:
+def check(points: Any, triangles: Any, furthest_site: bool = False, segments: Any = None) -> Tuple[bool, str]:
     """Checks exactly that `triangles` ((ntriangles, 3) vertex indices into `points`) is a
     Delaunay triangulation of the distinct points: counter-clockwise, not degenerate, every
     interior edge locally Delaunay, the boundary the whole convex hull, every distinct point a
     vertex. With `furthest_site`, that it is the farthest-point Delaunay triangulation (either
     orientation: scipy's clockwise triangles are turned first): every circle holds every point,
-    the hull's corners its only vertices. Returns (valid, message): the message says what was
-    checked or the first problem.
+    the hull's corners its only vertices. With `segments` ((nsegments, 2) point indices), that it
+    is the constrained Delaunay triangulation: every segment a union of edges (split at the
+    points on it), only the other edges need be locally Delaunay. Returns (valid, message): the
+    message says what was checked or the first problem.
     """
     pts = as_points(points)
     t = np.asarray(triangles)
@@ -185,5 +187,17 @@ def check(points: Any, triangles: Any, furthest_site: bool = False) -> Tuple[boo
         clockwise = (p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) < (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0])
         if clockwise.all():
             t = np.ascontiguousarray(t[:, [0, 2, 1]])
-    valid, message, _ = _core.check(pts, t, bool(furthest_site))
+    segs = np.zeros((0, 2), dtype=np.uint32)
+    if segments is not None:
+        if furthest_site:
+            raise ValueError("segments constrain a Delaunay triangulation, not a farthest-point one")
+        s = np.asarray(segments)
+        if s.dtype.kind not in "iu":
+            raise TypeError(f"segments must hold integers, not {s.dtype}")
+        if s.ndim != 2 or s.shape[1] != 2:
+            raise ValueError(f"segments must have shape (nsegments, 2); got shape {s.shape}")
+        if s.size and (s.min() < 0 or s.max() >= pts.shape[0]):
+            return False, f"a segment's end is not one of the {pts.shape[0]} points"
+        segs = np.ascontiguousarray(s, dtype=np.uint32)
+    valid, message, _ = _core.check(pts, t, bool(furthest_site), segs)
     return bool(valid), message

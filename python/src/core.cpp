@@ -257,17 +257,20 @@ void bind_queries(py::module_& m) {
 
   m.def(
       "check",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles, bool furthest_site) {
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles, bool furthest_site,
+         const py::array_t<std::uint32_t, py::array::c_style>& segments) {
         const auto pts = as_points(points, "points");
         const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
+        const std::span<const ridt::VertexId> s(segments.data(), static_cast<std::size_t>(segments.size()));
         ridt::CheckResult r;
         {
           py::gil_scoped_release nogil;
-          r = furthest_site ? ridt::check_furthest_site(pts, t) : ridt::check(pts, t);
+          r = furthest_site ? ridt::check_furthest_site(pts, t) : ridt::check_constrained(pts, t, s);
         }
         return py::make_tuple(r.valid, r.message, r.problems);
       },
-      py::arg("points"), py::arg("triangles"), py::arg("furthest_site") = false);
+      py::arg("points"), py::arg("triangles"), py::arg("furthest_site") = false,
+      py::arg("segments") = py::array_t<std::uint32_t>(0));
 }
 
 // Per point and per triangle: the nearest vertex of each query, each triangle's transform.

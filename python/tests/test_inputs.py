@@ -98,6 +98,22 @@ def test_triangulate_arrays_are_the_librarys_buffers():
     assert d.simplices.ctypes.data == d.triangulation.triangles.ctypes.data
 
 
+def test_check_with_segments():
+    kite = np.array([(0, 0), (4, -1), (8, 0), (4, 1)], dtype=float)
+    long_diagonal = np.array([(0, 1, 2), (0, 2, 3)])
+    assert not ridt.check(kite, long_diagonal)[0]
+    valid, message = ridt.check(kite, long_diagonal, segments=[(0, 2)])
+    assert valid and "constrained Delaunay with 1 segments" in message
+    assert not ridt.check(kite, ridt.Delaunay(kite).simplices, segments=[(2, 0)])[0]
+    assert ridt.check(kite, long_diagonal, segments=[(0, 9)]) == (False, "a segment's end is not one of the 4 points")
+    with pytest.raises(ValueError):
+        ridt.check(kite, long_diagonal, segments=[0, 2])
+    with pytest.raises(TypeError):
+        ridt.check(kite, long_diagonal, segments=[(0.5, 2)])
+    with pytest.raises(ValueError):
+        ridt.check(kite, long_diagonal, furthest_site=True, segments=[(0, 2)])
+
+
 def test_check_rejects_a_wrong_triangulation():
     tri = ridt.Delaunay(PTS)
     assert ridt.check(PTS, tri.simplices) == (True, ridt.check(PTS, tri.simplices)[1])

@@ -1,5 +1,6 @@
 // The validator: independent of the triangulator beyond the predicates. It builds its own
-// edge table and its own convex hull (Andrew's monotone chain with exact orientation).
+// edge table and its own convex hull (Andrew's monotone chain with exact orientation), and
+// for constrained triangulations follows each segment along the edges.
 #include "ridt/check.hpp"
 
 #include <algorithm>
@@ -104,13 +105,14 @@ void check_triangles(std::span<const Point> pts, std::span<const VertexId> tris,
   }
 }
 
-// Every directed edge used once, every interior edge locally Delaunay. Returns the boundary
-// edges, directed as their triangles run.
+// Every directed edge used once, every interior edge locally Delaunay but those of segments
+// (`constrained`: (lo, hi), sorted). Returns the boundary edges, directed as their triangles run.
 //
 // Every side of every triangle is filed under its smaller vertex (a counting sort), then
 // ordered by the larger one within each file, so that the two sides of an interior edge lie
 // next to each other. Linear time but for vertices of very high degree.
-std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const VertexId> tris, Report& report) {
+std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const VertexId> tris,
+                              const std::vector<Edge>& constrained, Report& report) {
   const std::size_t n = pts.size(), count = tris.size() / 3;
   struct Side {
     VertexId hi;
@@ -151,6 +153,7 @@ std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const Vertex
       } else if (e - run > 2 || (run[0].tri_dir & 1) == (run[1].tri_dir & 1)) {
         report.problem("edge ", lo, "-", hi, " is used by two triangles in the same direction");
       } else {
+        if (std::binary_search(constrained.begin(), constrained.end(), Edge{lo, hi})) continue;  // a segment's
         const std::uint32_t t = run[0].tri_dir >> 1, u = run[1].tri_dir >> 1;
         const VertexId* v = &tris[3 * std::size_t{t}];
         const VertexId o = opposite(u, lo, hi);
@@ -161,6 +164,62 @@ std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const Vertex
     }
   }
   return boundary;
+}
+
+// For each point, the member of its group of equal points that stands for it: the one that
+// is a vertex, else the group's first.
+std::vector<VertexId> standing(std::span<const Point> pts, const Distinct& d, const std::vector<std::uint8_t>& used) {
+  std::vector<VertexId> stand(pts.size());
+  for (std::size_t i = 0, g = 0; i < pts.size(); i = g) {
+    VertexId v = d.sorted[i];
+    for (g = i; g < pts.size() && pts[d.sorted[g]] == pts[d.sorted[i]]; ++g)
+      if (used[d.sorted[g]]) v = d.sorted[g];
+    for (std::size_t k = i; k < g; ++k) stand[d.sorted[k]] = v;
+  }
+  return stand;
+}
+
+// The edges that the segments cover, (lo, hi) sorted: each segment followed from end to end
+// along triangle edges through the vertices that lie exactly on it. Reports a segment that is
+// not a union of edges, or an index out of range.
+std::vector<Edge> segment_edges(std::span<const Point> pts, std::span<const VertexId> tris,
+                                std::span<const VertexId> segments, const std::vector<VertexId>& stand,
+                                Report& report) {
+  std::vector<std::vector<VertexId>> around(pts.size());
+  for (std::size_t k = 0; k < tris.size(); ++k) {  // both ways: a hull edge is run one way only
+    const VertexId a = tris[k], b = tris[k % 3 == 2 ? k - 2 : k + 1];
+    around[a].push_back(b), around[b].push_back(a);
+  }
+  std::vector<Edge> covered;
+  for (std::size_t s = 0; s + 1 < segments.size(); s += 2) {
+    if (segments[s] >= pts.size() || segments[s + 1] >= pts.size()) {
+      report.problem("segment ", s / 2, " refers to a point that is not one of the ", pts.size());
+      continue;
+    }
+    const VertexId a = stand[segments[s]], b = stand[segments[s + 1]];
+    if (a == b) continue;  // its ends coincide: no segment
+    // Positions along a -> b, compared exactly: by x, or by y on a vertical segment.
+    const bool by_x = pts[a].x != pts[b].x;
+    const double sign = (by_x ? pts[b].x - pts[a].x : pts[b].y - pts[a].y) > 0 ? 1 : -1;
+    auto key = [&](VertexId v) { return sign * (by_x ? pts[v].x : pts[v].y); };
+    for (VertexId at = a; at != b;) {
+      VertexId next = at;  // the nearest neighbour on the segment, past `at`, not past b
+      for (const VertexId c : around[at])
+        if (orient2d(pts[a], pts[b], pts[c]) == 0 && key(c) > key(at) && key(c) <= key(b) &&
+            (next == at || key(c) < key(next)))
+          next = c;
+      if (next == at) {
+        report.problem("segment ", s / 2, " (", segments[s], "-", segments[s + 1],
+                       ") is not a union of edges: no edge ", "goes on from vertex ", at, " towards ", b);
+        break;
+      }
+      covered.emplace_back(std::min(at, next), std::max(at, next));
+      at = next;
+    }
+  }
+  std::sort(covered.begin(), covered.end());
+  covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
+  return covered;
 }
 
 // Every distinct point a vertex exactly once (when there are triangles). Returns the number
@@ -240,7 +299,8 @@ void check_boundary(std::span<const Point> pts, const Distinct& d, std::vector<E
 
 }  // namespace
 
-CheckResult check(std::span<const Point> input, std::span<const VertexId> tris) {
+CheckResult check_constrained(std::span<const Point> input, std::span<const VertexId> tris,
+                              std::span<const VertexId> segments) {
   // The edge table files 3 sides a triangle and names a side by 2 * triangle + direction,
   // both in 32 bits: refused before anything is counted, where either would wrap.
   if (tris.size() / 3 > kCheckMaxTriangles) {
@@ -258,17 +318,27 @@ CheckResult check(std::span<const Point> input, std::span<const VertexId> tris) 
   std::vector<std::uint8_t> used(pts.size(), 0);
   check_triangles(pts, tris, used, report);
   if (report.problems() > 0) return report.result();  // what follows needs sound triangles
-  std::vector<Edge> boundary = check_edges(pts, tris, report);
+  if (segments.size() % 2 != 0) report.problem("the segment list is not a multiple of 2 long");
+  const std::vector<Edge> constrained = segments.empty()
+      ? std::vector<Edge>{}
+      : segment_edges(pts, tris, segments, standing(pts, distinct, used), report);
+  std::vector<Edge> boundary = check_edges(pts, tris, constrained, report);
   const std::size_t vertices = check_vertices(pts, distinct, used, count > 0, report);
   check_boundary(pts, distinct, std::move(boundary), count, vertices, report);
 
   std::ostringstream s;
   s << "valid: " << count << " triangles, " << vertices << " vertices of " << pts.size() << " points ("
-    << distinct.first.size() << " distinct), exactly Delaunay";
+    << distinct.first.size() << " distinct), exactly "
+    << (segments.empty() ? "Delaunay"
+                         : "constrained Delaunay with " + std::to_string(segments.size() / 2) + " segments");
   if (distinct.degenerate)
     s << " (no triangle: " << (distinct.first.size() < 3 ? "fewer than three distinct points" : "all points collinear")
       << ")";
   return report.result(s.str());
+}
+
+CheckResult check(std::span<const Point> points, std::span<const VertexId> triangles) {
+  return check_constrained(points, triangles, {});
 }
 
 }  // namespace ridt

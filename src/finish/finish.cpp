@@ -8,7 +8,8 @@
 #include <type_traits>
 #include <unordered_map>
 
-#include "methods/method.hpp"
+#include "dag/kernel.hpp"
+#include "finish/finish.hpp"
 #include "runtime/parallel.hpp"
 
 namespace ridt::detail {

@@ -1,24 +1,19 @@
-// What the methods share: the set-up of a run and its finish.
+// What the methods share: what a method is given (Insertion), its entry in the registry,
+// each thread's state, the progress reports.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <span>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "dag/kernel.hpp"
+#include "finish/finish.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::detail {
-
-/// A point dropped during insertion and the mesh vertex it coincides with.
-struct DuplicateHit {
-  VertexId dropped;
-  VertexId vertex;
-};
 
 /// What each thread of a threaded method keeps for itself, on its own cache lines: one type for
 /// every method. `KernelScratch` is the kernel's: Scratch on the DAG (dag/kernel.hpp),
@@ -109,44 +104,5 @@ const MethodEntry& method_entry(Method method);
 /// The serial driver on the DAG (methods/serial.cpp): the paper's Fig. 4, lines 5-23. The batch method
 /// falls back to it on one thread.
 void insert_serial(Kernel& kernel, const Insertion& run);
-
-/// The finish of the walking mesh: its arrays become the output's, in place (walk/mesh.cpp).
-Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input_index,
-                             const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
-
-/// The input index that stands for a mesh vertex: its own, or for a group of equal points the
-/// smallest among them.
-struct Standing {
-  explicit Standing(const std::vector<std::uint32_t>& input_index) : input_index(input_index) {}
-  VertexId operator()(VertexId mesh_vertex) const {
-    const VertexId v = input_index[mesh_vertex];
-    if (keep.empty()) return v;
-    const auto it = keep.find(v);
-    return it == keep.end() ? v : it->second;
-  }
-  const std::vector<std::uint32_t>& input_index;
-  std::unordered_map<VertexId, VertexId> keep;  // only the input indices that another stands for
-};
-
-/// The finish's steps that every mesh shares. Groups the duplicates (input indices, sorted by
-/// the dropped one) and says who stands for whom.
-Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index, const std::vector<DuplicateHit>& duplicates,
-                            std::vector<Duplicate>& out);
-/// The hull, counter-clockwise from its smallest vertex, from its edges (sorted here).
-std::vector<VertexId> trace_hull(std::vector<std::pair<VertexId, VertexId>>& edges);
-/// The counts of the points and the warning of an empty or (finite bounding triangle) broken
-/// result. `input_points` fills the points in input order when they are needed.
-void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std::size_t hull_edges,
-                  const Options& options, const std::function<void(std::vector<Point>&)>& input_points);
-
-/// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
-/// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
-/// point input_index[v]. Uses up to `threads` threads.
-Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
-                     const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
-
-/// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
-/// neighbours: the output no longer depends on the order of insertion. Up to `threads` threads.
-void canonicalize(Triangulation& out, unsigned threads = 1);
 
 }  // namespace ridt::detail

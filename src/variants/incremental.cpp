@@ -20,7 +20,7 @@
 #include <string>
 #include <utility>
 
-#include "methods/method.hpp"
+#include "finish/finish.hpp"
 #include "order/order.hpp"
 #include "predicates/symbolic.hpp"
 #include "walk/mesh.hpp"

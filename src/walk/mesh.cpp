@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "finish/finish.hpp"
 #include "methods/method.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"

@@ -19,6 +19,71 @@ namespace {
 // out to (2.5, 2.5), outside the circle through the other three.
 const std::vector<Point> kQuad = {{0, 0}, {2, 0}, {2.5, 2.5}, {0, 2}};
 
+// A kite whose long diagonal 0-2 is not Delaunay (the short one 1-3 is).
+const std::vector<Point> kKite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
+const std::vector<VertexId> kLongDiagonal = {0, 1, 2, 0, 2, 3};
+const std::vector<VertexId> kShortDiagonal = {0, 1, 3, 1, 2, 3};
+
+TEST(CheckConstrained, AcceptsASegmentThatIsNotDelaunay) {
+  const std::vector<VertexId> segment = {0, 2};
+  EXPECT_FALSE(check(kKite, kLongDiagonal).valid);
+  const CheckResult r = check_constrained(kKite, kLongDiagonal, segment);
+  EXPECT_TRUE(r.valid) << r.message;
+  EXPECT_NE(r.message.find("constrained Delaunay with 1 segments"), std::string::npos) << r.message;
+}
+
+TEST(CheckConstrained, RejectsAMissingSegment) {
+  const std::vector<VertexId> segment = {2, 0};  // either direction
+  const CheckResult r = check_constrained(kKite, kShortDiagonal, segment);
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("segment 0 (2-0) is not a union of edges"), std::string::npos) << r.message;
+}
+
+TEST(CheckConstrained, OnlyTheSegmentsEdgesMayBeNonDelaunay) {
+  // Segment 1-3 is the Delaunay diagonal itself; the long diagonal stays wrong.
+  const std::vector<VertexId> segment = {1, 3};
+  EXPECT_TRUE(check_constrained(kKite, kShortDiagonal, segment).valid);
+  EXPECT_FALSE(check_constrained(kKite, kLongDiagonal, segment).valid);
+  EXPECT_TRUE(check_constrained(kKite, kShortDiagonal, {}).valid);
+}
+
+TEST(CheckConstrained, ASegmentIsSplitAtThePointsOnIt) {
+  // Vertex 1 lies on segment 0-2: the segment is the edges 0-1 and 1-2. Vertices 3 and 4
+  // above and below: its Delaunay triangulation has those edges.
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {2, 0}, {1, 1}, {1, -1}};
+  const std::vector<VertexId> tris = {0, 1, 3, 1, 2, 3, 0, 4, 1, 1, 4, 2};
+  ASSERT_TRUE(check(pts, tris).valid);
+  const std::vector<VertexId> through = {0, 2}, vertical = {3, 4}, hull = {0, 3};
+  EXPECT_TRUE(check_constrained(pts, tris, through).valid);
+  EXPECT_TRUE(check_constrained(pts, tris, vertical).valid);  // 3-1 and 1-4
+  EXPECT_TRUE(check_constrained(pts, tris, hull).valid);
+}
+
+TEST(CheckConstrained, EndsStandForTheirGroupOfEqualPoints) {
+  std::vector<Point> pts = kKite;
+  pts.push_back(pts[2]);  // point 4 equals point 2, which is the vertex
+  const std::vector<VertexId> segment = {0, 4};
+  EXPECT_TRUE(check_constrained(pts, kLongDiagonal, segment).valid);
+  EXPECT_FALSE(check_constrained(pts, kShortDiagonal, segment).valid);
+  const std::vector<VertexId> nothing = {2, 4};  // its ends coincide
+  EXPECT_TRUE(check_constrained(pts, kShortDiagonal, nothing).valid);
+}
+
+TEST(CheckConstrained, RejectsBadSegmentLists) {
+  const std::vector<VertexId> odd = {0, 2, 1};
+  EXPECT_NE(check_constrained(kKite, kLongDiagonal, odd).message.find("not a multiple of 2"), std::string::npos);
+  const std::vector<VertexId> outside = {0, 7};
+  const CheckResult r = check_constrained(kKite, kLongDiagonal, outside);
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("segment 0 refers to a point that is not one of the 4"), std::string::npos) << r.message;
+}
+
+TEST(CheckConstrained, CrossingSegmentsCannotBothBeEdges) {
+  const std::vector<VertexId> both = {0, 2, 1, 3};
+  EXPECT_FALSE(check_constrained(kKite, kLongDiagonal, both).valid);
+  EXPECT_FALSE(check_constrained(kKite, kShortDiagonal, both).valid);
+}
+
 TEST(Check, AcceptsTheDelaunayDiagonal) {
   // (2.5, 2.5) lies outside the circle through (0,0), (2,0), (0,2): diagonal 1-3 is Delaunay.
   const CheckResult r = check(kQuad, std::vector<VertexId>{0, 1, 3, 1, 2, 3});
