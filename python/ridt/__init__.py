@@ -14,6 +14,7 @@ and thread count.
 
 from ._api import check, triangulate
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
+from ._constrained import ConstrainedDelaunay
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
@@ -25,6 +26,7 @@ __all__ = [
     "CloughTocher2DInterpolator",
     "GradientEstimationWarning",
     "estimate_gradients_2d_global",
+    "ConstrainedDelaunay",
     "Delaunay",
     "DegenerateInputWarning",
     "InputError",

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "ridt/check.hpp"
+#include "ridt/constrained.hpp"
 #include "ridt/furthest.hpp"
 #include "ridt/incremental.hpp"
 #include "ridt/interpolate.hpp"
@@ -235,6 +236,33 @@ void bind_incremental(py::module_& m) {
         py::arg("progress"), py::arg("furthest_site") = false);
 }
 
+// The constrained Delaunay triangulation: (its triangulation, its segments' edges).
+void bind_constrained(py::module_& m) {
+  m.def(
+      "triangulate_constrained",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
+         const std::string& method, unsigned threads, std::uint64_t seed, bool canonical) {
+        ridt::Options o;
+        o.method = ridt::parse<ridt::Method>(method);
+        o.threads = threads;
+        o.seed = seed;
+        o.canonical_order = canonical;
+        o.experiment.time_threads = false;
+        const auto pts = as_points(points, "points");
+        const std::span<const ridt::VertexId> segs(segments.data(), static_cast<std::size_t>(segments.size()));
+        ridt::ConstrainedTriangulation c;
+        {
+          py::gil_scoped_release nogil;
+          c = ridt::triangulate_constrained(pts, segs, o);
+        }
+        const auto pieces = static_cast<py::ssize_t>(c.edges.size() / 2);
+        auto edges = adopt(std::move(c.edges), {pieces, py::ssize_t{2}});
+        return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges);
+      },
+      py::arg("points"), py::arg("segments"), py::arg("method"), py::arg("threads"), py::arg("seed"),
+      py::arg("canonical"));
+}
+
 // Location in a finished triangulation, and the validator.
 void bind_queries(py::module_& m) {
   m.def(
@@ -400,6 +428,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("MAX_THREADS") = ridt::kMaxThreads;
   bind_triangulation(m);
   bind_incremental(m);
+  bind_constrained(m);
   bind_queries(m);
   bind_nearest(m);
   bind_voronoi(m);

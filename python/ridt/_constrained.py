@@ -1,0 +1,108 @@
+"""The constrained Delaunay triangulation: points in the plane and segments between them."""
+
+from __future__ import annotations
+
+from functools import cached_property
+from typing import Any, Tuple
+
+import numpy as np
+
+from . import _api, _core
+
+
+def as_segments(segments: Any, npoints: int) -> np.ndarray:
+    """`segments` as a C-ordered uint32 array of shape (nsegments, 2), every index a point's."""
+    s = np.asarray(segments)
+    if s.size == 0:
+        return np.zeros((0, 2), dtype=np.uint32)
+    if s.dtype.kind not in "iu":
+        raise TypeError(f"segments must hold integers (point indices), not {s.dtype}")
+    if s.ndim != 2 or s.shape[1] != 2:
+        raise ValueError(f"segments must have shape (nsegments, 2); got shape {s.shape}")
+    if s.min() < 0 or s.max() >= npoints:
+        bad = int(np.flatnonzero(((s < 0) | (s >= npoints)).any(axis=1))[0])
+        raise ValueError(f"segments[{bad}] = {s[bad].tolist()}: every end must be one of the {npoints} points")
+    return np.ascontiguousarray(s, dtype=np.uint32)
+
+
+class ConstrainedDelaunay:
+    """The constrained Delaunay triangulation of `points` with `segments`, in scipy's style.
+
+    Every segment (a row of two point indices) is a union of triangle edges, split at the points
+    that lie exactly on it; every other edge is Delaunay, so no triangle's circle holds a point
+    that the triangle can see without crossing a segment. The boundary is the convex hull.
+    Exact predicates throughout; the result passes ``ridt.check(points, simplices,
+    segments=segments)``. Duplicate points are left out (a segment's end that is one stands for
+    the point kept). Two segments that cross at a point that is not one of the points raise
+    ValueError (splitting them is not supported yet).
+
+    Parameters
+    ----------
+    points : array_like, shape (npoints, 2)
+    segments : array_like of int, shape (nsegments, 2)
+    method, threads, seed
+        As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
+
+    Attributes
+    ----------
+    points : ndarray of double, shape (npoints, 2)
+    segments : ndarray of intc, shape (nsegments, 2)
+    simplices : ndarray of intc, shape (nsimplex, 3)
+        The triangles, counter-clockwise, in canonical order.
+    neighbors : ndarray of intc, shape (nsimplex, 3)
+        The k-th neighbour lies across from the k-th vertex; -1 on the hull.
+    edges : ndarray of intc, shape (nedges, 2)
+        The segments' pieces: the edges that make up the segments, (a, b) with a < b, sorted.
+    convex_hull : ndarray of intc, shape (nhull, 2)
+    npoints, nsimplex, ndim
+    """
+
+    def __init__(self, points: Any, segments: Any, *, method: str = "auto", threads: int = 1, seed: int = 1):
+        self._points = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
+        segs = as_segments(segments, self._points.shape[0])
+        method = _api._choice(method, "method", _api.METHODS)
+        tri, edges = _core.triangulate_constrained(self._points, segs, method, _api.thread_count(threads),
+                                                   int(seed), True)
+        self._tri = tri
+        self.segments = segs.view(np.int32) if segs.size else np.zeros((0, 2), dtype=np.intc)
+        self.edges = edges.view(np.intc)
+
+    @property
+    def points(self) -> np.ndarray:
+        return self._points
+
+    @property
+    def simplices(self) -> np.ndarray:
+        return self._tri.triangles.view(np.intc)
+
+    @property
+    def neighbors(self) -> np.ndarray:
+        return self._tri.neighbors.view(np.intc)
+
+    @property
+    def npoints(self) -> int:
+        return int(self._points.shape[0])
+
+    @property
+    def nsimplex(self) -> int:
+        return len(self._tri)
+
+    @property
+    def ndim(self) -> int:
+        return 2
+
+    @cached_property
+    def convex_hull(self) -> np.ndarray:
+        h = self._tri.hull.view(np.intc)
+        if self.nsimplex == 0:
+            return np.empty((0, 2), dtype=np.intc)
+        return np.stack([h, np.roll(h, -1)], axis=1)
+
+    @property
+    def triangulation(self) -> _core.Triangulation:
+        """ridt's own result (triangles, neighbors, hull, duplicates, warning, stats)."""
+        return self._tri
+
+    def check(self) -> Tuple[bool, str]:
+        """ridt.check of these triangles with these segments: (valid, message)."""
+        return _api.check(self._points, self.simplices, segments=self.segments)
