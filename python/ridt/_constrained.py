@@ -31,8 +31,8 @@ class ConstrainedDelaunay:
     Every segment (a row of two point indices) is a union of triangle edges, split at the points
     that lie exactly on it; every other edge is Delaunay, so no triangle's circle holds a point
     that the triangle can see without crossing a segment. The boundary is the convex hull.
-    Exact predicates throughout; the result passes ``ridt.check(points, simplices,
-    segments=segments)``. Duplicate points are left out (a segment's end that is one stands for
+    Exact predicates throughout; with the whole convex hull kept, the result passes
+    ``ridt.check(points, simplices, segments=segments)``. Duplicate points are left out (a segment's end that is one stands for
     the point kept). Two segments that cross at a point that is not one of the points raise
     ValueError (splitting them is not supported yet).
 
@@ -40,6 +40,12 @@ class ConstrainedDelaunay:
     ----------
     points : array_like, shape (npoints, 2)
     segments : array_like of int, shape (nsegments, 2)
+    holes : array_like, shape (nholes, 2), optional
+        Seeds of holes: the triangle holding each, and all reached from it without crossing a
+        segment, are removed (Triangle's convention).
+    convex_hull : bool
+        True (the default) keeps every triangle of the convex hull; False removes those reached
+        from the hull without crossing a segment, leaving what the segments enclose.
     method, threads, seed
         As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
 
@@ -54,15 +60,19 @@ class ConstrainedDelaunay:
     edges : ndarray of intc, shape (nedges, 2)
         The segments' pieces: the edges that make up the segments, (a, b) with a < b, sorted.
     convex_hull : ndarray of intc, shape (nhull, 2)
+        The hull's edges; empty where triangles were removed (the boundary is then where
+        neighbors is -1).
     npoints, nsimplex, ndim
     """
 
-    def __init__(self, points: Any, segments: Any, *, method: str = "auto", threads: int = 1, seed: int = 1):
+    def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
+                 method: str = "auto", threads: int = 1, seed: int = 1):
         self._points = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = as_segments(segments, self._points.shape[0])
+        seeds = np.zeros((0, 2)) if holes is None or np.size(holes) == 0 else _api.as_points(holes, "holes")
         method = _api._choice(method, "method", _api.METHODS)
-        tri, edges = _core.triangulate_constrained(self._points, segs, method, _api.thread_count(threads),
-                                                   int(seed), True)
+        tri, edges = _core.triangulate_constrained(self._points, segs, seeds, bool(convex_hull), method,
+                                                   _api.thread_count(threads), int(seed), True)
         self._tri = tri
         self.segments = segs.view(np.int32) if segs.size else np.zeros((0, 2), dtype=np.intc)
         self.edges = edges.view(np.intc)

@@ -240,8 +240,8 @@ void bind_incremental(py::module_& m) {
 void bind_constrained(py::module_& m) {
   m.def(
       "triangulate_constrained",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments,
-         const std::string& method, unsigned threads, std::uint64_t seed, bool canonical) {
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments, const Points& holes,
+         bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical) {
         ridt::Options o;
         o.method = ridt::parse<ridt::Method>(method);
         o.threads = threads;
@@ -250,17 +250,21 @@ void bind_constrained(py::module_& m) {
         o.experiment.time_threads = false;
         const auto pts = as_points(points, "points");
         const std::span<const ridt::VertexId> segs(segments.data(), static_cast<std::size_t>(segments.size()));
+        ridt::Domain domain;
+        domain.convex_hull = convex_hull;
+        const auto h = as_points(holes, "holes");
+        domain.holes.assign(h.begin(), h.end());
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
-          c = ridt::triangulate_constrained(pts, segs, o);
+          c = ridt::triangulate_constrained(pts, segs, o, domain);
         }
         const auto pieces = static_cast<py::ssize_t>(c.edges.size() / 2);
         auto edges = adopt(std::move(c.edges), {pieces, py::ssize_t{2}});
         return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges);
       },
-      py::arg("points"), py::arg("segments"), py::arg("method"), py::arg("threads"), py::arg("seed"),
-      py::arg("canonical"));
+      py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
+      py::arg("threads"), py::arg("seed"), py::arg("canonical"));
 }
 
 // Location in a finished triangulation, and the validator.

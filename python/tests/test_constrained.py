@@ -52,3 +52,26 @@ def test_bad_segments_are_refused():
         ridt.ConstrainedDelaunay(KITE, [(0.0, 2.5)])
     with pytest.raises(ValueError):
         ridt.ConstrainedDelaunay(KITE, [(0, 2)], method="magic")
+
+
+def test_holes_and_the_exterior():
+    square = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    hole = [(4, 4), (6, 4), (6, 6), (4, 6)]
+    rng = np.random.default_rng(2)
+    pts = np.array(square + hole + [(-5, -5), (15, 15)] + rng.uniform(-4, 14, (400, 2)).tolist())
+    loop = lambda first: [(first + k, first + (k + 1) % 4) for k in range(4)]
+    segs = loop(0) + loop(4)
+    whole = ridt.ConstrainedDelaunay(pts, segs)
+    assert whole.check()[0]
+    inner = ridt.ConstrainedDelaunay(pts, segs, holes=[(5, 5)], convex_hull=False)
+    centroids = pts[inner.simplices].mean(axis=1)
+    inside_square = (centroids > 0).all(axis=1) & (centroids < 10).all(axis=1)
+    inside_hole = (centroids > 4).all(axis=1) & (centroids < 6).all(axis=1)
+    assert (inside_square & ~inside_hole).all()
+    all_centroids = pts[whole.simplices].mean(axis=1)
+    wanted = (((all_centroids > 0) & (all_centroids < 10)).all(axis=1)
+              & ~((all_centroids > 4) & (all_centroids < 6)).all(axis=1))
+    assert inner.nsimplex == wanted.sum()
+    assert len(inner.convex_hull) == 0 and len(whole.convex_hull) > 0
+    with pytest.raises(ValueError):
+        ridt.ConstrainedDelaunay(pts, segs, holes=[(np.nan, 1)])

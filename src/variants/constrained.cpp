@@ -222,10 +222,77 @@ class Inserter {
   std::unordered_map<std::uint64_t, std::size_t> segment_of_;  // each segment edge's segment
 };
 
+// Whether triangle t of `out` holds q (inside or on its boundary), exactly.
+bool holds(const ConstrainedTriangulation& out, std::span<const Point> pts, std::size_t t, const Point& q) {
+  const VertexId* v = &out.triangles[3 * t];
+  return orient2d(pts[v[0]], pts[v[1]], q) >= 0 && orient2d(pts[v[1]], pts[v[2]], q) >= 0 &&
+      orient2d(pts[v[2]], pts[v[0]], q) >= 0;
+}
+
+// The triangles outside `domain` removed: from the seeds (each hole's triangle; without the
+// convex hull, every triangle on a hull edge that is not a segment's) across every edge that
+// is not a segment's. The rest renumbered in order, their links to removed ones -1, the
+// segments' edges that no kept triangle has dropped. `holes` are scaled as the points are.
+void carve(ConstrainedTriangulation& out, std::span<const Point> pts, const std::vector<Point>& holes,
+           bool convex_hull) {
+  const std::size_t nt = out.size();
+  std::unordered_set<std::uint64_t> segment;
+  for (std::size_t k = 0; k < out.edges.size(); k += 2) segment.insert(edge_key(out.edges[k], out.edges[k + 1]));
+  auto crossable = [&](std::size_t t, int j) {
+    return !segment.count(edge_key(out.triangles[3 * t + (j + 1) % 3], out.triangles[3 * t + (j + 2) % 3]));
+  };
+  std::vector<std::uint8_t> gone(nt, 0);
+  std::vector<std::size_t> todo;
+  auto seed = [&](std::size_t t) {
+    if (!gone[t]) gone[t] = 1, todo.push_back(t);
+  };
+  for (std::size_t t = 0; t < nt && !convex_hull; ++t)
+    for (int j = 0; j < 3; ++j)
+      if (out.neighbors[3 * t + j] < 0 && crossable(t, j)) seed(t);
+  for (const Point& h : holes)
+    for (std::size_t t = 0; t < nt && std::isfinite(h.x) && std::isfinite(h.y); ++t)
+      if (holds(out, pts, t, h)) {
+        seed(t);
+        break;
+      }
+  while (!todo.empty()) {
+    const std::size_t t = todo.back();
+    todo.pop_back();
+    for (int j = 0; j < 3; ++j)
+      if (const std::int32_t n = out.neighbors[3 * t + j]; n >= 0 && crossable(t, j)) seed(static_cast<std::size_t>(n));
+  }
+  if (std::find(gone.begin(), gone.end(), 1) == gone.end()) return;
+  std::vector<std::int32_t> id(nt, -1);
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < nt; ++t)
+    if (!gone[t]) id[t] = static_cast<std::int32_t>(kept++);
+  std::unordered_set<std::uint64_t> still;
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (gone[t]) continue;
+    const std::size_t to = static_cast<std::size_t>(id[t]);
+    for (int j = 0; j < 3; ++j) {
+      out.triangles[3 * to + j] = out.triangles[3 * t + j];
+      const std::int32_t n = out.neighbors[3 * t + j];
+      out.neighbors[3 * to + j] = n < 0 ? -1 : id[static_cast<std::size_t>(n)];
+      still.insert(edge_key(out.triangles[3 * t + (j + 1) % 3], out.triangles[3 * t + (j + 2) % 3]));
+    }
+  }
+  out.triangles.resize(3 * kept);
+  out.neighbors.resize(3 * kept);
+  out.hull.clear();
+  std::vector<VertexId> edges;
+  for (std::size_t k = 0; k < out.edges.size(); k += 2)
+    if (still.count(edge_key(out.edges[k], out.edges[k + 1])))
+      edges.push_back(out.edges[k]), edges.push_back(out.edges[k + 1]);
+  out.edges = std::move(edges);
+}
+
 }  // namespace
 
 ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
-                                                 const Options& options) {
+                                                 const Options& options, const Domain& domain) {
+  for (const Point& h : domain.holes)
+    if (!std::isfinite(h.x) || !std::isfinite(h.y)) throw InputError("a hole's coordinate is not finite");
   if (segments.size() % 2 != 0)
     throw InputError("a segment list needs an even size (got " + std::to_string(segments.size()) + ")");
   for (std::size_t k = 0; k < segments.size(); ++k)
@@ -241,14 +308,19 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (const Duplicate& d : out.duplicates) kept[d.dropped] = d.kept;
   // The predicates on an exactly scaled copy where the coordinates are huge or tiny.
   std::vector<Point> scaled;
-  if (const int e = detail::exact_scale_exponent(points); e != 0)
-    for (const Point& p : points) scaled.push_back({std::ldexp(p.x, e), std::ldexp(p.y, e)});
+  const int scale = detail::exact_scale_exponent(points);
+  if (scale != 0)
+    for (const Point& p : points) scaled.push_back({std::ldexp(p.x, scale), std::ldexp(p.y, scale)});
   const std::span<const Point> pts = scaled.empty() ? points : std::span<const Point>(scaled);
   if (out.size() > 0) {
     Inserter inserter(pts, out);
     for (std::size_t s = 0; s + 1 < segments.size(); s += 2)
       if (kept[segments[s]] != kept[segments[s + 1]]) inserter.insert(kept[segments[s]], kept[segments[s + 1]], s / 2);
     out.edges = inserter.edges();
+    std::vector<Point> holes = domain.holes;
+    if (!scaled.empty())
+      for (Point& h : holes) h = {std::ldexp(h.x, scale), std::ldexp(h.y, scale)};
+    carve(out, pts, holes, domain.convex_hull);
   }
   if (options.canonical_order) detail::canonicalize(out, options.threads);
   return out;

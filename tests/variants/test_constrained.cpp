@@ -3,6 +3,8 @@
 // duplicates, crossing segments refused, every method giving the same triangles.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -89,6 +91,80 @@ TEST(Constrained, EveryMethodGivesTheSameTriangles) {
     EXPECT_EQ(t.neighbors, first.neighbors) << to_string(m);
     EXPECT_EQ(t.edges, first.edges) << to_string(m);
   }
+}
+
+// A star-shaped loop of k points round (cx, cy), radii in [r0, r1], as segments appended to
+// `segs`; its points appended to `pts`.
+void loop(std::vector<Point>& pts, std::vector<VertexId>& segs, double cx, double cy, double r0, double r1, int k,
+          detail::Rng& rng) {
+  const auto first = static_cast<VertexId>(pts.size());
+  for (int i = 0; i < k; ++i) {
+    const double a = 2 * 3.14159265358979 * i / k, r = r0 + (r1 - r0) * rng.uniform();
+    pts.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+    segs.push_back(first + static_cast<VertexId>(i));
+    segs.push_back(first + static_cast<VertexId>((i + 1) % k));
+  }
+}
+
+// Whether q is inside the loops of `segs`: the parity of their crossings with the ray to +x.
+bool inside(const std::vector<Point>& pts, const std::vector<VertexId>& segs, const Point& q) {
+  bool in = false;
+  for (std::size_t s = 0; s < segs.size(); s += 2) {
+    const Point &a = pts[segs[s]], &b = pts[segs[s + 1]];
+    if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
+  }
+  return in;
+}
+
+TEST(Constrained, TheExteriorAndHolesAreRemoved) {
+  detail::Rng rng(21, 3);
+  std::vector<Point> pts;
+  std::vector<VertexId> segs;
+  loop(pts, segs, 0, 0, 6, 9, 60, rng);  // the outer boundary
+  loop(pts, segs, 0.5, 0.2, 1.5, 2.5, 25, rng);  // a hole round (0.5, 0.2)
+  loop(pts, segs, -3, 3, 0.5, 1, 12, rng);  // a second hole
+  for (int i = 0; i < 3000; ++i) pts.push_back({24 * rng.uniform() - 12, 24 * rng.uniform() - 12});
+  const ConstrainedTriangulation whole = checked(pts, segs);
+  Domain domain;
+  domain.convex_hull = false;
+  domain.holes = {{0.5, 0.2}, {-3, 3}, {100, 100}};  // the last one outside: it removes nothing
+  const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+  // Exactly the triangles of the whole whose centroid the loops enclose (an odd number of them).
+  std::vector<VertexId> expected;
+  for (std::size_t k = 0; k < whole.size(); ++k) {
+    const Point &a = pts[whole.triangles[3 * k]], &b = pts[whole.triangles[3 * k + 1]],
+                &c = pts[whole.triangles[3 * k + 2]];
+    if (inside(pts, segs, {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3}))
+      expected.insert(expected.end(), &whole.triangles[3 * k], &whole.triangles[3 * k] + 3);
+  }
+  ASSERT_GT(expected.size(), 3000u);
+  EXPECT_EQ(canonical(t.triangles), canonical(expected));
+  EXPECT_TRUE(t.hull.empty());
+  // The links: every edge's two triangles name each other, -1 exactly on the domain's boundary,
+  // which is made of segments only.
+  std::set<std::pair<VertexId, VertexId>> pieces;
+  for (std::size_t k = 0; k < t.edges.size(); k += 2) pieces.insert({t.edges[k], t.edges[k + 1]});
+  EXPECT_EQ(pieces.size(), segs.size() / 2);  // every segment borders the domain
+  for (std::size_t k = 0; k < t.size(); ++k)
+    for (int j = 0; j < 3; ++j) {
+      const VertexId a = t.triangles[3 * k + (j + 1) % 3], b = t.triangles[3 * k + (j + 2) % 3];
+      const std::int32_t n = t.neighbors[3 * k + j];
+      if (n < 0) {
+        EXPECT_TRUE(pieces.count({std::min(a, b), std::max(a, b)})) << a << "-" << b;
+        continue;
+      }
+      bool back = false;
+      for (int i = 0; i < 3; ++i) back |= t.neighbors[3 * std::size_t(n) + i] == static_cast<std::int32_t>(k);
+      EXPECT_TRUE(back) << k;
+    }
+  // The convex hull kept, holes only.
+  domain.convex_hull = true;
+  const ConstrainedTriangulation holed = triangulate_constrained(pts, segs, {}, domain);
+  EXPECT_LT(holed.size(), whole.size());
+  EXPECT_GT(holed.size(), t.size());
+  EXPECT_EQ(triangulate_constrained(pts, segs, {}, Domain{}).triangles, whole.triangles);
+  domain.holes = {{std::nan(""), 0}};
+  EXPECT_THROW(triangulate_constrained(pts, segs, {}, domain), InputError);
 }
 
 }  // namespace
