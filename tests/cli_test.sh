@@ -282,5 +282,40 @@ stderr_has "not an index of parts"
 printf 'ridt parts 1\nnothing.ele\n' >"$dir/bad.parts"
 expect 2 "missing part" -- "$ridt" check "$dir/uniform.bin" "$dir/bad.parts"
 
+# ridt mesh: a .poly in, Triangle's .ele, .node and .edge out; what it cannot do refused, nothing written.
+printf '8 2 0 1\n1 0 0 1\n2 10 0 1\n3 10 10 1\n4 0 10 1\n5 4 4 1\n6 6 4 1\n7 6 6 1\n8 4 6 1\n8 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n1\n1 5 5\n' >"$dir/sq.poly"
+expect 0 "mesh" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sq.ele"
+[ "$(head -1 "$dir/sq.ele")" = "8 3 0" ] && pass || fail "the holed square is not 8 triangles"
+[ "$(head -1 "$dir/sq.node")" = "8 2 0 0" ] && pass || fail "sq.node"
+[ "$(head -1 "$dir/sq.edge")" = "8 1" ] && pass || fail "sq.edge"
+grep -q '^1 ' "$dir/sq.ele" && pass || fail ".ele not numbered from 1 as its .poly"
+expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
+sed -n 2p "$dir/z.ele" | grep -q '^0 ' && pass || fail "-z: .ele not numbered from 0"
+# An L: its notch is outside the segments (4 triangles), inside the convex hull (5).
+printf '6 2
+0 0 0
+1 2 0
+2 2 1
+3 1 1
+4 1 2
+5 0 2
+6 0
+0 0 1
+1 1 2
+2 2 3
+3 3 4
+4 4 5
+5 5 0
+0
+' >"$dir/l.poly"
+expect 0 "mesh L" -- "$ridt" mesh "$dir/l.poly" -o "$dir/l.ele"
+[ "$(head -1 "$dir/l.ele")" = "4 3 0" ] && pass || fail "the L is not 4 triangles"
+expect 0 "mesh L -c" -- "$ridt" mesh "$dir/l.poly" -o "$dir/lc.ele" --convex-hull
+[ "$(head -1 "$dir/lc.ele")" = "5 3 0" ] && pass || fail "the L's convex hull is not 5 triangles"
+expect 2 "mesh quality" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q.ele" --switches pq30
+stderr_has "not supported yet"; absent "$dir/q.ele"; absent "$dir/q.node"
+expect 2 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg"
+absent "$dir/m.svg"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

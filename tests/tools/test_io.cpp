@@ -523,6 +523,57 @@ TEST_F(IoTest, WriteOffAndObj) {
   EXPECT_EQ(read_file("t.obj"), "v 0 0 0\nv 0.1 -0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0\nf 1 2 3\nf 1 3 4\n");
 }
 
+// A square with a square hole, numbered from 1, with markers and comments.
+const char* const kHoledSquare =
+    "# outer, then inner\n8 2 0 1\n1 0 0 1\n2 10 0 1\n3 10 10 1\n4 0 10 1\n5 4 4 1\n6 6 4 1\n7 6 6 1\n8 4 6 1\n"
+    "8 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n1\n1 5 5\n";
+
+TEST_F(IoTest, ReadPoly) {
+  write_file("sq.poly", kHoledSquare);
+  const Pslg g = read_pslg(path("sq.poly"));
+  EXPECT_EQ(g.points.size(), 8u);
+  EXPECT_EQ(g.points[6], (Point{6, 6}));
+  EXPECT_EQ(g.first_index, 1);
+  EXPECT_EQ(g.segments, (std::vector<VertexId>{0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4}));
+  EXPECT_EQ(g.holes, (std::vector<Point>{{5, 5}}));
+  EXPECT_TRUE(g.regions.empty());
+  // Its points as a point file too.
+  EXPECT_EQ(read_points(path("sq.poly")).points.size(), 8u);
+  // Vertices in the .node beside it, regions after the holes.
+  write_file("n.node", "3 2\n0 0 0\n1 1 0\n2 0 1\n");
+  write_file("n.poly", "0 2 0 0\n1 0\n0 0 1\n0\n1\n0 0.2 0.2 7 0.5\n");
+  const Pslg n = read_pslg(path("n.poly"));
+  EXPECT_EQ(n.points.size(), 3u);
+  EXPECT_EQ(n.first_index, 0);
+  EXPECT_EQ(n.segments, (std::vector<VertexId>{0, 1}));
+  ASSERT_EQ(n.regions.size(), 1u);
+  EXPECT_EQ(n.regions[0], (std::array<double, 4>{0.2, 0.2, 7, 0.5}));
+}
+
+TEST_F(IoTest, BadPolyFiles) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 3\n0\n", "segment end 3 is not a vertex"},
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n", "the file ends before its 2 segments"},
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n1 0\n1 0 1\n0\n", "expected segment index 0"},
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n0 0\n", "no hole count"},
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n0 0\n1\n0 x 1\n", "is not a number"},
+      {"3 3\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n", "dimension must be 2"},
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n0\nextra\n", "unexpected line"},
+      {"4 2\n0 0 0\n1 1 0\n2 0 1\n", "the file ends before its 4 vertices"},
+  };
+  for (const auto& [text, wanted] : cases) {
+    SCOPED_TRACE(text);
+    write_file("bad.poly", text);
+    EXPECT_TRUE(Has(error_of([&] { read_pslg(path("bad.poly")); }), wanted));
+  }
+  EXPECT_THROW(read_pslg(path("sq.node")), IoError);  // not a .poly
+}
+
+TEST_F(IoTest, WriteEdges) {
+  write_edges(path("e.edge"), std::vector<VertexId>{0, 1, 2, 5}, 1);
+  EXPECT_EQ(read_file("e.edge"), "2 1\n1 1 2 1\n2 3 6 1\n");
+}
+
 TEST_F(IoTest, WritePly) {
   Square s;
   s.points[1] = {0.1, -0.0};

@@ -5,6 +5,8 @@
 namespace ridt::io::detail {
 
 void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.cpp
+Pslg read_poly(const std::string& path, std::string_view text);  // io_poly.cpp
+PointFile read_poly_points(const std::string& path, std::string_view text);
 
 namespace {
 
@@ -52,6 +54,7 @@ void bin_out(const std::string& path, const TriangulationOut& o) {
 // clang-format off
 // extension, description,                 points in,        triangles in,        points out,        triangulation out, Voronoi out,        values out
 constexpr Format kFormats[] = {
+    {".poly", "Triangle's planar straight-line graph", read_poly_points, nullptr, nullptr, nullptr, nullptr, nullptr, read_poly},
     {".node", "Triangle's nodes",           read_node,        nullptr,             write_node,        nullptr,   nullptr,            nullptr},
     {".ele", "Triangle's elements",         nullptr,          read_ele,            nullptr,           ele_out,   nullptr,            nullptr},
     {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr},

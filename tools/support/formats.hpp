@@ -44,10 +44,11 @@ struct Format {
   std::string_view description;
   PointFile (*read_points)(const std::string& path, std::string_view data);
   std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index);
-  void (*write_points)(Writer& out, std::span<const Point> points);
+  void (*write_points)(Writer& out, std::span<const Point> points, int first_index);
   void (*write_triangulation)(const std::string& path, const TriangulationOut& out);
   void (*write_voronoi)(Writer& out, const VoronoiOut& v);
   void (*write_values)(Writer& out, const ValuesOut& v);
+  Pslg (*read_pslg)(const std::string& path, std::string_view data);  ///< points, segments, holes
 };
 
 /// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws

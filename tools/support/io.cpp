@@ -24,10 +24,10 @@ PointFile parse_points(std::string_view data, const std::string& name) {
   return format_of(name, &Format::read_points, "point input").read_points(name, data);
 }
 
-void write_points(const std::string& path, std::span<const Point> points) {
+void write_points(const std::string& path, std::span<const Point> points, int first_index) {
   const Format& f = format_of(path, &Format::write_points, "point output");
   Writer out(path);
-  f.write_points(out, points);
+  f.write_points(out, points, first_index);
   out.commit();
 }
 
@@ -71,6 +71,11 @@ void check_triangulation_extension(const std::string& path) { format_of(path, &F
 void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
                          int first_index) {
   format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index});
+}
+
+Pslg read_pslg(const std::string& path) {
+  const Format& f = format_of(path, &Format::read_pslg, "planar straight-line graph input");
+  return f.read_pslg(path, read_file_whole(path));
 }
 
 void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,

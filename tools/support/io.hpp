@@ -10,6 +10,7 @@
 //             name beside the target and renamed, so a failure never leaves half a file.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -53,6 +54,24 @@ class PointFile {
   std::shared_ptr<const void> owner_;
 };
 
+/// A planar straight-line graph (Triangle's .poly): points, segments between them (pairs of
+/// 0-based indices), seeds of holes, regions (x, y, attribute, maximum area) as read.
+struct Pslg {
+  std::vector<Point> points;
+  std::vector<VertexId> segments;
+  std::vector<Point> holes;
+  std::vector<std::array<double, 4>> regions;
+  int first_index = 0;  ///< the file's numbering (0 or 1), for the files written from it
+};
+
+/// Reads a .poly file (its points from the .node file beside it where it lists none); throws
+/// IoError on malformed content, an index out of range, a count that does not match.
+Pslg read_pslg(const std::string& path);
+
+/// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
+/// `first_index`, each with boundary marker 1 (they are segments).
+void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index);
+
 /// The extensions of each kind of file, for a help text ("a, b or text").
 std::string point_formats();
 std::string triangle_formats();
@@ -69,7 +88,7 @@ PointFile read_points(const std::string& path);
 PointFile parse_points(std::string_view data, const std::string& name);
 
 /// Writes points (format by extension).
-void write_points(const std::string& path, std::span<const Point> points);
+void write_points(const std::string& path, std::span<const Point> points, int first_index = 0);
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;
 /// `first_index` is the numbering of .ele and text files.

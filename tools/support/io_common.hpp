@@ -287,12 +287,12 @@ inline void check_indices(const std::string& path, std::span<const VertexId> ids
 // Text (io_text.cpp): one point or triangle a line.
 PointFile read_text_points(const std::string& path, std::string_view text);
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index);
-void write_text_points(Writer& out, std::span<const Point> points);
+void write_text_points(Writer& out, std::span<const Point> points, int first_index);
 
 // Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
 PointFile read_node(const std::string& path, std::string_view text);
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index);
-void write_node(Writer& out, std::span<const Point> points);
+void write_node(Writer& out, std::span<const Point> points, int first_index);
 void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index);
 void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index);
 
@@ -302,7 +302,7 @@ PointFile read_bin_points(const std::string& path, std::string_view data);
 /// (not a regular file, a big-endian machine): then read it. Throws IoError as the reader.
 std::optional<PointFile> map_bin_points(const std::string& path);
 std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data);
-void write_bin_points(Writer& out, std::span<const Point> points);
+void write_bin_points(Writer& out, std::span<const Point> points, int first_index);
 void write_bin_triangles(Writer& out, std::span<const VertexId> triangles);
 
 // Surface meshes for viewers (io_mesh.cpp): .off (0-based), .obj (1-based), z = 0.

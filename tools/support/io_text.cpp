@@ -43,7 +43,7 @@ std::vector<VertexId> read_text_triangles(const std::string& path, std::string_v
   return out;
 }
 
-void write_text_points(Writer& out, std::span<const Point> points) {
+void write_text_points(Writer& out, std::span<const Point> points, int /*first_index*/) {
   for (const Point& p : points) {
     out.put_double(p.x);
     out.put(' ');

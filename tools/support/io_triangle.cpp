@@ -164,11 +164,11 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
   return out;
 }
 
-void write_node(Writer& out, std::span<const Point> points) {
+void write_node(Writer& out, std::span<const Point> points, int first_index) {
   out.put_int(static_cast<std::int64_t>(points.size()));
   out.put(" 2 0 0\n");
   for (std::size_t i = 0; i < points.size(); ++i) {
-    out.put_int(static_cast<std::int64_t>(i));
+    out.put_int(static_cast<std::int64_t>(i) + first_index);
     out.put(' ');
     out.put_double(points[i].x);
     out.put(' ');

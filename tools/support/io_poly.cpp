@@ -1,0 +1,137 @@
+// Triangle's .poly (a planar straight-line graph): "n 2 attributes markers" and n vertices
+// (or n = 0 and the vertices in the .node file beside it), "m markers" and m segments
+// "i a b [marker]", "h" and h holes "i x y", optionally "r" and r regions
+// "i x y attribute max_area"; '#' starts a comment. Indices from the vertices' first (0 or 1).
+// And Triangle's .edge: "m 1", then "i a b 1".
+#include "formats.hpp"
+
+namespace ridt::io::detail {
+namespace {
+
+struct Line {
+  std::size_t number;
+  std::string_view text;
+};
+
+// The fields of line `l`: at least `least`, at most `most`.
+std::vector<std::string_view> fields(const std::string& path, const Line& l, std::size_t least, std::size_t most,
+                                     const char* form) {
+  Fields f{l.text, false};
+  std::vector<std::string_view> out;
+  for (std::string_view x; f.next(x);) out.push_back(x);
+  if (out.size() < least || out.size() > most)
+    fail_line(path, l.number, std::string("expected ") + form + ", got " + quoted(l.text));
+  return out;
+}
+
+// The next `count` lines from `at`, or an error naming what is missing.
+void need(const std::string& path, const std::vector<Line>& lines, std::size_t at, std::int64_t count,
+          const char* what) {
+  if (count < 0) fail_file(path, std::string("negative number of ") + what);
+  if (lines.size() - at < static_cast<std::size_t>(count))
+    fail_file(path, "the file ends before its " + std::to_string(count) + " " + what);
+}
+
+std::size_t read_vertices(const std::string& path, std::string_view text, const std::vector<Line>& lines, Pslg& g) {
+  const auto h = fields(path, lines[0], 2, 4, "a header \"vertices 2 [attributes [markers]]\"");
+  const std::int64_t n = integer(path, lines[0].number, h[0], "number of vertices");
+  if (integer(path, lines[0].number, h[1], "dimension") != 2) fail_line(path, lines[0].number, "dimension must be 2");
+  if (n == 0) {  // the vertices in the .node file beside it
+    const std::string node = (fs::path(path).replace_extension(".node")).string();
+    PointFile p = read_node(node, read_file_whole(node));
+    g.points.assign(p.points.begin(), p.points.end());
+    g.first_index = p.first_index;
+    return 1;
+  }
+  need(path, lines, 1, n, "vertices");
+  // The text up to the last vertex line is a .node file, line numbers and all.
+  const Line& last = lines[static_cast<std::size_t>(n)];
+  const auto size = static_cast<std::size_t>(last.text.data() + last.text.size() - text.data());
+  PointFile p = read_node(path, text.substr(0, size));
+  g.points.assign(p.points.begin(), p.points.end());
+  g.first_index = p.first_index;
+  return 1 + static_cast<std::size_t>(n);
+}
+
+std::size_t read_segments(const std::string& path, const std::vector<Line>& lines, std::size_t at, Pslg& g) {
+  if (at >= lines.size()) fail_file(path, "no segment header \"segments [markers]\"");
+  const auto h = fields(path, lines[at], 1, 2, "a segment header \"segments [markers]\"");
+  const std::int64_t m = integer(path, lines[at].number, h[0], "number of segments");
+  need(path, lines, at + 1, m, "segments");
+  for (std::int64_t k = 0; k < m; ++k) {
+    const Line& l = lines[at + 1 + static_cast<std::size_t>(k)];
+    const auto f = fields(path, l, 3, 4, "\"index a b [marker]\"");
+    if (integer(path, l.number, f[0], "segment index") != g.first_index + k)
+      fail_line(path, l.number, "expected segment index " + std::to_string(g.first_index + k));
+    for (int e = 1; e <= 2; ++e) {
+      const VertexId v = vertex(path, l.number, f[static_cast<std::size_t>(e)], g.first_index);
+      if (v >= g.points.size())
+        fail_line(path, l.number, "segment end " + std::string(f[static_cast<std::size_t>(e)]) + " is not a vertex");
+      g.segments.push_back(v);
+    }
+  }
+  return at + 1 + static_cast<std::size_t>(m);
+}
+
+// Holes ("i x y") or regions ("i x y attribute max_area") after their count at `at`.
+std::size_t read_seeds(const std::string& path, const std::vector<Line>& lines, std::size_t at, bool regions, Pslg& g) {
+  const char* what = regions ? "regions" : "holes";
+  if (at >= lines.size()) {
+    if (regions) return at;  // optional
+    fail_file(path, "no hole count");
+  }
+  const std::int64_t count = integer(path, lines[at].number, fields(path, lines[at], 1, 1, "a count")[0], what);
+  need(path, lines, at + 1, count, what);
+  for (std::int64_t k = 0; k < count; ++k) {
+    const Line& l = lines[at + 1 + static_cast<std::size_t>(k)];
+    const auto f = fields(path, l, regions ? 4 : 3, regions ? 5 : 3,
+                          regions ? "\"index x y attribute [max_area]\"" : "\"index x y\"");
+    std::array<double, 4> v{0, 0, 0, -1};
+    for (std::size_t c = 1; c < f.size(); ++c)
+      v[c - 1] = coordinate(path, l.number, f[c], [&] { return not_a_number(f[c]); });
+    if (regions)
+      g.regions.push_back(v);
+    else
+      g.holes.push_back({v[0], v[1]});
+  }
+  return at + 1 + static_cast<std::size_t>(count);
+}
+
+}  // namespace
+
+Pslg read_poly(const std::string& path, std::string_view text) {
+  std::vector<Line> lines;
+  for_each_line(text, [&](std::size_t number, std::string_view line) { lines.push_back({number, line}); });
+  if (lines.empty()) fail_file(path, "no header line \"vertices 2 [attributes [markers]]\"");
+  Pslg g;
+  std::size_t at = read_vertices(path, text, lines, g);
+  at = read_segments(path, lines, at, g);
+  at = read_seeds(path, lines, at, false, g);
+  at = read_seeds(path, lines, at, true, g);
+  if (at != lines.size()) fail_line(path, lines[at].number, "unexpected line " + quoted(lines[at].text));
+  return g;
+}
+
+PointFile read_poly_points(const std::string& path, std::string_view text) {
+  Pslg g = read_poly(path, text);
+  return PointFile(std::move(g.points), g.first_index);
+}
+
+}  // namespace ridt::io::detail
+
+namespace ridt::io {
+
+void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index) {
+  detail::Writer out(path);
+  out.put_int(static_cast<std::int64_t>(edges.size() / 2));
+  out.put(" 1\n");
+  for (std::size_t k = 0; k + 1 < edges.size(); k += 2) {
+    out.put_int(static_cast<std::int64_t>(k / 2) + first_index);
+    for (int e = 0; e < 2; ++e)
+      out.put(' '), out.put_int(static_cast<std::int64_t>(edges[k + static_cast<std::size_t>(e)]) + first_index);
+    out.put(" 1\n");
+  }
+  out.commit();
+}
+
+}  // namespace ridt::io
