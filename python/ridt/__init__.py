@@ -19,6 +19,7 @@ from ._delaunay import Delaunay, DegenerateInputWarning
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
+from . import triangle
 
 __version__ = "0.1.0"
 

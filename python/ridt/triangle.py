@@ -1,0 +1,81 @@
+"""The `triangle` package's call, on ridt: ``from ridt import triangle`` in place of ``import
+triangle``.
+
+    t = triangle.triangulate(dict(vertices=pts, segments=segs, holes=holes), "p")
+    t["vertices"], t["triangles"], t["segments"]
+
+Switches taken: ``p`` (the input is a planar straight-line graph: its segments become edges, holes
+and the exterior are removed), ``c`` (keep the convex hull), ``e`` (also return every edge),
+``n`` (also return the neighbours), ``z`` (indices from 0: always so here) and ``Q``/``V`` (quiet,
+verbose: ignored). Quality meshing (``q``), area bounds (``a``, ``r``), Steiner points and the
+others are refused with ValueError: ridt does not do them yet. Without ``p`` the result is the
+Delaunay triangulation of the vertices. Every triangle is counter-clockwise; indices are 0-based.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Dict
+
+import numpy as np
+
+from . import _api
+from ._constrained import ConstrainedDelaunay
+
+_TAKEN = set("pcenzQV")
+
+
+def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
+    """Triangulates `tri` (a dict with 'vertices' and optionally 'segments', 'holes',
+    'vertex_markers', 'segment_markers') as Triangle's switches `opts` say. Returns a dict:
+    'vertices', 'triangles', and as the input and switches ask 'vertex_markers', 'segments',
+    'segment_markers', 'holes', 'edges', 'edge_markers', 'neighbors'."""
+    if not isinstance(opts, str):
+        raise TypeError("opts must be a string of Triangle's switches")
+    for c in opts:
+        if c not in _TAKEN:
+            raise ValueError(f"switch '{c}' is not supported (ridt takes {''.join(sorted(_TAKEN))})")
+    if "vertices" not in tri:
+        raise ValueError("tri needs 'vertices'")
+    pts = _api.as_points(tri["vertices"], "vertices", "ridt.triangle")
+    pslg = "p" in opts
+    segments = np.asarray(tri.get("segments", np.zeros((0, 2), dtype=np.intc))) if pslg else np.zeros((0, 2))
+    holes = tri.get("holes") if pslg else None
+    cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
+                              holes=holes, convex_hull="c" in opts or not pslg)
+    out: Dict[str, np.ndarray] = {"vertices": pts.copy(), "triangles": cdt.simplices.copy()}
+    boundary = _boundary_edges(cdt)
+    markers = np.zeros(len(pts), dtype=np.intc)
+    markers[boundary.ravel()] = 1
+    if "vertex_markers" in tri:
+        given = np.asarray(tri["vertex_markers"]).reshape(-1)
+        markers = np.where(given != 0, given, markers).astype(np.intc)
+    out["vertex_markers"] = markers.reshape(-1, 1)
+    if pslg:
+        out["segments"] = cdt.edges.copy()
+        out["segment_markers"] = np.ones((len(cdt.edges), 1), dtype=np.intc)
+        if holes is not None:
+            out["holes"] = np.asarray(holes, dtype=float).reshape(-1, 2)
+    if "e" in opts:
+        out["edges"], out["edge_markers"] = _edges(cdt, boundary)
+    if "n" in opts:
+        out["neighbors"] = cdt.neighbors.copy()
+    return out
+
+
+def _boundary_edges(cdt: ConstrainedDelaunay) -> np.ndarray:
+    """The edges with no triangle on one side, (a, b) with a < b."""
+    t, n = cdt.simplices, cdt.neighbors
+    rows, cols = np.nonzero(n < 0)
+    a, b = t[rows, (cols + 1) % 3], t[rows, (cols + 2) % 3]
+    return np.sort(np.stack([a, b], axis=1), axis=1).astype(np.intc)
+
+
+def _edges(cdt: ConstrainedDelaunay, boundary: np.ndarray):
+    """Every edge once, (a, b) with a < b, sorted, and 1 for those on the boundary or a segment."""
+    t = cdt.simplices
+    e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
+    e = np.unique(np.sort(e, axis=1), axis=0).astype(np.intc)
+    marked = np.concatenate([boundary, cdt.edges]) if len(cdt.edges) else boundary
+    key = lambda x: x[:, 0].astype(np.int64) * (1 << 32) + x[:, 1]
+    markers = np.isin(key(e), key(marked)).astype(np.intc).reshape(-1, 1)
+    return e, markers

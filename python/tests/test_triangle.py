@@ -1,0 +1,61 @@
+"""ridt.triangle: the `triangle` package's call. Results checked with the exact validator, the
+exterior and holes removed as the switches say, unsupported switches refused."""
+
+import numpy as np
+import pytest
+
+import ridt
+from conftest import triangle_set
+from ridt import triangle
+
+SQUARE = [(0, 0), (10, 0), (10, 10), (0, 10)]
+HOLE = [(4, 4), (6, 4), (6, 6), (4, 6)]
+
+
+def loop(first, n=4):
+    return [(first + k, first + (k + 1) % n) for k in range(n)]
+
+
+def test_points_only_is_delaunay():
+    rng = np.random.default_rng(1)
+    pts = rng.random((300, 2))
+    t = triangle.triangulate({"vertices": pts})
+    assert triangle_set(t["triangles"]) == triangle_set(ridt.Delaunay(pts).simplices)
+    assert set(t) == {"vertices", "triangles", "vertex_markers"}
+    assert t["vertex_markers"].shape == (300, 1)
+    assert t["vertex_markers"].sum() == len(ridt.triangulate(pts).hull)
+
+
+def test_a_square_with_a_hole():
+    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4)),
+           "holes": [[5, 5]]}
+    t = triangle.triangulate(tri, "p")
+    assert len(t["triangles"]) == 8
+    centroids = t["vertices"][t["triangles"]].mean(axis=1)
+    assert (~((centroids > 4) & (centroids < 6)).all(axis=1)).all()
+    assert sorted(map(tuple, t["segments"])) == sorted(tuple(sorted(s)) for s in loop(0) + loop(4))
+    assert (t["segment_markers"] == 1).all() and t["holes"].tolist() == [[5.0, 5.0]]
+    assert (t["vertex_markers"] == 1).all()
+    t = triangle.triangulate(tri, "pen")
+    assert len(t["edges"]) == 16 and t["edge_markers"].sum() == 8  # the 8 segments bound the ring
+    assert t["neighbors"].shape == (8, 3) and (t["neighbors"] == -1).sum() == 8
+
+
+def test_the_convex_hull_switch():
+    ell = np.array([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)], dtype=float)
+    tri = {"vertices": ell, "segments": loop(0, 6)}
+    assert len(triangle.triangulate(tri, "p")["triangles"]) == 4
+    whole = triangle.triangulate(tri, "pc")
+    assert len(whole["triangles"]) == 5
+    assert ridt.check(ell, whole["triangles"], segments=loop(0, 6))[0]
+
+
+def test_refused():
+    with pytest.raises(ValueError, match="'q' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "pq30")
+    with pytest.raises(ValueError, match="'a' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "a0.1")
+    with pytest.raises(ValueError, match="needs 'vertices'"):
+        triangle.triangulate({}, "")
+    with pytest.raises(TypeError):
+        triangle.triangulate({"vertices": SQUARE}, 3)
