@@ -40,5 +40,6 @@ __all__ = [
     "set_memory_cache_limit",
     "Voronoi",
     "griddata",
+    "triangle",
     "triangulate",
 ]
