@@ -1,6 +1,7 @@
-// Fuzz target: the point and triangle readers, every format.
+// Fuzz target: the point, triangle and graph readers, every format.
 //
-// The first byte picks the format, the rest is the file's content. A reader must either
+// The first byte picks the format (0xff: a .poly, then triangulated with its segments), the
+// rest is the file's content. A reader must either
 // throw IoError or return what it promises: finite points that survive writing and reading
 // back bit for bit in every point format, and whole triangles, which the exact validator then
 // judges against a small point set without failing. Any other exception, a crash or a
@@ -19,6 +20,7 @@
 
 #include "io.hpp"
 #include "ridt/check.hpp"
+#include "ridt/constrained.hpp"
 
 namespace {
 
@@ -90,11 +92,41 @@ void triangles(std::string_view data, const char* name, int first_index) {
     finding("the validator's verdict does not add up: " + verdict.message);
 }
 
+// A .poly: either IoError, or finite points and holes, segments between them, and then a
+// constrained triangulation that the exact validator accepts (or crossing segments refused).
+void graph(std::string_view data) {
+  io::Pslg g;
+  try {
+    g = io::parse_pslg(data, "in.poly");
+  } catch (const io::IoError&) {
+    return;
+  }
+  for (const Point& p : g.points)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) finding("a vertex is not finite");
+  for (const Point& h : g.holes)
+    if (!std::isfinite(h.x) || !std::isfinite(h.y)) finding("a hole is not finite");
+  if (g.segments.size() % 2 != 0) finding("a partial segment");
+  for (const VertexId v : g.segments)
+    if (v >= g.points.size()) finding("a segment's end is not a vertex");
+  if (g.points.size() > 2000) return;
+  try {
+    const ridt::ConstrainedTriangulation t = ridt::triangulate_constrained(g.points, g.segments);
+    const ridt::CheckResult verdict = ridt::check_constrained(g.points, t.triangles, g.segments);
+    if (!verdict.valid) finding("a constrained triangulation the validator rejects: " + verdict.message);
+    ridt::Domain domain;
+    domain.convex_hull = false;
+    domain.holes = g.holes;
+    const ridt::ConstrainedTriangulation carved = ridt::triangulate_constrained(g.points, g.segments, {}, domain);
+    if (carved.size() > t.size()) finding("carving added triangles");
+  } catch (const ridt::InputError&) {}
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view data(reinterpret_cast<const char*>(bytes) + 1, size - 1);
+  if (bytes[0] == 0xff) return graph(data), 0;  // the other first bytes pick as they always did
   switch (bytes[0] % 7) {
     case 0:
       points(data, "in.txt");

@@ -2,10 +2,10 @@
 # Every test: the Release build (with CGAL comparisons), the same suite under AddressSanitizer
 # and UndefinedBehaviorSanitizer (the adversarial sets at a tenth of their size there), the
 # threaded tests under ThreadSanitizer, ridt-mpi on 1 to 8 ranks, the Python package (pip, wheel, pytest), a consumer project that uses find_package(ridt), 10^7
-# points through the serial and every threaded method (scripts/large.sh), and the libFuzzer
-# targets built. Both suites replay the fuzz corpora with a fixed number of seeded mutations
-# (fuzz/replay.cpp), so every run of a commit tests the same inputs; the open-ended search for
-# new faults is scripts/fuzz.sh SECONDS.
+# points through the serial and every threaded method (scripts/large.sh). Both suites replay the
+# fuzz corpora with a fixed number of seeded mutations (fuzz/replay.cpp), so every run of a
+# commit tests the same inputs; the open-ended search for new faults, with the libFuzzer build
+# of the same targets (clang), is scripts/fuzz.sh SECONDS.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh test
@@ -25,12 +25,13 @@ cmake --build build -j "$jobs"
 [ -x build/ridt-mpi ] || { echo "ridt-mpi was not built: is MPI installed (scripts/deps.sh test)?" >&2; exit 1; }
 ctest --test-dir build -j "$jobs" --output-on-failure --no-tests=error
 
-echo "== Python: pip install and pip wheel into a virtual environment, then the tests on what pip installed"
+echo "== Python: pip wheel, and the wheel installed into a virtual environment; the tests on what pip installed"
 # (ctest above ran the same tests on the package in the build tree.)
 rm -rf build/venv build/wheels
 /usr/bin/python3 -m venv --system-site-packages build/venv
-build/venv/bin/pip install -q --no-build-isolation --no-deps --no-index .
+# The wheel is built once (what "pip install ." builds too) and installed: one compile, not two.
 build/venv/bin/pip wheel -q --no-build-isolation --no-deps --no-index -w build/wheels .
+build/venv/bin/pip install -q --no-deps --no-index build/wheels/ridt-*.whl
 ls build/wheels/ridt-*.whl
 (cd python/tests && ../../build/venv/bin/python -c "import ridt, sys; assert 'venv' in ridt.__file__, ridt.__file__" &&
   ../../build/venv/bin/python -m pytest -q -p no:cacheprovider .)
@@ -67,6 +68,4 @@ build/consumer/consumer
 echo "== 10^7 uniform points: serial and every threaded method, each output validated"
 scripts/large.sh 10000000 2 quick  # fails unless every output is valid
 
-echo "== libFuzzer targets (clang): built, for scripts/fuzz.sh"
-scripts/fuzz.sh --build-only
 echo "all tests passed"

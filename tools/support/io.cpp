@@ -74,8 +74,12 @@ void write_triangulation(const std::string& path, std::span<const Point> points,
 }
 
 Pslg read_pslg(const std::string& path) {
-  const Format& f = format_of(path, &Format::read_pslg, "planar straight-line graph input");
-  return f.read_pslg(path, read_file_whole(path));
+  format_of(path, &Format::read_pslg, "planar straight-line graph input");  // before reading it
+  return parse_pslg(read_file_whole(path), path);
+}
+
+Pslg parse_pslg(std::string_view data, const std::string& name) {
+  return format_of(name, &Format::read_pslg, "planar straight-line graph input").read_pslg(name, data);
 }
 
 void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,

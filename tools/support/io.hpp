@@ -68,6 +68,9 @@ struct Pslg {
 /// IoError on malformed content, an index out of range, a count that does not match.
 Pslg read_pslg(const std::string& path);
 
+/// The same for a file's content already in memory; `name` picks the format by its extension.
+Pslg parse_pslg(std::string_view data, const std::string& name);
+
 /// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
 /// `first_index`, each with boundary marker 1 (they are segments).
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index);
