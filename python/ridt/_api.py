@@ -50,6 +50,21 @@ def as_points(points: Any, name: str = "points", what: str = "ridt") -> np.ndarr
     return a
 
 
+def as_segments(segments: Any) -> np.ndarray:
+    """`segments` as a C-ordered uint32 array of shape (nsegments, 2): TypeError unless they are
+    integers, ValueError for another shape. Whether they name points is the caller's to say."""
+    s = np.asarray(segments)
+    if s.size == 0:
+        return np.zeros((0, 2), dtype=np.uint32)
+    if s.dtype.kind not in "iu":
+        raise TypeError(f"segments must hold integers (point indices), not {s.dtype}")
+    if s.ndim != 2 or s.shape[1] != 2:
+        raise ValueError(f"segments must have shape (nsegments, 2); got shape {s.shape}")
+    if s.min() < 0:
+        raise ValueError("segments must hold point indices, not negative numbers")
+    return np.ascontiguousarray(s, dtype=np.uint32)
+
+
 def thread_count(threads: Any) -> int:
     """The library's thread count: 0 (or -1, scipy's `workers` convention) means every core."""
     if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
@@ -191,13 +206,8 @@ def check(points: Any, triangles: Any, furthest_site: bool = False, segments: An
     if segments is not None:
         if furthest_site:
             raise ValueError("segments constrain a Delaunay triangulation, not a farthest-point one")
-        s = np.asarray(segments)
-        if s.dtype.kind not in "iu":
-            raise TypeError(f"segments must hold integers, not {s.dtype}")
-        if s.ndim != 2 or s.shape[1] != 2:
-            raise ValueError(f"segments must have shape (nsegments, 2); got shape {s.shape}")
-        if s.size and (s.min() < 0 or s.max() >= pts.shape[0]):
+        segs = as_segments(segments)
+        if segs.size and segs.max() >= pts.shape[0]:
             return False, f"a segment's end is not one of the {pts.shape[0]} points"
-        segs = np.ascontiguousarray(s, dtype=np.uint32)
     valid, message, _ = _core.check(pts, t, bool(furthest_site), segs)
     return bool(valid), message

@@ -8,21 +8,7 @@ from typing import Any, Tuple
 import numpy as np
 
 from . import _api, _core
-
-
-def as_segments(segments: Any, npoints: int) -> np.ndarray:
-    """`segments` as a C-ordered uint32 array of shape (nsegments, 2), every index a point's."""
-    s = np.asarray(segments)
-    if s.size == 0:
-        return np.zeros((0, 2), dtype=np.uint32)
-    if s.dtype.kind not in "iu":
-        raise TypeError(f"segments must hold integers (point indices), not {s.dtype}")
-    if s.ndim != 2 or s.shape[1] != 2:
-        raise ValueError(f"segments must have shape (nsegments, 2); got shape {s.shape}")
-    if s.min() < 0 or s.max() >= npoints:
-        bad = int(np.flatnonzero(((s < 0) | (s >= npoints)).any(axis=1))[0])
-        raise ValueError(f"segments[{bad}] = {s[bad].tolist()}: every end must be one of the {npoints} points")
-    return np.ascontiguousarray(s, dtype=np.uint32)
+from ._delaunay import hull_edges
 
 
 class ConstrainedDelaunay:
@@ -68,13 +54,17 @@ class ConstrainedDelaunay:
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  method: str = "auto", threads: int = 1, seed: int = 1):
         self._points = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
-        segs = as_segments(segments, self._points.shape[0])
+        segs = _api.as_segments(segments)
+        if segs.size and segs.max() >= self._points.shape[0]:
+            bad = int(np.flatnonzero((segs >= self._points.shape[0]).any(axis=1))[0])
+            raise ValueError(f"segments[{bad}] = {segs[bad].tolist()}: every end must be one of the "
+                             f"{self._points.shape[0]} points")
         seeds = np.zeros((0, 2)) if holes is None or np.size(holes) == 0 else _api.as_points(holes, "holes")
         method = _api._choice(method, "method", _api.METHODS)
         tri, edges = _core.triangulate_constrained(self._points, segs, seeds, bool(convex_hull), method,
                                                    _api.thread_count(threads), int(seed), True)
         self._tri = tri
-        self.segments = segs.view(np.int32) if segs.size else np.zeros((0, 2), dtype=np.intc)
+        self.segments = segs.view(np.intc)
         self.edges = edges.view(np.intc)
 
     @property
@@ -103,10 +93,7 @@ class ConstrainedDelaunay:
 
     @cached_property
     def convex_hull(self) -> np.ndarray:
-        h = self._tri.hull.view(np.intc)
-        if self.nsimplex == 0:
-            return np.empty((0, 2), dtype=np.intc)
-        return np.stack([h, np.roll(h, -1)], axis=1)
+        return hull_edges(self._tri)
 
     @property
     def triangulation(self) -> _core.Triangulation:

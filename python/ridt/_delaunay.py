@@ -49,6 +49,14 @@ def _refuse_masked(points: Any) -> None:
         raise ValueError("Input points cannot be a masked array")
 
 
+
+def hull_edges(tri: _core.Triangulation) -> np.ndarray:
+    """The hull's edges (a, b), counter-clockwise, as scipy's convex_hull; none without triangles."""
+    h = tri.hull.view(np.intc)
+    if len(tri) == 0:
+        return np.empty((0, 2), dtype=np.intc)
+    return np.stack([h, np.roll(h, -1)], axis=1)
+
 class Delaunay:
     """Delaunay triangulation in the plane, with scipy.spatial.Delaunay's interface.
 
@@ -184,10 +192,7 @@ class Delaunay:
     # --- derived, computed on first use ---
     @cached_property
     def convex_hull(self) -> np.ndarray:
-        h = self._tri.hull.view(np.intc)
-        if self.nsimplex == 0:
-            return np.empty((0, 2), dtype=np.intc)
-        return np.stack([h, np.roll(h, -1)], axis=1)
+        return hull_edges(self._tri)
 
     @cached_property
     def vertex_to_simplex(self) -> np.ndarray:

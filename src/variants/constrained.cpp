@@ -47,7 +47,8 @@ class Inserter {
 
   std::vector<VertexId> edges() const {
     std::vector<VertexId> out;
-    std::vector<std::uint64_t> keys(constrained_.begin(), constrained_.end());
+    std::vector<std::uint64_t> keys;
+    for (const auto& [key, segment] : segment_of_) keys.push_back(key);
     std::sort(keys.begin(), keys.end());
     for (const std::uint64_t k : keys)
       out.push_back(static_cast<VertexId>(k >> 32)), out.push_back(static_cast<VertexId>(k));
@@ -96,17 +97,14 @@ class Inserter {
       const int i = corner_of(t, a);
       const VertexId u = tris_[3 * t + (i + 1) % 3], w = tris_[3 * t + (i + 2) % 3];
       const int ou = orient2d(pts_[a], pts_[b], pts_[u]), ow = orient2d(pts_[a], pts_[b], pts_[w]);
-      for (const auto [v, o] : {std::pair{u, ou}, std::pair{w, ow}})
+      for (const auto& [v, o] : {std::pair{u, ou}, std::pair{w, ow}})
         if (o == 0 && key(a, b, v) > key(a, b, a) && key(a, b, v) <= key(a, b, b)) return {v, kNone};
       if (ou < 0 && ow > 0) return {kNone, t};
     }
     throw std::logic_error("ridt: a segment found no way out of its vertex");
   }
 
-  void mark(VertexId a, VertexId b, std::size_t index) {
-    constrained_.insert(edge_key(a, b));
-    segment_of_.emplace(edge_key(a, b), index);
-  }
+  void mark(VertexId a, VertexId b, std::size_t index) { segment_of_.emplace(edge_key(a, b), index); }
 
   void refuse_crossing(VertexId u, VertexId w, std::size_t index) const {
     const auto it = segment_of_.find(edge_key(u, w));
@@ -123,7 +121,7 @@ class Inserter {
     VertexId u = tris_[3 * t + (i + 1) % 3], w = tris_[3 * t + (i + 2) % 3];  // u right, w left
     std::vector<VertexId> right{a, u}, left{a, w};
     for (std::uint32_t cur = t;;) {
-      if (constrained_.count(edge_key(u, w))) refuse_crossing(u, w, index);
+      if (segment_of_.count(edge_key(u, w))) refuse_crossing(u, w, index);
       const std::uint32_t next = static_cast<std::uint32_t>(nbrs_[3 * cur + opposite(cur, u, w)]);
       removed.push_back(next);
       const VertexId x = tris_[3 * next + opposite(next, u, w)];
@@ -218,8 +216,7 @@ class Inserter {
   std::vector<VertexId>& tris_;
   std::vector<std::int32_t>& nbrs_;
   std::vector<std::uint32_t> corner_;  // for each vertex, a position in tris_ that holds it
-  std::unordered_set<std::uint64_t> constrained_;
-  std::unordered_map<std::uint64_t, std::size_t> segment_of_;  // each segment edge's segment
+  std::unordered_map<std::uint64_t, std::size_t> segment_of_;  // each segment's edge, and the segment
 };
 
 // Whether triangle t of `out` holds q (inside or on its boundary), exactly.

@@ -166,6 +166,22 @@ struct Fields {
   }
 };
 
+/// The white-space fields of a header or record line: at least `least`, at most `most`, else
+/// "expected EXPECTED, got LINE".
+inline std::vector<std::string_view> fields_of(const std::string& path, std::size_t line_no, std::string_view line,
+                                               std::size_t least, std::size_t most, const std::string& expected) {
+  Fields f{line, false};
+  std::vector<std::string_view> out;
+  for (std::string_view x; f.next(x);) {
+    if (out.size() == most) break;
+    out.push_back(x);
+  }
+  std::string_view extra;
+  if (out.size() < least || (out.size() == most && f.next(extra)))
+    fail_line(path, line_no, "expected " + expected + ", got " + quoted(line));
+  return out;
+}
+
 enum class Parse { Ok, Bad, Range };
 
 /// A leading '+' is accepted (from_chars does not), "+-1" is not.

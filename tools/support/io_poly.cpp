@@ -16,12 +16,7 @@ struct Line {
 // The fields of line `l`: at least `least`, at most `most`.
 std::vector<std::string_view> fields(const std::string& path, const Line& l, std::size_t least, std::size_t most,
                                      const char* form) {
-  Fields f{l.text, false};
-  std::vector<std::string_view> out;
-  for (std::string_view x; f.next(x);) out.push_back(x);
-  if (out.size() < least || out.size() > most)
-    fail_line(path, l.number, std::string("expected ") + form + ", got " + quoted(l.text));
-  return out;
+  return fields_of(path, l.number, l.text, least, most, form);
 }
 
 // The next `count` lines from `at`, or an error naming what is missing.
@@ -36,21 +31,18 @@ std::size_t read_vertices(const std::string& path, std::string_view text, const 
   const auto h = fields(path, lines[0], 2, 4, "a header \"vertices 2 [attributes [markers]]\"");
   const std::int64_t n = integer(path, lines[0].number, h[0], "number of vertices");
   if (integer(path, lines[0].number, h[1], "dimension") != 2) fail_line(path, lines[0].number, "dimension must be 2");
+  PointFile p;
   if (n == 0) {  // the vertices in the .node file beside it
     const std::string node = (fs::path(path).replace_extension(".node")).string();
-    PointFile p = read_node(node, read_file_whole(node));
-    g.points.assign(p.points.begin(), p.points.end());
-    g.first_index = p.first_index;
-    return 1;
+    p = read_node(node, read_file_whole(node));
+  } else {  // the text up to the last vertex line is a .node file, line numbers and all
+    need(path, lines, 1, n, "vertices");
+    const Line& last = lines[static_cast<std::size_t>(n)];
+    p = read_node(path, text.substr(0, static_cast<std::size_t>(last.text.data() + last.text.size() - text.data())));
   }
-  need(path, lines, 1, n, "vertices");
-  // The text up to the last vertex line is a .node file, line numbers and all.
-  const Line& last = lines[static_cast<std::size_t>(n)];
-  const auto size = static_cast<std::size_t>(last.text.data() + last.text.size() - text.data());
-  PointFile p = read_node(path, text.substr(0, size));
   g.points.assign(p.points.begin(), p.points.end());
   g.first_index = p.first_index;
-  return 1 + static_cast<std::size_t>(n);
+  return n == 0 ? 1 : 1 + static_cast<std::size_t>(n);
 }
 
 std::size_t read_segments(const std::string& path, const std::vector<Line>& lines, std::size_t at, Pslg& g) {

@@ -6,20 +6,6 @@ namespace ridt::io::detail {
 
 namespace {
 
-// The fields of a header line: at least two, at most `most`, else an error that shows the
-// expected `form`.
-std::size_t header_fields(const std::string& path, std::size_t line_no, std::string_view line, std::string_view* v,
-                          std::size_t most, const std::string& form) {
-  Fields f{line, false};
-  std::size_t k = 0;
-  for (std::string_view field; f.next(field);) {
-    if (k == most) fail_line(path, line_no, form + quoted(line));
-    v[k++] = field;
-  }
-  if (k < 2) fail_line(path, line_no, form + quoted(line));
-  return k;
-}
-
 // Record `count`'s index `i` (`what`: "point" or "triangle"): the first 0 or 1, which sets
 // `first`, the others consecutive.
 void check_index(const std::string& path, std::size_t line_no, std::int64_t i, std::size_t count, std::int64_t& first,
@@ -61,9 +47,8 @@ struct NodeHeader {
 };
 
 NodeHeader node_header(const std::string& path, std::size_t line_no, std::string_view line) {
-  std::string_view v[4];
-  const std::size_t k =
-      header_fields(path, line_no, line, v, 4, "expected a header \"points 2 [attributes [markers]]\", got ");
+  const auto v = fields_of(path, line_no, line, 2, 4, "a header \"points 2 [attributes [markers]]\"");
+  const std::size_t k = v.size();
   NodeHeader h;
   h.n = integer(path, line_no, v[0], "number of points");
   const std::int64_t dim = integer(path, line_no, v[1], "dimension");
@@ -86,9 +71,8 @@ struct EleHeader {
 };
 
 EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_view line) {
-  std::string_view v[3];
-  const std::size_t k =
-      header_fields(path, line_no, line, v, 3, "expected a header \"triangles 3 [attributes]\", got ");
+  const auto v = fields_of(path, line_no, line, 2, 3, "a header \"triangles 3 [attributes]\"");
+  const std::size_t k = v.size();
   EleHeader h;
   h.n = integer(path, line_no, v[0], "number of triangles");
   const std::int64_t nodes = integer(path, line_no, v[1], "nodes per triangle");
