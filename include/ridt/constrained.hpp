@@ -1,4 +1,4 @@
-// Constrained Delaunay triangulations: points and segments between them.
+// Constrained Delaunay triangulations and quality meshes: points and segments between them.
 #pragma once
 
 #include <span>
@@ -8,15 +8,31 @@
 
 namespace ridt {
 
-/// A constrained Delaunay triangulation: the triangulation's arrays, and the edges that make
-/// up the segments. Where triangles were removed (Domain), `hull` is empty: the boundary is
-/// then the edges with neighbour -1.
+/// A constrained Delaunay triangulation: the triangulation's arrays, the edges that make up
+/// the segments, and the points it added. Vertex ids below the input's size are the input's
+/// points; id n + k is steiner[k]. Where triangles were removed (Domain), `hull` is empty: the
+/// boundary is then the edges with neighbour -1.
 struct ConstrainedTriangulation : Triangulation {
   std::vector<VertexId> edges;  ///< the segments' edges, pairs (a, b) with a < b, sorted
+  /// Points added: first where two segments cross (`crossings` of them, each the exact
+  /// crossing rounded to the nearest doubles), then those of quality refinement.
+  std::vector<Point> steiner;
+  std::size_t crossings = 0;
+  /// Per triangle, its region's attribute (Domain::regions); empty without regions.
+  std::vector<double> attributes;
+};
+
+/// A region of the domain (Triangle's regional attributes and area constraints): every
+/// triangle reached from `seed` without crossing a segment carries `attribute`, and quality
+/// refinement keeps its triangles' areas at most `max_area` (<= 0: no bound of its own).
+struct Region {
+  Point seed;
+  double attribute = 0;
+  double max_area = 0;
 };
 
 /// The region a constrained triangulation covers: the convex hull, or what the segments
-/// enclose, less holes (Triangle's -c, and its holes).
+/// enclose, less holes (Triangle's -c, and its holes); and its regions.
 struct Domain {
   /// Keep every triangle of the convex hull (the default); false: remove those that can be
   /// reached from the hull without crossing a segment, leaving what the segments enclose.
@@ -25,21 +41,38 @@ struct Domain {
   /// and every triangle reached from it without crossing a segment are removed. A seed outside
   /// the convex hull removes nothing.
   std::vector<Point> holes;
+  /// Regions, marked after the holes are removed; where two share triangles, the later wins.
+  std::vector<Region> regions;
+};
+
+/// Delaunay refinement of the triangulation (Triangle's -q, -a, -Y): points added at
+/// off-centres of bad triangles and on segments their circles encroach, the boundary's edges
+/// treated as segments. Every triangle ends with no angle below `min_angle` and no area above
+/// its bound, except the triangles at a small angle between two segments, which no point can
+/// mend (check_quality names them).
+struct Quality {
+  double min_angle = 0;  ///< degrees, in [0, 34]; 0: no angle bound
+  double max_area = 0;  ///< 0: no bound of all triangles (regions may still have their own)
+  bool split_boundary = true;  ///< false: no point added on the boundary's segments (-Y)
+  std::size_t max_steiner = 0;  ///< stop after adding this many points (0: no limit)
+  bool enabled() const { return min_angle > 0 || max_area > 0; }
 };
 
 /// The constrained Delaunay triangulation of `points` with `segments` (pairs of indices into
-/// `points`, a flat array a0, b0, a1, b1, ...), its boundary the convex hull: every segment is
-/// a union of edges (split at the points that lie exactly on it), and every other edge is
-/// locally Delaunay, so that no triangle's circle holds a point its triangle can see without
-/// crossing a segment (check_constrained validates it). Exact predicates throughout; the
-/// Delaunay triangulation is made by triangulate() with `options`, the segments then inserted
-/// one by one, each replacing the triangles it crosses by the constrained Delaunay
-/// triangulations of the polygons on either side. A segment's end that is a duplicate stands
-/// for its group's kept point; a segment whose ends coincide is left out. Throws InputError
-/// for an index out of range, an odd list, or two segments that cross at a point that is not
-/// one of the points (splitting them there is not done yet), and for a hole's coordinate that
-/// is not finite. `domain` says which triangles to keep.
+/// `points`, a flat array a0, b0, a1, b1, ...): every segment is a union of edges (split at
+/// the points that lie exactly on it, and where two segments cross, at their exact crossing
+/// rounded to doubles, a point added), and every other edge is locally Delaunay, so that no
+/// triangle's circle holds a point its triangle can see without crossing a segment
+/// (check_constrained validates it). Exact predicates throughout; the Delaunay triangulation
+/// is made by triangulate() with `options`, the segments then inserted one by one, each
+/// replacing the triangles it crosses by the constrained Delaunay triangulations of the
+/// polygons on either side. A segment's end that is a duplicate stands for its group's kept
+/// point; a segment whose ends coincide is left out; a segment given twice, or two that
+/// overlap, make one chain of edges. `domain` says which triangles to keep, `quality` how to
+/// refine them. Throws InputError for an index out of range, an odd list, a seed's coordinate
+/// that is not finite, or a quality bound out of range.
 ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
-                                                 const Options& options = {}, const Domain& domain = {});
+                                                 const Options& options = {}, const Domain& domain = {},
+                                                 const Quality& quality = {});
 
 }  // namespace ridt

@@ -31,3 +31,23 @@ struct OptionNames<Distribution> {
 std::vector<Point> generate(Distribution d, std::uint32_t n, std::uint64_t seed);
 
 }  // namespace ridt
+
+namespace ridt {
+
+/// A planar straight-line graph: points, segments between them (pairs of indices, flat) and
+/// the seeds of holes, as Triangle's .poly holds them.
+struct Pslg {
+  std::vector<Point> points;
+  std::vector<VertexId> segments;
+  std::vector<Point> holes;
+};
+
+/// A coastline-like test polygon of n vertices with `lakes` holes, bit-identical on every
+/// machine for a seed: an island whose radius from the origin is a periodic fractal (midpoint
+/// displacement, roughness 0.6 an octave) between 0.7 and 1.3, and, where lakes > 0, half of
+/// the vertices in lakes of the same making, each star-shaped about its centre (its hole's
+/// seed) in its own cell of a grid inside radius 0.65. Every polygon is simple, none touches
+/// another. Needs n >= 3 + 8 lakes.
+Pslg generate_coastline(std::uint32_t n, std::uint32_t lakes, std::uint64_t seed);
+
+}  // namespace ridt

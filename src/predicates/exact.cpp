@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "predicates/predicates.hpp"
 #include "ridt/predicates.hpp"
@@ -220,6 +221,64 @@ double doubled_area_exact(const Point& a, const Point& b, const Point& c) {
   int exponent = 0;
   const double m = (acx * bcy - acy * bcx).scaled(2 * e, exponent);
   return std::ldexp(m, exponent);
+}
+
+namespace {
+
+// Where the line a-b crosses the line u-w (they cross properly): p = a + (b - a) N / D with
+// N = area(u, w, a), D = N - area(u, w, b). Its coordinate `axis` (0: x, 1: y), the value v,
+// compared exactly with (c1 + c2) / 2: sign(2 v - c1 - c2) = sign((2a - c1 - c2) D + 2 (b - a) N)
+// times sign(D).
+int compare_crossing(const Point& a, const Point& b, const Point& u, const Point& w, int axis, double c1,
+                     double c2) {
+  const int e = std::min(min_ulp_exponent({a.x, a.y, b.x, b.y, u.x, u.y, w.x, w.y}), min_ulp_exponent({c1, c2}));
+  auto big = [e](double x) { return BigInt::from_double(x, e); };
+  auto area = [&](const Point& p, const Point& q, const Point& r) {
+    return (big(p.x) - big(r.x)) * (big(q.y) - big(r.y)) - (big(p.y) - big(r.y)) * (big(q.x) - big(r.x));
+  };
+  const BigInt n = area(u, w, a), d = n - area(u, w, b);
+  const double ac = axis == 0 ? a.x : a.y, bc = axis == 0 ? b.x : b.y;
+  const BigInt diff = big(bc) - big(ac), twice_n = n + n;
+  const BigInt value = (big(ac) + big(ac) - big(c1) - big(c2)) * d + diff * twice_n;
+  return value.sign() * d.sign();
+}
+
+// The double nearest the crossing's coordinate `axis` (ties to even): bisection over the
+// doubles between a's and b's coordinate (the crossing lies between them), in their order as
+// integers, then the nearer of the two that bracket it.
+double crossing_coordinate(const Point& a, const Point& b, const Point& u, const Point& w, int axis) {
+  const double ac = axis == 0 ? a.x : a.y, bc = axis == 0 ? b.x : b.y;
+  // Doubles mapped to integers in their order (-0 and +0 to the same place).
+  auto to_int = [](double x) {
+    std::int64_t i = 0;
+    std::memcpy(&i, &x, sizeof i);
+    return i < 0 ? -(i & 0x7fffffffffffffff) : i;
+  };
+  auto to_double = [](std::int64_t i) {
+    const std::int64_t bits = i < 0 ? (-i) | std::int64_t(0x8000000000000000ull) : i;
+    double x = 0;
+    std::memcpy(&x, &bits, sizeof x);
+    return x;
+  };
+  std::int64_t lo = to_int(std::min(ac, bc)), hi = to_int(std::max(ac, bc));  // v in [lo, hi]
+  while (hi - lo > 1) {
+    const std::int64_t mid = lo + (hi - lo) / 2;
+    const double m = to_double(mid);
+    const int s = compare_crossing(a, b, u, w, axis, m, m);
+    if (s == 0) return m;
+    (s > 0 ? lo : hi) = mid;
+  }
+  const double low = to_double(lo), high = to_double(hi);
+  if (compare_crossing(a, b, u, w, axis, low, low) == 0) return low;
+  const int s = compare_crossing(a, b, u, w, axis, low, high);
+  if (s != 0) return s < 0 ? low : high;
+  return (lo & 1) == 0 ? low : high;  // a tie: the even significand
+}
+
+}  // namespace
+
+Point crossing_rounded(const Point& a, const Point& b, const Point& u, const Point& w) {
+  return {crossing_coordinate(a, b, u, w, 0), crossing_coordinate(a, b, u, w, 1)};
 }
 
 int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d) {

@@ -191,6 +191,10 @@ inline int exact_scale_exponent(std::span<const Point> points, double low = 0x1p
 
 double doubled_area_exact(const Point& a, const Point& b, const Point& c);
 
+/// Where segments a-b and u-w cross (at one point inside both), each coordinate the double
+/// nearest the exact one (ties to even).
+Point crossing_rounded(const Point& a, const Point& b, const Point& u, const Point& w);
+
 /// Twice the signed area of (a, b, c) (the orientation determinant), within a relative 2^-50
 /// of the exact value: in double precision where the filter's bound allows, else exactly and
 /// rounded (infinite only where the area itself overflows).

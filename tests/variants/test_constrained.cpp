@@ -63,16 +63,58 @@ TEST(Constrained, DuplicateEndsStandForTheirPoint) {
   EXPECT_EQ(t.duplicates.size(), 1u);
 }
 
-TEST(Constrained, CrossingSegmentsAreRefused) {
+// The triangulation with the added points, as one array.
+std::vector<Point> with_steiner(const std::vector<Point>& pts, const ConstrainedTriangulation& t) {
+  std::vector<Point> all = pts;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  return all;
+}
+
+TEST(Constrained, CrossingSegmentsAreSplitWhereTheyCross) {
   const std::vector<Point> kite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
-  try {
-    triangulate_constrained(kite, std::vector<VertexId>{0, 2, 1, 3});
-    ADD_FAILURE() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("segments 0 and 1 cross"), std::string::npos) << e.what();
-  }
+  const ConstrainedTriangulation t = triangulate_constrained(kite, std::vector<VertexId>{0, 2, 1, 3});
+  ASSERT_EQ(t.crossings, 1u);
+  ASSERT_EQ(t.steiner.size(), 1u);
+  EXPECT_EQ(t.steiner[0].x, 4);
+  EXPECT_EQ(t.steiner[0].y, 0);
+  EXPECT_EQ(t.edges, (std::vector<VertexId>{0, 4, 1, 4, 2, 4, 3, 4}));
+  EXPECT_TRUE(check_constrained(with_steiner(kite, t), t.triangles, t.edges).valid);
   EXPECT_THROW(triangulate_constrained(kite, std::vector<VertexId>{0, 2, 1}), InputError);
   EXPECT_THROW(triangulate_constrained(kite, std::vector<VertexId>{0, 9}), InputError);
+}
+
+TEST(Constrained, ACrossingIsTheExactOneRoundedToNearest) {
+  // The segment from (0, -1) to (2/3, 2) meets y = 0 a third of the way along, at x = 2/9
+  // (2/3 as a double, over 3), which no double is: the crossing's x must be the nearest.
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, -1}, {2.0 / 3, 2}, {0.5, 5}, {0.5, -5}};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, std::vector<VertexId>{0, 1, 2, 3});
+  ASSERT_EQ(t.crossings, 1u);
+  const long double exact = static_cast<long double>(2.0 / 3) / 3;
+  EXPECT_EQ(t.steiner[0].y, 0);
+  EXPECT_LE(std::fabs(static_cast<long double>(t.steiner[0].x) - exact),
+            std::fabs(static_cast<long double>(std::nextafter(t.steiner[0].x, 1.0)) - exact));
+  EXPECT_LE(std::fabs(static_cast<long double>(t.steiner[0].x) - exact),
+            std::fabs(static_cast<long double>(std::nextafter(t.steiner[0].x, 0.0)) - exact));
+  EXPECT_TRUE(check_constrained(with_steiner(pts, t), t.triangles, t.edges).valid);
+}
+
+TEST(Constrained, ManyCrossingSegmentsGiveAnExactTriangulation) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 2000, 5);
+  std::vector<VertexId> segs;
+  for (VertexId k = 0; k + 1 < 300; k += 2) segs.push_back(k), segs.push_back(k + 1);
+  const ConstrainedTriangulation t = triangulate_constrained(pts, segs);
+  EXPECT_GT(t.crossings, 1000u);
+  EXPECT_EQ(t.steiner.size(), t.crossings);
+  const CheckResult c = check_constrained(with_steiner(pts, t), t.triangles, t.edges);
+  EXPECT_TRUE(c.valid) << c.message;
+}
+
+TEST(Constrained, OverlappingAndRepeatedSegmentsMakeOneChain) {
+  // Four points on a line, segments 0-2 and 1-3 overlapping on 1-2, and 0-3 over both, twice.
+  const std::vector<Point> pts = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {1.5, 1}, {1.5, -1}};
+  const ConstrainedTriangulation t = checked(pts, {0, 2, 1, 3, 0, 3, 3, 0});
+  EXPECT_EQ(t.edges, (std::vector<VertexId>{0, 1, 1, 2, 2, 3}));
+  EXPECT_EQ(t.crossings, 0u);
 }
 
 TEST(Constrained, EveryMethodGivesTheSameTriangles) {

@@ -1,0 +1,168 @@
+// The mutable constrained triangulation (constrained/cdt.hpp): walking, adding points and
+// flipping. Edge k of a triangle runs from its corner k + 1 to corner k + 2 (counter-clockwise),
+// across from corner k; neighbour k is the triangle beyond it.
+#include "constrained/cdt.hpp"
+
+#include <stdexcept>
+
+#include "predicates/predicates.hpp"
+
+namespace ridt::detail {
+
+Cdt::Cdt(std::vector<Point> points, Triangulation& t)
+    : pts(std::move(points)), tris(std::move(t.triangles)), nbrs(std::move(t.neighbors)) {
+  fixed.assign(tris.size(), 0);
+  corner.assign(pts.size(), kNone);
+  for (std::size_t k = 0; k < tris.size(); ++k) corner[tris[k]] = static_cast<std::uint32_t>(k);
+}
+
+void Cdt::set(std::uint32_t t, const VertexId (&v)[3], const std::int32_t (&n)[3], const std::uint8_t (&f)[3]) {
+  for (int k = 0; k < 3; ++k) {
+    tris[3 * t + k] = v[k];
+    nbrs[3 * t + k] = n[k];
+    fixed[3 * t + k] = f[k];
+    corner[v[k]] = 3 * t + k;
+  }
+}
+
+void Cdt::relink(std::int32_t n, std::uint32_t from, std::uint32_t to) {
+  if (n >= 0) nbrs[3 * n + back(static_cast<std::uint32_t>(n), from)] = static_cast<std::int32_t>(to);
+}
+
+std::uint32_t Cdt::add_triangle(std::uint32_t like) {
+  const auto t = static_cast<std::uint32_t>(size());
+  tris.resize(tris.size() + 3);
+  nbrs.resize(nbrs.size() + 3, -1);
+  fixed.resize(fixed.size() + 3, 0);
+  if (!region.empty()) region.push_back(region[like]);
+  return t;
+}
+
+void Cdt::set_fixed(std::uint32_t t, int k, bool on) {
+  fixed[3 * t + k] = on;
+  if (const std::int32_t n = nbrs[3 * t + k]; n >= 0) fixed[3 * n + back(static_cast<std::uint32_t>(n), t)] = on;
+}
+
+std::uint32_t Cdt::find_edge(VertexId a, VertexId b) const {
+  std::uint32_t slot = kNone;
+  around(a, [&](std::uint32_t t) {
+    const int i = corner_of(t, a);
+    if (at(t, i + 1) == b) slot = 3 * t + (i + 2) % 3;
+    if (at(t, i + 2) == b) slot = 3 * t + (i + 1) % 3;
+    return slot != kNone;
+  });
+  return slot;
+}
+
+std::vector<std::uint32_t> Cdt::ring(VertexId v) const {
+  std::vector<std::uint32_t> out;
+  around(v, [&](std::uint32_t t) {
+    out.push_back(t);
+    return false;
+  });
+  return out;
+}
+
+Cdt::Place Cdt::locate(std::uint32_t from, const Point& p, bool stop_at_fixed) const {
+  std::uint32_t t = from;
+  const std::size_t limit = 4 * size() + 64;
+  for (std::size_t steps = 0, turn = 0; steps < limit; ++steps) {
+    int zeros = 0, zero = 0;
+    bool moved = false;
+    for (int r = 0; r < 3 && !moved; ++r) {
+      const int k = static_cast<int>((r + turn) % 3);
+      const int o = orient2d(pts[at(t, k + 1)], pts[at(t, k + 2)], p);
+      if (o == 0) ++zeros, zero = k;
+      if (o >= 0) continue;
+      if (stop_at_fixed && fixed[3 * t + k]) return {Place::Blocked, t, k};
+      if (nbrs[3 * t + k] < 0) return {Place::Outside, t, k};
+      t = static_cast<std::uint32_t>(nbrs[3 * t + k]);
+      moved = true;
+    }
+    turn += 7;
+    if (moved) continue;
+    if (zeros == 0) return {Place::Inside, t, 0};
+    if (zeros == 1) return {Place::Edge, t, zero};
+    for (int k = 0; k < 3; ++k)
+      if (orient2d(pts[at(t, k + 1)], pts[at(t, k + 2)], p) != 0) return {Place::Corner, t, k};
+  }
+  throw std::logic_error("ridt: a walk in the constrained triangulation did not end");
+}
+
+VertexId Cdt::insert(const Point& p, const Place& where) {
+  const auto v = static_cast<VertexId>(pts.size());
+  pts.push_back(p);
+  corner.push_back(kNone);
+  const std::uint32_t t = where.t;
+  if (where.kind == Place::Inside) {
+    const VertexId a = tris[3 * t], b = tris[3 * t + 1], c = tris[3 * t + 2];
+    const std::int32_t na = nbrs[3 * t], nb = nbrs[3 * t + 1], nc = nbrs[3 * t + 2];
+    const std::uint8_t fa = fixed[3 * t], fb = fixed[3 * t + 1], fc = fixed[3 * t + 2];
+    const std::uint32_t t1 = add_triangle(t), t2 = add_triangle(t);
+    const auto i0 = std::int32_t(t), i1 = std::int32_t(t1), i2 = std::int32_t(t2);
+    set(t, {a, b, v}, {i1, i2, nc}, {0, 0, fc});
+    set(t1, {b, c, v}, {i2, i0, na}, {0, 0, fa});
+    set(t2, {c, a, v}, {i0, i1, nb}, {0, 0, fb});
+    relink(na, t, t1);
+    relink(nb, t, t2);
+    legalize(v, {t, t1, t2});
+    return v;
+  }
+  if (where.kind != Place::Edge) throw std::logic_error("ridt: a point added where it cannot be");
+  const int k = where.k;
+  const VertexId a = at(t, k), x = at(t, k + 1), y = at(t, k + 2);
+  const std::int32_t n1 = nbrs[3 * t + (k + 1) % 3], n2 = nbrs[3 * t + (k + 2) % 3];
+  const std::uint8_t f1 = fixed[3 * t + (k + 1) % 3], f2 = fixed[3 * t + (k + 2) % 3], fe = fixed[3 * t + k];
+  const std::int32_t n = nbrs[3 * t + k];
+  const std::uint32_t t1 = add_triangle(t);
+  std::uint32_t m1 = kNone;
+  if (n >= 0) m1 = add_triangle(static_cast<std::uint32_t>(n));
+  const std::int32_t out1 = n >= 0 ? std::int32_t(m1) : -1, out2 = n;
+  set(t, {a, x, v}, {out1, std::int32_t(t1), n2}, {fe, 0, f2});
+  set(t1, {a, v, y}, {out2, n1, std::int32_t(t)}, {fe, f1, 0});
+  relink(n1, t, t1);
+  std::vector<std::uint32_t> todo{t, t1};
+  if (n >= 0) {
+    const auto u = static_cast<std::uint32_t>(n);
+    const int j = back(u, t);
+    const VertexId d = at(u, j);  // u is (d, y, x)
+    const std::int32_t g1 = nbrs[3 * u + (j + 1) % 3], g2 = nbrs[3 * u + (j + 2) % 3];  // across (x, d), (d, y)
+    const std::uint8_t h1 = fixed[3 * u + (j + 1) % 3], h2 = fixed[3 * u + (j + 2) % 3];
+    set(u, {d, y, v}, {std::int32_t(t1), std::int32_t(m1), g2}, {fe, 0, h2});
+    set(m1, {d, v, x}, {std::int32_t(t), g1, n}, {fe, h1, 0});
+    relink(g1, u, m1);
+    todo.push_back(u), todo.push_back(m1);
+  }
+  legalize(v, std::move(todo));
+  return v;
+}
+
+void Cdt::flip(std::uint32_t t, int i) {
+  const auto n = static_cast<std::uint32_t>(nbrs[3 * t + i]);
+  const int j = back(n, t);
+  const VertexId p = at(t, i), a = at(t, i + 1), b = at(t, i + 2), d = at(n, j);  // t (p, a, b), n (d, b, a)
+  const std::int32_t ta = nbrs[3 * t + (i + 1) % 3], tb = nbrs[3 * t + (i + 2) % 3];
+  const std::int32_t nb = nbrs[3 * n + (j + 1) % 3], na = nbrs[3 * n + (j + 2) % 3];
+  const std::uint8_t fta = fixed[3 * t + (i + 1) % 3], ftb = fixed[3 * t + (i + 2) % 3];
+  const std::uint8_t fnb = fixed[3 * n + (j + 1) % 3], fna = fixed[3 * n + (j + 2) % 3];
+  set(t, {p, a, d}, {nb, std::int32_t(n), tb}, {fnb, 0, ftb});
+  set(n, {p, d, b}, {na, ta, std::int32_t(t)}, {fna, fta, 0});
+  relink(nb, n, t);
+  relink(ta, t, n);
+}
+
+void Cdt::legalize(VertexId p, std::vector<std::uint32_t> todo) {
+  while (!todo.empty()) {
+    const std::uint32_t t = todo.back();
+    todo.pop_back();
+    const int i = corner_of(t, p);
+    const std::int32_t n = nbrs[3 * t + i];
+    if (n < 0 || fixed[3 * t + i]) continue;
+    const VertexId d = at(static_cast<std::uint32_t>(n), back(static_cast<std::uint32_t>(n), t));
+    if (incircle(pts[tris[3 * t]], pts[tris[3 * t + 1]], pts[tris[3 * t + 2]], pts[d]) <= 0) continue;
+    flip(t, i);
+    todo.push_back(t), todo.push_back(static_cast<std::uint32_t>(n));
+  }
+}
+
+}  // namespace ridt::detail

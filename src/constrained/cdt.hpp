@@ -1,0 +1,87 @@
+// The mutable constrained triangulation that segment insertion, the domain's carving and
+// quality refinement share: triangles with their neighbours (as ridt::Triangulation has them)
+// and, per edge, whether it is a segment's ("fixed"); points can be added, each inserted by
+// splitting its triangle or edge and flipping every edge that is not fixed back to locally
+// Delaunay (Lawson), with the exact predicates.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ridt/ridt.hpp"
+
+namespace ridt::detail {
+
+class Cdt {
+ public:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+
+  /// Takes t's triangles and neighbours; `points` are the points the predicates see.
+  Cdt(std::vector<Point> points, Triangulation& t);
+
+  /// Where a point lies: in triangle t, on its edge k (across from corner k), at its corner k,
+  /// or (the walk stopped) beyond its edge k, a fixed one (Blocked) or the boundary (Outside).
+  struct Place {
+    enum Kind { Inside, Edge, Corner, Blocked, Outside } kind;
+    std::uint32_t t;
+    int k;
+  };
+  /// A visibility walk from triangle `from` to p; `stop_at_fixed`: never across a fixed edge
+  /// (then the walk always ends: every edge it crosses is locally Delaunay).
+  Place locate(std::uint32_t from, const Point& p, bool stop_at_fixed) const;
+
+  /// p added at `at` (Inside or Edge; a fixed edge stays fixed in both halves); returns its id.
+  VertexId insert(const Point& p, const Place& at);
+
+  /// The triangles around vertex v, in order (around a boundary vertex, from one side).
+  std::vector<std::uint32_t> ring(VertexId v) const;
+  /// visit(t) for the triangles around v, in ring()'s order, until it returns true; returns
+  /// whether it did.
+  template <class Visit>
+  bool around(VertexId v, Visit visit) const {
+    const std::uint32_t start = corner[v] / 3;
+    for (std::uint32_t t = start;;) {
+      if (visit(t)) return true;
+      const std::int32_t n = nbrs[3 * t + (corner_of(t, v) + 2) % 3];  // across the edge (v, next)
+      if (n < 0) break;
+      t = static_cast<std::uint32_t>(n);
+      if (t == start) return false;
+    }
+    for (std::uint32_t t = start;;) {
+      const std::int32_t n = nbrs[3 * t + (corner_of(t, v) + 1) % 3];  // across the edge (previous, v)
+      if (n < 0) return false;
+      t = static_cast<std::uint32_t>(n);
+      if (visit(t)) return true;
+    }
+  }
+
+  int corner_of(std::uint32_t t, VertexId v) const {
+    return tris[3 * t] == v ? 0 : tris[3 * t + 1] == v ? 1 : 2;
+  }
+  VertexId at(std::uint32_t t, int k) const { return tris[3 * t + k % 3]; }
+  /// The slot of triangle n that looks back at t.
+  int back(std::uint32_t n, std::uint32_t t) const {
+    return nbrs[3 * n] == std::int32_t(t) ? 0 : nbrs[3 * n + 1] == std::int32_t(t) ? 1 : 2;
+  }
+  /// Edge k of t fixed or freed, on both sides.
+  void set_fixed(std::uint32_t t, int k, bool on);
+  /// The slot (3 t + k) of an edge a-b, as a triangle at a sees it; kNone when none.
+  std::uint32_t find_edge(VertexId a, VertexId b) const;
+  std::size_t size() const { return tris.size() / 3; }
+
+  std::vector<Point> pts;  ///< the points, then those added
+  std::vector<VertexId> tris;
+  std::vector<std::int32_t> nbrs;
+  std::vector<std::uint8_t> fixed;  ///< per edge slot: a segment's edge
+  std::vector<std::int32_t> region;  ///< per triangle: its region's index, -1 none (empty: none kept)
+  std::vector<std::uint32_t> corner;  ///< per vertex: a slot that holds it, kNone when none
+
+ private:
+  void set(std::uint32_t t, const VertexId (&v)[3], const std::int32_t (&n)[3], const std::uint8_t (&f)[3]);
+  void relink(std::int32_t n, std::uint32_t from, std::uint32_t to);
+  std::uint32_t add_triangle(std::uint32_t like);
+  void flip(std::uint32_t t, int i);
+  void legalize(VertexId p, std::vector<std::uint32_t> todo);
+};
+
+}  // namespace ridt::detail

@@ -1,0 +1,136 @@
+// The constrained Delaunay triangulation and quality mesh (ridt/constrained.hpp): the Delaunay
+// triangulation of the points, the segments inserted (constrained/segments.cpp), the domain
+// carved (constrained/domain.cpp), then refined (constrained/refine.cpp), all on one mutable
+// triangulation (constrained/cdt.hpp) in exactly scaled coordinates where the points are huge
+// or tiny.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "constrained/cdt.hpp"
+#include "constrained/domain.hpp"
+#include "constrained/refine.hpp"
+#include "constrained/segments.hpp"
+#include "finish/finish.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/constrained.hpp"
+
+namespace ridt {
+namespace {
+
+void check_input(std::span<const Point> points, std::span<const VertexId> segments, const Domain& domain,
+                 const Quality& quality) {
+  auto finite = [](const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+  for (const Point& h : domain.holes)
+    if (!finite(h)) throw InputError("a hole's coordinate is not finite");
+  for (const Region& r : domain.regions)
+    if (!finite(r.seed) || !std::isfinite(r.attribute) || !std::isfinite(r.max_area))
+      throw InputError("a region's seed, attribute or area bound is not finite");
+  if (!(quality.min_angle >= 0 && quality.min_angle <= 34))
+    throw InputError("the minimum angle must lie in [0, 34] degrees (got " + std::to_string(quality.min_angle) +
+                     "); above about 34 degrees refinement need not end");
+  if (!(quality.max_area >= 0) || !std::isfinite(quality.max_area))
+    throw InputError("the maximum area must be finite and >= 0 (got " + std::to_string(quality.max_area) + ")");
+  if (segments.size() % 2 != 0)
+    throw InputError("a segment list needs an even size (got " + std::to_string(segments.size()) + ")");
+  for (std::size_t k = 0; k < segments.size(); ++k)
+    if (segments[k] >= points.size())
+      throw InputError("segment " + std::to_string(k / 2) + " refers to point " + std::to_string(segments[k]) + " of " +
+                       std::to_string(points.size()));
+}
+
+Point scaled(const Point& p, int scale) { return {std::ldexp(p.x, scale), std::ldexp(p.y, scale)}; }
+
+// The fixed edges, pairs (a, b) with a < b, sorted: counted by a, then each a's few sorted.
+std::vector<VertexId> fixed_edges(const detail::Cdt& m) {
+  std::vector<std::uint32_t> start(m.pts.size() + 1, 0);
+  auto each = [&](auto visit) {
+    for (std::uint32_t s = 0; s < m.tris.size(); ++s) {
+      if (!m.fixed[s]) continue;
+      const VertexId a = m.at(s / 3, static_cast<int>(s % 3) + 1), b = m.at(s / 3, static_cast<int>(s % 3) + 2);
+      if (a < b || m.nbrs[s] < 0) visit(std::min(a, b), std::max(a, b));
+    }
+  };
+  each([&](VertexId a, VertexId) { ++start[a + 1]; });
+  for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+  std::vector<VertexId> second(start.back());
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  each([&](VertexId a, VertexId b) { second[next[a]++] = b; });
+  std::vector<VertexId> out;
+  out.reserve(2 * second.size());
+  for (VertexId a = 0; a + 1 < start.size(); ++a) {
+    std::sort(second.begin() + start[a], second.begin() + start[a + 1]);
+    for (std::uint32_t k = start[a]; k < start[a + 1]; ++k) out.push_back(a), out.push_back(second[k]);
+  }
+  return out;
+}
+
+// Triangles put in canonical order, their attributes following them.
+void canonical(ConstrainedTriangulation& out, unsigned threads) {
+  auto key = [&](std::size_t t) {
+    VertexId v[3] = {out.triangles[3 * t], out.triangles[3 * t + 1], out.triangles[3 * t + 2]};
+    std::rotate(v, std::min_element(v, v + 3), v + 3);
+    return std::pair{(std::uint64_t{v[0]} << 32) | v[1], v[2]};
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::pair<VertexId, double>>> attribute;
+  for (std::size_t t = 0; t < out.attributes.size(); ++t) attribute[key(t).first].push_back({key(t).second, out.attributes[t]});
+  detail::canonicalize(out, threads);
+  for (std::size_t t = 0; t < out.attributes.size(); ++t)
+    for (const auto& [third, value] : attribute.at(key(t).first))
+      if (third == key(t).second) out.attributes[t] = value;
+}
+
+// The mesh's arrays into `out` (whose duplicates, stats and warning the Delaunay step set).
+void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain, std::size_t n, int scale,
+             bool reshaped) {
+  out.edges = fixed_edges(m);
+  out.triangles = std::move(m.tris);
+  out.neighbors = std::move(m.nbrs);
+  if (reshaped) out.hull.clear();
+  for (std::size_t v = n; v < m.pts.size(); ++v) out.steiner.push_back(scaled(m.pts[v], -scale));
+  if (!m.region.empty()) {
+    out.attributes.resize(m.region.size(), 0.0);
+    for (std::size_t t = 0; t < m.region.size(); ++t)
+      if (m.region[t] >= 0) out.attributes[t] = domain.regions[static_cast<std::size_t>(m.region[t])].attribute;
+  }
+}
+
+}  // namespace
+
+ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
+                                                 const Options& options, const Domain& domain,
+                                                 const Quality& quality) {
+  check_input(points, segments, domain, quality);
+  Options plain = options;
+  plain.canonical_order = false;
+  ConstrainedTriangulation out;
+  static_cast<Triangulation&>(out) = triangulate(points, plain);
+  if (out.size() == 0) return out;
+  std::vector<VertexId> kept(points.size());
+  for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
+  for (const Duplicate& d : out.duplicates) kept[d.dropped] = d.kept;
+  // The predicates on an exactly scaled copy where the coordinates are huge or tiny.
+  const int scale = detail::exact_scale_exponent(points);
+  std::vector<Point> pts(points.begin(), points.end());
+  if (scale != 0)
+    for (Point& p : pts) p = scaled(p, scale);
+  detail::Cdt m(std::move(pts), out);
+  out.crossings = detail::insert_segments(m, segments, kept).size();
+  std::vector<Point> holes = domain.holes;
+  std::vector<Region> regions = domain.regions;
+  for (Point& h : holes) h = scaled(h, scale);
+  for (Region& r : regions) r.seed = scaled(r.seed, scale);
+  const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
+  if (quality.enabled()) {
+    detail::Refinement r{quality.min_angle, std::ldexp(quality.max_area, 2 * scale), {}, quality.split_boundary,
+                         quality.max_steiner, static_cast<VertexId>(points.size() + out.crossings)};
+    for (const Region& g : domain.regions) r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
+    if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
+  }
+  collect(m, out, domain, points.size(), scale, carved || quality.enabled());
+  if (options.canonical_order) canonical(out, options.threads);
+  return out;
+}
+
+}  // namespace ridt

@@ -1,0 +1,91 @@
+// Carving and regions (constrained/domain.hpp): floods across the edges that are not fixed.
+#include "constrained/domain.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "predicates/predicates.hpp"
+
+namespace ridt::detail {
+namespace {
+
+// The triangle that holds q (inside or on its boundary), or -1: a walk from the last triangle
+// found, then, where the walk leaves the triangulation (q outside, or a hole between), every
+// triangle in turn.
+std::int64_t holding(const Cdt& m, const Point& q, std::uint32_t& from) {
+  if (m.size() == 0) return -1;
+  try {
+    const Cdt::Place at = m.locate(std::min<std::uint32_t>(from, static_cast<std::uint32_t>(m.size() - 1)), q, false);
+    if (at.kind != Cdt::Place::Outside) return from = at.t;
+  } catch (const std::logic_error&) {  // a walk across fixed edges can circle: look everywhere
+  }
+  for (std::uint32_t t = 0; t < m.size(); ++t) {
+    const Point &a = m.pts[m.tris[3 * t]], &b = m.pts[m.tris[3 * t + 1]], &c = m.pts[m.tris[3 * t + 2]];
+    if (orient2d(a, b, q) >= 0 && orient2d(b, c, q) >= 0 && orient2d(c, a, q) >= 0) return from = t;
+  }
+  return -1;
+}
+
+// Every triangle reached from `seed` across edges that are not fixed, given `mark` (those
+// whose mark is already `mark` are not entered again).
+template <class T>
+void flood(const Cdt& m, std::uint32_t seed, std::vector<T>& label, T mark) {
+  if (label[seed] == mark) return;
+  std::vector<std::uint32_t> todo{seed};
+  label[seed] = mark;
+  while (!todo.empty()) {
+    const std::uint32_t t = todo.back();
+    todo.pop_back();
+    for (int j = 0; j < 3; ++j) {
+      const std::int32_t n = m.nbrs[3 * t + j];
+      if (n < 0 || m.fixed[3 * t + j] || label[n] == mark) continue;
+      label[n] = mark;
+      todo.push_back(static_cast<std::uint32_t>(n));
+    }
+  }
+}
+
+// Triangles whose `gone` is set removed; the rest renumbered in order.
+void remove(Cdt& m, const std::vector<std::uint8_t>& gone) {
+  const std::size_t nt = m.size();
+  std::vector<std::int32_t> id(nt, -1);
+  std::uint32_t kept = 0;
+  for (std::size_t t = 0; t < nt; ++t)
+    if (!gone[t]) id[t] = static_cast<std::int32_t>(kept++);
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (gone[t]) continue;
+    const auto to = static_cast<std::size_t>(id[t]);
+    for (int j = 0; j < 3; ++j) {
+      m.tris[3 * to + j] = m.tris[3 * t + j];
+      m.fixed[3 * to + j] = m.fixed[3 * t + j];
+      const std::int32_t n = m.nbrs[3 * t + j];
+      m.nbrs[3 * to + j] = n < 0 ? -1 : id[static_cast<std::size_t>(n)];
+    }
+  }
+  m.tris.resize(3 * kept), m.nbrs.resize(3 * kept), m.fixed.resize(3 * kept);
+  std::fill(m.corner.begin(), m.corner.end(), Cdt::kNone);
+  for (std::uint32_t k = 0; k < m.tris.size(); ++k) m.corner[m.tris[k]] = k;
+}
+
+}  // namespace
+
+bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull) {
+  const std::size_t nt = m.size();
+  std::vector<std::uint8_t> gone(nt, 0);
+  for (std::uint32_t t = 0; t < nt && !convex_hull; ++t)
+    for (int j = 0; j < 3; ++j)
+      if (m.nbrs[3 * t + j] < 0 && !m.fixed[3 * t + j]) flood<std::uint8_t>(m, t, gone, 1);
+  std::uint32_t from = 0;
+  for (const Point& h : holes)
+    if (const std::int64_t t = holding(m, h, from); t >= 0) flood<std::uint8_t>(m, static_cast<std::uint32_t>(t), gone, 1);
+  const bool removed = std::find(gone.begin(), gone.end(), 1) != gone.end();
+  if (removed) remove(m, gone);
+  if (regions.empty()) return removed;
+  m.region.assign(m.size(), -1);
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    if (const std::int64_t t = holding(m, regions[r].seed, from); t >= 0)
+      flood<std::int32_t>(m, static_cast<std::uint32_t>(t), m.region, static_cast<std::int32_t>(r));
+  return removed;
+}
+
+}  // namespace ridt::detail

@@ -1,0 +1,28 @@
+// Delaunay refinement of a constrained triangulation to a minimum angle and maximum areas.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "constrained/cdt.hpp"
+#include "ridt/constrained.hpp"
+
+namespace ridt::detail {
+
+/// What refinement is asked, in m's (scaled) coordinates.
+struct Refinement {
+  double min_angle = 0;  ///< degrees
+  double max_area = 0;  ///< 0: none
+  std::vector<double> region_area;  ///< per region of m.region, 0: none
+  bool split_boundary = true;
+  std::size_t max_steiner = 0;
+  VertexId corners = 0;  ///< vertices below this id are corners (input points and crossings)
+};
+
+/// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's
+/// off-centres): encroached subsegments split first, then bad triangles, each at its
+/// off-centre unless that point would encroach a subsegment (then the subsegment is split).
+/// Every boundary edge becomes fixed. Returns a warning where it stopped early, else "".
+std::string refine(Cdt& m, const Refinement& r);
+
+}  // namespace ridt::detail

@@ -1,0 +1,211 @@
+// Segments inserted into the constrained triangulation (constrained/segments.hpp). A segment
+// a-b walks from a: where an edge at a runs along it, that edge is a piece of the segment and
+// the walk goes on from its other end; else the triangles it crosses, up to the next vertex v
+// on it, are taken out, and the polygons left on either side of a-v are triangulated again,
+// each by the vertex c whose circle through a and v holds no other of the polygon's vertices,
+// then the two smaller polygons a..c and c..v in turn (the circles through a and v are
+// ordered, so one pass finds c). Where the walk meets a fixed edge u-w that it crosses, the
+// crossing point, exact and rounded to doubles, becomes a vertex x: u-x, x-w, a-x and x-b are
+// then inserted in the segments' place.
+#include "constrained/segments.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "predicates/predicates.hpp"
+
+namespace ridt::detail {
+namespace {
+
+std::uint64_t directed(VertexId x, VertexId y) { return (std::uint64_t{x} << 32) | y; }
+
+class Inserter {
+ public:
+  explicit Inserter(Cdt& m) : m_(m) {}
+
+  void insert(VertexId a, VertexId b) {
+    while (a != b) {
+      const Step s = step(a, b);
+      if (s.along != Cdt::kNone) {
+        m_.set_fixed(s.triangle, s.slot, true);
+        a = s.along;
+        continue;
+      }
+      a = cross(a, b, s.triangle);
+    }
+  }
+
+  std::vector<VertexId> crossings;
+
+ private:
+  struct Step {
+    VertexId along = Cdt::kNone;  // an edge a-along runs along the segment (edge `slot` of `triangle`)
+    std::uint32_t triangle = Cdt::kNone;  // else the triangle at a through which the segment leaves a
+    int slot = 0;
+  };
+
+  // Position along a -> b, exactly: by x, or by y on a vertical segment.
+  double key(VertexId a, VertexId b, VertexId v) const {
+    const auto& p = m_.pts;
+    const bool by_x = p[a].x != p[b].x;
+    const double sign = (by_x ? p[b].x - p[a].x : p[b].y - p[a].y) > 0 ? 1 : -1;
+    return sign * (by_x ? p[v].x : p[v].y);
+  }
+
+  Step step(VertexId a, VertexId b) const {
+    const auto& p = m_.pts;
+    Step s;
+    const bool found = m_.around(a, [&](std::uint32_t t) {
+      const int i = m_.corner_of(t, a);
+      const VertexId u = m_.at(t, i + 1), w = m_.at(t, i + 2);
+      if (u == b) return s = {u, t, (i + 2) % 3}, true;
+      if (w == b) return s = {w, t, (i + 1) % 3}, true;
+      const int ou = orient2d(p[a], p[b], p[u]), ow = orient2d(p[a], p[b], p[w]);
+      if (ou == 0 && key(a, b, u) > key(a, b, a) && key(a, b, u) <= key(a, b, b)) return s = {u, t, (i + 2) % 3}, true;
+      if (ow == 0 && key(a, b, w) > key(a, b, a) && key(a, b, w) <= key(a, b, b)) return s = {w, t, (i + 1) % 3}, true;
+      if (ou < 0 && ow > 0) return s = {Cdt::kNone, t, 0}, true;
+      return false;
+    });
+    if (!found) throw std::logic_error("ridt: a segment found no way out of its vertex");
+    return s;
+  }
+
+  // The corner of triangle t that is neither u nor w.
+  int opposite(std::uint32_t t, VertexId u, VertexId w) const {
+    for (int k = 0; k < 3; ++k)
+      if (m_.at(t, k) != u && m_.at(t, k) != w) return k;
+    return 0;
+  }
+
+  // a-b meets fixed edge u-w (edge k of triangle t) inside both: the rounded crossing x made a
+  // vertex, u-w replaced by u-x and x-w, a-x inserted; returns x, from where a-b goes on.
+  VertexId split_crossing(VertexId a, VertexId b, std::uint32_t t, int k) {
+    const VertexId u = m_.at(t, k + 1), w = m_.at(t, k + 2);
+    const Point x = crossing_rounded(m_.pts[a], m_.pts[b], m_.pts[u], m_.pts[w]);
+    m_.set_fixed(t, k, false);
+    const Cdt::Place at = m_.locate(t, x, false);
+    VertexId v = 0;
+    if (at.kind == Cdt::Place::Corner) {
+      v = m_.at(at.t, at.k);
+    } else {
+      v = m_.insert(x, at);
+      crossings.push_back(v);
+    }
+    insert(u, v);
+    insert(v, w);
+    insert(a, v);
+    return v;
+  }
+
+  // The triangles the segment crosses from a (leaving through triangle t) up to the next
+  // vertex v on it, replaced; returns v.
+  VertexId cross(VertexId a, VertexId b, std::uint32_t t) {
+    const auto& p = m_.pts;
+    std::vector<std::uint32_t> removed{t};
+    const int i = m_.corner_of(t, a);
+    VertexId u = m_.at(t, i + 1), w = m_.at(t, i + 2);  // u right, w left
+    std::vector<VertexId> right{a, u}, left{a, w};
+    for (std::uint32_t cur = t;;) {
+      const int k = opposite(cur, u, w);
+      if (m_.fixed[3 * cur + k]) return split_crossing(a, b, cur, k);
+      const auto next = static_cast<std::uint32_t>(m_.nbrs[3 * cur + k]);
+      removed.push_back(next);
+      const VertexId x = m_.at(next, opposite(next, u, w));
+      const int o = orient2d(p[a], p[b], p[x]);
+      if (o == 0) {
+        right.push_back(x), left.push_back(x);
+        replace(removed, right, left);
+        const std::uint32_t e = m_.find_edge(a, x);
+        m_.set_fixed(e / 3, static_cast<int>(e % 3), true);
+        return x;
+      }
+      (o < 0 ? right : left).push_back(x);
+      (o < 0 ? u : w) = x;
+      cur = next;
+    }
+  }
+
+  // The constrained Delaunay triangles of polygon `poly` (its base poly.front() - poly.back(),
+  // the rest on one side: `left` of the base's direction or right), counter-clockwise.
+  void fill(const std::vector<VertexId>& poly, std::size_t lo, std::size_t hi, bool left,
+            std::vector<VertexId>& out) const {
+    if (hi - lo < 2) return;
+    const auto& p = m_.pts;
+    const VertexId a = poly[lo], v = poly[hi];
+    std::size_t c = lo + 1;
+    for (std::size_t d = lo + 2; d < hi; ++d) {
+      const bool inside = left ? incircle(p[a], p[v], p[poly[c]], p[poly[d]]) > 0
+                               : incircle(p[a], p[poly[c]], p[v], p[poly[d]]) > 0;
+      if (inside) c = d;
+    }
+    if (left)
+      out.insert(out.end(), {a, v, poly[c]});
+    else
+      out.insert(out.end(), {a, poly[c], v});
+    fill(poly, lo, c, left, out);
+    fill(poly, c, hi, left, out);
+  }
+
+  struct Outer {
+    std::int32_t n;
+    int back;
+    std::uint8_t fixed;
+  };
+
+  // Triangles `removed` replaced by the triangulations of the polygons right and left of the
+  // segment's piece, in the same slots; the links inside and to the outside set anew.
+  void replace(const std::vector<std::uint32_t>& removed, const std::vector<VertexId>& right,
+               const std::vector<VertexId>& left) {
+    std::unordered_map<std::uint64_t, Outer> outer;  // each directed boundary edge, as its outer triangle runs it
+    const std::unordered_set<std::uint32_t> gone(removed.begin(), removed.end());
+    for (const std::uint32_t t : removed)
+      for (int k = 0; k < 3; ++k) {
+        const std::int32_t n = m_.nbrs[3 * t + k];
+        if (n >= 0 && gone.count(static_cast<std::uint32_t>(n))) continue;
+        const int back = n >= 0 ? m_.back(static_cast<std::uint32_t>(n), t) : -1;
+        outer[directed(m_.at(t, k + 1), m_.at(t, k + 2))] = {n, back, m_.fixed[3 * t + k]};
+      }
+    std::vector<VertexId> made;
+    fill(right, 0, right.size() - 1, false, made);
+    fill(left, 0, left.size() - 1, true, made);
+    if (made.size() != 3 * removed.size())
+      throw std::logic_error("ridt: a segment's polygons do not fill its triangles");
+    std::unordered_map<std::uint64_t, std::uint32_t> inner;  // (x, y) of a new triangle
+    for (std::size_t k = 0; k < removed.size(); ++k) {
+      const std::uint32_t t = removed[k];
+      for (int j = 0; j < 3; ++j) {
+        m_.tris[3 * t + j] = made[3 * k + j];
+        m_.corner[made[3 * k + j]] = 3 * t + j;
+      }
+      for (int j = 0; j < 3; ++j) inner[directed(m_.at(t, j + 1), m_.at(t, j + 2))] = t;
+    }
+    for (const std::uint32_t t : removed)
+      for (int j = 0; j < 3; ++j) {
+        const VertexId x = m_.at(t, j + 1), y = m_.at(t, j + 2);
+        if (const auto in = inner.find(directed(y, x)); in != inner.end()) {
+          m_.nbrs[3 * t + j] = static_cast<std::int32_t>(in->second);
+          m_.fixed[3 * t + j] = 0;
+        } else {
+          const Outer& o = outer.at(directed(x, y));
+          m_.nbrs[3 * t + j] = o.n;
+          m_.fixed[3 * t + j] = o.fixed;
+          if (o.n >= 0) m_.nbrs[3 * o.n + o.back] = static_cast<std::int32_t>(t);
+        }
+      }
+  }
+
+  Cdt& m_;
+};
+
+}  // namespace
+
+std::vector<VertexId> insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept) {
+  Inserter inserter(m);
+  for (std::size_t s = 0; s + 1 < segments.size(); s += 2)
+    if (kept[segments[s]] != kept[segments[s + 1]]) inserter.insert(kept[segments[s]], kept[segments[s + 1]]);
+  return std::move(inserter.crossings);
+}
+
+}  // namespace ridt::detail

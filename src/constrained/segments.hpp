@@ -1,0 +1,17 @@
+// Segments made edges of the constrained triangulation, split where they pass through a
+// vertex or cross another segment.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "constrained/cdt.hpp"
+
+namespace ridt::detail {
+
+/// Each segment (pairs of indices, flat; `kept` maps a duplicate point to the one kept) made a
+/// chain of fixed edges of m. Returns the vertices added where two segments cross (each the
+/// exact crossing rounded to doubles), in the order they were made.
+std::vector<VertexId> insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept);
+
+}  // namespace ridt::detail
