@@ -91,12 +91,10 @@ Result run_ridt(const ridt::Pslg& g, const Args& a, unsigned threads) {
   Result r;
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   r.triangles = t.size();
-  auto at = [&](ridt::VertexId v) {
-    return v < g.points.size() ? &g.points[v].x : &t.steiner[v - g.points.size()].x;
-  };
+  auto at = [&](ridt::VertexId v) { return v < g.points.size() ? &g.points[v].x : &t.steiner[v - g.points.size()].x; };
   for (std::size_t k = 0; k < t.size(); ++k)
-    r.worst_angle = std::min(r.worst_angle, smallest_angle(at(t.triangles[3 * k]), at(t.triangles[3 * k + 1]),
-                                                           at(t.triangles[3 * k + 2])));
+    r.worst_angle = std::min(
+        r.worst_angle, smallest_angle(at(t.triangles[3 * k]), at(t.triangles[3 * k + 1]), at(t.triangles[3 * k + 2])));
   return r;
 }
 
@@ -124,9 +122,10 @@ Result run_triangle(const ridt::Pslg& g, const Args& a) {
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   r.triangles = static_cast<std::size_t>(out.numberoftriangles);
   for (std::size_t k = 0; k < r.triangles; ++k)
-    r.worst_angle = std::min(r.worst_angle, smallest_angle(&out.pointlist[2 * out.trianglelist[3 * k]],
-                                                           &out.pointlist[2 * out.trianglelist[3 * k + 1]],
-                                                           &out.pointlist[2 * out.trianglelist[3 * k + 2]]));
+    r.worst_angle = std::min(
+        r.worst_angle,
+        smallest_angle(&out.pointlist[2 * out.trianglelist[3 * k]], &out.pointlist[2 * out.trianglelist[3 * k + 1]],
+                       &out.pointlist[2 * out.trianglelist[3 * k + 2]]));
   trifree(out.pointlist), trifree(out.trianglelist), trifree(out.segmentlist);
   trifree(out.pointmarkerlist), trifree(out.segmentmarkerlist);
   return r;
@@ -153,7 +152,8 @@ Result run_cgal(const ridt::Pslg& g, const Args& a) {
   if (a.task == "quality") {
     const double s = std::sin(a.angle * 3.14159265358979323846 / 180);
     const double edge = a.area > 0 ? std::sqrt(4 * a.area / std::sqrt(3.0)) * 1.5 : 0;
-    CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(), CGAL::Delaunay_mesh_size_criteria_2<Cdt>(s * s, edge));
+    CGAL::refine_Delaunay_mesh_2(cdt, seeds.begin(), seeds.end(),
+                                 CGAL::Delaunay_mesh_size_criteria_2<Cdt>(s * s, edge));
   }
   Result r;
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -202,14 +202,22 @@ Result isolated(const Code& c, const ridt::Pslg& g, const Args& a) {
 bool parse(int argc, char** argv, Args& a) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
-    if (k == "--task") a.task = v;
-    else if (k == "--n") a.n = static_cast<std::uint32_t>(std::stoul(v));
-    else if (k == "--lakes") a.lakes = static_cast<std::uint32_t>(std::stoul(v));
-    else if (k == "--extra") a.extra = static_cast<std::uint32_t>(std::stoul(v));
-    else if (k == "--angle") a.angle = std::stod(v);
-    else if (k == "--area") a.area = std::stod(v);
-    else if (k == "--reps") a.reps = std::stoi(v);
-    else return false;
+    if (k == "--task")
+      a.task = v;
+    else if (k == "--n")
+      a.n = static_cast<std::uint32_t>(std::stoul(v));
+    else if (k == "--lakes")
+      a.lakes = static_cast<std::uint32_t>(std::stoul(v));
+    else if (k == "--extra")
+      a.extra = static_cast<std::uint32_t>(std::stoul(v));
+    else if (k == "--angle")
+      a.angle = std::stod(v);
+    else if (k == "--area")
+      a.area = std::stod(v);
+    else if (k == "--reps")
+      a.reps = std::stoi(v);
+    else
+      return false;
   }
   return argc % 2 == 1 && (a.task == "cdt" || a.task == "quality");
 }
@@ -219,8 +227,9 @@ bool parse(int argc, char** argv, Args& a) {
 int main(int argc, char** argv) {
   Args a;
   if (!parse(argc, argv, a)) {
-    std::fprintf(stderr, "usage: ridt_bench_constrained [--task cdt|quality] [--n N] [--lakes L] [--extra M] "
-                         "[--angle DEG] [--area A] [--reps R]\n");
+    std::fprintf(stderr,
+                 "usage: ridt_bench_constrained [--task cdt|quality] [--n N] [--lakes L] [--extra M] "
+                 "[--angle DEG] [--area A] [--reps R]\n");
     return 2;
   }
   ridt::Pslg g = ridt::generate_coastline(a.n, a.lakes, 1);
@@ -246,7 +255,8 @@ int main(int argc, char** argv) {
   std::printf("%s of a coastline of %u vertices, %u lakes, %u more points%s; medians of %d runs\n", a.task.c_str(), a.n,
               a.lakes, a.extra,
               a.task == "quality" ? (", min angle " + ridt::bench::format("%g", a.angle) + ", max area " +
-                                     ridt::bench::format("%g", a.area)).c_str()
+                                     ridt::bench::format("%g", a.area))
+                                        .c_str()
                                   : "",
               a.reps);
   std::printf("%-20s %10s %8s %12s %10s %10s\n", "code", "seconds", "ratio", "triangles", "min angle", "MB added");
@@ -256,8 +266,8 @@ int main(int argc, char** argv) {
     for (const Result& r : runs[c]) s.push_back(r.seconds), mem.push_back(r.added_bytes);
     const double t = ridt::bench::median(s);
     if (c == 0) base = t;
-    std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), t, t / base,
-                runs[c][0].triangles, runs[c][0].worst_angle, ridt::bench::median(mem) / 1e6);
+    std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), t, t / base, runs[c][0].triangles,
+                runs[c][0].worst_angle, ridt::bench::median(mem) / 1e6);
   }
   return 0;
 }

@@ -44,6 +44,31 @@ CheckResult check(std::span<const Point> points, std::span<const VertexId> trian
 CheckResult check_constrained(std::span<const Point> points, std::span<const VertexId> triangles,
                               std::span<const VertexId> segments);
 
+/// What a constrained triangulation or quality mesh (triangulate_constrained's) must be.
+struct MeshSpec {
+  /// The mesh's segment edges (pairs, ConstrainedTriangulation::edges): each must be an edge;
+  /// they alone may be not locally Delaunay; every boundary edge must be one of them or lie on
+  /// the convex hull.
+  std::span<const VertexId> edges;
+  /// The input's segments (pairs of indices below `input_points`): each must be a chain of
+  /// `edges` from end to end through points added (index >= input_points) or points on it.
+  std::span<const VertexId> segments;
+  std::size_t input_points = 0;  ///< points before this index are the input's (0: all)
+  std::span<const Point> holes;  ///< seeds no triangle may hold, inside or on its boundary
+  /// No triangle with an angle below `min_angle` degrees (but those beside an input angle
+  /// below 60 degrees between two segments, which refinement cannot mend: counted apart) or an
+  /// area above `max_area`; 0: not checked.
+  double min_angle = 0;
+  double max_area = 0;
+};
+
+/// Checks a constrained triangulation or quality mesh: every triangle counter-clockwise and
+/// not degenerate, each directed edge used once, every interior edge locally Delaunay but the
+/// segment edges, and all that `spec` asks; exact predicates for all but the angles and areas
+/// (computed in long double, with a relative tolerance of 1e-9). `points` are every vertex:
+/// the input's, then those added.
+CheckResult check_mesh(std::span<const Point> points, std::span<const VertexId> triangles, const MeshSpec& spec);
+
 /// Checks with exact arithmetic that `triangles` is the farthest-point Delaunay triangulation
 /// of `points` (triangulate_furthest_site's, counter-clockwise): every triangle
 /// counter-clockwise and not degenerate; each directed edge used at most once; across each

@@ -23,8 +23,9 @@ struct ConstrainedTriangulation : Triangulation {
 };
 
 /// A region of the domain (Triangle's regional attributes and area constraints): every
-/// triangle reached from `seed` without crossing a segment carries `attribute`, and quality
-/// refinement keeps its triangles' areas at most `max_area` (<= 0: no bound of its own).
+/// triangle reached from `seed` without crossing a segment carries `attribute`, and its
+/// triangles are refined to areas of at most `max_area` (<= 0: no bound of its own; a bound
+/// refines even where Quality asks nothing).
 struct Region {
   Point seed;
   double attribute = 0;

@@ -11,50 +11,21 @@
 #include <string>
 #include <vector>
 
+#include "check/parts.hpp"
 #include "predicates/predicates.hpp"
 
 namespace ridt {
 namespace {
 
+using detail::check_edges;
+using detail::check_triangles;
+using detail::Edge;
+using detail::exactly_scaled;
+using detail::hull_with_collinear;
+using detail::Report;
+
 using detail::incircle;
 using detail::orient2d;
-
-class Report {
- public:
-  template <typename... Args>
-  void problem(const Args&... args) {
-    if (problems_++ == 0) {
-      std::ostringstream s;
-      (s << ... << args);
-      first_ = s.str();
-    }
-  }
-  std::size_t problems() const { return problems_; }
-  // The verdict: the first problem and their count, or `valid` when there is none.
-  CheckResult result(const std::string& valid = {}) const {
-    if (problems_ == 0) return {true, valid, 0};
-    std::ostringstream s;
-    s << "invalid: " << first_ << " (" << problems_ << " problem" << (problems_ == 1 ? "" : "s") << ")";
-    return {false, s.str(), problems_};
-  }
-
- private:
-  std::size_t problems_ = 0;
-  std::string first_;
-};
-
-using Edge = std::pair<VertexId, VertexId>;
-
-// Huge or tiny coordinates: an exactly scaled copy keeps the predicates on their fast path.
-// Empty when the input needs none.
-std::vector<Point> exactly_scaled(std::span<const Point> input) {
-  std::vector<Point> scaled;
-  if (const int k = detail::exact_scale_exponent(input); k != 0) {
-    scaled.reserve(input.size());
-    for (const Point& p : input) scaled.push_back({std::ldexp(p.x, k), std::ldexp(p.y, k)});
-  }
-  return scaled;
-}
 
 // The points' indices sorted lexicographically (equal points by index), the first index of
 // each group of equal points, and whether the distinct points are fewer than three or
@@ -86,84 +57,6 @@ Distinct group_distinct(std::span<const Point> pts) {
     collinear = orient2d(pts[d.first[0]], pts[d.first[1]], pts[d.first[i]]) == 0;
   d.degenerate = d.first.size() < 3 || collinear;
   return d;
-}
-
-// Every index in range, every triangle counter-clockwise and not degenerate; marks the
-// vertices used.
-void check_triangles(std::span<const Point> pts, std::span<const VertexId> tris, std::vector<std::uint8_t>& used,
-                     Report& report) {
-  const std::size_t n = pts.size();
-  for (std::size_t t = 0; t < tris.size() / 3; ++t) {
-    const VertexId* v = &tris[3 * t];
-    if (v[0] >= n || v[1] >= n || v[2] >= n) {
-      report.problem("triangle ", t, " has a vertex index out of range");
-      continue;
-    }
-    if (orient2d(pts[v[0]], pts[v[1]], pts[v[2]]) <= 0)
-      report.problem("triangle ", t, " (", v[0], " ", v[1], " ", v[2], ") is not counter-clockwise or is degenerate");
-    used[v[0]] = used[v[1]] = used[v[2]] = 1;
-  }
-}
-
-// Every directed edge used once, every interior edge locally Delaunay but those of segments
-// (`constrained`: (lo, hi), sorted). Returns the boundary edges, directed as their triangles run.
-//
-// Every side of every triangle is filed under its smaller vertex (a counting sort), then
-// ordered by the larger one within each file, so that the two sides of an interior edge lie
-// next to each other. Linear time but for vertices of very high degree.
-std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const VertexId> tris,
-                              const std::vector<Edge>& constrained, Report& report) {
-  const std::size_t n = pts.size(), count = tris.size() / 3;
-  struct Side {
-    VertexId hi;
-    std::uint32_t tri_dir;  // triangle * 2 + (1 if the triangle runs lo -> hi)
-  };
-  auto side_end = [&](std::size_t k) { return tris[k % 3 == 2 ? k - 2 : k + 1]; };
-  std::vector<std::uint32_t> file(n + 1, 0);
-  for (std::size_t k = 0; k < 3 * count; ++k) ++file[std::min(tris[k], side_end(k)) + 1];
-  std::partial_sum(file.begin(), file.end(), file.begin());
-  std::vector<Side> sides(3 * count);
-  {
-    std::vector<std::uint32_t> at(file.begin(), file.end() - 1);
-    for (std::size_t k = 0; k < 3 * count; ++k) {
-      const VertexId a = tris[k], b = side_end(k);
-      sides[at[std::min(a, b)]++] = {std::max(a, b), 2 * static_cast<std::uint32_t>(k / 3) + (a < b ? 1u : 0u)};
-    }
-  }
-  // The vertex of triangle t opposite its edge {a, b}.
-  auto opposite = [&](std::uint32_t t, VertexId a, VertexId b) {
-    const VertexId* w = &tris[3 * std::size_t{t}];
-    return w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
-  };
-  std::vector<Edge> boundary;
-  for (VertexId lo = 0; lo < n; ++lo) {
-    Side* const begin = sides.data() + file[lo];
-    Side* const end = sides.data() + file[lo + 1];
-    std::sort(begin, end,
-              [](const Side& x, const Side& y) { return x.hi < y.hi || (x.hi == y.hi && x.tri_dir < y.tri_dir); });
-    for (Side* e = begin; e != end;) {
-      Side* run = e;
-      while (e != end && e->hi == run->hi) ++e;
-      const VertexId hi = run->hi;
-      if (e - run == 1) {
-        if (run->tri_dir & 1)
-          boundary.emplace_back(lo, hi);
-        else
-          boundary.emplace_back(hi, lo);
-      } else if (e - run > 2 || (run[0].tri_dir & 1) == (run[1].tri_dir & 1)) {
-        report.problem("edge ", lo, "-", hi, " is used by two triangles in the same direction");
-      } else {
-        if (std::binary_search(constrained.begin(), constrained.end(), Edge{lo, hi})) continue;  // a segment's
-        const std::uint32_t t = run[0].tri_dir >> 1, u = run[1].tri_dir >> 1;
-        const VertexId* v = &tris[3 * std::size_t{t}];
-        const VertexId o = opposite(u, lo, hi);
-        if (incircle(pts[v[0]], pts[v[1]], pts[v[2]], pts[o]) > 0)
-          report.problem("edge ", lo, "-", hi, " is not locally Delaunay (vertex ", o,
-                         " lies inside the circle of triangle ", t, ")");
-      }
-    }
-  }
-  return boundary;
 }
 
 // For each point, the member of its group of equal points that stands for it: the one that
@@ -236,24 +129,6 @@ std::size_t check_vertices(std::span<const Point> pts, const Distinct& d, const 
     if (in_use > 1) report.problem("point ", d.sorted[i], " appears as ", in_use, " vertices");
   }
   return vertices;
-}
-
-// The convex hull, counter-clockwise, with points on its edges kept, over distinct points
-// given as indices sorted lexicographically (Andrew's monotone chain). Requires at least three
-// non-collinear points.
-std::vector<VertexId> hull_with_collinear(std::span<const Point> pts, const std::vector<VertexId>& sorted) {
-  std::vector<VertexId> h;
-  auto chain = [&](auto begin, auto end) {
-    const std::size_t base = h.size();
-    for (auto it = begin; it != end; ++it) {
-      while (h.size() >= base + 2 && orient2d(pts[h[h.size() - 2]], pts[h.back()], pts[*it]) < 0) h.pop_back();
-      h.push_back(*it);
-    }
-    h.pop_back();  // the last point starts the other chain
-  };
-  chain(sorted.begin(), sorted.end());
-  chain(sorted.rbegin(), sorted.rend());
-  return h;
 }
 
 // Triangles exactly when the points are not degenerate; then the boundary is the convex hull

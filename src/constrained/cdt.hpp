@@ -55,9 +55,7 @@ class Cdt {
     }
   }
 
-  int corner_of(std::uint32_t t, VertexId v) const {
-    return tris[3 * t] == v ? 0 : tris[3 * t + 1] == v ? 1 : 2;
-  }
+  int corner_of(std::uint32_t t, VertexId v) const { return tris[3 * t] == v ? 0 : tris[3 * t + 1] == v ? 1 : 2; }
   VertexId at(std::uint32_t t, int k) const { return tris[3 * t + k % 3]; }
   /// The slot of triangle n that looks back at t.
   int back(std::uint32_t n, std::uint32_t t) const {

@@ -74,7 +74,8 @@ void canonical(ConstrainedTriangulation& out, unsigned threads) {
     return std::pair{(std::uint64_t{v[0]} << 32) | v[1], v[2]};
   };
   std::unordered_map<std::uint64_t, std::vector<std::pair<VertexId, double>>> attribute;
-  for (std::size_t t = 0; t < out.attributes.size(); ++t) attribute[key(t).first].push_back({key(t).second, out.attributes[t]});
+  for (std::size_t t = 0; t < out.attributes.size(); ++t)
+    attribute[key(t).first].push_back({key(t).second, out.attributes[t]});
   detail::canonicalize(out, threads);
   for (std::size_t t = 0; t < out.attributes.size(); ++t)
     for (const auto& [third, value] : attribute.at(key(t).first))
@@ -99,8 +100,7 @@ void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain
 }  // namespace
 
 ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
-                                                 const Options& options, const Domain& domain,
-                                                 const Quality& quality) {
+                                                 const Options& options, const Domain& domain, const Quality& quality) {
   check_input(points, segments, domain, quality);
   Options plain = options;
   plain.canonical_order = false;
@@ -122,13 +122,20 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (Point& h : holes) h = scaled(h, scale);
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
   const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
-  if (quality.enabled()) {
-    detail::Refinement r{quality.min_angle, std::ldexp(quality.max_area, 2 * scale), {}, quality.split_boundary,
-                         quality.max_steiner, static_cast<VertexId>(points.size() + out.crossings)};
-    for (const Region& g : domain.regions) r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
+  const bool refined = quality.enabled() || std::any_of(domain.regions.begin(), domain.regions.end(),
+                                                        [](const Region& g) { return g.max_area > 0; });
+  if (refined) {
+    detail::Refinement r{quality.min_angle,
+                         std::ldexp(quality.max_area, 2 * scale),
+                         {},
+                         quality.split_boundary,
+                         quality.max_steiner,
+                         static_cast<VertexId>(points.size() + out.crossings)};
+    for (const Region& g : domain.regions)
+      r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
     if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
   }
-  collect(m, out, domain, points.size(), scale, carved || quality.enabled());
+  collect(m, out, domain, points.size(), scale, carved || refined);
   if (options.canonical_order) canonical(out, options.threads);
   return out;
 }

@@ -77,7 +77,8 @@ bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& r
       if (m.nbrs[3 * t + j] < 0 && !m.fixed[3 * t + j]) flood<std::uint8_t>(m, t, gone, 1);
   std::uint32_t from = 0;
   for (const Point& h : holes)
-    if (const std::int64_t t = holding(m, h, from); t >= 0) flood<std::uint8_t>(m, static_cast<std::uint32_t>(t), gone, 1);
+    if (const std::int64_t t = holding(m, h, from); t >= 0)
+      flood<std::uint8_t>(m, static_cast<std::uint32_t>(t), gone, 1);
   const bool removed = std::find(gone.begin(), gone.end(), 1) != gone.end();
   if (removed) remove(m, gone);
   if (regions.empty()) return removed;

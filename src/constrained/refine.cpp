@@ -11,9 +11,9 @@
 #include "constrained/refine.hpp"
 
 #include <algorithm>
-#include <vector>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "predicates/predicates.hpp"
 #include "queries/circumcentre.hpp"
@@ -21,7 +21,9 @@
 namespace ridt::detail {
 namespace {
 
-double dot(const Point& a, const Point& b, const Point& p) { return (a.x - p.x) * (b.x - p.x) + (a.y - p.y) * (b.y - p.y); }
+double dot(const Point& a, const Point& b, const Point& p) {
+  return (a.x - p.x) * (b.x - p.x) + (a.y - p.y) * (b.y - p.y);
+}
 double dist2(const Point& a, const Point& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
 
 constexpr double kGood = std::numeric_limits<double>::infinity();
@@ -135,7 +137,8 @@ class Refiner {
     const Point &a = m_.pts[m_.at(t, k + 1)], &b = m_.pts[m_.at(t, k + 2)];
     if (dot(a, b, m_.pts[m_.at(t, k)]) < 0) return true;
     const std::int32_t n = m_.nbrs[s];
-    return n >= 0 && dot(a, b, m_.pts[m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t))]) < 0;
+    return n >= 0 &&
+        dot(a, b, m_.pts[m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t))]) < 0;
   }
 
   // The corners at the ends of the chain of subsegments v lies on ({v} for a corner).
@@ -238,7 +241,7 @@ class Refiner {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     const Cdt::Place at = m_.locate(b.t, p, true);
     if (at.kind == Cdt::Place::Corner) return;
-      const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
+    const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
     if (blocked) hit_.assign(1, 3 * at.t + at.k);
     std::vector<std::uint32_t>& hit = blocked ? hit_ : would_encroach(p, at);
     std::erase_if(hit, [&](std::uint32_t s) { return !splittable(s); });
@@ -304,8 +307,9 @@ void Refiner::split(std::uint32_t s) {
   const int k = static_cast<int>(s % 3);
   const VertexId x = m_.at(t, k + 1), y = m_.at(t, k + 2);
   const Point p = split_point(x, y);
-  const std::pair<VertexId, VertexId> chain =
-      corner(x) && corner(y) ? std::pair{x, y} : corner(x) ? ends_[y] : ends_[x];
+  const std::pair<VertexId, VertexId> chain = corner(x) && corner(y) ? std::pair{x, y}
+      : corner(x)                                                    ? ends_[y]
+                                                                     : ends_[x];
   VertexId v = 0;
   if (fits_on_edge(t, k, p)) {
     v = m_.insert(p, {Cdt::Place::Edge, t, k});
@@ -317,7 +321,8 @@ void Refiner::split(std::uint32_t s) {
     m_.set_fixed(t, k, false);
     v = m_.insert(p, at);
     for (const VertexId e : {x, y})
-      if (const std::uint32_t f = m_.find_edge(v, e); f != Cdt::kNone) m_.set_fixed(f / 3, static_cast<int>(f % 3), true);
+      if (const std::uint32_t f = m_.find_edge(v, e); f != Cdt::kNone)
+        m_.set_fixed(f / 3, static_cast<int>(f % 3), true);
   }
   ends_.resize(m_.pts.size(), {Cdt::kNone, Cdt::kNone});
   ends_[v] = chain;
@@ -352,13 +357,19 @@ void Refiner::find_small_angles() {
   }
 }
 
-// Shewchuk's terminator, simplified: subsegment s, near the apex of a cluster, is not split
-// for triangle t when the point would land closer to one of its ends than t's shortest edge
-// is long; t then stays as it is (its small angle comes from the input's).
+// Shewchuk's terminator, simplified: triangle t, with a vertex on a chain that ends at a
+// small angle, is left as it is where its point would have subsegment s, there, split closer
+// to one of its ends than t's shortest edge is long (t's small angle then comes from the
+// input's, and splitting on would only cut the shells finer).
 bool Refiner::terminated(std::uint32_t s, std::uint32_t t) const {
   const VertexId x = m_.at(s / 3, static_cast<int>(s % 3) + 1), y = m_.at(s / 3, static_cast<int>(s % 3) + 2);
   const auto [z1, z2] = corner(x) && corner(y) ? std::pair{x, y} : corner(x) ? ends_[y] : ends_[x];
   if (z1 == Cdt::kNone || !(small_[z1] || small_[z2])) return false;
+  auto beside = [&](VertexId v) {
+    if (corner(v)) return small_[v] != 0;
+    return ends_[v].first != Cdt::kNone && (small_[ends_[v].first] || small_[ends_[v].second]);
+  };
+  if (!beside(m_.tris[3 * t]) && !beside(m_.tris[3 * t + 1]) && !beside(m_.tris[3 * t + 2])) return false;
   const Point p = split_point(x, y);
   const double radius = std::min(dist2(p, m_.pts[x]), dist2(p, m_.pts[y]));
   const Point &a = m_.pts[m_.tris[3 * t]], &b = m_.pts[m_.tris[3 * t + 1]], &c = m_.pts[m_.tris[3 * t + 2]];

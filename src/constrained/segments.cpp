@@ -136,8 +136,8 @@ class Inserter {
     const VertexId a = poly[lo], v = poly[hi];
     std::size_t c = lo + 1;
     for (std::size_t d = lo + 2; d < hi; ++d) {
-      const bool inside = left ? incircle(p[a], p[v], p[poly[c]], p[poly[d]]) > 0
-                               : incircle(p[a], p[poly[c]], p[v], p[poly[d]]) > 0;
+      const bool inside =
+          left ? incircle(p[a], p[v], p[poly[c]], p[poly[d]]) > 0 : incircle(p[a], p[poly[c]], p[v], p[poly[d]]) > 0;
       if (inside) c = d;
     }
     if (left)

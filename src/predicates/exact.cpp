@@ -229,8 +229,7 @@ namespace {
 // N = area(u, w, a), D = N - area(u, w, b). Its coordinate `axis` (0: x, 1: y), the value v,
 // compared exactly with (c1 + c2) / 2: sign(2 v - c1 - c2) = sign((2a - c1 - c2) D + 2 (b - a) N)
 // times sign(D).
-int compare_crossing(const Point& a, const Point& b, const Point& u, const Point& w, int axis, double c1,
-                     double c2) {
+int compare_crossing(const Point& a, const Point& b, const Point& u, const Point& w, int axis, double c1, double c2) {
   const int e = std::min(min_ulp_exponent({a.x, a.y, b.x, b.y, u.x, u.y, w.x, w.y}), min_ulp_exponent({c1, c2}));
   auto big = [e](double x) { return BigInt::from_double(x, e); };
   auto area = [&](const Point& p, const Point& q, const Point& r) {

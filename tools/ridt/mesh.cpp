@@ -1,7 +1,8 @@
-// ridt mesh INPUT.poly -o OUT.ele [--convex-hull] [--switches pcz] [--method M] [--threads N]:
-// the constrained Delaunay triangulation of a planar straight-line graph, written as Triangle
-// writes it: OUT.ele, OUT.node (every vertex, in the input's numbering) and OUT.edge (the
-// segments' edges).
+// ridt mesh INPUT.poly -o OUT.ele [--quality DEG] [--max-area A] [--convex-hull] [--switches pq30a0.1]
+// ...: the constrained Delaunay triangulation or quality mesh of a planar straight-line graph,
+// written as Triangle writes it: OUT.ele, OUT.node (every vertex: the input's in its numbering,
+// then the points added) and OUT.edge (the segments' edges), OUT.neigh with -n.
+#include <cstdlib>
 #include <filesystem>
 
 #include "command.hpp"
@@ -14,46 +15,74 @@ struct Args {
   std::string input, output, switches;
   std::string method = "auto";
   unsigned threads = 0;
-  bool convex_hull = false, zero_based = false;
+  double quality = -1, max_area = 0;
+  bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
+       neighbours = false;
 };
 
-// Triangle's switches that ridt takes: p (a .poly: always), c (keep the convex hull), z
-// (number from 0), Q (quiet); the others are refused by name.
+// The number that follows switch `at` in Triangle's switch string (digits, '.', 'e' and a sign
+// after 'e'), or "" where none does; `at` moves past it.
+std::string number_after(const std::string& s, std::size_t& at) {
+  std::size_t end = at + 1;
+  while (end < s.size() &&
+         (std::isdigit(static_cast<unsigned char>(s[end])) || s[end] == '.' || s[end] == 'e' ||
+          ((s[end] == '-' || s[end] == '+') && s[end - 1] == 'e')))
+    ++end;
+  std::string n = s.substr(at + 1, end - at - 1);
+  at = end - 1;
+  return n;
+}
+
+double parse_number(const std::string& text, char sw) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') throw InputError(std::string("switch '") + sw + "': bad number '" + text + "'");
+  return v;
+}
+
+// Triangle's switches that ridt takes: p (a .poly: always), q[DEG] (quality, 20 degrees where no
+// number follows), a[AREA] (an area bound; with no number, the regions' own), A (regional
+// attributes), c (keep the convex hull), Y (no points added on the boundary), n (.neigh),
+// z (number from 0), Q and V (quiet, verbose: ignored); the others are refused by name.
 void apply_switches(Args& a) {
-  for (const char c : a.switches) {
-    switch (c) {
-      case 'p':
-      case 'Q':
-        break;
-      case 'c':
-        a.convex_hull = true;
-        break;
-      case 'z':
-        a.zero_based = true;
-        break;
-      case 'q':
-        throw InputError("switch 'q' (a quality mesh) is not supported yet");
-      case 'a':
-        throw InputError("switch 'a' (an area bound) is not supported yet");
-      default:
-        throw InputError(std::string("unknown or unsupported switch '") + c + "' (ridt takes p, c, z and Q)");
+  const std::string& s = a.switches;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == 'q') {
+      const std::string n = number_after(s, i);
+      a.quality = n.empty() ? 20 : parse_number(n, c);
+    } else if (c == 'a') {
+      const std::string n = number_after(s, i);
+      if (n.empty())
+        a.region_areas = true;
+      else
+        a.max_area = parse_number(n, c);
+    } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
+      (c == 'A' ? a.attributes : c == 'c' ? a.convex_hull : c == 'Y' ? a.no_boundary : c == 'n' ? a.neighbours
+                                                                                                   : a.zero_based) = true;
+    } else if (c != 'p' && c != 'Q' && c != 'V') {
+      throw InputError(std::string("unknown or unsupported switch '") + c + "' (ridt takes p, q, a, A, c, Y, n, z, Q, V)");
     }
   }
 }
 
-// OUT.ele, OUT.node, OUT.edge: all or, on an error, none.
+// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none.
 void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
   if (std::filesystem::path(a.output).extension() != ".ele")
     throw InputError("mesh writes Triangle's files: give -o OUT.ele (OUT.node and OUT.edge are written beside it)");
   const int first = a.zero_based ? 0 : g.first_index;
   const std::filesystem::path base = std::filesystem::path(a.output).replace_extension();
-  const std::string node = base.string() + ".node", edge = base.string() + ".edge";
+  const std::string node = base.string() + ".node", edge = base.string() + ".edge", neigh = base.string() + ".neigh";
+  std::vector<Point> all = g.points;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
   try {
-    io::write_triangulation(a.output, g.points, t, first);
-    io::write_points(node, g.points, first);
+    io::write_elements(a.output, t.triangles, a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(),
+                       first);
+    io::write_points(node, all, first);
     io::write_edges(edge, t.edges, first);
+    if (a.neighbours) io::write_triangulation(neigh, all, t, first);
   } catch (...) {
-    for (const std::string& f : {a.output, node, edge}) std::filesystem::remove(f);
+    for (const std::string& f : {a.output, node, edge, neigh}) std::filesystem::remove(f);
     throw;
   }
 }
@@ -61,9 +90,6 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
 int run(Args a) {
   apply_switches(a);
   const io::Pslg g = io::read_pslg(a.input);
-  if (!g.regions.empty())
-    throw InputError(a.input + ": regional attributes and area bounds are not supported yet (" +
-                     std::to_string(g.regions.size()) + " regions)");
   Options o;
   o.method = parse<Method>(a.method);
   o.threads = a.threads;
@@ -71,8 +97,16 @@ int run(Args a) {
   Domain domain;
   domain.convex_hull = a.convex_hull;
   domain.holes = g.holes;
-  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain);
+  for (const auto& r : g.regions) domain.regions.push_back({{r[0], r[1]}, r[2], a.region_areas ? r[3] : 0});
+  Quality q;
+  q.min_angle = a.quality > 0 ? a.quality : 0;
+  q.max_area = a.max_area;
+  q.split_boundary = !a.no_boundary;
+  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
+  if (t.crossings > 0)
+    std::fprintf(stderr, "ridt: %zu points added where segments cross (the first %zu added points)\n", t.crossings,
+                 t.crossings);
   write_mesh(a, g, t);
   return 0;
 }
@@ -81,12 +115,19 @@ int run(Args a) {
 
 Command add_mesh(CLI::App& app) {
   auto a = std::make_shared<Args>();
-  CLI::App* mesh = app.add_subcommand("mesh", "the constrained Delaunay triangulation of a .poly file (Triangle's -p)");
+  CLI::App* mesh = app.add_subcommand(
+      "mesh", "the constrained Delaunay triangulation or quality mesh of a .poly file (Triangle's -p, -q, -a)");
   mesh->add_option("input", a->input, "a planar straight-line graph: .poly (Triangle's)")->required();
   mesh->add_option("-o,--output", a->output, "OUT.ele; OUT.node and OUT.edge are written beside it")->required();
+  mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
+  mesh->add_option("--max-area", a->max_area, "no triangle larger than A (Triangle's -a)");
+  mesh->add_flag("--region-areas", a->region_areas, "the regions' own area bounds (Triangle's -a with no number)");
+  mesh->add_flag("--attributes", a->attributes, "each triangle's regional attribute in OUT.ele (Triangle's -A)");
+  mesh->add_flag("--no-boundary-steiner", a->no_boundary, "no points added on the boundary (Triangle's -Y)");
   mesh->add_flag("--convex-hull", a->convex_hull,
                  "keep every triangle of the convex hull (Triangle's -c); else what the segments enclose");
-  mesh->add_option("--switches", a->switches, "Triangle's switches: p, c, z (number from 0) and Q are taken");
+  mesh->add_flag("--neighbours", a->neighbours, "write OUT.neigh too (Triangle's -n)");
+  mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, Y, n, z, Q and V are taken");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {mesh, [a] { return run(*a); }};

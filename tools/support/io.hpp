@@ -75,6 +75,11 @@ Pslg parse_pslg(std::string_view data, const std::string& name);
 /// `first_index`, each with boundary marker 1 (they are segments).
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index);
 
+/// Writes triangles as Triangle's .ele file, numbered from `first_index`, with one attribute a
+/// triangle where `attributes` is not empty (Triangle's -A).
+void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
+                    int first_index);
+
 /// The extensions of each kind of file, for a help text ("a, b or text").
 std::string point_formats();
 std::string triangle_formats();

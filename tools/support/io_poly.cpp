@@ -109,6 +109,22 @@ PointFile read_poly_points(const std::string& path, std::string_view text) {
   return PointFile(std::move(g.points), g.first_index);
 }
 
+void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
+                    int first_index) {
+  detail::Writer out(path);
+  const std::size_t nt = triangles.size() / 3;
+  const bool attribute = !attributes.empty();
+  out.put_int(static_cast<std::int64_t>(nt));
+  out.put(attribute ? " 3 1\n" : " 3 0\n");
+  for (std::size_t k = 0; k < nt; ++k) {
+    out.put_int(static_cast<std::int64_t>(k) + first_index);
+    for (int i = 0; i < 3; ++i) out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
+    if (attribute) out.put(' '), out.put_double(attributes[k]);
+    out.put('\n');
+  }
+  out.commit();
+}
+
 }  // namespace ridt::io::detail
 
 namespace ridt::io {
@@ -122,6 +138,22 @@ void write_edges(const std::string& path, std::span<const VertexId> edges, int f
     for (int e = 0; e < 2; ++e)
       out.put(' '), out.put_int(static_cast<std::int64_t>(edges[k + static_cast<std::size_t>(e)]) + first_index);
     out.put(" 1\n");
+  }
+  out.commit();
+}
+
+void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
+                    int first_index) {
+  detail::Writer out(path);
+  const std::size_t nt = triangles.size() / 3;
+  const bool attribute = !attributes.empty();
+  out.put_int(static_cast<std::int64_t>(nt));
+  out.put(attribute ? " 3 1\n" : " 3 0\n");
+  for (std::size_t k = 0; k < nt; ++k) {
+    out.put_int(static_cast<std::int64_t>(k) + first_index);
+    for (int i = 0; i < 3; ++i) out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
+    if (attribute) out.put(' '), out.put_double(attributes[k]);
+    out.put('\n');
   }
   out.commit();
 }

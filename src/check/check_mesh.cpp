@@ -1,0 +1,251 @@
+// check_mesh (ridt/check.hpp): a constrained triangulation or quality mesh validated against
+// what it was asked: its segment edges, the input's segments as chains of them, holes empty,
+// angles and areas.
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "check/parts.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/check.hpp"
+
+namespace ridt {
+namespace {
+
+using detail::Edge;
+using detail::orient2d;
+using detail::Report;
+
+std::uint64_t key(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
+
+// Boundary edges that are no segment's must lie on the convex hull of the vertices.
+void check_boundary(std::span<const Point> pts, const std::vector<std::uint8_t>& used, const std::vector<Edge>& boundary,
+                    const std::unordered_set<std::uint64_t>& segment, Report& report) {
+  std::vector<Edge> open;
+  for (const Edge& e : boundary)
+    if (!segment.count(key(e.first, e.second))) open.push_back(e);
+  if (open.empty()) return;
+  std::vector<VertexId> sorted;
+  for (VertexId v = 0; v < pts.size(); ++v)
+    if (used[v]) sorted.push_back(v);
+  std::sort(sorted.begin(), sorted.end(), [&](VertexId a, VertexId b) { return detail::lex_less(pts[a], pts[b]); });
+  const std::vector<VertexId> hull = detail::hull_with_collinear(pts, sorted);
+  std::unordered_set<std::uint64_t> on_hull;
+  for (std::size_t i = 0; i < hull.size(); ++i)
+    on_hull.insert((std::uint64_t{hull[i]} << 32) | hull[(i + 1) % hull.size()]);
+  for (const Edge& e : open)
+    if (!on_hull.count((std::uint64_t{e.first} << 32) | e.second))
+      report.problem("boundary edge ", e.first, "-", e.second, " is neither a segment's nor on the convex hull");
+}
+
+// The segment edges as lists of neighbours.
+std::vector<std::vector<VertexId>> adjacency(std::size_t n, std::span<const VertexId> edges) {
+  std::vector<std::vector<VertexId>> adj(n);
+  for (std::size_t k = 0; k + 1 < edges.size(); k += 2) adj[edges[k]].push_back(edges[k + 1]), adj[edges[k + 1]].push_back(edges[k]);
+  return adj;
+}
+
+// Each input segment a-b a chain of segment edges: a search from a through added points near
+// the segment (within its box, grown by 10^-6 of its length) and input points exactly on it.
+// Marks, per vertex, the segments whose chain it is on.
+void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::vector<std::uint8_t>& used,
+                  std::vector<std::vector<std::uint32_t>>& on, Report& report) {
+  const auto adj = adjacency(pts.size(), spec.edges);
+  const std::size_t input = spec.input_points == 0 ? pts.size() : spec.input_points;
+  std::unordered_map<std::uint64_t, VertexId> vertex_at;  // an unused duplicate stands for the used one
+  auto bits = [](const Point& p) { return std::hash<double>{}(p.x) * 31 + std::hash<double>{}(p.y); };
+  for (VertexId v = 0; v < pts.size(); ++v)
+    if (used[v]) vertex_at.emplace(bits(pts[v]), v);
+  auto stand = [&](VertexId v) {
+    const auto it = vertex_at.find(bits(pts[v]));
+    return used[v] || it == vertex_at.end() || !(pts[it->second] == pts[v]) ? v : it->second;
+  };
+  std::vector<VertexId> from(pts.size(), 0);
+  std::vector<std::uint32_t> seen(pts.size(), 0);
+  for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) {
+    if (spec.segments[s] >= input || spec.segments[s + 1] >= input) {
+      report.problem("segment ", s / 2, " refers to a point that is not one of the input's ", input);
+      continue;
+    }
+    const VertexId a = stand(spec.segments[s]), b = stand(spec.segments[s + 1]);
+    if (a == b) continue;
+    const double grow = 1e-6 * std::max(std::fabs(pts[a].x - pts[b].x), std::fabs(pts[a].y - pts[b].y));
+    const double x0 = std::min(pts[a].x, pts[b].x) - grow, x1 = std::max(pts[a].x, pts[b].x) + grow;
+    const double y0 = std::min(pts[a].y, pts[b].y) - grow, y1 = std::max(pts[a].y, pts[b].y) + grow;
+    auto near = [&](VertexId v) {
+      const Point& p = pts[v];
+      if (v == b) return true;
+      if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
+      return v >= input || orient2d(pts[a], pts[b], p) == 0;
+    };
+    const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
+    std::vector<VertexId> todo{a};
+    seen[a] = stamp;
+    while (!todo.empty() && seen[b] != stamp) {
+      const VertexId v = todo.back();
+      todo.pop_back();
+      for (const VertexId w : adj[v])
+        if (seen[w] != stamp && near(w)) seen[w] = stamp, from[w] = v, todo.push_back(w);
+    }
+    if (seen[b] != stamp) {
+      report.problem("segment ", s / 2, " (", spec.segments[s], "-", spec.segments[s + 1],
+                     ") is not a chain of segment edges");
+      continue;
+    }
+    for (VertexId v = b;; v = from[v]) {
+      on[v].push_back(static_cast<std::uint32_t>(s / 2));
+      if (v == a) break;
+    }
+  }
+}
+
+// No hole's seed inside or on any triangle: the seeds sorted by x, each triangle tested
+// against those within its x range.
+void check_holes(std::span<const Point> pts, std::span<const VertexId> tris, std::span<const Point> holes,
+                 Report& report) {
+  std::vector<Point> h(holes.begin(), holes.end());
+  std::sort(h.begin(), h.end(), [](const Point& a, const Point& b) { return a.x < b.x; });
+  for (std::size_t t = 0; t < tris.size() / 3; ++t) {
+    const Point &a = pts[tris[3 * t]], &b = pts[tris[3 * t + 1]], &c = pts[tris[3 * t + 2]];
+    const double lo = std::min({a.x, b.x, c.x}), hi = std::max({a.x, b.x, c.x});
+    auto it = std::lower_bound(h.begin(), h.end(), lo, [](const Point& p, double x) { return p.x < x; });
+    for (; it != h.end() && it->x <= hi; ++it)
+      if (orient2d(a, b, *it) >= 0 && orient2d(b, c, *it) >= 0 && orient2d(c, a, *it) >= 0)
+        report.problem("triangle ", t, " holds the hole seed (", it->x, ", ", it->y, ")");
+  }
+}
+
+// The chains of segment edges between corners (input points, and added points where other
+// than two segment edges meet): each chain's two ends, and per vertex the chains it lies on.
+struct Chains {
+  std::vector<std::pair<VertexId, VertexId>> ends;
+  std::vector<std::vector<std::uint32_t>> on;
+  std::vector<std::uint8_t> small;  // per vertex: a corner where two chains meet below 60 degrees
+};
+
+Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input) {
+  const auto adj = adjacency(pts.size(), edges);
+  Chains c;
+  c.on.resize(pts.size());
+  c.small.assign(pts.size(), 0);
+  auto corner = [&](VertexId v) { return v < input || adj[v].size() != 2; };
+  for (VertexId z = 0; z < pts.size(); ++z) {
+    if (!corner(z)) continue;
+    for (const VertexId first : adj[z]) {
+      VertexId prev = z, v = first;
+      std::vector<VertexId> inside;
+      while (!corner(v)) inside.push_back(v), std::swap(prev, v), v = adj[prev][0] == v ? adj[prev][1] : adj[prev][0];
+      if (v < z || (v == z && !inside.empty() && inside.front() > inside.back())) continue;  // walked from v's side
+      const auto id = static_cast<std::uint32_t>(c.ends.size());
+      c.ends.emplace_back(z, v);
+      c.on[z].push_back(id);
+      if (v != z) c.on[v].push_back(id);
+      for (const VertexId w : inside) c.on[w].push_back(id);
+    }
+  }
+  // The angle at each corner between the straight lines to its chains' other ends.
+  for (VertexId z = 0; z < pts.size(); ++z)
+    for (std::size_t i = 0; i < c.on[z].size(); ++i)
+      for (std::size_t j = i + 1; j < c.on[z].size(); ++j) {
+        auto other = [&](std::uint32_t k) { return c.ends[k].first == z ? c.ends[k].second : c.ends[k].first; };
+        const Point &o = pts[z], &u = pts[other(c.on[z][i])], &w = pts[other(c.on[z][j])];
+        const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
+        if (std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) < 3.14159265358979323846 / 3) c.small[z] = 1;
+      }
+  return c;
+}
+
+struct Shape {
+  long double smallest = 180, largest_area = 0;
+  std::size_t excused = 0;
+};
+
+// Angles and areas: a triangle below the angle is excused where one of its vertices lies on a
+// chain of segment edges that ends at an input angle below 60 degrees (refinement stops short
+// of those, as its concentric shells reach them).
+Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
+                  const Chains& chains, Report& report) {
+  Shape shape;
+  const long double pi = 3.14159265358979323846264338327950288L;
+  // A vertex on a chain that ends at a corner with a small angle: refinement stops there.
+  auto beside_small_angle = [&](VertexId v) {
+    for (const std::uint32_t k : chains.on[v])
+      if (chains.small[chains.ends[k].first] || chains.small[chains.ends[k].second]) return true;
+    return false;
+  };
+  for (std::size_t t = 0; t < tris.size() / 3; ++t) {
+    const VertexId* v = &tris[3 * t];
+    long double worst = 180;
+    for (int i = 0; i < 3; ++i) {
+      const Point &o = pts[v[i]], &u = pts[v[(i + 1) % 3]], &w = pts[v[(i + 2) % 3]];
+      const long double ux = u.x - (long double)o.x, uy = u.y - (long double)o.y;
+      const long double wx = w.x - (long double)o.x, wy = w.y - (long double)o.y;
+      worst = std::min(worst, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / pi);
+    }
+    const Point &a = pts[v[0]], &b = pts[v[1]], &c = pts[v[2]];
+    const long double area = std::fabs((b.x - (long double)a.x) * (c.y - (long double)a.y) -
+                                       (b.y - (long double)a.y) * (c.x - (long double)a.x)) / 2;
+    shape.smallest = std::min(shape.smallest, worst);
+    shape.largest_area = std::max(shape.largest_area, area);
+    if (spec.max_area > 0 && area > spec.max_area * (1 + 1e-9L))
+      report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec.max_area);
+    if (spec.min_angle > 0 && worst < spec.min_angle * (1 - 1e-9L)) {
+      if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]))
+        ++shape.excused;
+      else
+        report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",
+                       spec.min_angle, ", and no small input angle beside it");
+    }
+  }
+  return shape;
+}
+
+}  // namespace
+
+CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> tris, const MeshSpec& spec) {
+  if (tris.size() / 3 > kCheckMaxTriangles)
+    throw InputError(std::to_string(tris.size() / 3) + " triangles are more than the validator takes");
+  const std::vector<Point> scaled = detail::exactly_scaled(input);
+  const std::span<const Point> pts = scaled.empty() ? input : std::span<const Point>(scaled);
+  Report report;
+  if (tris.size() % 3 != 0 || spec.edges.size() % 2 != 0 || spec.segments.size() % 2 != 0)
+    report.problem("a triangle, edge or segment list has a length that does not divide");
+  std::vector<std::uint8_t> used(pts.size(), 0);
+  detail::check_triangles(pts, tris, used, report);
+  for (const VertexId e : spec.edges)
+    if (e >= pts.size()) report.problem("an edge refers to point ", e, " of ", pts.size());
+  if (report.problems() > 0) return report.result();
+  std::vector<Edge> segment_edges;
+  std::unordered_set<std::uint64_t> segment;
+  for (std::size_t k = 0; k + 1 < spec.edges.size(); k += 2) {
+    segment_edges.emplace_back(std::min(spec.edges[k], spec.edges[k + 1]), std::max(spec.edges[k], spec.edges[k + 1]));
+    segment.insert(key(spec.edges[k], spec.edges[k + 1]));
+  }
+  std::sort(segment_edges.begin(), segment_edges.end());
+  const std::vector<Edge> boundary = detail::check_edges(pts, tris, segment_edges, report);
+  std::unordered_set<std::uint64_t> sides;
+  for (std::size_t k = 0; k < tris.size(); ++k) sides.insert(key(tris[k], tris[k % 3 == 2 ? k - 2 : k + 1]));
+  for (const Edge& e : segment_edges)
+    if (!sides.count(key(e.first, e.second))) report.problem("segment edge ", e.first, "-", e.second, " is no edge");
+  check_boundary(pts, used, boundary, segment, report);
+  std::vector<std::vector<std::uint32_t>> on(pts.size());
+  check_chains(pts, spec, used, on, report);
+  check_holes(pts, tris, spec.holes, report);
+  const Shape shape =
+      check_shape(input, tris, spec, chains_of(pts, spec.edges, spec.input_points == 0 ? pts.size() : spec.input_points),
+                  report);
+  std::ostringstream s;
+  const std::size_t input_points = spec.input_points == 0 ? pts.size() : spec.input_points;
+  s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
+    << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()
+    << " edges, every other edge locally Delaunay; smallest angle " << static_cast<double>(shape.smallest)
+    << " degrees";
+  if (shape.excused > 0) s << " (" << shape.excused << " triangles below " << spec.min_angle << " beside small input angles)";
+  s << ", largest area " << static_cast<double>(shape.largest_area);
+  return report.result(s.str());
+}
+
+}  // namespace ridt

@@ -1,0 +1,63 @@
+// The validator's parts that check_constrained (check/check.cpp) and check_mesh
+// (check/check_mesh.cpp) share: the report, the triangles' orientation, the edge table with its
+// local Delaunay test, the convex hull.
+#pragma once
+
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ridt/check.hpp"
+
+namespace ridt::detail {
+
+class Report {
+ public:
+  template <typename... Args>
+  void problem(const Args&... args) {
+    if (problems_++ == 0) {
+      std::ostringstream s;
+      (s << ... << args);
+      first_ = s.str();
+    }
+  }
+  std::size_t problems() const { return problems_; }
+  // The verdict: the first problem and their count, or `valid` when there is none.
+  CheckResult result(const std::string& valid = {}) const {
+    if (problems_ == 0) return {true, valid, 0};
+    std::ostringstream s;
+    s << "invalid: " << first_ << " (" << problems_ << " problem" << (problems_ == 1 ? "" : "s") << ")";
+    return {false, s.str(), problems_};
+  }
+
+ private:
+  std::size_t problems_ = 0;
+  std::string first_;
+};
+
+using Edge = std::pair<VertexId, VertexId>;
+
+using Edge = std::pair<VertexId, VertexId>;
+
+/// Huge or tiny coordinates: an exactly scaled copy keeps the predicates on their fast path.
+/// Empty when the input needs none.
+std::vector<Point> exactly_scaled(std::span<const Point> input);
+
+/// Every index in range, every triangle counter-clockwise and not degenerate; marks the
+/// vertices used.
+void check_triangles(std::span<const Point> pts, std::span<const VertexId> tris, std::vector<std::uint8_t>& used,
+                     Report& report);
+
+/// Every directed edge used once, every interior edge locally Delaunay but those of segments
+/// (`constrained`: (lo, hi), sorted). Returns the boundary edges, directed as their triangles run.
+std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const VertexId> tris,
+                              const std::vector<Edge>& constrained, Report& report);
+
+/// The convex hull, counter-clockwise, with points on its edges kept, over distinct points
+/// given as indices sorted lexicographically (Andrew's monotone chain). Requires at least three
+/// non-collinear points.
+std::vector<VertexId> hull_with_collinear(std::span<const Point> pts, const std::vector<VertexId>& sorted);
+
+}  // namespace ridt::detail
