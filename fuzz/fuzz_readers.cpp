@@ -92,8 +92,25 @@ void triangles(std::string_view data, const char* name, int first_index) {
     finding("the validator's verdict does not add up: " + verdict.message);
 }
 
+// A constrained triangulation or mesh through the exact validator of meshes.
+void validate(const io::Pslg& g, const ridt::ConstrainedTriangulation& t, const ridt::Domain& d,
+              const ridt::Quality& q) {
+  std::vector<Point> all = g.points;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  ridt::MeshSpec spec;
+  spec.edges = t.edges;
+  spec.segments = g.segments;
+  spec.input_points = g.points.size();
+  spec.holes = d.holes;
+  spec.min_angle = q.min_angle;
+  spec.max_area = q.max_area;
+  const ridt::CheckResult verdict = ridt::check_mesh(all, t.triangles, spec);
+  if (!verdict.valid) finding("a mesh the validator rejects: " + verdict.message);
+}
+
 // A .poly: either IoError, or finite points and holes, segments between them, and then a
-// constrained triangulation that the exact validator accepts (or crossing segments refused).
+// constrained triangulation (crossings split) and a quality mesh at 25 degrees (at most 5000
+// points added) that the exact validator accepts.
 void graph(std::string_view data) {
   io::Pslg g;
   try {
@@ -111,13 +128,18 @@ void graph(std::string_view data) {
   if (g.points.size() > 2000) return;
   try {
     const ridt::ConstrainedTriangulation t = ridt::triangulate_constrained(g.points, g.segments);
-    const ridt::CheckResult verdict = ridt::check_constrained(g.points, t.triangles, g.segments);
-    if (!verdict.valid) finding("a constrained triangulation the validator rejects: " + verdict.message);
+    validate(g, t, {}, {});
     ridt::Domain domain;
     domain.convex_hull = false;
     domain.holes = g.holes;
     const ridt::ConstrainedTriangulation carved = ridt::triangulate_constrained(g.points, g.segments, {}, domain);
     if (carved.size() > t.size()) finding("carving added triangles");
+    validate(g, carved, domain, {});
+    ridt::Quality q;
+    q.min_angle = 25;
+    q.max_steiner = 5000;
+    const ridt::ConstrainedTriangulation meshed = ridt::triangulate_constrained(g.points, g.segments, {}, domain, q);
+    if (meshed.steiner.size() < 5000 + meshed.crossings) validate(g, meshed, domain, q);
   } catch (const ridt::InputError&) {}
 }
 

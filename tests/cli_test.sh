@@ -312,8 +312,19 @@ expect 0 "mesh L" -- "$ridt" mesh "$dir/l.poly" -o "$dir/l.ele"
 [ "$(head -1 "$dir/l.ele")" = "4 3 0" ] && pass || fail "the L is not 4 triangles"
 expect 0 "mesh L -c" -- "$ridt" mesh "$dir/l.poly" -o "$dir/lc.ele" --convex-hull
 [ "$(head -1 "$dir/lc.ele")" = "5 3 0" ] && pass || fail "the L's convex hull is not 5 triangles"
-expect 2 "mesh quality" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q.ele" --switches pq30
-stderr_has "not supported yet"; absent "$dir/q.ele"; absent "$dir/q.node"
+# A quality mesh: Triangle's switches or long options; ridt check validates it (segments as
+# chains of OUT.edge's edges, the hole empty, the bounds kept).
+expect 0 "mesh quality" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q.ele" --switches pq30a2
+[ "$(head -1 "$dir/q.node" | cut -d' ' -f1)" -gt 8 ] && pass || fail "-q added no points"
+expect 0 "check the mesh" -- "$ridt" check "$dir/q.node" "$dir/q.ele" --poly "$dir/sq.poly" --edges "$dir/q.edge" --min-angle 30 --max-area 2
+expect 1 "check the mesh, a tighter bound" -- "$ridt" check "$dir/q.node" "$dir/q.ele" --poly "$dir/sq.poly" --edges "$dir/q.edge" --max-area 0.5
+expect 0 "mesh long options" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q2.ele" --quality 33 --max-area 1 --neighbours
+[ -s "$dir/q2.neigh" ] && pass || fail "--neighbours wrote no .neigh"
+expect 0 "check the mesh at 33" -- "$ridt" check "$dir/q2.node" "$dir/q2.ele" --poly "$dir/sq.poly" --edges "$dir/q2.edge" --min-angle 33 --max-area 1
+expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
+stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
+expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pD
+stderr_has "'D'"; absent "$dir/q3.ele"
 expect 2 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg"
 absent "$dir/m.svg"
 

@@ -12,15 +12,20 @@ from ._delaunay import hull_edges
 
 
 class ConstrainedDelaunay:
-    """The constrained Delaunay triangulation of `points` with `segments`, in scipy's style.
+    """The constrained Delaunay triangulation of `points` with `segments`, or a quality mesh of
+    it, in scipy's style.
 
     Every segment (a row of two point indices) is a union of triangle edges, split at the points
     that lie exactly on it; every other edge is Delaunay, so no triangle's circle holds a point
-    that the triangle can see without crossing a segment. The boundary is the convex hull.
-    Exact predicates throughout; with the whole convex hull kept, the result passes
-    ``ridt.check(points, simplices, segments=segments)``. Duplicate points are left out (a segment's end that is one stands for
-    the point kept). Two segments that cross at a point that is not one of the points raise
-    ValueError (splitting them is not supported yet).
+    that the triangle can see without crossing a segment. Two segments that cross are split where
+    they cross: the exact crossing, rounded to the nearest doubles, is added as a point (the
+    first ``ncrossings`` rows of ``added``). With `min_angle` or `max_area` (or a region's area
+    bound) the triangulation is refined (Delaunay refinement with off-centres, as Triangle's
+    ``-q`` and ``-a``): points are added until no triangle has an angle below `min_angle`
+    degrees (at most 34) or an area above its bound, except beside input angles below 60 degrees
+    between segments, which no point can mend. Exact predicates throughout; ``check()`` validates
+    the result exactly. Duplicate points are left out (a segment's end that is one stands for the
+    point kept).
 
     Parameters
     ----------
@@ -32,40 +37,68 @@ class ConstrainedDelaunay:
     convex_hull : bool
         True (the default) keeps every triangle of the convex hull; False removes those reached
         from the hull without crossing a segment, leaving what the segments enclose.
+    regions : array_like, shape (nregions, 4), optional
+        Rows (x, y, attribute, max_area): every triangle reached from (x, y) without crossing a
+        segment gets the attribute (``attributes``), and is refined to an area of at most
+        max_area where that is > 0.
+    min_angle, max_area : float
+        Quality bounds (0: none).
+    split_boundary : bool
+        False adds no point on the boundary's segments (Triangle's ``-Y``).
     method, threads, seed
         As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
 
     Attributes
     ----------
     points : ndarray of double, shape (npoints, 2)
+        Every vertex: the input's, then ``added``.
+    added : ndarray of double, shape (nadded, 2)
+        The points added: crossings first (``ncrossings`` of them), then refinement's.
+    ninput : int
+        How many of ``points`` are the input's.
     segments : ndarray of intc, shape (nsegments, 2)
     simplices : ndarray of intc, shape (nsimplex, 3)
         The triangles, counter-clockwise, in canonical order.
     neighbors : ndarray of intc, shape (nsimplex, 3)
-        The k-th neighbour lies across from the k-th vertex; -1 on the hull.
+        The k-th neighbour lies across from the k-th vertex; -1 on the boundary.
     edges : ndarray of intc, shape (nedges, 2)
-        The segments' pieces: the edges that make up the segments, (a, b) with a < b, sorted.
+        The segments' pieces (and, after refinement, the boundary's edges), (a, b) with a < b,
+        sorted.
+    attributes : ndarray of double, shape (nsimplex,)
+        Each triangle's regional attribute; empty without regions.
     convex_hull : ndarray of intc, shape (nhull, 2)
-        The hull's edges; empty where triangles were removed (the boundary is then where
-        neighbors is -1).
+        The hull's edges; empty where triangles were removed or refined (the boundary is then
+        where neighbors is -1).
     npoints, nsimplex, ndim
     """
 
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
-                 method: str = "auto", threads: int = 1, seed: int = 1):
-        self._points = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
+                 regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
+                 split_boundary: bool = True, method: str = "auto", threads: int = 1, seed: int = 1):
+        pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
-        if segs.size and segs.max() >= self._points.shape[0]:
-            bad = int(np.flatnonzero((segs >= self._points.shape[0]).any(axis=1))[0])
+        if segs.size and segs.max() >= pts.shape[0]:
+            bad = int(np.flatnonzero((segs >= pts.shape[0]).any(axis=1))[0])
             raise ValueError(f"segments[{bad}] = {segs[bad].tolist()}: every end must be one of the "
-                             f"{self._points.shape[0]} points")
+                             f"{pts.shape[0]} points")
         seeds = np.zeros((0, 2)) if holes is None or np.size(holes) == 0 else _api.as_points(holes, "holes")
+        zones = np.zeros((0, 4)) if regions is None or np.size(regions) == 0 else np.asarray(regions, dtype=float)
+        if zones.ndim != 2 or zones.shape[1] != 4:
+            raise ValueError(f"regions must have shape (nregions, 4): x, y, attribute, max_area; got {zones.shape}")
         method = _api._choice(method, "method", _api.METHODS)
-        tri, edges = _core.triangulate_constrained(self._points, segs, seeds, bool(convex_hull), method,
-                                                   _api.thread_count(threads), int(seed), True)
+        tri, edges, added, crossings, attributes = _core.triangulate_constrained(
+            pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
+            np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary))
         self._tri = tri
+        self.ninput = int(pts.shape[0])
+        self._points = np.concatenate([pts, added]) if len(added) else pts
+        self.added = added
+        self.ncrossings = int(crossings)
+        self.attributes = attributes
         self.segments = segs.view(np.intc)
         self.edges = edges.view(np.intc)
+        self._holes = seeds
+        self._bounds = (float(min_angle), float(max_area))
 
     @property
     def points(self) -> np.ndarray:
@@ -101,5 +134,11 @@ class ConstrainedDelaunay:
         return self._tri
 
     def check(self) -> Tuple[bool, str]:
-        """ridt.check of these triangles with these segments: (valid, message)."""
-        return _api.check(self._points, self.simplices, segments=self.segments)
+        """The exact validator of constrained triangulations and meshes (ridt.check_mesh): every
+        edge but the segments' locally Delaunay, every segment a chain of ``edges``, the holes
+        empty, the angle and area bounds kept: (valid, message)."""
+        valid, message, _ = _core.check_mesh(
+            self._points, np.ascontiguousarray(self.simplices, dtype=np.uint32),
+            np.ascontiguousarray(self.edges, dtype=np.uint32), np.ascontiguousarray(self.segments, dtype=np.uint32),
+            self.ninput, np.ascontiguousarray(self._holes, dtype=float), *self._bounds)
+        return bool(valid), message

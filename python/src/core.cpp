@@ -236,12 +236,15 @@ void bind_incremental(py::module_& m) {
         py::arg("progress"), py::arg("furthest_site") = false);
 }
 
-// The constrained Delaunay triangulation: (its triangulation, its segments' edges).
+// The constrained Delaunay triangulation or quality mesh: (its triangulation, its segments'
+// edges, the points it added, how many of them are crossings, each triangle's attribute).
 void bind_constrained(py::module_& m) {
   m.def(
       "triangulate_constrained",
       [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments, const Points& holes,
-         bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical) {
+         bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical,
+         const py::array_t<double, py::array::c_style>& regions, double min_angle, double max_area,
+         bool split_boundary) {
         ridt::Options o;
         o.method = ridt::parse<ridt::Method>(method);
         o.threads = threads;
@@ -254,17 +257,61 @@ void bind_constrained(py::module_& m) {
         domain.convex_hull = convex_hull;
         const auto h = as_points(holes, "holes");
         domain.holes.assign(h.begin(), h.end());
+        for (py::ssize_t r = 0; r + 3 < regions.size(); r += 4) {
+          const double* v = regions.data() + r;
+          domain.regions.push_back({{v[0], v[1]}, v[2], v[3]});
+        }
+        ridt::Quality q;
+        q.min_angle = min_angle;
+        q.max_area = max_area;
+        q.split_boundary = split_boundary;
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
-          c = ridt::triangulate_constrained(pts, segs, o, domain);
+          c = ridt::triangulate_constrained(pts, segs, o, domain, q);
         }
         const auto pieces = static_cast<py::ssize_t>(c.edges.size() / 2);
         auto edges = adopt(std::move(c.edges), {pieces, py::ssize_t{2}});
-        return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges);
+        py::array_t<double> added({static_cast<py::ssize_t>(c.steiner.size()), py::ssize_t{2}});
+        std::copy_n(&c.steiner.data()->x, 2 * c.steiner.size(), added.mutable_data());
+        py::array_t<double> attributes(static_cast<py::ssize_t>(c.attributes.size()));
+        std::copy(c.attributes.begin(), c.attributes.end(), attributes.mutable_data());
+        const std::size_t crossings = c.crossings;
+        return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges, added,
+                              crossings, attributes);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
-      py::arg("threads"), py::arg("seed"), py::arg("canonical"));
+      py::arg("threads"), py::arg("seed"), py::arg("canonical"), py::arg("regions"), py::arg("min_angle"),
+      py::arg("max_area"), py::arg("split_boundary"));
+}
+
+// The validator of constrained triangulations and meshes.
+void bind_check_mesh(py::module_& m) {
+  m.def(
+      "check_mesh",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
+         const py::array_t<std::uint32_t, py::array::c_style>& edges,
+         const py::array_t<std::uint32_t, py::array::c_style>& segments, std::size_t input_points, const Points& holes,
+         double min_angle, double max_area) {
+        const auto pts = as_points(points, "points");
+        const auto h = as_points(holes, "holes");
+        ridt::MeshSpec spec;
+        spec.edges = {edges.data(), static_cast<std::size_t>(edges.size())};
+        spec.segments = {segments.data(), static_cast<std::size_t>(segments.size())};
+        spec.input_points = input_points;
+        spec.holes = h;
+        spec.min_angle = min_angle;
+        spec.max_area = max_area;
+        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
+        ridt::CheckResult r;
+        {
+          py::gil_scoped_release nogil;
+          r = ridt::check_mesh(pts, t, spec);
+        }
+        return py::make_tuple(r.valid, r.message, r.problems);
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("edges"), py::arg("segments"), py::arg("input_points"),
+      py::arg("holes"), py::arg("min_angle"), py::arg("max_area"));
 }
 
 // Location in a finished triangulation, and the validator.
@@ -433,6 +480,7 @@ PYBIND11_MODULE(_core, m) {
   bind_triangulation(m);
   bind_incremental(m);
   bind_constrained(m);
+  bind_check_mesh(m);
   bind_queries(m);
   bind_nearest(m);
   bind_voronoi(m);

@@ -27,7 +27,7 @@ def test_random_segments_everywhere():
     c = ridt.ConstrainedDelaunay(pts, segs, threads=2)
     valid, message = c.check()
     assert valid, message
-    assert "constrained Delaunay with" in message
+    assert "31 segments as chains of 31 edges" in message
     assert not ridt.check(pts, c.simplices)[0]
     one = ridt.ConstrainedDelaunay(pts, segs, method="serial")
     assert np.array_equal(one.simplices, c.simplices) and np.array_equal(one.edges, c.edges)
@@ -41,9 +41,21 @@ def test_a_segment_through_points_is_split():
     assert len(c.edges) == 4
 
 
+def test_crossing_segments_are_split_where_they_cross():
+    c = ridt.ConstrainedDelaunay(KITE, [(0, 2), (1, 3)])
+    assert c.ncrossings == 1 and c.added.tolist() == [[4.0, 0.0]]
+    assert c.npoints == 5 and c.ninput == 4 and c.points[4].tolist() == [4.0, 0.0]
+    assert c.edges.tolist() == [[0, 4], [1, 4], [2, 4], [3, 4]]
+    assert c.check()[0]
+    rng = np.random.default_rng(9)
+    pts = rng.random((500, 2))
+    many = ridt.ConstrainedDelaunay(pts, np.arange(200).reshape(-1, 2))
+    assert many.ncrossings > 100
+    valid, message = many.check()
+    assert valid, message
+
+
 def test_bad_segments_are_refused():
-    with pytest.raises(ValueError, match="crossed|cross"):
-        ridt.ConstrainedDelaunay(KITE, [(0, 2), (1, 3)])
     with pytest.raises(ValueError, match="one of the 4 points"):
         ridt.ConstrainedDelaunay(KITE, [(0, 4)])
     with pytest.raises(ValueError, match="shape"):
@@ -75,3 +87,54 @@ def test_holes_and_the_exterior():
     assert len(inner.convex_hull) == 0 and len(whole.convex_hull) > 0
     with pytest.raises(ValueError):
         ridt.ConstrainedDelaunay(pts, segs, holes=[(np.nan, 1)])
+
+
+SQUARE_WITH_HOLE = dict(
+    vertices=[(0, 0), (1, 0), (1, 1), (0, 1), (0.4, 0.4), (0.6, 0.4), (0.6, 0.6), (0.4, 0.6)],
+    segments=[(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4)],
+    holes=[(0.5, 0.5)])
+
+
+@pytest.mark.parametrize("angle", [20, 30, 34])
+def test_a_quality_mesh_keeps_its_bounds(angle):
+    g = SQUARE_WITH_HOLE
+    c = ridt.ConstrainedDelaunay(g["vertices"], g["segments"], holes=g["holes"], convex_hull=False,
+                                 min_angle=angle, max_area=0.002)
+    valid, message = c.check()
+    assert valid, message
+    p = c.points[c.simplices]
+    a, b, d = p[:, 0], p[:, 1], p[:, 2]
+    area = 0.5 * ((b[:, 0] - a[:, 0]) * (d[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (d[:, 0] - a[:, 0]))
+    assert (area > 0).all() and area.max() <= 0.002
+    assert abs(area.sum() - (1 - 0.04)) < 1e-12  # the square less its hole, exactly covered
+
+    def smallest(u, v, w):
+        x, y = v - u, w - u
+        return np.degrees(np.arctan2(np.abs(x[:, 0] * y[:, 1] - x[:, 1] * y[:, 0]), (x * y).sum(axis=1)))
+    worst = np.minimum(np.minimum(smallest(a, b, d), smallest(b, d, a)), smallest(d, a, b))
+    assert worst.min() >= angle - 1e-9
+
+
+def test_regions_carry_attributes_and_area_bounds():
+    g = SQUARE_WITH_HOLE
+    pts = np.array(g["vertices"] + [(0.5, 0), (0.5, 1)], dtype=float)
+    segs = g["segments"] + [(8, 9)]  # splits the square, and the hole: a seed on either side
+    c = ridt.ConstrainedDelaunay(pts, segs, holes=[(0.45, 0.5), (0.55, 0.5)], convex_hull=False,
+                                 regions=[(0.1, 0.5, 1.0, 0.001), (0.9, 0.5, 2.0, 0.0)])
+    assert c.ncrossings == 2
+    left = c.points[c.simplices].mean(axis=1)[:, 0] < 0.5
+    assert (c.attributes[left] == 1).all() and (c.attributes[~left] == 2).all()
+    p = c.points[c.simplices]
+    area = 0.5 * np.abs((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
+                        - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+    assert area[left].max() <= 0.001 and area[~left].max() > 0.01
+    assert c.check()[0]
+
+
+def test_quality_bounds_are_checked():
+    with pytest.raises(ValueError, match="34"):
+        ridt.ConstrainedDelaunay(KITE, [(0, 2)], min_angle=40)
+    with pytest.raises(ValueError):
+        ridt.ConstrainedDelaunay(KITE, [(0, 2)], max_area=-1)
+    with pytest.raises(ValueError, match="regions"):
+        ridt.ConstrainedDelaunay(KITE, [(0, 2)], regions=[(1, 2)])

@@ -50,11 +50,30 @@ def test_the_convex_hull_switch():
     assert ridt.check(ell, whole["triangles"], segments=loop(0, 6))[0]
 
 
+def test_quality_switches():
+    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4)),
+           "holes": [[5, 5]], "regions": [[1, 1, 3.5, 0.5]]}
+    t = triangle.triangulate(tri, "pq30a2A")
+    n = len(t["vertices"])
+    assert n > 8 and t["vertices"][:8].tolist() == tri["vertices"].tolist()  # the input's first
+    assert (t["triangle_attributes"] == 3.5).all()
+    p = t["vertices"][t["triangles"]]
+    area = 0.5 * ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+    assert (area > 0).all() and area.max() <= 2 and abs(area.sum() - 96) < 1e-9
+    assert t["vertex_markers"].shape == (n, 1)
+    regional = triangle.triangulate(tri, "pa")  # each region's own bound: 0.5
+    assert len(regional["triangles"]) > len(t["triangles"])
+    quiet = triangle.triangulate(tri, "pq")  # q alone: 20 degrees
+    assert len(quiet["triangles"]) >= 8
+    kept = triangle.triangulate(tri, "pq30Y")  # no point on the boundary
+    assert len(kept["segments"]) == 8
+
+
 def test_refused():
-    with pytest.raises(ValueError, match="'q' is not supported"):
-        triangle.triangulate({"vertices": SQUARE}, "pq30")
-    with pytest.raises(ValueError, match="'a' is not supported"):
-        triangle.triangulate({"vertices": SQUARE}, "a0.1")
+    with pytest.raises(ValueError, match="'r' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "pr")
+    with pytest.raises(ValueError, match="'D' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "pD")
     with pytest.raises(ValueError, match="needs 'vertices'"):
         triangle.triangulate({}, "")
     with pytest.raises(TypeError):

@@ -2,9 +2,9 @@
 // what it was asked: its segment edges, the input's segments as chains of them, holes empty,
 // angles and areas.
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
-#include <cmath>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -22,8 +22,9 @@ using detail::Report;
 std::uint64_t key(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
 // Boundary edges that are no segment's must lie on the convex hull of the vertices.
-void check_boundary(std::span<const Point> pts, const std::vector<std::uint8_t>& used, const std::vector<Edge>& boundary,
-                    const std::unordered_set<std::uint64_t>& segment, Report& report) {
+void check_boundary(std::span<const Point> pts, const std::vector<std::uint8_t>& used,
+                    const std::vector<Edge>& boundary, const std::unordered_set<std::uint64_t>& segment,
+                    Report& report) {
   std::vector<Edge> open;
   for (const Edge& e : boundary)
     if (!segment.count(key(e.first, e.second))) open.push_back(e);
@@ -44,15 +45,35 @@ void check_boundary(std::span<const Point> pts, const std::vector<std::uint8_t>&
 // The segment edges as lists of neighbours.
 std::vector<std::vector<VertexId>> adjacency(std::size_t n, std::span<const VertexId> edges) {
   std::vector<std::vector<VertexId>> adj(n);
-  for (std::size_t k = 0; k + 1 < edges.size(); k += 2) adj[edges[k]].push_back(edges[k + 1]), adj[edges[k + 1]].push_back(edges[k]);
+  for (std::size_t k = 0; k + 1 < edges.size(); k += 2)
+    adj[edges[k]].push_back(edges[k + 1]), adj[edges[k + 1]].push_back(edges[k]);
   return adj;
+}
+
+// A segment that runs through a hole or the exterior is a chain where it lies in the mesh:
+// the vertices near it with a segment edge, in their order along it, each joined to the next
+// by a segment edge or, across a gap, both on the boundary (or in no triangle).
+template <class Near>
+bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
+                 const std::vector<std::uint8_t>& on_boundary, Near near) {
+  std::vector<std::pair<double, VertexId>> along;
+  const double dx = pts[b].x - pts[a].x, dy = pts[b].y - pts[a].y;
+  for (VertexId v = 0; v < pts.size(); ++v)
+    if (v == a || v == b || (!adj[v].empty() && near(v)))
+      along.push_back({(pts[v].x - pts[a].x) * dx + (pts[v].y - pts[a].y) * dy, v});
+  std::sort(along.begin(), along.end());
+  for (std::size_t i = 0; i + 1 < along.size(); ++i) {
+    const VertexId u = along[i].second, w = along[i + 1].second;
+    const bool joined = std::find(adj[u].begin(), adj[u].end(), w) != adj[u].end();
+    if (!joined && !(on_boundary[u] && on_boundary[w])) return false;  // (unused vertices count as on it)
+  }
+  return !along.empty() && along.front().second == a && along.back().second == b;
 }
 
 // Each input segment a-b a chain of segment edges: a search from a through added points near
 // the segment (within its box, grown by 10^-6 of its length) and input points exactly on it.
-// Marks, per vertex, the segments whose chain it is on.
 void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::vector<std::uint8_t>& used,
-                  std::vector<std::vector<std::uint32_t>>& on, Report& report) {
+                  const std::vector<std::uint8_t>& on_boundary, Report& report) {
   const auto adj = adjacency(pts.size(), spec.edges);
   const std::size_t input = spec.input_points == 0 ? pts.size() : spec.input_points;
   std::unordered_map<std::uint64_t, VertexId> vertex_at;  // an unused duplicate stands for the used one
@@ -63,7 +84,6 @@ void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::v
     const auto it = vertex_at.find(bits(pts[v]));
     return used[v] || it == vertex_at.end() || !(pts[it->second] == pts[v]) ? v : it->second;
   };
-  std::vector<VertexId> from(pts.size(), 0);
   std::vector<std::uint32_t> seen(pts.size(), 0);
   for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) {
     if (spec.segments[s] >= input || spec.segments[s + 1] >= input) {
@@ -88,17 +108,11 @@ void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::v
       const VertexId v = todo.back();
       todo.pop_back();
       for (const VertexId w : adj[v])
-        if (seen[w] != stamp && near(w)) seen[w] = stamp, from[w] = v, todo.push_back(w);
+        if (seen[w] != stamp && near(w)) seen[w] = stamp, todo.push_back(w);
     }
-    if (seen[b] != stamp) {
+    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, on_boundary, near))
       report.problem("segment ", s / 2, " (", spec.segments[s], "-", spec.segments[s + 1],
                      ") is not a chain of segment edges");
-      continue;
-    }
-    for (VertexId v = b;; v = from[v]) {
-      on[v].push_back(static_cast<std::uint32_t>(s / 2));
-      if (v == a) break;
-    }
   }
 }
 
@@ -187,7 +201,8 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
     }
     const Point &a = pts[v[0]], &b = pts[v[1]], &c = pts[v[2]];
     const long double area = std::fabs((b.x - (long double)a.x) * (c.y - (long double)a.y) -
-                                       (b.y - (long double)a.y) * (c.x - (long double)a.x)) / 2;
+                                       (b.y - (long double)a.y) * (c.x - (long double)a.x)) /
+        2;
     shape.smallest = std::min(shape.smallest, worst);
     shape.largest_area = std::max(shape.largest_area, area);
     if (spec.max_area > 0 && area > spec.max_area * (1 + 1e-9L))
@@ -231,19 +246,24 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
   for (const Edge& e : segment_edges)
     if (!sides.count(key(e.first, e.second))) report.problem("segment edge ", e.first, "-", e.second, " is no edge");
   check_boundary(pts, used, boundary, segment, report);
-  std::vector<std::vector<std::uint32_t>> on(pts.size());
-  check_chains(pts, spec, used, on, report);
-  check_holes(pts, tris, spec.holes, report);
-  const Shape shape =
-      check_shape(input, tris, spec, chains_of(pts, spec.edges, spec.input_points == 0 ? pts.size() : spec.input_points),
-                  report);
+  std::vector<std::uint8_t> on_boundary(pts.size(), 0);
+  for (const Edge& e : boundary) on_boundary[e.first] = on_boundary[e.second] = 1;
+  for (VertexId v = 0; v < pts.size(); ++v) on_boundary[v] |= !used[v];
+  check_chains(pts, spec, used, on_boundary, report);
+  std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
+  if (const int k = detail::exact_scale_exponent(input); k != 0 && !scaled.empty())
+    for (Point& h : holes) h = {std::ldexp(h.x, k), std::ldexp(h.y, k)};
+  check_holes(pts, tris, holes, report);
+  const Shape shape = check_shape(
+      input, tris, spec, chains_of(pts, spec.edges, spec.input_points == 0 ? pts.size() : spec.input_points), report);
   std::ostringstream s;
   const std::size_t input_points = spec.input_points == 0 ? pts.size() : spec.input_points;
   s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
     << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()
     << " edges, every other edge locally Delaunay; smallest angle " << static_cast<double>(shape.smallest)
     << " degrees";
-  if (shape.excused > 0) s << " (" << shape.excused << " triangles below " << spec.min_angle << " beside small input angles)";
+  if (shape.excused > 0)
+    s << " (" << shape.excused << " triangles below " << spec.min_angle << " beside small input angles)";
   s << ", largest area " << static_cast<double>(shape.largest_area);
   return report.result(s.str());
 }

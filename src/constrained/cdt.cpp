@@ -165,4 +165,15 @@ void Cdt::legalize(VertexId p, std::vector<std::uint32_t> todo) {
   }
 }
 
+// Whether p, added on edge k of t as though it lay on it, leaves every triangle there
+// counter-clockwise (a rounded split point lies off its segment by a rounding error).
+bool Cdt::fits_on_edge(std::uint32_t t, int k, const Point& p) const {
+  const Point &x = pts[at(t, k + 1)], &y = pts[at(t, k + 2)];
+  if (orient2d(pts[at(t, k)], x, p) <= 0 || orient2d(pts[at(t, k)], p, y) <= 0) return false;
+  const std::int32_t n = nbrs[3 * t + k];
+  if (n < 0) return true;
+  const Point& d = pts[at(static_cast<std::uint32_t>(n), back(static_cast<std::uint32_t>(n), t))];
+  return orient2d(d, y, p) > 0 && orient2d(d, p, x) > 0;
+}
+
 }  // namespace ridt::detail

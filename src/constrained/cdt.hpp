@@ -33,6 +33,10 @@ class Cdt {
   /// p added at `at` (Inside or Edge; a fixed edge stays fixed in both halves); returns its id.
   VertexId insert(const Point& p, const Place& at);
 
+  /// Whether p, added on edge k of t as though it lay on it (a rounded point lies off its
+  /// segment by a rounding), leaves every triangle there counter-clockwise.
+  bool fits_on_edge(std::uint32_t t, int k, const Point& p) const;
+
   /// The triangles around vertex v, in order (around a boundary vertex, from one side).
   std::vector<std::uint32_t> ring(VertexId v) const;
   /// visit(t) for the triangles around v, in ring()'s order, until it returns true; returns

@@ -122,8 +122,8 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (Point& h : holes) h = scaled(h, scale);
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
   const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
-  const bool refined = quality.enabled() || std::any_of(domain.regions.begin(), domain.regions.end(),
-                                                        [](const Region& g) { return g.max_area > 0; });
+  const bool refined = quality.enabled() ||
+      std::any_of(domain.regions.begin(), domain.regions.end(), [](const Region& g) { return g.max_area > 0; });
   if (refined) {
     detail::Refinement r{quality.min_angle,
                          std::ldexp(quality.max_area, 2 * scale),

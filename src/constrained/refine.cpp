@@ -17,6 +17,7 @@
 
 #include "predicates/predicates.hpp"
 #include "queries/circumcentre.hpp"
+#include "runtime/memory.hpp"
 
 namespace ridt::detail {
 namespace {
@@ -86,9 +87,14 @@ class Refiner {
     find_small_angles();
     for (std::uint32_t t = 0; t < m_.size(); ++t) queue_bad(t);
     const std::size_t first = m_.pts.size();
+    // Each point added costs some 160 bytes (two triangles, the point, queue entries): stop
+    // before the memory the system has left runs out, rather than be killed for it.
+    const std::size_t room = available_memory() / 160 * 3 / 4;
     while (true) {
       if (r_.max_steiner > 0 && m_.pts.size() - first >= r_.max_steiner)
         return "quality refinement stopped after " + std::to_string(r_.max_steiner) + " points (the limit asked)";
+      if (room > 0 && m_.pts.size() - first >= room)
+        return "quality refinement stopped after " + std::to_string(room) + " points: the memory left holds no more";
       if (!segments_.empty()) {
         const Split w = segments_.back();
         segments_.pop_back();
@@ -246,7 +252,7 @@ class Refiner {
     std::vector<std::uint32_t>& hit = blocked ? hit_ : would_encroach(p, at);
     std::erase_if(hit, [&](std::uint32_t s) { return !splittable(s); });
     for (const std::uint32_t s : hit)
-      if (terminated(s, b.t)) return;
+      if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
     if (blocked || !hit.empty()) {
       if (hit.empty() || b.tries >= 8) return;
       for (const std::uint32_t s : hit) queue_split(s, true);
@@ -271,7 +277,6 @@ class Refiner {
     return {z.x + (o.x - z.x) * f, z.y + (o.y - z.y) * f};
   }
 
-  bool fits_on_edge(std::uint32_t t, int k, const Point& p) const;
   void split(std::uint32_t s);
   void added(VertexId v);
   void find_small_angles();
@@ -287,17 +292,6 @@ class Refiner {
   std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
 };
 
-// Whether p, added on edge k of t as though it lay on it, leaves every triangle there
-// counter-clockwise (a rounded split point lies off its segment by a rounding error).
-bool Refiner::fits_on_edge(std::uint32_t t, int k, const Point& p) const {
-  const Point &x = m_.pts[m_.at(t, k + 1)], &y = m_.pts[m_.at(t, k + 2)];
-  if (orient2d(m_.pts[m_.at(t, k)], x, p) <= 0 || orient2d(m_.pts[m_.at(t, k)], p, y) <= 0) return false;
-  const std::int32_t n = m_.nbrs[3 * t + k];
-  if (n < 0) return true;
-  const Point& d = m_.pts[m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t))];
-  return orient2d(d, y, p) > 0 && orient2d(d, p, x) > 0;
-}
-
 // Subsegment s split at its split point, as though that lay on it (it does, up to rounding);
 // where that would fold a triangle over, inside the triangle beside it that holds the point
 // (x-y freed, the point added, x-p and p-y fixed); else left whole.
@@ -311,7 +305,7 @@ void Refiner::split(std::uint32_t s) {
       : corner(x)                                                    ? ends_[y]
                                                                      : ends_[x];
   VertexId v = 0;
-  if (fits_on_edge(t, k, p)) {
+  if (m_.fits_on_edge(t, k, p)) {
     v = m_.insert(p, {Cdt::Place::Edge, t, k});
   } else {
     if (boundary(s)) return;

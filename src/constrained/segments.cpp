@@ -85,7 +85,12 @@ class Inserter {
     const VertexId u = m_.at(t, k + 1), w = m_.at(t, k + 2);
     const Point x = crossing_rounded(m_.pts[a], m_.pts[b], m_.pts[u], m_.pts[w]);
     m_.set_fixed(t, k, false);
-    const Cdt::Place at = m_.locate(t, x, false);
+    Cdt::Place at = m_.locate(t, x, false);
+    if (at.kind == Cdt::Place::Outside || at.kind == Cdt::Place::Blocked) {
+      // Rounded just beyond a boundary edge: added on the edge it rounds away from.
+      if (!m_.fits_on_edge(t, k, x)) throw std::logic_error("ridt: a crossing falls where it cannot be added");
+      at = {Cdt::Place::Edge, t, k};
+    }
     VertexId v = 0;
     if (at.kind == Cdt::Place::Corner) {
       v = m_.at(at.t, at.k);

@@ -260,8 +260,10 @@ double crossing_coordinate(const Point& a, const Point& b, const Point& u, const
     return x;
   };
   std::int64_t lo = to_int(std::min(ac, bc)), hi = to_int(std::max(ac, bc));  // v in [lo, hi]
-  while (hi - lo > 1) {
-    const std::int64_t mid = lo + (hi - lo) / 2;
+  while (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo) > 1) {
+    const auto mid = static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) +
+                                               (static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo)) /
+                                                   2);  // no overflow across zero
     const double m = to_double(mid);
     const int s = compare_crossing(a, b, u, w, axis, m, m);
     if (s == 0) return m;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <mutex>
 #include <new>
 #include <utility>
@@ -215,6 +216,17 @@ void make_present(void* data, std::size_t bytes, unsigned threads) {
 #else
   (void)data, (void)bytes, (void)threads;
 #endif
+}
+
+std::size_t available_memory() {
+  std::FILE* f = std::fopen("/proc/meminfo", "r");
+  if (f == nullptr) return 0;
+  char line[256];
+  unsigned long long kib = 0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "MemAvailable: %llu kB", &kib) == 1) break;
+  std::fclose(f);
+  return static_cast<std::size_t>(kib) * 1024;
 }
 
 }  // namespace ridt::detail

@@ -26,18 +26,38 @@ Command add_generate(CLI::App& app) {
 
 Command add_check(CLI::App& app) {
   struct Args {
-    std::string points, triangles;
+    std::string points, triangles, poly, edges;
+    double min_angle = 0, max_area = 0;
   };
   auto a = std::make_shared<Args>();
-  CLI::App* chk = app.add_subcommand("check", "validate a triangulation exactly");
-  chk->add_option("points", a->points, "the points")->required();
+  CLI::App* chk = app.add_subcommand("check", "validate a triangulation or mesh exactly");
+  chk->add_option("points", a->points, "the points (for a mesh, every vertex: ridt mesh's OUT.node)")->required();
   chk->add_option("triangles", a->triangles,
                   "the triangles: " + io::triangle_formats() + ", or the .parts index of ridt-mpi's parts")
       ->required();
+  chk->add_option("--poly", a->poly, "a mesh's input .poly: its segments must be chains of edges, its holes empty");
+  chk->add_option("--edges", a->edges, "a mesh's .edge file (ridt mesh's OUT.edge): its segment edges");
+  chk->add_option("--min-angle", a->min_angle, "no angle below DEG degrees (but beside small input angles)");
+  chk->add_option("--max-area", a->max_area, "no triangle larger than A");
   return {chk, [a] {
             const io::PointFile p = io::read_points(a->points);
             const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
-            const CheckResult r = check(p.points, t);
+            CheckResult r;
+            if (a->poly.empty() && a->edges.empty() && a->min_angle == 0 && a->max_area == 0) {
+              r = check(p.points, t);
+            } else {
+              const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly);
+              std::vector<VertexId> edges;
+              if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
+              MeshSpec spec;
+              spec.edges = edges;
+              spec.segments = g.segments;
+              spec.input_points = a->poly.empty() ? 0 : g.points.size();
+              spec.holes = g.holes;
+              spec.min_angle = a->min_angle;
+              spec.max_area = a->max_area;
+              r = check_mesh(p.points, t, spec);
+            }
             std::printf("%s\n", r.message.c_str());
             return r.valid ? 0 : kExitInvalid;
           }};

@@ -58,10 +58,14 @@ void apply_switches(Args& a) {
       else
         a.max_area = parse_number(n, c);
     } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
-      (c == 'A' ? a.attributes : c == 'c' ? a.convex_hull : c == 'Y' ? a.no_boundary : c == 'n' ? a.neighbours
-                                                                                                   : a.zero_based) = true;
+      (c == 'A'       ? a.attributes
+           : c == 'c' ? a.convex_hull
+           : c == 'Y' ? a.no_boundary
+           : c == 'n' ? a.neighbours
+                      : a.zero_based) = true;
     } else if (c != 'p' && c != 'Q' && c != 'V') {
-      throw InputError(std::string("unknown or unsupported switch '") + c + "' (ridt takes p, q, a, A, c, Y, n, z, Q, V)");
+      throw InputError(std::string("unknown or unsupported switch '") + c +
+                       "' (ridt takes p, q, a, A, c, Y, n, z, Q, V)");
     }
   }
 }
@@ -76,8 +80,8 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   std::vector<Point> all = g.points;
   all.insert(all.end(), t.steiner.begin(), t.steiner.end());
   try {
-    io::write_elements(a.output, t.triangles, a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(),
-                       first);
+    io::write_elements(a.output, t.triangles,
+                       a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(), first);
     io::write_points(node, all, first);
     io::write_edges(edge, t.edges, first);
     if (a.neighbours) io::write_triangulation(neigh, all, t, first);

@@ -71,6 +71,10 @@ Pslg read_pslg(const std::string& path);
 /// The same for a file's content already in memory; `name` picks the format by its extension.
 Pslg parse_pslg(std::string_view data, const std::string& name);
 
+/// Reads Triangle's .edge file ("edges [markers]", then "i a b [marker]" numbered from
+/// `first_index`, each end one of `points`) as pairs of 0-based indices; throws IoError.
+std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index);
+
 /// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
 /// `first_index`, each with boundary marker 1 (they are segments).
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index);

@@ -118,11 +118,16 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
   out.put(attribute ? " 3 1\n" : " 3 0\n");
   for (std::size_t k = 0; k < nt; ++k) {
     out.put_int(static_cast<std::int64_t>(k) + first_index);
-    for (int i = 0; i < 3; ++i) out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
+    for (int i = 0; i < 3; ++i)
+      out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
     if (attribute) out.put(' '), out.put_double(attributes[k]);
     out.put('\n');
   }
   out.commit();
+}
+
+std::size_t read_segments_of(const std::string& path, const std::vector<Line>& lines, std::size_t at, Pslg& g) {
+  return read_segments(path, lines, at, g);
 }
 
 }  // namespace ridt::io::detail
@@ -151,11 +156,25 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
   out.put(attribute ? " 3 1\n" : " 3 0\n");
   for (std::size_t k = 0; k < nt; ++k) {
     out.put_int(static_cast<std::int64_t>(k) + first_index);
-    for (int i = 0; i < 3; ++i) out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
+    for (int i = 0; i < 3; ++i)
+      out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
     if (attribute) out.put(' '), out.put_double(attributes[k]);
     out.put('\n');
   }
   out.commit();
+}
+
+std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index) {
+  const std::string text = detail::read_file_whole(path);
+  std::vector<detail::Line> lines;
+  detail::for_each_line(text, [&](std::size_t number, std::string_view line) { lines.push_back({number, line}); });
+  Pslg g;
+  g.points.resize(points);
+  g.first_index = first_index;
+  const std::size_t at = detail::read_segments_of(path, lines, 0, g);
+  if (at != lines.size())
+    detail::fail_line(path, lines[at].number, "unexpected line " + detail::quoted(lines[at].text));
+  return std::move(g.segments);
 }
 
 }  // namespace ridt::io

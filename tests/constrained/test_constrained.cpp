@@ -98,6 +98,17 @@ TEST(Constrained, ACrossingIsTheExactOneRoundedToNearest) {
   EXPECT_TRUE(check_constrained(with_steiner(pts, t), t.triangles, t.edges).valid);
 }
 
+TEST(Constrained, ACrossingWhoseSegmentSpansZero) {
+  // The bisection over doubles runs from -1 to 4 in y: across zero, where the integers that
+  // order the doubles change sign.
+  const std::vector<Point> pts = {{0, 0}, {10, 0}, {4, -1}, {6, 4}, {5, 8}};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, std::vector<VertexId>{0, 1, 2, 3});
+  ASSERT_EQ(t.crossings, 1u);
+  EXPECT_EQ(t.steiner[0].y, 0);
+  EXPECT_EQ(t.steiner[0].x, 4.4);
+  EXPECT_TRUE(check_constrained(with_steiner(pts, t), t.triangles, t.edges).valid);
+}
+
 TEST(Constrained, ManyCrossingSegmentsGiveAnExactTriangulation) {
   const std::vector<Point> pts = generate(Distribution::Uniform, 2000, 5);
   std::vector<VertexId> segs;
