@@ -11,10 +11,10 @@ cd "$(dirname "$0")/.."
 scripts/deps.sh test
 jobs=$(nproc)
 
-echo "== Layout: file and function sizes, src/ private to the library and its tests"
+echo "== Layout: file and function sizes, src/ private to the library and its tests (at ${SECONDS} s)"
 /usr/bin/python3 scripts/layout.py
 
-echo "== Release build and tests"
+echo "== Release build and tests (at ${SECONDS} s)"
 # Every option said, not left to the cache: scripts/demo.sh configures the same build/ with
 # the tests off. An empty test run is an error, never a pass.
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=ON \
@@ -25,7 +25,7 @@ cmake --build build -j "$jobs"
 [ -x build/ridt-mpi ] || { echo "ridt-mpi was not built: is MPI installed (scripts/deps.sh test)?" >&2; exit 1; }
 ctest --test-dir build -j "$jobs" --output-on-failure --no-tests=error
 
-echo "== Python: pip wheel, and the wheel installed into a virtual environment; the tests on what pip installed"
+echo "== Python: pip wheel, and the wheel installed into a virtual environment; the tests on what pip installed (at ${SECONDS} s)"
 # (ctest above ran the same tests on the package in the build tree.)
 rm -rf build/venv build/wheels
 /usr/bin/python3 -m venv --system-site-packages build/venv
@@ -36,7 +36,7 @@ ls build/wheels/ridt-*.whl
 (cd python/tests && ../../build/venv/bin/python -c "import ridt, sys; assert 'venv' in ridt.__file__, ridt.__file__" &&
   ../../build/venv/bin/python -m pytest -q -p no:cacheprovider .)
 
-echo "== scipy's own tests (Delaunay, Voronoi, LinearND, NearestND, CloughTocher, griddata) against ridt"
+echo "== scipy's own tests (Delaunay, Voronoi, LinearND, NearestND, CloughTocher, griddata) against ridt (at ${SECONDS} s)"
 # The test files of the scipy installed on the machine, with scipy's 2-D classes replaced by
 # ridt's (python/scipy_suite/ridt_scipy.py); exceptions only as python/scipy_suite/exceptions.txt
 # lists them. Missing files are an error, not a skip.
@@ -45,27 +45,27 @@ scipy_tests=$(/usr/bin/python3 -c "import os, scipy; print(os.path.dirname(scipy
   "$scipy_tests/spatial/tests/test_qhull.py" "$scipy_tests/interpolate/tests/test_interpnd.py" \
   "$scipy_tests/interpolate/tests/test_ndgriddata.py")
 
-echo "== AddressSanitizer + UndefinedBehaviorSanitizer"
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer (at ${SECONDS} s)"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=address,undefined \
   -DRIDT_BUILD_TESTS=ON -DRIDT_BUILD_TOOLS=ON -DRIDT_BUILD_BENCH=OFF >/dev/null
 cmake --build build-asan -j "$jobs"
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ASAN_OPTIONS=detect_leaks=1 RIDT_ADVERSARIAL_SCALE=0.1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure --no-tests=error
 
-echo "== ThreadSanitizer: the threaded tests"
+echo "== ThreadSanitizer: the threaded tests (at ${SECONDS} s)"
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRIDT_SANITIZE=thread \
   -DRIDT_BUILD_BENCH=OFF -DRIDT_BUILD_TOOLS=OFF >/dev/null
 cmake --build build-tsan -j "$jobs" --target ridt_thread_tests
 TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:die_after_fork=0 build-tsan/tests/ridt_thread_tests
 
-echo "== Install and find_package(ridt)"
+echo "== Install and find_package(ridt) (at ${SECONDS} s)"
 rm -rf build/install build/consumer
 cmake --install build --prefix build/install >/dev/null
 cmake -S tests/consumer -B build/consumer -G Ninja -DCMAKE_PREFIX_PATH="$PWD/build/install" >/dev/null
 cmake --build build/consumer
 build/consumer/consumer
 
-echo "== 10^7 uniform points: serial and every threaded method, each output validated"
+echo "== 10^7 uniform points: serial and every threaded method, each output validated (at ${SECONDS} s)"
 scripts/large.sh 10000000 2 quick  # fails unless every output is valid
 
 echo "all tests passed"

@@ -323,10 +323,14 @@ expect 0 "mesh long options" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q2.ele" --q
 expect 0 "check the mesh at 33" -- "$ridt" check "$dir/q2.node" "$dir/q2.ele" --poly "$dir/sq.poly" --edges "$dir/q2.edge" --min-angle 33 --max-area 1
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
 stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
-expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pD
-stderr_has "'D'"; absent "$dir/q3.ele"
-expect 2 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg"
-absent "$dir/m.svg"
+expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pS
+stderr_has "'S'"; absent "$dir/q3.ele"
+expect 0 "mesh conforming" -- "$ridt" mesh "$dir/l.poly" -o "$dir/d.ele" --switches pcD
+expect 0 "the conforming mesh is Delaunay" -- "$ridt" check "$dir/d.node" "$dir/d.ele"
+expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30
+[ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
+expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"
+absent "$dir/m.off"
 
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -56,7 +56,10 @@ struct Quality {
   double max_area = 0;  ///< 0: no bound of all triangles (regions may still have their own)
   bool split_boundary = true;  ///< false: no point added on the boundary's segments (-Y)
   std::size_t max_steiner = 0;  ///< stop after adding this many points (0: no limit)
-  bool enabled() const { return min_angle > 0 || max_area > 0; }
+  /// Conforming Delaunay (-D): segments split until no vertex lies in a subsegment's diametral
+  /// circle, so that every edge, the segments' too, is Delaunay (with `split_boundary`).
+  bool conforming = false;
+  bool enabled() const { return min_angle > 0 || max_area > 0 || conforming; }
 };
 
 /// The constrained Delaunay triangulation of `points` with `segments` (pairs of indices into

@@ -45,6 +45,8 @@ class ConstrainedDelaunay:
         Quality bounds (0: none).
     split_boundary : bool
         False adds no point on the boundary's segments (Triangle's ``-Y``).
+    conforming : bool
+        Split segments until every edge, theirs too, is Delaunay (Triangle's ``-D``).
     method, threads, seed
         As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
 
@@ -74,7 +76,8 @@ class ConstrainedDelaunay:
 
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
-                 split_boundary: bool = True, method: str = "auto", threads: int = 1, seed: int = 1):
+                 split_boundary: bool = True, conforming: bool = False, method: str = "auto", threads: int = 1,
+                 seed: int = 1):
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
         if segs.size and segs.max() >= pts.shape[0]:
@@ -88,7 +91,8 @@ class ConstrainedDelaunay:
         method = _api._choice(method, "method", _api.METHODS)
         tri, edges, added, crossings, attributes = _core.triangulate_constrained(
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
-            np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary))
+            np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
+            bool(conforming))
         self._tri = tri
         self.ninput = int(pts.shape[0])
         self._points = np.concatenate([pts, added]) if len(added) else pts

@@ -8,9 +8,10 @@ Switches taken: ``p`` (the input is a planar straight-line graph: its segments b
 and the exterior are removed), ``q[DEG]`` (a quality mesh: no angle below DEG degrees, 20 where
 no number follows), ``a[AREA]`` (no triangle larger than AREA; with no number, each region's own
 bound), ``A`` (each triangle's regional attribute, as 'triangle_attributes'), ``c`` (keep the
-convex hull), ``Y`` (no points added on the boundary), ``e`` (also return every edge), ``n``
+convex hull), ``D`` (conforming Delaunay: every edge Delaunay), ``Y`` (no points added on the
+boundary), ``e`` (also return every edge), ``n``
 (also return the neighbours), ``z`` (indices from 0: always so here) and ``Q``/``V`` (quiet,
-verbose: ignored). The others (``r``, ``D``, ``S``, ``o2``, ...) are refused with ValueError.
+verbose: ignored). The others (``r``, ``S``, ``o2``, ...) are refused with ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
 ``a`` ask). Every triangle is counter-clockwise; indices are 0-based; the points added follow the
 input's in 'vertices'.
@@ -26,7 +27,7 @@ import numpy as np
 from . import _api
 from ._constrained import ConstrainedDelaunay
 
-_TAKEN = set("pqaAcYenzQV")
+_TAKEN = set("pqaAcDYenzQV")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
@@ -70,7 +71,8 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
         regions = np.concatenate([regions[:, :3], np.zeros((len(regions), 1))], axis=1)
     cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
                               holes=holes, convex_hull="c" in flags or not pslg, regions=regions,
-                              min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags)
+                              min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
+                              conforming="D" in flags)
     out: Dict[str, np.ndarray] = {"vertices": cdt.points.copy(), "triangles": cdt.simplices.copy()}
     boundary = _boundary_edges(cdt)
     markers = np.zeros(cdt.npoints, dtype=np.intc)

@@ -243,8 +243,8 @@ void bind_constrained(py::module_& m) {
       "triangulate_constrained",
       [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments, const Points& holes,
          bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical,
-         const py::array_t<double, py::array::c_style>& regions, double min_angle, double max_area,
-         bool split_boundary) {
+         const py::array_t<double, py::array::c_style>& regions, double min_angle, double max_area, bool split_boundary,
+         bool conforming) {
         ridt::Options o;
         o.method = ridt::parse<ridt::Method>(method);
         o.threads = threads;
@@ -265,6 +265,7 @@ void bind_constrained(py::module_& m) {
         q.min_angle = min_angle;
         q.max_area = max_area;
         q.split_boundary = split_boundary;
+        q.conforming = conforming;
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
@@ -282,7 +283,7 @@ void bind_constrained(py::module_& m) {
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
       py::arg("threads"), py::arg("seed"), py::arg("canonical"), py::arg("regions"), py::arg("min_angle"),
-      py::arg("max_area"), py::arg("split_boundary"));
+      py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"));
 }
 
 // The validator of constrained triangulations and meshes.

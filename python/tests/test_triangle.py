@@ -69,11 +69,21 @@ def test_quality_switches():
     assert len(kept["segments"]) == 8
 
 
+def test_conforming_delaunay():
+    rng = np.random.default_rng(3)
+    pts = np.concatenate([np.array(SQUARE + HOLE, dtype=float), rng.uniform(0, 10, (200, 2))])
+    tri = {"vertices": pts, "segments": np.array(loop(0) + loop(4)) }
+    t = triangle.triangulate(tri, "pcD")
+    assert len(t["vertices"]) > len(pts)
+    assert ridt.check(t["vertices"], t["triangles"])[0]  # every edge Delaunay, segments' too
+    assert not ridt.check(pts, triangle.triangulate(tri, "pc")["triangles"])[0]
+
+
 def test_refused():
     with pytest.raises(ValueError, match="'r' is not supported"):
         triangle.triangulate({"vertices": SQUARE}, "pr")
-    with pytest.raises(ValueError, match="'D' is not supported"):
-        triangle.triangulate({"vertices": SQUARE}, "pD")
+    with pytest.raises(ValueError, match="'S' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "pS")
     with pytest.raises(ValueError, match="needs 'vertices'"):
         triangle.triangulate({}, "")
     with pytest.raises(TypeError):

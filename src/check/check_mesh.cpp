@@ -92,14 +92,20 @@ void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::v
     }
     const VertexId a = stand(spec.segments[s]), b = stand(spec.segments[s + 1]);
     if (a == b) continue;
-    const double grow = 1e-6 * std::max(std::fabs(pts[a].x - pts[b].x), std::fabs(pts[a].y - pts[b].y));
+    const double length = std::max(std::fabs(pts[a].x - pts[b].x), std::fabs(pts[a].y - pts[b].y));
+    const double grow = 1e-6 * length;
     const double x0 = std::min(pts[a].x, pts[b].x) - grow, x1 = std::max(pts[a].x, pts[b].x) + grow;
     const double y0 = std::min(pts[a].y, pts[b].y) - grow, y1 = std::max(pts[a].y, pts[b].y) + grow;
     auto near = [&](VertexId v) {
       const Point& p = pts[v];
       if (v == b) return true;
       if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
-      return v >= input || orient2d(pts[a], pts[b], p) == 0;
+      if (v >= input || orient2d(pts[a], pts[b], p) == 0) return true;
+      // An input point within a few units in the last place of the line: a crossing that
+      // rounded onto it.
+      const double cross = (pts[b].x - pts[a].x) * (p.y - pts[a].y) - (pts[b].y - pts[a].y) * (p.x - pts[a].x);
+      const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(pts[a].x), std::fabs(pts[a].y)});
+      return std::fabs(cross) <= 0x1p-50 * scale * length;
     };
     const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
     std::vector<VertexId> todo{a};

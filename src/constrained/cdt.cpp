@@ -3,6 +3,7 @@
 // across from corner k; neighbour k is the triangle beyond it.
 #include "constrained/cdt.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "predicates/predicates.hpp"
@@ -174,6 +175,76 @@ bool Cdt::fits_on_edge(std::uint32_t t, int k, const Point& p) const {
   if (n < 0) return true;
   const Point& d = pts[at(static_cast<std::uint32_t>(n), back(static_cast<std::uint32_t>(n), t))];
   return orient2d(d, y, p) > 0 && orient2d(d, p, x) > 0;
+}
+
+VertexId Cdt::insert_cavity(const Point& p, const std::vector<std::uint32_t>& cavity) {
+  auto inside = [&](std::int32_t n) {
+    return n >= 0 && std::find(cavity.begin(), cavity.end(), static_cast<std::uint32_t>(n)) != cavity.end();
+  };
+  rim_.clear();
+  for (const std::uint32_t t : cavity)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t n = nbrs[3 * t + k];
+      if (inside(n)) continue;
+      const VertexId x = at(t, k + 1), y = at(t, k + 2);
+      if (orient2d(pts[x], pts[y], p) <= 0) return kNone;  // p does not see this edge from inside
+      rim_.push_back({x, y, n, n >= 0 ? back(static_cast<std::uint32_t>(n), t) : -1, fixed[3 * t + k]});
+    }
+  if (rim_.size() != cavity.size() + 2) return kNone;  // not a disc
+  const auto v = static_cast<VertexId>(pts.size());
+  pts.push_back(p);
+  corner.push_back(kNone);
+  std::vector<std::uint32_t> fan(cavity.begin(), cavity.end());
+  fan.push_back(add_triangle(cavity[0]));
+  fan.push_back(add_triangle(cavity[0]));
+  // The fan triangle (x, y, p) of each rim edge; its neighbours across (y, p) and (p, x) are
+  // the fan triangles that start at y and end at x.
+  auto starting = [&](VertexId x) {
+    for (std::size_t i = 0; i < rim_.size(); ++i)
+      if (rim_[i].x == x) return static_cast<std::int32_t>(fan[i]);
+    return std::int32_t{-1};
+  };
+  auto ending = [&](VertexId y) {
+    for (std::size_t i = 0; i < rim_.size(); ++i)
+      if (rim_[i].y == y) return static_cast<std::int32_t>(fan[i]);
+    return std::int32_t{-1};
+  };
+  for (std::size_t i = 0; i < rim_.size(); ++i) {
+    const Rim& r = rim_[i];
+    set(fan[i], {r.x, r.y, v}, {starting(r.y), ending(r.x), r.out}, {0, 0, r.fixed});
+    if (r.out >= 0) nbrs[3 * static_cast<std::uint32_t>(r.out) + r.back] = static_cast<std::int32_t>(fan[i]);
+  }
+  return v;
+}
+
+void Cdt::restore(std::vector<std::uint32_t> slots) {
+  while (!slots.empty()) {
+    const std::uint32_t s = slots.back();
+    slots.pop_back();
+    const std::uint32_t t = s / 3;
+    const int i = static_cast<int>(s % 3);
+    const std::int32_t n = nbrs[s];
+    if (n < 0 || fixed[s]) continue;
+    const VertexId d = at(static_cast<std::uint32_t>(n), back(static_cast<std::uint32_t>(n), t));
+    if (incircle(pts[tris[3 * t]], pts[tris[3 * t + 1]], pts[tris[3 * t + 2]], pts[d]) <= 0) continue;
+    flip(t, i);  // t is now (p, a, d), n (p, d, b): their sides away from the new edge p-d
+    const auto u = static_cast<std::uint32_t>(n);
+    slots.insert(slots.end(), {3 * t, 3 * t + 2, 3 * u, 3 * u + 1});
+  }
+}
+
+VertexId Cdt::insert_on_edge(const Point& p, std::uint32_t t, int k) {
+  const bool on_line = orient2d(pts[at(t, k + 1)], pts[at(t, k + 2)], p) == 0;
+  const VertexId v = insert(p, {Place::Edge, t, k});
+  if (on_line) return v;
+  std::vector<std::uint32_t> spokes;
+  around(v, [&](std::uint32_t u) {
+    const int i = corner_of(u, v);
+    spokes.push_back(3 * u + (i + 1) % 3), spokes.push_back(3 * u + (i + 2) % 3);
+    return false;
+  });
+  restore(std::move(spokes));
+  return v;
 }
 
 }  // namespace ridt::detail

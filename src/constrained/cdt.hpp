@@ -37,6 +37,19 @@ class Cdt {
   /// segment by a rounding), leaves every triangle there counter-clockwise.
   bool fits_on_edge(std::uint32_t t, int k, const Point& p) const;
 
+  /// p added by replacing `cavity` (triangles linked without crossing a fixed edge, whose
+  /// circles hold p: Bowyer and Watson) with a fan about p; kNone, with nothing changed, where
+  /// the cavity is not a disc whose every boundary edge p sees from inside.
+  VertexId insert_cavity(const Point& p, const std::vector<std::uint32_t>& cavity);
+
+  /// p added on edge k of t (fits_on_edge must hold); where p is off the edge's line, the
+  /// edges from p to the two apexes are flipped as they need too.
+  VertexId insert_on_edge(const Point& p, std::uint32_t t, int k);
+
+  /// Lawson's flips from the edges in `slots`: each that is not fixed and not locally
+  /// Delaunay flipped, the four around it then checked in turn.
+  void restore(std::vector<std::uint32_t> slots);
+
   /// The triangles around vertex v, in order (around a boundary vertex, from one side).
   std::vector<std::uint32_t> ring(VertexId v) const;
   /// visit(t) for the triangles around v, in ring()'s order, until it returns true; returns
@@ -84,6 +97,14 @@ class Cdt {
   std::uint32_t add_triangle(std::uint32_t like);
   void flip(std::uint32_t t, int i);
   void legalize(VertexId p, std::vector<std::uint32_t> todo);
+
+  struct Rim {  // a boundary edge of a cavity: x -> y, the triangle beyond it and its slot there
+    VertexId x, y;
+    std::int32_t out;
+    int back;
+    std::uint8_t fixed;
+  };
+  std::vector<Rim> rim_;
 };
 
 }  // namespace ridt::detail

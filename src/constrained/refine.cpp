@@ -259,7 +259,10 @@ class Refiner {
       bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1});
       return;
     }
-    added(m_.insert(p, at));
+    // The triangles whose circles hold p are known (would_encroach's): replaced by a fan
+    // about p where they make a cavity p sees whole, else p added with flips.
+    const VertexId v = m_.insert_cavity(p, seen_);
+    added(v != Cdt::kNone ? v : m_.insert(p, at));
   }
 
   // Where subsegment x-y is split: at the power of two nearest half its length from its
@@ -306,7 +309,7 @@ void Refiner::split(std::uint32_t s) {
                                                                      : ends_[x];
   VertexId v = 0;
   if (m_.fits_on_edge(t, k, p)) {
-    v = m_.insert(p, {Cdt::Place::Edge, t, k});
+    v = m_.insert_on_edge(p, t, k);
   } else {
     if (boundary(s)) return;
     const Cdt::Place at = m_.locate(t, p, false);

@@ -10,6 +10,8 @@
 #include "constrained/segments.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
@@ -85,23 +87,75 @@ class Inserter {
     const VertexId u = m_.at(t, k + 1), w = m_.at(t, k + 2);
     const Point x = crossing_rounded(m_.pts[a], m_.pts[b], m_.pts[u], m_.pts[w]);
     m_.set_fixed(t, k, false);
-    Cdt::Place at = m_.locate(t, x, false);
-    if (at.kind == Cdt::Place::Outside || at.kind == Cdt::Place::Blocked) {
-      // Rounded just beyond a boundary edge: added on the edge it rounds away from.
-      if (!m_.fits_on_edge(t, k, x)) throw std::logic_error("ridt: a crossing falls where it cannot be added");
-      at = {Cdt::Place::Edge, t, k};
-    }
     VertexId v = 0;
-    if (at.kind == Cdt::Place::Corner) {
+    if (const VertexId end = within_ulps(x, {a, b, u, w}); end != Cdt::kNone) {
+      v = end;  // within a few units in the last place of an end: the segments bend through it
+    } else if (const Cdt::Place at = beside(t, k, x); at.kind == Cdt::Place::Corner) {
       v = m_.at(at.t, at.k);
-    } else {
+    } else if (at.kind == Cdt::Place::Inside || at.kind == Cdt::Place::Edge) {
       v = m_.insert(x, at);
       crossings.push_back(v);
+    } else if (m_.fits_on_edge(t, k, x)) {  // in neither triangle by a rounding: on the edge
+      v = m_.insert_on_edge(x, t, k);
+      crossings.push_back(v);
+    } else {  // beside triangles thinner than a rounding: wherever it lies
+      const Cdt::Place far = anywhere(t, x);
+      v = far.kind == Cdt::Place::Corner ? m_.at(far.t, far.k) : m_.insert(x, far);
+      if (far.kind != Cdt::Place::Corner) crossings.push_back(v);
     }
+    // u-w, no longer fixed, may be left standing where it is not locally Delaunay (x rounded
+    // onto a vertex): flipped as it needs.
+    if (const std::uint32_t e = m_.find_edge(u, w); e != Cdt::kNone) m_.restore({e});
     insert(u, v);
     insert(v, w);
     insert(a, v);
     return v;
+  }
+
+  // The first of `ends` within 4 units in the last place of x in each coordinate, or kNone:
+  // nearly collinear segments would otherwise cross again and again at the points added.
+  VertexId within_ulps(const Point& x, std::initializer_list<VertexId> ends) const {
+    auto close = [](double p, double q) {
+      const double ulp = std::max(std::fabs(p), std::fabs(q)) * 0x1p-52;
+      return std::fabs(p - q) <= 4 * ulp;
+    };
+    for (const VertexId e : ends)
+      if (close(m_.pts[e].x, x.x) && close(m_.pts[e].y, x.y)) return e;
+    return Cdt::kNone;
+  }
+
+  // Where x lies: a walk from t, or, where the walk circles (it may cross fixed edges), every
+  // triangle in turn.
+  Cdt::Place anywhere(std::uint32_t t, const Point& x) const {
+    try {
+      const Cdt::Place at = m_.locate(t, x, false);
+      if (at.kind != Cdt::Place::Outside) return at;
+    } catch (const std::logic_error&) {}
+    for (std::uint32_t r = 0; r < m_.size(); ++r)
+      if (const Cdt::Place at = beside(r, -1, x); at.kind != Cdt::Place::Outside) return at;
+    throw std::logic_error("ridt: a crossing falls outside the triangulation");
+  }
+
+  // Where x, a rounding away from edge k of t, lies: in t or the triangle across (inside, on
+  // an edge or at a corner), else Outside.
+  Cdt::Place beside(std::uint32_t t, int k, const Point& x) const {
+    const std::int32_t n = k < 0 ? -1 : m_.nbrs[3 * t + k];  // k < 0: t alone
+    for (const std::int32_t c : {static_cast<std::int32_t>(t), n}) {
+      if (c < 0) continue;
+      const auto r = static_cast<std::uint32_t>(c);
+      int zeros = 0, zero = 0, outside = 0;
+      for (int j = 0; j < 3; ++j) {
+        const int o = orient2d(m_.pts[m_.at(r, j + 1)], m_.pts[m_.at(r, j + 2)], x);
+        outside += o < 0;
+        if (o == 0) ++zeros, zero = j;
+      }
+      if (outside > 0) continue;
+      if (zeros == 0) return {Cdt::Place::Inside, r, 0};
+      if (zeros == 1) return {Cdt::Place::Edge, r, zero};
+      for (int j = 0; j < 3; ++j)
+        if (orient2d(m_.pts[m_.at(r, j + 1)], m_.pts[m_.at(r, j + 2)], x) != 0) return {Cdt::Place::Corner, r, j};
+    }
+    return {Cdt::Place::Outside, t, std::max(k, 0)};
   }
 
   // The triangles the segment crosses from a (leaving through triangle t) up to the next

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "helpers.hpp"
 #include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
@@ -30,8 +31,8 @@ Meshed mesh(const Pslg& g, const Quality& q, bool convex_hull = false, std::vect
   spec.segments = g.segments;
   spec.input_points = g.points.size();
   spec.holes = g.holes;
-  spec.min_angle = q.min_angle;
-  spec.max_area = q.max_area;
+  spec.min_angle = m.t.warning.empty() ? q.min_angle : 0;  // a run stopped early keeps no bound
+  spec.max_area = m.t.warning.empty() ? q.max_area : 0;
   const CheckResult r = check_mesh(m.all, m.t.triangles, spec);
   EXPECT_TRUE(r.valid) << r.message;
   return m;
@@ -128,6 +129,26 @@ TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   }
 }
 
+TEST(Refine, ConformingDelaunayMakesEveryEdgeDelaunay) {
+  Pslg g = generate_coastline(2000, 3, 4);
+  g.holes.clear();  // the whole convex hull: then the result is a Delaunay triangulation
+  Quality q;
+  q.conforming = true;
+  const Meshed m = mesh(g, q, true);
+  EXPECT_GT(m.t.steiner.size(), 0u);
+  // Every edge locally Delaunay, the segments' too: only the boundary's edges named (the hull's
+  // pieces, split at rounded points, may bend by a rounding, so check() would not take them).
+  std::vector<VertexId> boundary;
+  for (std::size_t s = 0; s < m.t.neighbors.size(); ++s)
+    if (m.t.neighbors[s] < 0)
+      boundary.push_back(m.t.triangles[s - s % 3 + (s + 1) % 3]),
+          boundary.push_back(m.t.triangles[s - s % 3 + (s + 2) % 3]);
+  MeshSpec spec;
+  spec.edges = boundary;
+  const CheckResult all = check_mesh(m.all, m.t.triangles, spec);
+  EXPECT_TRUE(all.valid) << all.message;
+}
+
 TEST(Refine, BadBoundsAreRefused) {
   const Pslg g = generate_coastline(100, 0, 1);
   Quality q;
@@ -152,6 +173,51 @@ TEST(Refine, TheStopsAskedAreKept) {
   EXPECT_EQ(t.steiner.size(), 50u);
   EXPECT_NE(t.warning.find("stopped after 50"), std::string::npos) << t.warning;
 }
+
+TEST(Refine, TouchingAndNestedHoles) {
+  // A square; in it two square holes that share a corner and one edge's part; in the first, an
+  // island; in the island, a lake. The island is meshed, its lake and the holes are not.
+  Pslg g;
+  auto square = [&](double x0, double y0, double x1, double y1) {
+    const auto first = static_cast<VertexId>(g.points.size());
+    g.points.insert(g.points.end(), {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+    for (VertexId k = 0; k < 4; ++k) g.segments.push_back(first + k), g.segments.push_back(first + (k + 1) % 4);
+  };
+  square(0, 0, 10, 10);
+  square(1, 1, 5, 5);  // hole A
+  square(5, 2, 8, 5);  // hole B: touches A along x = 5, from y = 2 to 5, and at (5, 5)
+  square(2, 2, 4, 4);  // an island in A
+  square(2.5, 2.5, 3.5, 3.5);  // a lake in the island
+  g.holes = {{1.5, 1.5}, {7, 3}, {3, 3}};
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = 0.5;
+  const Meshed m = mesh(g, q);
+  double total = 0;
+  for (std::size_t k = 0; k < m.t.size(); ++k) total += area(m, k);
+  EXPECT_NEAR(total, 100 - 16 - 9 + 4 - 1, 1e-9);
+}
+
+class PslgFixture : public ::testing::TestWithParam<const char*> {};
+
+// Each of delaunator's point sets (its first 200 points) as a closed polyline through them in
+// order: crossings, nearly collinear overlaps and turns of 10^-15 degrees, meshed at 20
+// degrees (up to 5000 points added) and validated.
+TEST_P(PslgFixture, AsAPolylineMeshedAndValidated) {
+  Pslg g;
+  g.points = read_json_points(fixture_path(GetParam()));
+  if (g.points.size() > 200) g.points.resize(200);  // a polyline of n points crosses itself ~n^2 times
+  for (VertexId k = 0; k < g.points.size(); ++k)
+    g.segments.push_back(k), g.segments.push_back(static_cast<VertexId>((k + 1) % g.points.size()));
+  const Meshed plain = mesh(g, {}, true);
+  Quality q;
+  q.min_angle = 20;
+  q.max_steiner = 5000;  // input angles of 10^-15 degrees: no end of the shells in view
+  const Meshed m = mesh(g, q, true);
+  EXPECT_GE(m.t.steiner.size(), plain.t.crossings);
+}
+
+INSTANTIATE_TEST_SUITE_P(Delaunator, PslgFixture, ::testing::ValuesIn(kDelaunatorFixtures));
 
 TEST(Generate, CoastlinesAreSimpleAndTheSameEveryTime) {
   const Pslg g = generate_coastline(4000, 9, 5);

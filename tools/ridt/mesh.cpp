@@ -17,7 +17,7 @@ struct Args {
   unsigned threads = 0;
   double quality = -1, max_area = 0;
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
-       neighbours = false;
+       neighbours = false, conforming = false;
 };
 
 // The number that follows switch `at` in Triangle's switch string (digits, '.', 'e' and a sign
@@ -42,7 +42,7 @@ double parse_number(const std::string& text, char sw) {
 
 // Triangle's switches that ridt takes: p (a .poly: always), q[DEG] (quality, 20 degrees where no
 // number follows), a[AREA] (an area bound; with no number, the regions' own), A (regional
-// attributes), c (keep the convex hull), Y (no points added on the boundary), n (.neigh),
+// attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added on the boundary), n (.neigh),
 // z (number from 0), Q and V (quiet, verbose: ignored); the others are refused by name.
 void apply_switches(Args& a) {
   const std::string& s = a.switches;
@@ -57,6 +57,8 @@ void apply_switches(Args& a) {
         a.region_areas = true;
       else
         a.max_area = parse_number(n, c);
+    } else if (c == 'D') {
+      a.conforming = true;
     } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
       (c == 'A'       ? a.attributes
            : c == 'c' ? a.convex_hull
@@ -65,15 +67,24 @@ void apply_switches(Args& a) {
                       : a.zero_based) = true;
     } else if (c != 'p' && c != 'Q' && c != 'V') {
       throw InputError(std::string("unknown or unsupported switch '") + c +
-                       "' (ridt takes p, q, a, A, c, Y, n, z, Q, V)");
+                       "' (ridt takes p, q, a, A, c, D, Y, n, z, Q, V)");
     }
   }
 }
 
-// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none.
+// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
+// OUT.svg, its segments apart.
 void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
-  if (std::filesystem::path(a.output).extension() != ".ele")
-    throw InputError("mesh writes Triangle's files: give -o OUT.ele (OUT.node and OUT.edge are written beside it)");
+  const std::string extension = std::filesystem::path(a.output).extension().string();
+  if (extension == ".svg") {
+    std::vector<Point> all = g.points;
+    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+    return io::write_mesh_svg(a.output, all, t, t.edges);
+  }
+  if (extension != ".ele")
+    throw InputError(
+        "mesh writes Triangle's files or a drawing: give -o OUT.ele (OUT.node and OUT.edge are "
+        "written beside it) or OUT.svg");
   const int first = a.zero_based ? 0 : g.first_index;
   const std::filesystem::path base = std::filesystem::path(a.output).replace_extension();
   const std::string node = base.string() + ".node", edge = base.string() + ".edge", neigh = base.string() + ".neigh";
@@ -106,6 +117,7 @@ int run(Args a) {
   q.min_angle = a.quality > 0 ? a.quality : 0;
   q.max_area = a.max_area;
   q.split_boundary = !a.no_boundary;
+  q.conforming = a.conforming;
   const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
   if (t.crossings > 0)
@@ -122,7 +134,8 @@ Command add_mesh(CLI::App& app) {
   CLI::App* mesh = app.add_subcommand(
       "mesh", "the constrained Delaunay triangulation or quality mesh of a .poly file (Triangle's -p, -q, -a)");
   mesh->add_option("input", a->input, "a planar straight-line graph: .poly (Triangle's)")->required();
-  mesh->add_option("-o,--output", a->output, "OUT.ele; OUT.node and OUT.edge are written beside it")->required();
+  mesh->add_option("-o,--output", a->output, "OUT.ele (OUT.node and OUT.edge are written beside it), or OUT.svg")
+      ->required();
   mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
   mesh->add_option("--max-area", a->max_area, "no triangle larger than A (Triangle's -a)");
   mesh->add_flag("--region-areas", a->region_areas, "the regions' own area bounds (Triangle's -a with no number)");
@@ -131,7 +144,8 @@ Command add_mesh(CLI::App& app) {
   mesh->add_flag("--convex-hull", a->convex_hull,
                  "keep every triangle of the convex hull (Triangle's -c); else what the segments enclose");
   mesh->add_flag("--neighbours", a->neighbours, "write OUT.neigh too (Triangle's -n)");
-  mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, Y, n, z, Q and V are taken");
+  mesh->add_flag("--conforming", a->conforming, "conforming Delaunay: every edge Delaunay (Triangle's -D)");
+  mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, D, Y, n, z, Q and V are taken");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {mesh, [a] { return run(*a); }};

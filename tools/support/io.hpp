@@ -71,6 +71,11 @@ Pslg read_pslg(const std::string& path);
 /// The same for a file's content already in memory; `name` picks the format by its extension.
 Pslg parse_pslg(std::string_view data, const std::string& name);
 
+/// Draws a constrained triangulation or mesh as .svg, its segments' edges (pairs of indices)
+/// thick and red apart from the other edges; throws IoError past kSvgMaxTriangles.
+void write_mesh_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,
+                    std::span<const VertexId> edges);
+
 /// Reads Triangle's .edge file ("edges [markers]", then "i a b [marker]" numbered from
 /// `first_index`, each end one of `points`) as pairs of 0-based indices; throws IoError.
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index);

@@ -326,7 +326,9 @@ void write_off(Writer& out, std::span<const Point> points, std::span<const Verte
 void write_obj(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles);
 
 // A drawing (io_svg.cpp), of at most kSvgMaxTriangles triangles.
-void write_svg(const std::string& path, std::span<const Point> points, const Triangulation& t);
+/// Segments (pairs of indices), where given, are drawn apart from the other edges.
+void write_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,
+               std::span<const VertexId> segments = {});
 
 // io_voronoi.cpp and io_values.cpp (their Out records: formats.hpp).
 struct VoronoiOut;

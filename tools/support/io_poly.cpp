@@ -177,4 +177,9 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
   return std::move(g.segments);
 }
 
+void write_mesh_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,
+                    std::span<const VertexId> edges) {
+  detail::write_svg(path, points, t, edges);
+}
+
 }  // namespace ridt::io

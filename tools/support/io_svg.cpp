@@ -86,6 +86,17 @@ void put_hull(Writer& out, const Drawing& d, const Triangulation& t) {
   out.put("\"/>\n");
 }
 
+// Segments (pairs of indices) drawn apart: thick, in the hull's colour.
+void put_segments(Writer& out, const Drawing& d, std::span<const VertexId> segments) {
+  if (segments.empty()) return;
+  out.put("<path fill=\"none\" stroke=\"#c22\" stroke-linecap=\"round\" stroke-width=\"");
+  out.put_fixed(d.thick, 3);
+  out.put("\" d=\"");
+  for (std::size_t k = 0; k + 1 < segments.size(); k += 2)
+    out.put('M'), d.xy(out, segments[k]), out.put('L'), d.xy(out, segments[k + 1]);
+  out.put("\"/>\n");
+}
+
 // The points as dots, up to 20,000 of them.
 void put_points(Writer& out, const Drawing& d) {
   if (d.points.size() > 20000 || d.points.empty()) return;
@@ -99,7 +110,8 @@ void put_points(Writer& out, const Drawing& d) {
 
 }  // namespace
 
-void write_svg(const std::string& path, std::span<const Point> points, const Triangulation& t) {
+void write_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,
+               std::span<const VertexId> segments) {
   const std::size_t nt = t.size();
   if (nt > kSvgMaxTriangles)
     fail_file(path,
@@ -107,11 +119,13 @@ void write_svg(const std::string& path, std::span<const Point> points, const Tri
                   std::to_string(kSvgMaxTriangles) + "); write .off or .ele instead");
   check_indices(path, std::span(t.triangles).first(3 * nt), points.size(), "a triangle");
   check_indices(path, t.hull, points.size(), "the hull");
+  check_indices(path, segments, points.size(), "a segment");
   const Drawing d(points, nt);
   Writer out(path);
   put_header(out, d);
   put_edges(out, d, t);
   put_hull(out, d, t);
+  put_segments(out, d, segments);
   put_points(out, d);
   out.put("</svg>\n");
   out.commit();
