@@ -28,6 +28,7 @@
 #include "common.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
+#include "triangle.hpp"
 
 #ifdef RIDT_WITH_CGAL
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -35,14 +36,6 @@
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#endif
-#ifdef RIDT_WITH_TRIANGLE
-#define REAL double
-#define VOID void
-#define ANSI_DECLARATORS
-extern "C" {
-#include <triangle.h>
-}
 #endif
 
 namespace {

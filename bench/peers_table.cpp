@@ -33,6 +33,7 @@
 #include "common.hpp"
 #include "ridt/generate.hpp"
 #include "ridt/ridt.hpp"
+#include "triangle.hpp"
 
 #ifdef RIDT_WITH_CGAL
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -41,14 +42,6 @@
 #ifdef RIDT_WITH_QHULL
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
-}
-#endif
-#ifdef RIDT_WITH_TRIANGLE
-#define REAL double
-#define VOID void
-#define ANSI_DECLARATORS
-extern "C" {
-#include <triangle.h>
 }
 #endif
 

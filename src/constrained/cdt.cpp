@@ -247,4 +247,37 @@ VertexId Cdt::insert_on_edge(const Point& p, std::uint32_t t, int k) {
   return v;
 }
 
+// Where x, a rounding away from edge k of t, lies: in t or the triangle across (inside, on
+// an edge or at a corner), else Outside.
+Cdt::Place Cdt::beside(std::uint32_t t, int k, const Point& x) const {
+  const std::int32_t n = k < 0 ? -1 : nbrs[3 * t + k];  // k < 0: t alone
+  for (const std::int32_t c : {static_cast<std::int32_t>(t), n}) {
+    if (c < 0) continue;
+    const auto r = static_cast<std::uint32_t>(c);
+    int zeros = 0, zero = 0, outside = 0;
+    for (int j = 0; j < 3; ++j) {
+      const int o = orient2d(pts[at(r, j + 1)], pts[at(r, j + 2)], x);
+      outside += o < 0;
+      if (o == 0) ++zeros, zero = j;
+    }
+    if (outside > 0) continue;
+    if (zeros == 0) return {Place::Inside, r, 0};
+    if (zeros == 1) return {Place::Edge, r, zero};
+    for (int j = 0; j < 3; ++j)
+      if (orient2d(pts[at(r, j + 1)], pts[at(r, j + 2)], x) != 0) return {Place::Corner, r, j};
+  }
+  return {Place::Outside, t, std::max(k, 0)};
+}
+
+Cdt::Place Cdt::find(std::uint32_t from, const Point& p) const {
+  try {
+    const Place at = locate(from, p, false);
+    if (at.kind != Place::Outside) return at;
+  } catch (const std::logic_error&) {  // a walk across fixed edges can circle
+  }
+  for (std::uint32_t t = 0; t < size(); ++t)
+    if (const Place at = beside(t, -1, p); at.kind != Place::Outside) return at;
+  return {Place::Outside, from, 0};
+}
+
 }  // namespace ridt::detail

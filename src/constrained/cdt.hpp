@@ -30,6 +30,14 @@ class Cdt {
   /// (then the walk always ends: every edge it crosses is locally Delaunay).
   Place locate(std::uint32_t from, const Point& p, bool stop_at_fixed) const;
 
+  /// Where p lies, found by a walk from `from` that may cross fixed edges, or, where that walk
+  /// circles or leaves the triangulation, by every triangle in turn; Outside where none holds it.
+  Place find(std::uint32_t from, const Point& p) const;
+
+  /// Where p, a rounding away from edge k of t, lies: in t or the triangle across (Inside,
+  /// Edge or Corner), else Outside; k < 0: in t alone. No walk, so no fixed edge is crossed.
+  Place beside(std::uint32_t t, int k, const Point& p) const;
+
   /// p added at `at` (Inside or Edge; a fixed edge stays fixed in both halves); returns its id.
   VertexId insert(const Point& p, const Place& at);
 

@@ -116,7 +116,8 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   if (scale != 0)
     for (Point& p : pts) p = scaled(p, scale);
   detail::Cdt m(std::move(pts), out);
-  out.crossings = detail::insert_segments(m, segments, kept).size();
+  detail::insert_segments(m, segments, kept);
+  out.crossings = m.pts.size() - points.size();
   std::vector<Point> holes = domain.holes;
   std::vector<Region> regions = domain.regions;
   for (Point& h : holes) h = scaled(h, scale);

@@ -2,28 +2,17 @@
 #include "constrained/domain.hpp"
 
 #include <algorithm>
-#include <stdexcept>
-
-#include "predicates/predicates.hpp"
 
 namespace ridt::detail {
 namespace {
 
-// The triangle that holds q (inside or on its boundary), or -1: a walk from the last triangle
-// found, then, where the walk leaves the triangulation (q outside, or a hole between), every
-// triangle in turn.
+// The triangle that holds q (inside or on its boundary), or -1; `from` (a hint) moves to it.
 std::int64_t holding(const Cdt& m, const Point& q, std::uint32_t& from) {
   if (m.size() == 0) return -1;
-  try {
-    const Cdt::Place at = m.locate(std::min<std::uint32_t>(from, static_cast<std::uint32_t>(m.size() - 1)), q, false);
-    if (at.kind != Cdt::Place::Outside) return from = at.t;
-  } catch (const std::logic_error&) {  // a walk across fixed edges can circle: look everywhere
-  }
-  for (std::uint32_t t = 0; t < m.size(); ++t) {
-    const Point &a = m.pts[m.tris[3 * t]], &b = m.pts[m.tris[3 * t + 1]], &c = m.pts[m.tris[3 * t + 2]];
-    if (orient2d(a, b, q) >= 0 && orient2d(b, c, q) >= 0 && orient2d(c, a, q) >= 0) return from = t;
-  }
-  return -1;
+  const Cdt::Place at = m.find(std::min<std::uint32_t>(from, static_cast<std::uint32_t>(m.size() - 1)), q);
+  if (at.kind == Cdt::Place::Outside) return -1;
+  from = at.t;
+  return at.t;
 }
 
 // Every triangle reached from `seed` across edges that are not fixed, given `mark` (those

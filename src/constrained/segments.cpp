@@ -39,8 +39,6 @@ class Inserter {
     }
   }
 
-  std::vector<VertexId> crossings;
-
  private:
   struct Step {
     VertexId along = Cdt::kNone;  // an edge a-along runs along the segment (edge `slot` of `triangle`)
@@ -90,18 +88,16 @@ class Inserter {
     VertexId v = 0;
     if (const VertexId end = within_ulps(x, {a, b, u, w}); end != Cdt::kNone) {
       v = end;  // within a few units in the last place of an end: the segments bend through it
-    } else if (const Cdt::Place at = beside(t, k, x); at.kind == Cdt::Place::Corner) {
+    } else if (const Cdt::Place at = m_.beside(t, k, x); at.kind == Cdt::Place::Corner) {
       v = m_.at(at.t, at.k);
     } else if (at.kind == Cdt::Place::Inside || at.kind == Cdt::Place::Edge) {
       v = m_.insert(x, at);
-      crossings.push_back(v);
     } else if (m_.fits_on_edge(t, k, x)) {  // in neither triangle by a rounding: on the edge
       v = m_.insert_on_edge(x, t, k);
-      crossings.push_back(v);
     } else {  // beside triangles thinner than a rounding: wherever it lies
-      const Cdt::Place far = anywhere(t, x);
+      const Cdt::Place far = m_.find(t, x);
+      if (far.kind == Cdt::Place::Outside) throw std::logic_error("ridt: a crossing falls outside the triangulation");
       v = far.kind == Cdt::Place::Corner ? m_.at(far.t, far.k) : m_.insert(x, far);
-      if (far.kind != Cdt::Place::Corner) crossings.push_back(v);
     }
     // u-w, no longer fixed, may be left standing where it is not locally Delaunay (x rounded
     // onto a vertex): flipped as it needs.
@@ -122,40 +118,6 @@ class Inserter {
     for (const VertexId e : ends)
       if (close(m_.pts[e].x, x.x) && close(m_.pts[e].y, x.y)) return e;
     return Cdt::kNone;
-  }
-
-  // Where x lies: a walk from t, or, where the walk circles (it may cross fixed edges), every
-  // triangle in turn.
-  Cdt::Place anywhere(std::uint32_t t, const Point& x) const {
-    try {
-      const Cdt::Place at = m_.locate(t, x, false);
-      if (at.kind != Cdt::Place::Outside) return at;
-    } catch (const std::logic_error&) {}
-    for (std::uint32_t r = 0; r < m_.size(); ++r)
-      if (const Cdt::Place at = beside(r, -1, x); at.kind != Cdt::Place::Outside) return at;
-    throw std::logic_error("ridt: a crossing falls outside the triangulation");
-  }
-
-  // Where x, a rounding away from edge k of t, lies: in t or the triangle across (inside, on
-  // an edge or at a corner), else Outside.
-  Cdt::Place beside(std::uint32_t t, int k, const Point& x) const {
-    const std::int32_t n = k < 0 ? -1 : m_.nbrs[3 * t + k];  // k < 0: t alone
-    for (const std::int32_t c : {static_cast<std::int32_t>(t), n}) {
-      if (c < 0) continue;
-      const auto r = static_cast<std::uint32_t>(c);
-      int zeros = 0, zero = 0, outside = 0;
-      for (int j = 0; j < 3; ++j) {
-        const int o = orient2d(m_.pts[m_.at(r, j + 1)], m_.pts[m_.at(r, j + 2)], x);
-        outside += o < 0;
-        if (o == 0) ++zeros, zero = j;
-      }
-      if (outside > 0) continue;
-      if (zeros == 0) return {Cdt::Place::Inside, r, 0};
-      if (zeros == 1) return {Cdt::Place::Edge, r, zero};
-      for (int j = 0; j < 3; ++j)
-        if (orient2d(m_.pts[m_.at(r, j + 1)], m_.pts[m_.at(r, j + 2)], x) != 0) return {Cdt::Place::Corner, r, j};
-    }
-    return {Cdt::Place::Outside, t, std::max(k, 0)};
   }
 
   // The triangles the segment crosses from a (leaving through triangle t) up to the next
@@ -260,11 +222,10 @@ class Inserter {
 
 }  // namespace
 
-std::vector<VertexId> insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept) {
+void insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept) {
   Inserter inserter(m);
   for (std::size_t s = 0; s + 1 < segments.size(); s += 2)
     if (kept[segments[s]] != kept[segments[s + 1]]) inserter.insert(kept[segments[s]], kept[segments[s + 1]]);
-  return std::move(inserter.crossings);
 }
 
 }  // namespace ridt::detail

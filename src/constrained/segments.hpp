@@ -10,8 +10,8 @@
 namespace ridt::detail {
 
 /// Each segment (pairs of indices, flat; `kept` maps a duplicate point to the one kept) made a
-/// chain of fixed edges of m. Returns the vertices added where two segments cross (each the
-/// exact crossing rounded to doubles), in the order they were made.
-std::vector<VertexId> insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept);
+/// chain of fixed edges of m. Where two segments cross, the exact crossing rounded to doubles is
+/// added as a point (m.pts grows by one a crossing).
+void insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept);
 
 }  // namespace ridt::detail

@@ -109,23 +109,6 @@ PointFile read_poly_points(const std::string& path, std::string_view text) {
   return PointFile(std::move(g.points), g.first_index);
 }
 
-void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
-                    int first_index) {
-  detail::Writer out(path);
-  const std::size_t nt = triangles.size() / 3;
-  const bool attribute = !attributes.empty();
-  out.put_int(static_cast<std::int64_t>(nt));
-  out.put(attribute ? " 3 1\n" : " 3 0\n");
-  for (std::size_t k = 0; k < nt; ++k) {
-    out.put_int(static_cast<std::int64_t>(k) + first_index);
-    for (int i = 0; i < 3; ++i)
-      out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
-    if (attribute) out.put(' '), out.put_double(attributes[k]);
-    out.put('\n');
-  }
-  out.commit();
-}
-
 std::size_t read_segments_of(const std::string& path, const std::vector<Line>& lines, std::size_t at, Pslg& g) {
   return read_segments(path, lines, at, g);
 }
@@ -150,17 +133,7 @@ void write_edges(const std::string& path, std::span<const VertexId> edges, int f
 void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
                     int first_index) {
   detail::Writer out(path);
-  const std::size_t nt = triangles.size() / 3;
-  const bool attribute = !attributes.empty();
-  out.put_int(static_cast<std::int64_t>(nt));
-  out.put(attribute ? " 3 1\n" : " 3 0\n");
-  for (std::size_t k = 0; k < nt; ++k) {
-    out.put_int(static_cast<std::int64_t>(k) + first_index);
-    for (int i = 0; i < 3; ++i)
-      out.put(' '), out.put_int(static_cast<std::int64_t>(triangles[3 * k + i]) + first_index);
-    if (attribute) out.put(' '), out.put_double(attributes[k]);
-    out.put('\n');
-  }
+  detail::write_ele(out, triangles, first_index, attributes);
   out.commit();
 }
 

@@ -161,17 +161,18 @@ void write_node(Writer& out, std::span<const Point> points, int first_index) {
   }
 }
 
-void write_ele(Writer& out, std::span<const VertexId> tris, int first_index) {
+void write_ele(Writer& out, std::span<const VertexId> tris, int first_index, std::span<const double> attributes) {
   const std::size_t nt = tris.size() / 3;
   const std::int64_t fi = first_index;
   out.put_int(static_cast<std::int64_t>(nt));
-  out.put(" 3 0\n");
+  out.put(attributes.empty() ? " 3 0\n" : " 3 1\n");
   for (std::size_t k = 0; k < nt; ++k) {
     out.put_int(static_cast<std::int64_t>(k) + fi);
     for (int i = 0; i < 3; ++i) {
       out.put(' ');
       out.put_int(static_cast<std::int64_t>(tris[3 * k + i]) + fi);
     }
+    if (!attributes.empty()) out.put(' '), out.put_double(attributes[k]);
     out.put('\n');
   }
 }
