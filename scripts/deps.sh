@@ -8,10 +8,11 @@
 set -euo pipefail
 sudo=""
 [ "$(id -u)" -ne 0 ] && sudo=sudo
-packages=(g++ cmake ninja-build libcli11-dev libpng-dev)
+packages=(g++ cmake ninja-build libcli11-dev libpng-dev libgdal-dev)  # GDAL: GIS formats (ridt tin, ridt dem)
 if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
   packages+=(libopenmpi-dev openmpi-bin)  # ridt-mpi and its tests
+  packages+=(gdal-bin python3-gdal)  # the terrain tests read outputs back with GDAL, compare with gdal_grid
   # The Python package and its tests (Debian's interpreter, /usr/bin/python3).
   packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel pybind11-dev python3-pybind11
              python3-numpy python3-scipy python3-pytest python3-hypothesis python3-tqdm)

@@ -332,5 +332,49 @@ expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switche
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"
 absent "$dir/m.off"
 
+# Terrain: a table with a header to a TIN and a DEM; GDAL reads every output back, and the DEM
+# equals gdal_grid's linear grid (the same Delaunay triangles, at the same cell centres).
+"$ridt" generate --dist uniform -n 3000 --seed 5 -o "$dir/t.txt"
+awk 'BEGIN { print "Easting,Northing,Elevation" } { printf "%s,%s,%.17g\n", 1000 * $1, 1000 * $2, 100 + 20 * sin(5 * $1) + 30 * $2 }' \
+  "$dir/t.txt" >"$dir/t.csv"
+expect 0 "tin to .ply" -- "$ridt" tin "$dir/t.csv" -o "$dir/t.ply" --stats
+stdout_has "^points 3000$"
+expect 0 "tin to .gpkg" -- "$ridt" tin "$dir/t.csv" -o "$dir/t.gpkg"
+ntri=$(head -c 400 "$dir/t.ply" | grep -a "element face" | cut -d' ' -f3)
+ogrinfo -so "$dir/t.gpkg" tin 2>/dev/null | grep -q "Feature Count: $ntri" && pass || fail "the GeoPackage TIN lacks triangles"
+expect 0 "tin to .shp" -- "$ridt" tin "$dir/t.csv" -o "$dir/t.shp"
+[ -s "$dir/t.shp" ] && [ -s "$dir/t.dbf" ] && [ -s "$dir/t.shx" ] && pass || fail "the Shapefile is not whole"
+expect 0 "dem to .tif" -- "$ridt" dem "$dir/t.csv" -o "$dir/t.tif" --resolution 10 --hillshade "$dir/t.png"
+gdalinfo "$dir/t.tif" 2>/dev/null | grep -q "Size is 100, 100" && pass || fail "the DEM is not 100 by 100"
+[ "$(head -c 8 "$dir/t.png" | od -An -c | tr -d ' ')" = "211PNG\r\n032\n" ] && pass || fail "the hillshade is not a PNG"
+printf '<OGRVRTDataSource><OGRVRTLayer name="t"><SrcDataSource>%s</SrcDataSource><GeometryType>wkbPoint</GeometryType><GeometryField encoding="PointFromColumns" x="Easting" y="Northing"/></OGRVRTLayer></OGRVRTDataSource>\n' \
+  "$dir/t.csv" >"$dir/t.vrt"
+gdal_grid -q -a linear:radius=0:nodata=nan -zfield Elevation -txe 0 1000 -tye 1000 0 -outsize 100 100 -ot Float64 \
+  -l t "$dir/t.vrt" "$dir/g.tif" >/dev/null 2>&1 && pass || fail "gdal_grid failed"
+/usr/bin/python3 - "$dir/t.tif" "$dir/g.tif" <<'PY' && pass || fail "the DEM differs from gdal_grid's linear grid"
+import sys
+import numpy as np
+from osgeo import gdal
+a = gdal.Open(sys.argv[1]).ReadAsArray()
+b = gdal.Open(sys.argv[2]).ReadAsArray()
+both = np.isfinite(a) & np.isfinite(b)
+assert both.sum() > 0.9 * a.size, both.sum()
+assert np.abs(a[both] - b[both]).max() <= 1e-9 * np.abs(b[both]).max(), np.abs(a[both] - b[both]).max()
+PY
+expect 0 "dem nearest, float32, an extent" -- "$ridt" dem "$dir/t.csv" -o "$dir/n.tif" --resolution 25 --method nearest --type float32 --extent 0,0,500,500
+gdalinfo "$dir/n.tif" 2>/dev/null | grep -q "Type=Float32" && pass || fail "--type float32 ignored"
+expect 2 "dem without a resolution" -- "$ridt" dem "$dir/t.csv" -o "$dir/x.tif"
+absent "$dir/x.tif"
+expect 2 "dem to an unknown format" -- "$ridt" dem "$dir/t.csv" -o "$dir/x.jpg" --resolution 10
+stderr_has "unknown DEM extension"; absent "$dir/x.jpg"
+printf 'a,b\n1,2\n' >"$dir/noz.csv"
+expect 2 "a table without z" -- "$ridt" dem "$dir/noz.csv" -o "$dir/x.tif" --resolution 1
+stderr_has "no z column"; absent "$dir/x.tif"
+printf 'LASF' >"$dir/x.laz"
+expect 2 "LAZ" -- "$ridt" tin "$dir/x.laz" -o "$dir/x.ply"
+stderr_has "laszip"; absent "$dir/x.ply"
+expect 2 "unknown returns" -- "$ridt" tin "$dir/t.csv" -o "$dir/x.ply" --returns second
+stderr_has "first, last or single"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

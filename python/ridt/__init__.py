@@ -6,6 +6,7 @@
     >>> t = ridt.triangulate(points, threads=2)   # the library's arrays, no copies
     >>> ridt.griddata(points, values, (gx, gy))       # scipy.interpolate's, on threads
     >>> ridt.Voronoi(points).regions                  # scipy.spatial's
+    >>> ridt.terrain.dem(ridt.terrain.read_las("tile.las").xyz, resolution=1.0)   # a DEM
 
 Every result is exactly the Delaunay triangulation of the distinct points (cocircular ties
 broken by a fixed symbolic perturbation), with its whole convex hull, the same for every method
@@ -19,7 +20,7 @@ from ._delaunay import Delaunay, DegenerateInputWarning
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
-from . import triangle
+from . import terrain, triangle
 
 __version__ = "0.1.0"
 
@@ -40,6 +41,7 @@ __all__ = [
     "set_memory_cache_limit",
     "Voronoi",
     "griddata",
+    "terrain",
     "triangle",
     "triangulate",
 ]

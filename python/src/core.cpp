@@ -20,9 +20,12 @@
 #include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 #include "ridt/ridt.hpp"
+#include "ridt/terrain.hpp"
 #include "ridt/voronoi.hpp"
 
 namespace py = pybind11;
+
+void bind_terrain(py::module_& m);  // terrain.cpp
 
 namespace {
 
@@ -476,11 +479,15 @@ PYBIND11_MODULE(_core, m) {
   add_names<ridt::Order>(names);
   add_names<ridt::Locate>(names);
   add_names<ridt::Bounding>(names);
+  add_names<ridt::Merge>(names);
+  add_names<ridt::Surface>(names);
+  add_names<ridt::Returns>(names);
   m.attr("NAMES") = names;
   m.attr("MAX_THREADS") = ridt::kMaxThreads;
   bind_triangulation(m);
   bind_incremental(m);
   bind_constrained(m);
+  bind_terrain(m);
   bind_check_mesh(m);
   bind_queries(m);
   bind_nearest(m);

@@ -27,8 +27,6 @@ inline void check_values(const char* who, std::size_t n, const Values& values) {
                      " points of " + std::to_string(values.components) + " components");
 }
 
-// What interpolation reads: the points, the triangulation, the values.
-
 // What interpolation reads: the points, the triangulation, the values (`components` numbers a
 // point: for the cubic, the values and then their gradients).
 struct Field {
@@ -53,8 +51,12 @@ struct Field {
   }
 };
 
-// Sibson's coordinates at q, which triangle tri holds. Scratch space is reused between queries.
-
+// The field renumbered for many queries: the vertices numbered in the order the triangles
+// first meet them, their points and values copied in that order. The triangles lie in memory
+// in an order near in the plane; the points and values in the caller's order, often a random
+// one. Walks and answers then read points near in memory instead of missing the cache at
+// every corner, which more than pays for the copy once there are about as many queries as
+// triangles.
 struct Renumbered {
   std::vector<Point> points;
   std::vector<VertexId> triangles;
@@ -202,44 +204,47 @@ inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
   return lowest;
 }
 
-// Calls take(tri, node, p), with take = make_take() on each thread, once for every grid node p that the closed hull holds, with a
-// triangle tri that holds it: each triangle visits the nodes of its bounding box and takes
-// those strictly inside, those on a hull side, those on an inner side whose other triangle
-// has a higher number, and a vertex when it is the lowest-numbered triangle around it. So
-// every node in the hull is taken exactly once, and threads that take stretches of the
-// triangles never write the same node.
+// Calls take(tri, node, p) for every node p of `grid` that triangle tri holds and takes: those
+// strictly inside, those on a hull side, those on an inner side whose other triangle has a
+// higher number, and a vertex when tri is the lowest-numbered triangle around it. So every
+// node in the closed hull is taken exactly once, by one triangle.
+template <class Take>
+void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t tri, Take& take) {
+  const std::size_t nx = grid.x.size(), ny = grid.y.size();
+  const Point& a = f.corner(tri, 0);
+  const Point& b = f.corner(tri, 1);
+  const Point& c = f.corner(tri, 2);
+  const auto [i0, i1] = ax.within(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));
+  if (i0 == i1) return;
+  const auto [j0, j1] = ay.within(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
+  for (std::size_t j = j0; j < j1; ++j) {
+    const double y = ay.value(j);
+    for (std::size_t i = i0; i < i1; ++i) {
+      const Point p{ax.value(i), y};
+      const int o[3] = {orient2d(b, c, p), orient2d(c, a, p), orient2d(a, b, p)};
+      if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;
+      const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
+      if (zeros == 1) {
+        const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
+        const std::int32_t u = f.neighbor(tri, e);
+        if (u >= 0 && static_cast<std::size_t>(u) < tri) continue;
+      } else if (zeros == 2) {
+        const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex
+        if (lowest_around(f, tri, corner) != tri) continue;
+      }
+      const std::size_t gi = ax.index(i), gj = ay.index(j);
+      take(tri, grid.x_major ? gi * ny + gj : gj * nx + gi, p);
+    }
+  }
+}
+
+// cover_triangle for every triangle, with take = make_take() on each thread (its own scratch
+// space): threads that take stretches of the triangles never write the same node.
 template <class MakeTake>
 void cover(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, unsigned threads, MakeTake&& make_take) {
-  const std::size_t count = f.triangles.size() / 3, nx = grid.x.size(), ny = grid.y.size();
-  parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
-    auto take = make_take();  // this thread's own, with its scratch space
-    for (std::size_t tri = first; tri < last; ++tri) {
-      const Point& a = f.corner(tri, 0);
-      const Point& b = f.corner(tri, 1);
-      const Point& c = f.corner(tri, 2);
-      const auto [i0, i1] = ax.within(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));
-      if (i0 == i1) continue;
-      const auto [j0, j1] = ay.within(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
-      for (std::size_t j = j0; j < j1; ++j) {
-        const double y = ay.value(j);
-        for (std::size_t i = i0; i < i1; ++i) {
-          const Point p{ax.value(i), y};
-          const int o[3] = {orient2d(b, c, p), orient2d(c, a, p), orient2d(a, b, p)};
-          if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;
-          const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
-          if (zeros == 1) {
-            const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
-            const std::int32_t u = f.neighbor(tri, e);
-            if (u >= 0 && static_cast<std::size_t>(u) < tri) continue;
-          } else if (zeros == 2) {
-            const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex
-            if (lowest_around(f, tri, corner) != tri) continue;
-          }
-          const std::size_t gi = ax.index(i), gj = ay.index(j);
-          take(tri, grid.x_major ? gi * ny + gj : gj * nx + gi, p);
-        }
-      }
-    }
+  parallel_for(f.triangles.size() / 3, threads, kGrain, [&](std::size_t first, std::size_t last) {
+    auto take = make_take();
+    for (std::size_t tri = first; tri < last; ++tri) cover_triangle(f, ax, ay, grid, tri, take);
   });
 }
 

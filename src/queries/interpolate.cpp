@@ -11,141 +11,17 @@
 
 #include "queries/circumcentre.hpp"
 #include "queries/field.hpp"
+#include "queries/sibson.hpp"
 
 namespace ridt {
 namespace {
 
 using detail::Field;
 using detail::kGrain;
+using detail::Linear;
+using detail::Natural;
 using detail::next3;
 using detail::prev3;
-
-constexpr Point kOrigin{0, 0};  // the query, in the coordinates relative to it
-
-class Sibson {
- public:
-  explicit Sibson(const Field& f) : f_(f) {}
-
-  void interpolate(std::size_t tri, const Point& q, double* out) {
-    const std::size_t m = f_.values.components;
-    // At a vertex, its value; on a hull edge, linear along it (the cell of q would be open).
-    for (int i = 0; i < 3; ++i) {
-      if (f_.corner(tri, i) == q) {
-        std::copy_n(f_.value(f_.vertex(tri, i)), m, out);
-        return;
-      }
-      if (f_.neighbor(tri, i) < 0 && detail::orient2d(f_.corner(tri, next3(i)), f_.corner(tri, prev3(i)), q) == 0) {
-        f_.linear(tri, q, out);
-        return;
-      }
-    }
-    dig(tri, q);
-    std::fill_n(out, m, 0.0);
-    double total = 0;
-    for (const Edge& e : boundary_) {
-      const double w = stolen_area(e, q);
-      total += w;
-      const double* v = f_.value(e.to);
-      for (std::size_t k = 0; k < m; ++k) out[k] += w * v[k];
-    }
-    for (std::size_t k = 0; k < m; ++k) out[k] /= total;
-  }
-
- private:
-  // A side of the cavity, from vertex `from` to `to` with q on its left, in cavity triangle
-  // `tri` across from its corner `corner`.
-  struct Edge {
-    VertexId from, to;
-    std::uint32_t tri;
-    int corner;
-  };
-
-  bool in_cavity(std::int32_t u) const { return std::find(cavity_.begin(), cavity_.end(), u) != cavity_.end(); }
-
-  // The cavity: the triangles whose circumcircle holds q strictly (exact), grown from tri, and
-  // its boundary.
-  void dig(std::size_t tri, const Point& q) {
-    cavity_.assign(1, static_cast<std::int32_t>(tri));
-    boundary_.clear();
-    for (std::size_t k = 0; k < cavity_.size(); ++k) {
-      const auto c = static_cast<std::size_t>(cavity_[k]);
-      for (int i = 0; i < 3; ++i) {
-        const std::int32_t u = f_.neighbor(c, i);
-        if (u < 0 || in_cavity(u)) continue;
-        const auto w = static_cast<std::size_t>(u);
-        if (detail::incircle(f_.corner(w, 0), f_.corner(w, 1), f_.corner(w, 2), q) > 0) cavity_.push_back(u);
-      }
-    }
-    for (const std::int32_t c : cavity_)
-      for (int i = 0; i < 3; ++i) {
-        const std::int32_t u = f_.neighbor(static_cast<std::size_t>(c), i);
-        if (u < 0 || !in_cavity(u))
-          boundary_.push_back({f_.vertex(static_cast<std::size_t>(c), next3(i)),
-                               f_.vertex(static_cast<std::size_t>(c), prev3(i)), static_cast<std::uint32_t>(c), i});
-      }
-  }
-
-  Point rel(VertexId v, const Point& q) const { return {f_.points[v].x - q.x, f_.points[v].y - q.y}; }
-
-  // The area that q's cell takes from the cell of e.to: the polygon from the circumcentre of
-  // (q, e.from, e.to), through the circumcentres of the cavity's triangles around e.to, to
-  // that of (q, e.to, next), where the next side of the cavity starts at e.to.
-  double stolen_area(const Edge& e, const Point& q) {
-    const VertexId v = e.to;
-    const Edge* out_edge = nullptr;
-    for (const Edge& x : boundary_)
-      if (x.from == v) out_edge = &x;
-    polygon_.clear();
-    polygon_.push_back(detail::circumcentre(kOrigin, rel(e.from, q), rel(v, q)));
-    // Around v from the triangle of side from -> v to the one of side v -> next, across the
-    // sides v-w inside the cavity.
-    std::size_t tri = e.tri;
-    for (std::size_t guard = 0; guard <= cavity_.size(); ++guard) {
-      polygon_.push_back(
-          detail::circumcentre(rel(f_.vertex(tri, 0), q), rel(f_.vertex(tri, 1), q), rel(f_.vertex(tri, 2), q)));
-      if (out_edge != nullptr && tri == out_edge->tri) break;
-      // v's corner i in tri: the side v -> next vertex, across from the previous corner, leads
-      // on (the other side at v is the one we came by).
-      const int i = f_.vertex(tri, 0) == v ? 0 : f_.vertex(tri, 1) == v ? 1 : 2;
-      const std::int32_t u = f_.neighbor(tri, prev3(i));
-      if (u < 0) break;
-      tri = static_cast<std::size_t>(u);
-    }
-    polygon_.push_back(detail::circumcentre(kOrigin, rel(v, q), rel(out_edge != nullptr ? out_edge->to : v, q)));
-    double area = 0;
-    for (std::size_t k = 0, s = polygon_.size(); k < s; ++k) {
-      const Point& a = polygon_[k];
-      const Point& b = polygon_[(k + 1) % s];
-      area += a.x * b.y - a.y * b.x;
-    }
-    return area / 2;
-  }
-
-  const Field& f_;
-  std::vector<std::int32_t> cavity_;
-  std::vector<Edge> boundary_;
-  std::vector<Point> polygon_;
-};
-
-// The field renumbered for many queries: the vertices numbered in the order the triangles
-// first meet them, their points and values copied in that order. The triangles lie in memory
-// in an order near in the plane; the points and values in the caller's order, often a random
-// one. Walks and answers then read points near in memory instead of missing the cache at
-// every corner, which more than pays for the copy once there are about as many queries as
-// triangles.
-
-// The two answers, as queries/field.hpp's templates take them.
-struct Linear {
-  const Field& f;
-  explicit Linear(const Field& field) : f(field) {}
-  void operator()(std::size_t tri, const Point& q, double* out) const { f.linear(tri, q, out); }
-};
-
-struct Natural {
-  Sibson sibson;
-  explicit Natural(const Field& field) : sibson(field) {}
-  void operator()(std::size_t tri, const Point& q, double* out) { sibson.interpolate(tri, q, out); }
-};
 
 }  // namespace
 

@@ -30,6 +30,8 @@ Command add_check(CLI::App& app);
 Command add_voronoi(CLI::App& app);
 Command add_interpolate(CLI::App& app);
 Command add_mesh(CLI::App& app);
+Command add_tin(CLI::App& app);
+Command add_dem(CLI::App& app);
 
 /// A seed as text: the whole of it a decimal integer that fits 64 bits.
 extern const CLI::Validator kSeed;

@@ -297,6 +297,11 @@ inline void check_indices(const std::string& path, std::span<const VertexId> ids
   }
 }
 
+/// A picture of nx by ny pixels (row 0 at the top) of `channels` bytes each, 4 (RGBA) or 2
+/// (grey and alpha), encoded as PNG; IoError where the build has no libpng.
+std::string png_bytes(const std::string& path, const unsigned char* pixels, std::size_t nx, std::size_t ny,
+                      int channels);
+
 // ---------------------------------------------------------------------------------------------
 // The formats, each in its own file.
 

@@ -21,7 +21,6 @@ void colour(double t, unsigned char* rgb) {
 }
 
 void write_png(Writer& out, const std::string& path, std::span<const double> v, std::size_t nx, std::size_t ny) {
-#ifdef RIDT_HAVE_PNG
   double lo = HUGE_VAL, hi = -HUGE_VAL;
   for (const double x : v)
     if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
@@ -35,26 +34,33 @@ void write_png(Writer& out, const std::string& path, std::span<const double> v, 
       colour(hi > lo ? (x - lo) / (hi - lo) : 0.5, px);
       px[3] = 255;
     }
+  out.put(detail::png_bytes(path, rgba.data(), nx, ny, 4));
+}
+
+}  // namespace
+
+std::string detail::png_bytes(const std::string& path, const unsigned char* pixels, std::size_t nx, std::size_t ny,
+                              int channels) {
+#ifdef RIDT_HAVE_PNG
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   image.width = static_cast<png_uint_32>(nx);
   image.height = static_cast<png_uint_32>(ny);
-  image.format = PNG_FORMAT_RGBA;
+  image.format = channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_GA;
   png_alloc_size_t size = 0;
-  if (!png_image_write_to_memory(&image, nullptr, &size, 0, rgba.data(), 0, nullptr))
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, pixels, 0, nullptr))
     detail::fail_file(path, std::string("cannot encode the picture: ") + image.message);
   std::string bytes(size, '\0');
-  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, rgba.data(), 0, nullptr))
+  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, pixels, 0, nullptr))
     detail::fail_file(path, std::string("cannot encode the picture: ") + image.message);
   png_image_free(&image);
-  out.put(std::string_view(bytes.data(), size));
+  bytes.resize(size);
+  return bytes;
 #else
-  (void)out, (void)v, (void)nx, (void)ny;
+  (void)pixels, (void)nx, (void)ny, (void)channels;
   detail::fail_file(path, "this build writes no .png (it was built without libpng: apt-get install libpng-dev)");
 #endif
 }
-
-}  // namespace
 
 std::vector<double> read_values(const std::string& path, std::size_t& components) {
   const std::string data = detail::read_file_whole(path);
