@@ -58,29 +58,67 @@ RasterGrid RasterGrid::around(double x0, double y0, double x1, double y1, double
 
 Dem::Dem(std::span<const Point> points, const Triangulation& t, std::span<const double> z, const RasterGrid& grid,
          const DemOptions& options)
-    : points_(points), t_(t), z_(z), grid_(grid), options_(options), band_rows_(kBandRows) {
+    : neighbors_(t.neighbors), grid_(grid), options_(options), band_rows_(kBandRows) {
   detail::check_arrays("dem", points.size(), t.triangles, t.neighbors);
   if (z.size() != points.size())
     throw InputError("dem: " + std::to_string(z.size()) + " heights for " + std::to_string(points.size()) + " points");
   if (!(options.max_edge > 0)) throw InputError("dem: the largest edge must be positive");
   if (grid.nx == 0 || grid.ny == 0 || !(grid.cell > 0)) throw InputError("dem: an empty raster");
   options_.threads = thread_count(options.threads);
-  const std::size_t count = t.size(), nb = (grid.ny + band_rows_ - 1) / band_rows_;
-  // Bucket the triangles by band in fixed chunks, each chunk counted and then filled by one
-  // thread, so that a band lists its triangles in increasing order for any thread count.
+  renumber(points, t.triangles, z);
+  bucket();
+  if (options.method == Surface::Nearest) {
+    vertex_triangle_.assign(points_.size(), -1);
+    for (std::size_t k = 0; k < triangles_.size(); ++k)
+      vertex_triangle_[triangles_[k]] = static_cast<std::int32_t>(k / 3);
+  }
+}
+
+// The points (and heights) that the triangles use, numbered in the order the triangles first
+// meet them. The triangles lie in memory in an order near in the plane, the points in the
+// input's, often a random one: every later pass then reads corners near in memory instead of
+// missing the cache at each one, which pays for this one pass that does.
+void Dem::renumber(std::span<const Point> points, std::span<const VertexId> triangles, std::span<const double> z) {
+  constexpr VertexId kNew = ~VertexId{0};
+  std::vector<VertexId> id(points.size(), kNew), old;
+  old.reserve(points.size());
+  triangles_.resize(triangles.size());
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    VertexId& v = id[triangles[k]];
+    if (v == kNew) v = static_cast<VertexId>(old.size()), old.push_back(triangles[k]);
+    triangles_[k] = v;
+  }
+  points_.resize(old.size());
+  z_.resize(old.size());
+  parallel_for(old.size(), options_.threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) points_[k] = points[old[k]], z_[k] = z[old[k]];
+  });
+}
+
+// The triangles of each band. A first pass over the triangles (reading their corners, in no
+// order in memory) notes each one's first band and how many follow, counted in fixed chunks; a
+// second pass over those notes (in order) lists each triangle in its bands, so that a band lists
+// its triangles in increasing order for any thread count.
+void Dem::bucket() {
+  const std::size_t count = triangles_.size() / 3, nb = (grid_.ny + band_rows_ - 1) / band_rows_;
   const std::size_t chunks = std::min<std::size_t>(count / 4096 + 1, 4 * options_.threads);
   std::vector<std::uint64_t> counts(chunks * (nb + 1), 0);
-  auto each = [&](std::size_t c, auto&& visit) {
-    for (std::size_t tri = count * c / chunks; tri < count * (c + 1) / chunks; ++tri) {
-      const double a = points[t.triangles[3 * tri]].y, b = points[t.triangles[3 * tri + 1]].y,
-                   d = points[t.triangles[3 * tri + 2]].y;
-      const auto [r0, r1] = rows_within(grid, std::min({a, b, d}), std::max({a, b, d}));
-      for (std::size_t band = r0 / band_rows_; band <= r1 / band_rows_; ++band) visit(band, tri);
-    }
+  std::vector<std::uint32_t> first(count);
+  std::vector<std::uint8_t> more(count);  // bands after the first; 255: count them again
+  auto bands_of = [&](std::size_t tri) {
+    const double a = points_[triangles_[3 * tri]].y, b = points_[triangles_[3 * tri + 1]].y,
+                 d = points_[triangles_[3 * tri + 2]].y;
+    const auto [r0, r1] = rows_within(grid_, std::min({a, b, d}), std::max({a, b, d}));
+    return std::pair(r0 / band_rows_, r1 / band_rows_);
   };
-  parallel_for(chunks, options_.threads, 1, [&](std::size_t first, std::size_t last) {
-    for (std::size_t c = first; c < last; ++c)
-      each(c, [&](std::size_t band, std::size_t) { ++counts[c * (nb + 1) + band]; });
+  parallel_for(chunks, options_.threads, 1, [&](std::size_t c0, std::size_t c1) {
+    for (std::size_t c = c0; c < c1; ++c)
+      for (std::size_t tri = count * c / chunks; tri < count * (c + 1) / chunks; ++tri) {
+        const auto [b0, b1] = bands_of(tri);
+        first[tri] = static_cast<std::uint32_t>(b0);
+        more[tri] = static_cast<std::uint8_t>(std::min<std::size_t>(b1 - b0, 255));
+        for (std::size_t band = b0; band <= b1; ++band) ++counts[c * (nb + 1) + band];
+      }
   });
   bands_.assign(nb + 1, 0);
   std::uint64_t total = 0;  // offsets: band by band, chunk by chunk within a band
@@ -94,26 +132,23 @@ Dem::Dem(std::span<const Point> points, const Triangulation& t, std::span<const 
   }
   bands_[nb] = total;
   members_.resize(total);
-  parallel_for(chunks, options_.threads, 1, [&](std::size_t first, std::size_t last) {
-    for (std::size_t c = first; c < last; ++c)
-      each(c, [&](std::size_t band, std::size_t tri) {
-        members_[counts[c * (nb + 1) + band]++] = static_cast<std::uint32_t>(tri);
-      });
+  parallel_for(chunks, options_.threads, 1, [&](std::size_t c0, std::size_t c1) {
+    for (std::size_t c = c0; c < c1; ++c)
+      for (std::size_t tri = count * c / chunks; tri < count * (c + 1) / chunks; ++tri) {
+        const std::size_t last = more[tri] == 255 ? bands_of(tri).second : first[tri] + more[tri];
+        for (std::size_t band = first[tri]; band <= last; ++band)
+          members_[counts[c * (nb + 1) + band]++] = static_cast<std::uint32_t>(tri);
+      }
   });
-  if (options.method == Surface::Nearest) {
-    vertex_triangle_.assign(points.size(), -1);
-    for (std::size_t k = 0; k < t.triangles.size(); ++k)
-      vertex_triangle_[t.triangles[k]] = static_cast<std::int32_t>(k / 3);
-  }
 }
 
 // Greedy steps on the Delaunay graph from a corner of the triangle that holds q: each step
 // goes to a neighbour nearer q, and a vertex none of whose neighbours is nearer is a nearest
 // point (the Delaunay graph's property that greedy routing relies on).
 VertexId Dem::nearest(std::size_t tri, const Point& q) const {
-  VertexId v = t_.triangles[3 * tri];
+  VertexId v = triangles_[3 * tri];
   for (int i = 1; i < 3; ++i)
-    if (distance2(points_[t_.triangles[3 * tri + i]], q) < distance2(points_[v], q)) v = t_.triangles[3 * tri + i];
+    if (distance2(points_[triangles_[3 * tri + i]], q) < distance2(points_[v], q)) v = triangles_[3 * tri + i];
   for (bool moved = true; moved;) {
     moved = false;
     double best = distance2(points_[v], q);
@@ -122,13 +157,13 @@ VertexId Dem::nearest(std::size_t tri, const Point& q) const {
     const auto start = static_cast<std::size_t>(vertex_triangle_[v]);
     for (int turn = 0; turn < 2; ++turn) {
       std::size_t at = start;
-      for (std::size_t steps = 0; steps < t_.size(); ++steps) {
-        const int i = t_.triangles[3 * at] == v ? 0 : t_.triangles[3 * at + 1] == v ? 1 : 2;
+      for (std::size_t steps = 0; steps < triangles_.size() / 3; ++steps) {
+        const int i = triangles_[3 * at] == v ? 0 : triangles_[3 * at + 1] == v ? 1 : 2;
         for (const int k : {next3(i), prev3(i)}) {
-          const VertexId w = t_.triangles[3 * at + k];
+          const VertexId w = triangles_[3 * at + k];
           if (const double d = distance2(points_[w], q); d < best) best = d, next = w;
         }
-        const std::int32_t u = t_.neighbors[3 * at + (turn == 0 ? prev3(i) : next3(i))];
+        const std::int32_t u = neighbors_[3 * at + (turn == 0 ? prev3(i) : next3(i))];
         if (u < 0 || static_cast<std::size_t>(u) == start) break;
         at = static_cast<std::size_t>(u);
       }
@@ -149,7 +184,7 @@ void Dem::band(std::size_t b, std::span<double> out) const {
   for (std::size_t j = r0; j < r1; ++j) ys[j - r0] = grid_.y(j);
   const detail::Axis ax("dem", "x", xs), ay("dem", "y", ys);
   const Grid grid{xs, ys, false};
-  const Field field{points_, t_.triangles, t_.neighbors, Values{z_, 1}};
+  const Field field{points_, triangles_, neighbors_, Values{z_, 1}};
   std::fill(out.begin(), out.end(), options_.nodata);
   const double longest2 = squared(options_.max_edge);
   const std::span<const std::uint32_t> tris(members_.data() + bands_[b], bands_[b + 1] - bands_[b]);

@@ -1,36 +1,25 @@
-// GDAL's formats (terrain_io.hpp): point layers in through OGR, a TIN out as a layer of
-// PolygonZ triangles, a DEM out band by band through a raster driver. Each output is written
-// under a temporary name beside the target (with its side files, as a Shapefile has) and renamed
-// when GDAL has closed it without error, so a failure leaves nothing. Without GDAL the build
-// has the stand-ins at the end, which say so.
+// GDAL's formats by extension, and the loading of the module that writes and reads them
+// (tools/gdal/module.cpp, libridt_gdal.so; terrain_io.hpp's GdalModule). The module is looked
+// for where RIDT_GDAL_MODULE (the environment) says, beside the build's own copy, then where an
+// installed tool keeps it (../lib/ridt/ from the executable).
+#include <dlfcn.h>
+
+#include <cctype>
+#include <mutex>
+
 #include "io_common.hpp"
 #include "terrain_io.hpp"
-
-#ifdef RIDT_HAVE_GDAL
-#include <cpl_conv.h>
-#include <cpl_error.h>
-#include <cpl_string.h>
-#include <gdal_priv.h>
-#include <ogr_spatialref.h>
-#include <ogrsf_frmts.h>
-
-#include <mutex>
-#endif
 
 namespace ridt::io {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = detail::extension_of(path);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
+using detail::fail_file;
 
-// GDAL's vector drivers by extension: the formats GIS people exchange points and TINs in.
 struct Driver {
   const char* extension;
   const char* name;
 };
+// The formats GIS people exchange points and TINs in, and DEMs.
 constexpr Driver kVectorDrivers[] = {
     {".gpkg", "GPKG"},    {".shp", "ESRI Shapefile"}, {".geojson", "GeoJSON"},
     {".json", "GeoJSON"}, {".fgb", "FlatGeobuf"},     {".gml", "GML"},
@@ -40,235 +29,77 @@ constexpr Driver kRasterDrivers[] = {{".tif", "GTiff"}, {".tiff", "GTiff"}, {".i
 
 template <std::size_t N>
 const char* driver_of(const std::string& path, const Driver (&drivers)[N]) {
-  const std::string ext = lower_extension(path);
+  std::string ext = detail::extension_of(path);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   for (const Driver& d : drivers)
     if (ext == d.extension) return d.name;
   return nullptr;
 }
 
+// The module, or why there is none.
+struct Loaded {
+  const detail::GdalModule* module = nullptr;
+  std::string why;
+};
+
+Loaded load() {
+#ifndef RIDT_GDAL_MODULE
+  return {nullptr, "this build has no GDAL (apt-get install libgdal-dev, then build again)"};
+#else
+  std::vector<std::string> places;
+  if (const char* env = std::getenv("RIDT_GDAL_MODULE")) places.emplace_back(env);
+  places.emplace_back(RIDT_GDAL_MODULE);
+  std::error_code ec;
+  const detail::fs::path exe = detail::fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) places.push_back((exe.parent_path() / ".." / RIDT_GDAL_MODULE_INSTALLED).string());
+  std::string why;
+  for (const std::string& place : places) {
+    if (!detail::fs::exists(place, ec)) continue;
+    void* handle = ::dlopen(place.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr) {
+      why = ::dlerror();
+      continue;
+    }
+    using Entry = const detail::GdalModule* (*)();
+    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module"))) return {entry(), ""};
+    why = place + " is not ridt's GDAL module";
+  }
+  return {nullptr, why.empty() ? "ridt's GDAL module (libridt_gdal.so) is not installed" : why};
+#endif
+}
+
 }  // namespace
+
+const detail::GdalModule& detail::gdal_module(const std::string& path) {
+  static const Loaded loaded = load();
+  if (loaded.module == nullptr) fail_file(path, loaded.why);
+  return *loaded.module;
+}
+
+bool have_gdal() {
+#ifdef RIDT_GDAL_MODULE
+  return true;
+#else
+  return false;
+#endif
+}
 
 bool detail::is_gdal_vector(const std::string& path) { return driver_of(path, kVectorDrivers) != nullptr; }
 
-#ifdef RIDT_HAVE_GDAL
-
-namespace {
-
-using detail::fail_file;
-
-void register_gdal() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    GDALAllRegister();
-    CPLSetErrorHandler(CPLQuietErrorHandler);  // errors come back as IoError, not on stderr
-  });
-}
-
-std::string gdal_error() {
-  const char* m = CPLGetLastErrorMsg();
-  return m != nullptr && *m != '\0' ? m : "GDAL gave no reason";
-}
-
-struct Close {
-  void operator()(GDALDataset* d) const { GDALClose(d); }
-};
-using Dataset = std::unique_ptr<GDALDataset, Close>;
-
-// The files of one output: written under `temp` (the target's stem + ".tmp-PID-N" + its
-// extension, so the driver sees the extension), renamed onto the target's stem by commit(), all
-// removed otherwise: a Shapefile's .shx, .dbf and .prj go with its .shp.
-class Output {
- public:
-  explicit Output(const std::string& path) : path_(path) {
-    static std::atomic<unsigned> counter{0};
-    const detail::fs::path p(path);
-    dir_ = p.parent_path().empty() ? detail::fs::path(".") : p.parent_path();
-    stem_ = p.stem().string();
-    temp_stem_ = stem_ + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-    temp_ = (dir_ / (temp_stem_ + p.extension().string())).string();
-  }
-  Output(const Output&) = delete;
-  Output& operator=(const Output&) = delete;
-  ~Output() {
-    if (!committed_)
-      for (const auto& f : mine()) std::remove(f.c_str());
-  }
-
-  const std::string& temp() const { return temp_; }
-
-  void commit() {
-    for (const auto& f : mine()) {
-      const std::string name = detail::fs::path(f).filename().string();
-      const std::string target = (dir_ / (stem_ + name.substr(temp_stem_.size()))).string();
-      if (std::rename(f.c_str(), target.c_str()) != 0)
-        throw IoError("cannot write " + target + ": " + detail::errno_text(errno));
-    }
-    committed_ = true;
-  }
-
- private:
-  std::vector<std::string> mine() const {
-    std::vector<std::string> files;
-    std::error_code ec;
-    for (const auto& e : detail::fs::directory_iterator(dir_, ec))
-      if (e.path().filename().string().starts_with(temp_stem_ + ".")) files.push_back(e.path().string());
-    return files;
-  }
-
-  std::string path_, stem_, temp_stem_, temp_;
-  detail::fs::path dir_;
-  bool committed_ = false;
-};
-
-// The CRS of `text` (WKT, "EPSG:n", PROJ), with x east and y north whatever the authority says.
-std::unique_ptr<OGRSpatialReference> spatial_reference(const std::string& path, const std::string& text) {
-  if (text.empty()) return nullptr;
-  auto srs = std::make_unique<OGRSpatialReference>();
-  srs->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  if (srs->SetFromUserInput(text.c_str()) != OGRERR_NONE)
-    fail_file(path, "the coordinate reference system is not understood: " + detail::quoted(text));
-  return srs;
-}
-
-void add_point(const std::string& path, Terrain& out, const OGRPoint& p, const OGRFeature& f, int z_field) {
-  if (z_field < 0 && !p.Is3D())
-    fail_file(path,
-              "point " + std::to_string(f.GetFID()) + " has no z; name the field of the heights (--columns x,y,NAME)");
-  const double x = p.getX(), y = p.getY(), z = z_field >= 0 ? f.GetFieldAsDouble(z_field) : p.getZ();
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-    fail_file(path, "point " + std::to_string(f.GetFID()) + " has a coordinate that is not finite");
-  out.points.push_back({x, y});
-  out.z.push_back(z);
-}
-
-}  // namespace
-
-bool have_gdal() { return true; }
-
 Terrain detail::read_ogr(const std::string& path, const Columns& columns) {
-  register_gdal();
-  const Dataset ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-  if (!ds) fail_file(path, "cannot open: " + gdal_error());
-  if (ds->GetLayerCount() < 1) fail_file(path, "no layer");
-  OGRLayer* layer = ds->GetLayer(0);
-  const int z_field = columns.z.empty() ? -1 : layer->GetLayerDefn()->GetFieldIndex(columns.z.c_str());
-  if (!columns.z.empty() && z_field < 0) fail_file(path, "no field '" + columns.z + "' in layer " + layer->GetName());
-  Terrain out;
-  if (const OGRSpatialReference* srs = layer->GetSpatialRef()) {
-    char* wkt = nullptr;
-    if (srs->exportToWkt(&wkt) == OGRERR_NONE && wkt != nullptr) out.crs = wkt;
-    CPLFree(wkt);
-  }
-  for (const auto& feature : *layer) {
-    const OGRGeometry* g = feature->GetGeometryRef();
-    if (g == nullptr) continue;
-    const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
-    if (type == wkbPoint) {
-      add_point(path, out, *g->toPoint(), *feature, z_field);
-    } else if (type == wkbMultiPoint) {
-      for (const OGRPoint* p : *g->toMultiPoint()) add_point(path, out, *p, *feature, z_field);
-    } else {
-      fail_file(path,
-                std::string("layer ") + layer->GetName() + " holds " + OGRGeometryTypeToName(type) +
-                    " geometries; ridt reads points");
-    }
-  }
-  return out;
+  return gdal_module(path).read_ogr(path, columns);
 }
 
 void detail::write_tin_ogr(const std::string& path, const Terrain& terrain, const Triangulation& t) {
-  register_gdal();
-  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_of(path, kVectorDrivers));
+  gdal_module(path).write_tin(path, driver_of(path, kVectorDrivers), terrain, t);
+}
+
+void detail::write_dem_gdal(const std::string& path, const Dem& dem, const DemFile& file) {
+  const char* driver = driver_of(path, kRasterDrivers);
   if (driver == nullptr)
-    fail_file(path, std::string("this GDAL has no ") + driver_of(path, kVectorDrivers) + " driver");
-  const auto srs = spatial_reference(path, terrain.crs);
-  Output file(path);
-  {
-    const Dataset ds(driver->Create(file.temp().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
-    if (!ds) fail_file(path, "cannot create: " + gdal_error());
-    OGRLayer* layer = ds->CreateLayer("tin", srs.get(), wkbPolygon25D, nullptr);
-    if (layer == nullptr) fail_file(path, "cannot create the layer: " + gdal_error());
-    const bool batches = ds->TestCapability(ODsCTransactions) != 0;
-    OGRFeature feature(layer->GetLayerDefn());
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      if (batches && k % 65536 == 0 && ds->StartTransaction() != OGRERR_NONE) fail_file(path, gdal_error());
-      OGRLinearRing ring;
-      for (int i = 0; i <= 3; ++i) {
-        const VertexId v = t.triangles[3 * k + i % 3];
-        ring.addPoint(terrain.points[v].x, terrain.points[v].y, terrain.z[v]);
-      }
-      OGRPolygon triangle;
-      triangle.addRing(&ring);
-      feature.SetGeometry(&triangle);
-      feature.SetFID(OGRNullFID);
-      if (layer->CreateFeature(&feature) != OGRERR_NONE)
-        fail_file(path, "cannot write triangle " + std::to_string(k) + ": " + gdal_error());
-      if (batches && (k % 65536 == 65535 || k + 1 == t.size()) && ds->CommitTransaction() != OGRERR_NONE)
-        fail_file(path, gdal_error());
-    }
-    CPLErrorReset();
-  }  // closed: written out
-  if (CPLGetLastErrorType() >= CE_Failure) fail_file(path, gdal_error());
-  file.commit();
-}
-
-void detail::write_dem_gdal(const std::string& path, const Dem& dem, const DemFile& how) {
-  register_gdal();
-  const char* name = driver_of(path, kRasterDrivers);
-  if (name == nullptr)
     fail_file(path, "unknown DEM extension '" + extension_of(path) + "' (use .tif, .img, or .png for a hillshade)");
-  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(name);
-  if (driver == nullptr) fail_file(path, std::string("this GDAL has no ") + name + " driver");
-  const RasterGrid& g = dem.grid();
-  if (g.nx > 0x7fffffff || g.ny > 0x7fffffff) fail_file(path, "a raster of more than 2^31 cells a side");
-  const auto srs = spatial_reference(path, how.crs);
-  char** options = nullptr;
-  if (std::string(name) == "GTiff") {
-    options = CSLSetNameValue(options, "TILED", "YES");
-    options = CSLSetNameValue(options, "COMPRESS", "DEFLATE");
-    options = CSLSetNameValue(options, "PREDICTOR", "3");  // floating-point differences: smaller files
-    options = CSLSetNameValue(options, "BIGTIFF", "IF_SAFER");
-  }
-  Output file(path);
-  {
-    const Dataset ds(driver->Create(file.temp().c_str(), static_cast<int>(g.nx), static_cast<int>(g.ny), 1,
-                                    how.float32 ? GDT_Float32 : GDT_Float64, options));
-    CSLDestroy(options);
-    if (!ds) fail_file(path, "cannot create: " + gdal_error());
-    double transform[6] = {g.x0, g.cell, 0, g.y1, 0, -g.cell};
-    ds->SetGeoTransform(transform);
-    if (srs) ds->SetSpatialRef(srs.get());
-    GDALRasterBand* band = ds->GetRasterBand(1);
-    band->SetNoDataValue(dem.options().nodata);
-    std::vector<double> rows;
-    for (std::size_t b = 0; b < dem.bands(); ++b) {
-      const std::size_t r0 = b * dem.band_rows(), h = std::min(g.ny - r0, dem.band_rows());
-      rows.resize(h * g.nx);
-      dem.band(b, rows);
-      if (band->RasterIO(GF_Write, 0, static_cast<int>(r0), static_cast<int>(g.nx), static_cast<int>(h), rows.data(),
-                         static_cast<int>(g.nx), static_cast<int>(h), GDT_Float64, 0, 0, nullptr) != CE_None)
-        fail_file(path, "cannot write rows " + std::to_string(r0) + ": " + gdal_error());
-      if (how.progress) how.progress(static_cast<double>(b + 1) / static_cast<double>(dem.bands()));
-    }
-    CPLErrorReset();
-  }
-  if (CPLGetLastErrorType() >= CE_Failure) fail_file(path, gdal_error());
-  file.commit();
+  gdal_module(path).write_dem(path, driver, dem.grid(), dem.options().nodata, file, dem.band_rows(),
+                              [&](std::size_t b, std::span<double> out) { dem.band(b, out); });
 }
-
-#else  // no GDAL
-
-namespace {
-[[noreturn]] void no_gdal(const std::string& path) {
-  detail::fail_file(path, "this build has no GDAL (apt-get install libgdal-dev, then build again)");
-}
-}  // namespace
-
-bool have_gdal() { return false; }
-Terrain detail::read_ogr(const std::string& path, const Columns&) { no_gdal(path); }
-void detail::write_tin_ogr(const std::string& path, const Terrain&, const Triangulation&) { no_gdal(path); }
-void detail::write_dem_gdal(const std::string& path, const Dem&, const DemFile&) { no_gdal(path); }
-
-#endif
 
 }  // namespace ridt::io

@@ -105,6 +105,16 @@ struct Keep {
   }
 };
 
+// The CRS of LAS 1.4's extended records, which follow the points.
+std::string crs_of_extended(std::string_view d, const std::string& name, const LasHeader& h) {
+  const auto at = load<std::uint64_t>(d, 235);
+  const auto count = load<std::uint32_t>(d, 243);
+  if (count == 0) return {};
+  if (at < h.data_offset + h.count * h.record_length || at > d.size())
+    fail_file(name, "the extended records' offset " + std::to_string(at) + " lies outside the file");
+  return crs_of_records(d, name, static_cast<std::size_t>(at), count, d.size(), true);
+}
+
 }  // namespace
 
 LasHeader parse_las_header(std::string_view d, const std::string& name) {
@@ -157,14 +167,8 @@ LasHeader parse_las_header(std::string_view d, const std::string& name) {
                   ", the file holds " + std::to_string(room));
   h.crs = crs_of_records(d, name, header_size, vlrs, h.data_offset, false);
   if (h.minor >= 4) {
-    const auto evlr_at = load<std::uint64_t>(d, 235);
-    const auto evlrs = load<std::uint32_t>(d, 243);
-    if (evlrs > 0) {
-      if (evlr_at < h.data_offset + h.count * h.record_length || evlr_at > d.size())
-        fail_file(name, "the extended records' offset " + std::to_string(evlr_at) + " lies outside the file");
-      const std::string crs = crs_of_records(d, name, evlr_at, evlrs, d.size(), true);
-      if (!crs.empty()) h.crs = crs;
-    }
+    const std::string crs = crs_of_extended(d, name, h);
+    if (!crs.empty()) h.crs = crs;
   }
   return h;
 }

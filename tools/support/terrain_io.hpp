@@ -1,6 +1,6 @@
 // Terrain files: points with heights in (LAS, tables with a header, GDAL's vector layers), a
 // TIN with heights and a DEM raster out. LAS and tables are read here; GDAL's formats where the
-// build has GDAL (io_gdal.cpp; have_gdal() says).
+// build has GDAL, through its module (tools/gdal/, loaded by io_gdal.cpp; have_gdal() says).
 //
 // LAS:    1.0 to 1.4, point formats 0 to 10, scale and offset applied, the 1.4 header's 64-bit
 //         count, the CRS from the OGC WKT record or the GeoTIFF keys' EPSG code (VLR or EVLR);
@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -98,11 +99,30 @@ struct DemFile {
 void write_dem(const std::string& path, const Dem& dem, const DemFile& file);
 
 namespace detail {
-// io_gdal.cpp (or its stand-in without GDAL).
+
+/// What GDAL does for the terrain formats, from a module of its own (libridt_gdal.so, built
+/// from tools/gdal/): loaded on first use, so that the tool starts without loading GDAL's
+/// hundred-odd libraries (some 40 ms) when it writes no GIS format. `driver` is GDAL's name of
+/// the format (io_gdal.cpp picks it by extension).
+struct GdalModule {
+  Terrain (*read_ogr)(const std::string& path, const Columns& columns);
+  void (*write_tin)(const std::string& path, const char* driver, const Terrain& terrain, const Triangulation& t);
+  /// The raster of `grid` whose band b (rows [b * band_rows, ...)) `band` fills.
+  void (*write_dem)(const std::string& path, const char* driver, const RasterGrid& grid, double nodata,
+                    const DemFile& file, std::size_t band_rows,
+                    const std::function<void(std::size_t, std::span<double>)>& band);
+};
+
+/// The module, loaded once; IoError naming `path` where the build has none or it cannot be
+/// loaded (the message says why).
+const GdalModule& gdal_module(const std::string& path);
+
+/// True where `path`'s extension is one of GDAL's vector formats that ridt reads and writes.
 bool is_gdal_vector(const std::string& path);
 Terrain read_ogr(const std::string& path, const Columns& columns);
 void write_tin_ogr(const std::string& path, const Terrain& terrain, const Triangulation& t);
 void write_dem_gdal(const std::string& path, const Dem& dem, const DemFile& file);
+
 }  // namespace detail
 
 }  // namespace ridt::io
