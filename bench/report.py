@@ -282,6 +282,17 @@ def interpolate_section(results):
                 ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")
 
 
+def terrain_section(results):
+    """The table bench/terrain_table.py wrote, under this page's own heading."""
+    path = os.path.join(results, "terrain.md")
+    if not os.path.exists(path):
+        return ""
+    lines = open(path).read().splitlines()
+    body = "\n".join(line for line in lines[1:] if not line.startswith("Machine:")).strip()
+    return ("## A DEM from LiDAR-like points against gdal_grid\n\n" + body +
+            "\n\nHow the DEM is made: [terrain.md](terrain.md). Output: [results/terrain.md](results/terrain.md).\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--results", default="docs/results")
@@ -302,7 +313,7 @@ def main():
         "taken in the same run, not seconds across runs.\n")
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
              threads_section(args.results), table3_section(args.results), python_section(args.results),
-             interpolate_section(args.results)]
+             interpolate_section(args.results), terrain_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"
                  + "\n".join(cmd for _, cmd in commands) + "\n```\n")
     with open(args.out, "w") as f:
