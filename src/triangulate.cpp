@@ -111,6 +111,43 @@ Plan plan(std::size_t n, const Options& options) {
   return p;
 }
 
+// Bytes a point at the call's peak, the result included, as measured at 10^6 and 10^7 uniform
+// points (the process's peak resident memory less its input, docs/design.md#memory): the
+// walking mesh and its finish, and the history DAG (its records are never freed during the
+// run), with 10 % over the largest seen. Each thread adds its own buffers.
+constexpr double kWalkBytesPerPoint = 94;  // 85 measured (serial walk and partition alike)
+constexpr double kDagBytesPerPoint = 307;  // 279 measured (every DAG method alike)
+constexpr std::size_t kBytesPerThread = std::size_t{8} << 20;
+constexpr std::size_t kFixedBytes = std::size_t{32} << 20;
+
+std::size_t estimate(const Plan& p, std::size_t n) {
+  const double per_point = p.walk ? kWalkBytesPerPoint : kDagBytesPerPoint;
+  return static_cast<std::size_t>(per_point * static_cast<double>(n)) + kFixedBytes + p.threads * kBytesPerThread;
+}
+
+std::string gigabytes(std::size_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+  return text;
+}
+
+// Throws MemoryError, before anything large is allocated, when the plan needs more than the
+// limit (the options' or what the system can give); names what would fit where walking would.
+void check_memory(const Plan& p, std::size_t n, const Options& options) {
+  const std::size_t limit = options.memory_limit != 0 ? options.memory_limit : available_memory();
+  const std::size_t needed = estimate(p, n);
+  if (limit == 0 || needed <= limit) return;
+  std::string what = "triangulating " + std::to_string(n) + " points with the " +
+      std::string(to_string(p.method->method)) + " method (" + (p.walk ? "walking" : "the history DAG") +
+      ") needs about " + gigabytes(needed) + "; " + gigabytes(limit) + " is available";
+  Plan walking = p;
+  walking.walk = true;
+  if (!p.walk && estimate(walking, n) <= limit)
+    what += " (the walking methods, serial or partition with the BRIO order, need about " +
+        gigabytes(estimate(walking, n)) + ")";
+  throw MemoryError(what, needed, limit);
+}
+
 // The points' extent (predicates/predicates.hpp), in one pass on up to `threads` threads; throws
 // InputError naming the first point with a coordinate that is not finite.
 detail::Extent scan(std::span<const Point> points, unsigned threads) {
@@ -249,6 +286,7 @@ void merge_stats(Triangulation& out, Stats stats) {
 Triangulation triangulate(std::span<const Point> points, const Options& options) {
   const auto t0 = Clock::now();
   const Plan p = plan(points.size(), options);
+  check_memory(p, points.size(), options);
   const auto n = static_cast<std::uint32_t>(points.size());
   const detail::Extent extent = scan(points, p.threads);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates/predicates.hpp).
@@ -264,6 +302,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   stats.threads = p.threads;
   stats.method = p.method->method;
   stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
+  stats.memory_estimate = estimate(p, n);
   Triangulation out = p.walk
       ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*mesh), p, options, stats)
       : run_dag(std::move(pts), n, order, p, options, stats);
@@ -273,6 +312,8 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   out.stats.time_triangulate_s = since(t0);
   return out;
 }
+
+std::size_t estimate_memory(std::size_t n, const Options& options) { return estimate(plan(n, options), n); }
 
 Triangulation triangulate(std::span<const double> xy, const Options& options) {
   if (xy.size() % 2 != 0)

@@ -332,6 +332,14 @@ expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switche
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"
 absent "$dir/m.off"
 
+# Memory is planned: a run over --memory-limit is refused before it starts, with both numbers.
+expect 2 "memory limit" -- "$ridt" triangulate "$dir/uniform.bin" --method serial --memory-limit 1M -o "$dir/mem.ele"
+stderr_has "needs about"; stderr_has "is available"; absent "$dir/mem.ele"
+expect 0 "memory limit that fits" -- "$ridt" triangulate "$dir/uniform.bin" --method serial --memory-limit 1G --stats
+stdout_has '"memory_estimate": '
+expect 2 "memory limit not a size" -- "$ridt" triangulate "$dir/uniform.bin" --memory-limit 12Q
+stderr_has "not a size"
+
 # Terrain: a table with a header to a TIN and a DEM; GDAL reads every output back, and the DEM
 # equals gdal_grid's linear grid (the same Delaunay triangles, at the same cell centres).
 "$ridt" generate --dist uniform -n 3000 --seed 5 -o "$dir/t.txt"

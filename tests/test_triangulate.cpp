@@ -129,6 +129,45 @@ TEST(Triangulate, FlatArrayOverload) {
 
 // ---- Degenerate sets ----
 
+// Memory is planned: the estimate grows with the points, walking needs less than the DAG, and a
+// run over its limit is refused before it starts, with a message that names both numbers.
+TEST(Memory, EstimateGrowsWithThePointsAndWalkingNeedsLess) {
+  Options walk;
+  walk.method = Method::Serial;
+  Options dag = walk;
+  dag.locate = Locate::Dag;
+  EXPECT_LT(estimate_memory(1000000, walk), estimate_memory(1000000, dag));
+  EXPECT_LT(estimate_memory(1000, walk), estimate_memory(1000000, walk));
+  EXPECT_GT(estimate_memory(10000000, walk), 10000000u * 48);  // at least the result's arrays
+  Options bad = walk;
+  bad.method = Method::Partition;
+  bad.order = Order::Random;
+  EXPECT_THROW(estimate_memory(10, bad), InputError);
+  EXPECT_GT(available_memory(), 0u);
+}
+
+TEST(Memory, ARunOverItsLimitIsRefusedBeforeItStarts) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 100000, 4);
+  Options o;
+  o.method = Method::Serial;
+  o.locate = Locate::Dag;
+  o.memory_limit = estimate_memory(pts.size(), o) - 1;
+  try {
+    triangulate(pts, o);
+    FAIL() << "no MemoryError";
+  } catch (const MemoryError& e) {
+    EXPECT_GT(e.needed, e.available);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("needs about"), std::string::npos) << what;
+    EXPECT_NE(what.find("is available"), std::string::npos) << what;
+    EXPECT_NE(what.find("the walking methods"), std::string::npos) << what;  // they would fit
+  }
+  o.memory_limit = estimate_memory(pts.size(), o);
+  const Triangulation t = triangulate(pts, o);
+  EXPECT_EQ(t.stats.memory_estimate, o.memory_limit);
+  EXPECT_EQ(t.size(), triangulate(pts).size());
+}
+
 TEST(Degenerate, ZeroToThreePoints) {
   EXPECT_EQ(triangulate(std::vector<Point>{}).size(), 0u);
   const Triangulation one = triangulate(std::vector<Point>{{1, 2}});

@@ -110,6 +110,10 @@ struct Options {
   std::function<void(double)> progress;
   /// The paper's experiment switches (Bounding::Finite makes the result depend on them).
   Experiment experiment;
+  /// The most memory the call may take, in bytes: 0 (the default) means what the system can
+  /// give (available_memory()). A call that would need more (estimate_memory) throws
+  /// MemoryError before it allocates anything large.
+  std::size_t memory_limit = 0;
 };
 
 /// What one thread did (the paper's Tables 2 and 3, per thread).
@@ -153,6 +157,7 @@ struct Stats {
   double time_locate_s = 0;  ///< only with Experiment::profile
   double time_split_s = 0;  ///< only with Experiment::profile
   double time_legalize_s = 0;  ///< only with Experiment::profile
+  std::uint64_t memory_estimate = 0;  ///< bytes: estimate_memory for this call, checked before it started
 };
 
 /// A dropped duplicate input point and the input index that stands for it (the smallest
@@ -180,6 +185,15 @@ struct Triangulation {
 class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+/// Thrown before a call starts its work when it would need more memory than there is: the
+/// message names what it needs and what there is, and what would fit where something would.
+class MemoryError : public InputError {
+ public:
+  MemoryError(const std::string& what, std::size_t needed, std::size_t available)
+      : InputError(what), needed(needed), available(available) {}
+  std::size_t needed, available;  ///< bytes
 };
 
 /// The most threads a run takes (Options::threads).
@@ -300,6 +314,7 @@ constexpr void for_each_stat(Visit&& visit) {
   visit("time_locate_s", &Stats::time_locate_s);
   visit("time_split_s", &Stats::time_split_s);
   visit("time_legalize_s", &Stats::time_legalize_s);
+  visit("memory_estimate", &Stats::memory_estimate);
 }
 
 /// The same for each thread's ThreadStats.
@@ -331,5 +346,17 @@ std::size_t set_memory_cache_limit(std::size_t bytes);
 
 /// The bytes kept now for the next call (see set_memory_cache_limit).
 std::size_t cached_memory();
+
+/// The most memory triangulate(points, options) takes for n points, in bytes: its work space,
+/// its copy of the points and the result, by the method, location and threads that the
+/// options make (Method::Auto resolved as triangulate resolves it), from the bytes a point each
+/// kernel was measured to take (docs/performance.md) with a margin. The caller's points are not
+/// counted. Throws InputError for options that cannot run.
+std::size_t estimate_memory(std::size_t n, const Options& options = {});
+
+/// The memory this process can take now without swapping or being killed: the system's
+/// MemAvailable, and below it the room left under the process's cgroup limit (memory.max) where
+/// there is one; in bytes, 0 where neither can be read.
+std::size_t available_memory();
 
 }  // namespace ridt

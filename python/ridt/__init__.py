@@ -13,7 +13,7 @@ broken by a fixed symbolic perturbation), with its whole convex hull, the same f
 and thread count.
 """
 
-from ._api import check, triangulate
+from ._api import available_memory, check, estimate_memory, triangulate
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._constrained import ConstrainedDelaunay
 from ._delaunay import Delaunay, DegenerateInputWarning
@@ -36,7 +36,9 @@ __all__ = [
     "NaturalNeighborInterpolator",
     "NearestNDInterpolator",
     "Triangulation",
+    "available_memory",
     "cached_memory",
+    "estimate_memory",
     "check",
     "set_memory_cache_limit",
     "Voronoi",

@@ -112,7 +112,8 @@ def progress_callback(progress: ProgressLike, n: int) -> Optional[Callable[[floa
 
 def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: str = "brio",
                 locate: str = "auto", seed: int = 1, progress: ProgressLike = None,
-                canonical: bool = False, bounding: str = "symbolic", k: float = 10.0) -> _core.Triangulation:
+                canonical: bool = False, bounding: str = "symbolic", k: float = 10.0,
+                memory_limit: Optional[int] = None) -> _core.Triangulation:
     """The Delaunay triangulation of `points`, an (n, 2) array.
 
     Returns a :class:`Triangulation` whose arrays (``triangles``, ``neighbors``, ``hull``,
@@ -149,17 +150,21 @@ def triangulate(points: Any, *, method: str = "auto", threads: int = 1, order: s
     bounding, k
         'symbolic' (default) bounding vertices at infinity, or the paper's 'finite' triangle
         of size k times the points' box.
+    memory_limit : int, optional
+        The most bytes the call may take (default: what the system can give). A call that would
+        need more (:func:`estimate_memory`) raises MemoryError before it starts, naming what it
+        needs and what there is.
 
     The GIL is released while the library works, and Ctrl-C stops a long run with
     KeyboardInterrupt.
     """
     return run(as_points(points), method=method, threads=threads, order=order, locate=locate, seed=seed,
-               progress=progress, canonical=canonical, bounding=bounding, k=k)
+               progress=progress, canonical=canonical, bounding=bounding, k=k, memory_limit=memory_limit)
 
 
 def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str = "brio", locate: str = "auto",
         seed: int = 1, progress: ProgressLike = None, canonical: bool = False, bounding: str = "symbolic",
-        k: float = 10.0, furthest_site: bool = False) -> _core.Triangulation:
+        k: float = 10.0, furthest_site: bool = False, memory_limit: Optional[int] = None) -> _core.Triangulation:
     """triangulate() on points that as_points() has already checked and converted."""
     method = _choice(method, "method", METHODS)
     order = _choice(order, "order", ORDERS)
@@ -172,9 +177,25 @@ def run(pts: np.ndarray, *, method: str = "auto", threads: int = 1, order: str =
         raise ValueError(f"k must be a finite number of at least 2; got {k!r}")
     if pts.shape[0] >= 2**31:
         raise ValueError(f"ridt takes fewer than 2**31 points; got {pts.shape[0]}")
+    limit = 0 if memory_limit is None else int(memory_limit)
+    if limit < 0 or (memory_limit is not None and limit == 0):
+        raise ValueError(f"memory_limit must be a positive number of bytes; got {memory_limit!r}")
     return _core.triangulate(pts, method, nthreads, order, locate,
                              int(seed), bounding, float(k), bool(canonical),
-                             progress_callback(progress, pts.shape[0]), bool(furthest_site))
+                             progress_callback(progress, pts.shape[0]), bool(furthest_site), limit)
+
+
+def estimate_memory(n: int, *, method: str = "auto", threads: int = 1, order: str = "brio",
+                    locate: str = "auto") -> int:
+    """The most bytes :func:`triangulate` takes for `n` points with these options (its work
+    space, its copy of the points and the result; not the caller's array)."""
+    return _core.estimate_memory(int(n), _choice(method, "method", METHODS), thread_count(threads),
+                                 _choice(order, "order", ORDERS), _choice(locate, "locate", LOCATES))
+
+
+def available_memory() -> int:
+    """The bytes this process can take now: MemAvailable, or less under a cgroup's limit."""
+    return _core.available_memory()
 
 
 def check(points: Any, triangles: Any, furthest_site: bool = False, segments: Any = None) -> Tuple[bool, str]:

@@ -25,7 +25,7 @@
 
 namespace py = pybind11;
 
-void bind_terrain(py::module_& m);  // terrain.cpp
+void bind_terrain(py::module_&m), bind_memory(py::module_&m);  // terrain.cpp, memory.cpp
 
 namespace {
 
@@ -80,8 +80,9 @@ void add_names(py::dict& d) {
 
 ridt::Triangulation run(const Points& points, const std::string& method, unsigned threads, const std::string& order,
                         const std::string& locate, std::uint64_t seed, const std::string& bounding, double k,
-                        bool canonical, py::object progress, bool furthest_site) {
+                        bool canonical, py::object progress, bool furthest_site, std::size_t memory_limit) {
   ridt::Options o;
+  o.memory_limit = memory_limit;
   o.method = ridt::parse<ridt::Method>(method);
   o.order = ridt::parse<ridt::Order>(order);
   o.locate = ridt::parse<ridt::Locate>(locate);
@@ -236,7 +237,7 @@ void bind_incremental(py::module_& m) {
 
   m.def("triangulate", &run, py::arg("points"), py::arg("method"), py::arg("threads"), py::arg("order"),
         py::arg("locate"), py::arg("seed"), py::arg("bounding"), py::arg("k"), py::arg("canonical"),
-        py::arg("progress"), py::arg("furthest_site") = false);
+        py::arg("progress"), py::arg("furthest_site") = false, py::arg("memory_limit") = 0);
 }
 
 // The constrained Delaunay triangulation or quality mesh: (its triangulation, its segments'
@@ -474,6 +475,8 @@ void bind_interpolation(py::module_& m) {
 PYBIND11_MODULE(_core, m) {
   m.doc() = "ridt's C++ library (use the ridt package, which checks and converts arguments)";
   py::register_exception<ridt::InputError>(m, "InputError", PyExc_ValueError);
+  // Registered after InputError, whose kind it is, so that it is tried first.
+  py::register_exception<ridt::MemoryError>(m, "RidtMemoryError", PyExc_MemoryError);
   py::dict names;
   add_names<ridt::Method>(names);
   add_names<ridt::Order>(names);
@@ -493,6 +496,5 @@ PYBIND11_MODULE(_core, m) {
   bind_nearest(m);
   bind_voronoi(m);
   bind_interpolation(m);
-  m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
-  m.def("cached_memory", &ridt::cached_memory);
+  bind_memory(m);
 }

@@ -118,3 +118,17 @@ def test_ctrl_c_stops_a_long_run():
     threading.Timer(0.5, child.send_signal, args=(signal.SIGINT,)).start()
     out, _ = child.communicate(timeout=120)
     assert out.startswith("interrupted"), out
+
+
+def test_memory_is_planned_before_the_run():
+    import ridt
+    pts = np.random.default_rng(1).random((50000, 2))
+    need = ridt.estimate_memory(50000, locate="dag")
+    with pytest.raises(MemoryError, match="needs about .* is available"):
+        ridt.triangulate(pts, locate="dag", memory_limit=need - 1)
+    t = ridt.triangulate(pts, locate="dag", memory_limit=need)
+    assert t.stats["memory_estimate"] == need
+    assert ridt.estimate_memory(10**6) < ridt.estimate_memory(10**6, locate="dag")
+    assert ridt.available_memory() > 0
+    with pytest.raises(ValueError):
+        ridt.triangulate(pts, memory_limit=0)

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <mutex>
 #include <new>
+#include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -218,17 +221,6 @@ void make_present(void* data, std::size_t bytes, unsigned threads) {
 #endif
 }
 
-std::size_t available_memory() {
-  std::FILE* f = std::fopen("/proc/meminfo", "r");
-  if (f == nullptr) return 0;
-  char line[256];
-  unsigned long long kib = 0;
-  while (std::fgets(line, sizeof line, f))
-    if (std::sscanf(line, "MemAvailable: %llu kB", &kib) == 1) break;
-  std::fclose(f);
-  return static_cast<std::size_t>(kib) * 1024;
-}
-
 }  // namespace ridt::detail
 
 namespace ridt {
@@ -240,6 +232,56 @@ std::size_t set_memory_cache_limit(std::size_t bytes) {
   c.limit = bytes;
   c.shrink(bytes);
   return previous;
+}
+
+namespace {
+
+// A number from the first line of a file ("max" and unreadable files: none).
+std::optional<std::size_t> number_in(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  if (f == nullptr) return std::nullopt;
+  unsigned long long v = 0;
+  const bool ok = std::fscanf(f, "%llu", &v) == 1;
+  std::fclose(f);
+  return ok ? std::optional<std::size_t>(static_cast<std::size_t>(v)) : std::nullopt;
+}
+
+// The room left under this process's cgroup's memory limit (cgroup v2's memory.max, else v1's
+// memory.limit_in_bytes), or none where there is no limit.
+std::optional<std::size_t> cgroup_room() {
+  std::FILE* f = std::fopen("/proc/self/cgroup", "r");
+  if (f == nullptr) return std::nullopt;
+  char line[4096];
+  std::string v2;
+  while (std::fgets(line, sizeof line, f))
+    if (std::strncmp(line, "0::", 3) == 0) v2 = std::string(line + 3, std::strcspn(line + 3, "\n"));
+  std::fclose(f);
+  std::optional<std::size_t> limit, used;
+  if (!v2.empty()) {
+    limit = number_in("/sys/fs/cgroup" + v2 + "/memory.max");
+    used = number_in("/sys/fs/cgroup" + v2 + "/memory.current");
+  } else {
+    limit = number_in("/sys/fs/cgroup/memory/memory.limit_in_bytes");
+    used = number_in("/sys/fs/cgroup/memory/memory.usage_in_bytes");
+  }
+  if (!limit || *limit >= (std::size_t{1} << 60)) return std::nullopt;  // v1 writes "no limit" as a huge number
+  return *limit - std::min(*limit, used.value_or(0));
+}
+
+}  // namespace
+
+std::size_t available_memory() {
+  std::size_t bytes = 0;
+  if (std::FILE* f = std::fopen("/proc/meminfo", "r")) {
+    char line[256];
+    unsigned long long kib = 0;
+    while (std::fgets(line, sizeof line, f))
+      if (std::sscanf(line, "MemAvailable: %llu kB", &kib) == 1) break;
+    std::fclose(f);
+    bytes = static_cast<std::size_t>(kib) * 1024;
+  }
+  if (const std::optional<std::size_t> room = cgroup_room()) bytes = bytes == 0 ? *room : std::min(bytes, *room);
+  return bytes;
 }
 
 std::size_t cached_memory() {

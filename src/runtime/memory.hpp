@@ -127,8 +127,4 @@ Block<T> allocate_huge(std::size_t count, bool huge = true) {
   return Block<T>(static_cast<T*>(p), BlockDeleter{huge ? bytes : 0});
 }
 
-/// The memory the system says it can give without swapping (Linux's MemAvailable), in
-/// bytes; 0 where it does not say.
-std::size_t available_memory();
-
 }  // namespace ridt::detail

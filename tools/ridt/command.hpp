@@ -39,6 +39,10 @@ extern const CLI::Validator kSeed;
 /// Numbers apart by commas, e.g. "200,100" or "0,0,1,1"; `what` names them in a message.
 std::vector<double> numbers(const std::string& text, const char* what);
 
+/// A size in bytes: a number with an optional K, M, G or T (powers of 1024), e.g. "800M";
+/// `what` names it in a message.
+std::size_t byte_size(const std::string& text, const char* what);
+
 /// The box of --box ("x0,y0,x1,y1"), or the points' box and 10 % around when `text` is empty.
 io::Box box_option(const std::string& text, std::span<const Point> points);
 

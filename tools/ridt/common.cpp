@@ -2,6 +2,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -35,6 +36,19 @@ std::vector<double> numbers(const std::string& text, const char* what) {
     at = comma + 1;
   }
   return out;
+}
+
+std::size_t byte_size(const std::string& text, const char* what) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  const std::string unit(end, text.data() + text.size());
+  const std::string units = "KMGT";
+  const std::size_t k = unit.size() == 1 ? units.find(static_cast<char>(std::toupper(unit[0]))) : std::string::npos;
+  if (ec != std::errc() || !(v > 0) || !std::isfinite(v) || (!unit.empty() && k == std::string::npos))
+    throw InputError(std::string(what) + ": '" + text + "' is not a size (bytes, or a number with K, M, G or T)");
+  const double bytes = v * std::pow(1024.0, unit.empty() ? 0 : static_cast<double>(k + 1));
+  if (bytes >= 1.8e19) throw InputError(std::string(what) + ": '" + text + "' is too large");
+  return static_cast<std::size_t>(bytes);
 }
 
 io::Box box_option(const std::string& text, std::span<const Point> points) {

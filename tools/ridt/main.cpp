@@ -63,6 +63,9 @@ int run(const std::vector<Command>& commands) {
   } catch (const ridt::InputError& e) {
     std::fprintf(stderr, "ridt: error: %s\n", e.what());
     return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "ridt: error: out of memory (the system gave less than the run needed)\n");
+    return kExitUsage;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ridt: internal error: %s\n", e.what());
     return 3;

@@ -14,6 +14,7 @@ struct Args {
   double k = 10;
   unsigned threads = 0;
   bool profile = false, paper_locking = false, no_thread_timing = false;
+  std::string memory_limit;
 };
 
 std::string number(double v) {
@@ -89,6 +90,7 @@ Options options(const Args& a) {
   o.threads = a.threads;
   o.seed = a.seed;
   o.canonical_order = !a.output.empty();  // files are identical for every seed and method
+  if (!a.memory_limit.empty()) o.memory_limit = byte_size(a.memory_limit, "--memory-limit");
   o.experiment.bounding = parse<Bounding>(a.bounding);
   o.experiment.k = a.k;
   o.experiment.profile = a.profile;
@@ -149,6 +151,9 @@ Command add_triangulate(CLI::App& app) {
                   "and one modifier)");
   tri->add_option("--order", a->order, choices_help("insertion order", Order::Brio));
   tri->add_option("--locate", a->locate, choices_help("point location", Locate::Auto));
+  tri->add_option("--memory-limit", a->memory_limit,
+                  "the most memory the triangulation may take, e.g. 800M or 12G (default: what the system can give); "
+                  "a run that needs more is refused before it starts");
   CLI::Option* stats =
       tri->add_option("--stats", a->stats, "print counters and times: json (default) or table")->expected(0, 1);
   add_experiment(tri, *a);
