@@ -41,37 +41,58 @@ void rotate3(T* x, int s) {
 
 }  // namespace
 
+// Sorted by first vertex with a counting sort (the first vertex of a triangle is, once rotated,
+// its smallest, and each vertex is first in some two triangles), then each group by the other
+// two vertices: linear time, where a comparison sort through the indices missed the cache at
+// every step. On threads, each owns a range of first vertices: it reads every triangle's first
+// vertex (in order, one stream) and counts and places only its own, so no two threads write the
+// same place and a group keeps the triangles' order, as on one thread. Returns the order.
+static std::vector<std::uint32_t> canonical_order(std::span<const VertexId> tv, std::size_t count, unsigned threads) {
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, threads));
+  std::vector<VertexId> part_max(parts, 0);
+  on_threads(parts, [&](unsigned k) {
+    for (std::size_t t = count * k / parts; t < count * (k + 1) / parts; ++t)
+      part_max[k] = std::max(part_max[k], tv[3 * t]);
+  });
+  const std::size_t groups = count > 0 ? std::size_t{*std::max_element(part_max.begin(), part_max.end())} + 1 : 0;
+  std::vector<std::uint32_t> start(groups + 1, 0), order(count);
+  auto mine = [&](unsigned k, auto&& visit) {
+    const std::size_t lo = groups * k / parts, hi = groups * (k + 1) / parts;
+    for (std::size_t t = 0; t < count; ++t)
+      if (const VertexId a = tv[3 * t]; a >= lo && a < hi) visit(a, t);
+  };
+  on_threads(parts, [&](unsigned k) { mine(k, [&](VertexId a, std::size_t) { ++start[a + 1]; }); });
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  // start[a] runs to the end of group a while it is filled, then moves back one place.
+  on_threads(parts, [&](unsigned k) {
+    mine(k, [&](VertexId a, std::size_t t) { order[start[a]++] = static_cast<std::uint32_t>(t); });
+  });
+  std::copy_backward(start.begin(), start.end() - 1, start.end());
+  start[0] = 0;
+  parallel_for(groups, threads, 65536, [&](std::size_t first, std::size_t last) {
+    for (std::size_t a = first; a < last; ++a)
+      if (start[a + 1] - start[a] > 1)
+        std::sort(order.begin() + start[a], order.begin() + start[a + 1], [&](std::uint32_t x, std::uint32_t y) {
+          return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
+        });
+  });
+  return order;
+}
+
 void canonicalize(Triangulation& out, unsigned threads) {
+  threads = std::max(threads, 1u);
   const std::size_t count = out.size();
   auto& tv = out.triangles;
   auto& tn = out.neighbors;
-  for (std::size_t t = 0; t < count; ++t) {
-    VertexId* v = &tv[3 * t];
-    std::int32_t* n = &tn[3 * t];
-    const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
-    rotate3(v, s);
-    rotate3(n, s);
-  }
-  // Sorted by first vertex with a counting sort (the first vertex of a triangle is now its
-  // smallest, and each vertex is first in some two triangles), then each group by the other
-  // two vertices: linear time, where a comparison sort through the indices missed the cache
-  // at every step.
-  VertexId first_max = 0;
-  for (std::size_t t = 0; t < count; ++t) first_max = std::max(first_max, tv[3 * t]);
-  std::vector<std::uint32_t> start(count > 0 ? std::size_t{first_max} + 2 : 1, 0);
-  for (std::size_t t = 0; t < count; ++t) ++start[tv[3 * t] + 1];
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> order(count);
-  // start[a] runs to the end of group a while it is filled, then moves back one place.
-  for (std::size_t t = 0; t < count; ++t) order[start[tv[3 * t]]++] = static_cast<std::uint32_t>(t);
-  std::copy_backward(start.begin(), start.end() - 1, start.end());
-  start[0] = 0;
-  for (std::size_t a = 0; a + 1 < start.size(); ++a)
-    if (start[a + 1] - start[a] > 1)
-      std::sort(order.begin() + start[a], order.begin() + start[a + 1], [&](std::uint32_t x, std::uint32_t y) {
-        return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
-      });
-  std::vector<std::uint32_t>().swap(start);
+  parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
+    for (std::size_t t = first; t < last; ++t) {
+      VertexId* v = &tv[3 * t];
+      const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+      rotate3(v, s);
+      rotate3(&tn[3 * t], s);
+    }
+  });
+  const std::vector<std::uint32_t> order = canonical_order(tv, count, threads);
   // The neighbours renumbered, then each array gathered into its new order, one at a time:
   // the reads are at random, but their addresses are known ahead, so they are asked for some
   // way ahead and their misses overlap (moving the triangles along the permutation's cycles, in
@@ -79,12 +100,16 @@ void canonicalize(Triangulation& out, unsigned threads) {
   // copy, 24 bytes a point, is the price.
   {
     std::vector<std::int32_t> rank(count);
-    for (std::size_t i = 0; i < count; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
-    for (std::int32_t& nb : tn) nb = nb < 0 ? kNoNeighbor : rank[nb];
+    parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
+    });
+    parallel_for(tn.size(), threads, 65536, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) tn[i] = tn[i] < 0 ? kNoNeighbor : rank[tn[i]];
+    });
   }
   auto gather = [&](auto& a) {
     std::remove_reference_t<decltype(a)> sorted(a.size());
-    parallel_for(count, std::max(threads, 1u), 65536, [&](std::size_t first, std::size_t last) {
+    parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
       constexpr std::size_t kAhead = 16;
       for (std::size_t i = first; i < last; ++i) {
         if (i + kAhead < last) __builtin_prefetch(&a[3 * std::size_t{order[i + kAhead]}]);

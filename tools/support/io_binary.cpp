@@ -79,7 +79,11 @@ void write_bin_points(Writer& out, std::span<const Point> points, int /*first_in
 }
 
 void write_bin_triangles(Writer& out, std::span<const VertexId> triangles) {
-  for (const VertexId v : triangles) out.put_u32_le(v);
+  if constexpr (std::endian::native == std::endian::little) {  // the array as it lies: one large write
+    out.put(std::string_view(reinterpret_cast<const char*>(triangles.data()), triangles.size() * sizeof(VertexId)));
+  } else {
+    for (const VertexId v : triangles) out.put_u32_le(v);
+  }
 }
 
 }  // namespace ridt::io::detail
