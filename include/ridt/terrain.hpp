@@ -116,8 +116,10 @@ class Dem {
   /// Writes band b's values into out (its rows times nx numbers), row by row, west to east.
   void band(std::size_t b, std::span<double> out) const;
 
-  /// All of it (grid().size() numbers): for rasters that fit in memory.
+  /// All of it (grid().size() numbers, row by row): for rasters that fit in memory. The second
+  /// form writes into `out`; throws InputError when its size is not grid().size().
   std::vector<double> all() const;
+  void all(std::span<double> out) const;
 
  private:
   void renumber(std::span<const Point> points, std::span<const VertexId> triangles, std::span<const double> z);

@@ -55,11 +55,7 @@ Doubles dem(const Doubles& points, const ridt::Triangulation& t, const Doubles& 
   const std::span<double> cells(out.mutable_data(), nx * ny);
   {
     py::gil_scoped_release nogil;
-    const ridt::Dem d(pts, t, heights, ridt::RasterGrid{x0, y1, cell, nx, ny}, o);
-    for (std::size_t b = 0; b < d.bands(); ++b) {
-      const std::size_t r0 = b * d.band_rows(), rows = std::min(ny - r0, d.band_rows());
-      d.band(b, cells.subspan(r0 * nx, rows * nx));
-    }
+    ridt::Dem(pts, t, heights, ridt::RasterGrid{x0, y1, cell, nx, ny}, o).all(cells);
   }
   return out;
 }

@@ -209,12 +209,18 @@ void Dem::band(std::size_t b, std::span<double> out) const {
   });
 }
 
-std::vector<double> Dem::all() const {
-  std::vector<double> out(grid_.size());
+void Dem::all(std::span<double> out) const {
+  if (out.size() != grid_.size())
+    throw InputError("dem: room for " + std::to_string(out.size()) + " cells, not " + std::to_string(grid_.size()));
   for (std::size_t b = 0; b < bands(); ++b) {
     const std::size_t r0 = b * band_rows_, r1 = std::min(grid_.ny, r0 + band_rows_);
-    band(b, std::span(out).subspan(r0 * grid_.nx, (r1 - r0) * grid_.nx));
+    band(b, out.subspan(r0 * grid_.nx, (r1 - r0) * grid_.nx));
   }
+}
+
+std::vector<double> Dem::all() const {
+  std::vector<double> out(grid_.size());
+  all(out);
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -39,6 +40,13 @@ namespace fs = std::filesystem;
 // Small helpers.
 
 inline std::string extension_of(const std::string& path) { return fs::path(path).extension().string(); }
+
+/// `s` in lower case (ASCII): for names and extensions compared in any case.
+inline std::string lower_case(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
 
 [[noreturn]] inline void fail_file(const std::string& path, const std::string& why) {
   throw IoError(path + ": " + why);

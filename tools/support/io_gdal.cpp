@@ -4,7 +4,6 @@
 // installed tool keeps it (../lib/ridt/ from the executable).
 #include <dlfcn.h>
 
-#include <cctype>
 #include <mutex>
 
 #include "io_common.hpp"
@@ -29,8 +28,7 @@ constexpr Driver kRasterDrivers[] = {{".tif", "GTiff"}, {".tiff", "GTiff"}, {".i
 
 template <std::size_t N>
 const char* driver_of(const std::string& path, const Driver (&drivers)[N]) {
-  std::string ext = detail::extension_of(path);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = detail::lower_case(detail::extension_of(path));
   for (const Driver& d : drivers)
     if (ext == d.extension) return d.name;
   return nullptr;

@@ -1,7 +1,5 @@
 // Tables of points with heights (terrain_io.hpp): CSV and its relatives, with or without a
 // header, and read_terrain, which picks the reader of a terrain file by its extension.
-#include <cctype>
-
 #include "io_common.hpp"
 #include "terrain_io.hpp"
 
@@ -10,12 +8,6 @@ namespace {
 
 using detail::fail_file;
 using detail::fail_line;
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // The fields of a line: apart by `delimiter`, or by white space where it is ' '; each trimmed,
 // a name's surrounding double quotes removed.
@@ -53,7 +45,7 @@ std::size_t column(const std::string& path, const std::string& spec, const std::
       return static_cast<std::size_t>(k - 1);
     }
     for (std::size_t i = 0; i < names.size(); ++i)
-      if (names[i] == lower(spec)) return i;
+      if (names[i] == detail::lower_case(spec)) return i;
   } else {
     for (const char* name : known)
       for (std::size_t i = 0; i < names.size(); ++i)
@@ -84,7 +76,8 @@ Terrain parse_table(std::string_view text, const std::string& name, const Column
       width = fields.size();
       const bool header = !std::all_of(fields.begin(), fields.end(), is_number);
       std::vector<std::string> names;
-      for (std::size_t i = 0; i < width; ++i) names.push_back(header ? lower(fields[i]) : std::to_string(i + 1));
+      for (std::size_t i = 0; i < width; ++i)
+        names.push_back(header ? detail::lower_case(fields[i]) : std::to_string(i + 1));
       cx = column(name, columns.x, names, {"x", "easting", "east", "lon", "long", "longitude"}, 0, "x");
       cy = column(name, columns.y, names, {"y", "northing", "north", "lat", "latitude"}, 1, "y");
       cz = column(name, columns.z, names, {"z", "elevation", "elev", "height", "h", "alt", "altitude"}, 2, "z");
@@ -106,7 +99,7 @@ Terrain parse_table(std::string_view text, const std::string& name, const Column
 }
 
 Terrain read_terrain(const std::string& path, const PointFilter& filter, const Columns& columns) {
-  const std::string ext = lower(detail::extension_of(path));
+  const std::string ext = detail::lower_case(detail::extension_of(path));
   if (ext == ".laz")
     fail_file(path,
               "compressed LAS (LAZ) is not read; decompress it first, e.g. \"laszip -i " + path +
