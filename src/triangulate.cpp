@@ -230,7 +230,10 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
   plan.method->dag(kernel, {plan.threads, plan.from_root, options.experiment, nullptr, duplicates, stats, progress});
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
-  return detail::finish(kernel, order, duplicates, options, plan.threads);
+  const auto t1 = Clock::now();
+  Triangulation out = detail::finish(kernel, order, duplicates, options, plan.threads);
+  stats.time_finish_s = since(t1);
+  return out;
 }
 
 // The walking kernel and the method that drives it (`keys`: each vertex's Hilbert key, in
@@ -245,8 +248,11 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   plan.method->walk(mesh, {plan.threads, false, options.experiment, keys.data(), duplicates, stats, progress});
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
+  const auto t1 = Clock::now();
   if (plan.symbolic) pts.reset();  // the finish reads no point: the copy goes before it
-  return detail::finish_walking(mesh, order, duplicates, options, plan.threads);
+  Triangulation out = detail::finish_walking(mesh, order, duplicates, options, plan.threads);
+  stats.time_finish_s = since(t1);
+  return out;
 }
 
 // The insertion order (vertex v is input point order[v]) and, for the partition method, each
@@ -288,17 +294,27 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   const Plan p = plan(points.size(), options);
   check_memory(p, points.size(), options);
   const auto n = static_cast<std::uint32_t>(points.size());
+  Stats stats;
+  auto phase = Clock::now();
+  const auto lap = [&phase](double& seconds) {
+    const auto now = Clock::now();
+    seconds = std::chrono::duration<double>(now - phase).count();
+    phase = now;
+  };
   const detail::Extent extent = scan(points, p.threads);
+  lap(stats.time_scan_s);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates/predicates.hpp).
   const int scale = detail::exact_scale_exponent(extent);
   std::optional<detail::MeshArrays> mesh;
   if (p.walk) mesh.emplace(n, p.threads);
+  lap(stats.time_mesh_s);
   std::vector<std::uint32_t> keys;
   const std::vector<std::uint32_t> order = insertion_order(points, extent, p, options, keys, mesh ? &*mesh : nullptr);
+  lap(stats.time_order_s);
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
+  lap(stats.time_copy_s);
 
-  Stats stats;
   stats.threads = p.threads;
   stats.method = p.method->method;
   stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
@@ -307,7 +323,9 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
       ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*mesh), p, options, stats)
       : run_dag(std::move(pts), n, order, p, options, stats);
   // After the mesh is gone, so that the sort's copies do not raise the peak.
+  phase = Clock::now();
   if (options.canonical_order) detail::canonicalize(out, p.threads);
+  lap(stats.time_canonical_s);
   merge_stats(out, std::move(stats));
   out.stats.time_triangulate_s = since(t0);
   return out;

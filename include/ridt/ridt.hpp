@@ -141,7 +141,15 @@ struct Stats {
   std::uint64_t flips = 0;
   std::uint64_t edge_splits = 0;  ///< points inserted on an edge (2 -> 4 splits); 0 when walking
   double time_triangulate_s = 0;  ///< the whole call: set-up, insertion, finish
+  /// The call's phases, wall seconds, in the order they run; with the few checks between them
+  /// they add up to time_triangulate_s.
+  double time_scan_s = 0;  ///< the points' extent (and the check that every coordinate is finite)
+  double time_mesh_s = 0;  ///< the walking mesh's memory, made and its pages touched; 0 for the DAG
+  double time_order_s = 0;  ///< the insertion order (BRIO: the Hilbert sort of each round)
+  double time_copy_s = 0;  ///< the points copied in insertion order (and scaled)
   double time_insert_s = 0;  ///< wall time of the insertion phase
+  double time_finish_s = 0;  ///< the mesh into the result's arrays (triangles, neighbours, hull, duplicates)
+  double time_canonical_s = 0;  ///< Options::canonical_order: the triangles sorted
   double time_critical_s = 0;  ///< summed over threads (threaded methods, Experiment::time_threads)
   double time_wait_s = 0;  ///< summed over threads (threaded methods, Experiment::time_threads)
   /// Optimistic: insertions restarted after a failed try-lock; partition: points put off to a
@@ -304,7 +312,13 @@ constexpr void for_each_stat(Visit&& visit) {
   visit("edge_splits", &Stats::edge_splits);
   visit("retries", &Stats::retries);
   visit("time_triangulate_s", &Stats::time_triangulate_s);
+  visit("time_scan_s", &Stats::time_scan_s);
+  visit("time_mesh_s", &Stats::time_mesh_s);
+  visit("time_order_s", &Stats::time_order_s);
+  visit("time_copy_s", &Stats::time_copy_s);
   visit("time_insert_s", &Stats::time_insert_s);
+  visit("time_finish_s", &Stats::time_finish_s);
+  visit("time_canonical_s", &Stats::time_canonical_s);
   visit("time_critical_s", &Stats::time_critical_s);
   visit("time_wait_s", &Stats::time_wait_s);
   visit("time_idle_s", &Stats::time_idle_s);

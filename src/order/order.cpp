@@ -135,6 +135,39 @@ void sort_by_key(std::uint64_t* a, std::uint64_t* b, std::uint32_t count) {
   }
 }
 
+// The same on up to `threads` threads, for a large round: in each pass each thread counts the
+// digits of its own stretch of the pairs, then writes its pairs after those of the same digit
+// from the stretches before its own. The sort stays stable: the same result on any number of
+// threads.
+void sort_by_key(std::uint64_t* a, std::uint64_t* b, std::uint32_t count, unsigned threads) {
+  const unsigned parts = std::max(1u, std::min(threads, count / 65536 + 1));
+  if (parts == 1) return sort_by_key(a, b, count);
+  constexpr int kBits = 11;
+  constexpr std::size_t kBins = std::size_t{1} << kBits;
+  std::vector<std::uint32_t> at(parts * kBins);  // at[t * kBins + digit]
+  auto stretch = [&](unsigned t, auto&& visit) {
+    const auto begin = static_cast<std::uint32_t>(std::uint64_t{count} * t / parts);
+    const auto end = static_cast<std::uint32_t>(std::uint64_t{count} * (t + 1) / parts);
+    for (std::uint32_t i = begin; i < end; ++i) visit(i);
+  };
+  for (int shift = 32; shift < 64; shift += kBits) {
+    const auto digit = [shift](std::uint64_t pair) { return (pair >> shift) & (kBins - 1); };
+    on_threads(parts, [&](unsigned t) {
+      std::uint32_t* mine = &at[t * kBins];
+      std::fill_n(mine, kBins, 0u);
+      stretch(t, [&](std::uint32_t i) { ++mine[digit(a[i])]; });
+    });
+    std::uint32_t sum = 0;
+    for (std::size_t d = 0; d < kBins; ++d)
+      for (unsigned t = 0; t < parts; ++t) sum += std::exchange(at[t * kBins + d], sum);
+    on_threads(parts, [&](unsigned t) {
+      std::uint32_t* mine = &at[t * kBins];
+      stretch(t, [&](std::uint32_t i) { b[mine[digit(a[i])]++] = a[i]; });
+    });
+    std::swap(a, b);  // three passes: the last one wrote the caller's b
+  }
+}
+
 // ids[0 .. count) sorted by key[id], stably, as pairs.
 std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uint32_t* ids, std::uint32_t count) {
   std::vector<std::uint64_t> a(count), b(count);
@@ -243,16 +276,35 @@ void refine(const Point* points, const std::uint64_t* pairs, std::uint32_t count
   }
 }
 
-// Runs sort(r) for each round r of `first` on up to `threads` threads: the rounds are shared
-// out largest first, each to the thread with the least work so far (with two threads, the last
-// round, half of the points, against all the others).
+// refine on up to `threads` threads, for a large round: the pairs cut into stretches where the
+// key changes, so that no cell is split, each refined on its own.
+void refine(const Point* points, const std::uint64_t* pairs, std::uint32_t count, std::uint32_t* ids,
+            std::uint32_t* keys, unsigned threads) {
+  const unsigned parts = std::max(1u, std::min(threads, count / 65536 + 1));
+  std::vector<std::uint32_t> cut(parts + 1, count);
+  for (unsigned t = 0; t < parts; ++t) {
+    auto c = static_cast<std::uint32_t>(std::uint64_t{count} * t / parts);
+    while (c > 0 && c < count && pairs[c] >> 32 == pairs[c - 1] >> 32) ++c;
+    cut[t] = c;
+  }
+  on_threads(parts, [&](unsigned t) {
+    refine(points, pairs + cut[t], cut[t + 1] - cut[t], ids + cut[t], keys != nullptr ? keys + cut[t] : nullptr);
+  });
+}
+
+// Runs sort(r) for each round r of `first` smaller than `large` points on up to `threads`
+// threads: the rounds are shared out largest first, each to the thread with the least work so
+// far (with two threads, the last round, half of the points, against all the others).
 template <class Sort>
-void share_rounds(const std::vector<std::uint32_t>& first, unsigned threads, Sort&& sort) {
-  const std::size_t rounds = first.size() - 1;
-  const unsigned parts = std::max(1u, std::min<unsigned>(threads, first.back() / 65536 + 1));
+void share_rounds(const std::vector<std::uint32_t>& first, std::uint32_t large, unsigned threads, Sort&& sort) {
+  std::vector<std::size_t> rounds;  // largest first
+  std::uint64_t points = 0;
+  for (std::size_t r = first.size() - 1; r-- > 0;)
+    if (first[r + 1] - first[r] < large) rounds.push_back(r), points += first[r + 1] - first[r];
+  const auto parts = static_cast<unsigned>(std::clamp<std::uint64_t>(points / 65536 + 1, 1, std::max(threads, 1u)));
   std::vector<std::vector<std::size_t>> share(parts);
   std::vector<std::uint64_t> load(parts, 0);
-  for (std::size_t r = rounds; r-- > 0;) {
+  for (const std::size_t r : rounds) {
     const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
     share[least].push_back(r);
     load[least] += first[r + 1] - first[r];
@@ -272,7 +324,7 @@ void hilbert_sort(const Point* points, const std::uint32_t* key, std::uint32_t* 
 
 void sort_rounds(const Point* points, const std::uint32_t* key, std::uint32_t* ids,
                  const std::vector<std::uint32_t>& first, unsigned threads) {
-  share_rounds(first, threads,
+  share_rounds(first, UINT32_MAX, threads,
                [&](std::size_t r) { hilbert_sort(points, key, ids + first[r], first[r + 1] - first[r]); });
 }
 
@@ -294,11 +346,19 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   std::vector<std::uint32_t> order;
   resize_present(order, n, threads);
   if (keys != nullptr) resize_present(*keys, n, threads);
-  share_rounds(first, threads, [&](std::size_t r) {
+  std::uint32_t* key_out = keys != nullptr ? keys->data() : nullptr;
+  // The rounds of at least a thread's share of the points (the last few, half of them and
+  // more), one after another, each on all threads; the others shared out whole. With many
+  // threads, one thread sorting the last round alone was most of the order's time.
+  const std::uint32_t large = threads > 1 ? std::max<std::uint32_t>(n / threads, 1u << 18) : UINT32_MAX;
+  auto sort_round = [&](std::size_t r, unsigned on) {
     const std::uint32_t b = first[r], count = first[r + 1] - b;
-    sort_by_key(pairs + b, sorted + b, count);
-    refine(points, sorted + b, count, order.data() + b, keys != nullptr ? keys->data() + b : nullptr);
-  });
+    sort_by_key(pairs + b, sorted + b, count, on);
+    refine(points, sorted + b, count, order.data() + b, key_out != nullptr ? key_out + b : nullptr, on);
+  };
+  for (std::size_t r = 0; r + 1 < first.size(); ++r)
+    if (first[r + 1] - first[r] >= large) sort_round(r, threads);
+  share_rounds(first, large, threads, [&](std::size_t r) { sort_round(r, 1); });
   return order;
 }
 

@@ -124,6 +124,23 @@ TEST(BrioOrder, RoundsAlongTheCurveAndTheSameForAnyThreads) {
   EXPECT_EQ(brio_order(pts.data(), n, 5, 2, nullptr, {few, numbers}), order);
 }
 
+// Rounds of a thread's share of the points and more are sorted on all threads (each radix pass
+// counted and placed stretch by stretch, the cells refined in stretches cut where the key
+// changes): the same order as one thread's, also where many points share a key (a grid).
+TEST(BrioOrder, LargeRoundsOnAllThreadsGiveTheSameOrder) {
+  const std::uint32_t n = 600000;  // its largest round, 262144 points, is large on 3 threads and more
+  for (const Distribution dist : {Distribution::Uniform, Distribution::Grid}) {
+    const std::vector<Point> pts = generate(dist, n, 2);
+    std::vector<std::uint32_t> keys;
+    const std::vector<std::uint32_t> order = brio_order(pts.data(), n, 3, 1, &keys);
+    for (unsigned threads : {2u, 3u, 8u}) {
+      std::vector<std::uint32_t> k;
+      EXPECT_EQ(brio_order(pts.data(), n, 3, threads, &k), order) << threads;
+      EXPECT_EQ(k, keys) << threads;
+    }
+  }
+}
+
 // A partition thread's region tested by id (methods/region.hpp) holds exactly the vertices whose
 // keys lie in its interval of keys: intervals that start or end at a vertex's key or between
 // keys, that wrap past key 0, hold nothing or the whole circle, on rounds of every size and on
