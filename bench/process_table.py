@@ -114,7 +114,7 @@ def main():
     t = str(a.threads)
     codes = [
         ("CGAL range insert", lambda f: [cgal, f]),
-        ("ridt serial (walk)", lambda f: [ridt, "triangulate", f]),
+        ("ridt serial (walk)", lambda f: [ridt, "triangulate", f, "--method", "serial"]),
         (f"ridt partition {t}", lambda f: [ridt, "triangulate", f, "--method", "partition", "--threads", t]),
         (f"ridt optimistic {t} (DAG)", lambda f: [ridt, "triangulate", f, "--method", "optimistic", "--threads", t]),
     ]

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Thread scaling on a many-core machine: rewrites docs/scaling.md, docs/results/scaling.csv and
+# Thread scaling on a many-core machine: rewrites docs/scaling.md, docs/results/scaling.csv,
+# docs/results/scaling_more.csv (the other distributions at 10^7, 10^8 points) and
 # docs/results/scaling_process.md (the 2-thread whole-process table of docs/performance.md, taken
 # on a machine whose other cores are idle). Figures: bench/plot_scaling.py.
 #
@@ -54,5 +55,5 @@ if [ "$quick" = 1 ]; then
 fi
 "$py" process_table.py --build "$build" --sizes 1000000 --reps 9 --threads 2 --out "$out/results/scaling_process.md"
 "$py" scaling_table.py --build "$build" --sizes 1000000,10000000 --threads "$threads" --reps 5 \
-  --dag-max-n 1000000 --out "$out/scaling.md"
+  --dag-max-n 1000000 --dists normal,grid,clusters --huge 100000000 --out "$out/scaling.md"
 "$py" plot_scaling.py "$out/results/scaling.csv" "$out/results/scaling.png" || echo "scaling.sh: no figure (matplotlib missing)" >&2

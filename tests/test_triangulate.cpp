@@ -72,6 +72,30 @@ TEST(Triangulate, CanonicalOrderIsIdenticalForEverySeed) {
   EXPECT_EQ(canonical(a.triangles), canonical(triangulate(pts, o).triangles));
 }
 
+// The canonical order on threads (triangles put into buckets of first vertices part by part,
+// each bucket sorted on its own): the same arrays from 1, 2 and 5 threads, sorted, neighbours
+// that name the right triangles.
+TEST(Triangulate, CanonicalOrderIsTheSameOnAnyThreads) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 150000, 8);
+  Options o;
+  o.canonical_order = true;
+  o.method = Method::Partition;
+  o.threads = 1;
+  const Triangulation one = triangulate(pts, o);
+  EXPECT_EQ(audit(pts, one), "");
+  for (std::size_t t = 1; t < one.size(); ++t) {
+    const VertexId* v = &one.triangles[3 * t];
+    ASSERT_TRUE(v[0] < v[1] && v[0] < v[2]) << t;
+    ASSERT_TRUE(std::lexicographical_compare(v - 3, v, v, v + 3)) << t;
+  }
+  for (unsigned threads : {2u, 5u}) {
+    o.threads = threads;
+    const Triangulation t = triangulate(pts, o);
+    EXPECT_EQ(t.triangles, one.triangles) << threads;
+    EXPECT_EQ(t.neighbors, one.neighbors) << threads;
+  }
+}
+
 TEST(Triangulate, ShuffledInputGivesTheSameTriangles) {
   for (Distribution d : kDistributions) {
     const std::vector<Point> pts = generate(d, 3000, 5);

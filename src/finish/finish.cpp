@@ -10,6 +10,7 @@
 
 #include "dag/kernel.hpp"
 #include "finish/finish.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 
 namespace ridt::detail {
@@ -25,12 +26,6 @@ constexpr int ones(std::uint64_t x) {
 }
 static_assert(ones(0) == 0 && ones(~std::uint64_t{0}) == 64 && ones(0x8000000000000001u) == 2);
 
-// Three entries, copied one by one (std::copy_n of a run this short is a call to memmove).
-template <class T>
-void copy3(const T* from, T* to) {
-  to[0] = from[0], to[1] = from[1], to[2] = from[2];
-}
-
 // (x0, x1, x2) rotated to start at x[s].
 template <class T>
 void rotate3(T* x, int s) {
@@ -41,85 +36,126 @@ void rotate3(T* x, int s) {
 
 }  // namespace
 
-// Sorted by first vertex with a counting sort (the first vertex of a triangle is, once rotated,
-// its smallest, and each vertex is first in some two triangles), then each group by the other
-// two vertices: linear time, where a comparison sort through the indices missed the cache at
-// every step. On threads, each owns a range of first vertices: it reads every triangle's first
-// vertex (in order, one stream) and counts and places only its own, so no two threads write the
-// same place and a group keeps the triangles' order, as on one thread. Returns the order.
-static std::vector<std::uint32_t> canonical_order(std::span<const VertexId> tv, std::size_t count, unsigned threads) {
-  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, threads));
-  std::vector<VertexId> part_max(parts, 0);
-  on_threads(parts, [&](unsigned k) {
-    for (std::size_t t = count * k / parts; t < count * (k + 1) / parts; ++t)
-      part_max[k] = std::max(part_max[k], tv[3 * t]);
-  });
-  const std::size_t groups = count > 0 ? std::size_t{*std::max_element(part_max.begin(), part_max.end())} + 1 : 0;
-  std::vector<std::uint32_t> start(groups + 1, 0), order(count);
-  auto mine = [&](unsigned k, auto&& visit) {
-    const std::size_t lo = groups * k / parts, hi = groups * (k + 1) / parts;
-    for (std::size_t t = 0; t < count; ++t)
-      if (const VertexId a = tv[3 * t]; a >= lo && a < hi) visit(a, t);
-  };
-  on_threads(parts, [&](unsigned k) { mine(k, [&](VertexId a, std::size_t) { ++start[a + 1]; }); });
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  // start[a] runs to the end of group a while it is filled, then moves back one place.
-  on_threads(parts, [&](unsigned k) {
-    mine(k, [&](VertexId a, std::size_t t) { order[start[a]++] = static_cast<std::uint32_t>(t); });
-  });
-  std::copy_backward(start.begin(), start.end() - 1, start.end());
-  start[0] = 0;
-  parallel_for(groups, threads, 65536, [&](std::size_t first, std::size_t last) {
-    for (std::size_t a = first; a < last; ++a)
-      if (start[a + 1] - start[a] > 1)
-        std::sort(order.begin() + start[a], order.begin() + start[a + 1], [&](std::uint32_t x, std::uint32_t y) {
-          return tv[3 * x + 1] < tv[3 * y + 1] || (tv[3 * x + 1] == tv[3 * y + 1] && tv[3 * x + 2] < tv[3 * y + 2]);
-        });
-  });
-  return order;
-}
+namespace {
 
-void canonicalize(Triangulation& out, unsigned threads) {
-  threads = std::max(threads, 1u);
+// A triangle on its way to its canonical place: its vertices, rotated to start at the
+// smallest, and its number before.
+struct Placed {
+  VertexId first, second, third;
+  std::uint32_t from;
+  bool operator<(const Placed& o) const {
+    return first < o.first || (first == o.first && (second < o.second || (second == o.second && third < o.third)));
+  }
+};
+
+// The triangles, each rotated to start at its smallest vertex, sorted into buckets of first
+// vertices (bucket b: first vertices from b << shift), each bucket a run of `bucket_start`:
+// each part of the triangles counts its own a bucket, then puts them in place after those of
+// the parts before it. Some ten thousand buckets: each is small enough to sort in the cache,
+// and a thread writes to few enough places at once to keep them there.
+std::vector<Placed> into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_t>& bucket_start,
+                                 int& shift) {
   const std::size_t count = out.size();
   auto& tv = out.triangles;
   auto& tn = out.neighbors;
-  parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
-    for (std::size_t t = first; t < last; ++t) {
-      VertexId* v = &tv[3 * t];
-      const int s = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
-      rotate3(v, s);
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, threads));
+  auto each = [&](unsigned k, auto&& visit) {
+    for (std::size_t t = count * k / parts; t < count * (k + 1) / parts; ++t) visit(t);
+  };
+  std::vector<VertexId> part_max(parts, 0);
+  on_threads(parts, [&](unsigned k) {
+    VertexId high = 0;
+    each(k, [&](std::size_t t) {
+      const int s =
+          tv[3 * t] < tv[3 * t + 1] ? (tv[3 * t] < tv[3 * t + 2] ? 0 : 2) : (tv[3 * t + 1] < tv[3 * t + 2] ? 1 : 2);
+      rotate3(&tv[3 * t], s);
       rotate3(&tn[3 * t], s);
+      high = std::max(high, tv[3 * t]);
+    });
+    part_max[k] = high;
+  });
+  const std::uint64_t groups = count > 0 ? std::uint64_t{*std::max_element(part_max.begin(), part_max.end())} + 1 : 1;
+  shift = 0;
+  while ((groups >> shift) > 16384) ++shift;
+  const std::size_t buckets = static_cast<std::size_t>(((groups - 1) >> shift) + 1);
+  std::vector<std::uint32_t> at(parts * buckets, 0);  // at[k * buckets + bucket]
+  on_threads(parts, [&](unsigned k) { each(k, [&](std::size_t t) { ++at[k * buckets + (tv[3 * t] >> shift)]; }); });
+  bucket_start.assign(buckets + 1, 0);
+  std::uint32_t sum = 0;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    bucket_start[b] = sum;
+    for (unsigned k = 0; k < parts; ++k) sum += std::exchange(at[k * buckets + b], sum);
+  }
+  bucket_start[buckets] = sum;
+  std::vector<Placed> placed;
+  resize_present(placed, count, threads);
+  on_threads(parts, [&](unsigned k) {
+    each(k, [&](std::size_t t) {
+      const VertexId* v = &tv[3 * t];
+      placed[at[k * buckets + (v[0] >> shift)]++] = {v[0], v[1], v[2], static_cast<std::uint32_t>(t)};
+    });
+  });
+  return placed;
+}
+
+}  // namespace
+
+// Each triangle rotated to start at its smallest vertex, then the triangles sorted: into
+// buckets of first vertices, then each bucket on its own (no two triangles share a first and a
+// second vertex: the edge between them is directed counter-clockwise in one triangle only; the
+// order is the same on any number of threads). The triangles travel with their vertices, so
+// nothing is looked up at random but the neighbours, gathered into the new order and
+// renumbered on the way.
+void canonicalize(Triangulation& out, unsigned threads) {
+  threads = std::max(threads, 1u);
+  const std::size_t count = out.size();
+  std::vector<std::uint32_t> bucket_start;
+  int shift = 0;
+  std::vector<Placed> placed = into_buckets(out, threads, bucket_start, shift);
+  std::vector<std::int32_t> rank;
+  std::vector<std::uint32_t> from;
+  resize_present(rank, count, threads);
+  resize_present(from, count, threads);
+  auto& tv = out.triangles;
+  parallel_for(bucket_start.size() - 1, threads, 16, [&](std::size_t first, std::size_t last) {
+    std::vector<std::uint32_t> at((std::size_t{1} << shift) + 1);
+    std::vector<Placed> run;
+    for (std::size_t b = first; b < last; ++b) {
+      // A counting sort of the bucket by first vertex, then each group (some two triangles)
+      // by its other two.
+      const std::uint32_t lo = bucket_start[b], hi = bucket_start[b + 1];
+      const VertexId base = static_cast<VertexId>(b << shift);
+      std::fill(at.begin(), at.end(), 0u);
+      for (std::uint32_t i = lo; i < hi; ++i) ++at[placed[i].first - base + 1];
+      std::partial_sum(at.begin(), at.end(), at.begin());
+      run.resize(hi - lo);
+      for (std::uint32_t i = lo; i < hi; ++i) run[at[placed[i].first - base]++] = placed[i];
+      for (std::size_t g = 0, e; g < run.size(); g = e) {
+        for (e = g + 1; e < run.size() && run[e].first == run[g].first;) ++e;
+        std::sort(run.begin() + g, run.begin() + e);
+      }
+      for (std::uint32_t i = lo; i < hi; ++i) {
+        const Placed& p = run[i - lo];
+        tv[3 * i] = p.first, tv[3 * i + 1] = p.second, tv[3 * i + 2] = p.third;
+        from[i] = p.from;
+        rank[p.from] = static_cast<std::int32_t>(i);
+      }
     }
   });
-  const std::vector<std::uint32_t> order = canonical_order(tv, count, threads);
-  // The neighbours renumbered, then each array gathered into its new order, one at a time:
-  // the reads are at random, but their addresses are known ahead, so they are asked for some
-  // way ahead and their misses overlap (moving the triangles along the permutation's cycles, in
-  // place, waited for one miss after another and took as long as the insertion). One array's
-  // copy, 24 bytes a point, is the price.
-  {
-    std::vector<std::int32_t> rank(count);
-    parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
-      for (std::size_t i = first; i < last; ++i) rank[order[i]] = static_cast<std::int32_t>(i);
-    });
-    parallel_for(tn.size(), threads, 65536, [&](std::size_t first, std::size_t last) {
-      for (std::size_t i = first; i < last; ++i) tn[i] = tn[i] < 0 ? kNoNeighbor : rank[tn[i]];
-    });
-  }
-  auto gather = [&](auto& a) {
-    std::remove_reference_t<decltype(a)> sorted(a.size());
-    parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
-      constexpr std::size_t kAhead = 16;
-      for (std::size_t i = first; i < last; ++i) {
-        if (i + kAhead < last) __builtin_prefetch(&a[3 * std::size_t{order[i + kAhead]}]);
-        copy3(&a[3 * std::size_t{order[i]}], &sorted[3 * i]);
-      }
-    });
-    a.swap(sorted);
-  };
-  gather(tv);
-  gather(tn);
+  placed = {};
+  // The neighbours' addresses are known ahead: asked for some way ahead, their misses overlap.
+  auto& tn = out.neighbors;
+  std::vector<std::int32_t> sorted;
+  resize_present(sorted, tn.size(), threads);
+  parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
+    constexpr std::size_t kAhead = 16;
+    for (std::size_t i = first; i < last; ++i) {
+      if (i + kAhead < last) __builtin_prefetch(&tn[3 * std::size_t{from[i + kAhead]}]);
+      const std::int32_t* n = &tn[3 * std::size_t{from[i]}];
+      for (int k = 0; k < 3; ++k) sorted[3 * i + k] = n[k] < 0 ? kNoNeighbor : rank[n[k]];
+    }
+  });
+  tn.swap(sorted);
 }
 
 Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index, const std::vector<DuplicateHit>& duplicates,

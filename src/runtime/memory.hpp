@@ -91,7 +91,8 @@ class Reservation {
 /// pages then runs on every thread, where the first writes would fault them in one by one on
 /// one; on one thread, one call in place of a fault a page is still some 15 % quicker. Only a
 /// request: without MADV_POPULATE_WRITE (Linux 5.14) the first writes fault them in as before.
-/// Below 1 MiB it does nothing.
+/// The whole huge pages within the range are marked for transparent huge pages. Below 1 MiB it
+/// does nothing.
 void make_present(void* data, std::size_t bytes, unsigned threads);
 
 /// `a` resized to n (new elements zero), the storage of the new elements made present by up

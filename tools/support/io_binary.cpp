@@ -1,4 +1,6 @@
 // Raw little-endian binary: points as float64 x, y pairs, triangles as uint32 triples.
+#include <thread>
+
 #include "io_common.hpp"
 
 namespace ridt::io::detail {
@@ -10,14 +12,31 @@ void check_bin_size(const std::string& path, std::size_t bytes) {
     fail_file(path, "size " + std::to_string(bytes) + " bytes is not a multiple of 16 (pairs of float64 x, y)");
 }
 
+// Each point's coordinates checked, on a thread for every 16 MiB up to the machine's hardware
+// threads: for a mapped file this first read is also what brings its pages in, on every thread
+// at once rather than on one (10^8 points, 1.6 GB: 0.4 s on one thread).
 void check_finite(const std::string& path, std::span<const Point> points) {
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double x = points[i].x, y = points[i].y;
-    if (std::isfinite(x) && std::isfinite(y)) continue;
-    fail_file(path,
-              "point " + std::to_string(i) + " has " + (std::isnan(x) || std::isnan(y) ? "a NaN" : "an infinite") +
-                  " coordinate");
+  const auto parts = static_cast<unsigned>(
+      std::clamp<std::size_t>(points.size() >> 20, 1, std::max(1u, std::thread::hardware_concurrency())));
+  std::vector<std::size_t> bad(parts, points.size());
+  auto scan = [&](unsigned k) {
+    for (std::size_t i = points.size() * k / parts; i < points.size() * (k + 1) / parts; ++i)
+      if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y)) {
+        bad[k] = i;
+        return;
+      }
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (unsigned k = 1; k < parts; ++k) helpers.emplace_back(scan, k);
+    scan(0);
   }
+  const std::size_t i = *std::min_element(bad.begin(), bad.end());
+  if (i == points.size()) return;
+  const double x = points[i].x, y = points[i].y;
+  fail_file(path,
+            "point " + std::to_string(i) + " has " + (std::isnan(x) || std::isnan(y) ? "a NaN" : "an infinite") +
+                " coordinate");
 }
 
 }  // namespace
@@ -51,8 +70,8 @@ std::optional<PointFile> map_bin_points(const std::string& path) {
   const auto bytes = static_cast<std::size_t>(st.st_size);
   check_bin_size(path, bytes);
   if (bytes == 0) return PointFile();
-  // All pages at once; they are the page cache's own, shared, never copied.
-  void* at = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.fd, 0);
+  // The page cache's own pages, shared, never copied; brought in by the check on threads.
+  void* at = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE, file.fd, 0);
   if (at == MAP_FAILED) return std::nullopt;
   std::shared_ptr<const void> owner(at, [bytes](const void* p) { ::munmap(const_cast<void*>(p), bytes); });
   const std::span<const Point> points(static_cast<const Point*>(at), bytes / 16);
