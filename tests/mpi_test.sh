@@ -22,27 +22,7 @@ run() { timeout 120 mpirun -np "$1" --oversubscribe "$mpi" "${@:2}"; }  # a hang
 for d in uniform normal grid clusters; do
   "$ridt" generate --dist "$d" -n 30000 --seed 5 -o "$dir/$d.bin" || fail "generate $d"
 done
-/usr/bin/python3 - "$dir" "$fixtures" <<'EOF' || fail "making the degenerate sets"
-import json, math, os, random, struct, sys
-out, fixtures = sys.argv[1], sys.argv[2]
-def save(name, pts):
-    with open(os.path.join(out, name + ".bin"), "wb") as f:
-        for x, y in pts:
-            f.write(struct.pack("<dd", x, y))
-rng = random.Random(3)
-save("duplicates", [(rng.randint(0, 40), rng.randint(0, 40)) for _ in range(5000)])
-save("collinear_plus_one", [(i, 2 * i) for i in range(2000)] + [(5.0, -1.0)])
-save("collinear", [(i * 0.5, i * 0.25) for i in range(500)])
-save("three", [(0, 0), (1, 0), (0, 1)])
-save("cocircular", [(math.cos(2 * math.pi * k / 64), math.sin(2 * math.pi * k / 64)) for k in range(64)] + [(0, 0)])
-u = [(rng.random(), rng.random()) for _ in range(8000)]
-save("huge", [(x * 1e300, y * 1e300) for x, y in u])
-save("tiny", [(x * 1e-300, y * 1e-300) for x, y in u])
-for name in sorted(os.listdir(fixtures)):
-    if name.endswith(".json"):
-        pts = json.load(open(os.path.join(fixtures, name)))
-        save("fixture_" + name[:-5], [tuple(map(float, p)) for p in pts])
-EOF
+/usr/bin/python3 "$(dirname "$0")/point_sets.py" "$dir" "$fixtures" || fail "making the degenerate sets"
 
 sets=$(cd "$dir" && ls *.bin | sed 's/\.bin$//')
 [ -n "$sets" ] && pass || fail "no point sets"

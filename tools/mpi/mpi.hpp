@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "circles.hpp"
 #include "io.hpp"
 #include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
@@ -30,34 +31,15 @@ namespace ridt::mpi {
 using ridt::Point;
 using Clock = std::chrono::steady_clock;
 
-// A point and its input index, as sent between ranks.
-struct Site {
-  double x, y;
-  std::uint64_t id;
-};
-static_assert(sizeof(Site) == 24);
-
-struct Box {
-  double x0, y0, x1, y1;
-
-  // The distance from (x, y) to the box (0 inside), without overflow or underflow.
-  double distance(double x, double y) const {
-    const double dx = x < x0 ? x0 - x : x > x1 ? x - x1 : 0;
-    const double dy = y < y0 ? y0 - y : y > y1 ? y - y1 : 0;
-    return std::hypot(dx, dy);
-  }
-};
+using io::Box;
+using io::Disc;
+using io::Site;
 
 // What a rank asks another for: its points inside or on the circumcircle of the
 // counter-clockwise triangle (a, b), (c, d), (e, f) (kind 0), its neighbour across the line
 // from (a, b) to (c, d) (kind 1: a point strictly to its right), or all its points (kind 2).
 struct Request {
   double kind, a, b, c, d, e, f;
-};
-
-// A disc in the plane (r infinite: the whole plane).
-struct Disc {
-  double x, y, r;
 };
 
 // An error on one rank, to be shared with all.

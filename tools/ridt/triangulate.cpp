@@ -1,8 +1,11 @@
 // ridt triangulate INPUT [-o OUTPUT] [--method M] [--threads N] [--order O] [--locate L]
-//                        [--seed S] [--stats[=json|table]] and the paper's experiment switches.
+//                        [--seed S] [--stats[=json|table]] and the paper's experiment switches;
+// ridt triangulate INPUT.bin -o OUT.parts --out-of-core [--memory-limit SIZE] [--threads N].
 #include <sstream>
+#include <thread>
 
 #include "command.hpp"
+#include "out_of_core.hpp"
 
 namespace ridt::tool {
 namespace {
@@ -13,8 +16,9 @@ struct Args {
   std::uint64_t seed = 1;
   double k = 10;
   unsigned threads = 0;
-  bool profile = false, paper_locking = false, no_thread_timing = false;
+  bool profile = false, paper_locking = false, no_thread_timing = false, out_of_core = false;
   std::string memory_limit;
+  std::uint64_t column_points = 0;
 };
 
 std::string number(double v) {
@@ -102,7 +106,41 @@ Options options(const Args& a) {
   return o;
 }
 
+// --out-of-core: strip by strip within the memory limit (tools/support/out_of_core.hpp).
+int run_out_of_core(const Args& a) {
+  if (a.method != "auto" || a.order != "brio" || a.locate != "auto" || a.bounding != "symbolic" || a.profile)
+    throw InputError(
+        "--out-of-core takes no --method, --order, --locate, --bounding or --profile: "
+        "each strip is triangulated by the walking kernel");
+  if (a.output.empty()) throw InputError("--out-of-core needs an output, -o OUT.parts");
+  if (a.stats != "" && a.stats != "json") throw InputError("--out-of-core prints its stats as json only");
+  io::OutOfCoreOptions o;
+  o.input = a.input;
+  o.output = a.output;
+  if (!a.memory_limit.empty()) o.memory_limit = byte_size(a.memory_limit, "--memory-limit");
+  o.threads = a.threads != 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  o.column_points = a.column_points;
+  ProgressLine progress;
+  if (progress.on()) o.progress = [&](const char* phase, double done) { progress.show(phase, done); };
+  const auto t0 = std::chrono::steady_clock::now();
+  const io::OutOfCoreStats st = io::triangulate_out_of_core(o);
+  progress.clear();
+  if (a.stats.empty()) return 0;
+  std::printf(
+      "{\"points\": %llu, \"triangles\": %llu, \"columns\": %llu, \"rows\": %llu, \"strips\": %llu, "
+      "\"loaded\": %llu, \"retries\": %llu, \"time_bucket_s\": %s, \"time_triangulate_s\": %s, "
+      "\"time_check_s\": %s, \"time_write_s\": %s, \"time_total_s\": %s, \"peak_rss_bytes\": %lld}\n",
+      static_cast<unsigned long long>(st.points), static_cast<unsigned long long>(st.triangles),
+      static_cast<unsigned long long>(st.columns), static_cast<unsigned long long>(st.rows),
+      static_cast<unsigned long long>(st.strips), static_cast<unsigned long long>(st.loaded),
+      static_cast<unsigned long long>(st.retries), number(st.time_bucket_s).c_str(),
+      number(st.time_triangulate_s).c_str(), number(st.time_check_s).c_str(), number(st.time_write_s).c_str(),
+      number(seconds_since(t0)).c_str(), peak_rss_bytes());
+  return 0;
+}
+
 int run(const Args& a) {
+  if (a.out_of_core) return run_out_of_core(a);
   Options o = options(a);
   ProgressLine progress;
   if (progress.on()) o.progress = [&](double done) { progress.show(done < 1 ? "inserting" : "finishing", done); };
@@ -154,6 +192,12 @@ Command add_triangulate(CLI::App& app) {
   tri->add_option("--memory-limit", a->memory_limit,
                   "the most memory the triangulation may take, e.g. 800M or 12G (default: what the system can give); "
                   "a run that needs more is refused before it starts");
+  tri->add_flag("--out-of-core", a->out_of_core,
+                "for point sets larger than memory: a .bin input bucketed on disk, triangulated strip by strip "
+                "within --memory-limit (default: a quarter of what is available), written as parts: -o OUT.parts");
+  tri->add_option("--column-points", a->column_points,
+                  "--out-of-core: points a column of cells holds (default: what --memory-limit allows; a strip owns "
+                  "8 columns and loads one more on either side)");
   CLI::Option* stats =
       tri->add_option("--stats", a->stats, "print counters and times: json (default) or table")->expected(0, 1);
   add_experiment(tri, *a);

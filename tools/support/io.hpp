@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -129,6 +130,13 @@ void write_triangulation(const std::string& path, std::span<const Point> points,
 /// An axis-parallel box [x0, x1] x [y0, y1].
 struct Box {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+  /// The distance from (x, y) to the box (0 inside), without overflow or underflow.
+  double distance(double x, double y) const {
+    const double dx = x < x0 ? x0 - x : x > x1 ? x - x1 : 0;
+    const double dy = y < y0 ? y0 - y : y > y1 ? y - y1 : 0;
+    return std::hypot(dx, dy);
+  }
 };
 
 /// The points' bounding box grown by `margin` of its size on every side (a box of one point

@@ -1,0 +1,63 @@
+// A .bin point file bucketed on disk into cells, for the out-of-core triangulation
+// (out_of_core.hpp): columns of about equal counts, each cut into rows, every cell's points in
+// input order, one file of (x, y, input index) records laid out column by column.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "circles.hpp"
+
+namespace ridt::io {
+
+class CellStore {
+ public:
+  /// Reads `input` (a .bin file, checked: whole pairs, finite coordinates) twice and writes its
+  /// points into a file that `scratch` names, removed when the store goes (and at once from the
+  /// directory: nothing is left behind by a crash). `column_points`: about how many points a
+  /// column holds; `buffer_bytes`: what the writes may buffer. progress(fraction) as it goes.
+  CellStore(const std::string& input, const std::string& scratch, std::uint64_t column_points, std::size_t buffer_bytes,
+            const std::function<void(double)>& progress);
+  ~CellStore();
+  CellStore(const CellStore&) = delete;
+  CellStore& operator=(const CellStore&) = delete;
+
+  std::uint64_t points() const { return points_; }
+  std::size_t columns() const { return xcut_.size() + 1; }
+  std::size_t rows() const { return ycut_.size() + 1; }
+  /// Points in column c, and in cell (c, r).
+  std::uint64_t column_size(std::size_t c) const { return start_[(c + 1) * rows()] - start_[c * rows()]; }
+  std::uint64_t cell_size(std::size_t c, std::size_t r) const {
+    return start_[c * rows() + r + 1] - start_[c * rows() + r];
+  }
+  /// Column c holds the points with left(c) <= x < left(c + 1) (left(0) is -infinity and
+  /// left(columns()) +infinity); rows alike in y.
+  double left(std::size_t c) const;
+  /// A box that holds every point of cell (c, r) (the points' extent closes the outer cells).
+  Box cell_box(std::size_t c, std::size_t r) const;
+  /// Appends column c's points, cell after cell, to `out`.
+  void read_column(std::size_t c, std::vector<Site>& out) const { read(start_[c * rows()], column_size(c), out); }
+  /// Appends cell (c, r)'s points to `out`.
+  void read_cell(std::size_t c, std::size_t r, std::vector<Site>& out) const {
+    read(start_[c * rows() + r], cell_size(c, r), out);
+  }
+
+ private:
+  void read(std::uint64_t first, std::uint64_t count, std::vector<Site>& out) const;
+  void cut(const std::string& input, std::uint64_t column_points);
+  void count(const std::string& input);
+  void write(const std::string& input, std::size_t buffer_bytes, const std::function<void(double)>& progress);
+  std::size_t column_of(double x) const;
+  std::size_t row_of(double y) const;
+
+  std::uint64_t points_ = 0;
+  Box extent_{};
+  std::vector<double> xcut_, ycut_;  // interior cuts: column c is [xcut[c - 1], xcut[c])
+  std::vector<std::uint64_t> start_;  // start_[c * rows + r]: the first record of cell (c, r)
+  std::string scratch_;
+  int fd_ = -1;
+};
+
+}  // namespace ridt::io

@@ -1,0 +1,282 @@
+// The out-of-core triangulation (out_of_core.hpp): strips of columns triangulated one after
+// another, each checked exactly against the columns it did not load.
+#include "out_of_core.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "cells.hpp"
+#include "io.hpp"
+#include "io_common.hpp"
+#include "ridt/predicates.hpp"
+#include "writer.hpp"
+
+namespace ridt::io {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// A strip's point at its peak: the walking kernel's (ridt::estimate_memory: 94 bytes, the
+// result included), the loaded copy with its input index (24) and the reading's (24).
+constexpr double kBytesPerPoint = 142;
+constexpr std::size_t kFixedBytes = std::size_t{32} << 20;  // the cells' tables, a block, the process
+constexpr std::size_t kThreadBytes = std::size_t{8} << 20;  // ridt::estimate_memory's a thread
+constexpr std::size_t kOwnedColumns = 8;  // columns a strip owns; one more on either side loaded
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// A strip: the points of the columns [lo, hi), column after column (those of the owned columns
+// [own_lo, own_hi) at positions [own_first, own_last)), then single points of other columns
+// that its checks found it needs (`extra`, by input index: equal points keep their order).
+struct Strip {
+  std::size_t lo = 0, hi = 0, own_lo = 0, own_hi = 0;
+  std::vector<Point> points;
+  std::vector<std::uint64_t> ids;
+  std::size_t own_first = 0, own_last = 0;
+  std::vector<Site> extra;
+  std::unordered_set<std::uint64_t> has;  // the input indices in `extra`
+
+  bool owns(VertexId v) const { return v >= own_first && v < own_last; }
+  bool loaded(std::size_t column) const { return column >= lo && column < hi; }
+
+  void load(const CellStore& cells) {
+    points.clear(), ids.clear();
+    std::vector<Site> column;
+    for (std::size_t c = lo; c < hi; ++c) {
+      if (c == own_lo) own_first = points.size();
+      column.clear();
+      cells.read_column(c, column);
+      for (const Site& p : column) points.push_back({p.x, p.y}), ids.push_back(p.id);
+      if (c + 1 == own_hi) own_last = points.size();
+    }
+    std::sort(extra.begin(), extra.end(), [](const Site& p, const Site& q) { return p.id < q.id; });
+    for (const Site& p : extra) points.push_back({p.x, p.y}), ids.push_back(p.id);
+  }
+};
+
+// A cell's points sorted by x, then y, then input index, and their convex hull.
+struct Cell {
+  std::vector<Site> points, hull;
+};
+
+// The exact checks of a strip's triangles against the columns it did not load, reading their
+// cells as needed (kept until the strip is done, up to a budget). What a check finds wanting
+// goes to `found`: single points, each with every point equal to it.
+class Checker {
+ public:
+  Checker(const CellStore& cells, std::size_t budget) : cells_(cells), budget_(budget) {}
+
+  void reset() { cache_.clear(), held_ = 0; }
+
+  // The points of columns not loaded inside or on the circle through the counter-clockwise
+  // (a, b, c). Only the columns the widened circle reaches are looked at, outward from the
+  // loaded ones, and in them only the cells it meets.
+  void circle(const Strip& s, const Point& a, const Point& b, const Point& c, std::vector<Site>& found) {
+    const Disc d = io::circle(a, b, c);
+    auto look = [&](std::size_t k) {
+      for (std::size_t r = 0; r < cells_.rows(); ++r) {
+        if (cells_.cell_size(k, r) == 0 || cells_.cell_box(k, r).distance(d.x, d.y) > d.r) continue;
+        for (const Site& p : cell(k, r).points)
+          if (!s.has.count(p.id) && in_circle(a, b, c, {p.x, p.y}) >= 0) found.push_back(p);
+      }
+    };
+    for (std::size_t k = s.lo; k-- > 0 && cells_.left(k + 1) > d.x - d.r;) look(k);
+    for (std::size_t k = s.hi; k < cells_.columns() && cells_.left(k) <= d.x + d.r; ++k) look(k);
+  }
+
+  // The points of columns not loaded strictly beyond the hull edge a -> b (to its right) that
+  // are corners of their cells' hulls: if any point is beyond, a corner is.
+  void hull_edge(const Strip& s, const Point& a, const Point& b, std::vector<Site>& found) {
+    auto meets = [&](const Box& box) {
+      const Point corner[4] = {{box.x0, box.y0}, {box.x1, box.y0}, {box.x0, box.y1}, {box.x1, box.y1}};
+      return std::any_of(corner, corner + 4, [&](const Point& q) { return orientation(a, b, q) <= 0; });
+    };
+    for (std::size_t k = 0; k < cells_.columns(); ++k) {
+      if (s.loaded(k)) continue;
+      for (std::size_t r = 0; r < cells_.rows(); ++r) {
+        if (cells_.cell_size(k, r) == 0 || !meets(cells_.cell_box(k, r))) continue;
+        const Cell& here = cell(k, r);
+        for (const Site& p : here.hull)
+          if (orientation(a, b, {p.x, p.y}) < 0) with_equals(s, here, p, found);
+      }
+    }
+  }
+
+ private:
+  // p and the points of its cell equal to it, unless the strip has them.
+  static void with_equals(const Strip& s, const Cell& c, const Site& p, std::vector<Site>& found) {
+    const auto less = [](const Site& u, const Site& v) { return u.x < v.x || (u.x == v.x && u.y < v.y); };
+    const auto [from, to] = std::equal_range(c.points.begin(), c.points.end(), p, less);
+    for (auto it = from; it != to; ++it)
+      if (!s.has.count(it->id)) found.push_back(*it);
+  }
+
+  const Cell& cell(std::size_t k, std::size_t r) {
+    const std::size_t key = k * cells_.rows() + r;
+    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+    if (held_ > budget_) reset();
+    Cell& c = cache_[key];
+    cells_.read_cell(k, r, c.points);
+    std::sort(c.points.begin(), c.points.end(), [](const Site& u, const Site& v) {
+      return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.id < v.id)));
+    });
+    c.hull = hull_of_sorted(c.points);
+    held_ += (c.points.size() + c.hull.size()) * sizeof(Site);
+    return c;
+  }
+
+  const CellStore& cells_;
+  std::size_t budget_, held_ = 0;
+  std::unordered_map<std::size_t, Cell> cache_;
+};
+
+// Checks strip s's triangulation t: adds to s.extra the points of other columns that a
+// triangle at an owned point or a hull edge at one finds wanting (and loads every column when
+// t has no triangle: points on a line tell nothing); true when nothing was wanting.
+bool check(Strip& s, const Triangulation& t, const CellStore& cells, Checker& checker) {
+  if (t.size() == 0 && s.own_last > s.own_first && (s.lo > 0 || s.hi < cells.columns())) {
+    s.lo = 0, s.hi = cells.columns(), s.extra.clear(), s.has.clear();
+    return false;
+  }
+  std::vector<Site> found;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const VertexId* v = &t.triangles[3 * k];
+    if (s.owns(v[0]) || s.owns(v[1]) || s.owns(v[2]))
+      checker.circle(s, s.points[v[0]], s.points[v[1]], s.points[v[2]], found);
+  }
+  for (std::size_t i = 0; i < t.hull.size(); ++i) {
+    const VertexId a = t.hull[i], b = t.hull[(i + 1) % t.hull.size()];
+    if (s.owns(a) || s.owns(b)) checker.hull_edge(s, s.points[a], s.points[b], found);
+  }
+  std::size_t added = 0;
+  for (const Site& p : found)
+    if (s.has.insert(p.id).second) s.extra.push_back(p), ++added;
+  return added == 0;
+}
+
+// The triangles strip s keeps (those whose smallest input index it owns), each from that
+// index, as input indices: written to its part.
+std::uint64_t write_part(const std::string& path, const Strip& s, const Triangulation& t) {
+  auto kept = [&](std::size_t k, std::uint64_t out[3]) {
+    const VertexId* v = &t.triangles[3 * k];
+    int first = 0;
+    for (int i = 1; i < 3; ++i)
+      if (s.ids[v[i]] < s.ids[v[first]]) first = i;
+    if (!s.owns(v[first])) return false;
+    for (int j = 0; j < 3; ++j) out[j] = s.ids[v[(first + j) % 3]];
+    return true;
+  };
+  std::uint64_t count = 0, triangle[3];
+  for (std::size_t k = 0; k < t.size(); ++k) count += kept(k, triangle);
+  Writer w(path);
+  w.put_int(static_cast<std::int64_t>(count));
+  w.put(" 3 0\n");
+  std::uint64_t written = 0;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    if (kept(k, triangle)) {
+      w.put_int(static_cast<std::int64_t>(written++));
+      for (int j = 0; j < 3; ++j) w.put(' '), w.put_int(static_cast<std::int64_t>(triangle[j]));
+      w.put('\n');
+    }
+  w.commit();
+  return count;
+}
+
+// The parts written so far, removed unless the whole run succeeds.
+struct Parts {
+  std::vector<std::string> written;
+  bool done = false;
+  ~Parts() {
+    if (done) return;
+    for (const std::string& p : written) std::remove(p.c_str());
+  }
+};
+
+// The points a strip may hold within `limit` (each thread of its triangulation keeps buffers).
+std::size_t strip_points(std::size_t limit, unsigned threads) {
+  const std::size_t fixed = kFixedBytes + threads * kThreadBytes;
+  const auto least = fixed + static_cast<std::size_t>(4096 * kBytesPerPoint);
+  if (limit <= least)
+    throw InputError("the out-of-core mode needs a memory limit of at least " + std::to_string((least >> 20) + 1) +
+                     " MiB (got " + std::to_string(limit >> 20) + " MiB)");
+  return static_cast<std::size_t>(static_cast<double>(limit - fixed) / kBytesPerPoint);
+}
+
+// Triangulates strip s (owned columns [own_lo, own_hi)) until it knows its triangles, and
+// writes them to `part`.
+std::uint64_t run_strip(Strip& s, const CellStore& cells, Checker& checker, const Options& o, const std::string& part,
+                        OutOfCoreStats& st) {
+  s.lo = s.own_lo > 0 ? s.own_lo - 1 : 0;
+  s.hi = std::min(cells.columns(), s.own_hi + 1);
+  checker.reset();  // the cells it read stay good for the strip's next tries
+  for (;; ++st.retries) {
+    auto t0 = Clock::now();
+    s.load(cells);
+    st.loaded += s.points.size();
+    const Triangulation t = triangulate(std::span<const Point>(s.points), o);
+    st.time_triangulate_s += since(t0);
+    t0 = Clock::now();
+    const bool known = check(s, t, cells, checker);
+    st.time_check_s += since(t0);
+    if (known) {
+      t0 = Clock::now();
+      const std::uint64_t count = write_part(part, s, t);
+      st.time_write_s += since(t0);
+      return count;
+    }
+  }
+}
+
+}  // namespace
+
+OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
+  const fs::path out(options.output);
+  if (out.extension() != ".parts")
+    throw InputError(options.output + ": the out-of-core mode writes parts and their index, OUT.parts");
+  if (fs::path(options.input).extension() != ".bin")
+    throw InputError(options.input + ": the out-of-core mode reads .bin point files");
+  const std::size_t limit = options.memory_limit != 0 ? options.memory_limit : available_memory() / 4;
+  const unsigned threads = std::max(options.threads, 1u);
+  const std::size_t per_strip = strip_points(limit, threads);
+  OutOfCoreStats st;
+  auto t0 = Clock::now();
+  const std::string stem = (out.parent_path() / out.stem()).string();
+  const CellStore cells(
+      options.input, stem + ".cells.tmp-" + std::to_string(::getpid()),
+      options.column_points != 0 ? options.column_points : std::max<std::size_t>(1, per_strip / (kOwnedColumns + 4)),
+      limit / 8, [&](double done) {
+        if (options.progress) options.progress("bucketing", done);
+      });
+  st.time_bucket_s = since(t0);
+  st.points = cells.points(), st.columns = cells.columns(), st.rows = cells.rows();
+  st.strips = (cells.columns() + kOwnedColumns - 1) / kOwnedColumns;
+  Options o;
+  o.method = threads > 1 ? Method::Partition : Method::Serial;
+  o.threads = threads;
+  Checker checker(cells, limit / 16);
+  Parts parts;
+  auto name = [&](std::size_t k) {
+    return out.stem().string() + "." + std::to_string(k) + "-of-" + std::to_string(st.strips) + ".ele";
+  };
+  for (std::size_t k = 0; k < st.strips; ++k) {
+    if (options.progress) options.progress("triangulating", static_cast<double>(k) / static_cast<double>(st.strips));
+    Strip s;
+    s.own_lo = k * kOwnedColumns, s.own_hi = std::min(cells.columns(), (k + 1) * kOwnedColumns);
+    const std::string part = (out.parent_path() / name(k)).string();
+    st.triangles += run_strip(s, cells, checker, o, part, st);
+    parts.written.push_back(part);
+  }
+  Writer index(options.output);
+  index.put("ridt parts " + std::to_string(st.strips) + "\n");
+  for (std::size_t k = 0; k < st.strips; ++k) index.put(name(k) + "\n");
+  index.commit();
+  parts.done = true;
+  return st;
+}
+
+}  // namespace ridt::io
