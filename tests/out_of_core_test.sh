@@ -22,8 +22,16 @@ done
 # the in-memory file (already in that order).
 same() {
   /usr/bin/python3 - "$1" "$2" <<'EOF'
-import os, sys
+import os, struct, sys
 def triangles(path):
+    if path.endswith(".bin"):
+        data = open(path, "rb").read()
+        out = []
+        for k in range(0, len(data), 12):
+            t = list(struct.unpack_from("<3I", data, k))
+            i = t.index(min(t))
+            out.append(tuple(t[i:] + t[:i]))
+        return out
     lines = open(path).read().split("\n")[1:]
     out = []
     for line in lines:

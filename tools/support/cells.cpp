@@ -71,6 +71,7 @@ CellStore::CellStore(const std::string& input, const std::string& scratch, std::
   if (fd_ < 0) throw IoError("cannot write " + scratch + ": " + detail::errno_text(errno));
   ::unlink(scratch.c_str());  // the open descriptor keeps it until the store goes
   write(input, buffer_bytes, progress);
+  hulls();
 }
 
 CellStore::~CellStore() {
@@ -160,6 +161,34 @@ void CellStore::write(const std::string& input, std::size_t buffer_bytes, const 
     if (progress) progress(static_cast<double>(at + block.size()) / static_cast<double>(points_));
   });
   for (std::size_t cell = 0; cell < cells; ++cell) flush(cell);
+}
+
+// Each cell's hull, a column at a time, and each column's from its cells' hulls.
+void CellStore::hulls() {
+  const auto by_place = [](const Site& u, const Site& v) {
+    return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.id < v.id)));
+  };
+  hull_.assign(columns() * rows(), {});
+  column_hull_.assign(columns(), {});
+  std::vector<Site> column, corners;
+  for (std::size_t c = 0; c < columns(); ++c) {
+    column.clear();
+    read_column(c, column);
+    corners.clear();
+    for (std::size_t r = 0, at = 0; r < rows(); at += cell_size(c, r), ++r) {
+      const auto first = column.begin() + static_cast<std::ptrdiff_t>(at);
+      std::vector<Site> cell(first, first + static_cast<std::ptrdiff_t>(cell_size(c, r)));
+      std::sort(cell.begin(), cell.end(), by_place);
+      hull_[c * rows() + r] = hull_of_sorted(cell);
+      corners.insert(corners.end(), hull_[c * rows() + r].begin(), hull_[c * rows() + r].end());
+    }
+    std::sort(corners.begin(), corners.end(), by_place);
+    column_hull_[c] = hull_of_sorted(corners);
+  }
+  corners.clear();
+  for (const std::vector<Site>& h : column_hull_) corners.insert(corners.end(), h.begin(), h.end());
+  std::sort(corners.begin(), corners.end(), by_place);
+  hull_all_ = hull_of_sorted(corners);
 }
 
 void CellStore::read(std::uint64_t first, std::uint64_t count, std::vector<Site>& out) const {

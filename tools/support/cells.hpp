@@ -32,11 +32,21 @@ class CellStore {
   std::uint64_t cell_size(std::size_t c, std::size_t r) const {
     return start_[c * rows() + r + 1] - start_[c * rows() + r];
   }
+  /// The column and the row of a point.
+  std::size_t column_of(double x) const;
+  std::size_t row_of(double y) const;
   /// Column c holds the points with left(c) <= x < left(c + 1) (left(0) is -infinity and
   /// left(columns()) +infinity); rows alike in y.
   double left(std::size_t c) const;
   /// A box that holds every point of cell (c, r) (the points' extent closes the outer cells).
   Box cell_box(std::size_t c, std::size_t r) const;
+  /// The convex hull of cell (c, r)'s points and of column c's, counter-clockwise (each point
+  /// strictly beyond a line has a hull corner beyond it too), kept in memory: a few dozen
+  /// points a cell.
+  const std::vector<Site>& cell_hull(std::size_t c, std::size_t r) const { return hull_[c * rows() + r]; }
+  const std::vector<Site>& column_hull(std::size_t c) const { return column_hull_[c]; }
+  /// The convex hull of all the points.
+  const std::vector<Site>& hull() const { return hull_all_; }
   /// Appends column c's points, cell after cell, to `out`.
   void read_column(std::size_t c, std::vector<Site>& out) const { read(start_[c * rows()], column_size(c), out); }
   /// Appends cell (c, r)'s points to `out`.
@@ -49,13 +59,14 @@ class CellStore {
   void cut(const std::string& input, std::uint64_t column_points);
   void count(const std::string& input);
   void write(const std::string& input, std::size_t buffer_bytes, const std::function<void(double)>& progress);
-  std::size_t column_of(double x) const;
-  std::size_t row_of(double y) const;
+  void hulls();
 
   std::uint64_t points_ = 0;
   Box extent_{};
   std::vector<double> xcut_, ycut_;  // interior cuts: column c is [xcut[c - 1], xcut[c])
   std::vector<std::uint64_t> start_;  // start_[c * rows + r]: the first record of cell (c, r)
+  std::vector<std::vector<Site>> hull_, column_hull_;
+  std::vector<Site> hull_all_;
   std::string scratch_;
   int fd_ = -1;
 };

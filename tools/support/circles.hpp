@@ -40,7 +40,7 @@ inline Disc circle(const Point& a, const Point& b, const Point& c) {
   const double d = 2 * (bx * cy - by * cx);
   const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
   const double ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
-  const double radius = std::hypot(ux, uy) * size;
+  const double radius = std::sqrt(ux * ux + uy * uy) * size;  // ux, uy: in the triangle's size
   const Point centre{a.x + ux * size, a.y + uy * size};
   // The rounding of a flat triangle's centre grows as the triangle flattens: a generous
   // relative margin, and a little absolute one.

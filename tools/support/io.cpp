@@ -37,7 +37,7 @@ std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
 }
 
 std::vector<VertexId> read_parts(const std::string& path) {
-  // "ridt parts N", then N part files (.ele, indices from 0), named relative to the index.
+  // "ridt parts N", then N part files (.ele, indices from 0, or .bin), named relative to the index.
   const std::string text = read_file_whole(path);
   std::vector<std::string> lines;
   for_each_line(text, [&](std::size_t, std::string_view line) {
@@ -55,7 +55,8 @@ std::vector<VertexId> read_parts(const std::string& path) {
   std::vector<VertexId> out;
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const std::string part = (dir / lines[k]).string();
-    if (extension_of(part) != ".ele") fail_file(path, "part " + lines[k] + " is not an .ele file");
+    if (extension_of(part) != ".ele" && extension_of(part) != ".bin")
+      fail_file(path, "part " + lines[k] + " is neither an .ele nor a .bin file");
     const std::vector<VertexId> t = read_triangles(part, 0);
     out.insert(out.end(), t.begin(), t.end());
   }

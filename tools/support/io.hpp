@@ -112,8 +112,9 @@ void write_points(const std::string& path, std::span<const Point> points, int fi
 /// `first_index` is the numbering of .ele and text files.
 std::vector<VertexId> read_triangles(const std::string& path, int first_index);
 
-/// The triangles of a distributed run's parts: an index (.parts: "ridt parts N", then the N
-/// .ele files, 0-based, named relative to the index), the parts' triangles one after another.
+/// The triangles of a distributed or out-of-core run's parts: an index (.parts: "ridt parts N",
+/// then the N part files, .ele (0-based) or .bin, named relative to the index), the parts'
+/// triangles one after another.
 std::vector<VertexId> read_parts(const std::string& path);
 
 /// The same for content in memory (`name` as for parse_points).

@@ -59,9 +59,9 @@ struct Strip {
   }
 };
 
-// A cell's points sorted by x, then y, then input index, and their convex hull.
+// A cell's points sorted by x, then y, then input index.
 struct Cell {
-  std::vector<Site> points, hull;
+  std::vector<Site> points;
 };
 
 // The exact checks of a strip's triangles against the columns it did not load, reading their
@@ -79,10 +79,16 @@ class Checker {
   void circle(const Strip& s, const Point& a, const Point& b, const Point& c, std::vector<Site>& found) {
     const Disc d = io::circle(a, b, c);
     auto look = [&](std::size_t k) {
-      for (std::size_t r = 0; r < cells_.rows(); ++r) {
+      // The rows the disc meets over the column's width.
+      const Box column = cells_.cell_box(k, 0);
+      const double dx = d.x < column.x0 ? column.x0 - d.x : d.x > column.x1 ? d.x - column.x1 : 0;
+      if (dx > d.r) return;
+      const double half = std::sqrt(d.r - dx) * std::sqrt(d.r + dx) * (1 + 1e-9);
+      const std::size_t last = std::isfinite(half) ? cells_.row_of(d.y + half) : cells_.rows() - 1;
+      for (std::size_t r = std::isfinite(half) ? cells_.row_of(d.y - half) : 0; r <= last; ++r) {
         if (cells_.cell_size(k, r) == 0 || cells_.cell_box(k, r).distance(d.x, d.y) > d.r) continue;
         for (const Site& p : cell(k, r).points)
-          if (!s.has.count(p.id) && in_circle(a, b, c, {p.x, p.y}) >= 0) found.push_back(p);
+          if (in_circle(a, b, c, {p.x, p.y}) >= 0 && !s.has.count(p.id)) found.push_back(p);
       }
     };
     for (std::size_t k = s.lo; k-- > 0 && cells_.left(k + 1) > d.x - d.r;) look(k);
@@ -90,25 +96,24 @@ class Checker {
   }
 
   // The points of columns not loaded strictly beyond the hull edge a -> b (to its right) that
-  // are corners of their cells' hulls: if any point is beyond, a corner is.
+  // are corners of their cells' hulls: if any point is beyond, a corner is. Columns whose hull
+  // has no corner beyond are passed over whole.
   void hull_edge(const Strip& s, const Point& a, const Point& b, std::vector<Site>& found) {
-    auto meets = [&](const Box& box) {
-      const Point corner[4] = {{box.x0, box.y0}, {box.x1, box.y0}, {box.x0, box.y1}, {box.x1, box.y1}};
-      return std::any_of(corner, corner + 4, [&](const Point& q) { return orientation(a, b, q) <= 0; });
-    };
+    auto beyond = [&](const Site& p) { return orientation(a, b, {p.x, p.y}) < 0; };
     for (std::size_t k = 0; k < cells_.columns(); ++k) {
-      if (s.loaded(k)) continue;
-      for (std::size_t r = 0; r < cells_.rows(); ++r) {
-        if (cells_.cell_size(k, r) == 0 || !meets(cells_.cell_box(k, r))) continue;
-        const Cell& here = cell(k, r);
-        for (const Site& p : here.hull)
-          if (orientation(a, b, {p.x, p.y}) < 0) with_equals(s, here, p, found);
-      }
+      if (s.loaded(k) || std::none_of(cells_.column_hull(k).begin(), cells_.column_hull(k).end(), beyond)) continue;
+      for (std::size_t r = 0; r < cells_.rows(); ++r)
+        for (const Site& p : cells_.cell_hull(k, r))
+          if (beyond(p)) with_equals(s, cell(k, r), p, found);
     }
   }
 
- private:
   // p and the points of its cell equal to it, unless the strip has them.
+  void with_equals(const Strip& s, const Site& p, std::vector<Site>& found) {
+    with_equals(s, cell(cells_.column_of(p.x), cells_.row_of(p.y)), p, found);
+  }
+
+ private:
   static void with_equals(const Strip& s, const Cell& c, const Site& p, std::vector<Site>& found) {
     const auto less = [](const Site& u, const Site& v) { return u.x < v.x || (u.x == v.x && u.y < v.y); };
     const auto [from, to] = std::equal_range(c.points.begin(), c.points.end(), p, less);
@@ -125,8 +130,7 @@ class Checker {
     std::sort(c.points.begin(), c.points.end(), [](const Site& u, const Site& v) {
       return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.id < v.id)));
     });
-    c.hull = hull_of_sorted(c.points);
-    held_ += (c.points.size() + c.hull.size()) * sizeof(Site);
+    held_ += c.points.size() * sizeof(Site);
     return c;
   }
 
@@ -145,6 +149,9 @@ bool check(Strip& s, const Triangulation& t, const CellStore& cells, Checker& ch
   }
   std::vector<Site> found;
   for (std::size_t k = 0; k < t.size(); ++k) {
+    // The points are read at random: those some triangles ahead are asked for first.
+    if (k + 8 < t.size())
+      for (int i = 0; i < 3; ++i) __builtin_prefetch(&s.points[t.triangles[3 * (k + 8) + i]]);
     const VertexId* v = &t.triangles[3 * k];
     if (s.owns(v[0]) || s.owns(v[1]) || s.owns(v[2]))
       checker.circle(s, s.points[v[0]], s.points[v[1]], s.points[v[2]], found);
@@ -160,29 +167,20 @@ bool check(Strip& s, const Triangulation& t, const CellStore& cells, Checker& ch
 }
 
 // The triangles strip s keeps (those whose smallest input index it owns), each from that
-// index, as input indices: written to its part.
+// index, as input indices: written to its part (.bin, uint32 triples, in one pass).
 std::uint64_t write_part(const std::string& path, const Strip& s, const Triangulation& t) {
-  auto kept = [&](std::size_t k, std::uint64_t out[3]) {
+  Writer w(path);
+  std::uint64_t count = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
     const VertexId* v = &t.triangles[3 * k];
+    if (!s.owns(v[0]) && !s.owns(v[1]) && !s.owns(v[2])) continue;
     int first = 0;
     for (int i = 1; i < 3; ++i)
       if (s.ids[v[i]] < s.ids[v[first]]) first = i;
-    if (!s.owns(v[first])) return false;
-    for (int j = 0; j < 3; ++j) out[j] = s.ids[v[(first + j) % 3]];
-    return true;
-  };
-  std::uint64_t count = 0, triangle[3];
-  for (std::size_t k = 0; k < t.size(); ++k) count += kept(k, triangle);
-  Writer w(path);
-  w.put_int(static_cast<std::int64_t>(count));
-  w.put(" 3 0\n");
-  std::uint64_t written = 0;
-  for (std::size_t k = 0; k < t.size(); ++k)
-    if (kept(k, triangle)) {
-      w.put_int(static_cast<std::int64_t>(written++));
-      for (int j = 0; j < 3; ++j) w.put(' '), w.put_int(static_cast<std::int64_t>(triangle[j]));
-      w.put('\n');
-    }
+    if (!s.owns(v[first])) continue;
+    for (int j = 0; j < 3; ++j) w.put_u32_le(static_cast<std::uint32_t>(s.ids[v[(first + j) % 3]]));
+    ++count;
+  }
   w.commit();
   return count;
 }
@@ -214,6 +212,18 @@ std::uint64_t run_strip(Strip& s, const CellStore& cells, Checker& checker, cons
   s.lo = s.own_lo > 0 ? s.own_lo - 1 : 0;
   s.hi = std::min(cells.columns(), s.own_hi + 1);
   checker.reset();  // the cells it read stay good for the strip's next tries
+  // The corners of the whole set's hull from the start: the strip's hull edges at its points
+  // are then mostly the whole set's, with nothing beyond them.
+  std::vector<Site> corners;
+  auto take = [&](const std::vector<Site>& hull) {
+    for (const Site& p : hull)
+      if (!s.loaded(cells.column_of(p.x))) checker.with_equals(s, p, corners);
+  };
+  take(cells.hull());
+  for (std::size_t k = 0; k < cells.columns(); ++k)
+    if (!s.loaded(k)) take(cells.cell_hull(k, 0)), take(cells.cell_hull(k, cells.rows() - 1));
+  for (const Site& p : corners)
+    if (s.has.insert(p.id).second) s.extra.push_back(p);
   for (;; ++st.retries) {
     auto t0 = Clock::now();
     s.load(cells);
@@ -240,6 +250,10 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
     throw InputError(options.output + ": the out-of-core mode writes parts and their index, OUT.parts");
   if (fs::path(options.input).extension() != ".bin")
     throw InputError(options.input + ": the out-of-core mode reads .bin point files");
+  std::error_code size_error;
+  if (const auto bytes = fs::file_size(options.input, size_error); !size_error && bytes / 16 > UINT32_MAX)
+    throw InputError(options.input +
+                     ": the out-of-core mode takes at most 2^32 - 1 points (its parts hold 32-bit indices)");
   const std::size_t limit = options.memory_limit != 0 ? options.memory_limit : available_memory() / 4;
   const unsigned threads = std::max(options.threads, 1u);
   const std::size_t per_strip = strip_points(limit, threads);
@@ -261,7 +275,7 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
   Checker checker(cells, limit / 16);
   Parts parts;
   auto name = [&](std::size_t k) {
-    return out.stem().string() + "." + std::to_string(k) + "-of-" + std::to_string(st.strips) + ".ele";
+    return out.stem().string() + "." + std::to_string(k) + "-of-" + std::to_string(st.strips) + ".bin";
   };
   for (std::size_t k = 0; k < st.strips; ++k) {
     if (options.progress) options.progress("triangulating", static_cast<double>(k) / static_cast<double>(st.strips));

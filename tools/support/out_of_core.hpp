@@ -12,8 +12,8 @@
 // one process would: the union of the kept triangles is the triangulation of the whole set,
 // the same triangles as `ridt triangulate` (ridt-mpi's argument, docs/distributed.md).
 //
-// Output: the parts format that ridt-mpi writes and `ridt check` reads: OUT.parts naming
-// OUT.k-of-S.ele, one part a strip (input indices from 0, each triangle from its smallest).
+// Output: the parts format that `ridt check` reads (ridt-mpi writes it too): OUT.parts naming
+// OUT.k-of-S.bin, one part a strip (uint32 input indices, each triangle from its smallest).
 #pragma once
 
 #include <cstdint>
