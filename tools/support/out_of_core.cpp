@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <thread>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -86,7 +87,9 @@ class Checker {
       const double half = std::sqrt(d.r - dx) * std::sqrt(d.r + dx) * (1 + 1e-9);
       const std::size_t last = std::isfinite(half) ? cells_.row_of(d.y + half) : cells_.rows() - 1;
       for (std::size_t r = std::isfinite(half) ? cells_.row_of(d.y - half) : 0; r <= last; ++r) {
-        if (cells_.cell_size(k, r) == 0 || cells_.cell_box(k, r).distance(d.x, d.y) > d.r) continue;
+        if (cells_.cell_size(k, r) == 0 || cells_.cell_box(k, r).distance(d.x, d.y) > d.r ||
+            !may_meet(d, cells_.cell_hull(k, r)))
+          continue;
         for (const Site& p : cell(k, r).points)
           if (in_circle(a, b, c, {p.x, p.y}) >= 0 && !s.has.count(p.id)) found.push_back(p);
       }
@@ -142,27 +145,39 @@ class Checker {
 // Checks strip s's triangulation t: adds to s.extra the points of other columns that a
 // triangle at an owned point or a hull edge at one finds wanting (and loads every column when
 // t has no triangle: points on a line tell nothing); true when nothing was wanting.
-bool check(Strip& s, const Triangulation& t, const CellStore& cells, Checker& checker) {
+bool check(Strip& s, const Triangulation& t, const CellStore& cells, std::vector<Checker>& checkers) {
   if (t.size() == 0 && s.own_last > s.own_first && (s.lo > 0 || s.hi < cells.columns())) {
     s.lo = 0, s.hi = cells.columns(), s.extra.clear(), s.has.clear();
     return false;
   }
-  std::vector<Site> found;
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    // The points are read at random: those some triangles ahead are asked for first.
-    if (k + 8 < t.size())
-      for (int i = 0; i < 3; ++i) __builtin_prefetch(&s.points[t.triangles[3 * (k + 8) + i]]);
-    const VertexId* v = &t.triangles[3 * k];
-    if (s.owns(v[0]) || s.owns(v[1]) || s.owns(v[2]))
-      checker.circle(s, s.points[v[0]], s.points[v[1]], s.points[v[2]], found);
+  // The triangles shared among the checkers, each on a thread with what it finds.
+  const std::size_t parts = std::clamp<std::size_t>(t.size() / 65536, 1, checkers.size());
+  std::vector<std::vector<Site>> found(parts);
+  auto look = [&](std::size_t p) {
+    const std::size_t end = t.size() * (p + 1) / parts;
+    for (std::size_t k = t.size() * p / parts; k < end; ++k) {
+      // The points are read at random: those some triangles ahead are asked for first.
+      if (k + 8 < end)
+        for (int i = 0; i < 3; ++i) __builtin_prefetch(&s.points[t.triangles[3 * (k + 8) + i]]);
+      const VertexId* v = &t.triangles[3 * k];
+      if (s.owns(v[0]) || s.owns(v[1]) || s.owns(v[2]))
+        checkers[p].circle(s, s.points[v[0]], s.points[v[1]], s.points[v[2]], found[p]);
+    }
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (std::size_t p = 1; p < parts; ++p) helpers.emplace_back(look, p);
+    look(0);
   }
+  Checker& checker = checkers[0];
   for (std::size_t i = 0; i < t.hull.size(); ++i) {
     const VertexId a = t.hull[i], b = t.hull[(i + 1) % t.hull.size()];
-    if (s.owns(a) || s.owns(b)) checker.hull_edge(s, s.points[a], s.points[b], found);
+    if (s.owns(a) || s.owns(b)) checker.hull_edge(s, s.points[a], s.points[b], found[0]);
   }
   std::size_t added = 0;
-  for (const Site& p : found)
-    if (s.has.insert(p.id).second) s.extra.push_back(p), ++added;
+  for (const std::vector<Site>& some : found)
+    for (const Site& p : some)
+      if (s.has.insert(p.id).second) s.extra.push_back(p), ++added;
   return added == 0;
 }
 
@@ -207,17 +222,17 @@ std::size_t strip_points(std::size_t limit, unsigned threads) {
 
 // Triangulates strip s (owned columns [own_lo, own_hi)) until it knows its triangles, and
 // writes them to `part`.
-std::uint64_t run_strip(Strip& s, const CellStore& cells, Checker& checker, const Options& o, const std::string& part,
-                        OutOfCoreStats& st) {
+std::uint64_t run_strip(Strip& s, const CellStore& cells, std::vector<Checker>& checkers, const Options& o,
+                        const std::string& part, OutOfCoreStats& st) {
   s.lo = s.own_lo > 0 ? s.own_lo - 1 : 0;
   s.hi = std::min(cells.columns(), s.own_hi + 1);
-  checker.reset();  // the cells it read stay good for the strip's next tries
+  for (Checker& c : checkers) c.reset();  // the cells they read stay good for the strip's next tries
   // The corners of the whole set's hull from the start: the strip's hull edges at its points
   // are then mostly the whole set's, with nothing beyond them.
   std::vector<Site> corners;
   auto take = [&](const std::vector<Site>& hull) {
     for (const Site& p : hull)
-      if (!s.loaded(cells.column_of(p.x))) checker.with_equals(s, p, corners);
+      if (!s.loaded(cells.column_of(p.x))) checkers[0].with_equals(s, p, corners);
   };
   take(cells.hull());
   for (std::size_t k = 0; k < cells.columns(); ++k)
@@ -231,7 +246,7 @@ std::uint64_t run_strip(Strip& s, const CellStore& cells, Checker& checker, cons
     const Triangulation t = triangulate(std::span<const Point>(s.points), o);
     st.time_triangulate_s += since(t0);
     t0 = Clock::now();
-    const bool known = check(s, t, cells, checker);
+    const bool known = check(s, t, cells, checkers);
     st.time_check_s += since(t0);
     if (known) {
       t0 = Clock::now();
@@ -272,7 +287,7 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
   Options o;
   o.method = threads > 1 ? Method::Partition : Method::Serial;
   o.threads = threads;
-  Checker checker(cells, limit / 16);
+  std::vector<Checker> checkers(threads, Checker(cells, limit / 16 / threads));
   Parts parts;
   auto name = [&](std::size_t k) {
     return out.stem().string() + "." + std::to_string(k) + "-of-" + std::to_string(st.strips) + ".bin";
@@ -282,7 +297,7 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
     Strip s;
     s.own_lo = k * kOwnedColumns, s.own_hi = std::min(cells.columns(), (k + 1) * kOwnedColumns);
     const std::string part = (out.parent_path() / name(k)).string();
-    st.triangles += run_strip(s, cells, checker, o, part, st);
+    st.triangles += run_strip(s, cells, checkers, o, part, st);
     parts.written.push_back(part);
   }
   Writer index(options.output);
