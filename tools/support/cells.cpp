@@ -62,6 +62,17 @@ std::vector<double> quantiles(std::vector<double>& values, std::size_t count) {
 
 }  // namespace
 
+Cuts::Cuts(std::vector<double> cuts, double lo, double hi) : cut_(std::move(cuts)), lo_(lo / 2) {
+  const std::size_t bins = 8 * cut_.size() + 1;
+  scale_ = hi / 2 > lo_ ? static_cast<double>(bins) / (hi / 2 - lo_) : 0;
+  first_.resize(bins);
+  for (std::size_t b = 0, i = 0; b < bins; ++b) {
+    const double start = b == 0 ? -INFINITY : 2 * (lo_ + static_cast<double>(b) / scale_);
+    while (i < cut_.size() && cut_[i] <= start) ++i;
+    first_[b] = static_cast<std::uint32_t>(i);
+  }
+}
+
 CellStore::CellStore(const std::string& input, const std::string& scratch, std::uint64_t column_points,
                      std::size_t buffer_bytes, const std::function<void(double)>& progress)
     : scratch_(scratch) {
@@ -108,16 +119,12 @@ void CellStore::cut(const std::string& input, std::uint64_t column_points) {
       std::clamp<std::uint64_t>((points_ + column_points - 1) / std::max<std::uint64_t>(column_points, 1), 1, 4096));
   const std::uint64_t per_column = points_ / columns;
   const auto rows = static_cast<std::size_t>(std::clamp<std::uint64_t>(per_column / 64, 1, 65536 / columns));
-  xcut_ = quantiles(xs, columns);
-  ycut_ = quantiles(ys, rows);
+  xcut_ = Cuts(quantiles(xs, columns), extent_.x0, extent_.x1);
+  ycut_ = Cuts(quantiles(ys, rows), extent_.y0, extent_.y1);
 }
 
-std::size_t CellStore::column_of(double x) const {
-  return static_cast<std::size_t>(std::upper_bound(xcut_.begin(), xcut_.end(), x) - xcut_.begin());
-}
-std::size_t CellStore::row_of(double y) const {
-  return static_cast<std::size_t>(std::upper_bound(ycut_.begin(), ycut_.end(), y) - ycut_.begin());
-}
+std::size_t CellStore::column_of(double x) const { return xcut_.stretch(x); }
+std::size_t CellStore::row_of(double y) const { return ycut_.stretch(y); }
 
 double CellStore::left(std::size_t c) const { return c == 0 ? -INFINITY : c > xcut_.size() ? INFINITY : xcut_[c - 1]; }
 

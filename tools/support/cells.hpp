@@ -12,6 +12,34 @@
 
 namespace ridt::io {
 
+// Cuts of a line, and which stretch between them a value falls in: the number of cuts at or
+// below it, found through a table of equal bins (each the count of cuts at its start) and a
+// search among the bin's own cuts, most often none: a binary search over all of them missed its
+// branches at every point of the input.
+class Cuts {
+ public:
+  Cuts() = default;
+  Cuts(std::vector<double> cuts, double lo, double hi);
+  std::size_t size() const { return cut_.size(); }
+  double operator[](std::size_t i) const { return cut_[i]; }
+  std::size_t stretch(double v) const {
+    const double f = (v / 2 - lo_) * scale_;
+    const std::size_t b = !(f > 0)                    ? 0
+        : f >= static_cast<double>(first_.size() - 1) ? first_.size() - 1
+                                                      : static_cast<std::size_t>(f);
+    std::size_t from = first_[b], to = b + 1 < first_.size() ? first_[b + 1] : cut_.size();
+    // Rounding may put v a bin off: then the search takes every cut.
+    if (from > 0 && cut_[from - 1] > v) from = 0;
+    if (to < cut_.size() && cut_[to] <= v) to = cut_.size();
+    return static_cast<std::size_t>(std::upper_bound(cut_.begin() + from, cut_.begin() + to, v) - cut_.begin());
+  }
+
+ private:
+  std::vector<double> cut_;
+  double lo_ = 0, scale_ = 0;  // halved: the extent may span more than the largest double
+  std::vector<std::uint32_t> first_;
+};
+
 class CellStore {
  public:
   /// Reads `input` (a .bin file, checked: whole pairs, finite coordinates) twice and writes its
@@ -63,7 +91,7 @@ class CellStore {
 
   std::uint64_t points_ = 0;
   Box extent_{};
-  std::vector<double> xcut_, ycut_;  // interior cuts: column c is [xcut[c - 1], xcut[c])
+  Cuts xcut_, ycut_;  // interior cuts: column c is [xcut[c - 1], xcut[c])
   std::vector<std::uint64_t> start_;  // start_[c * rows + r]: the first record of cell (c, r)
   std::vector<std::vector<Site>> hull_, column_hull_;
   std::vector<Site> hull_all_;
