@@ -293,6 +293,17 @@ def terrain_section(results):
             "\n\nHow the DEM is made: [terrain.md](terrain.md). Output: [results/terrain.md](results/terrain.md).\n")
 
 
+def out_of_core_section(results):
+    """The table bench/out_of_core_table.py wrote, under this page's own heading."""
+    path = os.path.join(results, "out_of_core.md")
+    if not os.path.exists(path):
+        return ""
+    lines = open(path).read().splitlines()
+    body = "\n".join(line for line in lines[1:] if not line.startswith("Written by")).strip()
+    return ("## Out of core\n\n" + body +
+            "\n\nHow: [out-of-core.md](out-of-core.md). Output: [results/out_of_core.md](results/out_of_core.md).\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--results", default="docs/results")
@@ -313,7 +324,7 @@ def main():
         "taken in the same run, not seconds across runs.\n")
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
              threads_section(args.results), table3_section(args.results), python_section(args.results),
-             interpolate_section(args.results), terrain_section(args.results)]
+             interpolate_section(args.results), terrain_section(args.results), out_of_core_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"
                  + "\n".join(cmd for _, cmd in commands) + "\n```\n")
     with open(args.out, "w") as f:

@@ -7,7 +7,8 @@
 # --quick: sizes up to 10^5 and fewer repetitions (a few minutes), to try the pipeline; without
 # it, the paper's sizes up to 10^6, and 10^6 and 10^7 in the whole-process table (some 45
 # minutes on 2 cores); --large: also 10^7 points in the Python table (another hour: scipy takes
-# minutes a run there) and 10^8 LiDAR-like points to a DEM. Run it on a quiet machine: every figure is a median of interleaved runs, and
+# minutes a run there), 10^8 LiDAR-like points to a DEM and 10^8 and 5 x 10^8 points out of
+# core (some 26 GB of disk). Run it on a quiet machine: every figure is a median of interleaved runs, and
 # anything else running skews them. Installs what it needs first (scripts/deps.sh bench, as
 # root): the test dependencies, Qhull, Triangle (from Debian's non-free component, which it
 # adds where apt lacks it), node and delaunator for the peers table.
@@ -47,6 +48,7 @@ if [ "$mode" = quick ]; then
   python_args=(--sizes 10000,100000 --big "" --reps 2)
   interpolate_args=(--n 100000 --grid 500 --reps 2)
   terrain_args=(--sizes 100000 --reps 1 --gdal-nearest-max 100000)
+  ooc_args=(--sizes 1000000 --limits 100M)
 else
   serial_args=(--reps 5)
   threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
@@ -56,7 +58,9 @@ else
   python_args=(--sizes 10000,100000,1000000 --big "" --reps 3)
   interpolate_args=(--n 1000000 --grid 2000 --reps 3)
   terrain_args=(--sizes 1000000,10000000 --reps 3)
+  ooc_args=(--sizes 10000000 --limits 500M)
   if [ "$mode" = large ]; then
+    ooc_args=(--sizes 10000000,100000000,500000000 --limits 500M,2G,4G)
     python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
     terrain_args=(--sizes 1000000,10000000 --reps 3 --huge 100000000 --huge-threads 2)
   fi
@@ -85,6 +89,10 @@ run interpolate env PYTHONPATH="$build/python" "$py" bench/interpolate_table.py 
 run terrain "$py" bench/terrain_table.py --build "$build" "${terrain_args[@]}" --dir "$tmp/terrain" \
   --out "$tmp/terrain.md"
 rm -rf "$tmp/terrain"
+mkdir -p "$tmp/ooc"
+run out_of_core "$py" bench/out_of_core_table.py --build "$build" "${ooc_args[@]}" --threads 2 --dir "$tmp/ooc" \
+  --out "$tmp/out_of_core.md"
+rm -rf "$tmp/ooc"
 run plots "$py" bench/plot_threads.py "$tmp/threads.csv" "$tmp"
 run plots_root "$py" bench/plot_threads.py "$tmp/table3.csv" "$tmp" root_
 
