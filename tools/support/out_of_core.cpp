@@ -143,11 +143,16 @@ class Checker {
 };
 
 // Checks strip s's triangulation t: adds to s.extra the points of other columns that a
-// triangle at an owned point or a hull edge at one finds wanting (and loads every column when
-// t has no triangle: points on a line tell nothing); true when nothing was wanting.
+// triangle at an owned point or a hull edge at one finds wanting (and more columns when t has
+// no triangle); true when nothing was wanting.
 bool check(Strip& s, const Triangulation& t, const CellStore& cells, std::vector<Checker>& checkers) {
   if (t.size() == 0 && s.own_last > s.own_first && (s.lo > 0 || s.hi < cells.columns())) {
-    s.lo = 0, s.hi = cells.columns(), s.extra.clear(), s.has.clear();
+    // Points on a line tell nothing: as many columns again on either side, until a triangle
+    // appears (the whole set is not on one line: triangulate_out_of_core sees to that).
+    const std::size_t width = s.hi - s.lo;
+    s.lo = s.lo > width ? s.lo - width : 0;
+    s.hi = std::min(cells.columns(), s.hi + width);
+    std::erase_if(s.extra, [&](const Site& p) { return s.loaded(cells.column_of(p.x)) && s.has.erase(p.id) > 0; });
     return false;
   }
   // The triangles shared among the checkers, each on a thread with what it finds.
@@ -297,7 +302,8 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
     Strip s;
     s.own_lo = k * kOwnedColumns, s.own_hi = std::min(cells.columns(), (k + 1) * kOwnedColumns);
     const std::string part = (out.parent_path() / name(k)).string();
-    st.triangles += run_strip(s, cells, checkers, o, part, st);
+    // Points all on one line (their hull has no corner but the two ends) have no triangle.
+    st.triangles += cells.hull().size() < 3 ? write_part(part, s, {}) : run_strip(s, cells, checkers, o, part, st);
     parts.written.push_back(part);
   }
   Writer index(options.output);
