@@ -34,6 +34,7 @@ struct Plan {
   bool from_root = false;  // Locate::Root: the DAG, each descent from its root
   bool brio = false;
   bool symbolic = true;
+  bool canonical = false;  // Options::canonical_order
 };
 
 // Method::Auto: serial on one thread (and for the profile, which times the serial method); on
@@ -97,6 +98,7 @@ Plan plan(std::size_t n, const Options& options) {
   // Three bounding vertices follow the points, and ids must stay below kIdMask.
   if (n > 0x7ffffff0u) throw InputError("too many points (at most 2^31 - 16)");
   p.symbolic = options.experiment.bounding == Bounding::Symbolic;
+  p.canonical = options.canonical_order;
   p.brio = options.order == Order::Brio;
   const unsigned threads = detail::thread_count(options.threads);
   p.method = &detail::method_entry(choose(options.method, threads, options));
@@ -113,15 +115,18 @@ Plan plan(std::size_t n, const Options& options) {
 
 // Bytes a point at the call's peak, the result included, as measured at 10^6 and 10^7 uniform
 // points (the process's peak resident memory less its input, docs/design.md#memory): the
-// walking mesh and its finish, and the history DAG (its records are never freed during the
-// run), with 10 % over the largest seen. Each thread adds its own buffers.
+// walking mesh and its finish, the canonical order after it (the result's arrays, the
+// triangles in buckets, each one's old and new number, and the blocks the memory cache keeps
+// for the next call), and the history DAG (its records are never freed during the run), with
+// 10 % over the largest seen. Each thread adds its own buffers.
 constexpr double kWalkBytesPerPoint = 94;  // 85 measured (serial walk and partition alike)
+constexpr double kWalkCanonicalBytesPerPoint = 143;  // 130 measured
 constexpr double kDagBytesPerPoint = 307;  // 279 measured (every DAG method alike)
 constexpr std::size_t kBytesPerThread = std::size_t{8} << 20;
 constexpr std::size_t kFixedBytes = std::size_t{32} << 20;
 
 std::size_t estimate(const Plan& p, std::size_t n) {
-  const double per_point = p.walk ? kWalkBytesPerPoint : kDagBytesPerPoint;
+  const double per_point = !p.walk ? kDagBytesPerPoint : p.canonical ? kWalkCanonicalBytesPerPoint : kWalkBytesPerPoint;
   return static_cast<std::size_t>(per_point * static_cast<double>(n)) + kFixedBytes + p.threads * kBytesPerThread;
 }
 
