@@ -21,19 +21,7 @@ import sys
 import time
 
 from process_table import compiler, machine
-
-
-def run(cmd):
-    """Wall seconds, peak resident bytes and stdout of one process (exits on failure)."""
-    t0 = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    out = proc.stdout.read()
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - t0
-    err = proc.stderr.read().decode(errors="replace")
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit(f"{' '.join(cmd)} failed: {err.strip()}")
-    return wall, usage.ru_maxrss * 1024, out.decode()
+from scaling_table import run_once
 
 
 def main():
@@ -59,14 +47,14 @@ def main():
         subprocess.run([ridt, "generate", "--dist", "uniform", "-n", str(n), "-o", points], check=True)
         row = {"n": n, "limit": limit}
         if n <= a.in_memory_max:
-            row["in_memory_s"], row["in_memory_peak"], _ = run(
+            row["in_memory_s"], row["in_memory_peak"], _ = run_once(
                 [ridt, "triangulate", points, "--threads", str(a.threads)])
-        wall, peak, out = run([ridt, "triangulate", points, "-o", parts, "--out-of-core", "--memory-limit", limit,
-                               "--threads", str(a.threads), "--stats"])
-        row.update(wall_s=wall, peak=peak, stats=json.loads(out))
+        wall, peak, stats = run_once([ridt, "triangulate", points, "-o", parts, "--out-of-core", "--memory-limit",
+                                      limit, "--threads", str(a.threads), "--stats"])
+        row.update(wall_s=wall, peak=peak, stats=stats)
         if n <= a.check_max:
-            _, _, out = run([ridt, "check", points, parts])
-            row["check"] = out.strip().split(":")[0]
+            check = subprocess.run([ridt, "check", points, parts], capture_output=True, text=True)
+            row["check"] = check.stdout.strip().split(":")[0] or check.stderr.strip()
         with open(parts) as index:
             names = index.read().split()[3:]
         for name in names:

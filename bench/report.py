@@ -282,26 +282,25 @@ def interpolate_section(results):
                 ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")
 
 
-def terrain_section(results):
-    """The table bench/terrain_table.py wrote, under this page's own heading."""
-    path = os.path.join(results, "terrain.md")
+def included(results, name, heading, footer, skip):
+    """The page a benchmark wrote (results/NAME) under this page's HEADING, without its title
+    and the lines that start with SKIP (its machine: the head of this page has it)."""
+    path = os.path.join(results, name)
     if not os.path.exists(path):
         return ""
     lines = open(path).read().splitlines()
-    body = "\n".join(line for line in lines[1:] if not line.startswith("Machine:")).strip()
-    return ("## A DEM from LiDAR-like points against gdal_grid\n\n" + body +
-            "\n\nHow the DEM is made: [terrain.md](terrain.md). Output: [results/terrain.md](results/terrain.md).\n")
+    body = "\n".join(line for line in lines[1:] if not line.startswith(skip)).strip()
+    return f"## {heading}\n\n{body}\n\n{footer} Output: [results/{name}](results/{name}).\n"
+
+
+def terrain_section(results):
+    return included(results, "terrain.md", "A DEM from LiDAR-like points against gdal_grid",
+                    "How the DEM is made: [terrain.md](terrain.md).", "Machine:")
 
 
 def out_of_core_section(results):
-    """The table bench/out_of_core_table.py wrote, under this page's own heading."""
-    path = os.path.join(results, "out_of_core.md")
-    if not os.path.exists(path):
-        return ""
-    lines = open(path).read().splitlines()
-    body = "\n".join(line for line in lines[1:] if not line.startswith("Written by")).strip()
-    return ("## Out of core\n\n" + body +
-            "\n\nHow: [out-of-core.md](out-of-core.md). Output: [results/out_of_core.md](results/out_of_core.md).\n")
+    return included(results, "out_of_core.md", "Out of core", "How: [out-of-core.md](out-of-core.md).",
+                    "Written by")
 
 
 def main():

@@ -44,7 +44,9 @@ TEST(Circles, TheWidenedDiscHoldsEveryPointTheExactTestFindsInside) {
     // Widened by its error (some 56 eps / |D| of the radius, D the scaled triangle's doubled
     // area), not by a fixed share of the radius: a triangle flat to 1e-9 of its size grows by
     // well under a thousandth.
-    if (flat >= 1e-9) EXPECT_LT(d.r - radius, 1e-3 * radius + 1e-12 * scale) << trial;
+    if (flat >= 1e-9) {
+      EXPECT_LT(d.r - radius, 1e-3 * radius + 1e-12 * scale) << trial;
+    }
   }
   EXPECT_GT(near, 100000);
 }

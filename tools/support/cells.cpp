@@ -172,9 +172,6 @@ void CellStore::write(const std::string& input, std::size_t buffer_bytes, const 
 
 // Each cell's hull, a column at a time, and each column's from its cells' hulls.
 void CellStore::hulls() {
-  const auto by_place = [](const Site& u, const Site& v) {
-    return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.id < v.id)));
-  };
   hull_.assign(columns() * rows(), {});
   column_hull_.assign(columns(), {});
   std::vector<Site> column, corners;

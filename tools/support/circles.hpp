@@ -98,6 +98,11 @@ inline bool may_meet(const Disc& d, const std::vector<Site>& hull) {
   return inside || nearest <= d.r * (1 + 1e-9);
 }
 
+// The order hull_of_sorted takes: by x, then y, then input index (equal points by index).
+inline bool by_place(const Site& u, const Site& v) {
+  return u.x != v.x ? u.x < v.x : u.y != v.y ? u.y < v.y : u.id < v.id;
+}
+
 // The convex hull of points sorted by x, then y (Andrew's chain, exact orientation tests),
 // counter-clockwise, collinear points left out.
 inline std::vector<Site> hull_of_sorted(const std::vector<Site>& s) {

@@ -60,11 +60,6 @@ struct Strip {
   }
 };
 
-// A cell's points sorted by x, then y, then input index.
-struct Cell {
-  std::vector<Site> points;
-};
-
 // The exact checks of a strip's triangles against the columns it did not load, reading their
 // cells as needed (kept until the strip is done, up to a budget). What a check finds wanting
 // goes to `found`: single points, each with every point equal to it.
@@ -90,7 +85,7 @@ class Checker {
         if (cells_.cell_size(k, r) == 0 || cells_.cell_box(k, r).distance(d.x, d.y) > d.r ||
             !may_meet(d, cells_.cell_hull(k, r)))
           continue;
-        for (const Site& p : cell(k, r).points)
+        for (const Site& p : cell(k, r))
           if (in_circle(a, b, c, {p.x, p.y}) >= 0 && !s.has.count(p.id)) found.push_back(p);
       }
     };
@@ -117,29 +112,29 @@ class Checker {
   }
 
  private:
-  static void with_equals(const Strip& s, const Cell& c, const Site& p, std::vector<Site>& found) {
-    const auto less = [](const Site& u, const Site& v) { return u.x < v.x || (u.x == v.x && u.y < v.y); };
-    const auto [from, to] = std::equal_range(c.points.begin(), c.points.end(), p, less);
+  // cell: sorted by_place.
+  static void with_equals(const Strip& s, const std::vector<Site>& cell, const Site& p, std::vector<Site>& found) {
+    const auto less = [](const Site& u, const Site& v) { return u.x != v.x ? u.x < v.x : u.y < v.y; };
+    const auto [from, to] = std::equal_range(cell.begin(), cell.end(), p, less);
     for (auto it = from; it != to; ++it)
       if (!s.has.count(it->id)) found.push_back(*it);
   }
 
-  const Cell& cell(std::size_t k, std::size_t r) {
+  // Cell (k, r)'s points sorted by_place, read once while the budget lasts.
+  const std::vector<Site>& cell(std::size_t k, std::size_t r) {
     const std::size_t key = k * cells_.rows() + r;
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
     if (held_ > budget_) reset();
-    Cell& c = cache_[key];
-    cells_.read_cell(k, r, c.points);
-    std::sort(c.points.begin(), c.points.end(), [](const Site& u, const Site& v) {
-      return u.x < v.x || (u.x == v.x && (u.y < v.y || (u.y == v.y && u.id < v.id)));
-    });
-    held_ += c.points.size() * sizeof(Site);
-    return c;
+    std::vector<Site>& points = cache_[key];
+    cells_.read_cell(k, r, points);
+    std::sort(points.begin(), points.end(), by_place);
+    held_ += points.size() * sizeof(Site);
+    return points;
   }
 
   const CellStore& cells_;
   std::size_t budget_, held_ = 0;
-  std::unordered_map<std::size_t, Cell> cache_;
+  std::unordered_map<std::size_t, std::vector<Site>> cache_;
 };
 
 // Checks strip s's triangulation t: adds to s.extra the points of other columns that a
