@@ -370,4 +370,23 @@ std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
   return order;
 }
 
+std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads) {
+  const Block<std::uint64_t> a = allocate_huge<std::uint64_t>(n), b = allocate_huge<std::uint64_t>(n);
+  parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) a[i] = std::uint64_t{key[i]} << 32 | i;
+  });
+  sort_by_key(a.get(), b.get(), n, threads);
+  std::vector<std::uint32_t> ids(n);
+  parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) ids[i] = static_cast<std::uint32_t>(b[i]);
+  });
+  return ids;
+}
+
+std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads) {
+  std::vector<std::uint32_t> key(n);
+  hilbert_keys(points, n, threads, key.data());
+  return sorted_by_key(key.data(), n, threads);
+}
+
 }  // namespace ridt::detail

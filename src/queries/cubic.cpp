@@ -18,11 +18,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "queries/field.hpp"
+#include "runtime/memory.hpp"
 
 namespace ridt {
 namespace {
@@ -84,7 +84,8 @@ class CloughTocher {
     // The direction across each side (side i is across from corner i) as barycentric weights
     // of its two ends and the centroid, the same for every component.
     Across across[3];
-    for (int i = 0; i < 3; ++i) across[i] = direction(tri, i, p, c);
+    const double third = detail::doubled_area(p[0], p[1], p[2]) / 3;
+    for (int i = 0; i < 3; ++i) across[i] = direction(tri, i, p, c, third);
     const double* value[3] = {f_.value(f_.vertex(tri, 0)), f_.value(f_.vertex(tri, 1)), f_.value(f_.vertex(tri, 2))};
     for (std::size_t k = 0; k < k_; ++k) {
       Net& n = net_[k];
@@ -114,9 +115,9 @@ class CloughTocher {
 
   // Side i runs from A = p[next3(i)] to B = p[prev3(i)]; the direction d towards the
   // neighbour's centroid (on the hull, from corner i to the side's midpoint), written
-  // d = b (B - A) + c (C - A). The determinant is exact (a third of the triangle's doubled
-  // area), so that a sliver still gets finite weights.
-  Across direction(std::size_t tri, int i, const Point* p, const Point& c) const {
+  // d = b (B - A) + c (C - A). The determinant `det` is a third of the triangle's doubled area,
+  // within 2^-50 of the exact one, so that a sliver still gets finite weights.
+  Across direction(std::size_t tri, int i, const Point* p, const Point& c, double det) const {
     const Point& a = p[next3(i)];
     const Point& e = p[prev3(i)];
     Point d;
@@ -129,7 +130,6 @@ class CloughTocher {
       d = {(a.x - p[i].x) + (e.x - p[i].x), (a.y - p[i].y) + (e.y - p[i].y)};
     }
     const double e1x = e.x - a.x, e1y = e.y - a.y, e2x = c.x - a.x, e2y = c.y - a.y;
-    const double det = detail::doubled_area(a, e, p[i]) / 3;
     const double wb = (d.x * e2y - d.y * e2x) / det, wc = (e1x * d.y - e1y * d.x) / det;
     return {-wb - wc, wb, wc};
   }
@@ -140,204 +140,23 @@ class CloughTocher {
   std::size_t tri_ = ~std::size_t{0};  // the triangle net_ is for
 };
 
-// A vertex's value and gradient during the sweeps, side by side for the neighbours' reads.
-struct Node {
-  double f, gx, gy;
-};
-
-// The minimum-norm network's system, its vertices numbered in the order the triangles first
-// meet them (near in the plane, near in memory, where the input's order is often random):
-// each vertex's neighbours on the Delaunay graph, once each, with 1 / L^3 of the edge, and the
-// inverse of the vertex's matrix Q = sum 4 e e^T / L^3, which depends on the geometry alone.
-struct Network {
-  std::vector<VertexId> order;  // new number -> input index
-  std::vector<Point> at;  // the points in the new order
-  std::vector<std::uint32_t> offset;
-  std::vector<std::uint32_t> to;
-  std::vector<double> inv_l3;
-  std::vector<std::array<double, 3>> q_inverse;  // [[a b] [b c]]; NaN where Q is singular
-  // The vertices by colour, no two neighbours of one colour, so that a colour's vertices can
-  // be updated at once on threads: colour c's are by_colour[first[c] .. first[c + 1]).
-  std::vector<std::uint32_t> by_colour, first;
-
-  Network(std::span<const Point> points, const Triangulation& t, unsigned threads) {
-    std::vector<std::uint32_t> id(points.size(), kNone);
-    std::vector<VertexId> tri(t.triangles.size());
-    for (std::size_t k = 0; k < tri.size(); ++k) {
-      std::uint32_t& v = id[t.triangles[k]];
-      if (v == kNone) v = static_cast<std::uint32_t>(order.size()), order.push_back(t.triangles[k]);
-      tri[k] = v;
-    }
-    const std::size_t count = order.size();
-    at.resize(count);
-    for (std::size_t v = 0; v < count; ++v) at[v] = points[order[v]];
-    // The next corner of every triangle around a vertex, and across each hull side the one
-    // that misses it.
-    auto each = [&](auto&& visit) {
-      for (std::size_t k = 0; k < tri.size(); k += 3)
-        for (int i = 0; i < 3; ++i) {
-          visit(tri[k + i], tri[k + next3(i)]);
-          if (t.neighbors[k + i] < 0) visit(tri[k + prev3(i)], tri[k + next3(i)]);
-        }
-    };
-    offset.assign(count + 1, 0);
-    each([&](std::uint32_t v, std::uint32_t) { ++offset[v + 1]; });
-    for (std::size_t v = 0; v < count; ++v) offset[v + 1] += offset[v];
-    to.resize(offset[count]);
-    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
-    each([&](std::uint32_t v, std::uint32_t w) { to[fill[v]++] = w; });
-    inv_l3.resize(to.size());
-    q_inverse.resize(count);
-    detail::parallel_for(count, threads, 1 << 14, [&](std::size_t first_v, std::size_t last_v) {
-      for (std::size_t v = first_v; v < last_v; ++v) {
-        double q00 = 0, q01 = 0, q11 = 0;
-        for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
-          const double ex = at[to[j]].x - at[v].x, ey = at[to[j]].y - at[v].y, l2 = ex * ex + ey * ey;
-          inv_l3[j] = 1 / (l2 * std::sqrt(l2));
-          q00 += 4 * ex * ex * inv_l3[j], q01 += 4 * ex * ey * inv_l3[j], q11 += 4 * ey * ey * inv_l3[j];
-        }
-        const double det = q00 * q11 - q01 * q01;
-        q_inverse[v] = det != 0 && std::isfinite(det) ? std::array<double, 3>{q11 / det, -q01 / det, q00 / det}
-                                                      : std::array<double, 3>{NAN, NAN, NAN};
-      }
-    });
-    colour();
-  }
-
-  // Greedy colouring in vertex order: each vertex the least colour none of its coloured
-  // neighbours has (a planar graph's take a handful).
-  void colour() {
-    const std::size_t count = at.size();
-    std::vector<std::uint8_t> c(count, 0xff);
-    std::size_t colours = 0;
-    for (std::size_t v = 0; v < count; ++v) {
-      std::uint64_t taken = 0;
-      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j)
-        if (c[to[j]] < 64) taken |= std::uint64_t{1} << c[to[j]];
-      int least = 0;
-      while (taken >> least & 1) ++least;
-      c[v] = static_cast<std::uint8_t>(least);
-      colours = std::max<std::size_t>(colours, least + 1);
-    }
-    first.assign(colours + 1, 0);
-    for (std::size_t v = 0; v < count; ++v) ++first[c[v] + 1];
-    for (std::size_t k = 0; k < colours; ++k) first[k + 1] += first[k];
-    by_colour.resize(count);
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t v = 0; v < count; ++v) by_colour[fill[c[v]]++] = static_cast<std::uint32_t>(v);
-  }
-
-  // One Gauss-Seidel sweep, a colour at a time, each colour's vertices on threads: each
-  // vertex's gradient set to the one that minimises its edges' curvature given its
-  // neighbours' (Q g = sum (6 (f_w - f_v) - 2 e.g_w) e / L^3). The same numbers for every
-  // thread count. Returns the largest change, relative to the gradient where that exceeds 1.
-  double sweep(std::vector<Node>& node, unsigned threads) const {
-    double worst = 0;
-    std::mutex merge;
-    for (std::size_t c = 0; c + 1 < first.size(); ++c)
-      detail::parallel_for(first[c + 1] - first[c], threads, 1 << 13, [&](std::size_t from, std::size_t until) {
-        double most = 0;
-        for (std::size_t k = first[c] + from; k < first[c] + until; ++k)
-          most = std::max(most, update(by_colour[k], node));
-        const std::lock_guard<std::mutex> lock(merge);
-        worst = std::max(worst, most);
-      });
-    return worst;
-  }
-
-  // The start of the sweeps: at each vertex the plane that fits its neighbours' values best,
-  // each edge weighted 1 / L^3 as in Q (exact for linear data, which then need no sweep).
-  // The sweeps reach the same minimum from it as from zero (scipy's start), in fewer sweeps.
-  void start(std::vector<Node>& node, unsigned threads) const {
-    detail::parallel_for(node.size(), threads, 1 << 14, [&](std::size_t first_v, std::size_t last_v) {
-      for (std::size_t v = first_v; v < last_v; ++v) {
-        const std::array<double, 3>& q = q_inverse[v];
-        if (std::isnan(q[0])) continue;
-        double s0 = 0, s1 = 0;
-        for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
-          const double ex = at[to[j]].x - at[v].x, ey = at[to[j]].y - at[v].y;
-          const double r = 4 * (node[to[j]].f - node[v].f) * inv_l3[j];
-          s0 += r * ex, s1 += r * ey;
-        }
-        node[v].gx = q[0] * s0 + q[1] * s1, node[v].gy = q[1] * s0 + q[2] * s1;
-      }
-    });
-  }
-
-  double update(std::uint32_t v, std::vector<Node>& node) const {
-    const std::array<double, 3>& q = q_inverse[v];
-    if (std::isnan(q[0])) return 0;
-    const Point p = at[v];
-    const double f = node[v].f;
-    double s0 = 0, s1 = 0;
-    for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
-      const Node& w = node[to[j]];
-      const double ex = at[to[j]].x - p.x, ey = at[to[j]].y - p.y;
-      const double r = (6 * (w.f - f) - 2 * (ex * w.gx + ey * w.gy)) * inv_l3[j];
-      s0 += r * ex, s1 += r * ey;
-    }
-    const double gx = q[0] * s0 + q[1] * s1, gy = q[1] * s0 + q[2] * s1;
-    Node& u = node[v];
-    const double change =
-        std::max(std::fabs(u.gx - gx), std::fabs(u.gy - gy)) / std::max(1.0, std::max(std::fabs(gx), std::fabs(gy)));
-    u.gx = gx, u.gy = gy;
-    return change;
-  }
-
-  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
-};
-
-}  // namespace
-
-int estimate_gradients(std::span<const Point> points, const Triangulation& t, Values values,
-                       std::span<double> gradients, double tol, int maxiter, unsigned threads) {
-  detail::check_arrays("estimate_gradients", points.size(), t.triangles, t.neighbors);
-  detail::check_values("estimate_gradients", points.size(), values);
-  const std::size_t n = points.size(), m = values.components;
-  if (gradients.size() != 2 * n * m)
-    throw InputError("estimate_gradients: room for " + std::to_string(gradients.size()) + " numbers, not " +
-                     std::to_string(2 * n * m));
-  if (!(tol > 0)) throw InputError("estimate_gradients: tol must be positive");
-  if (maxiter < 1) throw InputError("estimate_gradients: maxiter must be at least 1");
-  std::fill(gradients.begin(), gradients.end(), 0.0);
-  const Network net(points, t, threads);
-  const std::size_t count = net.order.size();
-  std::vector<Node> node(count);
-  int most = 0;
-  bool converged = true;
-  for (std::size_t k = 0; k < m; ++k) {
-    for (std::size_t v = 0; v < count; ++v) node[v] = {values.data[net.order[v] * m + k], 0, 0};
-    net.start(node, threads);
-    int done = 0;
-    for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep)
-      if (net.sweep(node, threads) < tol) done = sweep;
-    converged = converged && done > 0;
-    most = std::max(most, done);
-    for (std::size_t v = 0; v < count; ++v) {
-      gradients[2 * (net.order[v] * m + k)] = node[v].gx;
-      gradients[2 * (net.order[v] * m + k) + 1] = node[v].gy;
-    }
-  }
-  for (const Duplicate& d : t.duplicates) std::copy_n(&gradients[2 * d.kept * m], 2 * m, &gradients[2 * d.dropped * m]);
-  return converged ? most : 0;
-}
-
-namespace {
-
 // The values and gradients side by side, a point's k values and then its 2k gradient numbers,
 // as the field carries them through the renumbering.
 std::vector<double> values_and_gradients(const char* who, std::size_t n, Values values,
-                                         std::span<const double> gradients) {
+                                         std::span<const double> gradients, unsigned threads) {
   detail::check_values(who, n, values);
   const std::size_t m = values.components;
   if (gradients.size() != 2 * n * m)
     throw InputError(std::string(who) + ": " + std::to_string(gradients.size()) + " gradient numbers for " +
                      std::to_string(n) + " points of " + std::to_string(m) + " components (2 each)");
-  std::vector<double> both(3 * n * m);
-  for (std::size_t v = 0; v < n; ++v) {
-    std::copy_n(&values.data[v * m], m, &both[3 * v * m]);
-    std::copy_n(&gradients[2 * v * m], 2 * m, &both[3 * v * m + m]);
-  }
+  std::vector<double> both;
+  detail::resize_present(both, 3 * n * m, threads);
+  detail::parallel_for(n, threads, detail::kGrain, [&](std::size_t first, std::size_t last) {
+    for (std::size_t v = first; v < last; ++v) {
+      std::copy_n(&values.data[v * m], m, &both[3 * v * m]);
+      std::copy_n(&gradients[2 * v * m], 2 * m, &both[3 * v * m + m]);
+    }
+  });
   return both;
 }
 
@@ -347,7 +166,7 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
                                std::span<const double> gradients, std::span<const Point> queries, std::span<double> out,
                                double fill, unsigned threads) {
   const char* who = "interpolate_clough_tocher";
-  const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients);
+  const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
   detail::interpolate<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components, queries,
                                     out, fill, threads);
 }
@@ -356,7 +175,7 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
                                std::span<const double> gradients, const Grid& grid, std::span<double> out, double fill,
                                unsigned threads) {
   const char* who = "interpolate_clough_tocher";
-  const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients);
+  const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
   detail::interpolate_grid<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components, grid,
                                          out, fill, threads);
 }

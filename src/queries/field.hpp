@@ -10,10 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "order/order.hpp"
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "walk/mesh.hpp"
 
@@ -51,44 +53,44 @@ struct Field {
   }
 };
 
-// The field renumbered for many queries: the vertices numbered in the order the triangles
-// first meet them, their points and values copied in that order. The triangles lie in memory
-// in an order near in the plane; the points and values in the caller's order, often a random
-// one. Walks and answers then read points near in memory instead of missing the cache at
-// every corner, which more than pays for the copy once there are about as many queries as
-// triangles.
+// The field renumbered for many queries: the points along the Hilbert curve, their points and
+// values copied in that order. The triangles lie in memory in an order near in the plane; the
+// points and values in the caller's order, often a random one. Walks and answers then read
+// points near in memory instead of missing the cache at every corner, which more than pays
+// for the copy once there are about as many queries as triangles. Every step on threads.
 struct Renumbered {
-  std::vector<Point> points;
-  std::vector<VertexId> triangles;
-  std::vector<double> values;
+  std::size_t count, components;
+  Block<Point> points;
+  Block<double> values;
+  Block<VertexId> triangles;
 
-  Renumbered(const Field& f, unsigned threads) : triangles(f.triangles.size()) {
-    std::vector<VertexId> id(f.points.size(), kNone), old;
-    old.reserve(f.points.size());
-    for (std::size_t k = 0; k < triangles.size(); ++k) {
-      VertexId& v = id[f.triangles[k]];
-      if (v == kNone) {
-        v = static_cast<VertexId>(old.size());
-        old.push_back(f.triangles[k]);
-      }
-      triangles[k] = v;
-    }
-    const std::size_t m = f.values.components;
-    points.resize(old.size());
-    values.resize(old.size() * m);
-    parallel_for(old.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+  Renumbered(const Field& f, unsigned threads)
+      : count(f.points.size()),
+        components(f.values.components),
+        points(allocate_huge<Point>(count)),
+        values(allocate_huge<double>(count * components)),
+        triangles(allocate_huge<VertexId>(f.triangles.size())) {
+    const std::vector<VertexId> old = hilbert_cells_order(f.points.data(), static_cast<std::uint32_t>(count), threads);
+    std::vector<VertexId> id(count);
+    const std::size_t m = components;
+    parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
+        id[old[k]] = static_cast<VertexId>(k);
         points[k] = f.points[old[k]];
         std::copy_n(f.value(old[k]), m, &values[k * m]);
       }
     });
+    parallel_for(f.triangles.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) triangles[k] = id[f.triangles[k]];
+    });
   }
 
-  Field field(std::span<const std::int32_t> neighbors, std::size_t m) const {
-    return {points, triangles, neighbors, Values{values, m}};
+  Field field(std::span<const std::int32_t> neighbors) const {
+    return {{points.get(), count},
+            {triangles.get(), neighbors.size()},
+            neighbors,
+            Values{{values.get(), count * components}, components}};
   }
-
-  static constexpr VertexId kNone = ~VertexId{0};
 };
 
 // What both kinds of call read, checked: the field, renumbered when there are about as many
@@ -100,13 +102,12 @@ class Input {
       : field_{points, t.triangles, t.neighbors, values} {
     check_arrays(who, points.size(), t.triangles, t.neighbors);
     check_values(who, points.size(), values);
-    const std::size_t m = values.components;
     if (out.size() != count * width)
       throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
                        std::to_string(count) + " " + what + " of " + std::to_string(width) + " components");
     if (count >= t.size()) {
       renumbered_.emplace(field_, threads);
-      field_ = renumbered_->field(t.neighbors, m);
+      field_ = renumbered_->field(t.neighbors);
     }
   }
   Input(const Input&) = delete;

@@ -113,7 +113,8 @@ void resize_present(std::vector<T>& a, std::size_t n, unsigned threads) {
 /// hint: without them it works the same). A kept block may hold anything.
 template <typename T>
 Block<T> allocate_huge(std::size_t count, bool huge = true) {
-  static_assert(std::is_aggregate_v<T> && std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
+  static_assert((std::is_scalar_v<T> || std::is_aggregate_v<T>)&&std::is_trivially_copyable_v<T> &&
+                std::is_trivially_destructible_v<T>);
   huge = huge && count * sizeof(T) >= 4 * kHugePage;  // else 2 MiB of zeroing for little
   const std::size_t align = huge ? kHugePage : alignof(std::max_align_t);
   const std::size_t bytes = std::max<std::size_t>((count * sizeof(T) + align - 1) / align * align, align);
