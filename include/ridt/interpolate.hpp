@@ -97,8 +97,8 @@ void barycentric_transforms(std::span<const Point> points, std::span<const Verte
 /// edges, the integral of the squared second derivative of the cubic along each edge that the
 /// values and gradients at its ends define (Nielson's minimum-norm network). Solved by sweeps
 /// over the points, each point's gradient set to the best for its neighbours' (Gauss-Seidel;
-/// the points taken in colour classes of the Delaunay graph, each class on `threads` threads,
-/// the same numbers for any thread count), from each point's best-fitting plane through its
+/// the points taken along a Hilbert curve in blocks, blocks that share no edge on `threads`
+/// threads at once, the same numbers for any thread count), from each point's best-fitting plane through its
 /// neighbours' values, until a sweep changes no gradient by more than `tol` (relative to the
 /// gradient where it exceeds 1) or after `maxiter` sweeps. `gradients` receives
 /// points.size() * values.components * 2 numbers: for point i and component c, d/dx at
@@ -123,6 +123,15 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, const Grid& grid, std::span<double> out,
                                double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+
+/// scipy's griddata(method='cubic') onto a grid: the Clough-Tocher interpolant at the grid's
+/// nodes with the gradients that estimate_gradients(tol, maxiter) finds, in one call that
+/// numbers the points once for both and passes nothing between them through the caller's
+/// order; the same numbers as those two calls. Returns estimate_gradients' count of sweeps (0:
+/// they did not settle within maxiter).
+int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
+                   std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(), double tol = 1e-6,
+                   int maxiter = 400, unsigned threads = 1);
 
 /// For each query, the index of a nearest point among the triangulation's vertices (a greedy
 /// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not

@@ -329,6 +329,36 @@ class _Line:
         return out
 
 
+def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: Any, rescale: bool,
+                   threads: int) -> Optional[np.ndarray]:
+    """griddata's cubic at a grid's nodes in one call of the library (griddata_cubic: the
+    points numbered once for the gradients and the answers), the same numbers as
+    CloughTocher2DInterpolator's; None where that does not apply (complex values, no grid)."""
+    grid = _as_grid(args)
+    if grid is None:
+        return None
+    who = "ridt.griddata"
+    pts = _coordinates(points, who)
+    v, trailing, complex_ = _as_values(values, pts.shape[0], who)
+    if complex_:
+        return None
+    xs, ys, x_major, shape = grid
+    pts, offset, scale = _rescaled(pts, bool(rescale))
+    if rescale:
+        xs = np.ascontiguousarray((xs - offset[0]) / scale[0])
+        ys = np.ascontiguousarray((ys - offset[1]) / scale[1])
+        if not (_monotone(xs) and _monotone(ys)):  # nodes merged by the rounding
+            return None
+    nthreads = _api.thread_count(threads)
+    tri = Delaunay(pts, threads=nthreads)
+    out, sweeps = _core.griddata_cubic(tri.points, tri._tri, v, xs, ys, x_major, float(fill_value), 1e-6, 400,
+                                       nthreads)
+    if sweeps == 0:
+        warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
+                      GradientEstimationWarning, stacklevel=3)
+    return out.reshape(shape + trailing)
+
+
 def griddata(points: Any, values: Any, xi: Any, method: str = "linear", fill_value: Any = np.nan,
              rescale: bool = False, *, threads: int = 1) -> np.ndarray:
     """Interpolate scattered data, with scipy.interpolate.griddata's arguments (in the plane).
@@ -343,5 +373,9 @@ def griddata(points: Any, values: Any, xi: Any, method: str = "linear", fill_val
     args = xi if isinstance(xi, tuple) else (xi,)
     if method == "nearest":
         return NearestNDInterpolator(points, values, rescale=rescale, threads=threads)(*args)
+    if method == "cubic":
+        on_grid = _cubic_on_grid(points, values, args, fill_value, rescale, threads)
+        if on_grid is not None:
+            return on_grid
     cls = {"linear": LinearNDInterpolator, "cubic": CloughTocher2DInterpolator}.get(method, NaturalNeighborInterpolator)
     return cls(points, values, fill_value=fill_value, rescale=rescale, threads=threads)(*args)

@@ -13,6 +13,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "points.hpp"
 #include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/furthest.hpp"
@@ -25,16 +26,13 @@
 
 namespace py = pybind11;
 
-void bind_terrain(py::module_&m), bind_memory(py::module_&m);  // terrain.cpp, memory.cpp
+// terrain.cpp, memory.cpp, interpolate.cpp
+void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m);
 
 namespace {
 
-using Points = py::array_t<double, py::array::c_style>;
-
-std::span<const ridt::Point> as_points(const Points& a, const char* name) {
-  if (a.ndim() != 2 || a.shape(1) != 2) throw py::value_error(std::string(name) + " must have shape (n, 2)");
-  return {reinterpret_cast<const ridt::Point*>(a.data()), static_cast<std::size_t>(a.shape(0))};
-}
+using ridt_python::as_points;
+using ridt_python::Points;
 
 // A read-only property of Triangulation: the buffer `get` returns, viewed as rows of `cols`
 // (one column: a flat array), kept alive by the Triangulation. No copy.
@@ -103,32 +101,6 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   const std::span<const ridt::Point> pts = as_points(points, "points");
   py::gil_scoped_release nogil;
   return furthest_site ? ridt::triangulate_furthest_site(pts, o) : ridt::triangulate(pts, o);
-}
-
-// The interpolant of `values` (n by k) at `where`: queries, or a grid's nodes, `rows` answers
-// in a new (rows, k) array, computed without the GIL.
-template <class Where>
-py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulation& t, const Points& values,
-                                   const Where& where, std::size_t rows, double fill, const std::string& method,
-                                   unsigned threads, const std::optional<Points>& gradients = std::nullopt) {
-  const auto pts = as_points(points, "points");
-  if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
-  const auto k = static_cast<std::size_t>(values.shape(1));
-  const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
-  py::array_t<double> a({static_cast<py::ssize_t>(rows), static_cast<py::ssize_t>(k)});
-  const std::span<double> out(a.mutable_data(), rows * k);
-  {
-    py::gil_scoped_release nogil;
-    if (method == "cubic") {
-      if (!gradients) throw std::invalid_argument("the cubic needs gradients");
-      const std::span<const double> g(gradients->data(), static_cast<std::size_t>(gradients->size()));
-      ridt::interpolate_clough_tocher(pts, t, v, g, where, out, fill, threads);
-    } else if (method == "natural")
-      ridt::interpolate_natural_neighbor(pts, t, v, where, out, fill, threads);
-    else
-      ridt::interpolate_linear(pts, t, v, where, out, fill, threads);
-  }
-  return a;
 }
 
 // A vector's memory handed to numpy without a copy: the array owns the vector through a
@@ -423,51 +395,6 @@ void bind_voronoi(py::module_& m) {
   m.def("lists", &lists, py::arg("flat"), py::arg("offsets"), py::arg("ints"),
         "Rows of `flat` as a list of lists: row r is flat[offsets[r]:offsets[r + 1]]; each value v >= 0\n"
         "is the object ints[v] (shared, not a new int), -1 is -1.");
-}
-
-void bind_interpolation(py::module_& m) {
-  m.def(
-      "interpolate",
-      [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& queries, double fill,
-         const std::string& method, unsigned threads, const std::optional<Points>& gradients) {
-        const auto q = as_points(queries, "queries");
-        return interpolate_at(points, t, values, q, q.size(), fill, method, threads, gradients);
-      },
-      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("queries"), py::arg("fill"),
-      py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
-
-  m.def(
-      "interpolate_grid",
-      [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
-         bool x_major, double fill, const std::string& method, unsigned threads,
-         const std::optional<Points>& gradients) {
-        if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
-        const ridt::Grid g{
-            {x.data(), static_cast<std::size_t>(x.size())}, {y.data(), static_cast<std::size_t>(y.size())}, x_major};
-        return interpolate_at(points, t, values, g, g.size(), fill, method, threads, gradients);
-      },
-      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("x_major"),
-      py::arg("fill"), py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
-
-  m.def(
-      "estimate_gradients",
-      [](const Points& points, const ridt::Triangulation& t, const Points& values, double tol, int maxiter,
-         unsigned threads) {
-        const auto pts = as_points(points, "points");
-        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
-        const auto k = static_cast<std::size_t>(values.shape(1));
-        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
-        py::array_t<double> g({static_cast<py::ssize_t>(pts.size()), static_cast<py::ssize_t>(k), py::ssize_t{2}});
-        int sweeps = 0;
-        {
-          py::gil_scoped_release nogil;
-          sweeps = ridt::estimate_gradients(pts, t, v, std::span<double>(g.mutable_data(), pts.size() * k * 2), tol,
-                                            maxiter, threads);
-        }
-        return py::make_tuple(g, sweeps);
-      },
-      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("tol"), py::arg("maxiter"),
-      py::arg("threads") = 1u);
 }
 
 }  // namespace

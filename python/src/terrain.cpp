@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "points.hpp"
 #include "ridt/terrain.hpp"
 #include "terrain_io.hpp"
 
@@ -16,12 +17,9 @@ namespace py = pybind11;
 
 namespace {
 
-using Doubles = py::array_t<double, py::array::c_style>;
+using Doubles = ridt_python::Points;
 
-std::span<const ridt::Point> as_points(const Doubles& a) {
-  if (a.ndim() != 2 || a.shape(1) != 2) throw py::value_error("points must have shape (n, 2)");
-  return {reinterpret_cast<const ridt::Point*>(a.data()), static_cast<std::size_t>(a.shape(0))};
-}
+std::span<const ridt::Point> as_points(const Doubles& a) { return ridt_python::as_points(a, "points"); }
 
 py::tuple read_las(const std::string& path, const std::vector<int>& classes, const std::string& returns,
                    bool withheld) {

@@ -93,6 +93,23 @@ def test_grids_are_answered_as_their_nodes(scattered, method):
     np.testing.assert_allclose(a[inside], (2 * hx - hy)[inside], atol=1e-12)
 
 
+def test_cubic_griddata_on_a_grid_is_the_interpolators_answer(scattered):
+    # griddata's cubic onto a grid runs as one call of the library (the points numbered once
+    # for the gradients and the answers): the same bits as CloughTocher2DInterpolator's, with
+    # several components, a fill value and rescale.
+    p, f, _ = scattered
+    values = np.stack([f, p[:, 0] * p[:, 1]], axis=1)
+    gx, gy = np.mgrid[-0.2:1.2:61j, -0.1:1.1:47j]
+    for rescale in (False, True):
+        a = ridt.griddata(p * [3.0, 0.5], values, (3 * gx, 0.5 * gy), method="cubic", fill_value=-2.5,
+                          rescale=rescale, threads=2)
+        ip = ridt.CloughTocher2DInterpolator(p * [3.0, 0.5], values, fill_value=-2.5, rescale=rescale)
+        b = ip(3 * gx, 0.5 * gy)
+        assert a.shape == gx.shape + (2,)
+        np.testing.assert_array_equal(a, b)
+        assert (a == -2.5).any() and (a != -2.5).sum() > a.size / 2
+
+
 def test_queries_that_are_no_grid_take_the_general_path(scattered):
     p, f, q = scattered
     x = q[:400, 0].reshape(20, 20)

@@ -216,23 +216,30 @@ void barycentric_exact(const Point& a, const Point& b, const Point& c, const Poi
 /// triangle, coordinates that overflow or underflow) or where a part's sign is not certain (q
 /// on or next to a side). So q at a corner gets exactly 1 there and 0 elsewhere, and q on a
 /// side exactly 0 for the opposite corner.
-inline void barycentric(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]) {
-  struct Area {
-    double value, bound;
-  };
-  auto area = [](const Point& u, const Point& v, const Point& w) {
-    const double l = (u.x - w.x) * (v.y - w.y), r = (u.y - w.y) * (v.x - w.x);
-    return Area{l - r, kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow};
-  };
-  const Area whole = area(a, b, c);
-  const Area part[3] = {area(q, b, c), area(a, q, c), area(a, b, q)};
+/// The orientation determinant of (u, v, w) in double precision, and the filter's bound on its
+/// error: its sign is certain where |value| > bound (as orient2d_filter decides).
+struct BoundedArea {
+  double value, bound;
+};
+inline BoundedArea bounded_area(const Point& u, const Point& v, const Point& w) {
+  const double l = (u.x - w.x) * (v.y - w.y), r = (u.y - w.y) * (v.x - w.x);
+  return {l - r, kOrientBound * (std::fabs(l) + std::fabs(r)) + kOrientUnderflow};
+}
+
+/// barycentric's quick path: the weights from the whole triangle's bounded area and the three
+/// with q in place of a corner, (q, b, c), (a, q, c) and (a, b, q), where every bound is within
+/// 2^-45 of the whole area and every sign is certain; false (weight untouched) where not.
+inline bool barycentric_quick(const BoundedArea& whole, const BoundedArea part[3], double weight[3]) {
   const double room = 0x1p-45 * std::fabs(whole.value);
-  auto sure = [room](const Area& x) { return x.bound <= room && std::fabs(x.value) > x.bound; };
-  if (sure(whole) && sure(part[0]) && sure(part[1]) && sure(part[2])) {
-    for (int i = 0; i < 3; ++i) weight[i] = part[i].value / whole.value;
-    return;
-  }
-  barycentric_exact(a, b, c, q, weight);
+  auto sure = [room](const BoundedArea& x) { return x.bound <= room && std::fabs(x.value) > x.bound; };
+  if (!(sure(whole) && sure(part[0]) && sure(part[1]) && sure(part[2]))) return false;
+  for (int i = 0; i < 3; ++i) weight[i] = part[i].value / whole.value;
+  return true;
+}
+
+inline void barycentric(const Point& a, const Point& b, const Point& c, const Point& q, double weight[3]) {
+  const BoundedArea part[3] = {bounded_area(q, b, c), bounded_area(a, q, c), bounded_area(a, b, q)};
+  if (!barycentric_quick(bounded_area(a, b, c), part, weight)) barycentric_exact(a, b, c, q, weight);
 }
 
 /// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.

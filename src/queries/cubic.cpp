@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "queries/field.hpp"
+#include "queries/gradients.hpp"
 #include "runtime/memory.hpp"
 
 namespace ridt {
@@ -38,10 +39,14 @@ class CloughTocher {
  public:
   explicit CloughTocher(const Field& f) : f_(f), k_(f.values.components / 3), net_(k_) {}
 
-  void operator()(std::size_t tri, const Point& q, double* out) {
+  // `weights`, when given, are q's barycentric coordinates in tri as barycentric gives them.
+  void operator()(std::size_t tri, const Point& q, double* out, const double* weights = nullptr) {
     const Point p[3] = {f_.corner(tri, 0), f_.corner(tri, 1), f_.corner(tri, 2)};
     double b[3];
-    detail::barycentric(p[0], p[1], p[2], q, b);
+    if (weights != nullptr)
+      std::copy_n(weights, 3, b);
+    else
+      detail::barycentric(p[0], p[1], p[2], q, b);
     for (int i = 0; i < 3; ++i)
       if (b[i] == 1) {  // at a corner (exactly: the weights are exact there): its values
         std::copy_n(f_.value(f_.vertex(tri, i)), k_, out);
@@ -178,6 +183,38 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
   const std::vector<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
   detail::interpolate_grid<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components, grid,
                                          out, fill, threads);
+}
+
+int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
+                   std::span<double> out, double fill, double tol, int maxiter, unsigned threads) {
+  const char* who = "griddata_cubic";
+  const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
+  detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
+  detail::check_values(who, points.size(), values);
+  const std::size_t n = points.size(), m = values.components;
+  if (out.size() != grid.size() * m)
+    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
+                     std::to_string(grid.size()) + " nodes of " + std::to_string(m) + " components");
+  if (!(tol > 0)) throw InputError(std::string(who) + ": tol must be positive");
+  if (maxiter < 1) throw InputError(std::string(who) + ": maxiter must be at least 1");
+  if (t.triangles.empty()) {
+    std::fill(out.begin(), out.end(), fill);
+    return 1;
+  }
+  const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
+  // Each point's values and then its gradients, in the field's numbering.
+  const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m),
+                              both = detail::allocate_huge<double>(3 * n * m);
+  const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});
+  detail::parallel_for(n, threads, detail::kGrain, [&](std::size_t first, std::size_t last) {
+    for (std::size_t v = first; v < last; ++v) {
+      std::copy_n(&field.values[v * m], m, &both[3 * v * m]);
+      std::copy_n(&grad[2 * v * m], 2 * m, &both[3 * v * m + m]);
+    }
+  });
+  detail::answer_grid<CloughTocher>(field.field(t.neighbors, {both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out,
+                                    fill, threads);
+  return sweeps;
 }
 
 }  // namespace ridt

@@ -43,11 +43,14 @@ struct Field {
   const double* value(VertexId v) const { return values.data.data() + v * values.components; }
 
   // out = the barycentric interpolant of triangle tri at q, its weights within 2^-44 of the
-  // exact ones (barycentric): at a corner the corner's value, on a side the side's
-  // linear interpolant, bounded for the thinnest sliver.
-  void linear(std::size_t tri, const Point& q, double* out) const {
+  // exact ones (barycentric, or `weights` when the caller has them from it): at a corner the
+  // corner's value, on a side the side's linear interpolant, bounded for the thinnest sliver.
+  void linear(std::size_t tri, const Point& q, double* out, const double* weights = nullptr) const {
     double w[3];
-    barycentric(corner(tri, 0), corner(tri, 1), corner(tri, 2), q, w);
+    if (weights != nullptr)
+      std::copy_n(weights, 3, w);
+    else
+      barycentric(corner(tri, 0), corner(tri, 1), corner(tri, 2), q, w);
     const double *va = value(vertex(tri, 0)), *vb = value(vertex(tri, 1)), *vc = value(vertex(tri, 2));
     for (std::size_t k = 0; k < values.components; ++k) out[k] = w[0] * va[k] + w[1] * vb[k] + w[2] * vc[k];
   }
@@ -60,6 +63,7 @@ struct Field {
 // for the copy once there are about as many queries as triangles. Every step on threads.
 struct Renumbered {
   std::size_t count, components;
+  std::vector<VertexId> input;  // number -> the caller's
   Block<Point> points;
   Block<double> values;
   Block<VertexId> triangles;
@@ -67,17 +71,17 @@ struct Renumbered {
   Renumbered(const Field& f, unsigned threads)
       : count(f.points.size()),
         components(f.values.components),
+        input(hilbert_cells_order(f.points.data(), static_cast<std::uint32_t>(count), threads)),
         points(allocate_huge<Point>(count)),
         values(allocate_huge<double>(count * components)),
         triangles(allocate_huge<VertexId>(f.triangles.size())) {
-    const std::vector<VertexId> old = hilbert_cells_order(f.points.data(), static_cast<std::uint32_t>(count), threads);
     std::vector<VertexId> id(count);
     const std::size_t m = components;
     parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        id[old[k]] = static_cast<VertexId>(k);
-        points[k] = f.points[old[k]];
-        std::copy_n(f.value(old[k]), m, &values[k * m]);
+        id[input[k]] = static_cast<VertexId>(k);
+        points[k] = f.points[input[k]];
+        std::copy_n(f.value(input[k]), m, &values[k * m]);
       }
     });
     parallel_for(f.triangles.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
@@ -85,11 +89,13 @@ struct Renumbered {
     });
   }
 
-  Field field(std::span<const std::int32_t> neighbors) const {
-    return {{points.get(), count},
-            {triangles.get(), neighbors.size()},
-            neighbors,
-            Values{{values.get(), count * components}, components}};
+  // The renumbered field; with `other`, other values (`other_components` a point, in the
+  // new numbering) in place of the caller's.
+  Field field(std::span<const std::int32_t> neighbors, std::span<const double> other = {},
+              std::size_t other_components = 0) const {
+    const Values v =
+        other.empty() ? Values{{values.get(), count * components}, components} : Values{other, other_components};
+    return {{points.get(), count}, {triangles.get(), neighbors.size()}, neighbors, v};
   }
 };
 
@@ -205,10 +211,11 @@ inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
   return lowest;
 }
 
-// Calls take(tri, node, p) for every node p of `grid` that triangle tri holds and takes: those
-// strictly inside, those on a hull side, those on an inner side whose other triangle has a
-// higher number, and a vertex when tri is the lowest-numbered triangle around it. So every
-// node in the closed hull is taken exactly once, by one triangle.
+// Calls take(tri, node, p, w) for every node p of `grid` that triangle tri holds and takes:
+// those strictly inside, those on a hull side, those on an inner side whose other triangle has
+// a higher number, and a vertex when tri is the lowest-numbered triangle around it. So every
+// node in the closed hull is taken exactly once, by one triangle. w is p's barycentric
+// weights where the filter already gave them (as barycentric would), else null.
 template <class Take>
 void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t tri, Take& take) {
   const std::size_t nx = grid.x.size(), ny = grid.y.size();
@@ -218,10 +225,29 @@ void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& 
   const auto [i0, i1] = ax.within(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));
   if (i0 == i1) return;
   const auto [j0, j1] = ay.within(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
+  const BoundedArea whole = bounded_area(a, b, c);
   for (std::size_t j = j0; j < j1; ++j) {
     const double y = ay.value(j);
     for (std::size_t i = i0; i < i1; ++i) {
       const Point p{ax.value(i), y};
+      const std::size_t node = grid.x_major ? ax.index(i) * ny + ay.index(j) : ay.index(j) * nx + ax.index(i);
+      // The signs of the areas with p in place of each corner, where the filter decides them:
+      // all positive, p is strictly inside, and the areas give its barycentric weights when
+      // they are precise enough.
+      const BoundedArea part[3] = {bounded_area(p, b, c), bounded_area(a, p, c), bounded_area(a, b, p)};
+      bool certain = true, outside = false;
+      for (const BoundedArea& s : part) {
+        if (std::fabs(s.value) > s.bound)
+          outside = outside || s.value < 0;
+        else
+          certain = false;
+      }
+      if (outside) continue;
+      if (certain) {
+        double w[3];
+        take(tri, node, p, barycentric_quick(whole, part, w) ? w : nullptr);
+        continue;
+      }
       const int o[3] = {orient2d(b, c, p), orient2d(c, a, p), orient2d(a, b, p)};
       if (o[0] < 0 || o[1] < 0 || o[2] < 0) continue;
       const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
@@ -233,8 +259,7 @@ void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& 
         const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex
         if (lowest_around(f, tri, corner) != tri) continue;
       }
-      const std::size_t gi = ax.index(i), gj = ay.index(j);
-      take(tri, grid.x_major ? gi * ny + gj : gj * nx + gi, p);
+      take(tri, node, p, nullptr);
     }
   }
 }
@@ -249,21 +274,28 @@ void cover(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, uns
   });
 }
 
-// The same at every node of a grid (see cover).
+// Answer at every node of a grid (see cover), from a field already checked; `fill` outside
+// the hull.
+template <class Answer>
+void answer_grid(const Field& field, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t width,
+                 std::span<double> out, double fill, unsigned threads) {
+  parallel_for(out.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+    std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), fill);
+  });
+  cover(field, ax, ay, grid, threads, [&] {
+    return [&, answer = Answer(field)](std::size_t tri, std::size_t node, const Point& p, const double* w) mutable {
+      answer(tri, p, &out[node * width], w);
+    };
+  });
+}
+
+// The same from the caller's arrays, checked, and renumbered when there are many nodes.
 template <class Answer>
 void interpolate_grid(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
                       std::size_t width, const Grid& grid, std::span<double> out, double fill, unsigned threads) {
   const Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
   const Input input(who, points, t, values, width, grid.size(), "nodes", out, threads);
-  const Field& field = input.field();
-  parallel_for(out.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
-    std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), fill);
-  });
-  cover(field, ax, ay, grid, threads, [&] {
-    return [&, answer = Answer(field)](std::size_t tri, std::size_t node, const Point& p) mutable {
-      answer(tri, p, &out[node * width]);
-    };
-  });
+  answer_grid<Answer>(input.field(), ax, ay, grid, width, out, fill, threads);
 }
 
 }  // namespace ridt::detail

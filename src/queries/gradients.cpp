@@ -6,14 +6,16 @@
 // At a vertex v with neighbours w, edges e = w - v of length L, the best gradient given the
 // neighbours' solves Q g_v = b_v - sum_w (2 / L^3) e e^T g_w, where Q = sum 4 e e^T / L^3 and
 // b_v = sum 6 (f_w - f_v) e / L^3. Q and b are fixed by the points and the values, so a sweep
-// reads, for each edge, only the neighbour's gradient and u = e sqrt(2 / L^3), whose outer
-// product is the edge's term.
+// reads, for each edge, the neighbour's gradient and point and the edge's 2 / L^3.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "queries/gradients.hpp"
 
 #include "order/order.hpp"
 #include "queries/field.hpp"
@@ -27,124 +29,120 @@ using detail::prev3;
 
 using Pair = std::array<double, 2>;
 
-constexpr std::uint32_t kNone = ~std::uint32_t{0};
-
-// The Delaunay graph numbered for locality, its vertices along the Hilbert curve (the points
-// may come in any order; neighbours along the curve are mostly near in memory), each vertex's
-// neighbours once each; across each hull side, the direction the one triangle misses. A
-// point in no triangle (a dropped duplicate) has none.
+// The Delaunay graph on the renumbered field's vertices (along the Hilbert curve, so that
+// neighbours are mostly near in memory), each vertex's neighbours once each; across each hull
+// side, the direction the one triangle misses. A point in no triangle (a dropped duplicate)
+// has none.
 struct Graph {
-  std::vector<VertexId> input;  // number -> input index
   std::vector<std::uint32_t> offset, to;
 
-  Graph(std::span<const Point> points, const Triangulation& t, unsigned threads)
-      : input(detail::hilbert_cells_order(points.data(), static_cast<std::uint32_t>(points.size()), threads)) {
-    const std::size_t count = input.size();
-    std::vector<std::uint32_t> id(count);
-    for (std::size_t v = 0; v < count; ++v) id[input[v]] = static_cast<std::uint32_t>(v);
-    std::vector<std::uint32_t> tri(t.triangles.size());
-    detail::parallel_for(tri.size(), threads, 1 << 16, [&](std::size_t from, std::size_t until) {
-      for (std::size_t k = from; k < until; ++k) tri[k] = id[t.triangles[k]];
-    });
-    auto each = [&](auto&& visit) {
-      for (std::size_t k = 0; k < tri.size(); k += 3)
+  // Each of up to four parts of the triangles counts its corners a vertex, then writes its
+  // edges after those of the parts before it: the lists as one pass in order would make them.
+  Graph(const detail::Field& f, unsigned threads) {
+    const std::size_t count = f.points.size(), triangles = f.triangles.size() / 3;
+    const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(triangles >> 16, 1, std::min(threads, 4u)));
+    auto each = [&](unsigned p, auto&& visit) {
+      for (std::size_t k = triangles * p / parts; k < triangles * (p + 1) / parts; ++k)
         for (int i = 0; i < 3; ++i) {
-          visit(tri[k + i], tri[k + next3(i)]);
-          if (t.neighbors[k + i] < 0) visit(tri[k + prev3(i)], tri[k + next3(i)]);
+          const std::uint32_t next = f.vertex(k, next3(i));
+          visit(f.vertex(k, i), next);
+          if (f.neighbor(k, i) < 0) visit(f.vertex(k, prev3(i)), next);
         }
     };
+    std::vector<std::uint32_t> at(parts * count, 0);  // part p's count, then place, for vertex v: at[p * count + v]
+    detail::on_threads(parts,
+                       [&](unsigned p) { each(p, [&](std::uint32_t v, std::uint32_t) { ++at[p * count + v]; }); });
     offset.assign(count + 1, 0);
-    each([&](std::uint32_t v, std::uint32_t) { ++offset[v + 1]; });
+    detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t until) {
+      for (std::size_t v = from; v < until; ++v)
+        for (unsigned p = 0; p < parts; ++p) offset[v + 1] += at[p * count + v];
+    });
     for (std::size_t v = 0; v < count; ++v) offset[v + 1] += offset[v];
+    detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t until) {
+      for (std::size_t v = from; v < until; ++v)
+        for (std::uint32_t p = 0, place = offset[v]; p < parts; ++p) place += std::exchange(at[p * count + v], place);
+    });
     to.resize(offset[count]);
-    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
-    each([&](std::uint32_t v, std::uint32_t w) { to[fill[v]++] = w; });
-  }
-
-  std::size_t size() const { return input.size(); }
-
-  // Greedy colours in this order: each vertex the least colour none of its coloured
-  // neighbours has (a planar graph's take a handful).
-  std::vector<std::uint8_t> colours() const {
-    std::vector<std::uint8_t> c(size(), 0xff);
-    for (std::size_t v = 0; v < size(); ++v) {
-      std::uint64_t taken = 0;
-      for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j)
-        if (c[to[j]] < 64) taken |= std::uint64_t{1} << c[to[j]];
-      int least = 0;
-      while (taken >> least & 1) ++least;
-      c[v] = static_cast<std::uint8_t>(least);
-    }
-    return c;
+    detail::on_threads(
+        parts, [&](unsigned p) { each(p, [&](std::uint32_t v, std::uint32_t w) { to[at[p * count + v]++] = w; }); });
   }
 };
 
-// The minimum-norm network's system, its vertices renumbered by colour (no two neighbours of
-// one colour, so that a colour's vertices can be updated at once on threads), in the graph's
-// order within a colour: a colour's vertices and their edges lie together in memory, and a
-// sweep over them reads the other colours' gradients in order. Colour c is
-// [first[c], first[c + 1]). The numbering follows the triangles alone, so the sweeps give the
-// same numbers on any thread count.
+// The minimum-norm network's system on the graph's numbering, its vertices cut into blocks of
+// kBlock along the curve (compact pieces of the plane) and the blocks coloured so that no
+// edge joins two blocks of one colour. A sweep takes the colours one after another and the
+// blocks of a colour on threads at once, each block's vertices in order: Gauss-Seidel in an
+// order that depends on the triangles alone, so the same numbers on any thread count, with a
+// block's gradients in cache while its vertices read one another's.
 struct Network {
-  std::vector<VertexId> input;  // number -> input index
-  std::vector<std::uint32_t> first;
+  static constexpr std::size_t kBlock = 2048;
+
+  std::size_t count;
   std::vector<std::uint32_t> offset, to;
-  detail::Block<Pair> u;  // an edge's e sqrt(2 / L^3)
+  const Point* at;  // the field's points
+  detail::Block<double> weight;  // an edge's 2 / L^3
   detail::Block<std::array<double, 3>> q_inverse;  // [[a b] [b c]]; NaN where Q is singular
   detail::Block<Pair> b;  // component k's b_v at b[k * size() + v]
+  std::vector<std::uint32_t> blocks, first;  // colour c's blocks: blocks[first[c] .. first[c + 1])
 
-  Network(std::span<const Point> points, const Graph& g, Values values, unsigned threads)
-      : input(g.size()),
-        offset(g.size() + 1),
-        q_inverse(detail::allocate_huge<std::array<double, 3>>(g.size())),
-        b(detail::allocate_huge<Pair>(g.size() * values.components)) {
-    const std::size_t count = g.size(), m = values.components;
-    const std::vector<std::uint8_t> colour = g.colours();
-    first.assign(*std::max_element(colour.begin(), colour.end()) + 2u, 0);
-    for (std::uint8_t c : colour) ++first[c + 1];
-    for (std::size_t c = 0; c + 1 < first.size(); ++c) first[c + 1] += first[c];
-    std::vector<std::uint32_t> number(count), fill(first.begin(), first.end() - 1);
-    for (std::size_t v = 0; v < count; ++v) number[v] = fill[colour[v]]++;
-    // The points and values in the new order, read once each, so that the edges read them
-    // near in memory.
-    std::vector<std::uint32_t> local(count);  // number -> the graph's
-    std::vector<Point> at;
-    std::vector<double> f;
-    detail::resize_present(at, count, threads);
-    detail::resize_present(f, count * m, threads);
+  Network(const detail::Field& f, Graph&& g, unsigned threads)
+      : count(f.points.size()),
+        offset(std::move(g.offset)),
+        to(std::move(g.to)),
+        at(f.points.data()),
+        weight(detail::allocate_huge<double>(to.size())),
+        q_inverse(detail::allocate_huge<std::array<double, 3>>(count)),
+        b(detail::allocate_huge<Pair>(count * f.values.components)) {
     detail::parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
-      for (std::size_t v = from; v < until; ++v) {
-        const std::uint32_t w = number[v];
-        local[w] = static_cast<std::uint32_t>(v);
-        input[w] = g.input[v];
-        offset[w + 1] = g.offset[v + 1] - g.offset[v];
-        at[w] = points[g.input[v]];
-        std::copy_n(&values.data[g.input[v] * m], m, &f[w * m]);
-      }
+      for (std::size_t v = from; v < until; ++v) equations(f, v);
     });
-    for (std::size_t v = 0; v < count; ++v) offset[v + 1] += offset[v];
-    detail::resize_present(to, offset[count], threads);
-    u = detail::allocate_huge<Pair>(offset[count]);
-    detail::parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
-      for (std::size_t v = from; v < until; ++v) {
-        std::uint32_t j = offset[v];
-        for (std::uint32_t i = g.offset[local[v]]; i < g.offset[local[v] + 1]; ++i) to[j++] = number[g.to[i]];
-        equations(at, f, m, v);
-      }
-    });
+    colour_blocks(threads);
   }
 
-  std::size_t size() const { return input.size(); }
+  std::size_t size() const { return count; }
+  std::size_t block_count() const { return (size() + kBlock - 1) / kBlock; }
 
-  // Vertex v's edges' u, its Q's inverse and its b for each of the m components.
-  void equations(const std::vector<Point>& at, const std::vector<double>& f, std::size_t m, std::size_t v) {
+  // Greedy colours for the blocks in order: each the least colour none of its coloured
+  // neighbours has. Each block's neighbours are found on threads.
+  void colour_blocks(unsigned threads) {
+    const std::size_t count = block_count();
+    std::vector<std::vector<std::uint32_t>> near(count);
+    detail::parallel_for(count, threads, 1, [&](std::size_t from, std::size_t until) {
+      for (std::size_t k = from; k < until; ++k) {
+        for (std::size_t j = offset[k * kBlock]; j < offset[std::min(size(), (k + 1) * kBlock)]; ++j)
+          if (to[j] / kBlock != k) near[k].push_back(static_cast<std::uint32_t>(to[j] / kBlock));
+        std::sort(near[k].begin(), near[k].end());
+        near[k].erase(std::unique(near[k].begin(), near[k].end()), near[k].end());
+      }
+    });
+    std::vector<std::uint32_t> colour(count, ~0u);
+    std::uint32_t colours = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      std::vector<bool> taken(colours + 1, false);
+      for (const std::uint32_t o : near[k])
+        if (colour[o] != ~0u) taken[colour[o]] = true;
+      colour[k] = static_cast<std::uint32_t>(std::find(taken.begin(), taken.end(), false) - taken.begin());
+      colours = std::max(colours, colour[k] + 1);
+    }
+    first.assign(colours + 1, 0);
+    for (const std::uint32_t c : colour) ++first[c + 1];
+    for (std::size_t c = 0; c < colours; ++c) first[c + 1] += first[c];
+    blocks.resize(count);
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::size_t k = 0; k < count; ++k) blocks[fill[colour[k]]++] = static_cast<std::uint32_t>(k);
+  }
+
+  // Vertex v's edges' weights, its Q's inverse and its b for each of the m components.
+  void equations(const detail::Field& field, std::size_t v) {
+    const double* f = field.values.data.data();
+    const std::size_t m = field.values.components;
     double q00 = 0, q01 = 0, q11 = 0;
     for (std::size_t k = 0; k < m; ++k) b[k * size() + v] = {0, 0};
     for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
       const std::uint32_t w = to[j];
       const double ex = at[w].x - at[v].x, ey = at[w].y - at[v].y, l2 = ex * ex + ey * ey;
-      const double inv_l3 = 1 / (l2 * std::sqrt(l2)), root = std::sqrt(2 * inv_l3);
-      u[j] = {ex * root, ey * root};
+      const double inv_l3 = 1 / (l2 * std::sqrt(l2));
+      weight[j] = 2 * inv_l3;
       q00 += 4 * ex * ex * inv_l3, q01 += 4 * ex * ey * inv_l3, q11 += 4 * ey * ey * inv_l3;
       for (std::size_t k = 0; k < m; ++k) {
         const double r = 6 * (f[w * m + k] - f[v * m + k]) * inv_l3;
@@ -171,15 +169,19 @@ struct Network {
     });
   }
 
-  // One Gauss-Seidel sweep, a colour at a time, each colour's vertices on threads. Returns the
+  // One Gauss-Seidel sweep, a colour at a time, each colour's blocks on threads. Returns the
   // largest change, relative to the gradient where that exceeds 1.
   double sweep(std::span<const Pair> bk, std::vector<Pair>& grad, unsigned threads) const {
     double worst = 0;
     std::mutex merge;
     for (std::size_t c = 0; c + 1 < first.size(); ++c)
-      detail::parallel_for(first[c + 1] - first[c], threads, 1 << 13, [&](std::size_t from, std::size_t until) {
+      detail::parallel_for(first[c + 1] - first[c], threads, 1, [&](std::size_t from, std::size_t until) {
         double most = 0;
-        for (std::size_t v = first[c] + from; v < first[c] + until; ++v) most = std::max(most, update(v, bk, grad));
+        for (std::size_t k = first[c] + from; k < first[c] + until; ++k) {
+          const std::size_t block = blocks[k];
+          for (std::size_t v = block * kBlock; v < std::min(size(), (block + 1) * kBlock); ++v)
+            most = std::max(most, update(v, bk, grad));
+        }
         const std::lock_guard<std::mutex> lock(merge);
         worst = std::max(worst, most);
       });
@@ -189,11 +191,12 @@ struct Network {
   double update(std::size_t v, std::span<const Pair> bk, std::vector<Pair>& grad) const {
     const std::array<double, 3>& q = q_inverse[v];
     if (std::isnan(q[0])) return 0;
+    const Point p = at[v];
     double s0 = bk[v][0], s1 = bk[v][1];
     for (std::uint32_t j = offset[v]; j < offset[v + 1]; ++j) {
       const Pair& w = grad[to[j]];
-      const double d = u[j][0] * w[0] + u[j][1] * w[1];
-      s0 -= d * u[j][0], s1 -= d * u[j][1];
+      const double ex = at[to[j]].x - p.x, ey = at[to[j]].y - p.y, d = (ex * w[0] + ey * w[1]) * weight[j];
+      s0 -= d * ex, s1 -= d * ey;
     }
     const double gx = q[0] * s0 + q[1] * s1, gy = q[1] * s0 + q[2] * s1;
     Pair& g = grad[v];
@@ -206,6 +209,33 @@ struct Network {
 
 }  // namespace
 
+namespace detail {
+
+int solve_gradients(const Renumbered& field, std::span<const std::int32_t> neighbors, double tol, int maxiter,
+                    unsigned threads, std::span<double> grad) {
+  const Field f = field.field(neighbors);
+  const std::size_t count = field.count, m = field.components;
+  const Network net(f, Graph(f, threads), threads);
+  std::vector<Pair> g(count);
+  int most = 0;
+  bool converged = true;
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::span<const Pair> bk(&net.b[k * count], count);
+    net.start(bk, g, threads);
+    int done = 0;
+    for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep)
+      if (net.sweep(bk, g, threads) < tol) done = sweep;
+    converged = converged && done > 0;
+    most = std::max(most, done);
+    parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
+      for (std::size_t v = from; v < until; ++v) std::copy_n(g[v].data(), 2, &grad[2 * (v * m + k)]);
+    });
+  }
+  return converged ? most : 0;
+}
+
+}  // namespace detail
+
 int estimate_gradients(std::span<const Point> points, const Triangulation& t, Values values,
                        std::span<double> gradients, double tol, int maxiter, unsigned threads) {
   detail::check_arrays("estimate_gradients", points.size(), t.triangles, t.neighbors);
@@ -216,27 +246,18 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
                      std::to_string(2 * n * m));
   if (!(tol > 0)) throw InputError("estimate_gradients: tol must be positive");
   if (maxiter < 1) throw InputError("estimate_gradients: maxiter must be at least 1");
-  std::fill(gradients.begin(), gradients.end(), 0.0);
-  if (t.triangles.empty()) return 1;
-  const Network net(points, Graph(points, t, threads), values, threads);
-  const std::size_t count = net.size();
-  std::vector<Pair> grad(count);
-  int most = 0;
-  bool converged = true;
-  for (std::size_t k = 0; k < m; ++k) {
-    const std::span<const Pair> bk(&net.b[k * count], count);
-    net.start(bk, grad, threads);
-    int done = 0;
-    for (int sweep = 1; sweep <= maxiter && done == 0; ++sweep)
-      if (net.sweep(bk, grad, threads) < tol) done = sweep;
-    converged = converged && done > 0;
-    most = std::max(most, done);
-    detail::parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
-      for (std::size_t v = from; v < until; ++v) std::copy_n(grad[v].data(), 2, &gradients[2 * (net.input[v] * m + k)]);
-    });
+  if (t.triangles.empty()) {
+    std::fill(gradients.begin(), gradients.end(), 0.0);
+    return 1;
   }
+  const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
+  const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
+  const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});
+  detail::parallel_for(n, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
+    for (std::size_t v = from; v < until; ++v) std::copy_n(&grad[2 * v * m], 2 * m, &gradients[2 * field.input[v] * m]);
+  });
   for (const Duplicate& d : t.duplicates) std::copy_n(&gradients[2 * d.kept * m], 2 * m, &gradients[2 * d.dropped * m]);
-  return converged ? most : 0;
+  return sweeps;
 }
 
 }  // namespace ridt

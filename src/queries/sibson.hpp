@@ -122,13 +122,17 @@ class Sibson {
 struct Linear {
   const Field& f;
   explicit Linear(const Field& field) : f(field) {}
-  void operator()(std::size_t tri, const Point& q, double* out) const { f.linear(tri, q, out); }
+  void operator()(std::size_t tri, const Point& q, double* out, const double* weights = nullptr) const {
+    f.linear(tri, q, out, weights);
+  }
 };
 
 struct Natural {
   Sibson sibson;
   explicit Natural(const Field& field) : sibson(field) {}
-  void operator()(std::size_t tri, const Point& q, double* out) { sibson.interpolate(tri, q, out); }
+  void operator()(std::size_t tri, const Point& q, double* out, const double* /*weights*/ = nullptr) {
+    sibson.interpolate(tri, q, out);
+  }
 };
 
 }  // namespace ridt::detail

@@ -183,6 +183,32 @@ TEST(Cubic, GradientsReachTheMinimumWithTheSameBitsOnAnyThreads) {
   EXPECT_LT(worst, 1e-10);
 }
 
+TEST(Cubic, GriddataEqualsTheGradientsAndTheGridCallOnAnyThreads) {
+  // Two components, a duplicate point, nodes outside the hull; the one call and the two give
+  // the same bits, on one thread and on three.
+  std::vector<Point> pts = generate(Distribution::Normal, 30000, 12);
+  pts.push_back(pts[17]);
+  const Triangulation t = triangulate(pts);
+  std::vector<double> f;
+  for (const Point& p : pts) f.push_back(std::sin(3 * p.x) * p.y), f.push_back(p.x * p.x - p.y);
+  std::vector<double> x, y;
+  for (int i = 0; i < 150; ++i) x.push_back(-4 + 8 * i / 149.0);
+  for (int i = 0; i < 120; ++i) y.push_back(3.5 - 7 * i / 119.0);
+  const Grid grid{x, y, true};
+  std::vector<double> g(4 * pts.size()), two_calls(2 * grid.size());
+  const int sweeps = estimate_gradients(pts, t, Values{f, 2}, g, 1e-6, 400, 2);
+  interpolate_clough_tocher(pts, t, Values{f, 2}, g, grid, two_calls, -5, 2);
+  for (const unsigned threads : {1u, 3u}) {
+    std::vector<double> one_call(two_calls.size());
+    EXPECT_EQ(griddata_cubic(pts, t, Values{f, 2}, grid, one_call, -5, 1e-6, 400, threads), sweeps);
+    EXPECT_EQ(one_call, two_calls);
+  }
+  std::vector<double> short_out(5);
+  EXPECT_THROW(griddata_cubic(pts, t, Values{f, 2}, grid, short_out, -5), InputError);
+  EXPECT_THROW(griddata_cubic(pts, t, Values{f, 2}, grid, two_calls, -5, 0.0), InputError);
+  EXPECT_GT(std::count(two_calls.begin(), two_calls.end(), -5.0), 0);  // nodes outside the hull
+}
+
 TEST(Cubic, GridEqualsTheLocatedQueriesAndThreadsGiveTheSameBits) {
   const Data d = quadratic_data(5000, 7);
   std::vector<double> x, y;

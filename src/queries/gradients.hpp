@@ -1,0 +1,18 @@
+// The cubic's gradients (src/queries/gradients.cpp), solved on a renumbered field: shared by
+// estimate_gradients and the cubic's grid call that estimates its own (queries/cubic.cpp).
+#pragma once
+
+#include <span>
+
+#include "queries/field.hpp"
+
+namespace ridt::detail {
+
+/// The minimum-norm network's gradients of each of the field's value components, in its
+/// numbering: grad[2 * (v * m + k)] and the number after it are d/dx and d/dy of component k
+/// at vertex v (m components; zero at a point in no triangle). Returns the most sweeps a
+/// component took, or 0 when one did not settle within maxiter.
+int solve_gradients(const Renumbered& field, std::span<const std::int32_t> neighbors, double tol, int maxiter,
+                    unsigned threads, std::span<double> grad);
+
+}  // namespace ridt::detail
