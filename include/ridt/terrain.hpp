@@ -89,6 +89,9 @@ struct DemOptions {
   /// The value of a cell outside the hull or in a killed triangle.
   double nodata = std::numeric_limits<double>::quiet_NaN();
   unsigned threads = 1;  ///< 0: the machine's hardware threads
+  /// Rows a band (Dem::band): 0 for as many as some 64 MiB of doubles hold, a multiple of 64,
+  /// so that a raster of up to 8 million cells is one band and needs no sorting of triangles.
+  std::size_t band_rows = 0;
 };
 
 /// A triangulated terrain that answers a raster band by band: the triangles are sorted once

@@ -4,6 +4,7 @@
 // so a band costs its own triangles and cells, and the raster never lies in memory whole.
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "queries/arrays.hpp"
@@ -21,10 +22,16 @@ using detail::parallel_for;
 using detail::prev3;
 using detail::thread_count;
 
-// Rows a band: 64 rows of a 10^5-cell-wide raster are 51 MB of doubles, and a band of a
-// raster at the points' spacing holds some 128 times as many triangles as it has columns, so
-// the triangles that reach two bands (and are listed twice) are a few per cent.
+// Rows a band by default: a multiple of 64 that fills some 64 MiB of doubles (at least 64 rows:
+// 51 MB of a 10^5-cell-wide raster). A band of 64 rows of a raster at the points' spacing holds
+// some 128 times as many triangles as it has columns, so the triangles that reach two bands
+// (and are listed twice) are a few per cent.
 constexpr std::size_t kBandRows = 64;
+constexpr std::size_t kBandBytes = std::size_t{64} << 20;
+
+std::size_t default_band_rows(std::size_t nx) {
+  return kBandRows * std::max<std::size_t>(1, kBandBytes / (8 * std::max<std::size_t>(nx, 1)) / kBandRows);
+}
 constexpr double kMaxCells = 1099511627776.0;  // 2^40
 
 double squared(double x) { return x * x; }
@@ -58,7 +65,10 @@ RasterGrid RasterGrid::around(double x0, double y0, double x1, double y1, double
 
 Dem::Dem(std::span<const Point> points, const Triangulation& t, std::span<const double> z, const RasterGrid& grid,
          const DemOptions& options)
-    : neighbors_(t.neighbors), grid_(grid), options_(options), band_rows_(kBandRows) {
+    : neighbors_(t.neighbors),
+      grid_(grid),
+      options_(options),
+      band_rows_(options.band_rows > 0 ? options.band_rows : default_band_rows(grid.nx)) {
   detail::check_arrays("dem", points.size(), t.triangles, t.neighbors);
   if (z.size() != points.size())
     throw InputError("dem: " + std::to_string(z.size()) + " heights for " + std::to_string(points.size()) + " points");
@@ -101,6 +111,12 @@ void Dem::renumber(std::span<const Point> points, std::span<const VertexId> tria
 // its triangles in increasing order for any thread count.
 void Dem::bucket() {
   const std::size_t count = triangles_.size() / 3, nb = (grid_.ny + band_rows_ - 1) / band_rows_;
+  if (nb == 1) {  // one band: every triangle, in order
+    members_.resize(count);
+    std::iota(members_.begin(), members_.end(), 0u);
+    bands_ = {0, count};
+    return;
+  }
   const std::size_t chunks = std::min<std::size_t>(count / 4096 + 1, 4 * options_.threads);
   std::vector<std::uint64_t> counts(chunks * (nb + 1), 0);
   std::vector<std::uint32_t> first(count);

@@ -140,8 +140,11 @@ TEST(Dem, BandsAreTheWholeRasterInPieces) {
   const std::vector<double> z = heights(p);
   const Triangulation t = triangulate(p);
   const RasterGrid g = RasterGrid::around(0, 0, 1000, 1000, 3.3);
-  const Dem dem(p, t, z, g);
+  DemOptions options;
+  options.band_rows = 64;
+  const Dem dem(p, t, z, g, options);
   ASSERT_GT(dem.bands(), 2u);
+  EXPECT_EQ(Dem(p, t, z, g).bands(), 1u);  // 303 rows of 303 cells: one band by default
   const std::vector<double> whole = dem.all();
   std::vector<double> band((dem.band_rows()) * g.nx);
   dem.band(1, band);

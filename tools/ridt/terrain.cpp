@@ -58,6 +58,7 @@ Tin make_tin(const Args& a, ProgressLine& progress) {
   t0 = std::chrono::steady_clock::now();
   progress.show("triangulating");
   Options o;
+  o.method = Method::Auto;  // partition on more than one thread
   o.threads = a.threads;
   tin.t = triangulate(tin.terrain.points, o);
   if (tin.t.size() == 0)
