@@ -66,7 +66,7 @@ Command add_check(CLI::App& app) {
 Command add_voronoi(CLI::App& app) {
   struct Args {
     std::string input, output, box;
-    unsigned threads = 1;
+    unsigned threads = 0;
   };
   auto a = std::make_shared<Args>();
   CLI::App* vor = app.add_subcommand("voronoi", "the Voronoi diagram of points");
@@ -75,7 +75,7 @@ Command add_voronoi(CLI::App& app) {
   vor->add_option("--box", a->box,
                   "x0,y0,x1,y1: the box .svg and .off clip to (default: the points' box and "
                   "10 % around)");
-  vor->add_option("--threads", a->threads, "threads (0: all hardware threads; default 1)");
+  vor->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {vor, [a] {
             const io::PointFile p = io::read_points(a->input);
             Options o;

@@ -12,7 +12,7 @@ namespace {
 struct Args {
   std::string points, values, queries, grid, method = "linear", output;
   double fill = std::numeric_limits<double>::quiet_NaN();
-  unsigned threads = 1;
+  unsigned threads = 0;
 };
 
 // Where to interpolate: the queries, and for a grid its axes too (nx by ny nodes, row by row).
@@ -107,7 +107,7 @@ Command add_interpolate(CLI::App& app) {
   ip->add_option("--method", a->method, "linear (default), natural (Sibson's natural neighbours) or nearest");
   ip->add_option("--fill", a->fill, "the value outside the convex hull (default nan)");
   ip->add_option("-o,--output", a->output, "output: " + io::values_formats())->required();
-  ip->add_option("--threads", a->threads, "threads (0: all hardware threads; default 1)");
+  ip->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {ip, [a] { return run(*a); }};
 }
 

@@ -16,7 +16,7 @@ namespace {
 struct Args {
   std::string input, output, classes, returns = "all", columns, duplicates = "first";
   bool withheld = false, stats = false;
-  unsigned threads = 1;
+  unsigned threads = 0;
   // dem only
   double resolution = 0, max_edge = std::numeric_limits<double>::infinity();
   std::string method = "linear", extent, type = "float64", hillshade;
@@ -127,7 +127,7 @@ void add_common(CLI::App* c, Args& a) {
       "--columns", a.columns,
       "x,y,z: the columns (names or 1-based numbers) of a table, or the height field of a GDAL layer as the third");
   c->add_option("--duplicates", a.duplicates, choices_help("the height of points equal in x and y", Merge::First));
-  c->add_option("--threads", a.threads, "threads (0: all hardware threads; default 1)");
+  c->add_option("--threads", a.threads, "threads (0, the default: all hardware threads)");
   c->add_flag("--stats", a.stats, "print counts, times and peak memory on stdout");
 }
 
