@@ -102,7 +102,10 @@ def test_ctrl_c_stops_a_long_run():
     # A child process triangulates a large set; SIGINT must end it with KeyboardInterrupt well
     # before the run would have finished.
     code = textwrap.dedent("""
-        import sys, time, numpy as np, ridt
+        import signal, sys, time, numpy as np, ridt
+        # Python leaves SIGINT ignored when it starts with it ignored (as a shell's background
+        # job does): Ctrl-C's handler, as in an interactive session.
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         pts = np.random.default_rng(0).random((6_000_000, 2))
         print("ready", flush=True)
         start = time.monotonic()
