@@ -110,6 +110,14 @@ def _as_grid(args: Tuple[Any, ...]) -> Optional[Tuple[np.ndarray, np.ndarray, bo
     return None
 
 
+def _rescaled_axes(xs: np.ndarray, ys: np.ndarray, offset: np.ndarray,
+                   scale: np.ndarray) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+    """A grid's axes in rescaled coordinates; None where the rounding merged nodes."""
+    xs = np.ascontiguousarray((xs - offset[0]) / scale[0])
+    ys = np.ascontiguousarray((ys - offset[1]) / scale[1])
+    return (xs, ys) if _monotone(xs) and _monotone(ys) else None
+
+
 class _TriangulationInterpolator:
     _method = "linear"
     _name = "LinearNDInterpolator"
@@ -137,15 +145,12 @@ class _TriangulationInterpolator:
 
     def __call__(self, *args: Any) -> np.ndarray:
         grid = None if self._complex else _as_grid(args)
+        if grid is not None and self._rescaled:
+            axes = _rescaled_axes(grid[0], grid[1], self._offset, self._scale)
+            grid = None if axes is None else (*axes, grid[2], grid[3])
         if grid is not None:
             # The nodes of a grid: each triangle takes the nodes it holds, no walks.
             xs, ys, x_major, shape = grid
-            if self._rescaled:
-                xs = np.ascontiguousarray((xs - self._offset[0]) / self._scale[0])
-                ys = np.ascontiguousarray((ys - self._offset[1]) / self._scale[1])
-                if not (_monotone(xs) and _monotone(ys)):  # nodes merged by the rounding
-                    grid = None
-        if grid is not None:
             out = _core.interpolate_grid(self.tri.points, self.tri._tri, self.values, xs, ys, x_major,
                                          float(self.fill_value), self._method, self._threads, self._gradients())
             return out.reshape(shape + self._trailing)
@@ -345,10 +350,10 @@ def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: 
     xs, ys, x_major, shape = grid
     pts, offset, scale = _rescaled(pts, bool(rescale))
     if rescale:
-        xs = np.ascontiguousarray((xs - offset[0]) / scale[0])
-        ys = np.ascontiguousarray((ys - offset[1]) / scale[1])
-        if not (_monotone(xs) and _monotone(ys)):  # nodes merged by the rounding
+        axes = _rescaled_axes(xs, ys, offset, scale)
+        if axes is None:
             return None
+        xs, ys = axes
     nthreads = _api.thread_count(threads)
     tri = Delaunay(pts, threads=nthreads)
     out, sweeps = _core.griddata_cubic(tri.points, tri._tri, v, xs, ys, x_major, float(fill_value), 1e-6, 400,

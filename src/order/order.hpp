@@ -73,8 +73,9 @@ std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);
 std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads);
 
 /// The indices 0 .. n-1 of `points` sorted by their cell of hilbert_keys' curve, ties by index:
-/// coarser than hilbert_order where many points share a cell, and quicker (the keys on up to
-/// `threads` threads, two counting passes); enough to lay out in memory points near in the plane.
+/// coarser than hilbert_order where many points share a cell, and quicker (the keys and
+/// sorted_by_key's radix passes on up to `threads` threads); enough to lay out in memory points
+/// near in the plane.
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads);
 
 }  // namespace ridt::detail

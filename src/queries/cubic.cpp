@@ -195,25 +195,18 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
   if (out.size() != grid.size() * m)
     throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
                      std::to_string(grid.size()) + " nodes of " + std::to_string(m) + " components");
-  if (!(tol > 0)) throw InputError(std::string(who) + ": tol must be positive");
-  if (maxiter < 1) throw InputError(std::string(who) + ": maxiter must be at least 1");
+  detail::check_sweeps(who, tol, maxiter);
   if (t.triangles.empty()) {
     std::fill(out.begin(), out.end(), fill);
     return 1;
   }
   const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
-  // Each point's values and then its gradients, in the field's numbering.
-  const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m),
-                              both = detail::allocate_huge<double>(3 * n * m);
+  const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
   const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});
-  detail::parallel_for(n, threads, detail::kGrain, [&](std::size_t first, std::size_t last) {
-    for (std::size_t v = first; v < last; ++v) {
-      std::copy_n(&field.values[v * m], m, &both[3 * v * m]);
-      std::copy_n(&grad[2 * v * m], 2 * m, &both[3 * v * m + m]);
-    }
-  });
-  detail::answer_grid<CloughTocher>(field.field(t.neighbors, {both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out,
-                                    fill, threads);
+  // Each point's values and then its gradients, in the field's numbering.
+  const std::vector<double> both =
+      values_and_gradients(who, n, Values{{field.values.get(), n * m}, m}, {grad.get(), 2 * n * m}, threads);
+  detail::answer_grid<CloughTocher>(field.field(t.neighbors, both, 3 * m), ax, ay, grid, m, out, fill, threads);
   return sweeps;
 }
 

@@ -105,9 +105,9 @@ struct Network {
   // Greedy colours for the blocks in order: each the least colour none of its coloured
   // neighbours has. Each block's neighbours are found on threads.
   void colour_blocks(unsigned threads) {
-    const std::size_t count = block_count();
-    std::vector<std::vector<std::uint32_t>> near(count);
-    detail::parallel_for(count, threads, 1, [&](std::size_t from, std::size_t until) {
+    const std::size_t nb = block_count();
+    std::vector<std::vector<std::uint32_t>> near(nb);
+    detail::parallel_for(nb, threads, 1, [&](std::size_t from, std::size_t until) {
       for (std::size_t k = from; k < until; ++k) {
         for (std::size_t j = offset[k * kBlock]; j < offset[std::min(size(), (k + 1) * kBlock)]; ++j)
           if (to[j] / kBlock != k) near[k].push_back(static_cast<std::uint32_t>(to[j] / kBlock));
@@ -115,9 +115,9 @@ struct Network {
         near[k].erase(std::unique(near[k].begin(), near[k].end()), near[k].end());
       }
     });
-    std::vector<std::uint32_t> colour(count, ~0u);
+    std::vector<std::uint32_t> colour(nb, ~0u);
     std::uint32_t colours = 0;
-    for (std::size_t k = 0; k < count; ++k) {
+    for (std::size_t k = 0; k < nb; ++k) {
       std::vector<bool> taken(colours + 1, false);
       for (const std::uint32_t o : near[k])
         if (colour[o] != ~0u) taken[colour[o]] = true;
@@ -127,9 +127,9 @@ struct Network {
     first.assign(colours + 1, 0);
     for (const std::uint32_t c : colour) ++first[c + 1];
     for (std::size_t c = 0; c < colours; ++c) first[c + 1] += first[c];
-    blocks.resize(count);
+    blocks.resize(nb);
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::size_t k = 0; k < count; ++k) blocks[fill[colour[k]]++] = static_cast<std::uint32_t>(k);
+    for (std::size_t k = 0; k < nb; ++k) blocks[fill[colour[k]]++] = static_cast<std::uint32_t>(k);
   }
 
   // Vertex v's edges' weights, its Q's inverse and its b for each of the m components.
@@ -244,8 +244,7 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
   if (gradients.size() != 2 * n * m)
     throw InputError("estimate_gradients: room for " + std::to_string(gradients.size()) + " numbers, not " +
                      std::to_string(2 * n * m));
-  if (!(tol > 0)) throw InputError("estimate_gradients: tol must be positive");
-  if (maxiter < 1) throw InputError("estimate_gradients: maxiter must be at least 1");
+  detail::check_sweeps("estimate_gradients", tol, maxiter);
   if (t.triangles.empty()) {
     std::fill(gradients.begin(), gradients.end(), 0.0);
     return 1;

@@ -3,10 +3,18 @@
 #pragma once
 
 #include <span>
+#include <string>
 
 #include "queries/field.hpp"
 
 namespace ridt::detail {
+
+/// The sweeps' arguments, checked before any work: InputError naming `who` for a tol that is
+/// not positive or a maxiter below 1.
+inline void check_sweeps(const char* who, double tol, int maxiter) {
+  if (!(tol > 0)) throw InputError(std::string(who) + ": tol must be positive");
+  if (maxiter < 1) throw InputError(std::string(who) + ": maxiter must be at least 1");
+}
 
 /// The minimum-norm network's gradients of each of the field's value components, in its
 /// numbering: grad[2 * (v * m + k)] and the number after it are d/dx and d/dy of component k
