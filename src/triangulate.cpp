@@ -116,11 +116,11 @@ Plan plan(std::size_t n, const Options& options) {
 // Bytes a point at the call's peak, the result included, as measured at 10^6 and 10^7 uniform
 // points (the process's peak resident memory less its input, docs/design.md#memory): the
 // walking mesh and its finish, the canonical order after it (the result's arrays, the
-// triangles in buckets, each one's old and new number, and the blocks the memory cache keeps
+// triangles in buckets, each one's new number, and the blocks the memory cache keeps
 // for the next call), and the history DAG (its records are never freed during the run), with
 // 10 % over the largest seen. Each thread adds its own buffers.
 constexpr double kWalkBytesPerPoint = 94;  // 85 measured (serial walk and partition alike)
-constexpr double kWalkCanonicalBytesPerPoint = 143;  // 130 measured
+constexpr double kWalkCanonicalBytesPerPoint = 109;  // 99 measured
 constexpr double kDagBytesPerPoint = 307;  // 279 measured (every DAG method alike)
 constexpr std::size_t kBytesPerThread = std::size_t{8} << 20;
 constexpr std::size_t kFixedBytes = std::size_t{32} << 20;

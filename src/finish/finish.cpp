@@ -53,8 +53,7 @@ struct Placed {
 // each part of the triangles counts its own a bucket, then puts them in place after those of
 // the parts before it. Some ten thousand buckets: each is small enough to sort in the cache,
 // and a thread writes to few enough places at once to keep them there.
-std::vector<Placed> into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_t>& bucket_start,
-                                 int& shift) {
+Block<Placed> into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_t>& bucket_start, int& shift) {
   const std::size_t count = out.size();
   auto& tv = out.triangles;
   auto& tn = out.neighbors;
@@ -87,8 +86,8 @@ std::vector<Placed> into_buckets(Triangulation& out, unsigned threads, std::vect
     for (unsigned k = 0; k < parts; ++k) sum += std::exchange(at[k * buckets + b], sum);
   }
   bucket_start[buckets] = sum;
-  std::vector<Placed> placed;
-  resize_present(placed, count, threads);
+  Block<Placed> placed = allocate_huge<Placed>(count);
+  make_present(placed.get(), count * sizeof(Placed), threads);
   on_threads(parts, [&](unsigned k) {
     each(k, [&](std::size_t t) {
       const VertexId* v = &tv[3 * t];
@@ -104,18 +103,18 @@ std::vector<Placed> into_buckets(Triangulation& out, unsigned threads, std::vect
 // buckets of first vertices, then each bucket on its own (no two triangles share a first and a
 // second vertex: the edge between them is directed counter-clockwise in one triangle only; the
 // order is the same on any number of threads). The triangles travel with their vertices, so
-// nothing is looked up at random but the neighbours, gathered into the new order and
-// renumbered on the way.
+// nothing is looked up at random but the neighbours: renumbered where they are, then moved to
+// their triangles' new places in the buckets' memory (no longer needed by then) and copied
+// back. Fresh memory costs more than a pass over it (each page faulted in and zeroed), so the
+// sort takes 20 bytes a triangle beyond the result, and none of it is zeroed twice.
 void canonicalize(Triangulation& out, unsigned threads) {
   threads = std::max(threads, 1u);
   const std::size_t count = out.size();
   std::vector<std::uint32_t> bucket_start;
   int shift = 0;
-  std::vector<Placed> placed = into_buckets(out, threads, bucket_start, shift);
-  std::vector<std::int32_t> rank;
-  std::vector<std::uint32_t> from;
-  resize_present(rank, count, threads);
-  resize_present(from, count, threads);
+  const Block<Placed> placed = into_buckets(out, threads, bucket_start, shift);
+  const Block<std::int32_t> rank = allocate_huge<std::int32_t>(count);  // a triangle's new number
+  make_present(rank.get(), count * sizeof(std::int32_t), threads);
   auto& tv = out.triangles;
   parallel_for(bucket_start.size() - 1, threads, 16, [&](std::size_t first, std::size_t last) {
     std::vector<std::uint32_t> at((std::size_t{1} << shift) + 1);
@@ -137,25 +136,25 @@ void canonicalize(Triangulation& out, unsigned threads) {
       for (std::uint32_t i = lo; i < hi; ++i) {
         const Placed& p = run[i - lo];
         tv[3 * i] = p.first, tv[3 * i + 1] = p.second, tv[3 * i + 2] = p.third;
-        from[i] = p.from;
         rank[p.from] = static_cast<std::int32_t>(i);
       }
     }
   });
-  placed = {};
-  // The neighbours' addresses are known ahead: asked for some way ahead, their misses overlap.
+  // Each triangle's neighbours renumbered in its old place, then the three moved to its new
+  // place: in the buckets' memory (12 of its 16 bytes a triangle; int32 may alias the unsigned
+  // numbers there), from where they are copied back in order.
   auto& tn = out.neighbors;
-  std::vector<std::int32_t> sorted;
-  resize_present(sorted, tn.size(), threads);
+  auto* moved = reinterpret_cast<std::int32_t*>(placed.get());
   parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
-    constexpr std::size_t kAhead = 16;
-    for (std::size_t i = first; i < last; ++i) {
-      if (i + kAhead < last) __builtin_prefetch(&tn[3 * std::size_t{from[i + kAhead]}]);
-      const std::int32_t* n = &tn[3 * std::size_t{from[i]}];
-      for (int k = 0; k < 3; ++k) sorted[3 * i + k] = n[k] < 0 ? kNoNeighbor : rank[n[k]];
+    for (std::size_t t = first; t < last; ++t) {
+      std::int32_t* n = &tn[3 * t];
+      std::int32_t* to = &moved[3 * std::size_t{static_cast<std::uint32_t>(rank[t])}];
+      for (int k = 0; k < 3; ++k) to[k] = n[k] < 0 ? kNoNeighbor : rank[n[k]];
     }
   });
-  tn.swap(sorted);
+  parallel_for(tn.size(), threads, 1 << 18, [&](std::size_t first, std::size_t last) {
+    std::copy(moved + first, moved + last, tn.begin() + static_cast<std::ptrdiff_t>(first));
+  });
 }
 
 Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index, const std::vector<DuplicateHit>& duplicates,
