@@ -7,10 +7,11 @@
 //                          [--area A] [--reps R]
 //
 // Each run is a process of its own (fork), the codes in a new random order each repetition;
-// a row gives the median time, the ratio to ridt's one-thread median, the triangles, the
-// smallest angle of any triangle and the peak memory the run added to its process. ridt and
-// Triangle remove the exterior and the lakes; CGAL's triangulation keeps them (its mesher
-// meshes inside the coastline and leaves the lakes out, seeded as Triangle's holes are).
+// a row gives the median time, the median of each repetition's ratio to ridt's one-thread run
+// in it, the triangles, the smallest angle of any triangle and the peak memory the run added
+// to its process. ridt and Triangle remove the exterior and the lakes; CGAL's triangulation
+// keeps them (its mesher meshes inside the coastline and leaves the lakes out, seeded as
+// Triangle's holes are).
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -252,15 +253,18 @@ int main(int argc, char** argv) {
                                         .c_str()
                                   : "",
               a.reps);
+  // "ratio": the median of each repetition's ratio to the first code's run in it (the runs of
+  // one repetition are next to each other in time, so a drift of the machine's speed cancels).
   std::printf("%-20s %10s %8s %12s %10s %10s\n", "code", "seconds", "ratio", "triangles", "min angle", "MB added");
-  double base = 0;
   for (std::size_t c = 0; c < codes.size(); ++c) {
-    std::vector<double> s, mem;
-    for (const Result& r : runs[c]) s.push_back(r.seconds), mem.push_back(r.added_bytes);
-    const double t = ridt::bench::median(s);
-    if (c == 0) base = t;
-    std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), t, t / base, runs[c][0].triangles,
-                runs[c][0].worst_angle, ridt::bench::median(mem) / 1e6);
+    std::vector<double> s, mem, ratio;
+    for (std::size_t r = 0; r < runs[c].size(); ++r) {
+      s.push_back(runs[c][r].seconds), mem.push_back(runs[c][r].added_bytes);
+      ratio.push_back(runs[c][r].seconds / runs[0][r].seconds);
+    }
+    std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), ridt::bench::median(s),
+                ridt::bench::median(ratio), runs[c][0].triangles, runs[c][0].worst_angle,
+                ridt::bench::median(mem) / 1e6);
   }
   return 0;
 }

@@ -50,6 +50,12 @@ class Buckets {
     --size_;
     return item;
   }
+  // The item that would come `ahead` pops after the next, in the lowest bucket, or null.
+  const Item* ahead(std::size_t ahead) const {
+    if (size_ == 0 || lowest_ >= lists_.size()) return nullptr;
+    const std::vector<Item>& l = lists_[lowest_];
+    return l.size() > ahead ? &l[l.size() - 1 - ahead] : nullptr;
+  }
 
  private:
   // Negative keys first (the most negative first), then the rest, each by quarter octaves.
@@ -104,7 +110,9 @@ class Refiner {
       }
       if (bad_.empty()) return "";
       const Bad b = bad_.pop();
-      if (alive(b) && badness(b.t) != kGood) improve(b);
+      prefetch_ahead();
+      // A triangle still there has the vertices, so the badness, it was queued with.
+      if (alive(b)) improve(b);
     }
   }
 
@@ -115,6 +123,27 @@ class Refiner {
   };
   void queue_split(std::uint32_t s, bool forced) {
     segments_.push_back({m_.at(s / 3, static_cast<int>(s % 3) + 1), m_.at(s / 3, static_cast<int>(s % 3) + 2), forced});
+  }
+
+  // Most queued triangles are gone by their turn (four in five on a coastline), and those
+  // still there, with their neighbours, lie anywhere in memory: what the next pops will read is
+  // asked for in stages, each reading only what the stage before asked for some pops earlier.
+  // Eight pops ahead a triangle's vertices (to tell whether it is still there); four ahead,
+  // where it is, its points and neighbours; two ahead its neighbours' vertices.
+  void prefetch_ahead() const {
+    auto still_there = [&](std::size_t ahead) {
+      const Bad* b = bad_.ahead(ahead);
+      return b != nullptr && alive(*b) ? b : nullptr;
+    };
+    if (const Bad* b = bad_.ahead(8)) __builtin_prefetch(&m_.tris[3 * std::size_t{b->t}]);
+    if (const Bad* b = still_there(4)) {
+      for (const VertexId v : b->v) __builtin_prefetch(&m_.pts[v]);
+      __builtin_prefetch(&m_.nbrs[3 * std::size_t{b->t}]);
+    }
+    if (const Bad* b = still_there(2))
+      for (int k = 0; k < 3; ++k)
+        if (const std::int32_t n = m_.nbrs[3 * std::size_t{b->t} + k]; n >= 0)
+          __builtin_prefetch(&m_.tris[3 * static_cast<std::size_t>(n)]);
   }
 
   struct Bad {
@@ -234,7 +263,10 @@ class Refiner {
         const auto n = static_cast<std::uint32_t>(m_.nbrs[s]);
         if (std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
         const VertexId* v = &m_.tris[3 * n];
-        if (incircle(m_.pts[v[0]], m_.pts[v[1]], m_.pts[v[2]], p) <= 0) continue;
+        if (incircle(m_.pts[v[0]], m_.pts[v[1]], m_.pts[v[2]], p) <= 0) {
+          __builtin_prefetch(&m_.nbrs[3 * std::size_t{n}]);  // on the rim: the fan links back to it
+          continue;
+        }
         seen.push_back(n), todo.push_back(n);
       }
     }
