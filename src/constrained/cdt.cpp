@@ -194,7 +194,8 @@ VertexId Cdt::insert_cavity(const Point& p, const std::vector<std::uint32_t>& ca
   const auto v = static_cast<VertexId>(pts.size());
   pts.push_back(p);
   corner.push_back(kNone);
-  std::vector<std::uint32_t> fan(cavity.begin(), cavity.end());
+  std::vector<std::uint32_t>& fan = fan_;
+  fan.assign(cavity.begin(), cavity.end());
   fan.push_back(add_triangle(cavity[0]));
   fan.push_back(add_triangle(cavity[0]));
   // The fan triangle (x, y, p) of each rim edge; its neighbours across (y, p) and (p, x) are

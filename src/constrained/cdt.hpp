@@ -113,6 +113,7 @@ class Cdt {
     std::uint8_t fixed;
   };
   std::vector<Rim> rim_;
+  std::vector<std::uint32_t> fan_;  // insert_cavity's triangles, a rim edge each
 };
 
 }  // namespace ridt::detail
