@@ -41,6 +41,9 @@ cmp -s "$dir/grid.txt.ele" "$dir/grid7.ele" && pass || fail "seed changed the ou
 # Same file for the same seed on every run.
 expect 0 "regenerate" -- "$ridt" generate --dist normal -n 2000 --seed 3 -o "$dir/again.txt"
 cmp -s "$dir/normal.txt" "$dir/again.txt" && pass || fail "generate is not reproducible"
+# Without --dist the points are uniform.
+expect 0 "generate, no --dist" -- "$ridt" generate -n 2000 --seed 3 -o "$dir/default.txt"
+cmp -s "$dir/uniform.txt" "$dir/default.txt" && pass || fail "generate's default is not uniform"
 
 # Every threaded method writes the same file as the serial one, for any thread count.
 for m in pessimistic optimistic batch; do

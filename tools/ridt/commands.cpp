@@ -8,13 +8,13 @@ namespace ridt::tool {
 
 Command add_generate(CLI::App& app) {
   struct Args {
-    std::string dist, output;
+    std::string dist = "uniform", output;
     std::uint32_t n = 0;
     std::uint64_t seed = 1;
   };
   auto a = std::make_shared<Args>();
   CLI::App* gen = app.add_subcommand("generate", "write points of one of the paper's distributions");
-  gen->add_option("--dist", a->dist, choices_help("", Distribution::Uniform))->required();
+  gen->add_option("--dist", a->dist, choices_help("", Distribution::Uniform));
   gen->add_option("-n", a->n, "number of points")->required();
   gen->add_option("--seed", a->seed, "seed")->check(kSeed);
   gen->add_option("-o,--output", a->output, "output: " + io::point_formats())->required();
