@@ -32,9 +32,11 @@ using Pair = std::array<double, 2>;
 // The Delaunay graph on the renumbered field's vertices (along the Hilbert curve, so that
 // neighbours are mostly near in memory), each vertex's neighbours once each; across each hull
 // side, the direction the one triangle misses. A point in no triangle (a dropped duplicate)
-// has none.
+// has none. Its arrays are blocks written on threads, not vectors zeroed on one: at 10^6
+// points some 36 MB of fresh pages, each faulted in by the thread that first writes it.
 struct Graph {
-  std::vector<std::uint32_t> offset, to;
+  detail::Block<std::uint32_t> offset, to;
+  std::size_t edges = 0;
 
   // Each of up to four parts of the triangles counts its corners a vertex, then writes its
   // edges after those of the parts before it: the lists as one pass in order would make them.
@@ -49,20 +51,28 @@ struct Graph {
           if (f.neighbor(k, i) < 0) visit(f.vertex(k, prev3(i)), next);
         }
     };
-    std::vector<std::uint32_t> at(parts * count, 0);  // part p's count, then place, for vertex v: at[p * count + v]
+    // Part p's count, then place, for vertex v: at[p * count + v].
+    const detail::Block<std::uint32_t> at = detail::allocate_huge<std::uint32_t>(parts * count);
+    detail::parallel_for(parts * count, threads, 1 << 16,
+                         [&](std::size_t from, std::size_t until) { std::fill(&at[from], &at[0] + until, 0u); });
     detail::on_threads(parts,
                        [&](unsigned p) { each(p, [&](std::uint32_t v, std::uint32_t) { ++at[p * count + v]; }); });
-    offset.assign(count + 1, 0);
+    offset = detail::allocate_huge<std::uint32_t>(count + 1);
+    offset[0] = 0;
     detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t until) {
-      for (std::size_t v = from; v < until; ++v)
-        for (unsigned p = 0; p < parts; ++p) offset[v + 1] += at[p * count + v];
+      for (std::size_t v = from; v < until; ++v) {
+        std::uint32_t sum = 0;
+        for (unsigned p = 0; p < parts; ++p) sum += at[p * count + v];
+        offset[v + 1] = sum;
+      }
     });
     for (std::size_t v = 0; v < count; ++v) offset[v + 1] += offset[v];
     detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t until) {
       for (std::size_t v = from; v < until; ++v)
         for (std::uint32_t p = 0, place = offset[v]; p < parts; ++p) place += std::exchange(at[p * count + v], place);
     });
-    to.resize(offset[count]);
+    edges = offset[count];
+    to = detail::allocate_huge<std::uint32_t>(edges);
     detail::on_threads(
         parts, [&](unsigned p) { each(p, [&](std::uint32_t v, std::uint32_t w) { to[at[p * count + v]++] = w; }); });
   }
@@ -78,7 +88,7 @@ struct Network {
   static constexpr std::size_t kBlock = 2048;
 
   std::size_t count;
-  std::vector<std::uint32_t> offset, to;
+  detail::Block<std::uint32_t> offset, to;
   const Point* at;  // the field's points
   detail::Block<double> weight;  // an edge's 2 / L^3
   detail::Block<std::array<double, 3>> q_inverse;  // [[a b] [b c]]; NaN where Q is singular
@@ -90,7 +100,7 @@ struct Network {
         offset(std::move(g.offset)),
         to(std::move(g.to)),
         at(f.points.data()),
-        weight(detail::allocate_huge<double>(to.size())),
+        weight(detail::allocate_huge<double>(g.edges)),
         q_inverse(detail::allocate_huge<std::array<double, 3>>(count)),
         b(detail::allocate_huge<Pair>(count * f.values.components)) {
     detail::parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
@@ -159,7 +169,7 @@ struct Network {
   // each edge weighted 1 / L^3 as in Q (Q g = 2/3 b; exact for linear data, which then need
   // no sweep). The sweeps reach the same minimum from it as from zero (scipy's start), in
   // fewer sweeps. Where Q is singular the gradient stays zero.
-  void start(std::span<const Pair> bk, std::vector<Pair>& grad, unsigned threads) const {
+  void start(std::span<const Pair> bk, std::span<Pair> grad, unsigned threads) const {
     detail::parallel_for(size(), threads, 1 << 14, [&](std::size_t from, std::size_t until) {
       for (std::size_t v = from; v < until; ++v) {
         const std::array<double, 3>& q = q_inverse[v];
@@ -171,7 +181,7 @@ struct Network {
 
   // One Gauss-Seidel sweep, a colour at a time, each colour's blocks on threads. Returns the
   // largest change, relative to the gradient where that exceeds 1.
-  double sweep(std::span<const Pair> bk, std::vector<Pair>& grad, unsigned threads) const {
+  double sweep(std::span<const Pair> bk, std::span<Pair> grad, unsigned threads) const {
     double worst = 0;
     std::mutex merge;
     for (std::size_t c = 0; c + 1 < first.size(); ++c)
@@ -188,7 +198,7 @@ struct Network {
     return worst;
   }
 
-  double update(std::size_t v, std::span<const Pair> bk, std::vector<Pair>& grad) const {
+  double update(std::size_t v, std::span<const Pair> bk, std::span<Pair> grad) const {
     const std::array<double, 3>& q = q_inverse[v];
     if (std::isnan(q[0])) return 0;
     const Point p = at[v];
@@ -216,7 +226,8 @@ int solve_gradients(const Renumbered& field, std::span<const std::int32_t> neigh
   const Field f = field.field(neighbors);
   const std::size_t count = field.count, m = field.components;
   const Network net(f, Graph(f, threads), threads);
-  std::vector<Pair> g(count);
+  const detail::Block<Pair> block = detail::allocate_huge<Pair>(count);  // each written by start first
+  const std::span<Pair> g(block.get(), count);
   int most = 0;
   bool converged = true;
   for (std::size_t k = 0; k < m; ++k) {
