@@ -361,6 +361,22 @@ std::size_t set_memory_cache_limit(std::size_t bytes);
 /// The bytes kept now for the next call (see set_memory_cache_limit).
 std::size_t cached_memory();
 
+/// While one lives, the blocks calls give back are kept, up to `bytes` more than the cache's
+/// limit, for the calls that follow to take where a size matches: a sequence of calls made as
+/// one (a triangulation, then an interpolation on it) reuses its pages instead of having fresh
+/// ones faulted in and zeroed, even under a limit of 0. Its end gives back what is then over
+/// the limit. Nothing in builds with AddressSanitizer or ThreadSanitizer. Thread-safe.
+class MemoryReuse {
+ public:
+  explicit MemoryReuse(std::size_t bytes);
+  ~MemoryReuse();
+  MemoryReuse(const MemoryReuse&) = delete;
+  MemoryReuse& operator=(const MemoryReuse&) = delete;
+
+ private:
+  std::size_t bytes_ = 0;
+};
+
 /// The most memory triangulate(points, options) takes for n points, in bytes: its work space,
 /// its copy of the points and the result, by the method, location and threads that the
 /// options make (Method::Auto resolved as triangulate resolves it), from the bytes a point each

@@ -334,6 +334,9 @@ class _Line:
         return out
 
 
+_REUSE_BYTES_PER_POINT = 64  # more than the triangulation's blocks that it gives back
+
+
 def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: Any, rescale: bool,
                    threads: int) -> Optional[np.ndarray]:
     """griddata's cubic at a grid's nodes in one call of the library (griddata_cubic: the
@@ -355,9 +358,11 @@ def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: 
             return None
         xs, ys = axes
     nthreads = _api.thread_count(threads)
-    tri = Delaunay(pts, threads=nthreads)
-    out, sweeps = _core.griddata_cubic(tri.points, tri._tri, v, xs, ys, x_major, float(fill_value), 1e-6, 400,
-                                       nthreads)
+    # The triangulation's blocks, given back, serve the interpolation's (fresh pages cost more).
+    with _core.MemoryReuse(_REUSE_BYTES_PER_POINT * pts.shape[0]):
+        tri = Delaunay(pts, threads=nthreads)
+        out, sweeps = _core.griddata_cubic(tri.points, tri._tri, v, xs, ys, x_major, float(fill_value), 1e-6, 400,
+                                           nthreads)
     if sweeps == 0:
         warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
                       GradientEstimationWarning, stacklevel=3)

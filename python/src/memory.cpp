@@ -2,6 +2,7 @@
 // system can give, and the blocks kept between calls.
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <string>
 
 #include "ridt/ridt.hpp"
@@ -24,4 +25,23 @@ void bind_memory(py::module_& m) {
   m.def("available_memory", &ridt::available_memory);
   m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
   m.def("cached_memory", &ridt::cached_memory);
+  // ridt::MemoryReuse as a context manager: `with MemoryReuse(bytes): ...`.
+  struct Reuse {
+    std::size_t bytes;
+    std::unique_ptr<ridt::MemoryReuse> scope;
+  };
+  py::class_<Reuse>(m, "MemoryReuse")
+      .def(py::init([](std::size_t bytes) {
+             return Reuse{bytes, nullptr};
+           }),
+           py::arg("bytes"))
+      .def("__enter__",
+           [](Reuse& r) -> Reuse& {
+             r.scope = std::make_unique<ridt::MemoryReuse>(r.bytes);
+             return r;
+           })
+      .def("__exit__", [](Reuse& r, const py::args&) {
+        r.scope.reset();
+        return false;
+      });
 }

@@ -145,6 +145,10 @@ class CloughTocher {
   std::size_t tri_ = ~std::size_t{0};  // the triangle net_ is for
 };
 
+// What griddata_cubic lets the memory cache keep beyond its limit while it runs: more than its
+// sweeps' blocks (some 130 bytes a point and component).
+constexpr std::size_t kReuseBytesPerPoint = 160;
+
 // The values and gradients side by side, a point's k values and then its 2k gradient numbers,
 // as the field carries them through the renumbering: in `both`, made here, every number written
 // on threads (a block, not a vector zeroed first on one thread).
@@ -203,6 +207,8 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
     std::fill(out.begin(), out.end(), fill);
     return 1;
   }
+  // The sweeps' blocks, given back, hold the answers' values and gradients after.
+  const MemoryReuse reuse(kReuseBytesPerPoint * n * m);
   const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
   const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
   const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});

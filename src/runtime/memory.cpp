@@ -45,8 +45,9 @@ struct Cache {
   std::vector<Entry> kept;  // the last given back last
   std::size_t held = 0;  // bytes in `kept`
   std::size_t limit = kDefaultLimit;
+  std::size_t lent = 0;  // more room while MemoryReuse objects live (their bytes)
 
-  std::size_t room() const { return limit > held ? limit - held : 0; }
+  std::size_t room() const { return limit + lent > held ? limit + lent - held : 0; }
   // What of a range with `committed` bytes would be kept now: its start, in whole huge pages.
   std::size_t keepable(std::size_t committed) const { return std::min(committed, room() / kHugePage * kHugePage); }
   // Removes and returns the most recently kept entry that `match` accepts (its pages are the
@@ -231,12 +232,28 @@ void make_present(void* data, std::size_t bytes, unsigned threads) {
 
 namespace ridt {
 
+MemoryReuse::MemoryReuse(std::size_t bytes) {
+  if (detail::kDefaultLimit == 0) return;  // sanitizers: reuse would hide a read after release
+  detail::Cache& c = detail::cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  c.lent += bytes;
+  bytes_ = bytes;
+}
+
+MemoryReuse::~MemoryReuse() {
+  if (bytes_ == 0) return;
+  detail::Cache& c = detail::cache();
+  const std::lock_guard<std::mutex> guard(c.mutex);
+  c.lent -= bytes_;
+  c.shrink(c.limit + c.lent);
+}
+
 std::size_t set_memory_cache_limit(std::size_t bytes) {
   detail::Cache& c = detail::cache();
   const std::lock_guard<std::mutex> guard(c.mutex);
   const std::size_t previous = c.limit;
   c.limit = bytes;
-  c.shrink(bytes);
+  c.shrink(bytes + c.lent);
   return previous;
 }
 

@@ -426,6 +426,40 @@ TEST(MemoryCache, ReusedBlocksGiveTheSameResult) {
   set_memory_cache_limit(before);
 }
 
+// MemoryReuse keeps nothing in the sanitizers' builds (as the cache's default limit there).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kReuses = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr bool kReuses = false;
+#else
+constexpr bool kReuses = true;
+#endif
+#else
+constexpr bool kReuses = true;
+#endif
+
+// Under a limit of 0, what calls give back is kept while a MemoryReuse lives, taken by the
+// calls that follow (the same result on it), and given back at its end.
+TEST(MemoryCache, ReuseKeepsWhatIsGivenBackWhileItLives) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 20000, 9);
+  Options dag;
+  dag.locate = Locate::Dag;
+  const std::size_t before = set_memory_cache_limit(0);
+  const Triangulation fresh = triangulate(pts, dag);
+  ASSERT_EQ(cached_memory(), 0u);
+  {
+    const MemoryReuse reuse(std::size_t{1} << 30);
+    EXPECT_EQ(compare(triangulate(pts, dag), fresh), "");
+    const std::size_t kept = cached_memory();
+    EXPECT_EQ(kept > 0, kReuses);
+    EXPECT_EQ(compare(triangulate(pts, dag), fresh), "");
+    EXPECT_EQ(cached_memory(), kept);  // taken and given back, none added
+  }
+  EXPECT_EQ(cached_memory(), 0u);
+  set_memory_cache_limit(before);
+}
+
 // Where the system grants less address space than the records' range asks (a limit on it),
 // the range is as large as it grants, and a run that fits gives the same triangles. Not under
 // the sanitizers, which need far more address space than any such limit leaves.
