@@ -13,8 +13,10 @@ points into `Delaunay(points, incremental=True)` (made before the clock starts);
 (Qhull's incremental mode) takes minutes at 10^6, so it runs --add-points-reps times. Voronoi: `Voronoi(points)`,
 the diagram with its arrays (vertices, ridge_points, point_region); and again with its
 `regions` and `ridge_vertices` lists of lists read too (scipy builds them in the constructor,
-ridt when first read). Time: the median wall seconds of the call; memory: the process's peak resident size
-during the call above its size just before, per point. Writes a Markdown table and a CSV.
+ridt when first read). Time: the median wall seconds of the call; × scipy: the median of each
+repetition's ratio of scipy's time to the code's (the two runs of a repetition are next to each
+other in time); memory: the process's peak resident size during the call above its size just
+before, per point. Writes a Markdown table and a CSV.
 """
 import argparse
 import csv
@@ -112,11 +114,13 @@ def main():
                 if ok:
                     row["time_s"] = statistics.median(r["time"] for r in ok)
                     row["extra_b_per_point"] = statistics.median(r["extra"] for r in ok) / args.n
+                # Each repetition's scipy time over this code's, the two runs next to each other
+                # in time, so that a drift of the machine's speed cancels: their median.
+                pairs = [s["time"] / c["time"] for s, c in zip(got["scipy"], got[code]) if s and c]
+                if pairs:
+                    row["scipy_over_code"] = statistics.median(pairs)
                 rows.append(row)
                 print(json.dumps(row), file=sys.stderr, flush=True)
-    for r in rows:
-        ref = next((s for s in rows if s["task"] == r["task"] and s["code"] == "scipy" and "time_s" in s), None)
-        r["scipy_over_code"] = ref["time_s"] / r["time_s"] if ref and "time_s" in r else None
     base = os.path.splitext(args.out)[0]
     fields = ["task", "n", "grid", "code", "runs", "failed", "time_s", "extra_b_per_point", "scipy_over_code"]
     with open(base + ".csv", "w", newline="") as f:
@@ -126,14 +130,15 @@ def main():
     with open(args.out, "w") as f:
         f.write(f"Machine: {machine()}. {args.n:,} uniform points; griddata onto a {args.grid} x {args.grid} "
                 f"grid; add_points of {args.n // 10:,} more; medians of {args.reps} interleaved runs "
-                f"({args.add_points_reps} for add_points), each in a fresh process.\n\n")
+                f"({args.add_points_reps} for add_points), each in a fresh process; × scipy: the median of "
+                f"each repetition's ratio.\n\n")
         f.write("| call | code | s | × scipy | peak B/pt |\n|---|---|---:|---:|---:|\n")
         for r in rows:
             if "time_s" not in r:
                 f.write(f"| {r['task']} | {r['code']} | failed | | |\n")
                 continue
-            f.write(f"| {r['task']} | {r['code']} | {r['time_s']:.2f} | {r['scipy_over_code']:.1f} | "
-                    f"{r['extra_b_per_point']:.0f} |\n")
+            ratio = f"{r['scipy_over_code']:.1f}" if r.get("scipy_over_code") else ""
+            f.write(f"| {r['task']} | {r['code']} | {r['time_s']:.2f} | {ratio} | {r['extra_b_per_point']:.0f} |\n")
     print("wrote", args.out)
 
 
