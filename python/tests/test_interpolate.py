@@ -110,10 +110,10 @@ def test_cubic_griddata_on_a_grid_is_the_interpolators_answer(scattered):
         assert (a == -2.5).any() and (a != -2.5).sum() > a.size / 2
 
 
-def test_cubic_griddata_reuses_its_blocks_and_gives_them_back():
+def test_cubic_griddata_keeps_no_block_after_it():
     # Enough points for the library's blocks to be on huge pages (the ones the cache keeps):
-    # under a limit of 0 the call reuses the triangulation's blocks for its own, and keeps
-    # nothing after; the answer is the interpolator's.
+    # under a limit of 0 the call, which keeps blocks while it runs for its later steps to
+    # reuse, keeps nothing after; the answer is the interpolator's.
     p = np.random.default_rng(4).random((400_000, 2))
     f = np.sin(6 * p[:, 0]) * np.cos(5 * p[:, 1])
     gx, gy = np.mgrid[0:1:40j, 0:1:30j]

@@ -50,11 +50,11 @@ class Buckets {
     --size_;
     return item;
   }
-  // The item that would come `ahead` pops after the next, in the lowest bucket, or null.
-  const Item* ahead(std::size_t ahead) const {
+  // The item that would come k pops after the next, in the lowest bucket, or null.
+  const Item* ahead(std::size_t k) const {
     if (size_ == 0 || lowest_ >= lists_.size()) return nullptr;
     const std::vector<Item>& l = lists_[lowest_];
-    return l.size() > ahead ? &l[l.size() - 1 - ahead] : nullptr;
+    return l.size() > k ? &l[l.size() - 1 - k] : nullptr;
   }
 
  private:

@@ -145,29 +145,28 @@ class CloughTocher {
   std::size_t tri_ = ~std::size_t{0};  // the triangle net_ is for
 };
 
-// What griddata_cubic lets the memory cache keep beyond its limit while it runs: more than its
-// sweeps' blocks (some 130 bytes a point and component).
+// What griddata_cubic lets the memory cache keep beyond its limit while it runs, a point and
+// component: more than its sweeps' blocks (some 130 bytes a point for one component).
 constexpr std::size_t kReuseBytesPerPoint = 160;
 
 // The values and gradients side by side, a point's k values and then its 2k gradient numbers,
-// as the field carries them through the renumbering: in `both`, made here, every number written
-// on threads (a block, not a vector zeroed first on one thread).
-std::span<const double> values_and_gradients(const char* who, std::size_t n, Values values,
-                                             std::span<const double> gradients, detail::Block<double>& both,
-                                             unsigned threads) {
+// as the field carries them through the renumbering: 3 n k numbers, each written on threads (a
+// block, not a vector zeroed first on one thread).
+detail::Block<double> values_and_gradients(const char* who, std::size_t n, Values values,
+                                           std::span<const double> gradients, unsigned threads) {
   detail::check_values(who, n, values);
   const std::size_t m = values.components;
   if (gradients.size() != 2 * n * m)
     throw InputError(std::string(who) + ": " + std::to_string(gradients.size()) + " gradient numbers for " +
                      std::to_string(n) + " points of " + std::to_string(m) + " components (2 each)");
-  both = detail::allocate_huge<double>(3 * n * m);  // every number written below, on threads
+  detail::Block<double> both = detail::allocate_huge<double>(3 * n * m);
   detail::parallel_for(n, threads, detail::kGrain, [&](std::size_t first, std::size_t last) {
     for (std::size_t v = first; v < last; ++v) {
       std::copy_n(&values.data[v * m], m, &both[3 * v * m]);
       std::copy_n(&gradients[2 * v * m], 2 * m, &both[3 * v * m + m]);
     }
   });
-  return {both.get(), 3 * n * m};
+  return both;
 }
 
 }  // namespace
@@ -176,20 +175,20 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
                                std::span<const double> gradients, std::span<const Point> queries, std::span<double> out,
                                double fill, unsigned threads) {
   const char* who = "interpolate_clough_tocher";
-  detail::Block<double> block;
-  const std::span<const double> both = values_and_gradients(who, points.size(), values, gradients, block, threads);
-  detail::interpolate<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components, queries,
-                                    out, fill, threads);
+  const detail::Block<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
+  const std::size_t width = 3 * values.components;
+  detail::interpolate<CloughTocher>(who, points, t, Values{{both.get(), points.size() * width}, width},
+                                    values.components, queries, out, fill, threads);
 }
 
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, const Grid& grid, std::span<double> out, double fill,
                                unsigned threads) {
   const char* who = "interpolate_clough_tocher";
-  detail::Block<double> block;
-  const std::span<const double> both = values_and_gradients(who, points.size(), values, gradients, block, threads);
-  detail::interpolate_grid<CloughTocher>(who, points, t, Values{both, 3 * values.components}, values.components, grid,
-                                         out, fill, threads);
+  const detail::Block<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
+  const std::size_t width = 3 * values.components;
+  detail::interpolate_grid<CloughTocher>(who, points, t, Values{{both.get(), points.size() * width}, width},
+                                         values.components, grid, out, fill, threads);
 }
 
 int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
@@ -213,10 +212,10 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
   const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
   const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});
   // Each point's values and then its gradients, in the field's numbering.
-  detail::Block<double> block;
-  const std::span<const double> both =
-      values_and_gradients(who, n, Values{{field.values.get(), n * m}, m}, {grad.get(), 2 * n * m}, block, threads);
-  detail::answer_grid<CloughTocher>(field.field(t.neighbors, both, 3 * m), ax, ay, grid, m, out, fill, threads);
+  const detail::Block<double> both =
+      values_and_gradients(who, n, Values{{field.values.get(), n * m}, m}, {grad.get(), 2 * n * m}, threads);
+  detail::answer_grid<CloughTocher>(field.field(t.neighbors, {both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out,
+                                    fill, threads);
   return sweeps;
 }
 
