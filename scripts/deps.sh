@@ -11,6 +11,7 @@ sudo=""
 packages=(g++ cmake ninja-build libcli11-dev libpng-dev libgdal-dev)  # GDAL: GIS formats (ridt tin, ridt dem)
 if [ "${1:-build}" = test ] || [ "${1:-build}" = bench ]; then
   packages+=(libgtest-dev libcgal-dev python3 python3-matplotlib)
+  packages+=(ccache)  # scripts/test.sh: pip's build of the library reuses the Release build's objects
   packages+=(libopenmpi-dev openmpi-bin)  # ridt-mpi and its tests
   packages+=(gdal-bin python3-gdal)  # the terrain tests read outputs back with GDAL, compare with gdal_grid
   # The Python package and its tests (Debian's interpreter, /usr/bin/python3).

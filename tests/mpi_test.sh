@@ -9,6 +9,9 @@ ridt=$1 mpi=$2 fixtures=$3
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+# One machine: shared memory between ranks (the transports Open MPI would probe for a network
+# cost half of each short run's start).
+export OMPI_MCA_btl=self,vader OMPI_MCA_pml=ob1
 # Under AddressSanitizer: memory errors are checked, leaks are not. Open MPI's plugins keep
 # allocations to the end and are unloaded before the leak check, which then cannot tell them
 # from ours (their frames have no module left to match a suppression).

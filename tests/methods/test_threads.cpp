@@ -321,7 +321,7 @@ TEST(Progress, ReportedByEveryMethodAndCanAbandonTheRun) {
   struct Abandon {};
   // Enough points for several reports (one each 65,536); fewer under the sanitizers.
 #if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
-  constexpr int kPoints = 40000;
+  constexpr int kPoints = 20000;
   constexpr std::size_t kReports = 2;
 #else
   constexpr int kPoints = 140000;
