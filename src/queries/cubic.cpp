@@ -39,9 +39,27 @@ class CloughTocher {
  public:
   explicit CloughTocher(const Field& f) : f_(f), k_(f.values.components / 3), net_(k_) {}
 
-  // `weights`, when given, are q's barycentric coordinates in tri as barycentric gives them.
-  void operator()(std::size_t tri, const Point& q, double* out, const double* weights = nullptr) {
-    const Point p[3] = {f_.corner(tri, 0), f_.corner(tri, 1), f_.corner(tri, 2)};
+  // `weights`, when given, are q's barycentric coordinates in tri as barycentric gives them,
+  // from the corner f.first(tri) (`from`, where the caller has it); so are the corners here.
+  void operator()(std::size_t tri, const Point& q, double* out, const double* weights = nullptr, int from = -1) {
+    // The turn a compile-time constant: corner[i] below indexes without arithmetic, as the
+    // triangles of a renumbered field (all from their first corner) have it.
+    switch (from >= 0 ? from : f_.first(tri)) {
+      case 0:
+        return answer<0>(tri, q, out, weights);
+      case 1:
+        return answer<1>(tri, q, out, weights);
+      default:
+        return answer<2>(tri, q, out, weights);
+    }
+  }
+
+ private:
+  // The answer with the triangle read from its stored corner First.
+  template <int First>
+  void answer(std::size_t tri, const Point& q, double* out, const double* weights) {
+    constexpr int corner[3] = {First, (First + 1) % 3, (First + 2) % 3};
+    const Point p[3] = {f_.corner(tri, corner[0]), f_.corner(tri, corner[1]), f_.corner(tri, corner[2])};
     double b[3];
     if (weights != nullptr)
       std::copy_n(weights, 3, b);
@@ -49,10 +67,10 @@ class CloughTocher {
       detail::barycentric(p[0], p[1], p[2], q, b);
     for (int i = 0; i < 3; ++i)
       if (b[i] == 1) {  // at a corner (exactly: the weights are exact there): its values
-        std::copy_n(f_.value(f_.vertex(tri, i)), k_, out);
+        std::copy_n(f_.value(f_.vertex(tri, corner[i])), k_, out);
         return;
       }
-    if (tri != tri_) control_points(tri, p);
+    if (tri != tri_) control_points(tri, corner, p);
     // The piece: the one across from the corner of least weight.
     const int m = b[0] <= b[1] && b[0] <= b[2] ? 0 : b[1] <= b[2] ? 1 : 2;
     const int ia = next3(m), ib = prev3(m);
@@ -68,7 +86,6 @@ class CloughTocher {
     }
   }
 
- private:
   struct Corner {
     double f, next, prev, in;  // the value, the control points towards the next and previous corners and C
   };
@@ -83,15 +100,17 @@ class CloughTocher {
     double a, b, c;  // weights of the side's first and second end and the centroid, summing to 0
   };
 
-  void control_points(std::size_t tri, const Point* p) {
+  // The control points of triangle tri, its corners p read from the stored corners `corner`.
+  void control_points(std::size_t tri, const int* corner, const Point* p) {
     tri_ = tri;
     const Point c = centroid(p[0], p[1], p[2]);
     // The direction across each side (side i is across from corner i) as barycentric weights
     // of its two ends and the centroid, the same for every component.
     Across across[3];
     const double third = detail::doubled_area(p[0], p[1], p[2]) / 3;
-    for (int i = 0; i < 3; ++i) across[i] = direction(tri, i, p, c, third);
-    const double* value[3] = {f_.value(f_.vertex(tri, 0)), f_.value(f_.vertex(tri, 1)), f_.value(f_.vertex(tri, 2))};
+    for (int i = 0; i < 3; ++i) across[i] = direction(f_.neighbor(tri, corner[i]), i, p, c, third);
+    const double* value[3] = {f_.value(f_.vertex(tri, corner[0])), f_.value(f_.vertex(tri, corner[1])),
+                              f_.value(f_.vertex(tri, corner[2]))};
     for (std::size_t k = 0; k < k_; ++k) {
       Net& n = net_[k];
       for (int i = 0; i < 3; ++i) {
@@ -114,22 +133,23 @@ class CloughTocher {
     }
   }
 
+  // The centroid of a triangle's corners from Field::first.
   static Point centroid(const Point& a, const Point& b, const Point& c) {
     return {a.x + ((b.x - a.x) + (c.x - a.x)) / 3, a.y + ((b.y - a.y) + (c.y - a.y)) / 3};
   }
 
-  // Side i runs from A = p[next3(i)] to B = p[prev3(i)]; the direction d towards the
-  // neighbour's centroid (on the hull, from corner i to the side's midpoint), written
-  // d = b (B - A) + c (C - A). The determinant `det` is a third of the triangle's doubled area,
-  // within 2^-50 of the exact one, so that a sliver still gets finite weights.
-  Across direction(std::size_t tri, int i, const Point* p, const Point& c, double det) const {
+  // Side i runs from A = p[next3(i)] to B = p[prev3(i)]; the direction d towards the centroid
+  // of neighbour u across it (on the hull, u < 0, from corner i to the side's midpoint),
+  // written d = b (B - A) + c (C - A). The determinant `det` is a third of the triangle's
+  // doubled area, within 2^-50 of the exact one, so that a sliver still gets finite weights.
+  Across direction(std::int32_t u, int i, const Point* p, const Point& c, double det) const {
     const Point& a = p[next3(i)];
     const Point& e = p[prev3(i)];
     Point d;
-    const std::int32_t u = f_.neighbor(tri, i);
     if (u >= 0) {
       const auto n = static_cast<std::size_t>(u);
-      const Point o = centroid(f_.corner(n, 0), f_.corner(n, 1), f_.corner(n, 2));
+      const int s = f_.first(n);
+      const Point o = centroid(f_.corner(n, s), f_.corner(n, next3(s)), f_.corner(n, prev3(s)));
       d = {o.x - c.x, o.y - c.y};
     } else {
       d = {(a.x - p[i].x) + (e.x - p[i].x), (a.y - p[i].y) + (e.y - p[i].y)};
@@ -210,12 +230,11 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
   const MemoryReuse reuse(kReuseBytesPerPoint * n * m);
   const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
   const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
-  const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});
+  const int sweeps = detail::solve_gradients(field, tol, maxiter, threads, {grad.get(), 2 * n * m});
   // Each point's values and then its gradients, in the field's numbering.
   const detail::Block<double> both =
       values_and_gradients(who, n, Values{{field.values.get(), n * m}, m}, {grad.get(), 2 * n * m}, threads);
-  detail::answer_grid<CloughTocher>(field.field(t.neighbors, {both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out,
-                                    fill, threads);
+  detail::answer_grid<CloughTocher>(field.field({both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out, fill, threads);
   return sweeps;
 }
 

@@ -36,22 +36,51 @@ struct Field {
   std::span<const VertexId> triangles;
   std::span<const std::int32_t> neighbors;
   Values values;
+  bool from_least = false;  // every triangle stored from its least point (Renumbered's)
 
   const Point& corner(std::size_t tri, int i) const { return points[triangles[3 * tri + i]]; }
   VertexId vertex(std::size_t tri, int i) const { return triangles[3 * tri + i]; }
   std::int32_t neighbor(std::size_t tri, int i) const { return neighbors[3 * tri + i]; }
   const double* value(VertexId v) const { return values.data.data() + v * values.components; }
 
+  // The corner every answer reads triangle tri from: its least point (x, then y). Weights and
+  // corners in this rotation make the answers a function of the triangles as a set of
+  // points: the same bits whatever corner a triangle is stored from, wherever it lies in the
+  // array (which a threaded triangulation's run decides) and however the points are numbered.
+  // Inlined (a call per triangle costs more than the comparisons), without branches (which
+  // way each comparison goes is a coin's toss).
+  [[gnu::always_inline]] int first(std::size_t tri) const {
+    if (from_least) return 0;
+    const Point &a = corner(tri, 0), &b = corner(tri, 1), &c = corner(tri, 2);
+    const int ab = (a.x < b.x) | ((a.x == b.x) & (a.y < b.y)), ac = (a.x < c.x) | ((a.x == c.x) & (a.y < c.y)),
+              bc = (b.x < c.x) | ((b.x == c.x) & (b.y < c.y));
+    return ab & ac ? 0 : (1 - ab) & bc ? 1 : 2;
+  }
+  // Of two triangles with a common side, the one that answers at a point on it: the one whose
+  // corner across from it is the lesser point. `side` is tri's stored corner across from it.
+  bool answers_on_side(std::size_t tri, int side) const {
+    const std::int32_t u = neighbor(tri, side);
+    if (u < 0) return true;
+    const auto other = static_cast<std::size_t>(u);
+    const VertexId a = vertex(tri, next3(side)), b = vertex(tri, prev3(side));
+    for (int i = 0; i < 3; ++i)
+      if (const VertexId w = vertex(other, i); w != a && w != b) return lex_less(corner(tri, side), points[w]);
+    return true;
+  }
+
   // out = the barycentric interpolant of triangle tri at q, its weights within 2^-44 of the
-  // exact ones (barycentric, or `weights` when the caller has them from it): at a corner the
-  // corner's value, on a side the side's linear interpolant, bounded for the thinnest sliver.
-  void linear(std::size_t tri, const Point& q, double* out, const double* weights = nullptr) const {
+  // exact ones (barycentric from first(tri), or `weights` when the caller has them so): at a
+  // corner the corner's value, on a side the side's linear interpolant, bounded for the
+  // thinnest sliver. `from`: first(tri) where the caller has it, else -1.
+  void linear(std::size_t tri, const Point& q, double* out, const double* weights = nullptr, int from = -1) const {
+    const int s = from >= 0 ? from : first(tri);
+    const VertexId v[3] = {vertex(tri, s), vertex(tri, next3(s)), vertex(tri, prev3(s))};
     double w[3];
     if (weights != nullptr)
       std::copy_n(weights, 3, w);
     else
-      barycentric(corner(tri, 0), corner(tri, 1), corner(tri, 2), q, w);
-    const double *va = value(vertex(tri, 0)), *vb = value(vertex(tri, 1)), *vc = value(vertex(tri, 2));
+      barycentric(points[v[0]], points[v[1]], points[v[2]], q, w);
+    const double *va = value(v[0]), *vb = value(v[1]), *vc = value(v[2]);
     for (std::size_t k = 0; k < values.components; ++k) out[k] = w[0] * va[k] + w[1] * vb[k] + w[2] * vc[k];
   }
 };
@@ -60,21 +89,26 @@ struct Field {
 // values copied in that order. The triangles lie in memory in an order near in the plane; the
 // points and values in the caller's order, often a random one. Walks and answers then read
 // points near in memory instead of missing the cache at every corner, which more than pays
-// for the copy once there are about as many queries as triangles. Every step on threads.
+// for the copy once there are about as many queries as triangles. The triangles, in their
+// places, are stored from their least point (Field::first), their neighbours turned with
+// them, so that answers need not find that corner again. Every step on threads.
 struct Renumbered {
-  std::size_t count, components;
+  std::size_t count, components, triangle_count;
   std::vector<VertexId> input;  // number -> the caller's
   Block<Point> points;
   Block<double> values;
   Block<VertexId> triangles;
+  Block<std::int32_t> neighbors;
 
   Renumbered(const Field& f, unsigned threads)
       : count(f.points.size()),
         components(f.values.components),
+        triangle_count(f.triangles.size() / 3),
         input(hilbert_cells_order(f.points.data(), static_cast<std::uint32_t>(count), threads)),
         points(allocate_huge<Point>(count)),
         values(allocate_huge<double>(count * components)),
-        triangles(allocate_huge<VertexId>(f.triangles.size())) {
+        triangles(allocate_huge<VertexId>(f.triangles.size())),
+        neighbors(allocate_huge<std::int32_t>(f.triangles.size())) {
     std::vector<VertexId> id(count);
     const std::size_t m = components;
     parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
@@ -84,18 +118,24 @@ struct Renumbered {
         std::copy_n(f.value(input[k]), m, &values[k * m]);
       }
     });
-    parallel_for(f.triangles.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
-      for (std::size_t k = first; k < last; ++k) triangles[k] = id[f.triangles[k]];
+    parallel_for(triangle_count, threads, kGrain, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) {
+        const int s = f.first(k);
+        for (int i = 0; i < 3; ++i) {
+          triangles[3 * k + i] = id[f.vertex(k, (s + i) % 3)];
+          neighbors[3 * k + i] = f.neighbor(k, (s + i) % 3);
+        }
+      }
     });
   }
 
   // The renumbered field; with `other`, other values (`other_components` a point, in the
   // new numbering) in place of the caller's.
-  Field field(std::span<const std::int32_t> neighbors, std::span<const double> other = {},
-              std::size_t other_components = 0) const {
+  Field field(std::span<const double> other = {}, std::size_t other_components = 0) const {
     const Values v =
         other.empty() ? Values{{values.get(), count * components}, components} : Values{other, other_components};
-    return {{points.get(), count}, {triangles.get(), neighbors.size()}, neighbors, v};
+    const std::size_t corners = 3 * triangle_count;
+    return {{points.get(), count}, {triangles.get(), corners}, {neighbors.get(), corners}, v, true};
   }
 };
 
@@ -113,7 +153,7 @@ class Input {
                        std::to_string(count) + " " + what + " of " + std::to_string(width) + " components");
     if (count >= t.size()) {
       renumbered_.emplace(field_, threads);
-      field_ = renumbered_->field(t.neighbors);
+      field_ = renumbered_->field();
     }
   }
   Input(const Input&) = delete;
@@ -125,6 +165,17 @@ class Input {
   Field field_;
   std::optional<Renumbered> renumbered_;
 };
+
+// The triangle that answers at q, which triangle tri holds (as the walk found it): the other
+// one across a side that q lies on where answers_on_side gives it that side, so that the
+// answer is the same whichever of the two the walk reached.
+inline std::size_t settled(const Field& f, std::size_t tri, const Point& q) {
+  const Point &a = f.corner(tri, 0), &b = f.corner(tri, 1), &c = f.corner(tri, 2);
+  const int o[3] = {orient2d(b, c, q), orient2d(c, a, q), orient2d(a, b, q)};
+  if ((o[0] == 0) + (o[1] == 0) + (o[2] == 0) != 1) return tri;  // inside, or at a corner (its value)
+  const int side = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
+  return f.answers_on_side(tri, side) ? tri : static_cast<std::size_t>(f.neighbor(tri, side));
+}
 
 // Answers each query with Answer, a class built on each thread from the field (so that its
 // scratch space is reused between queries) whose operator()(tri, q, out) writes `width`
@@ -141,7 +192,7 @@ void interpolate(const char* who, std::span<const Point> points, const Triangula
     Answer answer(field);
     for (std::size_t k = first; k < last; ++k) {
       if (where[k] >= 0)
-        answer(static_cast<std::size_t>(where[k]), queries[k], &out[k * width]);
+        answer(settled(field, static_cast<std::size_t>(where[k]), queries[k]), queries[k], &out[k * width]);
       else
         std::fill_n(&out[k * width], width, fill);
     }
@@ -211,17 +262,19 @@ inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
   return lowest;
 }
 
-// Calls take(tri, node, p, w) for every node p of `grid` that triangle tri holds and takes:
-// those strictly inside, those on a hull side, those on an inner side whose other triangle has
-// a higher number, and a vertex when tri is the lowest-numbered triangle around it. So every
-// node in the closed hull is taken exactly once, by one triangle. w is p's barycentric
-// weights where the filter already gave them (as barycentric would), else null.
+// Calls take(tri, node, p, w, f.first(tri)) for every node p of `grid` that triangle tri holds and takes:
+// those strictly inside, those on a hull side, those on an inner side that answers_on_side
+// gives it, and a vertex when tri is the lowest-numbered triangle around it (at a vertex every
+// triangle answers its value). So every node in the closed hull is taken exactly once, by one
+// triangle. w is p's barycentric weights from f.first(tri) where the filter already gave them
+// (as barycentric would), else null.
 template <class Take>
 void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t tri, Take& take) {
   const std::size_t nx = grid.x.size(), ny = grid.y.size();
-  const Point& a = f.corner(tri, 0);
-  const Point& b = f.corner(tri, 1);
-  const Point& c = f.corner(tri, 2);
+  const int s = f.first(tri);
+  const Point& a = f.corner(tri, s);
+  const Point& b = f.corner(tri, next3(s));
+  const Point& c = f.corner(tri, prev3(s));
   const auto [i0, i1] = ax.within(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}));
   if (i0 == i1) return;
   const auto [j0, j1] = ay.within(std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}));
@@ -245,7 +298,7 @@ void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& 
       if (outside) continue;
       if (certain) {
         double w[3];
-        take(tri, node, p, barycentric_quick(whole, part, w) ? w : nullptr);
+        take(tri, node, p, barycentric_quick(whole, part, w) ? w : nullptr, s);
         continue;
       }
       const int o[3] = {orient2d(b, c, p), orient2d(c, a, p), orient2d(a, b, p)};
@@ -253,13 +306,12 @@ void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& 
       const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
       if (zeros == 1) {
         const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
-        const std::int32_t u = f.neighbor(tri, e);
-        if (u >= 0 && static_cast<std::size_t>(u) < tri) continue;
+        if (!f.answers_on_side(tri, (s + e) % 3)) continue;
       } else if (zeros == 2) {
         const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex
-        if (lowest_around(f, tri, corner) != tri) continue;
+        if (lowest_around(f, tri, (s + corner) % 3) != tri) continue;
       }
-      take(tri, node, p, nullptr);
+      take(tri, node, p, nullptr, s);
     }
   }
 }
@@ -283,9 +335,8 @@ void answer_grid(const Field& field, const Axis& ax, const Axis& ay, const Grid&
     std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), fill);
   });
   cover(field, ax, ay, grid, threads, [&] {
-    return [&, answer = Answer(field)](std::size_t tri, std::size_t node, const Point& p, const double* w) mutable {
-      answer(tri, p, &out[node * width], w);
-    };
+    return [&, answer = Answer(field)](std::size_t tri, std::size_t node, const Point& p, const double* w,
+                                       int from) mutable { answer(tri, p, &out[node * width], w, from); };
   });
 }
 

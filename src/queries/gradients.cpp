@@ -30,7 +30,7 @@ using detail::prev3;
 using Pair = std::array<double, 2>;
 
 // The Delaunay graph on the renumbered field's vertices (along the Hilbert curve, so that
-// neighbours are mostly near in memory), each vertex's neighbours once each; across each hull
+// neighbours are mostly near in memory), each vertex's neighbours once each, in order; across each hull
 // side, the direction the one triangle misses. A point in no triangle (a dropped duplicate)
 // has none. Its arrays are blocks written on threads, not vectors zeroed on one: at 10^6
 // points some 36 MB of fresh pages, each faulted in by the thread that first writes it.
@@ -75,6 +75,11 @@ struct Graph {
     to = detail::allocate_huge<std::uint32_t>(edges);
     detail::on_threads(
         parts, [&](unsigned p) { each(p, [&](std::uint32_t v, std::uint32_t w) { to[at[p * count + v]++] = w; }); });
+    // Each list in vertex order: the sums over it then come in an order that the triangles as a
+    // set fix, not their places in the array (which a threaded triangulation's run decides).
+    detail::parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
+      for (std::size_t v = from; v < until; ++v) std::sort(&to[offset[v]], &to[0] + offset[v + 1]);
+    });
   }
 };
 
@@ -221,9 +226,8 @@ struct Network {
 
 namespace detail {
 
-int solve_gradients(const Renumbered& field, std::span<const std::int32_t> neighbors, double tol, int maxiter,
-                    unsigned threads, std::span<double> grad) {
-  const Field f = field.field(neighbors);
+int solve_gradients(const Renumbered& field, double tol, int maxiter, unsigned threads, std::span<double> grad) {
+  const Field f = field.field();
   const std::size_t count = field.count, m = field.components;
   const Network net(f, Graph(f, threads), threads);
   const detail::Block<Pair> block = detail::allocate_huge<Pair>(count);  // each written by start first
@@ -262,7 +266,7 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
   }
   const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
   const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
-  const int sweeps = detail::solve_gradients(field, t.neighbors, tol, maxiter, threads, {grad.get(), 2 * n * m});
+  const int sweeps = detail::solve_gradients(field, tol, maxiter, threads, {grad.get(), 2 * n * m});
   detail::parallel_for(n, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
     for (std::size_t v = from; v < until; ++v) std::copy_n(&grad[2 * v * m], 2 * m, &gradients[2 * field.input[v] * m]);
   });

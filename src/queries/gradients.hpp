@@ -20,7 +20,6 @@ inline void check_sweeps(const char* who, double tol, int maxiter) {
 /// numbering: grad[2 * (v * m + k)] and the number after it are d/dx and d/dy of component k
 /// at vertex v (m components; zero at a point in no triangle). Returns the most sweeps a
 /// component took, or 0 when one did not settle within maxiter.
-int solve_gradients(const Renumbered& field, std::span<const std::int32_t> neighbors, double tol, int maxiter,
-                    unsigned threads, std::span<double> grad);
+int solve_gradients(const Renumbered& field, double tol, int maxiter, unsigned threads, std::span<double> grad);
 
 }  // namespace ridt::detail

@@ -32,6 +32,10 @@ class Sibson {
       }
     }
     dig(tri, q);
+    // Summed in an order of the points, not of the walk around the cavity (which starts where
+    // the triangles' order puts it): the same bits for the same triangles in any order.
+    std::sort(boundary_.begin(), boundary_.end(),
+              [&](const Edge& a, const Edge& b) { return lex_less(f_.points[a.to], f_.points[b.to]); });
     std::fill_n(out, m, 0.0);
     double total = 0;
     for (const Edge& e : boundary_) {
@@ -93,7 +97,9 @@ class Sibson {
     // sides v-w inside the cavity.
     std::size_t tri = e.tri;
     for (std::size_t guard = 0; guard <= cavity_.size(); ++guard) {
-      polygon_.push_back(circumcentre(rel(f_.vertex(tri, 0), q), rel(f_.vertex(tri, 1), q), rel(f_.vertex(tri, 2), q)));
+      const int s = f_.first(tri);  // the triangle read from its first corner (Field::first)
+      polygon_.push_back(
+          circumcentre(rel(f_.vertex(tri, s), q), rel(f_.vertex(tri, next3(s)), q), rel(f_.vertex(tri, prev3(s)), q)));
       if (out_edge != nullptr && tri == out_edge->tri) break;
       // v's corner i in tri: the side v -> next vertex, across from the previous corner, leads
       // on (the other side at v is the one we came by).
@@ -122,15 +128,16 @@ class Sibson {
 struct Linear {
   const Field& f;
   explicit Linear(const Field& field) : f(field) {}
-  void operator()(std::size_t tri, const Point& q, double* out, const double* weights = nullptr) const {
-    f.linear(tri, q, out, weights);
+  void operator()(std::size_t tri, const Point& q, double* out, const double* weights = nullptr, int from = -1) const {
+    f.linear(tri, q, out, weights, from);
   }
 };
 
 struct Natural {
   Sibson sibson;
   explicit Natural(const Field& field) : sibson(field) {}
-  void operator()(std::size_t tri, const Point& q, double* out, const double* /*weights*/ = nullptr) {
+  void operator()(std::size_t tri, const Point& q, double* out, const double* /*weights*/ = nullptr,
+                  int /*from*/ = -1) {
     sibson.interpolate(tri, q, out);
   }
 };

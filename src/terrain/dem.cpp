@@ -206,12 +206,12 @@ void Dem::band(std::size_t b, std::span<double> out) const {
   const std::span<const std::uint32_t> tris(members_.data() + bands_[b], bands_[b + 1] - bands_[b]);
   parallel_for(tris.size(), options_.threads, detail::kGrain / 4, [&](std::size_t first, std::size_t last) {
     detail::Natural natural(field);
-    auto take = [&](std::size_t tri, std::size_t node, const Point& p, const double* w) {
+    auto take = [&](std::size_t tri, std::size_t node, const Point& p, const double* w, int from) {
       const Point &a = field.corner(tri, 0), &c = field.corner(tri, 1), &d = field.corner(tri, 2);
       if (distance2(a, c) > longest2 || distance2(c, d) > longest2 || distance2(d, a) > longest2) return;
       switch (options_.method) {
         case Surface::Linear:
-          field.linear(tri, p, &out[node], w);
+          field.linear(tri, p, &out[node], w, from);
           break;
         case Surface::Natural:
           natural(tri, p, &out[node]);
