@@ -110,6 +110,25 @@ def test_cubic_griddata_on_a_grid_is_the_interpolators_answer(scattered):
         assert (a == -2.5).any() and (a != -2.5).sum() > a.size / 2
 
 
+def test_answers_are_the_same_bits_on_any_threads():
+    # The triangulation's order differs between thread counts (each thread makes its own
+    # region's triangles); the answers depend on the triangles alone: the same bits on 1, 2 and
+    # 3 threads, on a grid and at scattered queries, for every method.
+    rng = np.random.default_rng(6)
+    p = rng.random((60_000, 2))
+    f = np.sin(6 * p[:, 0]) * np.cos(5 * p[:, 1])
+    gx, gy = np.mgrid[0:1:300j, 0:1:200j]
+    q = rng.random((70_000, 2))
+    orders = {ridt.Delaunay(p, threads=t).simplices.tobytes() for t in (1, 2, 3)}
+    assert len(orders) > 1  # else the test would show nothing
+    for method in ("linear", "cubic", "natural"):
+        want_grid = ridt.griddata(p, f, (gx, gy), method=method, threads=1)
+        want_q = ridt.griddata(p, f, q, method=method, threads=1)
+        for t in (2, 3):
+            np.testing.assert_array_equal(ridt.griddata(p, f, (gx, gy), method=method, threads=t), want_grid)
+            np.testing.assert_array_equal(ridt.griddata(p, f, q, method=method, threads=t), want_q)
+
+
 def test_cubic_griddata_keeps_no_block_after_it():
     # Enough points for the library's blocks to be on huge pages (the ones the cache keeps):
     # under a limit of 0 the call, which keeps blocks while it runs for its later steps to
