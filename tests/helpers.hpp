@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <fstream>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -56,6 +59,26 @@ inline auto every_distribution() {
 }
 inline std::string distribution_name(const ::testing::TestParamInfo<Distribution>& info) {
   return std::string(to_string(info.param));
+}
+
+/// The same triangles in another order, each stored from another corner, as another run on
+/// threads may give them.
+inline Triangulation shuffled(const Triangulation& t, unsigned seed) {
+  const std::size_t n = t.size();
+  std::vector<std::uint32_t> place(n);
+  std::iota(place.begin(), place.end(), 0u);
+  std::mt19937_64 rng(seed);
+  std::shuffle(place.begin(), place.end(), rng);
+  Triangulation s = t;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t to = place[k], turn = rng() % 3;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const std::size_t from = 3 * k + (j + turn) % 3;
+      s.triangles[3 * to + j] = t.triangles[from];
+      s.neighbors[3 * to + j] = t.neighbors[from] < 0 ? -1 : static_cast<std::int32_t>(place[t.neighbors[from]]);
+    }
+  }
+  return s;
 }
 
 }  // namespace ridt::test

@@ -84,7 +84,8 @@ struct RasterGrid {
 struct DemOptions {
   Surface method = Surface::Linear;
   /// A cell whose centre lies in a triangle with a side longer than this gets `nodata`, so that
-  /// lakes, gaps and the hull's long edges are not bridged (infinity: none killed).
+  /// lakes, gaps and the hull's long edges are not bridged (infinity: none killed); a centre on
+  /// a side or corner of a shorter triangle too is that one's.
   double max_edge = std::numeric_limits<double>::infinity();
   /// The value of a cell outside the hull or in a killed triangle.
   double nodata = std::numeric_limits<double>::quiet_NaN();

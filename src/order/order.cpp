@@ -386,7 +386,25 @@ std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads) {
   std::vector<std::uint32_t> key(n);
   hilbert_keys(points, n, threads, key.data());
-  return sorted_by_key(key.data(), n, threads);
+  std::vector<std::uint32_t> order = sorted_by_key(key.data(), n, threads);
+  // Each run of one cell by the points (stable: equal points by index), each part of the order
+  // taking the runs that start in it.
+  parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    auto starts = [&](std::size_t k) { return k == 0 || k == n || key[order[k - 1]] != key[order[k]]; };
+    while (first < last && !starts(first)) ++first;
+    for (std::size_t begin = first; begin < last;) {
+      std::size_t end = begin + 1;
+      while (!starts(end)) ++end;
+      if (end - begin > 1)
+        std::stable_sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                         order.begin() + static_cast<std::ptrdiff_t>(end), [&](std::uint32_t a, std::uint32_t b) {
+                           const Point &p = points[a], &q = points[b];
+                           return p.x < q.x || (p.x == q.x && p.y < q.y);
+                         });
+      begin = end;
+    }
+  });
+  return order;
 }
 
 }  // namespace ridt::detail

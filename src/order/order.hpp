@@ -72,10 +72,11 @@ std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);
 /// The indices 0 .. n-1 sorted by key[i], stably (ties by index), on up to `threads` threads.
 std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads);
 
-/// The indices 0 .. n-1 of `points` sorted by their cell of hilbert_keys' curve, ties by index:
-/// coarser than hilbert_order where many points share a cell, and quicker (the keys and
-/// sorted_by_key's radix passes on up to `threads` threads); enough to lay out in memory points
-/// near in the plane.
+/// The indices 0 .. n-1 of `points` sorted by their cell of hilbert_keys' curve, the points of
+/// a cell by x, then y, then index (so that the order of distinct points does not depend on
+/// their numbering): coarser than hilbert_order where many points share a cell, and quicker
+/// (the keys and sorted_by_key's radix passes on up to `threads` threads); enough to lay out in
+/// memory points near in the plane.
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads);
 
 }  // namespace ridt::detail

@@ -29,6 +29,12 @@ inline void check_values(const char* who, std::size_t n, const Values& values) {
                      " points of " + std::to_string(values.components) + " components");
 }
 
+// Which triangles answer at the nodes of a grid: all of them, but for the DEM (its longest
+// side).
+struct EveryTriangle {
+  bool operator()(std::size_t) const { return true; }
+};
+
 // What interpolation reads: the points, the triangulation, the values (`components` numbers a
 // point: for the cubic, the values and then their gradients).
 struct Field {
@@ -57,15 +63,17 @@ struct Field {
     return ab & ac ? 0 : (1 - ab) & bc ? 1 : 2;
   }
   // Of two triangles with a common side, the one that answers at a point on it: the one whose
-  // corner across from it is the lesser point. `side` is tri's stored corner across from it.
-  bool answers_on_side(std::size_t tri, int side) const {
+  // corner across from it is the lesser point, or the one `eligible` takes. `side` is tri's
+  // stored corner across from it.
+  template <class Eligible = EveryTriangle>
+  bool answers_on_side(std::size_t tri, int side, const Eligible& eligible = {}) const {
     const std::int32_t u = neighbor(tri, side);
-    if (u < 0) return true;
+    if (u < 0 || !eligible(static_cast<std::size_t>(u))) return true;
     const auto other = static_cast<std::size_t>(u);
     const VertexId a = vertex(tri, next3(side)), b = vertex(tri, prev3(side));
     for (int i = 0; i < 3; ++i)
       if (const VertexId w = vertex(other, i); w != a && w != b) return lex_less(corner(tri, side), points[w]);
-    return true;
+    return true;  // not reached: a neighbour has a third corner
   }
 
   // out = the barycentric interpolant of triangle tri at q, its weights within 2^-44 of the
@@ -81,6 +89,11 @@ struct Field {
     else
       barycentric(points[v[0]], points[v[1]], points[v[2]], q, w);
     const double *va = value(v[0]), *vb = value(v[1]), *vc = value(v[2]);
+    for (int i = 0; i < 3; ++i)
+      if (w[i] == 1) {  // at a corner: its values themselves (whatever the others', infinite or -0)
+        std::copy_n(value(v[i]), values.components, out);
+        return;
+      }
     for (std::size_t k = 0; k < values.components; ++k) out[k] = w[0] * va[k] + w[1] * vb[k] + w[2] * vc[k];
   }
 };
@@ -241,8 +254,10 @@ class Axis {
   double lowest_ = 0, per_step_ = 0;  // nodes a unit, on average
 };
 
-// The lowest-numbered triangle around the vertex at corner i of triangle tri.
-inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
+// The lowest-numbered triangle that `eligible` takes around the vertex at corner i of triangle
+// tri (which it takes).
+template <class Eligible = EveryTriangle>
+std::size_t lowest_around(const Field& f, std::size_t tri, int i, const Eligible& eligible = {}) {
   const VertexId v = f.vertex(tri, i);
   std::size_t lowest = tri;
   // Counter-clockwise (across the side v -> next, across from the previous corner), then, if
@@ -256,20 +271,23 @@ inline std::size_t lowest_around(const Field& f, std::size_t tri, int i) {
       at = static_cast<std::size_t>(u);
       if (at == tri) return lowest;
       corner = f.vertex(at, 0) == v ? 0 : f.vertex(at, 1) == v ? 1 : 2;
-      lowest = std::min(lowest, at);
+      if (eligible(at)) lowest = std::min(lowest, at);
     }
   }
   return lowest;
 }
 
-// Calls take(tri, node, p, w, f.first(tri)) for every node p of `grid` that triangle tri holds and takes:
-// those strictly inside, those on a hull side, those on an inner side that answers_on_side
-// gives it, and a vertex when tri is the lowest-numbered triangle around it (at a vertex every
-// triangle answers its value). So every node in the closed hull is taken exactly once, by one
-// triangle. w is p's barycentric weights from f.first(tri) where the filter already gave them
-// (as barycentric would), else null.
-template <class Take>
-void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t tri, Take& take) {
+// Calls take(tri, node, p, w, f.first(tri)) for every node p of `grid` that triangle tri holds
+// and takes, where `eligible` takes tri: those strictly inside, those on a hull side, those on
+// an inner side that answers_on_side gives it, and a vertex when tri is the lowest-numbered
+// eligible triangle around it (at a vertex every triangle answers its value). So every node in
+// the closed union of the eligible triangles is taken exactly once, by one triangle. w is p's
+// barycentric weights from f.first(tri) where the filter already gave them (as barycentric
+// would), else null.
+template <class Take, class Eligible = EveryTriangle>
+void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t tri, Take& take,
+                    const Eligible& eligible = {}) {
+  if (!eligible(tri)) return;
   const std::size_t nx = grid.x.size(), ny = grid.y.size();
   const int s = f.first(tri);
   const Point& a = f.corner(tri, s);
@@ -289,9 +307,9 @@ void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& 
       // they are precise enough.
       const BoundedArea part[3] = {bounded_area(p, b, c), bounded_area(a, p, c), bounded_area(a, b, p)};
       bool certain = true, outside = false;
-      for (const BoundedArea& s : part) {
-        if (std::fabs(s.value) > s.bound)
-          outside = outside || s.value < 0;
+      for (const BoundedArea& area : part) {
+        if (std::fabs(area.value) > area.bound)
+          outside = outside || area.value < 0;
         else
           certain = false;
       }
@@ -306,10 +324,10 @@ void cover_triangle(const Field& f, const Axis& ax, const Axis& ay, const Grid& 
       const int zeros = (o[0] == 0) + (o[1] == 0) + (o[2] == 0);
       if (zeros == 1) {
         const int e = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
-        if (!f.answers_on_side(tri, (s + e) % 3)) continue;
+        if (!f.answers_on_side(tri, (s + e) % 3, eligible)) continue;
       } else if (zeros == 2) {
         const int corner = o[0] != 0 ? 0 : o[1] != 0 ? 1 : 2;  // p is this vertex
-        if (lowest_around(f, tri, (s + corner) % 3) != tri) continue;
+        if (lowest_around(f, tri, (s + corner) % 3, eligible) != tri) continue;
       }
       take(tri, node, p, nullptr, s);
     }

@@ -39,7 +39,7 @@ struct Graph {
   std::size_t edges = 0;
 
   // Each of up to four parts of the triangles counts its corners a vertex, then writes its
-  // edges after those of the parts before it: the lists as one pass in order would make them.
+  // edges after those of the parts before it; each list is sorted last.
   Graph(const detail::Field& f, unsigned threads) {
     const std::size_t count = f.points.size(), triangles = f.triangles.size() / 3;
     const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(triangles >> 16, 1, std::min(threads, 4u)));

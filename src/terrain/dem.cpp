@@ -206,9 +206,13 @@ void Dem::band(std::size_t b, std::span<double> out) const {
   const std::span<const std::uint32_t> tris(members_.data() + bands_[b], bands_[b + 1] - bands_[b]);
   parallel_for(tris.size(), options_.threads, detail::kGrain / 4, [&](std::size_t first, std::size_t last) {
     detail::Natural natural(field);
-    auto take = [&](std::size_t tri, std::size_t node, const Point& p, const double* w, int from) {
+    // A triangle with a side over max_edge answers nowhere; a node on its side or corner goes to
+    // a neighbour that does.
+    auto short_enough = [&](std::size_t tri) {
       const Point &a = field.corner(tri, 0), &c = field.corner(tri, 1), &d = field.corner(tri, 2);
-      if (distance2(a, c) > longest2 || distance2(c, d) > longest2 || distance2(d, a) > longest2) return;
+      return distance2(a, c) <= longest2 && distance2(c, d) <= longest2 && distance2(d, a) <= longest2;
+    };
+    auto take = [&](std::size_t tri, std::size_t node, const Point& p, const double* w, int from) {
       switch (options_.method) {
         case Surface::Linear:
           field.linear(tri, p, &out[node], w, from);
@@ -221,7 +225,7 @@ void Dem::band(std::size_t b, std::span<double> out) const {
           break;
       }
     };
-    for (std::size_t k = first; k < last; ++k) detail::cover_triangle(field, ax, ay, grid, tris[k], take);
+    for (std::size_t k = first; k < last; ++k) detail::cover_triangle(field, ax, ay, grid, tris[k], take, short_enough);
   });
 }
 

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "helpers.hpp"
@@ -228,64 +229,91 @@ TEST(Cubic, GridEqualsTheLocatedQueriesAndThreadsGiveTheSameBits) {
   }
 }
 
-// The same triangles in another order, each stored from another corner, as another run on
-// threads may give them.
-Triangulation shuffled(const Triangulation& t, unsigned seed) {
-  const std::size_t n = t.size();
-  std::vector<std::uint32_t> place(n);
-  std::iota(place.begin(), place.end(), 0u);
-  std::mt19937_64 rng(seed);
-  std::shuffle(place.begin(), place.end(), rng);
-  Triangulation s = t;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t to = place[k], turn = rng() % 3;
-    for (std::size_t j = 0; j < 3; ++j) {
-      const std::size_t from = 3 * k + (j + turn) % 3;
-      s.triangles[3 * to + j] = t.triangles[from];
-      s.neighbors[3 * to + j] = t.neighbors[from] < 0 ? -1 : static_cast<std::int32_t>(place[t.neighbors[from]]);
-    }
-  }
-  return s;
+// The same points numbered by `place` (point i becomes place[i]), the triangles with them.
+Triangulation renumbered(const Triangulation& t, const std::vector<std::uint32_t>& place) {
+  Triangulation r = t;
+  for (VertexId& v : r.triangles) v = place[v];
+  return r;
 }
 
 TEST(Cubic, AnswersDependOnTheTrianglesAloneNotTheirOrderOrFirstCorners) {
-  // A lattice (grid nodes on vertices and on sides, every square cocircular) and uniform
-  // points; linear, cubic and natural neighbours, on a grid and at located queries (few: not
-  // renumbered; many: renumbered), gradients and griddata: the same bits from the shuffled
-  // triangulation.
-  for (const Distribution dist : {Distribution::Grid, Distribution::Uniform}) {
-    const std::vector<Point> pts = generate(dist, 3000, 4);
-    const Triangulation t = triangulate(pts), s = shuffled(t, 9);
-    ASSERT_EQ(test::compare(t, s), "");
+  // A lattice (grid nodes on vertices and on sides, every square cocircular), uniform points,
+  // and uniform points with a blob of 500 in one cell of the renumbering's curve; the gradients, linear,
+  // cubic and natural neighbours on grids and at located queries, many (the field renumbered)
+  // and few (not), and griddata: the same bits from the triangles shuffled and each stored
+  // from another corner, and from the points numbered otherwise.
+  for (const Distribution dist : {Distribution::Grid, Distribution::Uniform, Distribution::Clusters}) {
+    std::vector<Point> pts = generate(dist, 3000, 4);
+    const std::string name = dist == Distribution::Clusters ? "uniform with a blob" : std::string(to_string(dist));
+    if (dist == Distribution::Clusters) {  // here: the blob
+      pts = generate(Distribution::Uniform, 2500, 4);
+      for (const Point& p : generate(Distribution::Uniform, 500, 6))
+        pts.push_back({0.5 + 1e-7 * p.x, 0.5 + 1e-7 * p.y});
+    }
+    const Triangulation t = triangulate(pts);
     double x0 = pts[0].x, x1 = x0, y0 = pts[0].y, y1 = y0;
     for (const Point& p : pts)
       x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
-    std::vector<double> x, y, f;
-    for (int i = 0; i <= 120; ++i) x.push_back(x0 + (x1 - x0) * i / 120), y.push_back(y0 + (y1 - y0) * i / 120);
-    for (const Point& p : pts) f.push_back(std::sin(3 * p.x / (x1 - x0)) * p.y + p.x);
-    const Grid grid{x, y, true};
+    auto axis = [](double from, double to, int steps) {
+      std::vector<double> v;
+      for (int i = 0; i <= steps; ++i) v.push_back(from + (to - from) * i / steps);
+      return v;
+    };
+    const std::vector<double> x = axis(x0, x1, 120), y = axis(y0, y1, 120), xs = axis(x0, x1, 24),
+                              ys = axis(y0, y1, 24);
+    const Grid many{x, y, true}, few{xs, ys, false};  // 14,641 nodes and 625, about 6,000 triangles
     std::vector<Point> q;
     for (const double yy : y)
       for (const double xx : x) q.push_back({xx, yy});
-    auto answers = [&](const Triangulation& tri) {
-      std::vector<double> g(2 * pts.size()), linear_grid(grid.size()), linear_q(q.size()), cubic_grid(grid.size()),
-          cubic_q(q.size()), griddata(grid.size()), natural_grid(grid.size()), natural_q(q.size());
-      estimate_gradients(pts, tri, Values{f, 1}, g, 1e-9, 400, 2);
-      interpolate_linear(pts, tri, Values{f, 1}, grid, linear_grid, -1, 2);
-      interpolate_linear(pts, tri, Values{f, 1}, q, linear_q, -1, 2);
-      interpolate_clough_tocher(pts, tri, Values{f, 1}, g, grid, cubic_grid, -1, 2);
-      interpolate_clough_tocher(pts, tri, Values{f, 1}, g, q, cubic_q, -1, 2);
-      griddata_cubic(pts, tri, Values{f, 1}, grid, griddata, -1, 1e-9, 400, 2);
-      interpolate_natural_neighbor(pts, tri, Values{f, 1}, grid, natural_grid, -1, 2);
-      interpolate_natural_neighbor(pts, tri, Values{f, 1}, std::span(q).first(2000), std::span(natural_q).first(2000),
-                                   -1, 2);
-      return std::vector<std::vector<double>>{g,       linear_grid, linear_q,     cubic_grid,
-                                              cubic_q, griddata,    natural_grid, natural_q};
+    const std::span<const Point> q_few = std::span<const Point>(q).subspan(7000, 500);
+    std::vector<double> f;
+    for (const Point& p : pts) f.push_back(std::sin(3 * (p.x - x0) / (x1 - x0)) * p.y + p.x);
+    // Every answer; the gradients in the caller's numbering of `place`.
+    auto answers = [&](const std::vector<Point>& p, const Triangulation& tri, const std::vector<double>& v,
+                       const std::vector<std::uint32_t>& place) {
+      std::vector<std::vector<double>> r;
+      std::vector<double> g(2 * p.size()), out;
+      estimate_gradients(p, tri, Values{v, 1}, g, 1e-9, 400, 2);
+      std::vector<double> g_back(g.size());
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        g_back[2 * i] = g[2 * place[i]], g_back[2 * i + 1] = g[2 * place[i] + 1];
+      r.push_back(g_back);
+      for (const Grid* grid : {&many, &few}) {
+        out.assign(grid->size(), 0);
+        interpolate_linear(p, tri, Values{v, 1}, *grid, out, -1, 2), r.push_back(out);
+        interpolate_clough_tocher(p, tri, Values{v, 1}, g, *grid, out, -1, 2), r.push_back(out);
+        interpolate_natural_neighbor(p, tri, Values{v, 1}, *grid, out, -1, 2), r.push_back(out);
+        griddata_cubic(p, tri, Values{v, 1}, *grid, out, -1, 1e-9, 400, 2), r.push_back(out);
+      }
+      for (const std::span<const Point> at : {std::span<const Point>(q), q_few}) {
+        out.assign(at.size(), 0);
+        interpolate_linear(p, tri, Values{v, 1}, at, out, -1, 2), r.push_back(out);
+        interpolate_clough_tocher(p, tri, Values{v, 1}, g, at, out, -1, 2), r.push_back(out);
+        if (at.size() < 1000) interpolate_natural_neighbor(p, tri, Values{v, 1}, at, out, -1, 2), r.push_back(out);
+      }
+      return r;
     };
-    const auto want = answers(t), got = answers(s);
-    const char* what[] = {"gradients",     "linear grid", "linear queries", "cubic grid",
-                          "cubic queries", "griddata",    "natural grid",   "natural queries"};
-    for (std::size_t k = 0; k < want.size(); ++k) EXPECT_EQ(want[k], got[k]) << to_string(dist) << ": " << what[k];
+    std::vector<std::uint32_t> same(pts.size()), place(pts.size());
+    std::iota(same.begin(), same.end(), 0u);
+    std::iota(place.begin(), place.end(), 0u);
+    std::shuffle(place.begin(), place.end(), std::mt19937_64(5));
+    std::vector<Point> moved(pts.size());
+    std::vector<double> f_moved(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) moved[place[i]] = pts[i], f_moved[place[i]] = f[i];
+    const Triangulation s = test::shuffled(t, 9);
+    ASSERT_EQ(test::compare(t, s), "");
+    const auto want = answers(pts, t, f, same);
+    const auto got_shuffled = answers(pts, s, f, same);
+    const auto got_renumbered = answers(moved, test::shuffled(renumbered(t, place), 3), f_moved, place);
+    const char* what[] = {"gradients",         "many nodes linear",  "many nodes cubic", "many nodes natural",
+                          "many griddata",     "few nodes linear",   "few nodes cubic",  "few nodes natural",
+                          "few griddata",      "queries linear",     "queries cubic",    "few queries linear",
+                          "few queries cubic", "few queries natural"};
+    ASSERT_EQ(want.size(), std::size(what));
+    for (std::size_t k = 0; k < want.size(); ++k) {
+      EXPECT_EQ(want[k], got_shuffled[k]) << name << ", shuffled: " << what[k];
+      EXPECT_EQ(want[k], got_renumbered[k]) << name << ", renumbered: " << what[k];
+    }
   }
 }
 

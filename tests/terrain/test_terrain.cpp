@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "helpers.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/terrain.hpp"
 
@@ -61,6 +62,39 @@ TEST(RasterGrid, EdgesOnMultiplesOfTheCell) {
   EXPECT_THROW(RasterGrid::around(0, 0, 1, 1, std::nan("")), InputError);
   EXPECT_THROW(RasterGrid::around(1, 0, 0, 1, 1), InputError);
   EXPECT_THROW(RasterGrid::around(0, 0, 1e9, 1e9, 1e-3), InputError);
+}
+
+// A DEM with a max_edge gives the same cells from the triangles in any order and stored from
+// any corner: a cell centre on a vertex or side shared by a short and a long triangle is the
+// short one's. Cell centres here are the vertices of a lattice, with far points whose long
+// triangles reach it.
+TEST(Dem, TheSameCellsFromTheTrianglesInAnyOrder) {
+  std::vector<Point> p;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) p.push_back({i + 0.5, j + 0.5});
+  for (const Point& far : {Point{-30, 10.2}, Point{50, 9.7}, Point{10.3, -30}, Point{9.6, 50}}) p.push_back(far);
+  const std::vector<double> z = heights(p);
+  const Triangulation t = triangulate(p), s = test::shuffled(t, 3);
+  const RasterGrid g = RasterGrid::around(0, 0, 20, 20, 1);
+  for (const Surface m : {Surface::Linear, Surface::Natural})
+    for (const unsigned threads : {1u, 2u}) {
+      DemOptions o;
+      o.method = m;
+      o.threads = threads;
+      o.max_edge = 3;
+      const std::vector<double> want = Dem(p, t, z, g, o).all(), got = Dem(p, s, z, g, o).all();
+      ASSERT_EQ(want.size(), got.size());
+      std::size_t on_vertices = 0;
+      for (std::size_t k = 0; k < want.size(); ++k) {
+        EXPECT_TRUE(same(want[k], got[k])) << to_string(m) << " cell " << k;
+        const double i = g.x(k % g.nx) - 0.5, j = g.y(k / g.nx) - 0.5;  // the lattice point there, if any
+        if (i == std::floor(i) && j == std::floor(j) && i >= 0 && i < 20 && j >= 0 && j < 20) {
+          EXPECT_EQ(want[k], z[static_cast<std::size_t>(i) * 20 + static_cast<std::size_t>(j)]) << to_string(m);
+          ++on_vertices;
+        }
+      }
+      EXPECT_EQ(on_vertices, 400u);  // every lattice point has its cell
+    }
 }
 
 // Every cell equals the interpolation call at its centre, for each method and thread count.
