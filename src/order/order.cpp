@@ -370,15 +370,25 @@ std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n) {
   return order;
 }
 
-std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads) {
-  const Block<std::uint64_t> a = allocate_huge<std::uint64_t>(n), b = allocate_huge<std::uint64_t>(n);
+namespace {
+
+// Each index i as key[i] << 32 | i, sorted (radix passes on up to `threads` threads).
+Block<std::uint64_t> sorted_words(const std::uint32_t* key, std::uint32_t n, unsigned threads) {
+  Block<std::uint64_t> a = allocate_huge<std::uint64_t>(n), b = allocate_huge<std::uint64_t>(n);
   parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) a[i] = std::uint64_t{key[i]} << 32 | i;
   });
   sort_by_key(a.get(), b.get(), n, threads);
+  return b;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads) {
+  const Block<std::uint64_t> words = sorted_words(key, n, threads);
   std::vector<std::uint32_t> ids(n);
   parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i) ids[i] = static_cast<std::uint32_t>(b[i]);
+    for (std::size_t i = first; i < last; ++i) ids[i] = static_cast<std::uint32_t>(words[i]);
   });
   return ids;
 }
@@ -386,15 +396,17 @@ std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads) {
   std::vector<std::uint32_t> key(n);
   hilbert_keys(points, n, threads, key.data());
-  std::vector<std::uint32_t> order = sorted_by_key(key.data(), n, threads);
-  // Each run of one cell by the points (stable: equal points by index), each part of the order
-  // taking the runs that start in it.
+  const Block<std::uint64_t> words = sorted_words(key.data(), n, threads);
+  std::vector<std::uint32_t> order(n);
+  // Each part of the order takes the runs of one cell that start in it, and sorts each by the
+  // points (stable: equal points by index).
   parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
-    auto starts = [&](std::size_t k) { return k == 0 || k == n || key[order[k - 1]] != key[order[k]]; };
+    auto starts = [&](std::size_t k) { return k == 0 || k == n || words[k - 1] >> 32 != words[k] >> 32; };
     while (first < last && !starts(first)) ++first;
     for (std::size_t begin = first; begin < last;) {
       std::size_t end = begin + 1;
       while (!starts(end)) ++end;
+      for (std::size_t k = begin; k < end; ++k) order[k] = static_cast<std::uint32_t>(words[k]);
       if (end - begin > 1)
         std::stable_sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
                          order.begin() + static_cast<std::ptrdiff_t>(end), [&](std::uint32_t a, std::uint32_t b) {

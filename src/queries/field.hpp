@@ -56,8 +56,10 @@ struct Field {
   // Inlined (a call per triangle costs more than the comparisons), without branches (which
   // way each comparison goes is a coin's toss).
   [[gnu::always_inline]] int first(std::size_t tri) const {
-    if (from_least) return 0;
-    const Point &a = corner(tri, 0), &b = corner(tri, 1), &c = corner(tri, 2);
+    return from_least ? 0 : least(corner(tri, 0), corner(tri, 1), corner(tri, 2));
+  }
+  // Which of three distinct points is the least.
+  [[gnu::always_inline]] static int least(const Point& a, const Point& b, const Point& c) {
     const int ab = (a.x < b.x) | ((a.x == b.x) & (a.y < b.y)), ac = (a.x < c.x) | ((a.x == c.x) & (a.y < c.y)),
               bc = (b.x < c.x) | ((b.x == c.x) & (b.y < c.y));
     return ab & ac ? 0 : (1 - ab) & bc ? 1 : 2;
@@ -80,7 +82,8 @@ struct Field {
   // exact ones (barycentric from first(tri), or `weights` when the caller has them so): at a
   // corner the corner's value, on a side the side's linear interpolant, bounded for the
   // thinnest sliver. `from`: first(tri) where the caller has it, else -1.
-  void linear(std::size_t tri, const Point& q, double* out, const double* weights = nullptr, int from = -1) const {
+  [[gnu::always_inline]] void linear(std::size_t tri, const Point& q, double* out, const double* weights = nullptr,
+                                     int from = -1) const {
     const int s = from >= 0 ? from : first(tri);
     const VertexId v[3] = {vertex(tri, s), vertex(tri, next3(s)), vertex(tri, prev3(s))};
     double w[3];
@@ -131,13 +134,18 @@ struct Renumbered {
         std::copy_n(f.value(input[k]), m, &values[k * m]);
       }
     });
+    parallel_for(f.triangles.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) triangles[k] = id[f.triangles[k]];
+    });
+    // Then each turned to its first corner, found among the copied points (which lie near one
+    // another in memory as the triangles do), in a pass of its own: the one above would wait
+    // for each number it reads at random before it could read a point.
     parallel_for(triangle_count, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        const int s = f.first(k);
-        for (int i = 0; i < 3; ++i) {
-          triangles[3 * k + i] = id[f.vertex(k, (s + i) % 3)];
-          neighbors[3 * k + i] = f.neighbor(k, (s + i) % 3);
-        }
+        VertexId* v = &triangles[3 * k];
+        const int s = Field::least(points[v[0]], points[v[1]], points[v[2]]);
+        std::rotate(v, v + s, v + 3);
+        for (int i = 0; i < 3; ++i) neighbors[3 * k + i] = f.neighbor(k, (s + i) % 3);
       }
     });
   }
