@@ -207,6 +207,13 @@ TEST(Partition, ThreadsShareTheRoundsAndFewPointsArePutOff) {
 // more. (Large enough under the sanitizers too: a thread asks for points only when another
 // has some thousands left.)
 TEST(Partition, AThreadThatFallsBehindGivesPointsAway) {
+  // The nap: longer under the sanitizers, whose threads run many times slower (two awake
+  // threads sharing one core besides).
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
+  static constexpr std::chrono::milliseconds kNap{400};
+#else
+  static constexpr std::chrono::milliseconds kNap{100};
+#endif
   const std::vector<Point> pts = generate(Distribution::Uniform, 240000, 13);
   const Triangulation serial = triangulate(pts);
   for (const unsigned threads : {2u, 3u}) {
@@ -214,7 +221,7 @@ TEST(Partition, AThreadThatFallsBehindGivesPointsAway) {
     o.method = Method::Partition;
     o.threads = threads;
     o.progress = [](double share) {
-      if (share < 1) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      if (share < 1) std::this_thread::sleep_for(kNap);
     };
     const Triangulation t = triangulate(pts, o);
     EXPECT_EQ(audit(pts, t), "") << threads << " threads";
