@@ -102,12 +102,14 @@ struct Field {
 };
 
 // The field renumbered for many queries: the points along the Hilbert curve, their points and
-// values copied in that order. The triangles lie in memory in an order near in the plane; the
-// points and values in the caller's order, often a random one. Walks and answers then read
-// points near in memory instead of missing the cache at every corner, which more than pays
-// for the copy once there are about as many queries as triangles. The triangles, in their
-// places, are stored from their least point (Field::first), their neighbours turned with
-// them, so that answers need not find that corner again. Every step on threads.
+// values copied in that order, and the triangles sorted by their least point's new number (the
+// point they are read from, Field::first, stored first, neighbours turned and renumbered with
+// them). The caller's points and values come in its order, often a random one, and a threaded
+// triangulation's triangles in the order its run made them, so that a triangle's neighbours
+// and corners lie anywhere in memory. Renumbered, walks, sweeps and answers read points,
+// values and triangles near in memory instead of missing the cache at every corner, which
+// more than pays for the copy once there are about as many queries as triangles. Every step
+// on threads.
 struct Renumbered {
   std::size_t count, components, triangle_count;
   std::vector<VertexId> input;  // number -> the caller's
@@ -125,7 +127,7 @@ struct Renumbered {
         values(allocate_huge<double>(count * components)),
         triangles(allocate_huge<VertexId>(f.triangles.size())),
         neighbors(allocate_huge<std::int32_t>(f.triangles.size())) {
-    std::vector<VertexId> id(count);
+    const Block<VertexId> id = allocate_huge<VertexId>(count);
     const std::size_t m = components;
     parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
@@ -134,18 +136,33 @@ struct Renumbered {
         std::copy_n(f.value(input[k]), m, &values[k * m]);
       }
     });
-    parallel_for(f.triangles.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
-      for (std::size_t k = first; k < last; ++k) triangles[k] = id[f.triangles[k]];
-    });
-    // Then each turned to its first corner, found among the copied points (which lie near one
-    // another in memory as the triangles do), in a pass of its own: the one above would wait
-    // for each number it reads at random before it could read a point.
-    parallel_for(triangle_count, threads, kGrain, [&](std::size_t first, std::size_t last) {
+    // Each triangle's first corner, found among the copied points (near one another in memory),
+    // and that corner's new number: the key the triangles are sorted by. `place` then becomes
+    // each triangle's new place, which its neighbours are renumbered to.
+    const std::size_t t = triangle_count;
+    const Block<std::uint32_t> place = allocate_huge<std::uint32_t>(t);
+    const Block<std::uint8_t> turn = allocate_huge<std::uint8_t>(t);
+    parallel_for(t, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        VertexId* v = &triangles[3 * k];
+        const VertexId v[3] = {id[f.vertex(k, 0)], id[f.vertex(k, 1)], id[f.vertex(k, 2)]};
         const int s = Field::least(points[v[0]], points[v[1]], points[v[2]]);
-        std::rotate(v, v + s, v + 3);
-        for (int i = 0; i < 3; ++i) neighbors[3 * k + i] = f.neighbor(k, (s + i) % 3);
+        place[k] = v[s];
+        turn[k] = static_cast<std::uint8_t>(s);
+      }
+    });
+    const std::vector<std::uint32_t> old = sorted_by_key(place.get(), static_cast<std::uint32_t>(t), threads);
+    parallel_for(t, threads, kGrain, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) place[old[k]] = static_cast<std::uint32_t>(k);
+    });
+    parallel_for(t, threads, kGrain, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) {
+        const std::size_t o = old[k];
+        const int s = turn[o];
+        for (int i = 0; i < 3; ++i) {
+          triangles[3 * k + i] = id[f.vertex(o, (s + i) % 3)];
+          const std::int32_t u = f.neighbor(o, (s + i) % 3);
+          neighbors[3 * k + i] = u < 0 ? u : static_cast<std::int32_t>(place[static_cast<std::size_t>(u)]);
+        }
       }
     });
   }
