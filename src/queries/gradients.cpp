@@ -230,8 +230,10 @@ int solve_gradients(const Renumbered& field, double tol, int maxiter, unsigned t
   const Field f = field.field();
   const std::size_t count = field.count, m = field.components;
   const Network net(f, Graph(f, threads), threads);
-  const detail::Block<Pair> block = detail::allocate_huge<Pair>(count);  // each written by start first
-  const std::span<Pair> g(block.get(), count);
+  // Each component's gradients as the sweeps take them, pairs; with one component, that is
+  // grad itself (its pairs lie side by side there; each written by start first).
+  const detail::Block<Pair> block = m == 1 ? nullptr : detail::allocate_huge<Pair>(count);
+  const std::span<Pair> g(m == 1 ? reinterpret_cast<Pair*>(grad.data()) : block.get(), count);
   int most = 0;
   bool converged = true;
   for (std::size_t k = 0; k < m; ++k) {
@@ -242,9 +244,10 @@ int solve_gradients(const Renumbered& field, double tol, int maxiter, unsigned t
       if (net.sweep(bk, g, threads) < tol) done = sweep;
     converged = converged && done > 0;
     most = std::max(most, done);
-    parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
-      for (std::size_t v = from; v < until; ++v) std::copy_n(g[v].data(), 2, &grad[2 * (v * m + k)]);
-    });
+    if (m > 1)
+      parallel_for(count, threads, 1 << 14, [&](std::size_t from, std::size_t until) {
+        for (std::size_t v = from; v < until; ++v) std::copy_n(g[v].data(), 2, &grad[2 * (v * m + k)]);
+      });
   }
   return converged ? most : 0;
 }
