@@ -74,6 +74,7 @@ using Code = std::function<Result(const ridt::Pslg&, const Args&)>;
 
 Result run_ridt(const ridt::Pslg& g, const Args& a, unsigned threads) {
   ridt::Options o;
+  o.method = ridt::Method::Auto;  // as the tool and Python take it: partition on more than one thread
   o.threads = threads;
   ridt::Domain d;
   d.convex_hull = false;
