@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "order/random.hpp"
+#include "predicates/predicates.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 
@@ -393,6 +394,23 @@ std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t
   return ids;
 }
 
+void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned threads) {
+  // Each part of the items counts its own a key, then places its items after those of the
+  // same key in the parts before it.
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n >> 16, 1, std::max(threads, 1u)));
+  auto each = [&](unsigned p, auto&& visit) {
+    for (std::size_t i = n * p / parts; i < n * (p + 1) / parts; ++i) visit(i);
+  };
+  const Block<std::uint32_t> at = allocate_huge<std::uint32_t>(parts * keys);  // at[p * keys + key]
+  parallel_for(parts * keys, threads, 1 << 16,
+               [&](std::size_t first, std::size_t last) { std::fill(&at[first], &at[0] + last, 0u); });
+  on_threads(parts, [&](unsigned p) { each(p, [&](std::size_t i) { ++at[p * keys + key[i]]; }); });
+  std::uint32_t sum = 0;
+  for (std::size_t k = 0; k < keys; ++k)
+    for (unsigned p = 0; p < parts; ++p) sum += std::exchange(at[p * keys + k], sum);
+  on_threads(parts, [&](unsigned p) { each(p, [&](std::size_t i) { key[i] = at[p * keys + key[i]]++; }); });
+}
+
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads) {
   std::vector<std::uint32_t> key(n);
   hilbert_keys(points, n, threads, key.data());
@@ -409,10 +427,8 @@ std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_
       for (std::size_t k = begin; k < end; ++k) order[k] = static_cast<std::uint32_t>(words[k]);
       if (end - begin > 1)
         std::stable_sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
-                         order.begin() + static_cast<std::ptrdiff_t>(end), [&](std::uint32_t a, std::uint32_t b) {
-                           const Point &p = points[a], &q = points[b];
-                           return p.x < q.x || (p.x == q.x && p.y < q.y);
-                         });
+                         order.begin() + static_cast<std::ptrdiff_t>(end),
+                         [&](std::uint32_t a, std::uint32_t b) { return lex_less(points[a], points[b]); });
       begin = end;
     }
   });

@@ -72,6 +72,11 @@ std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);
 /// The indices 0 .. n-1 sorted by key[i], stably (ties by index), on up to `threads` threads.
 std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads);
 
+/// Each key[i] (below `keys`) replaced by i's place when 0 .. n-1 are sorted by key, stably (ties
+/// by index): a counting sort on up to `threads` threads, for keys of a small range (some
+/// vertex of each triangle, say), in `keys` numbers a thread of memory.
+void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned threads);
+
 /// The indices 0 .. n-1 of `points` sorted by their cell of hilbert_keys' curve, the points of
 /// a cell by x, then y, then index (so that the order of distinct points does not depend on
 /// their numbering): coarser than hilbert_order where many points share a cell, and quicker

@@ -150,18 +150,15 @@ struct Renumbered {
         turn[k] = static_cast<std::uint8_t>(s);
       }
     });
-    const std::vector<std::uint32_t> old = sorted_by_key(place.get(), static_cast<std::uint32_t>(t), threads);
-    parallel_for(t, threads, kGrain, [&](std::size_t first, std::size_t last) {
-      for (std::size_t k = first; k < last; ++k) place[old[k]] = static_cast<std::uint32_t>(k);
-    });
+    places_by_key(place.get(), t, count, threads);
     parallel_for(t, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        const std::size_t o = old[k];
-        const int s = turn[o];
+        const std::size_t to = place[k];
+        const int s = turn[k];
         for (int i = 0; i < 3; ++i) {
-          triangles[3 * k + i] = id[f.vertex(o, (s + i) % 3)];
-          const std::int32_t u = f.neighbor(o, (s + i) % 3);
-          neighbors[3 * k + i] = u < 0 ? u : static_cast<std::int32_t>(place[static_cast<std::size_t>(u)]);
+          triangles[3 * to + i] = id[f.vertex(k, (s + i) % 3)];
+          const std::int32_t u = f.neighbor(k, (s + i) % 3);
+          neighbors[3 * to + i] = u < 0 ? u : static_cast<std::int32_t>(place[static_cast<std::size_t>(u)]);
         }
       }
     });
