@@ -84,6 +84,28 @@ TEST(HilbertOrder, SortsByKeyAndKeepsEveryIndex) {
   EXPECT_LT(sum / 4999, 0.05);
 }
 
+// The counting sort's places are those of a stable sort, on any number of threads: keys of a
+// small range repeated many times (as a vertex is the least corner of several triangles), past
+// the size where the items are cut into parts.
+TEST(PlacesByKey, AreTheStableSortsPlacesOnAnyThreads) {
+  const std::size_t n = 300000, keys = 70000;
+  std::vector<std::uint32_t> key(n);
+  std::uint64_t z = 99;
+  for (std::uint32_t& k : key) z = z * 6364136223846793005u + 1442695040888963407u, k = (z >> 33) % keys;
+  std::vector<std::uint32_t> order(n);
+  for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+  std::vector<std::uint32_t> expected(n);
+  for (std::uint32_t k = 0; k < n; ++k) expected[order[k]] = k;
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    std::vector<std::uint32_t> place = key;
+    places_by_key(place.data(), n, keys, threads);
+    EXPECT_EQ(place, expected) << threads << " threads";
+  }
+  std::vector<std::uint32_t> none;
+  places_by_key(none.data(), 0, 5, 2);  // nothing to place
+}
+
 // The BRIO order: a permutation whose rounds are sorted along the curve, the keys handed back
 // in the order's terms, and the same order from any number of threads (the permutation runs
 // beside the keys on more than one).
