@@ -102,8 +102,13 @@ void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain
 ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
                                                  const Options& options, const Domain& domain, const Quality& quality) {
   check_input(points, segments, domain, quality);
+  const bool refined = quality.enabled() ||
+      std::any_of(domain.regions.begin(), domain.regions.end(), [](const Region& g) { return g.max_area > 0; });
+  // Refinement's points depend on the order it meets the triangles in: from the canonical
+  // order, the same mesh whatever method and threads made the Delaunay triangulation. The
+  // constrained triangulation alone is unique whatever the order.
   Options plain = options;
-  plain.canonical_order = false;
+  plain.canonical_order = refined;
   ConstrainedTriangulation out;
   static_cast<Triangulation&>(out) = triangulate(points, plain);
   if (out.size() == 0) return out;
@@ -123,8 +128,6 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (Point& h : holes) h = scaled(h, scale);
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
   const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
-  const bool refined = quality.enabled() ||
-      std::any_of(domain.regions.begin(), domain.regions.end(), [](const Region& g) { return g.max_area > 0; });
   if (refined) {
     detail::Refinement r{quality.min_angle,
                          std::ldexp(quality.max_area, 2 * scale),

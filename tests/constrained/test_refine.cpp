@@ -68,6 +68,29 @@ TEST(Refine, TheCoastlineToEveryAngle) {
   for (std::size_t k = 0; k < m.t.size(); ++k) ASSERT_LE(area(m, k), 1e-4);
 }
 
+// The same mesh, point for point and triangle for triangle, whichever method and threads made
+// the Delaunay triangulation it starts from (their triangles come in other orders).
+TEST(Refine, TheSameMeshOnAnyThreads) {
+  const Pslg g = generate_coastline(5000, 3, 3);
+  Domain d;
+  d.holes = g.holes;
+  Quality q;
+  q.min_angle = 30;
+  Options serial;
+  const ConstrainedTriangulation one = triangulate_constrained(g.points, g.segments, serial, d, q);
+  EXPECT_GT(one.steiner.size(), 1000u);
+  for (const unsigned threads : {2u, 3u}) {
+    SCOPED_TRACE(threads);
+    Options o;
+    o.method = Method::Auto;
+    o.threads = threads;
+    const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, d, q);
+    EXPECT_EQ(t.stats.method, Method::Partition);
+    EXPECT_EQ(t.steiner, one.steiner);
+    EXPECT_EQ(t.triangles, one.triangles);
+  }
+}
+
 TEST(Refine, ASquareWithAHoleCoversItsAreaExactly) {
   Pslg g;
   g.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}};
