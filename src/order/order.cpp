@@ -395,9 +395,9 @@ std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t
 }
 
 void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned threads) {
-  // Each part of the items counts its own a key, then places its items after those of the
-  // same key in the parts before it.
-  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n >> 16, 1, std::max(threads, 1u)));
+  // Each part of the items (at most four: each holds a count a key) counts its own a key, then
+  // places its items after those of the same key in the parts before it.
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n >> 16, 1, std::clamp(threads, 1u, 4u)));
   auto each = [&](unsigned p, auto&& visit) {
     for (std::size_t i = n * p / parts; i < n * (p + 1) / parts; ++i) visit(i);
   };

@@ -74,7 +74,7 @@ std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t
 
 /// Each key[i] (below `keys`) replaced by i's place when 0 .. n-1 are sorted by key, stably (ties
 /// by index): a counting sort on up to `threads` threads, for keys of a small range (some
-/// vertex of each triangle, say), in `keys` numbers a thread of memory.
+/// vertex of each triangle, say), in `keys` numbers of memory for each of up to four threads.
 void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned threads);
 
 /// The indices 0 .. n-1 of `points` sorted by their cell of hilbert_keys' curve, the points of
