@@ -281,7 +281,9 @@ class Kernel {
     Triangle& r = tris_[t];
     store_word(r.v[0], a), store_word(r.v[1], b), store_word(r.v[2], c);
     store_link(r.n[0], na), store_link(r.n[1], nb), store_link(r.n[2], nc);
-    r.child = s.owner;  // published by the parent's release store
+    // Published by the parent's release store; atomic all the same, since a thread that
+    // prefetches around its leaf may follow a link to this record while it is being made.
+    store_word(r.child, s.owner);
     if (s.owner != 0) s.made.push_back(t);
   }
 
