@@ -385,15 +385,6 @@ Block<std::uint64_t> sorted_words(const std::uint32_t* key, std::uint32_t n, uns
 
 }  // namespace
 
-std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads) {
-  const Block<std::uint64_t> words = sorted_words(key, n, threads);
-  std::vector<std::uint32_t> ids(n);
-  parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i) ids[i] = static_cast<std::uint32_t>(words[i]);
-  });
-  return ids;
-}
-
 void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned threads) {
   // Each part of the items (at most four: each holds a count a key) counts its own a key, then
   // places its items after those of the same key in the parts before it.

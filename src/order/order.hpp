@@ -69,9 +69,6 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
 /// (hilbert_sort).
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);
 
-/// The indices 0 .. n-1 sorted by key[i], stably (ties by index), on up to `threads` threads.
-std::vector<std::uint32_t> sorted_by_key(const std::uint32_t* key, std::uint32_t n, unsigned threads);
-
 /// Each key[i] (below `keys`) replaced by i's place when 0 .. n-1 are sorted by key, stably (ties
 /// by index): a counting sort on up to `threads` threads, for keys of a small range (some
 /// vertex of each triangle, say), in `keys` numbers of memory for each of up to four threads.
@@ -80,7 +77,7 @@ void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned
 /// The indices 0 .. n-1 of `points` sorted by their cell of hilbert_keys' curve, the points of
 /// a cell by x, then y, then index (so that the order of distinct points does not depend on
 /// their numbering): coarser than hilbert_order where many points share a cell, and quicker
-/// (the keys and sorted_by_key's radix passes on up to `threads` threads); enough to lay out in
+/// (the keys and a radix sort's passes on up to `threads` threads); enough to lay out in
 /// memory points near in the plane.
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads);
 
