@@ -153,28 +153,6 @@ void check_memory(const Plan& p, std::size_t n, const Options& options) {
   throw MemoryError(what, needed, limit);
 }
 
-// The points' extent (predicates/predicates.hpp), in one pass on up to `threads` threads; throws
-// InputError naming the first point with a coordinate that is not finite.
-detail::Extent scan(std::span<const Point> points, unsigned threads) {
-  constexpr std::size_t kGrain = std::size_t{1} << 16;
-  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(points.size() / kGrain, 1, threads));
-  std::vector<detail::Extent> part(parts);
-  detail::on_threads(parts, [&](unsigned t) {
-    part[t] = detail::extent_of(
-        points.subspan(points.size() * t / parts, points.size() * (t + 1) / parts - points.size() * t / parts));
-  });
-  detail::Extent e;
-  for (const detail::Extent& x : part) e.add(x);
-  if (!e.finite)
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const Point& p = points[i];
-      if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        throw InputError("point " + std::to_string(i) + " has " +
-                         (std::isnan(p.x) || std::isnan(p.y) ? "a NaN" : "an infinite") + " coordinate");
-    }
-  return e;
-}
-
 // The points in insertion order (vertex v is input point order[v]), scaled by 2^scale, then
 // the three bounding vertices. Inserting them from a copy in that order keeps the points that
 // successive insertions read close together in memory.
@@ -306,7 +284,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
     seconds = std::chrono::duration<double>(now - phase).count();
     phase = now;
   };
-  const detail::Extent extent = scan(points, p.threads);
+  const detail::Extent extent = detail::checked_extent(points, p.threads);
   lap(stats.time_scan_s);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates/predicates.hpp).
   const int scale = detail::exact_scale_exponent(extent);

@@ -132,6 +132,14 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
 int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
                    std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(), double tol = 1e-6,
                    int maxiter = 400, unsigned threads = 1);
+/// The same of the points' own Delaunay triangulation, made here (Method::Auto on `threads`)
+/// with the points already in the order the gradients and the answers read them: the same
+/// numbers as triangulate and the call above, in less time and memory. Returns -1 where the
+/// points have no triangle (fewer than three distinct ones, or all on a line): `out` is then
+/// `fill` throughout. Non-finite points throw InputError, as triangulate does.
+int griddata_cubic(std::span<const Point> points, Values values, const Grid& grid, std::span<double> out,
+                   double fill = std::numeric_limits<double>::quiet_NaN(), double tol = 1e-6, int maxiter = 400,
+                   unsigned threads = 1);
 
 /// For each query, the index of a nearest point among the triangulation's vertices (a greedy
 /// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not

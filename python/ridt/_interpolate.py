@@ -334,14 +334,12 @@ class _Line:
         return out
 
 
-_REUSE_BYTES_PER_POINT = 64  # more than the triangulation's blocks that it gives back
-
-
 def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: Any, rescale: bool,
                    threads: int) -> Optional[np.ndarray]:
     """griddata's cubic at a grid's nodes in one call of the library (griddata_cubic: the
-    points numbered once for the gradients and the answers), the same numbers as
-    CloughTocher2DInterpolator's; None where that does not apply (complex values, no grid)."""
+    points triangulated, their gradients estimated and the grid answered in one numbering), the
+    same numbers as CloughTocher2DInterpolator's; None where that does not apply (complex
+    values, no grid, points that are not finite)."""
     grid = _as_grid(args)
     if grid is None:
         return None
@@ -358,11 +356,12 @@ def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: 
             return None
         xs, ys = axes
     nthreads = _api.thread_count(threads)
-    # The triangulation's blocks, given back, serve the interpolation's (fresh pages cost more).
-    with _core.MemoryReuse(_REUSE_BYTES_PER_POINT * pts.shape[0]):
-        tri = Delaunay(pts, threads=nthreads)
-        out, sweeps = _core.griddata_cubic(tri.points, tri._tri, v, xs, ys, x_major, float(fill_value), 1e-6, 400,
-                                           nthreads)
+    if not np.isfinite(pts).all():
+        return None  # Delaunay's error, as for the other methods
+    # The library triangulates the points itself, in the order its sweeps and answers read them.
+    out, sweeps = _core.griddata_cubic(pts, v, xs, ys, x_major, float(fill_value), 1e-6, 400, nthreads)
+    if sweeps < 0:  # no triangle: fill_value throughout, and Delaunay's warning saying why
+        Delaunay(pts, threads=nthreads)
     if sweeps == 0:
         warnings.warn("Gradient estimation did not converge, the results may be inaccurate",
                       GradientEstimationWarning, stacklevel=3)

@@ -46,6 +46,26 @@ py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulati
   return a;
 }
 
+// griddata's cubic onto a grid: (values at the nodes, sweeps).
+py::tuple cubic_on_grid(const Points& points, const Points& values, const Points& x, const Points& y, bool x_major,
+                        double fill, double tol, int maxiter, unsigned threads) {
+  const auto pts = as_points(points, "points");
+  if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
+  if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
+  const ridt::Grid g{
+      {x.data(), static_cast<std::size_t>(x.size())}, {y.data(), static_cast<std::size_t>(y.size())}, x_major};
+  const auto k = static_cast<std::size_t>(values.shape(1));
+  const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
+  py::array_t<double> a({static_cast<py::ssize_t>(g.size()), static_cast<py::ssize_t>(k)});
+  const std::span<double> out(a.mutable_data(), g.size() * k);
+  int sweeps = 0;
+  {
+    py::gil_scoped_release nogil;
+    sweeps = ridt::griddata_cubic(pts, v, g, out, fill, tol, maxiter, threads);
+  }
+  return py::make_tuple(a, sweeps);
+}
+
 // The cubic's gradients, and griddata's cubic onto a grid in one call.
 void bind_cubic(py::module_& m) {
   m.def(
@@ -68,28 +88,14 @@ void bind_cubic(py::module_& m) {
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("tol"), py::arg("maxiter"),
       py::arg("threads") = 1u);
 
+  // Of the points' own triangulation, made in the call: sweeps -1 where there is none.
   m.def(
       "griddata_cubic",
-      [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
-         bool x_major, double fill, double tol, int maxiter, unsigned threads) {
-        const auto pts = as_points(points, "points");
-        if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
-        if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
-        const ridt::Grid g{
-            {x.data(), static_cast<std::size_t>(x.size())}, {y.data(), static_cast<std::size_t>(y.size())}, x_major};
-        const auto k = static_cast<std::size_t>(values.shape(1));
-        const ridt::Values v{std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), k};
-        py::array_t<double> a({static_cast<py::ssize_t>(g.size()), static_cast<py::ssize_t>(k)});
-        int sweeps = 0;
-        {
-          py::gil_scoped_release nogil;
-          sweeps = ridt::griddata_cubic(pts, t, v, g, std::span<double>(a.mutable_data(), g.size() * k), fill, tol,
-                                        maxiter, threads);
-        }
-        return py::make_tuple(a, sweeps);
-      },
-      py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("x_major"),
-      py::arg("fill"), py::arg("tol"), py::arg("maxiter"), py::arg("threads"));
+      [](const Points& points, const Points& values, const Points& x, const Points& y, bool x_major, double fill,
+         double tol, int maxiter,
+         unsigned threads) { return cubic_on_grid(points, values, x, y, x_major, fill, tol, maxiter, threads); },
+      py::arg("points"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("x_major"), py::arg("fill"),
+      py::arg("tol"), py::arg("maxiter"), py::arg("threads"));
 }
 
 }  // namespace

@@ -110,6 +110,27 @@ def test_cubic_griddata_on_a_grid_is_the_interpolators_answer(scattered):
         assert (a == -2.5).any() and (a != -2.5).sum() > a.size / 2
 
 
+def test_cubic_griddata_without_a_triangle_or_with_duplicates_is_the_interpolators(scattered):
+    # The one call triangulates the points itself: a duplicate's first copy stands for it, as
+    # in Delaunay; no triangle gives the fill value and Delaunay's warning; a point that is not
+    # finite the interpolator's error.
+    p, f, _ = scattered
+    p2, f2 = np.vstack([p, p[5]]), np.append(f, 100.0)
+    gx, gy = np.mgrid[0:1:41j, 0:1:37j]
+    a = ridt.griddata(p2, f2, (gx, gy), method="cubic", threads=2)
+    np.testing.assert_array_equal(a, ridt.CloughTocher2DInterpolator(p2, f2)(gx, gy))
+    np.testing.assert_array_equal(a, ridt.griddata(p, f, (gx, gy), method="cubic"))
+    line = np.c_[np.linspace(0, 1, 10), np.linspace(0, 1, 10)]
+    for pts in (line, line[:2], line[[0, 0, 0]]):
+        with pytest.warns(ridt.DegenerateInputWarning):
+            b = ridt.griddata(pts, np.arange(len(pts), dtype=float), (gx, gy), method="cubic", fill_value=-1.0)
+        assert b.shape == gx.shape and (b == -1).all()
+    bad = line.copy()
+    bad[3, 0] = np.inf
+    with pytest.raises(ValueError, match="not finite"):
+        ridt.griddata(bad, np.arange(10.0), (gx, gy), method="cubic")
+
+
 def test_answers_are_the_same_bits_on_any_threads():
     # The triangulation's order differs between thread counts (each thread makes its own
     # region's triangles); the answers depend on the triangles alone: the same bits on 1, 2 and

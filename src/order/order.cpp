@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <numeric>
+#include <string>
 #include <utility>
 
 #include "order/random.hpp"
@@ -400,6 +401,26 @@ void places_by_key(std::uint32_t* key, std::size_t n, std::size_t keys, unsigned
   for (std::size_t k = 0; k < keys; ++k)
     for (unsigned p = 0; p < parts; ++p) sum += std::exchange(at[p * keys + k], sum);
   on_threads(parts, [&](unsigned p) { each(p, [&](std::size_t i) { key[i] = at[p * keys + key[i]]++; }); });
+}
+
+Extent checked_extent(std::span<const Point> points, unsigned threads) {
+  constexpr std::size_t kGrain = std::size_t{1} << 16;
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(points.size() / kGrain, 1, threads));
+  std::vector<Extent> part(parts);
+  on_threads(parts, [&](unsigned t) {
+    part[t] = extent_of(
+        points.subspan(points.size() * t / parts, points.size() * (t + 1) / parts - points.size() * t / parts));
+  });
+  Extent e;
+  for (const Extent& x : part) e.add(x);
+  if (!e.finite)
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Point& p = points[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw InputError("point " + std::to_string(i) + " has " +
+                         (std::isnan(p.x) || std::isnan(p.y) ? "a NaN" : "an infinite") + " coordinate");
+    }
+  return e;
 }
 
 std::vector<std::uint32_t> hilbert_cells_order(const Point* points, std::uint32_t n, unsigned threads) {

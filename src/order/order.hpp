@@ -18,6 +18,10 @@ std::vector<std::uint32_t> random_permutation(std::uint32_t n, std::uint64_t see
 /// Points close on the curve are close in the plane.
 std::uint32_t hilbert_key(std::uint32_t x, std::uint32_t y);
 
+/// The points' extent (extent_of) in one pass on up to `threads` threads; throws InputError
+/// naming the first point with a coordinate that is not finite.
+Extent checked_extent(std::span<const Point> points, unsigned threads);
+
 /// hilbert_key of each point, over the bounding box of the n points (one scale for both axes,
 /// so the curve's cells are square), computed by up to `threads` threads.
 std::vector<std::uint32_t> hilbert_keys(const Point* points, std::uint32_t n, unsigned threads = 1);

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "order/order.hpp"
 #include "queries/field.hpp"
 #include "queries/gradients.hpp"
 #include "runtime/memory.hpp"
@@ -168,6 +169,8 @@ class CloughTocher {
 // What griddata_cubic lets the memory cache keep beyond its limit while it runs, a point and
 // component: more than its sweeps' blocks (some 130 bytes a point for one component).
 constexpr std::size_t kReuseBytesPerPoint = 160;
+// And more, a point, where it triangulates the points itself: the triangulation's blocks.
+constexpr std::size_t kTriangulationBytesPerPoint = 64;
 
 // The values and gradients side by side, a point's k values and then its 2k gradient numbers,
 // as the field carries them through the renumbering: 3 n k numbers, each written on threads (a
@@ -211,31 +214,67 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
                                          values.components, grid, out, fill, threads);
 }
 
+namespace {
+
+// griddata_cubic's gradients and answers on the renumbered field.
+int cubic_on_grid(const detail::Renumbered& field, const detail::Axis& ax, const detail::Axis& ay, const Grid& grid,
+                  std::span<double> out, double fill, double tol, int maxiter, unsigned threads) {
+  const std::size_t n = field.count, m = field.components;
+  const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
+  const int sweeps = detail::solve_gradients(field, tol, maxiter, threads, {grad.get(), 2 * n * m});
+  // Each point's values and then its gradients, in the field's numbering.
+  const detail::Block<double> both = values_and_gradients("griddata_cubic", n, Values{{field.values.get(), n * m}, m},
+                                                          {grad.get(), 2 * n * m}, threads);
+  detail::answer_grid<CloughTocher>(field.field({both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out, fill, threads);
+  return sweeps;
+}
+
+void check_out(const char* who, const Grid& grid, std::size_t components, std::span<double> out) {
+  if (out.size() != grid.size() * components)
+    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
+                     std::to_string(grid.size()) + " nodes of " + std::to_string(components) + " components");
+}
+
+}  // namespace
+
 int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
                    std::span<double> out, double fill, double tol, int maxiter, unsigned threads) {
   const char* who = "griddata_cubic";
   const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
   detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
   detail::check_values(who, points.size(), values);
-  const std::size_t n = points.size(), m = values.components;
-  if (out.size() != grid.size() * m)
-    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
-                     std::to_string(grid.size()) + " nodes of " + std::to_string(m) + " components");
+  check_out(who, grid, values.components, out);
   detail::check_sweeps(who, tol, maxiter);
   if (t.triangles.empty()) {
     std::fill(out.begin(), out.end(), fill);
     return 1;
   }
   // The sweeps' blocks, given back, hold the answers' values and gradients after.
-  const MemoryReuse reuse(kReuseBytesPerPoint * n * m);
+  const MemoryReuse reuse(kReuseBytesPerPoint * points.size() * values.components);
   const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
-  const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
-  const int sweeps = detail::solve_gradients(field, tol, maxiter, threads, {grad.get(), 2 * n * m});
-  // Each point's values and then its gradients, in the field's numbering.
-  const detail::Block<double> both =
-      values_and_gradients(who, n, Values{{field.values.get(), n * m}, m}, {grad.get(), 2 * n * m}, threads);
-  detail::answer_grid<CloughTocher>(field.field({both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out, fill, threads);
-  return sweeps;
+  return cubic_on_grid(field, ax, ay, grid, out, fill, tol, maxiter, threads);
+}
+
+int griddata_cubic(std::span<const Point> points, Values values, const Grid& grid, std::span<double> out, double fill,
+                   double tol, int maxiter, unsigned threads) {
+  const char* who = "griddata_cubic";
+  threads = detail::thread_count(threads);
+  const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
+  detail::check_values(who, points.size(), values);
+  check_out(who, grid, values.components, out);
+  detail::check_sweeps(who, tol, maxiter);
+  if (points.size() > 0x7ffffff0u)
+    throw InputError(std::string(who) + ": " + std::to_string(points.size()) +
+                     " points, more than a triangulation takes");
+  detail::checked_extent(points, threads);  // before the points are ordered: every one finite
+  // The triangulation's blocks, given back, serve the sweeps'; theirs the answers'.
+  const MemoryReuse reuse((kReuseBytesPerPoint * values.components + kTriangulationBytesPerPoint) * points.size());
+  const detail::Renumbered field(points, values, threads);
+  if (field.triangle_count == 0) {
+    std::fill(out.begin(), out.end(), fill);
+    return -1;
+  }
+  return cubic_on_grid(field, ax, ay, grid, out, fill, tol, maxiter, threads);
 }
 
 }  // namespace ridt

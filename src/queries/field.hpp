@@ -122,29 +122,73 @@ struct Renumbered {
       : count(f.points.size()),
         components(f.values.components),
         triangle_count(f.triangles.size() / 3),
-        input(hilbert_cells_order(f.points.data(), static_cast<std::uint32_t>(count), threads)),
-        points(allocate_huge<Point>(count)),
-        values(allocate_huge<double>(count * components)),
-        triangles(allocate_huge<VertexId>(f.triangles.size())),
-        neighbors(allocate_huge<std::int32_t>(f.triangles.size())) {
+        input(hilbert_cells_order(f.points.data(), static_cast<std::uint32_t>(count), threads)) {
     const Block<VertexId> id = allocate_huge<VertexId>(count);
+    copy_points(f.points, f.values, threads, id.get());
+    take_triangles(f, id.get(), threads);
+  }
+
+  // The points' own Delaunay triangulation (Method::Auto on `threads`), made in the new
+  // numbering: the points and values copied along the curve first and triangulated there, so
+  // that no number is mapped and the triangulation's arrays, once sorted, are given back before
+  // the caller's next blocks (the same field as triangulating first and renumbering: the
+  // triangulation does not depend on the numbering, and equal points keep their input order,
+  // the least input number standing for them).
+  Renumbered(std::span<const Point> points, Values values, unsigned threads)
+      : count(points.size()),
+        components(values.components),
+        triangle_count(0),
+        input(hilbert_cells_order(points.data(), static_cast<std::uint32_t>(count), threads)) {
+    copy_points(points, values, threads, nullptr);
+    Options options;
+    options.method = Method::Auto;
+    options.threads = threads;
+    Triangulation t = triangulate(std::span<const Point>(points_view()), options);
+    triangle_count = t.size();
+    take_triangles({points_view(), t.triangles, t.neighbors, values}, nullptr, threads);
+  }
+
+  // The renumbered field; with `other`, other values (`other_components` a point, in the
+  // new numbering) in place of the caller's.
+  Field field(std::span<const double> other = {}, std::size_t other_components = 0) const {
+    const Values v =
+        other.empty() ? Values{{values.get(), count * components}, components} : Values{other, other_components};
+    const std::size_t corners = 3 * triangle_count;
+    return {{points.get(), count}, {triangles.get(), corners}, {neighbors.get(), corners}, v, true};
+  }
+
+ private:
+  std::span<const Point> points_view() const { return {points.get(), count}; }
+
+  // The points and values copied in the new order; `id`, when given, each input number's new one.
+  void copy_points(std::span<const Point> from, Values from_values, unsigned threads, VertexId* id) {
+    points = allocate_huge<Point>(count);
+    values = allocate_huge<double>(count * components);
     const std::size_t m = components;
     parallel_for(count, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        id[input[k]] = static_cast<VertexId>(k);
-        points[k] = f.points[input[k]];
-        std::copy_n(f.value(input[k]), m, &values[k * m]);
+        if (id != nullptr) id[input[k]] = static_cast<VertexId>(k);
+        points[k] = from[input[k]];
+        std::copy_n(&from_values.data[input[k] * m], m, &values[k * m]);
       }
     });
+  }
+
+  // f's triangles (its points numbered `id`, or already in the new numbering where id is null)
+  // sorted by their least point's new number, each stored from that point.
+  void take_triangles(const Field& f, const VertexId* id, unsigned threads) {
+    const std::size_t t = triangle_count;
+    triangles = allocate_huge<VertexId>(3 * t);
+    neighbors = allocate_huge<std::int32_t>(3 * t);
+    auto renumber = [id](VertexId v) { return id != nullptr ? id[v] : v; };
     // Each triangle's first corner, found among the copied points (near one another in memory),
     // and that corner's new number: the key the triangles are sorted by. `place` then becomes
     // each triangle's new place, which its neighbours are renumbered to.
-    const std::size_t t = triangle_count;
     const Block<std::uint32_t> place = allocate_huge<std::uint32_t>(t);
     const Block<std::uint8_t> turn = allocate_huge<std::uint8_t>(t);
     parallel_for(t, threads, kGrain, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        const VertexId v[3] = {id[f.vertex(k, 0)], id[f.vertex(k, 1)], id[f.vertex(k, 2)]};
+        const VertexId v[3] = {renumber(f.vertex(k, 0)), renumber(f.vertex(k, 1)), renumber(f.vertex(k, 2))};
         const int s = Field::least(points[v[0]], points[v[1]], points[v[2]]);
         place[k] = v[s];
         turn[k] = static_cast<std::uint8_t>(s);
@@ -156,21 +200,12 @@ struct Renumbered {
         const std::size_t to = place[k];
         const int s = turn[k];
         for (int i = 0; i < 3; ++i) {
-          triangles[3 * to + i] = id[f.vertex(k, (s + i) % 3)];
+          triangles[3 * to + i] = renumber(f.vertex(k, (s + i) % 3));
           const std::int32_t u = f.neighbor(k, (s + i) % 3);
           neighbors[3 * to + i] = u < 0 ? u : static_cast<std::int32_t>(place[static_cast<std::size_t>(u)]);
         }
       }
     });
-  }
-
-  // The renumbered field; with `other`, other values (`other_components` a point, in the
-  // new numbering) in place of the caller's.
-  Field field(std::span<const double> other = {}, std::size_t other_components = 0) const {
-    const Values v =
-        other.empty() ? Values{{values.get(), count * components}, components} : Values{other, other_components};
-    const std::size_t corners = 3 * triangle_count;
-    return {{points.get(), count}, {triangles.get(), corners}, {neighbors.get(), corners}, v, true};
   }
 };
 

@@ -186,13 +186,15 @@ TEST(Cubic, GradientsReachTheMinimumWithTheSameBitsOnAnyThreads) {
 }
 
 TEST(Cubic, GriddataEqualsTheGradientsAndTheGridCallOnAnyThreads) {
-  // Two components, a duplicate point, nodes outside the hull; the one call and the two give
-  // the same bits, on one thread and on three.
+  // Two components, a duplicate point with other values (point 17's stand), nodes outside the
+  // hull; the one call, the one call that triangulates, and the two give the same bits, on one
+  // thread and on three.
   std::vector<Point> pts = generate(Distribution::Normal, 30000, 12);
   pts.push_back(pts[17]);
   const Triangulation t = triangulate(pts);
   std::vector<double> f;
   for (const Point& p : pts) f.push_back(std::sin(3 * p.x) * p.y), f.push_back(p.x * p.x - p.y);
+  f[f.size() - 2] = 100, f[f.size() - 1] = -100;
   std::vector<double> x, y;
   for (int i = 0; i < 150; ++i) x.push_back(-4 + 8 * i / 149.0);
   for (int i = 0; i < 120; ++i) y.push_back(3.5 - 7 * i / 119.0);
@@ -204,11 +206,31 @@ TEST(Cubic, GriddataEqualsTheGradientsAndTheGridCallOnAnyThreads) {
     std::vector<double> one_call(two_calls.size());
     EXPECT_EQ(griddata_cubic(pts, t, Values{f, 2}, grid, one_call, -5, 1e-6, 400, threads), sweeps);
     EXPECT_EQ(one_call, two_calls);
+    std::vector<double> triangulating(two_calls.size());
+    EXPECT_EQ(griddata_cubic(pts, Values{f, 2}, grid, triangulating, -5, 1e-6, 400, threads), sweeps);
+    EXPECT_EQ(triangulating, two_calls);
   }
   std::vector<double> short_out(5);
   EXPECT_THROW(griddata_cubic(pts, t, Values{f, 2}, grid, short_out, -5), InputError);
   EXPECT_THROW(griddata_cubic(pts, t, Values{f, 2}, grid, two_calls, -5, 0.0), InputError);
   EXPECT_GT(std::count(two_calls.begin(), two_calls.end(), -5.0), 0);  // nodes outside the hull
+  EXPECT_EQ(std::count(two_calls.begin(), two_calls.end(), 100.0), 0);  // the duplicate's values unread
+}
+
+TEST(Cubic, GriddataOfPointsWithoutATriangleFillsAndSaysSo) {
+  const std::vector<double> x = {0, 0.5, 1}, y = {0, 1};
+  const Grid grid{x, y, true};
+  std::vector<double> out(grid.size(), 7);
+  const std::vector<double> f = {1, 2, 3, 4};
+  for (const std::vector<Point>& pts : {std::vector<Point>{{0, 0}, {1, 1}, {2, 2}, {3, 3}},
+                                        std::vector<Point>{{0, 0}, {1, 0}, {0, 0}, {1, 0}}, std::vector<Point>{}}) {
+    const Values v{std::span<const double>(f).first(pts.size()), 1};
+    EXPECT_EQ(griddata_cubic(pts, v, grid, out, -2, 1e-6, 400, 2), -1);
+    EXPECT_EQ(std::count(out.begin(), out.end(), -2.0), static_cast<std::ptrdiff_t>(out.size()));
+  }
+  const std::vector<Point> bad = {{0, 0}, {1, 0}, {0, std::numeric_limits<double>::quiet_NaN()}};
+  EXPECT_THROW(griddata_cubic(bad, Values{std::span<const double>(f).first(3), 1}, grid, out), InputError);
+  EXPECT_THROW(griddata_cubic(bad, Values{f, 1}, grid, out), InputError);  // four values for three points
 }
 
 TEST(Cubic, GridEqualsTheLocatedQueriesAndThreadsGiveTheSameBits) {
