@@ -307,7 +307,7 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
       : run_dag(std::move(pts), n, order, p, options, stats);
   // After the mesh is gone, so that the sort's copies do not raise the peak.
   phase = Clock::now();
-  if (options.canonical_order) detail::canonicalize(out, p.threads);
+  detail::apply_output_options(out, options, p.threads);
   lap(stats.time_canonical_s);
   merge_stats(out, std::move(stats));
   out.stats.time_triangulate_s = since(t0);

@@ -96,6 +96,40 @@ TEST(Triangulate, CanonicalOrderIsTheSameOnAnyThreads) {
   }
 }
 
+// Options::neighbors off: the same triangles (in the same order where it is fixed) and no
+// neighbours; the canonical sort then works in the neighbours' memory. A fan's centre, the
+// least vertex of every triangle, makes one group of them all (sorted otherwise than a few).
+TEST(Triangulate, WithoutNeighboursTheSameTriangles) {
+  std::vector<Point> fan = {{0, 0}};
+  for (int k = 0; k < 500; ++k) fan.push_back({std::cos(k * 0.0125663706), std::sin(k * 0.0125663706)});
+  for (const std::vector<Point>& pts : {generate(Distribution::Uniform, 150000, 9), fan}) {
+    for (const bool canonical : {true, false})
+      for (const unsigned threads : {1u, 2u, 3u}) {
+        Options o;
+        o.canonical_order = canonical;
+        o.method = Method::Partition;
+        o.threads = threads;
+        const Triangulation with = triangulate(pts, o);
+        o.neighbors = false;
+        const Triangulation without = triangulate(pts, o);
+        EXPECT_TRUE(without.neighbors.empty());
+        EXPECT_EQ(without.hull, with.hull);
+        if (!canonical) {  // a threaded run's order differs from run to run
+          EXPECT_EQ(test::canonical(without.triangles), test::canonical(with.triangles)) << threads;
+          if (threads == 1) EXPECT_EQ(without.triangles, with.triangles);
+          continue;
+        }
+        EXPECT_EQ(without.triangles, with.triangles) << threads;
+        EXPECT_EQ(audit(pts, with), "");
+        for (std::size_t t = 1; t < without.size(); ++t) {
+          const VertexId* v = &without.triangles[3 * t];
+          ASSERT_TRUE(v[0] < v[1] && v[0] < v[2]) << t;
+          ASSERT_TRUE(std::lexicographical_compare(v - 3, v, v, v + 3)) << t;
+        }
+      }
+  }
+}
+
 TEST(Triangulate, ShuffledInputGivesTheSameTriangles) {
   for (Distribution d : kDistributions) {
     const std::vector<Point> pts = generate(d, 3000, 5);

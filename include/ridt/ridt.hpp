@@ -104,6 +104,10 @@ struct Options {
   /// Rotate each triangle so its smallest vertex index comes first and sort the triangles:
   /// the output is then byte-identical for every seed and method. Costs a sort.
   bool canonical_order = false;
+  /// Fill Triangulation::neighbors. Off, they are left empty: a caller that needs only the
+  /// triangles (a file of them, say) spares their memory and, with canonical_order, the half
+  /// of the sort that renumbers them.
+  bool neighbors = true;
   /// Called with the share of the points inserted so far (0 to 1), on the calling thread, each
   /// time some 65,536 more are in, and with 1 when all are. It may throw to abandon the run:
   /// the exception reaches the caller of triangulate once every worker has stopped.
@@ -178,7 +182,8 @@ struct Duplicate {
 /// The result: flat arrays, as plain data.
 struct Triangulation {
   std::vector<VertexId> triangles;  ///< #T by 3, counter-clockwise
-  std::vector<std::int32_t> neighbors;  ///< #T by 3, neighbour i across from vertex i, -1 on the hull
+  /// #T by 3, neighbour i across from vertex i, -1 on the hull (empty: Options::neighbors off)
+  std::vector<std::int32_t> neighbors;
   std::vector<VertexId> hull;  ///< convex hull, counter-clockwise, collinear hull points included
   std::vector<Duplicate> duplicates;  ///< sorted by `dropped`
   /// Why the triangulation is empty ("fewer than three distinct points", "all points are

@@ -39,21 +39,26 @@ void rotate3(T* x, int s) {
 namespace {
 
 // A triangle on its way to its canonical place: its vertices, rotated to start at the
-// smallest, and its number before.
-struct Placed {
+// smallest; Placed adds its number before, for its neighbours'.
+struct Triple {
   VertexId first, second, third;
-  std::uint32_t from;
-  bool operator<(const Placed& o) const {
+  bool operator<(const Triple& o) const {
     return first < o.first || (first == o.first && (second < o.second || (second == o.second && third < o.third)));
   }
 };
+struct Placed : Triple {
+  std::uint32_t from;
+};
 
 // The triangles, each rotated to start at its smallest vertex, sorted into buckets of first
-// vertices (bucket b: first vertices from b << shift), each bucket a run of `bucket_start`:
-// each part of the triangles counts its own a bucket, then puts them in place after those of
-// the parts before it. Some ten thousand buckets: each is small enough to sort in the cache,
-// and a thread writes to few enough places at once to keep them there.
-Block<Placed> into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_t>& bucket_start, int& shift) {
+// vertices (bucket b: first vertices from b << shift), each bucket a run of `bucket_start`,
+// in `placed` (room for every triangle): each part of the triangles counts its own a bucket,
+// then puts them in place after those of the parts before it. Some ten thousand buckets: each
+// is small enough to sort in the cache, and a thread writes to few enough places at once to
+// keep them there. Placed turns the neighbours with their triangles.
+template <class T>
+void into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_t>& bucket_start, int& shift,
+                  T* placed) {
   const std::size_t count = out.size();
   auto& tv = out.triangles;
   auto& tn = out.neighbors;
@@ -61,24 +66,35 @@ Block<Placed> into_buckets(Triangulation& out, unsigned threads, std::vector<std
   auto each = [&](unsigned k, auto&& visit) {
     for (std::size_t t = count * k / parts; t < count * (k + 1) / parts; ++t) visit(t);
   };
+  // Which corner is the least: the triangles are read from it. Placed turns them where they
+  // lie, with their neighbours; Triple leaves them, turning each as it is copied.
+  auto least = [&](std::size_t t) {
+    const VertexId* v = &tv[3 * t];
+    return v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+  };
+  auto first = [&](std::size_t t) {
+    if constexpr (std::is_same_v<T, Placed>) return tv[3 * t];
+    return std::min(std::min(tv[3 * t], tv[3 * t + 1]), tv[3 * t + 2]);  // without branches
+  };
   std::vector<VertexId> part_max(parts, 0);
   on_threads(parts, [&](unsigned k) {
     VertexId high = 0;
     each(k, [&](std::size_t t) {
-      const int s =
-          tv[3 * t] < tv[3 * t + 1] ? (tv[3 * t] < tv[3 * t + 2] ? 0 : 2) : (tv[3 * t + 1] < tv[3 * t + 2] ? 1 : 2);
-      rotate3(&tv[3 * t], s);
-      rotate3(&tn[3 * t], s);
-      high = std::max(high, tv[3 * t]);
+      if constexpr (std::is_same_v<T, Placed>) {
+        const int s = least(t);
+        rotate3(&tv[3 * t], s);
+        rotate3(&tn[3 * t], s);
+      }
+      high = std::max(high, first(t));
     });
     part_max[k] = high;
   });
   const std::uint64_t groups = count > 0 ? std::uint64_t{*std::max_element(part_max.begin(), part_max.end())} + 1 : 1;
   shift = 0;
-  while ((groups >> shift) > 16384) ++shift;
+  while ((groups >> shift) > 2048) ++shift;
   const std::size_t buckets = static_cast<std::size_t>(((groups - 1) >> shift) + 1);
   std::vector<std::uint32_t> at(parts * buckets, 0);  // at[k * buckets + bucket]
-  on_threads(parts, [&](unsigned k) { each(k, [&](std::size_t t) { ++at[k * buckets + (tv[3 * t] >> shift)]; }); });
+  on_threads(parts, [&](unsigned k) { each(k, [&](std::size_t t) { ++at[k * buckets + (first(t) >> shift)]; }); });
   bucket_start.assign(buckets + 1, 0);
   std::uint32_t sum = 0;
   for (std::size_t b = 0; b < buckets; ++b) {
@@ -86,42 +102,47 @@ Block<Placed> into_buckets(Triangulation& out, unsigned threads, std::vector<std
     for (unsigned k = 0; k < parts; ++k) sum += std::exchange(at[k * buckets + b], sum);
   }
   bucket_start[buckets] = sum;
-  Block<Placed> placed = allocate_huge<Placed>(count);
-  make_present(placed.get(), count * sizeof(Placed), threads);
   on_threads(parts, [&](unsigned k) {
     each(k, [&](std::size_t t) {
       const VertexId* v = &tv[3 * t];
-      placed[at[k * buckets + (v[0] >> shift)]++] = {v[0], v[1], v[2], static_cast<std::uint32_t>(t)};
+      const VertexId m = first(t);
+      const int s = v[1] == m ? 1 : v[2] == m ? 2 : 0;  // 0 for Placed
+      T& to = placed[at[k * buckets + (m >> shift)]++];
+      to.first = m, to.second = v[s == 2 ? 0 : s + 1], to.third = v[s == 0 ? 2 : s - 1];
+      if constexpr (std::is_same_v<T, Placed>) to.from = static_cast<std::uint32_t>(t);
     });
   });
-  return placed;
 }
 
-}  // namespace
+// One first vertex's triangles sorted by their second (no two share it): a few, in place,
+// unless the vertex is the least of many (a fan's centre).
+template <class T>
+void sort_group(T* begin, T* end) {
+  if (end - begin > 16) {
+    std::sort(begin, end);
+    return;
+  }
+  for (T* i = begin + 1; i < end; ++i) {
+    const T x = *i;
+    T* j = i;
+    for (; j > begin && x.second < j[-1].second; --j) *j = j[-1];
+    *j = x;
+  }
+}
 
-// Each triangle rotated to start at its smallest vertex, then the triangles sorted: into
-// buckets of first vertices, then each bucket on its own (no two triangles share a first and a
-// second vertex: the edge between them is directed counter-clockwise in one triangle only; the
-// order is the same on any number of threads). The triangles travel with their vertices, so
-// nothing is looked up at random but the neighbours: renumbered where they are, then moved to
-// their triangles' new places in the buckets' memory (no longer needed by then) and copied
-// back. Fresh memory costs more than a pass over it (each page faulted in and zeroed), so the
-// sort takes 20 bytes a triangle beyond the result, and none of it is zeroed twice.
-void canonicalize(Triangulation& out, unsigned threads) {
-  threads = std::max(threads, 1u);
-  const std::size_t count = out.size();
+// The triangles sorted: into buckets, then each bucket on its own, by first vertex (a counting
+// sort) and each group of one first vertex (some two triangles) by its other two, back into
+// out.triangles; `moved(p, i)` is called for each triangle p placed at i.
+template <class T, class Moved>
+void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& moved) {
   std::vector<std::uint32_t> bucket_start;
   int shift = 0;
-  const Block<Placed> placed = into_buckets(out, threads, bucket_start, shift);
-  const Block<std::int32_t> rank = allocate_huge<std::int32_t>(count);  // a triangle's new number
-  make_present(rank.get(), count * sizeof(std::int32_t), threads);
+  into_buckets(out, threads, bucket_start, shift, placed);
   auto& tv = out.triangles;
   parallel_for(bucket_start.size() - 1, threads, 16, [&](std::size_t first, std::size_t last) {
     std::vector<std::uint32_t> at((std::size_t{1} << shift) + 1);
-    std::vector<Placed> run;
+    std::vector<T> run;
     for (std::size_t b = first; b < last; ++b) {
-      // A counting sort of the bucket by first vertex, then each group (some two triangles)
-      // by its other two.
       const std::uint32_t lo = bucket_start[b], hi = bucket_start[b + 1];
       const VertexId base = static_cast<VertexId>(b << shift);
       std::fill(at.begin(), at.end(), 0u);
@@ -129,21 +150,49 @@ void canonicalize(Triangulation& out, unsigned threads) {
       std::partial_sum(at.begin(), at.end(), at.begin());
       run.resize(hi - lo);
       for (std::uint32_t i = lo; i < hi; ++i) run[at[placed[i].first - base]++] = placed[i];
-      for (std::size_t g = 0, e; g < run.size(); g = e) {
-        for (e = g + 1; e < run.size() && run[e].first == run[g].first;) ++e;
-        std::sort(run.begin() + g, run.begin() + e);
-      }
+      // at[v - base] is now where v's group ends, the next one's start.
+      for (std::size_t v = 0, begin = 0; v + 1 < at.size() && begin < run.size(); begin = at[v++])
+        sort_group(run.data() + begin, run.data() + at[v]);
       for (std::uint32_t i = lo; i < hi; ++i) {
-        const Placed& p = run[i - lo];
+        const T& p = run[i - lo];
         tv[3 * i] = p.first, tv[3 * i + 1] = p.second, tv[3 * i + 2] = p.third;
-        rank[p.from] = static_cast<std::int32_t>(i);
+        moved(p, i);
       }
     }
   });
+}
+
+}  // namespace
+
+// Each triangle rotated to start at its smallest vertex, then the triangles sorted (no two
+// triangles share a first and a second vertex: the edge between them is directed
+// counter-clockwise in one triangle only; the order is the same on any number of threads).
+// The triangles travel with their vertices, so nothing is looked up at random but the
+// neighbours: renumbered where they are, then moved to their triangles' new places in the
+// buckets' memory (no longer needed by then) and copied back. Fresh memory costs more than a
+// pass over it (each page faulted in and zeroed), so the sort takes 20 bytes a triangle beyond
+// the result, and none of it is zeroed twice; without the neighbours, none: their memory holds
+// the buckets, and is given back after.
+void canonicalize(Triangulation& out, unsigned threads, bool neighbors) {
+  threads = std::max(threads, 1u);
+  const std::size_t count = out.size();
+  auto& tn = out.neighbors;
+  if (!neighbors) {
+    if (tn.size() < 3 * count) tn.resize(3 * count);
+    static_assert(sizeof(Triple) == 3 * sizeof(std::int32_t) && alignof(Triple) == alignof(std::int32_t));
+    sort_triangles(out, threads, reinterpret_cast<Triple*>(tn.data()), [](const Triple&, std::uint32_t) {});
+    std::vector<std::int32_t>().swap(tn);
+    return;
+  }
+  const Block<Placed> placed = allocate_huge<Placed>(count);
+  make_present(placed.get(), count * sizeof(Placed), threads);
+  const Block<std::int32_t> rank = allocate_huge<std::int32_t>(count);  // a triangle's new number
+  make_present(rank.get(), count * sizeof(std::int32_t), threads);
+  sort_triangles(out, threads, placed.get(),
+                 [&](const Placed& p, std::uint32_t i) { rank[p.from] = static_cast<std::int32_t>(i); });
   // Each triangle's neighbours renumbered in its old place, then the three moved to its new
   // place: in the buckets' memory (12 of its 16 bytes a triangle; int32 may alias the unsigned
   // numbers there), from where they are copied back in order.
-  auto& tn = out.neighbors;
   auto* moved = reinterpret_cast<std::int32_t*>(placed.get());
   parallel_for(count, threads, 65536, [&](std::size_t first, std::size_t last) {
     for (std::size_t t = first; t < last; ++t) {
@@ -155,6 +204,13 @@ void canonicalize(Triangulation& out, unsigned threads) {
   parallel_for(tn.size(), threads, 1 << 18, [&](std::size_t first, std::size_t last) {
     std::copy(moved + first, moved + last, tn.begin() + static_cast<std::ptrdiff_t>(first));
   });
+}
+
+void apply_output_options(Triangulation& out, const Options& options, unsigned threads) {
+  if (options.canonical_order)
+    canonicalize(out, threads, options.neighbors);
+  else if (!options.neighbors)
+    std::vector<std::int32_t>().swap(out.neighbors);
 }
 
 Standing resolve_duplicates(const std::vector<std::uint32_t>& input_index, const std::vector<DuplicateHit>& duplicates,

@@ -57,7 +57,11 @@ Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_ind
                      const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
 
 /// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
-/// neighbours: the output no longer depends on the order of insertion. Up to `threads` threads.
-void canonicalize(Triangulation& out, unsigned threads = 1);
+/// the neighbours: the output no longer depends on the order of insertion. Up to `threads`
+/// threads. Without `neighbors`, their memory serves the sort and the result has none.
+void canonicalize(Triangulation& out, unsigned threads = 1, bool neighbors = true);
+/// What options ask of a finished result: the canonical order (canonicalize), the neighbours
+/// given back where they are not wanted.
+void apply_output_options(Triangulation& out, const Options& options, unsigned threads);
 
 }  // namespace ridt::detail

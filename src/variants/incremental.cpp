@@ -227,7 +227,7 @@ struct IncrementalTriangulation::Mesh {
                          [&](std::vector<Point>& p) { std::copy_n(pts.begin(), n, p.begin()); });
     out.stats.threads = 1;
     out.stats.locate = Locate::Walk;
-    if (options.canonical_order) detail::canonicalize(out, threads);
+    detail::apply_output_options(out, options, threads);
     return out;
   }
 };

@@ -102,7 +102,10 @@ Options options(const Args& a) {
   o.experiment.time_threads = !a.no_thread_timing;
   if (a.stats != "" && a.stats != "json" && a.stats != "table")
     throw InputError("unknown stats format '" + a.stats + "' (use json or table)");
-  if (!a.output.empty()) io::check_triangulation_extension(a.output);
+  if (!a.output.empty()) {
+    io::check_triangulation_extension(a.output);
+    o.neighbors = io::triangulation_needs_neighbors(a.output);
+  }
   return o;
 }
 

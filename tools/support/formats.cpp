@@ -53,15 +53,16 @@ void bin_out(const std::string& path, const TriangulationOut& o) {
 
 // clang-format off
 // extension, description, points in, triangles in, points out, triangulation out, Voronoi out, values out, graph in
+// (and, where the triangulation's writer reads the neighbours, true)
 constexpr Format kFormats[] = {
     {".poly", "Triangle's planar straight-line graph", read_poly_points, nullptr, nullptr, nullptr, nullptr, nullptr, read_poly},
     {".node", "Triangle's nodes",           read_node,        nullptr,             write_node,        nullptr,   nullptr,            nullptr, nullptr},
     {".ele", "Triangle's elements",         nullptr,          read_ele,            nullptr,           ele_out,   nullptr,            nullptr, nullptr},
-    {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr, nullptr},
+    {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr, nullptr, true},
     {".off", "OFF mesh",                    nullptr,          nullptr,             nullptr,           off_out,   write_voronoi_off,  nullptr, nullptr},
     {".ply", "Stanford PLY, binary",        nullptr,          nullptr,             nullptr,           write_ply, nullptr,            nullptr, nullptr},
     {".obj", "Wavefront OBJ",               nullptr,          nullptr,             nullptr,           obj_out,   nullptr,            nullptr, nullptr},
-    {".svg", "a drawing",                   nullptr,          nullptr,             nullptr,           svg_out,   write_voronoi_svg,  nullptr, nullptr},
+    {".svg", "a drawing",                   nullptr,          nullptr,             nullptr,           svg_out,   write_voronoi_svg,  nullptr, nullptr, true},
     {".json", "JSON",                       nullptr,          nullptr,             nullptr,           nullptr,   write_voronoi_json, nullptr, nullptr},
     {".csv", "x,y,values rows",             nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_csv, nullptr},
     {".png", "a colour map of a grid",      nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_png, nullptr},

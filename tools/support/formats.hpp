@@ -49,6 +49,7 @@ struct Format {
   void (*write_voronoi)(Writer& out, const VoronoiOut& v);
   void (*write_values)(Writer& out, const ValuesOut& v);
   Pslg (*read_pslg)(const std::string& path, std::string_view data);  ///< points, segments, holes
+  bool writes_neighbors = false;  ///< write_triangulation reads Triangulation::neighbors
 };
 
 /// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws

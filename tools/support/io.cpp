@@ -69,6 +69,10 @@ std::vector<VertexId> parse_triangles(std::string_view data, const std::string& 
 
 void check_triangulation_extension(const std::string& path) { format_of(path, &Format::write_triangulation, "output"); }
 
+bool triangulation_needs_neighbors(const std::string& path) {
+  return format_of(path, &Format::write_triangulation, "output").writes_neighbors;
+}
+
 void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
                          int first_index) {
   format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index});

@@ -122,6 +122,9 @@ std::vector<VertexId> parse_triangles(std::string_view data, const std::string& 
 
 /// Throws IoError unless `path` has an extension that write_triangulation knows.
 void check_triangulation_extension(const std::string& path);
+/// Whether the triangulation format of `path` writes the neighbours (else the triangulation
+/// need not find them: Options::neighbors).
+bool triangulation_needs_neighbors(const std::string& path);
 
 /// Writes a triangulation (format by extension); indices start at `first_index` in .ele,
 /// .neigh and .off/.obj keep their own conventions (0-based and 1-based).
