@@ -156,7 +156,8 @@ int run(const Args& a) {
   t0 = std::chrono::steady_clock::now();
   if (!a.output.empty()) {
     progress.show("writing");
-    io::write_triangulation(a.output, in.points, t, in.first_index);
+    const unsigned threads = a.threads != 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+    io::write_triangulation(a.output, in.points, t, in.first_index, threads);
     progress.clear();
   }
   const double t_write = seconds_since(t0);

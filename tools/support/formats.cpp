@@ -19,7 +19,7 @@ void whole(const std::string& path, Body body) {
 }
 
 void ele_out(const std::string& path, const TriangulationOut& o) {
-  whole(path, [&](Writer& out) { write_ele(out, o.triangles(), o.first_index); });
+  whole(path, [&](Writer& out) { write_ele(out, o.triangles(), o.first_index, {}, o.threads); });
 }
 
 void neigh_out(const std::string& path, const TriangulationOut& o) {
@@ -28,7 +28,7 @@ void neigh_out(const std::string& path, const TriangulationOut& o) {
     fail_file(path,
               "the triangulation has " + std::to_string(o.t.neighbors.size()) + " neighbour entries for " +
                   std::to_string(nt) + " triangles");
-  whole(path, [&](Writer& out) { write_neigh(out, std::span(o.t.neighbors).first(3 * nt), o.first_index); });
+  whole(path, [&](Writer& out) { write_neigh(out, std::span(o.t.neighbors).first(3 * nt), o.first_index, o.threads); });
 }
 
 void off_out(const std::string& path, const TriangulationOut& o) {

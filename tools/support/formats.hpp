@@ -17,6 +17,7 @@ struct TriangulationOut {
   std::span<const Point> points;
   const Triangulation& t;
   int first_index;  ///< of the input .node, for formats numbered as Triangle's
+  unsigned threads = 1;  ///< that text formats may format on
   std::span<const VertexId> triangles() const { return std::span(t.triangles).first(3 * t.size()); }
 };
 

@@ -74,8 +74,8 @@ bool triangulation_needs_neighbors(const std::string& path) {
 }
 
 void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
-                         int first_index) {
-  format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index});
+                         int first_index, unsigned threads) {
+  format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index, threads});
 }
 
 Pslg read_pslg(const std::string& path) {

@@ -127,9 +127,10 @@ void check_triangulation_extension(const std::string& path);
 bool triangulation_needs_neighbors(const std::string& path);
 
 /// Writes a triangulation (format by extension); indices start at `first_index` in .ele,
-/// .neigh and .off/.obj keep their own conventions (0-based and 1-based).
+/// .neigh and .off/.obj keep their own conventions (0-based and 1-based). Text is formatted on
+/// `threads` threads.
 void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
-                         int first_index);
+                         int first_index, unsigned threads = 1);
 
 /// An axis-parallel box [x0, x1] x [y0, y1].
 struct Box {

@@ -322,10 +322,11 @@ void write_text_points(Writer& out, std::span<const Point> points, int first_ind
 PointFile read_node(const std::string& path, std::string_view text);
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index);
 void write_node(Writer& out, std::span<const Point> points, int first_index);
-/// With `attributes` (one a triangle), Triangle's one attribute column (-A).
+/// With `attributes` (one a triangle), Triangle's one attribute column (-A). The lines are
+/// formatted on `threads` threads.
 void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index,
-               std::span<const double> attributes = {});
-void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index);
+               std::span<const double> attributes = {}, unsigned threads = 1);
+void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index, unsigned threads = 1);
 
 // Raw little-endian binary (io_binary.cpp): float64 pairs, uint32 triples.
 PointFile read_bin_points(const std::string& path, std::string_view data);

@@ -161,36 +161,37 @@ void write_node(Writer& out, std::span<const Point> points, int first_index) {
   }
 }
 
-void write_ele(Writer& out, std::span<const VertexId> tris, int first_index, std::span<const double> attributes) {
+void write_ele(Writer& out, std::span<const VertexId> tris, int first_index, std::span<const double> attributes,
+               unsigned threads) {
   const std::size_t nt = tris.size() / 3;
   const std::int64_t fi = first_index;
   out.put_int(static_cast<std::int64_t>(nt));
   out.put(attributes.empty() ? " 3 0\n" : " 3 1\n");
-  for (std::size_t k = 0; k < nt; ++k) {
-    out.put_int(static_cast<std::int64_t>(k) + fi);
+  out.put_lines(nt, threads, [&](std::size_t k, TextPart& line) {
+    line.put_int(static_cast<std::int64_t>(k) + fi);
     for (int i = 0; i < 3; ++i) {
-      out.put(' ');
-      out.put_int(static_cast<std::int64_t>(tris[3 * k + i]) + fi);
+      line.put(' ');
+      line.put_int(static_cast<std::int64_t>(tris[3 * k + i]) + fi);
     }
-    if (!attributes.empty()) out.put(' '), out.put_double(attributes[k]);
-    out.put('\n');
-  }
+    if (!attributes.empty()) line.put(' '), line.put_double(attributes[k]);
+    line.put('\n');
+  });
 }
 
-void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index) {
+void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index, unsigned threads) {
   const std::size_t nt = neighbors.size() / 3;
   const std::int64_t fi = first_index;
   out.put_int(static_cast<std::int64_t>(nt));
   out.put(" 3\n");
-  for (std::size_t k = 0; k < nt; ++k) {
-    out.put_int(static_cast<std::int64_t>(k) + fi);
+  out.put_lines(nt, threads, [&](std::size_t k, TextPart& line) {
+    line.put_int(static_cast<std::int64_t>(k) + fi);
     for (int i = 0; i < 3; ++i) {
       const std::int32_t nb = neighbors[3 * k + i];
-      out.put(' ');
-      out.put_int(nb < 0 ? -1 : static_cast<std::int64_t>(nb) + fi);
+      line.put(' ');
+      line.put_int(nb < 0 ? -1 : static_cast<std::int64_t>(nb) + fi);
     }
-    out.put('\n');
-  }
+    line.put('\n');
+  });
 }
 
 }  // namespace ridt::io::detail

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <cerrno>
@@ -11,14 +12,58 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <thread>
+#include <vector>
 
 #include "io.hpp"
 
 namespace ridt::io {
+
+/// Text formatted into memory, in the Writer's forms: a run of a file's lines that threads
+/// format side by side (Writer::put_lines).
+class TextPart {
+ public:
+  void put(std::string_view s) {
+    std::memcpy(room(s.size()), s.data(), s.size());
+    size_ += s.size();
+  }
+  void put(char c) {
+    *room(1) = c;
+    ++size_;
+  }
+  void put_int(std::int64_t v) {
+    char* at = room(kNumberRoom);
+    size_ = static_cast<std::size_t>(std::to_chars(at, at + kNumberRoom, v).ptr - buf_.get());
+  }
+  /// Shortest decimal form that reads back to exactly `v`.
+  void put_double(double v) {
+    char* at = room(kNumberRoom);
+    size_ = static_cast<std::size_t>(std::to_chars(at, at + kNumberRoom, v).ptr - buf_.get());
+  }
+  std::string_view text() const { return {buf_.get(), size_}; }
+  void clear() { size_ = 0; }
+
+ private:
+  static constexpr std::size_t kNumberRoom = 48;
+  // Where the next n characters go, the buffer grown (doubled) first where they do not fit.
+  char* room(std::size_t n) {
+    if (capacity_ - size_ < n) {
+      const std::size_t capacity = std::max({2 * capacity_, size_ + n, std::size_t{1} << 16});
+      std::unique_ptr<char[]> bigger(new char[capacity]);
+      if (size_ > 0) std::memcpy(bigger.get(), buf_.get(), size_);
+      buf_ = std::move(bigger), capacity_ = capacity;
+    }
+    return buf_.get() + size_;
+  }
+
+  std::unique_ptr<char[]> buf_;
+  std::size_t size_ = 0, capacity_ = 0;
+};
 
 /// Buffered output to a temporary file beside `path`, renamed onto `path` by commit(). If the
 /// writer is destroyed without a successful commit the temporary file is removed.
@@ -101,6 +146,59 @@ class Writer {
     room(8);
     std::memcpy(buf_.get() + pos_, &v, 8);
     pos_ += 8;
+  }
+
+  /// Lines 0 .. count-1, `line(k, part)` formatting line k into a TextPart, in runs: on
+  /// `threads` threads, waves of runs formatted side by side while this thread writes the
+  /// wave before.
+  template <class Line>
+  void put_lines(std::size_t count, unsigned threads, Line&& line) {
+    constexpr std::size_t kRun = std::size_t{1} << 15;
+    const std::size_t runs = (count + kRun - 1) / kRun;
+    auto format = [&](TextPart& part, std::size_t run) {
+      part.clear();
+      for (std::size_t k = run * kRun, end = std::min(count, (run + 1) * kRun); k < end; ++k) line(k, part);
+    };
+    threads = static_cast<unsigned>(std::clamp<std::size_t>(runs, 1, std::max(threads, 1u)));
+    if (threads == 1) {
+      TextPart part;
+      for (std::size_t run = 0; run < runs; ++run) format(part, run), put(part.text());
+      return;
+    }
+    // Wave w's runs in slots (w % 2) * threads + t; each worker formats in a part of its own,
+    // moved out of the array (neighbouring parts' sizes would share a cache line).
+    std::vector<TextPart> parts(2 * std::size_t{threads});
+    std::vector<std::exception_ptr> failed(parts.size());
+    auto start = [&](std::size_t w) {
+      std::vector<std::thread> workers;
+      for (std::size_t t = 0, run = w * threads; t < threads && run < runs; ++t, ++run)
+        workers.emplace_back([&, slot = (w % 2) * threads + t, run] {
+          TextPart part = std::move(parts[slot]);
+          try {
+            format(part, run);
+          } catch (...) {
+            failed[slot] = std::current_exception();
+          }
+          parts[slot] = std::move(part);
+        });
+      return workers;
+    };
+    const std::size_t waves = (runs + threads - 1) / threads;
+    std::vector<std::thread> current = start(0);
+    for (std::size_t w = 0; w < waves; ++w) {
+      for (std::thread& t : current) t.join();
+      current = w + 1 < waves ? start(w + 1) : std::vector<std::thread>{};
+      try {
+        for (std::size_t t = 0, run = w * threads; t < threads && run < runs; ++t, ++run) {
+          const std::size_t slot = (w % 2) * threads + t;
+          if (failed[slot]) std::rethrow_exception(failed[slot]);
+          put(parts[slot].text());
+        }
+      } catch (...) {
+        for (std::thread& t : current) t.join();
+        throw;
+      }
+    }
   }
 
   /// Writes out and closes the file under its temporary name (throws if that fails): what is
