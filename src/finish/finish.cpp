@@ -53,7 +53,7 @@ struct Placed : Triple {
 // The triangles, each rotated to start at its smallest vertex, sorted into buckets of first
 // vertices (bucket b: first vertices from b << shift), each bucket a run of `bucket_start`,
 // in `placed` (room for every triangle): each part of the triangles counts its own a bucket,
-// then puts them in place after those of the parts before it. Some ten thousand buckets: each
+// then puts them in place after those of the parts before it. Some two thousand buckets: each
 // is small enough to sort in the cache, and a thread writes to few enough places at once to
 // keep them there. Placed turns the neighbours with their triangles.
 template <class T>
@@ -131,7 +131,7 @@ void sort_group(T* begin, T* end) {
 }
 
 // The triangles sorted: into buckets, then each bucket on its own, by first vertex (a counting
-// sort) and each group of one first vertex (some two triangles) by its other two, back into
+// sort) and each group of one first vertex (some two triangles) by its second, back into
 // out.triangles; `moved(p, i)` is called for each triangle p placed at i.
 template <class T, class Moved>
 void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& moved) {
@@ -179,6 +179,7 @@ void canonicalize(Triangulation& out, unsigned threads, bool neighbors) {
   auto& tn = out.neighbors;
   if (!neighbors) {
     if (tn.size() < 3 * count) tn.resize(3 * count);
+    // Triples of unsigned numbers where the signed ones were: an allowed alias.
     static_assert(sizeof(Triple) == 3 * sizeof(std::int32_t) && alignof(Triple) == alignof(std::int32_t));
     sort_triangles(out, threads, reinterpret_cast<Triple*>(tn.data()), [](const Triple&, std::uint32_t) {});
     std::vector<std::int32_t>().swap(tn);

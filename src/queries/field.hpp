@@ -134,18 +134,19 @@ struct Renumbered {
   // the caller's next blocks (the same field as triangulating first and renumbering: the
   // triangulation does not depend on the numbering, and equal points keep their input order,
   // the least input number standing for them).
-  Renumbered(std::span<const Point> points, Values values, unsigned threads)
-      : count(points.size()),
-        components(values.components),
+  Renumbered(std::span<const Point> caller_points, Values caller_values, unsigned threads)
+      : count(caller_points.size()),
+        components(caller_values.components),
         triangle_count(0),
-        input(hilbert_cells_order(points.data(), static_cast<std::uint32_t>(count), threads)) {
-    copy_points(points, values, threads, nullptr);
+        input(hilbert_cells_order(caller_points.data(), static_cast<std::uint32_t>(count), threads)) {
+    copy_points(caller_points, caller_values, threads, nullptr);
     Options options;
     options.method = Method::Auto;
     options.threads = threads;
     Triangulation t = triangulate(std::span<const Point>(points_view()), options);
     triangle_count = t.size();
-    take_triangles({points_view(), t.triangles, t.neighbors, values}, nullptr, threads);
+    take_triangles({points_view(), t.triangles, t.neighbors, {{values.get(), count * components}, components}}, nullptr,
+                   threads);
   }
 
   // The renumbered field; with `other`, other values (`other_components` a point, in the
