@@ -116,7 +116,9 @@ TEST(Triangulate, WithoutNeighboursTheSameTriangles) {
         EXPECT_EQ(without.hull, with.hull);
         if (!canonical) {  // a threaded run's order differs from run to run
           EXPECT_EQ(test::canonical(without.triangles), test::canonical(with.triangles)) << threads;
-          if (threads == 1) EXPECT_EQ(without.triangles, with.triangles);
+          if (threads == 1) {
+            EXPECT_EQ(without.triangles, with.triangles);
+          }
           continue;
         }
         EXPECT_EQ(without.triangles, with.triangles) << threads;
