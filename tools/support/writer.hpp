@@ -169,18 +169,24 @@ class Writer {
     // moved out of the array (neighbouring parts' sizes would share a cache line).
     std::vector<TextPart> parts(2 * std::size_t{threads});
     std::vector<std::exception_ptr> failed(parts.size());
+    // Wave w's workers; where one cannot be started, those that were are joined first.
     auto start = [&](std::size_t w) {
       std::vector<std::thread> workers;
-      for (std::size_t t = 0, run = w * threads; t < threads && run < runs; ++t, ++run)
-        workers.emplace_back([&, slot = (w % 2) * threads + t, run] {
-          TextPart part = std::move(parts[slot]);
-          try {
-            format(part, run);
-          } catch (...) {
-            failed[slot] = std::current_exception();
-          }
-          parts[slot] = std::move(part);
-        });
+      try {
+        for (std::size_t t = 0, run = w * threads; t < threads && run < runs; ++t, ++run)
+          workers.emplace_back([&, slot = (w % 2) * threads + t, run] {
+            TextPart part = std::move(parts[slot]);
+            try {
+              format(part, run);
+            } catch (...) {
+              failed[slot] = std::current_exception();
+            }
+            parts[slot] = std::move(part);
+          });
+      } catch (...) {
+        for (std::thread& t : workers) t.join();
+        throw;
+      }
       return workers;
     };
     const std::size_t waves = (runs + threads - 1) / threads;
