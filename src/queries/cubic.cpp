@@ -229,12 +229,6 @@ int cubic_on_grid(const detail::Renumbered& field, const detail::Axis& ax, const
   return sweeps;
 }
 
-void check_out(const char* who, const Grid& grid, std::size_t components, std::span<double> out) {
-  if (out.size() != grid.size() * components)
-    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
-                     std::to_string(grid.size()) + " nodes of " + std::to_string(components) + " components");
-}
-
 }  // namespace
 
 int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
@@ -243,7 +237,7 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
   const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
   detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
   detail::check_values(who, points.size(), values);
-  check_out(who, grid, values.components, out);
+  detail::check_room(who, out, grid.size(), "nodes", values.components);
   detail::check_sweeps(who, tol, maxiter);
   if (t.triangles.empty()) {
     std::fill(out.begin(), out.end(), fill);
@@ -261,15 +255,18 @@ int griddata_cubic(std::span<const Point> points, Values values, const Grid& gri
   threads = detail::thread_count(threads);
   const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
   detail::check_values(who, points.size(), values);
-  check_out(who, grid, values.components, out);
+  detail::check_room(who, out, grid.size(), "nodes", values.components);
   detail::check_sweeps(who, tol, maxiter);
-  if (points.size() > 0x7ffffff0u)
-    throw InputError(std::string(who) + ": " + std::to_string(points.size()) +
-                     " points, more than a triangulation takes");
-  detail::checked_extent(points, threads);  // before the points are ordered: every one finite
+  // The triangulation's refusals (too many points, one that is not finite) before the points
+  // are ordered.
+  Options options;
+  options.method = Method::Auto;
+  options.threads = threads;
+  estimate_memory(points.size(), options);
+  detail::checked_extent(points, threads);
   // The triangulation's blocks, given back, serve the sweeps'; theirs the answers'.
   const MemoryReuse reuse((kReuseBytesPerPoint * values.components + kTriangulationBytesPerPoint) * points.size());
-  const detail::Renumbered field(points, values, threads);
+  const detail::Renumbered field(points, values, options);
   if (field.triangle_count == 0) {
     std::fill(out.begin(), out.end(), fill);
     return -1;

@@ -29,6 +29,14 @@ inline void check_values(const char* who, std::size_t n, const Values& values) {
                      " points of " + std::to_string(values.components) + " components");
 }
 
+// `out` holds `width` numbers for each of `count` answers (`what`: queries, nodes).
+inline void check_room(const char* who, std::span<const double> out, std::size_t count, const char* what,
+                       std::size_t width) {
+  if (out.size() != count * width)
+    throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
+                     std::to_string(count) + " " + what + " of " + std::to_string(width) + " components");
+}
+
 // Which triangles answer at the nodes of a grid: all of them, but for the DEM (its longest
 // side).
 struct EveryTriangle {
@@ -128,21 +136,19 @@ struct Renumbered {
     take_triangles(f, id.get(), threads);
   }
 
-  // The points' own Delaunay triangulation (Method::Auto on `threads`), made in the new
+  // The points' own Delaunay triangulation (with `options`, on its threads), made in the new
   // numbering: the points and values copied along the curve first and triangulated there, so
   // that no number is mapped and the triangulation's arrays, once sorted, are given back before
   // the caller's next blocks (the same field as triangulating first and renumbering: the
   // triangulation does not depend on the numbering, and equal points keep their input order,
   // the least input number standing for them).
-  Renumbered(std::span<const Point> caller_points, Values caller_values, unsigned threads)
+  Renumbered(std::span<const Point> caller_points, Values caller_values, const Options& options)
       : count(caller_points.size()),
         components(caller_values.components),
         triangle_count(0),
-        input(hilbert_cells_order(caller_points.data(), static_cast<std::uint32_t>(count), threads)) {
+        input(hilbert_cells_order(caller_points.data(), static_cast<std::uint32_t>(count), options.threads)) {
+    const unsigned threads = options.threads;
     copy_points(caller_points, caller_values, threads, nullptr);
-    Options options;
-    options.method = Method::Auto;
-    options.threads = threads;
     Triangulation t = triangulate(std::span<const Point>(points_view()), options);
     triangle_count = t.size();
     take_triangles({points_view(), t.triangles, t.neighbors, {{values.get(), count * components}, components}}, nullptr,
@@ -219,9 +225,7 @@ class Input {
       : field_{points, t.triangles, t.neighbors, values} {
     check_arrays(who, points.size(), t.triangles, t.neighbors);
     check_values(who, points.size(), values);
-    if (out.size() != count * width)
-      throw InputError(std::string(who) + ": room for " + std::to_string(out.size()) + " numbers, not " +
-                       std::to_string(count) + " " + what + " of " + std::to_string(width) + " components");
+    check_room(who, out, count, what, width);
     if (count >= t.size()) {
       renumbered_.emplace(field_, threads);
       field_ = renumbered_->field();

@@ -86,6 +86,11 @@ void print_json(Fields f, const Stats& s) {
   std::printf("}\n");
 }
 
+// --threads, or every hardware thread.
+unsigned thread_count(const Args& a) {
+  return a.threads != 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+}
+
 Options options(const Args& a) {
   Options o;
   o.method = parse<Method>(a.method);
@@ -102,10 +107,7 @@ Options options(const Args& a) {
   o.experiment.time_threads = !a.no_thread_timing;
   if (a.stats != "" && a.stats != "json" && a.stats != "table")
     throw InputError("unknown stats format '" + a.stats + "' (use json or table)");
-  if (!a.output.empty()) {
-    io::check_triangulation_extension(a.output);
-    o.neighbors = io::triangulation_needs_neighbors(a.output);
-  }
+  if (!a.output.empty()) o.neighbors = io::triangulation_needs_neighbors(a.output);  // an unknown one throws
   return o;
 }
 
@@ -121,7 +123,7 @@ int run_out_of_core(const Args& a) {
   o.input = a.input;
   o.output = a.output;
   if (!a.memory_limit.empty()) o.memory_limit = byte_size(a.memory_limit, "--memory-limit");
-  o.threads = a.threads != 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  o.threads = thread_count(a);
   o.column_points = a.column_points;
   ProgressLine progress;
   if (progress.on()) o.progress = [&](const char* phase, double done) { progress.show(phase, done); };
@@ -156,8 +158,7 @@ int run(const Args& a) {
   t0 = std::chrono::steady_clock::now();
   if (!a.output.empty()) {
     progress.show("writing");
-    const unsigned threads = a.threads != 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
-    io::write_triangulation(a.output, in.points, t, in.first_index, threads);
+    io::write_triangulation(a.output, in.points, t, in.first_index, thread_count(a));
     progress.clear();
   }
   const double t_write = seconds_since(t0);

@@ -67,8 +67,6 @@ std::vector<VertexId> parse_triangles(std::string_view data, const std::string& 
   return format_of(name, &Format::read_triangles, "triangle input").read_triangles(name, data, first_index);
 }
 
-void check_triangulation_extension(const std::string& path) { format_of(path, &Format::write_triangulation, "output"); }
-
 bool triangulation_needs_neighbors(const std::string& path) {
   return format_of(path, &Format::write_triangulation, "output").writes_neighbors;
 }

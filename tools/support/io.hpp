@@ -120,10 +120,9 @@ std::vector<VertexId> read_parts(const std::string& path);
 /// The same for content in memory (`name` as for parse_points).
 std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index);
 
-/// Throws IoError unless `path` has an extension that write_triangulation knows.
-void check_triangulation_extension(const std::string& path);
 /// Whether the triangulation format of `path` writes the neighbours (else the triangulation
-/// need not find them: Options::neighbors).
+/// need not find them: Options::neighbors); throws IoError unless write_triangulation knows
+/// its extension.
 bool triangulation_needs_neighbors(const std::string& path);
 
 /// Writes a triangulation (format by extension); indices start at `first_index` in .ele,
