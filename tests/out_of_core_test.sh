@@ -75,6 +75,20 @@ assert s["strips"] >= 8 and s["points"] == 200000, s
 assert s["loaded"] <= 4 * s["points"], s
 EOF
 
+# The check of parts reads them in passes: damaged parts are refused (exit status 1), whether a
+# triangle is missing or a part is named twice.
+"$ridt" triangulate "$dir/large.bin" -o "$dir/d.parts" --out-of-core --memory-limit 42M --threads 1 >/dev/null
+part=$(sed -n 2p "$dir/d.parts")
+head -c -12 "$dir/$part" >"$dir/short.bin"
+{ echo "ridt parts $(($(wc -l <"$dir/d.parts") - 1))"; tail -n +2 "$dir/d.parts" | sed "s|^$part\$|short.bin|"; } >"$dir/short.parts"
+{ echo "ridt parts $(wc -l <"$dir/d.parts")"; tail -n +2 "$dir/d.parts"; echo "$part"; } >"$dir/twice.parts"
+"$ridt" check "$dir/large.bin" "$dir/d.parts" | grep -q "^valid" && pass || fail "check of whole parts"
+for damaged in short twice; do
+  "$ridt" check "$dir/large.bin" "$dir/$damaged.parts" >"$dir/out" 2>&1
+  got=$?
+  [ "$got" -eq 1 ] && grep -q "^invalid" "$dir/out" && pass || { fail "check of $damaged parts: exit $got"; cat "$dir/out"; }
+done
+
 # Bad input and usage: a message, exit status 2, nothing written.
 expect_bad() {
   local what=$1 message=$2; shift 2

@@ -2,6 +2,7 @@
 // (it shares only the exact predicates).
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 
@@ -32,6 +33,24 @@ inline constexpr std::size_t kCheckMaxTriangles = 0xffffffffu / 3;
 /// all of them are collinear. Points must be finite. Throws InputError for more than
 /// kCheckMaxTriangles triangles (the triangulation of some 715 million points).
 CheckResult check(std::span<const Point> points, std::span<const VertexId> triangles);
+
+/// Triangles handed over a chunk at a time: a TriangleFeed, called, passes every triangle
+/// once to the sink, in chunks of whole triangles (each chunk #T by 3 indices), and the same
+/// triangles in the same order on every call.
+using TriangleSink = std::function<void(std::span<const VertexId>)>;
+using TriangleFeed = std::function<void(const TriangleSink&)>;
+
+/// check() for triangulations too large to hold with its edge table: the triangles are read
+/// from `feed` in passes and never held all at once. Beside the points it keeps 5 bytes a
+/// point, the boundary's edges, the few points near the convex hull, and per pass at most
+/// `side_bytes` of sides (12 bytes a side; 0: a quarter of available_memory()), each pass
+/// after the first checking the edges of a range of vertices: about 36 bytes a triangle over
+/// all passes. Its verdict is check()'s; the message names the same kind of problem, but where
+/// there are several, not always the same first one (and two vertices at one point show as
+/// the boundary they make, not by name). Work on `threads` (0: the hardware's). With no
+/// triangle from the feed, check() in memory. Any number of triangles.
+CheckResult check_in_passes(std::span<const Point> points, const TriangleFeed& feed, std::size_t side_bytes = 0,
+                            unsigned threads = 0);
 
 /// The same for a constrained Delaunay triangulation of `points` with `segments` (pairs of
 /// indices into `points`, a flat array a0, b0, a1, b1, ...), its boundary the convex hull:

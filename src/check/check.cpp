@@ -18,7 +18,9 @@ namespace ridt {
 namespace {
 
 using detail::check_edges;
+using detail::check_hull_and_count;
 using detail::check_triangles;
+using detail::Distinct;
 using detail::Edge;
 using detail::exactly_scaled;
 using detail::hull_with_collinear;
@@ -26,15 +28,6 @@ using detail::Report;
 
 using detail::incircle;
 using detail::orient2d;
-
-// The points' indices sorted lexicographically (equal points by index), the first index of
-// each group of equal points, and whether the distinct points are fewer than three or
-// collinear (then no triangle is right).
-struct Distinct {
-  std::vector<VertexId> sorted;
-  std::vector<VertexId> first;
-  bool degenerate = false;
-};
 
 Distinct group_distinct(std::span<const Point> pts) {
   const std::size_t n = pts.size();
@@ -131,47 +124,6 @@ std::size_t check_vertices(std::span<const Point> pts, const Distinct& d, const 
   return vertices;
 }
 
-// Triangles exactly when the points are not degenerate; then the boundary is the convex hull
-// and Euler's count holds: #T = 2V - 2 - H.
-void check_boundary(std::span<const Point> pts, const Distinct& d, std::vector<Edge> boundary, std::size_t count,
-                    std::size_t vertices, Report& report) {
-  if (d.degenerate) {
-    if (count > 0)
-      report.problem("the points are ", d.first.size() < 3 ? "fewer than three" : "collinear",
-                     " but there are triangles");
-    return;
-  }
-  if (count == 0) {
-    report.problem("no triangles for ", d.first.size(), " non-collinear points");
-    return;
-  }
-  const std::vector<VertexId> hull = hull_with_collinear(pts, d.first);
-  std::vector<Edge> expected;
-  for (std::size_t i = 0; i < hull.size(); ++i) expected.emplace_back(hull[i], hull[(i + 1) % hull.size()]);
-  // The triangulation may name another index of a duplicate group: compare by coordinates.
-  auto canonical = [&](VertexId v) {
-    return *std::lower_bound(d.first.begin(), d.first.end(), v,
-                             [&](VertexId a, VertexId b) { return detail::lex_less(pts[a], pts[b]); });
-  };
-  for (Edge& e : boundary) e = {canonical(e.first), canonical(e.second)};
-  std::sort(expected.begin(), expected.end());
-  std::sort(boundary.begin(), boundary.end());
-  if (boundary != expected) {
-    std::vector<Edge> missing;
-    std::set_difference(expected.begin(), expected.end(), boundary.begin(), boundary.end(),
-                        std::back_inserter(missing));
-    if (!missing.empty())
-      report.problem("convex hull edge ", missing[0].first, "->", missing[0].second, " is missing (", missing.size(),
-                     " hull edges missing)");
-    else
-      report.problem("the boundary has ", boundary.size(), " edges, the convex hull ", expected.size());
-  }
-  const std::size_t h = hull.size();
-  if (count != 2 * vertices - 2 - h)
-    report.problem(count, " triangles, but ", vertices, " vertices with ", h, " on the hull need ",
-                   2 * vertices - 2 - h);
-}
-
 }  // namespace
 
 CheckResult check_constrained(std::span<const Point> input, std::span<const VertexId> tris,
@@ -199,7 +151,7 @@ CheckResult check_constrained(std::span<const Point> input, std::span<const Vert
       : segment_edges(pts, tris, segments, standing(pts, distinct, used), report);
   std::vector<Edge> boundary = check_edges(pts, tris, constrained, report);
   const std::size_t vertices = check_vertices(pts, distinct, used, count > 0, report);
-  check_boundary(pts, distinct, std::move(boundary), count, vertices, report);
+  check_hull_and_count(pts, distinct, std::move(boundary), count, vertices, report);
 
   std::ostringstream s;
   s << "valid: " << count << " triangles, " << vertices << " vertices of " << pts.size() << " points ("

@@ -116,4 +116,45 @@ std::vector<VertexId> hull_with_collinear(std::span<const Point> pts, const std:
   return h;
 }
 
+// Triangles exactly when the points are not degenerate; then the boundary is the convex hull
+// and Euler's count holds: #T = 2V - 2 - H.
+void check_hull_and_count(std::span<const Point> pts, const Distinct& d, std::vector<Edge> boundary, std::size_t count,
+                          std::size_t vertices, Report& report) {
+  if (d.degenerate) {
+    if (count > 0)
+      report.problem("the points are ", d.first.size() < 3 ? "fewer than three" : "collinear",
+                     " but there are triangles");
+    return;
+  }
+  if (count == 0) {
+    report.problem("no triangles for ", d.first.size(), " non-collinear points");
+    return;
+  }
+  const std::vector<VertexId> hull = hull_with_collinear(pts, d.first);
+  std::vector<Edge> expected;
+  for (std::size_t i = 0; i < hull.size(); ++i) expected.emplace_back(hull[i], hull[(i + 1) % hull.size()]);
+  // The triangulation may name another index of a duplicate group: compare by coordinates.
+  auto canonical = [&](VertexId v) {
+    return *std::lower_bound(d.first.begin(), d.first.end(), v,
+                             [&](VertexId a, VertexId b) { return detail::lex_less(pts[a], pts[b]); });
+  };
+  for (Edge& e : boundary) e = {canonical(e.first), canonical(e.second)};
+  std::sort(expected.begin(), expected.end());
+  std::sort(boundary.begin(), boundary.end());
+  if (boundary != expected) {
+    std::vector<Edge> missing;
+    std::set_difference(expected.begin(), expected.end(), boundary.begin(), boundary.end(),
+                        std::back_inserter(missing));
+    if (!missing.empty())
+      report.problem("convex hull edge ", missing[0].first, "->", missing[0].second, " is missing (", missing.size(),
+                     " hull edges missing)");
+    else
+      report.problem("the boundary has ", boundary.size(), " edges, the convex hull ", expected.size());
+  }
+  const std::size_t h = hull.size();
+  if (count != 2 * vertices - 2 - h)
+    report.problem(count, " triangles, but ", vertices, " vertices with ", h, " on the hull need ",
+                   2 * vertices - 2 - h);
+}
+
 }  // namespace ridt::detail

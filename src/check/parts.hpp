@@ -24,6 +24,12 @@ class Report {
     }
   }
   std::size_t problems() const { return problems_; }
+  // Another report's problems, after this one's.
+  void merge(const Report& other) {
+    if (other.problems_ == 0) return;
+    if (problems_ == 0) first_ = other.first_;
+    problems_ += other.problems_;
+  }
   // The verdict: the first problem and their count, or `valid` when there is none.
   CheckResult result(const std::string& valid = {}) const {
     if (problems_ == 0) return {true, valid, 0};
@@ -39,7 +45,14 @@ class Report {
 
 using Edge = std::pair<VertexId, VertexId>;
 
-using Edge = std::pair<VertexId, VertexId>;
+/// The points' indices sorted lexicographically (equal points by index), the first index of
+/// each group of equal points, and whether the distinct points are fewer than three or
+/// collinear (then no triangle is right).
+struct Distinct {
+  std::vector<VertexId> sorted;
+  std::vector<VertexId> first;
+  bool degenerate = false;
+};
 
 /// Huge or tiny coordinates: an exactly scaled copy keeps the predicates on their fast path.
 /// Empty when the input needs none.
@@ -59,5 +72,13 @@ std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const Vertex
 /// given as indices sorted lexicographically (Andrew's monotone chain). Requires at least three
 /// non-collinear points.
 std::vector<VertexId> hull_with_collinear(std::span<const Point> pts, const std::vector<VertexId>& sorted);
+
+/// Triangles exactly when the points are not degenerate; then the boundary edges (directed as
+/// their triangles run, any index of a group of equal points) are the convex hull of the
+/// points `d.first` (the hull of all the points, though `first` need hold only those not
+/// strictly inside it), and Euler's count holds for `count` triangles and `vertices` vertices:
+/// #T = 2V - 2 - H.
+void check_hull_and_count(std::span<const Point> pts, const Distinct& d, std::vector<Edge> boundary, std::size_t count,
+                          std::size_t vertices, Report& report);
 
 }  // namespace ridt::detail

@@ -41,9 +41,20 @@ Command add_check(CLI::App& app) {
   chk->add_option("--max-area", a->max_area, "no triangle larger than A");
   return {chk, [a] {
             const io::PointFile p = io::read_points(a->points);
-            const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
+            const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
             CheckResult r;
-            if (a->poly.empty() && a->edges.empty() && a->min_angle == 0 && a->max_area == 0) {
+            if (!mesh && io::is_parts_index(a->triangles)) {
+              // Parts may hold more triangles than memory with their edge table: read in
+              // passes, a part at a time.
+              const std::vector<std::string> parts = io::part_files(a->triangles);
+              r = check_in_passes(p.points, [&](const TriangleSink& sink) {
+                for (const std::string& part : parts) sink(io::read_triangles(part, 0));
+              });
+              std::printf("%s\n", r.message.c_str());
+              return r.valid ? 0 : kExitInvalid;
+            }
+            const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
+            if (!mesh) {
               r = check(p.points, t);
             } else {
               const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly);

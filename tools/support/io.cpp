@@ -32,11 +32,13 @@ void write_points(const std::string& path, std::span<const Point> points, int fi
 }
 
 std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
-  if (extension_of(path) == ".parts") return read_parts(path);
+  if (is_parts_index(path)) return read_parts(path);
   return parse_triangles(read_file_whole(path), path, first_index);
 }
 
-std::vector<VertexId> read_parts(const std::string& path) {
+bool is_parts_index(const std::string& path) { return extension_of(path) == ".parts"; }
+
+std::vector<std::string> part_files(const std::string& path) {
   // "ridt parts N", then N part files (.ele, indices from 0, or .bin), named relative to the index.
   const std::string text = read_file_whole(path);
   std::vector<std::string> lines;
@@ -52,11 +54,18 @@ std::vector<VertexId> read_parts(const std::string& path) {
       std::stoul(count) != lines.size() - 1)
     fail_file(path, "the index says " + count + " parts but names " + std::to_string(lines.size() - 1));
   const fs::path dir = fs::path(path).parent_path();
-  std::vector<VertexId> out;
+  std::vector<std::string> parts;
   for (std::size_t k = 1; k < lines.size(); ++k) {
-    const std::string part = (dir / lines[k]).string();
-    if (extension_of(part) != ".ele" && extension_of(part) != ".bin")
+    parts.push_back((dir / lines[k]).string());
+    if (extension_of(parts.back()) != ".ele" && extension_of(parts.back()) != ".bin")
       fail_file(path, "part " + lines[k] + " is neither an .ele nor a .bin file");
+  }
+  return parts;
+}
+
+std::vector<VertexId> read_parts(const std::string& path) {
+  std::vector<VertexId> out;
+  for (const std::string& part : part_files(path)) {
     const std::vector<VertexId> t = read_triangles(part, 0);
     out.insert(out.end(), t.begin(), t.end());
   }

@@ -116,6 +116,10 @@ std::vector<VertexId> read_triangles(const std::string& path, int first_index);
 /// then the N part files, .ele (0-based) or .bin, named relative to the index), the parts'
 /// triangles one after another.
 std::vector<VertexId> read_parts(const std::string& path);
+/// Whether `path` names an index of parts (.parts).
+bool is_parts_index(const std::string& path);
+/// The part files that a .parts index names, in its order, each checked to be .ele or .bin.
+std::vector<std::string> part_files(const std::string& path);
 
 /// The same for content in memory (`name` as for parse_points).
 std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index);

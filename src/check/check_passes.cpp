@@ -1,0 +1,278 @@
+// The validator in passes (ridt/check.hpp check_in_passes): what check() asks, of triangles
+// read again for each pass instead of held with a table of all their sides.
+//
+// The first pass checks each triangle (its indices, its orientation), marks its vertices and
+// counts the sides filed under each vertex (a side's smaller end). The vertices are then cut
+// into ranges whose sides fit the budget, and each range takes a pass: its sides are filed
+// there (a counting sort by the smaller end, then by the larger one within each file), the two
+// sides of an interior edge meet for the in-circle test, and a side alone is on the boundary.
+// The convex hull is that of the few points not strictly inside the polygon of some extreme
+// points (Akl and Toussaint's filter), exact orientation deciding. A point that no triangle
+// uses must equal one that some triangle does. Two vertices at one point need no test of their
+// own: with every triangle counter-clockwise, every edge matched and the boundary the hull,
+// the triangles cover the hull once, so no point can be in two stars.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "check/parts.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/check.hpp"
+#include "runtime/parallel.hpp"
+
+namespace ridt {
+namespace {
+
+using detail::Edge;
+using detail::incircle;
+using detail::lex_less;
+using detail::orient2d;
+using detail::Report;
+
+// One side of a triangle, filed under its smaller end lo.
+struct Side {
+  VertexId hi;
+  VertexId opposite;  // the triangle's third corner
+  std::uint32_t forward;  // 1 where the triangle runs lo -> hi
+};
+
+// Results of parts of a parallel loop, merged in the order of the parts: the first problem
+// is then the one a single thread would have met first.
+template <class Result>
+class InOrder {
+ public:
+  void put(std::size_t first, Result r) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    parts_.emplace_back(first, std::move(r));
+  }
+  // The parts' results, by where they began.
+  std::vector<Result> take() {
+    std::sort(parts_.begin(), parts_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Result> out;
+    for (auto& p : parts_) out.push_back(std::move(p.second));
+    return out;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::pair<std::size_t, Result>> parts_;
+};
+
+// The first pass: every index in range, every triangle counter-clockwise and not degenerate,
+// the vertices marked, and the sides filed under each vertex counted (in files[v + 1]).
+std::size_t first_pass(std::span<const Point> pts, const TriangleFeed& feed, std::vector<std::uint8_t>& used,
+                       std::vector<std::uint32_t>& files, unsigned threads, Report& report) {
+  const std::size_t n = pts.size();
+  std::size_t count = 0;
+  feed([&](std::span<const VertexId> tris) {
+    if (tris.size() % 3 != 0) report.problem("a chunk of triangles is not a multiple of 3 long");
+    const std::size_t k = tris.size() / 3;
+    InOrder<Report> reports;
+    detail::parallel_for(k, threads, 1 << 14, [&](std::size_t first, std::size_t last) {
+      Report r;
+      for (std::size_t t = first; t < last; ++t) {
+        const VertexId* v = &tris[3 * t];
+        if (v[0] >= n || v[1] >= n || v[2] >= n) {
+          r.problem("triangle ", count + t, " has a vertex index out of range");
+          continue;
+        }
+        if (orient2d(pts[v[0]], pts[v[1]], pts[v[2]]) <= 0)
+          r.problem("triangle ", count + t, " (", v[0], " ", v[1], " ", v[2],
+                    ") is not counter-clockwise or is degenerate");
+      }
+      reports.put(first, std::move(r));
+    });
+    for (const Report& r : reports.take()) report.merge(r);
+    // The marks and counts, atomic: triangles on two threads may share a vertex.
+    detail::parallel_for(k, threads, 1 << 14, [&](std::size_t first, std::size_t last) {
+      for (std::size_t t = first; t < last; ++t) {
+        const VertexId* v = &tris[3 * t];
+        if (v[0] >= n || v[1] >= n || v[2] >= n) continue;
+        for (int i = 0; i < 3; ++i) {
+          std::atomic_ref<std::uint8_t>(used[v[i]]).store(1, std::memory_order_relaxed);
+          std::atomic_ref<std::uint32_t>(files[std::min(v[i], v[i == 2 ? 0 : i + 1]) + 1])
+              .fetch_add(1, std::memory_order_relaxed);
+        }
+      }
+    });
+    count += k;
+  });
+  return count;
+}
+
+// The sides filed under the vertices [lo, hi) (`files`: where each one's begin, from lo's,
+// then where they all end), each edge's two sides tested, the boundary's sides added to
+// `boundary`.
+void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, VertexId lo, VertexId hi,
+                    std::vector<std::size_t> files, unsigned threads, std::vector<Edge>& boundary, Report& report) {
+  std::vector<Side> sides(files.back());
+  feed([&](std::span<const VertexId> tris) {
+    for (std::size_t k = 0; k + 2 < tris.size(); k += 3)
+      for (int i = 0; i < 3; ++i) {
+        const VertexId a = tris[k + i], b = tris[k + (i + 1) % 3];
+        const VertexId least = std::min(a, b);
+        if (least >= lo && least < hi)
+          sides[files[least - lo]++] = {std::max(a, b), tris[k + (i + 2) % 3], a < b ? 1u : 0u};
+      }
+  });
+  // files[j] is now the end of vertex lo + j's file, the start of the next one's.
+  struct Found {
+    Report report;
+    std::vector<Edge> boundary;
+  };
+  InOrder<Found> found;
+  detail::parallel_for(hi - lo, threads, 1 << 12, [&](std::size_t first, std::size_t last) {
+    Found f;
+    for (std::size_t j = first; j < last; ++j) {
+      const VertexId v = lo + static_cast<VertexId>(j);
+      Side* const begin = sides.data() + (j == 0 ? 0 : files[j - 1]);
+      Side* const end = sides.data() + files[j];
+      std::sort(begin, end,
+                [](const Side& x, const Side& y) { return x.hi < y.hi || (x.hi == y.hi && x.forward < y.forward); });
+      for (Side* e = begin; e != end;) {
+        Side* run = e;
+        while (e != end && e->hi == run->hi) ++e;
+        const VertexId w = run->hi;
+        if (e - run == 1) {
+          f.boundary.push_back(run->forward ? Edge{v, w} : Edge{w, v});
+        } else if (e - run > 2 || run[0].forward == run[1].forward) {
+          f.report.problem("edge ", v, "-", w, " is used by two triangles in the same direction");
+        } else if (incircle(pts[v], pts[w], pts[run[1].opposite], pts[run[0].opposite]) > 0) {
+          // run[1] is the triangle v -> w -> its opposite, counter-clockwise.
+          f.report.problem("edge ", v, "-", w, " is not locally Delaunay (vertex ", run[0].opposite,
+                           " lies inside the circle of triangle ", v, " ", w, " ", run[1].opposite, ")");
+        }
+      }
+    }
+    found.put(first, std::move(f));
+  });
+  for (Found& f : found.take()) {
+    report.merge(f.report);
+    boundary.insert(boundary.end(), f.boundary.begin(), f.boundary.end());
+  }
+}
+
+// Some extreme points' convex polygon, counter-clockwise: the least and greatest
+// lexicographically, by y, by x + y and by x - y (the sums rounded: they only choose points).
+// Empty where those points are fewer than three distinct or collinear.
+std::vector<VertexId> extreme_polygon(std::span<const Point> pts) {
+  VertexId e[8] = {};
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const Point& p = pts[i];
+    auto take = [&](int k, bool better) {
+      if (better) e[k] = static_cast<VertexId>(i);
+    };
+    take(0, lex_less(p, pts[e[0]]));
+    take(1, lex_less(pts[e[1]], p));
+    take(2, p.y < pts[e[2]].y);
+    take(3, p.y > pts[e[3]].y);
+    take(4, p.x + p.y < pts[e[4]].x + pts[e[4]].y);
+    take(5, p.x + p.y > pts[e[5]].x + pts[e[5]].y);
+    take(6, p.x - p.y < pts[e[6]].x - pts[e[6]].y);
+    take(7, p.x - p.y > pts[e[7]].x - pts[e[7]].y);
+  }
+  std::vector<VertexId> corners(e, e + 8);
+  std::sort(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]); });
+  corners.erase(std::unique(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return pts[a] == pts[b]; }),
+                corners.end());
+  bool flat = true;
+  for (std::size_t i = 2; flat && i < corners.size(); ++i)
+    flat = orient2d(pts[corners[0]], pts[corners[1]], pts[corners[i]]) == 0;
+  if (corners.size() < 3 || flat) return {};
+  return detail::hull_with_collinear(pts, corners);
+}
+
+// The points not strictly inside the extreme polygon (all of them where it is empty), grouped:
+// `first` the least index of each group of equal points, in lexicographic order. They hold the
+// convex hull's corners and the points on its sides.
+detail::Distinct near_the_hull(std::span<const Point> pts, unsigned threads) {
+  const std::vector<VertexId> polygon = extreme_polygon(pts);
+  InOrder<std::vector<VertexId>> kept;
+  detail::parallel_for(pts.size(), threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    std::vector<VertexId> near;
+    for (std::size_t i = first; i < last; ++i) {
+      bool inside = !polygon.empty();
+      for (std::size_t k = 0; inside && k < polygon.size(); ++k)
+        inside = orient2d(pts[polygon[k]], pts[polygon[(k + 1) % polygon.size()]], pts[i]) > 0;
+      if (!inside) near.push_back(static_cast<VertexId>(i));
+    }
+    kept.put(first, std::move(near));
+  });
+  detail::Distinct d;
+  for (const std::vector<VertexId>& part : kept.take()) d.sorted.insert(d.sorted.end(), part.begin(), part.end());
+  std::sort(d.sorted.begin(), d.sorted.end(),
+            [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]) || (pts[a] == pts[b] && a < b); });
+  for (std::size_t i = 0; i < d.sorted.size(); ++i)
+    if (i == 0 || !(pts[d.sorted[i]] == pts[d.sorted[i - 1]])) d.first.push_back(d.sorted[i]);
+  return d;
+}
+
+// Every point that no triangle uses equal to one that some triangle does; returns the number
+// of vertices.
+std::size_t check_unused(std::span<const Point> pts, const std::vector<std::uint8_t>& used, unsigned threads,
+                         Report& report) {
+  std::vector<VertexId> unused;
+  std::size_t vertices = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (used[i])
+      ++vertices;
+    else
+      unused.push_back(static_cast<VertexId>(i));
+  }
+  if (unused.empty()) return vertices;
+  auto less = [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]); };
+  std::sort(unused.begin(), unused.end(),
+            [&](VertexId a, VertexId b) { return less(a, b) || (pts[a] == pts[b] && a < b); });
+  std::vector<std::uint8_t> matched(unused.size(), 0);
+  detail::parallel_for(pts.size(), threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      if (!used[i]) continue;
+      const auto [b, e] = std::equal_range(unused.begin(), unused.end(), static_cast<VertexId>(i), less);
+      for (auto it = b; it != e; ++it) matched[static_cast<std::size_t>(it - unused.begin())] = 1;  // the same byte
+    }
+  });
+  for (std::size_t k = 0; k < unused.size(); ++k)
+    if (!matched[k] && (k == 0 || !(pts[unused[k]] == pts[unused[k - 1]])))
+      report.problem("point ", unused[k], " is not a vertex of any triangle");
+  return vertices;
+}
+
+}  // namespace
+
+CheckResult check_in_passes(std::span<const Point> input, const TriangleFeed& feed, std::size_t side_bytes,
+                            unsigned threads) {
+  threads = detail::thread_count(threads);
+  if (side_bytes == 0) side_bytes = available_memory() / 4;
+  const std::vector<Point> scaled = detail::exactly_scaled(input);
+  const std::span<const Point> pts = scaled.empty() ? input : std::span<const Point>(scaled);
+  const std::size_t n = pts.size();
+  Report report;
+  std::vector<std::uint8_t> used(n, 0);
+  std::vector<std::uint32_t> files(n + 1, 0);
+  const std::size_t count = first_pass(pts, feed, used, files, threads, report);
+  if (count == 0 && report.problems() == 0) return check(input, {});
+  if (report.problems() > 0) return report.result();  // what follows needs sound triangles
+  // Each range of vertices whose sides, and their files' starts, fit the budget (one vertex's
+  // at least).
+  std::vector<Edge> boundary;
+  auto cost = [&](std::size_t v) { return files[v + 1] * sizeof(Side) + sizeof(std::size_t); };
+  for (std::size_t lo = 0, hi = 0; lo < n; lo = hi) {
+    for (std::size_t bytes = 0; hi < n && (hi == lo || bytes + cost(hi) <= side_bytes); ++hi) bytes += cost(hi);
+    std::vector<std::size_t> starts(hi - lo + 1, 0);
+    for (std::size_t j = 0; j < hi - lo; ++j) starts[j + 1] = starts[j] + files[lo + j + 1];
+    edges_of_range(pts, feed, static_cast<VertexId>(lo), static_cast<VertexId>(hi), std::move(starts), threads,
+                   boundary, report);
+  }
+  const std::size_t vertices = check_unused(pts, used, threads, report);
+  detail::check_hull_and_count(pts, near_the_hull(pts, threads), std::move(boundary), count, vertices, report);
+  std::string valid = "valid: " + std::to_string(count) + " triangles, " + std::to_string(vertices) + " vertices of " +
+      std::to_string(n) + " points (" + std::to_string(vertices) + " distinct), exactly Delaunay";
+  return report.result(valid);
+}
+
+}  // namespace ridt
