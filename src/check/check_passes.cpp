@@ -111,14 +111,21 @@ std::size_t first_pass(std::span<const Point> pts, const TriangleFeed& feed, std
 void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, VertexId lo, VertexId hi,
                     std::vector<std::size_t> files, unsigned threads, std::vector<Edge>& boundary, Report& report) {
   std::vector<Side> sides(files.back());
+  // Filed on threads, each side's place taken atomically: the order within a file is then the
+  // threads' race, which the sort below undoes.
   feed([&](std::span<const VertexId> tris) {
-    for (std::size_t k = 0; k + 2 < tris.size(); k += 3)
-      for (int i = 0; i < 3; ++i) {
-        const VertexId a = tris[k + i], b = tris[k + (i + 1) % 3];
-        const VertexId least = std::min(a, b);
-        if (least >= lo && least < hi)
-          sides[files[least - lo]++] = {std::max(a, b), tris[k + (i + 2) % 3], a < b ? 1u : 0u};
-      }
+    detail::parallel_for(tris.size() / 3, threads, 1 << 14, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = 3 * first; k < 3 * last; k += 3)
+        for (int i = 0; i < 3; ++i) {
+          const VertexId a = tris[k + i], b = tris[k + (i + 1) % 3];
+          const VertexId least = std::min(a, b);
+          if (least >= lo && least < hi) {
+            const std::size_t at =
+                std::atomic_ref<std::size_t>(files[least - lo]).fetch_add(1, std::memory_order_relaxed);
+            sides[at] = {std::max(a, b), tris[k + (i + 2) % 3], a < b ? 1u : 0u};
+          }
+        }
+    });
   });
   // files[j] is now the end of vertex lo + j's file, the start of the next one's.
   struct Found {
@@ -132,8 +139,10 @@ void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, Vertex
       const VertexId v = lo + static_cast<VertexId>(j);
       Side* const begin = sides.data() + (j == 0 ? 0 : files[j - 1]);
       Side* const end = sides.data() + files[j];
-      std::sort(begin, end,
-                [](const Side& x, const Side& y) { return x.hi < y.hi || (x.hi == y.hi && x.forward < y.forward); });
+      std::sort(begin, end, [](const Side& x, const Side& y) {
+        return x.hi < y.hi ||
+            (x.hi == y.hi && (x.forward < y.forward || (x.forward == y.forward && x.opposite < y.opposite)));
+      });
       for (Side* e = begin; e != end;) {
         Side* run = e;
         while (e != end && e->hi == run->hi) ++e;
@@ -233,7 +242,9 @@ std::size_t check_unused(std::span<const Point> pts, const std::vector<std::uint
     for (std::size_t i = first; i < last; ++i) {
       if (!used[i]) continue;
       const auto [b, e] = std::equal_range(unused.begin(), unused.end(), static_cast<VertexId>(i), less);
-      for (auto it = b; it != e; ++it) matched[static_cast<std::size_t>(it - unused.begin())] = 1;  // the same byte
+      for (auto it = b; it != e; ++it)  // two threads may mark one
+        std::atomic_ref<std::uint8_t>(matched[static_cast<std::size_t>(it - unused.begin())])
+            .store(1, std::memory_order_relaxed);
     }
   });
   for (std::size_t k = 0; k < unused.size(); ++k)
