@@ -48,7 +48,8 @@ using TriangleFeed = std::function<void(const TriangleSink&)>;
 /// all passes. Its verdict is check()'s; the message names the same kind of problem, but where
 /// there are several, not always the same first one (and two vertices at one point show as
 /// the boundary they make, not by name). Work on `threads` (0: the hardware's). With no
-/// triangle from the feed, check() in memory. Any number of triangles.
+/// triangle from the feed, check() in memory. Any number of triangles. Throws InputError where
+/// a pass gets other triangles than the first did.
 CheckResult check_in_passes(std::span<const Point> points, const TriangleFeed& feed, std::size_t side_bytes = 0,
                             unsigned threads = 0);
 

@@ -34,6 +34,9 @@ using detail::lex_less;
 using detail::orient2d;
 using detail::Report;
 
+// A feed that breaks its promise (a file changed between passes, say).
+constexpr const char* kChanged = "check_in_passes: the triangles changed from one pass to the next";
+
 // One side of a triangle, filed under its smaller end lo.
 struct Side {
   VertexId hi;
@@ -108,9 +111,10 @@ std::size_t first_pass(std::span<const Point> pts, const TriangleFeed& feed, std
 // The sides filed under the vertices [lo, hi) (`files`: where each one's begin, from lo's,
 // then where they all end), each edge's two sides tested, the boundary's sides added to
 // `boundary`.
-void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, VertexId lo, VertexId hi,
+void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, std::size_t count, VertexId lo, VertexId hi,
                     std::vector<std::size_t> files, unsigned threads, std::vector<Edge>& boundary, Report& report) {
   std::vector<Side> sides(files.back());
+  std::size_t again = 0;
   // Filed on threads, each side's place taken atomically: the order within a file is then the
   // threads' race, which the sort below undoes.
   feed([&](std::span<const VertexId> tris) {
@@ -122,11 +126,14 @@ void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, Vertex
           if (least >= lo && least < hi) {
             const std::size_t at =
                 std::atomic_ref<std::size_t>(files[least - lo]).fetch_add(1, std::memory_order_relaxed);
+            if (at >= sides.size()) throw InputError(kChanged);
             sides[at] = {std::max(a, b), tris[k + (i + 2) % 3], a < b ? 1u : 0u};
           }
         }
     });
+    again += tris.size() / 3;
   });
+  if (again != count) throw InputError(kChanged);
   // files[j] is now the end of vertex lo + j's file, the start of the next one's.
   struct Found {
     Report report;
@@ -276,7 +283,7 @@ CheckResult check_in_passes(std::span<const Point> input, const TriangleFeed& fe
     for (std::size_t bytes = 0; hi < n && (hi == lo || bytes + cost(hi) <= side_bytes); ++hi) bytes += cost(hi);
     std::vector<std::size_t> starts(hi - lo + 1, 0);
     for (std::size_t j = 0; j < hi - lo; ++j) starts[j + 1] = starts[j] + files[lo + j + 1];
-    edges_of_range(pts, feed, static_cast<VertexId>(lo), static_cast<VertexId>(hi), std::move(starts), threads,
+    edges_of_range(pts, feed, count, static_cast<VertexId>(lo), static_cast<VertexId>(hi), std::move(starts), threads,
                    boundary, report);
   }
   const std::size_t vertices = check_unused(pts, used, threads, report);

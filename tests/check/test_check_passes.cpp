@@ -85,6 +85,23 @@ TEST(CheckInPasses, TheVerdictsOfTheSmallCases) {
   EXPECT_FALSE(same_verdict(square, std::vector<VertexId>{0, 1, 2, 0, 2, 3}).valid);
 }
 
+// A feed that gives a pass other triangles than the first (a part rewritten meanwhile) is
+// refused, never written past the sides' room.
+TEST(CheckInPasses, AFeedThatChangesIsRefused) {
+  const std::vector<VertexId> tris = {0, 1, 3, 1, 2, 3};
+  std::size_t calls = 0;
+  const TriangleFeed growing = [&](const TriangleSink& sink) {
+    sink(tris);
+    if (calls++ > 0) sink(tris);
+  };
+  EXPECT_THROW(check_in_passes(kQuad, growing, 1 << 20, 2), InputError);
+  calls = 0;
+  const TriangleFeed shrinking = [&](const TriangleSink& sink) {
+    sink(std::span<const VertexId>(tris).first(calls++ == 0 ? 6 : 3));
+  };
+  EXPECT_THROW(check_in_passes(kQuad, shrinking, 1 << 20, 2), InputError);
+}
+
 // Every distribution, with duplicates and at tiny and huge scales: valid, and each kind of
 // damage found.
 TEST(CheckInPasses, TheVerdictsOnTriangulationsAndTheirDamage) {
