@@ -108,15 +108,13 @@ std::size_t first_pass(std::span<const Point> pts, const TriangleFeed& feed, std
   return count;
 }
 
-// The sides filed under the vertices [lo, hi) (`files`: where each one's begin, from lo's,
-// then where they all end), each edge's two sides tested, the boundary's sides added to
-// `boundary`.
-void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, std::size_t count, VertexId lo, VertexId hi,
-                    std::vector<std::size_t> files, unsigned threads, std::vector<Edge>& boundary, Report& report) {
+// The sides filed under the vertices [lo, hi), in the files that `files` begin (from lo's, then
+// where they all end), which then each hold where the next one begins. On threads, each side's
+// place taken atomically: the order within a file is the threads' race, which a sort undoes.
+std::vector<Side> file_sides(const TriangleFeed& feed, std::size_t count, VertexId lo, VertexId hi,
+                             std::vector<std::size_t>& files, unsigned threads) {
   std::vector<Side> sides(files.back());
   std::size_t again = 0;
-  // Filed on threads, each side's place taken atomically: the order within a file is then the
-  // threads' race, which the sort below undoes.
   feed([&](std::span<const VertexId> tris) {
     detail::parallel_for(tris.size() / 3, threads, 1 << 14, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = 3 * first; k < 3 * last; k += 3)
@@ -134,6 +132,14 @@ void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, std::s
     again += tris.size() / 3;
   });
   if (again != count) throw InputError(kChanged);
+  return sides;
+}
+
+// The sides filed under the vertices [lo, hi) (`files` as file_sides takes them), each edge's
+// two sides tested, the boundary's sides added to `boundary`.
+void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, std::size_t count, VertexId lo, VertexId hi,
+                    std::vector<std::size_t> files, unsigned threads, std::vector<Edge>& boundary, Report& report) {
+  std::vector<Side> sides = file_sides(feed, count, lo, hi, files, threads);
   // files[j] is now the end of vertex lo + j's file, the start of the next one's.
   struct Found {
     Report report;
