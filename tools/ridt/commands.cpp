@@ -42,21 +42,17 @@ Command add_check(CLI::App& app) {
   return {chk, [a] {
             const io::PointFile p = io::read_points(a->points);
             const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
-            CheckResult r;
-            if (!mesh && io::is_parts_index(a->triangles)) {
-              // Parts may hold more triangles than memory with their edge table: read in
-              // passes, a part at a time.
-              const std::vector<std::string> parts = io::part_files(a->triangles);
-              r = check_in_passes(p.points, [&](const TriangleSink& sink) {
-                for (const std::string& part : parts) sink(io::read_triangles(part, 0));
-              });
-              std::printf("%s\n", r.message.c_str());
-              return r.valid ? 0 : kExitInvalid;
-            }
-            const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
-            if (!mesh) {
-              r = check(p.points, t);
-            } else {
+            const CheckResult r = [&] {
+              if (!mesh && io::is_parts_index(a->triangles)) {
+                // Parts may hold more triangles than memory with their edge table: read in
+                // passes, a part at a time.
+                const std::vector<std::string> parts = io::part_files(a->triangles);
+                return check_in_passes(p.points, [&](const TriangleSink& sink) {
+                  for (const std::string& part : parts) sink(io::read_triangles(part, 0));
+                });
+              }
+              const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
+              if (!mesh) return check(p.points, t);
               const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly);
               std::vector<VertexId> edges;
               if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
@@ -67,8 +63,8 @@ Command add_check(CLI::App& app) {
               spec.holes = g.holes;
               spec.min_angle = a->min_angle;
               spec.max_area = a->max_area;
-              r = check_mesh(p.points, t, spec);
-            }
+              return check_mesh(p.points, t, spec);
+            }();
             std::printf("%s\n", r.message.c_str());
             return r.valid ? 0 : kExitInvalid;
           }};
