@@ -211,6 +211,15 @@ expect 2 "bad input keeps old output" -- "$ridt" triangulate "$dir/nan.txt" -o "
 expect 0 "big points" -- "$ridt" generate --dist uniform -n 150000 -o "$dir/big.bin"
 expect 2 "svg too big" -- "$ridt" triangulate "$dir/big.bin" -o "$dir/big.svg"
 stderr_has "too many"; absent "$dir/big.svg"
+# A .bin of triangles is written while the canonical sort puts them in place, on threads: the
+# .ele's triangles, and nothing left beside it; into a directory that is not there, nothing.
+expect 0 "bin while sorted" -- "$ridt" triangulate "$dir/big.bin" --method partition --threads 2 -o "$dir/big_t.bin"
+expect 0 "ele of the same" -- "$ridt" triangulate "$dir/big.bin" --threads 1 -o "$dir/big_t.ele"
+od -An -v -tu4 -w12 "$dir/big_t.bin" | awk '{print NR - 1, $1, $2, $3}' >"$dir/big_t.bin.txt"
+tail -n +2 "$dir/big_t.ele" | awk '{print $1, $2, $3, $4}' | cmp -s - "$dir/big_t.bin.txt" && pass || fail "streamed .bin differs from .ele"
+[ -z "$(find "$dir" -name 'big_t.bin.tmp-*')" ] && pass || fail "a temporary file was left"
+expect 2 "bin into no directory" -- "$ridt" triangulate "$dir/big.bin" -o "$dir/none/t.bin"
+stderr_has "cannot write"; absent "$dir/none"
 
 # Progress: a line on stderr when it is a terminal (here a pseudo-terminal from script(1)),
 # never when stderr is piped; --stats on stdout stays one JSON object either way.

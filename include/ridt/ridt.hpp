@@ -108,6 +108,14 @@ struct Options {
   /// triangles (a file of them, say) spares their memory and, with canonical_order, the half
   /// of the sort that renumbers them.
   bool neighbors = true;
+  /// With canonical_order: called with each stretch of the sorted triangles once it holds its
+  /// final ones, `first` the number of its first triangle and `triangles` their vertex triples
+  /// (3 numbers a triangle, as the result will hold them there); every triangle once, from
+  /// the sorting threads, several at a time, in no particular order. A file of the triangles
+  /// written from here (at byte 12 * first, say) is then written while the rest are sorted,
+  /// complete when triangulate returns. It may throw: the exception reaches the caller of
+  /// triangulate once the sort has stopped.
+  std::function<void(std::size_t first, std::span<const VertexId> triangles)> on_sorted;
   /// Called with the share of the points inserted so far (0 to 1), on the calling thread, each
   /// time some 65,536 more are in, and with 1 when all are. It may throw to abandon the run:
   /// the exception reaches the caller of triangulate once every worker has stopped.

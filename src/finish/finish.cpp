@@ -114,31 +114,22 @@ void into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_
   });
 }
 
-// One first vertex's triangles sorted by their second (no two share it): a few, in place,
-// unless the vertex is the least of many (a fan's centre).
-template <class T>
-void sort_group(T* begin, T* end) {
-  if (end - begin > 16) {
-    std::sort(begin, end);
-    return;
-  }
-  for (T* i = begin + 1; i < end; ++i) {
-    const T x = *i;
-    T* j = i;
-    for (; j > begin && x.second < j[-1].second; --j) *j = j[-1];
-    *j = x;
-  }
-}
-
 // The triangles sorted: into buckets, then each bucket on its own, by first vertex (a counting
-// sort) and each group of one first vertex (some two triangles) by its second, back into
-// out.triangles; `moved(p, i)` is called for each triangle p placed at i.
+// sort) and each group of one first vertex (some two triangles, no two with the same second
+// vertex) by its second, back into out.triangles; `moved(p, i)` is called for each triangle p
+// placed at i, and `sorted` (where set) with each bucket's stretch once it is in place. A small group's triangles go straight to their places, each's place its rank
+// among the group's second vertices: comparisons without branches, where the moves of an
+// insertion sort would go one way or the other at random.
 template <class T, class Moved>
-void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& moved) {
+void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& moved, const Sorted& sorted) {
   std::vector<std::uint32_t> bucket_start;
   int shift = 0;
   into_buckets(out, threads, bucket_start, shift, placed);
   auto& tv = out.triangles;
+  auto put = [&](const T& p, std::uint32_t i) {
+    tv[3 * i] = p.first, tv[3 * i + 1] = p.second, tv[3 * i + 2] = p.third;
+    moved(p, i);
+  };
   parallel_for(bucket_start.size() - 1, threads, 16, [&](std::size_t first, std::size_t last) {
     std::vector<std::uint32_t> at((std::size_t{1} << shift) + 1);
     std::vector<T> run;
@@ -151,13 +142,21 @@ void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& mov
       run.resize(hi - lo);
       for (std::uint32_t i = lo; i < hi; ++i) run[at[placed[i].first - base]++] = placed[i];
       // at[v - base] is now where v's group ends, the next one's start.
-      for (std::size_t v = 0, begin = 0; v + 1 < at.size() && begin < run.size(); begin = at[v++])
-        sort_group(run.data() + begin, run.data() + at[v]);
-      for (std::uint32_t i = lo; i < hi; ++i) {
-        const T& p = run[i - lo];
-        tv[3 * i] = p.first, tv[3 * i + 1] = p.second, tv[3 * i + 2] = p.third;
-        moved(p, i);
+      for (std::size_t v = 0, begin = 0; v + 1 < at.size() && begin < run.size(); begin = at[v++]) {
+        T* const group = run.data() + begin;
+        const std::size_t size = at[v] - begin;
+        if (size > 16) {
+          std::sort(group, group + size);
+          for (std::size_t k = 0; k < size; ++k) put(group[k], static_cast<std::uint32_t>(lo + begin + k));
+          continue;
+        }
+        for (std::size_t k = 0; k < size; ++k) {
+          std::size_t rank = 0;
+          for (std::size_t j = 0; j < size; ++j) rank += group[j].second < group[k].second;
+          put(group[k], static_cast<std::uint32_t>(lo + begin + rank));
+        }
       }
+      if (sorted) sorted(lo, std::span<const VertexId>(&tv[3 * std::size_t{lo}], 3 * std::size_t{hi - lo}));
     }
   });
 }
@@ -173,7 +172,7 @@ void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& mov
 // pass over it (each page faulted in and zeroed), so the sort takes 20 bytes a triangle beyond
 // the result, and none of it is zeroed twice; without the neighbours, none: their memory holds
 // the buckets, and is given back after.
-void canonicalize(Triangulation& out, unsigned threads, bool neighbors) {
+void canonicalize(Triangulation& out, unsigned threads, bool neighbors, const Sorted& sorted) {
   threads = std::max(threads, 1u);
   const std::size_t count = out.size();
   auto& tn = out.neighbors;
@@ -181,7 +180,8 @@ void canonicalize(Triangulation& out, unsigned threads, bool neighbors) {
     if (tn.size() < 3 * count) tn.resize(3 * count);
     // Triples of unsigned numbers where the signed ones were: an allowed alias.
     static_assert(sizeof(Triple) == 3 * sizeof(std::int32_t) && alignof(Triple) == alignof(std::int32_t));
-    sort_triangles(out, threads, reinterpret_cast<Triple*>(tn.data()), [](const Triple&, std::uint32_t) {});
+    sort_triangles(
+        out, threads, reinterpret_cast<Triple*>(tn.data()), [](const Triple&, std::uint32_t) {}, sorted);
     std::vector<std::int32_t>().swap(tn);
     return;
   }
@@ -189,8 +189,9 @@ void canonicalize(Triangulation& out, unsigned threads, bool neighbors) {
   make_present(placed.get(), count * sizeof(Placed), threads);
   const Block<std::int32_t> rank = allocate_huge<std::int32_t>(count);  // a triangle's new number
   make_present(rank.get(), count * sizeof(std::int32_t), threads);
-  sort_triangles(out, threads, placed.get(),
-                 [&](const Placed& p, std::uint32_t i) { rank[p.from] = static_cast<std::int32_t>(i); });
+  sort_triangles(
+      out, threads, placed.get(),
+      [&](const Placed& p, std::uint32_t i) { rank[p.from] = static_cast<std::int32_t>(i); }, sorted);
   // Each triangle's neighbours renumbered in its old place, then the three moved to its new
   // place: in the buckets' memory (12 of its 16 bytes a triangle; int32 may alias the unsigned
   // numbers there), from where they are copied back in order.
@@ -209,7 +210,7 @@ void canonicalize(Triangulation& out, unsigned threads, bool neighbors) {
 
 void apply_output_options(Triangulation& out, const Options& options, unsigned threads) {
   if (options.canonical_order)
-    canonicalize(out, threads, options.neighbors);
+    canonicalize(out, threads, options.neighbors, options.on_sorted);
   else if (!options.neighbors)
     std::vector<std::int32_t>().swap(out.neighbors);
 }

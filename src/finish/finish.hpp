@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -56,10 +57,14 @@ void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std:
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
                      const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
 
+/// Options::on_sorted.
+using Sorted = std::function<void(std::size_t first, std::span<const VertexId> triangles)>;
+
 /// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
 /// the neighbours: the output no longer depends on the order of insertion. Up to `threads`
 /// threads. Without `neighbors`, their memory serves the sort and the result has none.
-void canonicalize(Triangulation& out, unsigned threads = 1, bool neighbors = true);
+/// `sorted`, where set, is called with each stretch as soon as its triangles are in place.
+void canonicalize(Triangulation& out, unsigned threads = 1, bool neighbors = true, const Sorted& sorted = {});
 /// What options ask of a finished result: the canonical order (canonicalize), the neighbours
 /// given back where they are not wanted.
 void apply_output_options(Triangulation& out, const Options& options, unsigned threads);

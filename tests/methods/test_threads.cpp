@@ -10,6 +10,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
+#include <span>
+#include <string>
 #include <thread>
 
 #include "helpers.hpp"
@@ -531,6 +534,51 @@ TEST(ParkedThreads, EveryPartRunsOnceNestedAndConcurrent) {
   }
   EXPECT_EQ(sums[0], 1200);
   EXPECT_EQ(sums[1], 1200);
+}
+
+// Options::on_sorted: the canonical sort hands over every triangle once, each stretch at its
+// place holding what the result holds there, from the sorting threads (a lock here), with the
+// neighbours or without, from a method of the walking kernel and one of the DAG; never without
+// canonical_order. A throw ends the call, and the next one is whole again.
+TEST(OnSorted, EveryTriangleOnceInItsPlace) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 60000, 4);
+  for (const Method m : {Method::Partition, Method::Pessimistic})
+    for (const bool neighbors : {true, false})
+      for (const unsigned threads : {1u, 2u, 3u}) {
+        std::mutex lock;
+        std::vector<VertexId> seen;
+        std::vector<int> times;
+        Options o;
+        o.method = m;
+        o.threads = threads;
+        o.neighbors = neighbors;
+        o.canonical_order = true;
+        o.on_sorted = [&](std::size_t first, std::span<const VertexId> tri) {
+          const std::lock_guard<std::mutex> guard(lock);
+          if (seen.size() < 3 * first + tri.size()) seen.resize(3 * first + tri.size()), times.resize(seen.size() / 3);
+          std::copy(tri.begin(), tri.end(), seen.begin() + static_cast<std::ptrdiff_t>(3 * first));
+          for (std::size_t k = first; k < first + tri.size() / 3; ++k) ++times[k];
+        };
+        const Triangulation t = triangulate(pts, o);
+        const std::string name = std::string(to_string(m)) + " " + std::to_string(threads) + (neighbors ? "" : " bare");
+        EXPECT_EQ(seen, t.triangles) << name;
+        EXPECT_EQ(std::count(times.begin(), times.end(), 1), static_cast<std::ptrdiff_t>(t.size())) << name;
+      }
+  Options o;
+  o.method = Method::Partition;
+  o.threads = 2;
+  bool called = false;
+  o.on_sorted = [&](std::size_t, std::span<const VertexId>) { called = true; };
+  triangulate(pts, o);
+  EXPECT_FALSE(called);
+  struct Stop {};
+  o.canonical_order = true;
+  o.on_sorted = [](std::size_t first, std::span<const VertexId>) {
+    if (first > 0) throw Stop{};
+  };
+  EXPECT_THROW(triangulate(pts, o), Stop);
+  o.on_sorted = {};
+  EXPECT_EQ(audit(pts, triangulate(pts, o)), "");
 }
 
 // A child of fork() has none of its parent's threads: its calls park threads of its own, and

@@ -1,6 +1,7 @@
 // ridt triangulate INPUT [-o OUTPUT] [--method M] [--threads N] [--order O] [--locate L]
 //                        [--seed S] [--stats[=json|table]] and the paper's experiment switches;
 // ridt triangulate INPUT.bin -o OUT.parts --out-of-core [--memory-limit SIZE] [--threads N].
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -152,11 +153,17 @@ int run(const Args& a) {
   auto t0 = std::chrono::steady_clock::now();
   const io::PointFile in = io::read_points(a.input);
   const double t_read = seconds_since(t0);
+  // A .bin file is written as the canonical sort puts the triangles in place.
+  std::optional<io::SortedOutput> sorted;
+  if (!a.output.empty() && sorted.emplace(a.output).active())
+    o.on_sorted = [&](std::size_t first, std::span<const VertexId> tri) { sorted->put(first, tri); };
   const Triangulation t = triangulate(in.points, o);
   progress.clear();
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
   t0 = std::chrono::steady_clock::now();
-  if (!a.output.empty()) {
+  if (o.on_sorted) {
+    sorted->commit(t);
+  } else if (!a.output.empty()) {
     progress.show("writing");
     io::write_triangulation(a.output, in.points, t, in.first_index, thread_count(a));
     progress.clear();

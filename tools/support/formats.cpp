@@ -53,7 +53,8 @@ void bin_out(const std::string& path, const TriangulationOut& o) {
 
 // clang-format off
 // extension, description, points in, triangles in, points out, triangulation out, Voronoi out, values out, graph in
-// (and, where the triangulation's writer reads the neighbours, true)
+// (and, where the triangulation's writer reads the neighbours, true; where the triangles can be
+// written as they are sorted, how)
 constexpr Format kFormats[] = {
     {".poly", "Triangle's planar straight-line graph", read_poly_points, nullptr, nullptr, nullptr, nullptr, nullptr, read_poly},
     {".node", "Triangle's nodes",           read_node,        nullptr,             write_node,        nullptr,   nullptr,            nullptr, nullptr},
@@ -66,7 +67,7 @@ constexpr Format kFormats[] = {
     {".json", "JSON",                       nullptr,          nullptr,             nullptr,           nullptr,   write_voronoi_json, nullptr, nullptr},
     {".csv", "x,y,values rows",             nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_csv, nullptr},
     {".png", "a colour map of a grid",      nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_png, nullptr},
-    {".bin", "little-endian binary",        read_bin_points,  bin_triangles_in,    write_bin_points,  bin_out,   nullptr,            write_values_bin, nullptr},
+    {".bin", "little-endian binary",        read_bin_points,  bin_triangles_in,    write_bin_points,  bin_out,   nullptr,            write_values_bin, nullptr, false, put_bin_sorted},
     {"", "text, a point or triangle a line", read_text_points, read_text_triangles, write_text_points, nullptr,  nullptr,            nullptr, nullptr},
 };
 // clang-format on

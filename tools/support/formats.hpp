@@ -51,6 +51,10 @@ struct Format {
   void (*write_values)(Writer& out, const ValuesOut& v);
   Pslg (*read_pslg)(const std::string& path, std::string_view data);  ///< points, segments, holes
   bool writes_neighbors = false;  ///< write_triangulation reads Triangulation::neighbors
+  /// Writes a stretch of the canonically sorted triangles at its place (Options::on_sorted),
+  /// `first` its first triangle: for a format whose file is the triangles as they lie, which
+  /// the writer then fills while the rest are sorted.
+  void (*put_sorted)(Writer& out, std::size_t first, std::span<const VertexId> triangles) = nullptr;
 };
 
 /// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws

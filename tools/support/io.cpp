@@ -85,6 +85,27 @@ void write_triangulation(const std::string& path, std::span<const Point> points,
   format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index, threads});
 }
 
+SortedOutput::SortedOutput(const std::string& path) : path_(path) {
+  const Format& f = format_of(path, &Format::write_triangulation, "output");
+  if (f.put_sorted == nullptr) return;
+  writer_ = std::make_unique<Writer>(path);
+  put_ = f.put_sorted;
+}
+
+SortedOutput::~SortedOutput() = default;
+
+void SortedOutput::put(std::size_t first, std::span<const VertexId> triangles) {
+  put_(*writer_, first, triangles);
+  triangles_ += triangles.size() / 3;
+}
+
+void SortedOutput::commit(const Triangulation& t) {
+  if (triangles_ != t.size())
+    throw IoError("cannot write " + path_ + ": " + std::to_string(triangles_.load()) + " of " +
+                  std::to_string(t.size()) + " triangles came sorted");
+  writer_->commit();
+}
+
 Pslg read_pslg(const std::string& path) {
   format_of(path, &Format::read_pslg, "planar straight-line graph input");  // before reading it
   return parse_pslg(read_file_whole(path), path);

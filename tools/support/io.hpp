@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <span>
@@ -134,6 +135,33 @@ bool triangulation_needs_neighbors(const std::string& path);
 /// `threads` threads.
 void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
                          int first_index, unsigned threads = 1);
+
+class Writer;
+
+/// A triangulation file written while the canonical sort puts the triangles in place
+/// (Options::on_sorted), where its format is the triangles as they lie (.bin): opened before
+/// the triangulation, its writing overlapped with the sort's, renamed onto `path` by commit.
+/// Left uncommitted (an error, an exception), the temporary file is removed.
+class SortedOutput {
+ public:
+  /// For `path`, where its format can be so written; else nothing (active() false).
+  explicit SortedOutput(const std::string& path);
+  SortedOutput(const SortedOutput&) = delete;
+  SortedOutput& operator=(const SortedOutput&) = delete;
+  ~SortedOutput();
+
+  bool active() const { return writer_ != nullptr; }
+  /// What Options::on_sorted calls; the SortedOutput must outlive the triangulation.
+  void put(std::size_t first, std::span<const VertexId> triangles);
+  /// Checks that every one of t's triangles came, and renames the file onto its path.
+  void commit(const Triangulation& t);
+
+ private:
+  std::string path_;
+  std::unique_ptr<Writer> writer_;
+  void (*put_)(Writer&, std::size_t, std::span<const VertexId>) = nullptr;
+  std::atomic<std::size_t> triangles_{0};
+};
 
 /// An axis-parallel box [x0, x1] x [y0, y1].
 struct Box {

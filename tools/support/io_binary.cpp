@@ -105,4 +105,15 @@ void write_bin_triangles(Writer& out, std::span<const VertexId> triangles) {
   }
 }
 
+void put_bin_sorted(Writer& out, std::size_t first, std::span<const VertexId> triangles) {
+  const std::uint64_t at = 4 * std::uint64_t{3} * first;
+  if constexpr (std::endian::native == std::endian::little) {
+    out.put_at(at, std::string_view(reinterpret_cast<const char*>(triangles.data()), triangles.size_bytes()));
+  } else {
+    std::vector<VertexId> swapped(triangles.begin(), triangles.end());
+    for (VertexId& v : swapped) v = __builtin_bswap32(v);
+    out.put_at(at, std::string_view(reinterpret_cast<const char*>(swapped.data()), triangles.size_bytes()));
+  }
+}
+
 }  // namespace ridt::io::detail

@@ -336,6 +336,8 @@ std::optional<PointFile> map_bin_points(const std::string& path);
 std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data);
 void write_bin_points(Writer& out, std::span<const Point> points, int first_index);
 void write_bin_triangles(Writer& out, std::span<const VertexId> triangles);
+/// Triangles first, first + 1, ... of a .bin triangle file at their place in it.
+void put_bin_sorted(Writer& out, std::size_t first, std::span<const VertexId> triangles);
 
 // Surface meshes for viewers (io_mesh.cpp): .off (0-based), .obj (1-based), z = 0.
 void write_off(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles);

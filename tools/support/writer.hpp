@@ -2,6 +2,7 @@
 // renamed onto it by commit(). Every writer of the tools uses it (io_*.cpp, ridt-mpi).
 #pragma once
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,11 +14,11 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "io.hpp"
@@ -70,20 +71,16 @@ class TextPart {
 class Writer {
  public:
   explicit Writer(const std::string& path) : path_(path), tmp_(temp_name(path)) {
-    errno = 0;
-    out_.open(tmp_, std::ios::binary | std::ios::trunc);
-    if (!out_) fail(errno);
-    opened_ = true;
+    fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd_ < 0) fail(errno);
   }
 
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
 
   ~Writer() {
-    if (opened_ && !committed_) {
-      out_.close();
-      std::remove(tmp_.c_str());
-    }
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) std::remove(tmp_.c_str());
   }
 
   void put(std::string_view s) {
@@ -148,6 +145,18 @@ class Writer {
     pos_ += 8;
   }
 
+  /// Writes `s` at byte `offset` of the file, past what put() buffers: from any thread, several
+  /// at once (a file filled in stretches as they are ready; its size, their end).
+  void put_at(std::uint64_t offset, std::string_view s) {
+    while (!s.empty()) {
+      const ssize_t n = ::pwrite(fd_, s.data(), s.size(), static_cast<off_t>(offset));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) fail(n < 0 ? errno : ENOSPC);
+      s.remove_prefix(static_cast<std::size_t>(n));
+      offset += static_cast<std::uint64_t>(n);
+    }
+  }
+
   /// Lines 0 .. count-1, `line(k, part)` formatting line k into a TextPart, in runs: on
   /// `threads` threads, waves of runs formatted side by side while this thread writes the
   /// wave before.
@@ -210,12 +219,9 @@ class Writer {
   /// Writes out and closes the file under its temporary name (throws if that fails): what is
   /// left is the rename, which commit() does. For writers that must agree before any renames.
   void close() {
-    if (closed_) return;
+    if (fd_ < 0) return;
     flush();
-    errno = 0;
-    out_.close();
-    if (out_.fail()) fail(errno);
-    closed_ = true;
+    if (::close(std::exchange(fd_, -1)) != 0) fail(errno);
   }
 
   void commit() {
@@ -250,19 +256,21 @@ class Writer {
   }
 
   void write_through(const char* p, std::size_t n) {
-    errno = 0;
-    out_.write(p, static_cast<std::streamsize>(n));
-    if (!out_) fail(errno);
+    while (n > 0) {
+      const ssize_t k = ::write(fd_, p, n);
+      if (k < 0 && errno == EINTR) continue;
+      if (k <= 0) fail(k < 0 ? errno : ENOSPC);
+      p += k;
+      n -= static_cast<std::size_t>(k);
+    }
   }
 
   std::string path_;
   std::string tmp_;
-  std::ofstream out_;
+  int fd_ = -1;
   std::unique_ptr<char[]> buf_{new char[kCapacity]};
   std::size_t pos_ = 0;
-  bool opened_ = false;
   bool committed_ = false;
-  bool closed_ = false;
 };
 
 }  // namespace ridt::io
