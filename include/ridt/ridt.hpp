@@ -161,7 +161,7 @@ struct Stats {
   double time_copy_s = 0;  ///< the points copied in insertion order (and scaled)
   double time_insert_s = 0;  ///< wall time of the insertion phase
   double time_finish_s = 0;  ///< the mesh into the result's arrays (triangles, neighbours, hull, duplicates)
-  double time_canonical_s = 0;  ///< Options::canonical_order: the triangles sorted
+  double time_canonical_s = 0;  ///< Options::canonical_order: the triangles sorted (and on_sorted's calls)
   double time_critical_s = 0;  ///< summed over threads (threaded methods, Experiment::time_threads)
   double time_wait_s = 0;  ///< summed over threads (threaded methods, Experiment::time_threads)
   /// Optimistic: insertions restarted after a failed try-lock; partition: points put off to a

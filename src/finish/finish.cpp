@@ -117,9 +117,10 @@ void into_buckets(Triangulation& out, unsigned threads, std::vector<std::uint32_
 // The triangles sorted: into buckets, then each bucket on its own, by first vertex (a counting
 // sort) and each group of one first vertex (some two triangles, no two with the same second
 // vertex) by its second, back into out.triangles; `moved(p, i)` is called for each triangle p
-// placed at i, and `sorted` (where set) with each bucket's stretch once it is in place. A small group's triangles go straight to their places, each's place its rank
-// among the group's second vertices: comparisons without branches, where the moves of an
-// insertion sort would go one way or the other at random.
+// placed at i, and `sorted` (where set) with each bucket's stretch once it is in place. A
+// small group's triangles go straight to their places, each's place its rank among the
+// group's second vertices: comparisons without branches, where the moves of an insertion sort
+// would go one way or the other at random.
 template <class T, class Moved>
 void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& moved, const Sorted& sorted) {
   std::vector<std::uint32_t> bucket_start;
