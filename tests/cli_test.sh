@@ -220,6 +220,14 @@ tail -n +2 "$dir/big_t.ele" | awk '{print $1, $2, $3, $4}' | cmp -s - "$dir/big_
 [ -z "$(find "$dir" -name 'big_t.bin.tmp-*')" ] && pass || fail "a temporary file was left"
 expect 2 "bin into no directory" -- "$ridt" triangulate "$dir/big.bin" -o "$dir/none/t.bin"
 stderr_has "cannot write"; absent "$dir/none"
+# A file system that takes no more (a file size limit, its signal ignored: writes fail with
+# EFBIG): a clear error, exit 2, nothing left, for the .bin written from the sorting threads
+# and for text written from the formatting waves.
+for ext in bin ele; do
+  expect 2 "full .$ext" -- bash -c "trap '' XFSZ; ulimit -f 100; exec '$ridt' triangulate '$dir/big.bin' --threads 2 -o '$dir/full.$ext'"
+  stderr_has "cannot write .*full.$ext: File too large"
+  [ -z "$(find "$dir" -name "full.$ext*")" ] && pass || fail "a part of full.$ext was left"
+done
 
 # Progress: a line on stderr when it is a terminal (here a pseudo-terminal from script(1)),
 # never when stderr is piped; --stats on stdout stays one JSON object either way.
