@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
+#include "finish/finish.hpp"
 #include "helpers.hpp"
 #include "order/random.hpp"
 #include "ridt/generate.hpp"
@@ -130,6 +132,40 @@ TEST(Triangulate, WithoutNeighboursTheSameTriangles) {
         }
       }
   }
+}
+
+// The canonical sort on what no triangulation holds: two triangles on one directed edge, and
+// one triangle twice (each rank among its first vertex's group then not distinct). None is
+// lost: the result is the triples, each turned to its least vertex, sorted; on any threads,
+// with neighbours (none here) or without.
+TEST(Triangulate, CanonicalSortLosesNoTriangleOnTies) {
+  std::vector<VertexId> tri;
+  detail::Rng rng(5);
+  for (int k = 0; k < 100000; ++k) {
+    const auto a = static_cast<VertexId>(rng.below(30000)), b = static_cast<VertexId>(30000 + rng.below(30000));
+    tri.insert(tri.end(), {a, b, static_cast<VertexId>(60000 + rng.below(30000))});
+    if (k % 7 == 0) tri.insert(tri.end(), {a, b, static_cast<VertexId>(90000 + rng.below(10))});  // a tie on a-b
+    if (k % 11 == 0) tri.insert(tri.end(), {b, static_cast<VertexId>(60000 + k % 30000), a});  // turned
+  }
+  tri.insert(tri.end(), {tri[0], tri[1], tri[2]});  // a triangle twice
+  std::vector<std::array<VertexId, 3>> expected;
+  for (std::size_t t = 0; t < tri.size() / 3; ++t) {
+    std::array<VertexId, 3> v = {tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]};
+    std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+    expected.push_back(v);
+  }
+  std::sort(expected.begin(), expected.end());
+  for (const bool neighbors : {true, false})
+    for (const unsigned threads : {1u, 3u}) {
+      Triangulation t;
+      t.triangles = tri;
+      t.neighbors.assign(tri.size(), -1);
+      detail::canonicalize(t, threads, neighbors);
+      std::vector<std::array<VertexId, 3>> got;
+      for (std::size_t k = 0; k < t.size(); ++k)
+        got.push_back({t.triangles[3 * k], t.triangles[3 * k + 1], t.triangles[3 * k + 2]});
+      EXPECT_EQ(got, expected) << neighbors << " " << threads;
+    }
 }
 
 TEST(Triangulate, ShuffledInputGivesTheSameTriangles) {

@@ -146,15 +146,23 @@ void sort_triangles(Triangulation& out, unsigned threads, T* placed, Moved&& mov
       for (std::size_t v = 0, begin = 0; v + 1 < at.size() && begin < run.size(); begin = at[v++]) {
         T* const group = run.data() + begin;
         const std::size_t size = at[v] - begin;
-        if (size > 16) {
+        // Distinct ranks sum to 0 + 1 + ... + (size - 1); a tie (two triangles on one directed
+        // edge, not in a triangulation) sums to less and would leave a place unwritten: such a
+        // group, and the many of a fan's centre, are sorted whole instead.
+        bool whole = size > 16;
+        if (!whole) {
+          std::size_t ranks = 0;
+          for (std::size_t k = 0; k < size; ++k) {
+            std::size_t rank = 0;
+            for (std::size_t j = 0; j < size; ++j) rank += group[j].second < group[k].second;
+            put(group[k], static_cast<std::uint32_t>(lo + begin + rank));
+            ranks += rank;
+          }
+          whole = 2 * ranks != size * (size - 1);
+        }
+        if (whole) {
           std::sort(group, group + size);
           for (std::size_t k = 0; k < size; ++k) put(group[k], static_cast<std::uint32_t>(lo + begin + k));
-          continue;
-        }
-        for (std::size_t k = 0; k < size; ++k) {
-          std::size_t rank = 0;
-          for (std::size_t j = 0; j < size; ++j) rank += group[j].second < group[k].second;
-          put(group[k], static_cast<std::uint32_t>(lo + begin + rank));
         }
       }
       if (sorted) sorted(lo, std::span<const VertexId>(&tv[3 * std::size_t{lo}], 3 * std::size_t{hi - lo}));
