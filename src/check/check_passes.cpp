@@ -30,6 +30,7 @@ namespace {
 
 using detail::Edge;
 using detail::incircle;
+using detail::InOrder;
 using detail::lex_less;
 using detail::orient2d;
 using detail::Report;
@@ -42,28 +43,6 @@ struct Side {
   VertexId hi;
   VertexId opposite;  // the triangle's third corner
   std::uint32_t forward;  // 1 where the triangle runs lo -> hi
-};
-
-// Results of parts of a parallel loop, merged in the order of the parts: the first problem
-// is then the one a single thread would have met first.
-template <class Result>
-class InOrder {
- public:
-  void put(std::size_t first, Result r) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    parts_.emplace_back(first, std::move(r));
-  }
-  // The parts' results, by where they began.
-  std::vector<Result> take() {
-    std::sort(parts_.begin(), parts_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::vector<Result> out;
-    for (auto& p : parts_) out.push_back(std::move(p.second));
-    return out;
-  }
-
- private:
-  std::mutex mutex_;
-  std::vector<std::pair<std::size_t, Result>> parts_;
 };
 
 // The first pass: every index in range, every triangle counter-clockwise and not degenerate,

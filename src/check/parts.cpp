@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "predicates/predicates.hpp"
+#include "runtime/parallel.hpp"
 
 namespace ridt::detail {
 
@@ -37,19 +38,61 @@ void check_triangles(std::span<const Point> pts, std::span<const VertexId> tris,
   }
 }
 
+namespace {
+
+// A side of a triangle filed under its smaller vertex.
+struct Side {
+  VertexId hi;
+  std::uint32_t tri_dir;  // triangle * 2 + (1 if the triangle runs lo -> hi)
+};
+
+// The sides filed under vertex lo, [begin, end): sorted by their other end, then each edge
+// checked; the boundary's edges appended to `boundary`, directed as their triangles run.
+void check_file(std::span<const Point> pts, std::span<const VertexId> tris, const std::vector<Edge>& constrained,
+                VertexId lo, Side* begin, Side* end, std::vector<Edge>& boundary, Report& report) {
+  // The vertex of triangle t opposite its edge {a, b}.
+  auto opposite = [&](std::uint32_t t, VertexId a, VertexId b) {
+    const VertexId* w = &tris[3 * std::size_t{t}];
+    return w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
+  };
+  std::sort(begin, end,
+            [](const Side& x, const Side& y) { return x.hi < y.hi || (x.hi == y.hi && x.tri_dir < y.tri_dir); });
+  for (Side* e = begin; e != end;) {
+    Side* run = e;
+    while (e != end && e->hi == run->hi) ++e;
+    const VertexId hi = run->hi;
+    if (e - run == 1) {
+      if (run->tri_dir & 1)
+        boundary.emplace_back(lo, hi);
+      else
+        boundary.emplace_back(hi, lo);
+    } else if (e - run > 2 || (run[0].tri_dir & 1) == (run[1].tri_dir & 1)) {
+      report.problem("edge ", lo, "-", hi, " is used by two triangles in the same direction");
+    } else {
+      if (std::binary_search(constrained.begin(), constrained.end(), Edge{lo, hi})) continue;  // a segment's
+      const std::uint32_t t = run[0].tri_dir >> 1, u = run[1].tri_dir >> 1;
+      const VertexId* v = &tris[3 * std::size_t{t}];
+      const VertexId o = opposite(u, lo, hi);
+      if (incircle(pts[v[0]], pts[v[1]], pts[v[2]], pts[o]) > 0)
+        report.problem("edge ", lo, "-", hi, " is not locally Delaunay (vertex ", o,
+                       " lies inside the circle of triangle ", t, ")");
+    }
+  }
+}
+
+}  // namespace
+
 // Every directed edge used once, every interior edge locally Delaunay but those of segments
 // (`constrained`: (lo, hi), sorted). Returns the boundary edges, directed as their triangles run.
 //
 // Every side of every triangle is filed under its smaller vertex (a counting sort), then
 // ordered by the larger one within each file, so that the two sides of an interior edge lie
-// next to each other. Linear time but for vertices of very high degree.
+// next to each other. Linear time but for vertices of very high degree. The files are checked
+// on threads, each part's boundary and problems merged in order: what one thread would find,
+// in its order.
 std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const VertexId> tris,
                               const std::vector<Edge>& constrained, Report& report) {
   const std::size_t n = pts.size(), count = tris.size() / 3;
-  struct Side {
-    VertexId hi;
-    std::uint32_t tri_dir;  // triangle * 2 + (1 if the triangle runs lo -> hi)
-  };
   auto side_end = [&](std::size_t k) { return tris[k % 3 == 2 ? k - 2 : k + 1]; };
   std::vector<std::uint32_t> file(n + 1, 0);
   for (std::size_t k = 0; k < 3 * count; ++k) ++file[std::min(tris[k], side_end(k)) + 1];
@@ -62,38 +105,22 @@ std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const Vertex
       sides[at[std::min(a, b)]++] = {std::max(a, b), 2 * static_cast<std::uint32_t>(k / 3) + (a < b ? 1u : 0u)};
     }
   }
-  // The vertex of triangle t opposite its edge {a, b}.
-  auto opposite = [&](std::uint32_t t, VertexId a, VertexId b) {
-    const VertexId* w = &tris[3 * std::size_t{t}];
-    return w[0] != a && w[0] != b ? w[0] : (w[1] != a && w[1] != b ? w[1] : w[2]);
+  struct Part {
+    std::vector<Edge> boundary;
+    Report report;
   };
+  InOrder<Part> parts;
+  parallel_for(n, thread_count(0), 1 << 14, [&](std::size_t first, std::size_t last) {
+    Part p;
+    for (std::size_t lo = first; lo < last; ++lo)
+      check_file(pts, tris, constrained, static_cast<VertexId>(lo), sides.data() + file[lo],
+                 sides.data() + file[lo + 1], p.boundary, p.report);
+    parts.put(first, std::move(p));
+  });
   std::vector<Edge> boundary;
-  for (VertexId lo = 0; lo < n; ++lo) {
-    Side* const begin = sides.data() + file[lo];
-    Side* const end = sides.data() + file[lo + 1];
-    std::sort(begin, end,
-              [](const Side& x, const Side& y) { return x.hi < y.hi || (x.hi == y.hi && x.tri_dir < y.tri_dir); });
-    for (Side* e = begin; e != end;) {
-      Side* run = e;
-      while (e != end && e->hi == run->hi) ++e;
-      const VertexId hi = run->hi;
-      if (e - run == 1) {
-        if (run->tri_dir & 1)
-          boundary.emplace_back(lo, hi);
-        else
-          boundary.emplace_back(hi, lo);
-      } else if (e - run > 2 || (run[0].tri_dir & 1) == (run[1].tri_dir & 1)) {
-        report.problem("edge ", lo, "-", hi, " is used by two triangles in the same direction");
-      } else {
-        if (std::binary_search(constrained.begin(), constrained.end(), Edge{lo, hi})) continue;  // a segment's
-        const std::uint32_t t = run[0].tri_dir >> 1, u = run[1].tri_dir >> 1;
-        const VertexId* v = &tris[3 * std::size_t{t}];
-        const VertexId o = opposite(u, lo, hi);
-        if (incircle(pts[v[0]], pts[v[1]], pts[v[2]], pts[o]) > 0)
-          report.problem("edge ", lo, "-", hi, " is not locally Delaunay (vertex ", o,
-                         " lies inside the circle of triangle ", t, ")");
-      }
-    }
+  for (Part& p : parts.take()) {
+    boundary.insert(boundary.end(), p.boundary.begin(), p.boundary.end());
+    report.merge(p.report);
   }
   return boundary;
 }

@@ -3,7 +3,9 @@
 // local Delaunay test, the convex hull.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -41,6 +43,28 @@ class Report {
  private:
   std::size_t problems_ = 0;
   std::string first_;
+};
+
+// Results of parts of a parallel loop, merged in the order of the parts: the first problem
+// is then the one a single thread would have met first.
+template <class Result>
+class InOrder {
+ public:
+  void put(std::size_t first, Result r) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    parts_.emplace_back(first, std::move(r));
+  }
+  // The parts' results, by where they began.
+  std::vector<Result> take() {
+    std::sort(parts_.begin(), parts_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Result> out;
+    for (auto& p : parts_) out.push_back(std::move(p.second));
+    return out;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::pair<std::size_t, Result>> parts_;
 };
 
 using Edge = std::pair<VertexId, VertexId>;
