@@ -57,8 +57,8 @@ void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std:
 Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
                      const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
 
-/// Options::on_sorted.
-using Sorted = std::function<void(std::size_t first, std::span<const VertexId> triangles)>;
+/// Options::on_sorted's type.
+using Sorted = decltype(Options::on_sorted);
 
 /// Rotates each triangle to start at its smallest vertex, then sorts the triangles, renumbering
 /// the neighbours: the output no longer depends on the order of insertion. Up to `threads`
