@@ -351,6 +351,26 @@ expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switche
 [ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"
 absent "$dir/m.off"
+# Text formatted on threads (runs of 32768 lines side by side) is the file one thread writes.
+awk 'BEGIN { n = 70000; print n, 2, 0, 0
+  for (i = 0; i < n; i++) { a = 6.283185307179586 * i / n; r = 1 + 0.2 * sin(37 * a)
+    printf "%d %.17g %.17g\n", i, r * cos(a), r * sin(a) }
+  print n, 0; for (i = 0; i < n; i++) print i, i, (i + 1) % n; print 0 }' >"$dir/big.poly"
+for t in 1 3; do
+  expect 0 "mesh of 70000 vertices, $t threads" -- "$ridt" mesh "$dir/big.poly" -o "$dir/big$t.ele" --threads "$t"
+done
+for ext in ele node edge; do
+  cmp -s "$dir/big1.$ext" "$dir/big3.$ext" && pass || fail "mesh's .$ext differs on 3 threads"
+done
+[ "$(head -1 "$dir/big1.node")" = "70000 2 0 0" ] && pass || fail "big1.node's header"
+expect 0 "generate 100000 .node" -- "$ridt" generate -n 100000 --seed 5 -o "$dir/big.node"
+expect 0 "generate 100000 .txt" -- "$ridt" generate -n 100000 --seed 5 -o "$dir/big.txt"
+expect 0 "generate 100000 .bin" -- "$ridt" generate -n 100000 --seed 5 -o "$dir/big.bin"
+for ext in node txt bin; do
+  expect 0 "triangulate big.$ext" -- "$ridt" triangulate "$dir/big.$ext" -o "$dir/big.$ext.ele" --threads 1
+done
+cmp -s "$dir/big.bin.ele" "$dir/big.node.ele" && pass || fail "a threaded .node reads back other points"
+cmp -s "$dir/big.bin.ele" "$dir/big.txt.ele" && pass || fail "a threaded text file reads back other points"
 
 # Memory is planned: a run over --memory-limit is refused before it starts, with both numbers.
 expect 2 "memory limit" -- "$ridt" triangulate "$dir/uniform.bin" --method serial --memory-limit 1M -o "$dir/mem.ele"

@@ -46,6 +46,9 @@ std::size_t byte_size(const std::string& text, const char* what);
 /// The box of --box ("x0,y0,x1,y1"), or the points' box and 10 % around when `text` is empty.
 io::Box box_option(const std::string& text, std::span<const Point> points);
 
+/// The threads a --threads value asks for: itself, or every hardware thread for 0.
+unsigned thread_count(unsigned asked);
+
 /// The process's peak resident memory in bytes.
 long long peak_rss_bytes();
 

@@ -2,9 +2,11 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <thread>
 
 #include "command.hpp"
 
@@ -58,6 +60,8 @@ io::Box box_option(const std::string& text, std::span<const Point> points) {
     throw InputError("--box: give x0,y0,x1,y1 with x0 < x1 and y0 < y1");
   return {b[0], b[1], b[2], b[3]};
 }
+
+unsigned thread_count(unsigned asked) { return asked != 0 ? asked : std::max(1u, std::thread::hardware_concurrency()); }
 
 long long peak_rss_bytes() {
   rusage u{};

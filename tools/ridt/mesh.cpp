@@ -91,10 +91,12 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   std::vector<Point> all = g.points;
   all.insert(all.end(), t.steiner.begin(), t.steiner.end());
   try {
+    const unsigned threads = thread_count(a.threads);
     io::write_elements(a.output, t.triangles,
-                       a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(), first);
-    io::write_points(node, all, first);
-    io::write_edges(edge, t.edges, first);
+                       a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(), first,
+                       threads);
+    io::write_points(node, all, first, threads);
+    io::write_edges(edge, t.edges, first, threads);
     if (a.neighbours) io::write_triangulation(neigh, all, t, first);
   } catch (...) {
     for (const std::string& f : {a.output, node, edge, neigh}) std::filesystem::remove(f);
@@ -147,7 +149,8 @@ Command add_mesh(CLI::App& app) {
   mesh->add_flag("--conforming", a->conforming, "conforming Delaunay: every edge Delaunay (Triangle's -D)");
   mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, D, Y, n, z, Q and V are taken");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
-  mesh->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
+  mesh->add_option("--threads", a->threads,
+                   "threads of the triangulation and of the output's text (0, the default: all hardware threads)");
   return {mesh, [a] { return run(*a); }};
 }
 

@@ -3,7 +3,6 @@
 // ridt triangulate INPUT.bin -o OUT.parts --out-of-core [--memory-limit SIZE] [--threads N].
 #include <optional>
 #include <sstream>
-#include <thread>
 
 #include "command.hpp"
 #include "out_of_core.hpp"
@@ -87,11 +86,6 @@ void print_json(Fields f, const Stats& s) {
   std::printf("}\n");
 }
 
-// --threads, or every hardware thread.
-unsigned thread_count(const Args& a) {
-  return a.threads != 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
-}
-
 Options options(const Args& a) {
   Options o;
   o.method = parse<Method>(a.method);
@@ -124,7 +118,7 @@ int run_out_of_core(const Args& a) {
   o.input = a.input;
   o.output = a.output;
   if (!a.memory_limit.empty()) o.memory_limit = byte_size(a.memory_limit, "--memory-limit");
-  o.threads = thread_count(a);
+  o.threads = thread_count(a.threads);
   o.column_points = a.column_points;
   ProgressLine progress;
   if (progress.on()) o.progress = [&](const char* phase, double done) { progress.show(phase, done); };
@@ -165,7 +159,7 @@ int run(const Args& a) {
     sorted->commit(t);
   } else if (!a.output.empty()) {
     progress.show("writing");
-    io::write_triangulation(a.output, in.points, t, in.first_index, thread_count(a));
+    io::write_triangulation(a.output, in.points, t, in.first_index, thread_count(a.threads));
     progress.clear();
   }
   const double t_write = seconds_since(t0);

@@ -45,7 +45,8 @@ struct Format {
   std::string_view description;
   PointFile (*read_points)(const std::string& path, std::string_view data);
   std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index);
-  void (*write_points)(Writer& out, std::span<const Point> points, int first_index);
+  /// Text formats format on `threads` threads.
+  void (*write_points)(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
   void (*write_triangulation)(const std::string& path, const TriangulationOut& out);
   void (*write_voronoi)(Writer& out, const VoronoiOut& v);
   void (*write_values)(Writer& out, const ValuesOut& v);

@@ -24,10 +24,10 @@ PointFile parse_points(std::string_view data, const std::string& name) {
   return format_of(name, &Format::read_points, "point input").read_points(name, data);
 }
 
-void write_points(const std::string& path, std::span<const Point> points, int first_index) {
+void write_points(const std::string& path, std::span<const Point> points, int first_index, unsigned threads) {
   const Format& f = format_of(path, &Format::write_points, "point output");
   Writer out(path);
-  f.write_points(out, points, first_index);
+  f.write_points(out, points, first_index, threads);
   out.commit();
 }
 

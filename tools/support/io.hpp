@@ -83,13 +83,13 @@ void write_mesh_svg(const std::string& path, std::span<const Point> points, cons
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index);
 
 /// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
-/// `first_index`, each with boundary marker 1 (they are segments).
-void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index);
+/// `first_index`, each with boundary marker 1 (they are segments); formatted on `threads` threads.
+void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads = 1);
 
 /// Writes triangles as Triangle's .ele file, numbered from `first_index`, with one attribute a
-/// triangle where `attributes` is not empty (Triangle's -A).
+/// triangle where `attributes` is not empty (Triangle's -A); formatted on `threads` threads.
 void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
-                    int first_index);
+                    int first_index, unsigned threads = 1);
 
 /// The extensions of each kind of file, for a help text ("a, b or text").
 std::string point_formats();
@@ -106,8 +106,8 @@ PointFile read_points(const std::string& path);
 /// and stands for the file in messages.
 PointFile parse_points(std::string_view data, const std::string& name);
 
-/// Writes points (format by extension).
-void write_points(const std::string& path, std::span<const Point> points, int first_index = 0);
+/// Writes points (format by extension); text is formatted on `threads` threads.
+void write_points(const std::string& path, std::span<const Point> points, int first_index = 0, unsigned threads = 1);
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;
 /// `first_index` is the numbering of .ele and text files.

@@ -90,7 +90,7 @@ std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_vi
   return out;
 }
 
-void write_bin_points(Writer& out, std::span<const Point> points, int /*first_index*/) {
+void write_bin_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned /*threads*/) {
   for (const Point& p : points) {
     out.put_f64_le(p.x);
     out.put_f64_le(p.y);

@@ -316,12 +316,12 @@ std::string png_bytes(const std::string& path, const unsigned char* pixels, std:
 // Text (io_text.cpp): one point or triangle a line.
 PointFile read_text_points(const std::string& path, std::string_view text);
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index);
-void write_text_points(Writer& out, std::span<const Point> points, int first_index);
+void write_text_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 
 // Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
 PointFile read_node(const std::string& path, std::string_view text);
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index);
-void write_node(Writer& out, std::span<const Point> points, int first_index);
+void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 /// With `attributes` (one a triangle), Triangle's one attribute column (-A). The lines are
 /// formatted on `threads` threads.
 void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index,
@@ -334,7 +334,7 @@ PointFile read_bin_points(const std::string& path, std::string_view data);
 /// (not a regular file, a big-endian machine): then read it. Throws IoError as the reader.
 std::optional<PointFile> map_bin_points(const std::string& path);
 std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data);
-void write_bin_points(Writer& out, std::span<const Point> points, int first_index);
+void write_bin_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 void write_bin_triangles(Writer& out, std::span<const VertexId> triangles);
 /// Triangles first, first + 1, ... of a .bin triangle file at their place in it.
 void put_bin_sorted(Writer& out, std::size_t first, std::span<const VertexId> triangles);

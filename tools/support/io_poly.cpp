@@ -117,23 +117,22 @@ std::size_t read_segments_of(const std::string& path, const std::vector<Line>& l
 
 namespace ridt::io {
 
-void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index) {
+void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads) {
   detail::Writer out(path);
   out.put_int(static_cast<std::int64_t>(edges.size() / 2));
   out.put(" 1\n");
-  for (std::size_t k = 0; k + 1 < edges.size(); k += 2) {
-    out.put_int(static_cast<std::int64_t>(k / 2) + first_index);
-    for (int e = 0; e < 2; ++e)
-      out.put(' '), out.put_int(static_cast<std::int64_t>(edges[k + static_cast<std::size_t>(e)]) + first_index);
-    out.put(" 1\n");
-  }
+  out.put_lines(edges.size() / 2, threads, [&](std::size_t k, TextPart& line) {
+    line.put_int(static_cast<std::int64_t>(k) + first_index);
+    for (int e = 0; e < 2; ++e) line.put(' '), line.put_int(static_cast<std::int64_t>(edges[2 * k + e]) + first_index);
+    line.put(" 1\n");
+  });
   out.commit();
 }
 
 void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
-                    int first_index) {
+                    int first_index, unsigned threads) {
   detail::Writer out(path);
-  detail::write_ele(out, triangles, first_index, attributes);
+  detail::write_ele(out, triangles, first_index, attributes, threads);
   out.commit();
 }
 

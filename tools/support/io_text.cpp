@@ -43,13 +43,13 @@ std::vector<VertexId> read_text_triangles(const std::string& path, std::string_v
   return out;
 }
 
-void write_text_points(Writer& out, std::span<const Point> points, int /*first_index*/) {
-  for (const Point& p : points) {
-    out.put_double(p.x);
-    out.put(' ');
-    out.put_double(p.y);
-    out.put('\n');
-  }
+void write_text_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned threads) {
+  out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
+    line.put_double(points[k].x);
+    line.put(' ');
+    line.put_double(points[k].y);
+    line.put('\n');
+  });
 }
 
 }  // namespace ridt::io::detail

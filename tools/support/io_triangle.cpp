@@ -148,17 +148,17 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
   return out;
 }
 
-void write_node(Writer& out, std::span<const Point> points, int first_index) {
+void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads) {
   out.put_int(static_cast<std::int64_t>(points.size()));
   out.put(" 2 0 0\n");
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    out.put_int(static_cast<std::int64_t>(i) + first_index);
-    out.put(' ');
-    out.put_double(points[i].x);
-    out.put(' ');
-    out.put_double(points[i].y);
-    out.put('\n');
-  }
+  out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
+    line.put_int(static_cast<std::int64_t>(k) + first_index);
+    line.put(' ');
+    line.put_double(points[k].x);
+    line.put(' ');
+    line.put_double(points[k].y);
+    line.put('\n');
+  });
 }
 
 void write_ele(Writer& out, std::span<const VertexId> tris, int first_index, std::span<const double> attributes,
