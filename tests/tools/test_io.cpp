@@ -598,6 +598,10 @@ TEST_F(IoTest, BadPolyFiles) {
       {"3 3\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n", "dimension must be 2"},
       {"3 2\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n0\nextra\n", "unexpected line"},
       {"4 2\n0 0 0\n1 1 0\n2 0 1\n", "the file ends before its 4 vertices"},
+      // A field too many, in a segment, a hole and the header.
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 0 1 0 7\n0\n", "expected \"index a b [marker]\""},
+      {"3 2\n0 0 0\n1 1 0\n2 0 1\n0 0\n1\n0 0.5 0.5 9\n", "expected \"index x y\""},
+      {"3 2 0 0 5\n0 0 0\n1 1 0\n2 0 1\n0 0\n0\n", "expected a header"},
   };
   for (const auto& [text, wanted] : cases) {
     SCOPED_TRACE(text);
@@ -605,6 +609,63 @@ TEST_F(IoTest, BadPolyFiles) {
     EXPECT_TRUE(Has(error_of([&] { read_pslg(path("bad.poly")); }), wanted));
   }
   EXPECT_THROW(read_pslg(path("sq.node")), IoError);  // not a .poly
+}
+
+// Text large enough to be cut into pieces and parsed in ranges on threads reads as on one
+// thread: the same numbers, and, wherever the errors lie, the same first one (by line).
+TEST_F(IoTest, TextOnThreadsReadsAsOnOne) {
+  constexpr int kPoints = 120000;
+  std::string node = "\xEF\xBB\xBF# points\n" + std::to_string(kPoints) + " 2 0 1\n", ele, poly, txt;
+  for (int i = 0; i < kPoints; ++i) {
+    const std::string x = std::to_string(std::sin(i) * 1e3), y = std::to_string(i * 0.25);
+    node += std::to_string(i + 1) + " " + x + " " + y + " 1" + (i % 1000 == 0 ? "  # a comment\r\n\n" : "\n");
+    txt += x + "," + y + "\n";
+  }
+  poly = node + std::to_string(kPoints) + " 0\n";
+  ele = std::to_string(kPoints - 2) + " 3\n";
+  for (int i = 1; i <= kPoints; ++i)
+    poly += std::to_string(i) + " " + std::to_string(i) + " " + std::to_string(i % kPoints + 1) + "\n";
+  for (int i = 1; i <= kPoints - 2; ++i)
+    ele += std::to_string(i) + " 1 " + std::to_string(i + 1) + " " + std::to_string(i + 2) + "\n";
+  poly += "0\n";
+  auto points_of = [&](const std::string& name, unsigned threads) { return copy_of(read_points(path(name), threads)); };
+  auto same = [&](const std::string& n, const std::string& p, const std::string& e, const std::string& t) {
+    write_file("a.node", n), write_file("a.poly", p), write_file("a.ele", e), write_file("a.txt", t);
+    for (const unsigned threads : {2u, 3u, 8u}) {
+      SCOPED_TRACE(threads);
+      auto error_or = [](auto&& f) {
+        try {
+          f();
+        } catch (const IoError& x) {
+          return std::string(x.what());
+        }
+        return std::string();
+      };
+      for (const char* name : {"a.node", "a.poly", "a.txt"}) {
+        const std::string one = error_or([&] { points_of(name, 1); });
+        EXPECT_EQ(error_or([&] { points_of(name, threads); }), one) << name;
+        if (one.empty()) EXPECT_EQ(points_of(name, threads), points_of(name, 1)) << name;
+      }
+      const std::string one = error_or([&] { read_triangles(path("a.ele"), 1, 1); });
+      EXPECT_EQ(error_or([&] { read_triangles(path("a.ele"), 1, threads); }), one);
+      if (one.empty()) EXPECT_EQ(read_triangles(path("a.ele"), 1, threads), read_triangles(path("a.ele"), 1, 1));
+      if (one.empty()) EXPECT_EQ(read_pslg(path("a.poly"), threads).segments, read_pslg(path("a.poly"), 1).segments);
+    }
+  };
+  same(node, poly, ele, txt);
+  EXPECT_EQ(read_points(path("a.node"), 3).points.size(), std::size_t{kPoints});
+  // One error, or two, anywhere: near the start, in the middle, near the end.
+  auto spoil = [](std::string text, double at, const std::string& with) {
+    std::size_t p = text.find('\n', static_cast<std::size_t>(text.size() * at)) + 1;
+    return text.insert(p, with);
+  };
+  for (const double at : {0.001, 0.3, 0.5, 0.97}) {
+    SCOPED_TRACE(at);
+    same(spoil(node, at, "7 1 x 1\n"), spoil(poly, at, "7 1 2\n"), spoil(ele, at, "7 1 2 3\n"),
+         spoil(txt, at, "1 x\n"));
+    same(spoil(spoil(node, at, "7 1 2\n"), 0.99, "1 nan 2 1\n"), spoil(spoil(poly, 0.99, "1 1\n"), at, "5 5 5 5 5\n"),
+         spoil(spoil(ele, at, "1 2 3\n"), 0.98, "1 2 3 4\n"), spoil(spoil(txt, 0.99, "1e999 1\n"), at, "1 2 3\n"));
+  }
 }
 
 TEST_F(IoTest, WriteEdges) {

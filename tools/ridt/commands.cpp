@@ -40,7 +40,8 @@ Command add_check(CLI::App& app) {
   chk->add_option("--min-angle", a->min_angle, "no angle below DEG degrees (but beside small input angles)");
   chk->add_option("--max-area", a->max_area, "no triangle larger than A");
   return {chk, [a] {
-            const io::PointFile p = io::read_points(a->points);
+            const unsigned threads = thread_count(0);  // as check() takes
+            const io::PointFile p = io::read_points(a->points, threads);
             const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
             const CheckResult r = [&] {
               if (!mesh && io::is_parts_index(a->triangles)) {
@@ -48,12 +49,12 @@ Command add_check(CLI::App& app) {
                 // passes, a part at a time.
                 const std::vector<std::string> parts = io::part_files(a->triangles);
                 return check_in_passes(p.points, [&](const TriangleSink& sink) {
-                  for (const std::string& part : parts) sink(io::read_triangles(part, 0));
+                  for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
                 });
               }
-              const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index);
+              const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index, threads);
               if (!mesh) return check(p.points, t);
-              const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly);
+              const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly, threads);
               std::vector<VertexId> edges;
               if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
               MeshSpec spec;
@@ -84,7 +85,7 @@ Command add_voronoi(CLI::App& app) {
                   "10 % around)");
   vor->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {vor, [a] {
-            const io::PointFile p = io::read_points(a->input);
+            const io::PointFile p = io::read_points(a->input, thread_count(a->threads));
             Options o;
             o.method = Method::Auto;
             o.threads = a->threads;

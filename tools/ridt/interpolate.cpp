@@ -68,7 +68,7 @@ int run(const Args& a) {
   if (a.queries.empty() == a.grid.empty()) throw InputError("give either a QUERIES file or --grid, not both");
   if (a.method != "linear" && a.method != "natural" && a.method != "nearest")
     throw InputError("unknown method '" + a.method + "' (use linear, natural or nearest)");
-  const io::PointFile p = io::read_points(a.points);
+  const io::PointFile p = io::read_points(a.points, thread_count(a.threads));
   std::size_t components = 0;
   const std::vector<double> values = io::read_values(a.values, components);
   if (values.size() != p.points.size() * components)
@@ -78,7 +78,7 @@ int run(const Args& a) {
   if (!a.grid.empty())
     w = grid_nodes(a.grid, p.points);
   else {
-    const io::PointFile q = io::read_points(a.queries);
+    const io::PointFile q = io::read_points(a.queries, thread_count(a.threads));
     w.queries.assign(q.points.begin(), q.points.end());
   }
   Options o;

@@ -106,7 +106,7 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
 
 int run(Args a) {
   apply_switches(a);
-  const io::Pslg g = io::read_pslg(a.input);
+  const io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
   Options o;
   o.method = parse<Method>(a.method);
   o.threads = a.threads;

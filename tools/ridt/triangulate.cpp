@@ -145,7 +145,7 @@ int run(const Args& a) {
   ProgressLine progress;
   if (progress.on()) o.progress = [&](double done) { progress.show(done < 1 ? "inserting" : "finishing", done); };
   auto t0 = std::chrono::steady_clock::now();
-  const io::PointFile in = io::read_points(a.input);
+  const io::PointFile in = io::read_points(a.input, thread_count(a.threads));
   const double t_read = seconds_since(t0);
   // A .bin file is written as the canonical sort puts the triangles in place.
   std::optional<io::SortedOutput> sorted;

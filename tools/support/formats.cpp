@@ -5,8 +5,8 @@
 namespace ridt::io::detail {
 
 void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.cpp
-Pslg read_poly(const std::string& path, std::string_view text);  // io_poly.cpp
-PointFile read_poly_points(const std::string& path, std::string_view text);
+Pslg read_poly(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
+PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads);
 
 namespace {
 
@@ -43,7 +43,8 @@ void obj_out(const std::string& path, const TriangulationOut& o) {
 
 void svg_out(const std::string& path, const TriangulationOut& o) { write_svg(path, o.points, o.t); }
 
-std::vector<VertexId> bin_triangles_in(const std::string& path, std::string_view data, int /*first_index*/) {
+std::vector<VertexId> bin_triangles_in(const std::string& path, std::string_view data, int /*first_index*/,
+                                       unsigned /*threads*/) {
   return read_bin_triangles(path, data);
 }
 

@@ -43,14 +43,16 @@ struct ValuesOut {
 struct Format {
   std::string_view extension;
   std::string_view description;
-  PointFile (*read_points)(const std::string& path, std::string_view data);
-  std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index);
+  /// Readers of text parse on `threads` threads.
+  PointFile (*read_points)(const std::string& path, std::string_view data, unsigned threads);
+  std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index,
+                                          unsigned threads);
   /// Text formats format on `threads` threads.
   void (*write_points)(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
   void (*write_triangulation)(const std::string& path, const TriangulationOut& out);
   void (*write_voronoi)(Writer& out, const VoronoiOut& v);
   void (*write_values)(Writer& out, const ValuesOut& v);
-  Pslg (*read_pslg)(const std::string& path, std::string_view data);  ///< points, segments, holes
+  Pslg (*read_pslg)(const std::string& path, std::string_view data, unsigned threads);  ///< points, segments, holes
   bool writes_neighbors = false;  ///< write_triangulation reads Triangulation::neighbors
   /// Writes a stretch of the canonically sorted triangles at its place (Options::on_sorted),
   /// `first` its first triangle: for a format whose file is the triangles as they lie, which

@@ -14,14 +14,14 @@ namespace ridt::io {
 
 using namespace detail;
 
-PointFile read_points(const std::string& path) {
+PointFile read_points(const std::string& path, unsigned threads) {
   if (extension_of(path) == ".bin")
     if (std::optional<PointFile> mapped = map_bin_points(path)) return std::move(*mapped);
-  return parse_points(read_file_whole(path), path);
+  return parse_points(read_file_whole(path), path, threads);
 }
 
-PointFile parse_points(std::string_view data, const std::string& name) {
-  return format_of(name, &Format::read_points, "point input").read_points(name, data);
+PointFile parse_points(std::string_view data, const std::string& name, unsigned threads) {
+  return format_of(name, &Format::read_points, "point input").read_points(name, data, threads);
 }
 
 void write_points(const std::string& path, std::span<const Point> points, int first_index, unsigned threads) {
@@ -31,9 +31,9 @@ void write_points(const std::string& path, std::span<const Point> points, int fi
   out.commit();
 }
 
-std::vector<VertexId> read_triangles(const std::string& path, int first_index) {
-  if (is_parts_index(path)) return read_parts(path);
-  return parse_triangles(read_file_whole(path), path, first_index);
+std::vector<VertexId> read_triangles(const std::string& path, int first_index, unsigned threads) {
+  if (is_parts_index(path)) return read_parts(path, threads);
+  return parse_triangles(read_file_whole(path), path, first_index, threads);
 }
 
 bool is_parts_index(const std::string& path) { return extension_of(path) == ".parts"; }
@@ -63,17 +63,18 @@ std::vector<std::string> part_files(const std::string& path) {
   return parts;
 }
 
-std::vector<VertexId> read_parts(const std::string& path) {
+std::vector<VertexId> read_parts(const std::string& path, unsigned threads) {
   std::vector<VertexId> out;
   for (const std::string& part : part_files(path)) {
-    const std::vector<VertexId> t = read_triangles(part, 0);
+    const std::vector<VertexId> t = read_triangles(part, 0, threads);
     out.insert(out.end(), t.begin(), t.end());
   }
   return out;
 }
 
-std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index) {
-  return format_of(name, &Format::read_triangles, "triangle input").read_triangles(name, data, first_index);
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index,
+                                      unsigned threads) {
+  return format_of(name, &Format::read_triangles, "triangle input").read_triangles(name, data, first_index, threads);
 }
 
 bool triangulation_needs_neighbors(const std::string& path) {
@@ -106,13 +107,13 @@ void SortedOutput::commit(const Triangulation& t) {
   writer_->commit();
 }
 
-Pslg read_pslg(const std::string& path) {
+Pslg read_pslg(const std::string& path, unsigned threads) {
   format_of(path, &Format::read_pslg, "planar straight-line graph input");  // before reading it
-  return parse_pslg(read_file_whole(path), path);
+  return parse_pslg(read_file_whole(path), path, threads);
 }
 
-Pslg parse_pslg(std::string_view data, const std::string& name) {
-  return format_of(name, &Format::read_pslg, "planar straight-line graph input").read_pslg(name, data);
+Pslg parse_pslg(std::string_view data, const std::string& name, unsigned threads) {
+  return format_of(name, &Format::read_pslg, "planar straight-line graph input").read_pslg(name, data, threads);
 }
 
 void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,

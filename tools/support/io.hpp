@@ -67,11 +67,13 @@ struct Pslg {
 };
 
 /// Reads a .poly file (its points from the .node file beside it where it lists none); throws
-/// IoError on malformed content, an index out of range, a count that does not match.
-Pslg read_pslg(const std::string& path);
+/// IoError on malformed content, an index out of range, a count that does not match. Its lines
+/// are parsed on `threads` threads, as every text reader's here are: the same result, and the
+/// same first error, as on one.
+Pslg read_pslg(const std::string& path, unsigned threads = 1);
 
 /// The same for a file's content already in memory; `name` picks the format by its extension.
-Pslg parse_pslg(std::string_view data, const std::string& name);
+Pslg parse_pslg(std::string_view data, const std::string& name, unsigned threads = 1);
 
 /// Draws a constrained triangulation or mesh as .svg, its segments' edges (pairs of indices)
 /// thick and red apart from the other edges; throws IoError past kSvgMaxTriangles.
@@ -99,31 +101,32 @@ std::string voronoi_formats();
 std::string values_formats();
 
 /// Reads points; throws IoError on a missing file, a malformed line, a NaN or infinite
-/// coordinate, or a .node count that does not match.
-PointFile read_points(const std::string& path);
+/// coordinate, or a .node count that does not match. Text is parsed on `threads` threads.
+PointFile read_points(const std::string& path, unsigned threads = 1);
 
 /// The same for a file's content already in memory; `name` picks the format by its extension
 /// and stands for the file in messages.
-PointFile parse_points(std::string_view data, const std::string& name);
+PointFile parse_points(std::string_view data, const std::string& name, unsigned threads = 1);
 
 /// Writes points (format by extension); text is formatted on `threads` threads.
 void write_points(const std::string& path, std::span<const Point> points, int first_index = 0, unsigned threads = 1);
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;
-/// `first_index` is the numbering of .ele and text files.
-std::vector<VertexId> read_triangles(const std::string& path, int first_index);
+/// `first_index` is the numbering of .ele and text files. Text is parsed on `threads` threads.
+std::vector<VertexId> read_triangles(const std::string& path, int first_index, unsigned threads = 1);
 
 /// The triangles of a distributed or out-of-core run's parts: an index (.parts: "ridt parts N",
 /// then the N part files, .ele (0-based) or .bin, named relative to the index), the parts'
 /// triangles one after another.
-std::vector<VertexId> read_parts(const std::string& path);
+std::vector<VertexId> read_parts(const std::string& path, unsigned threads = 1);
 /// Whether `path` names an index of parts (.parts).
 bool is_parts_index(const std::string& path);
 /// The part files that a .parts index names, in its order, each checked to be .ele or .bin.
 std::vector<std::string> part_files(const std::string& path);
 
 /// The same for content in memory (`name` as for parse_points).
-std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index);
+std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index,
+                                      unsigned threads = 1);
 
 /// Whether the triangulation format of `path` writes the neighbours (else the triangulation
 /// need not find them: Options::neighbors); throws IoError unless write_triangulation knows

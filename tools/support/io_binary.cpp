@@ -41,7 +41,7 @@ void check_finite(const std::string& path, std::span<const Point> points) {
 
 }  // namespace
 
-PointFile read_bin_points(const std::string& path, std::string_view data) {
+PointFile read_bin_points(const std::string& path, std::string_view data, unsigned /*threads*/) {
   check_bin_size(path, data.size());
   std::vector<Point> points(data.size() / 16);
   for (std::size_t i = 0; i < points.size(); ++i)

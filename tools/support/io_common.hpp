@@ -114,11 +114,10 @@ inline std::string read_file_whole(const std::string& path) {
   return data;
 }
 
-/// Calls f(line_number, content) for every line that is not blank after removing its
-/// comment ('#' to the end of the line) and surrounding white space. Line numbers count from 1.
+/// for_each_line's scan, with no byte order mark taken off; returns how many lines `text` has
+/// (a last one without a line end counted).
 template <class F>
-inline void for_each_line(std::string_view text, F&& f) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
+inline std::size_t lines_of(std::string_view text, F&& f) {
   const char* p = text.data();
   const char* const end = p + text.size();
   std::size_t line_no = 0;
@@ -133,6 +132,15 @@ inline void for_each_line(std::string_view text, F&& f) {
     line = trim(line);
     if (!line.empty()) f(line_no, line);
   }
+  return line_no;
+}
+
+/// Calls f(line_number, content) for every line that is not blank after removing its
+/// comment ('#' to the end of the line) and surrounding white space. Line numbers count from 1.
+template <class F>
+inline void for_each_line(std::string_view text, F&& f) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
+  lines_of(text, f);
 }
 
 /// Fields of a line, separated by white space, or (with allow_comma) by one comma with optional
@@ -180,13 +188,9 @@ inline std::vector<std::string_view> fields_of(const std::string& path, std::siz
                                                std::size_t least, std::size_t most, const std::string& expected) {
   Fields f{line, false};
   std::vector<std::string_view> out;
-  for (std::string_view x; f.next(x);) {
-    if (out.size() == most) break;
-    out.push_back(x);
-  }
-  std::string_view extra;
-  if (out.size() < least || (out.size() == most && f.next(extra)))
-    fail_line(path, line_no, "expected " + expected + ", got " + quoted(line));
+  std::string_view x;
+  while (out.size() < most && f.next(x)) out.push_back(x);
+  if (out.size() < least || f.next(x)) fail_line(path, line_no, "expected " + expected + ", got " + quoted(line));
   return out;
 }
 
@@ -252,10 +256,6 @@ inline std::int64_t integer(const std::string& path, std::size_t line, std::stri
   return v;
 }
 
-inline std::size_t count_lines(std::string_view text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
-}
-
 inline std::uint32_t load_u32_le(const char* p) {
   std::uint32_t v;
   std::memcpy(&v, p, 4);
@@ -314,13 +314,14 @@ std::string png_bytes(const std::string& path, const unsigned char* pixels, std:
 // The formats, each in its own file.
 
 // Text (io_text.cpp): one point or triangle a line.
-PointFile read_text_points(const std::string& path, std::string_view text);
-std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index);
+PointFile read_text_points(const std::string& path, std::string_view text, unsigned threads = 1);
+std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index,
+                                          unsigned threads = 1);
 void write_text_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 
 // Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
-PointFile read_node(const std::string& path, std::string_view text);
-std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index);
+PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads = 1);
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 /// With `attributes` (one a triangle), Triangle's one attribute column (-A). The lines are
 /// formatted on `threads` threads.
@@ -329,7 +330,7 @@ void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index
 void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index, unsigned threads = 1);
 
 // Raw little-endian binary (io_binary.cpp): float64 pairs, uint32 triples.
-PointFile read_bin_points(const std::string& path, std::string_view data);
+PointFile read_bin_points(const std::string& path, std::string_view data, unsigned threads = 1);
 /// A regular .bin file mapped into memory and checked, or nothing where it cannot be mapped
 /// (not a regular file, a big-endian machine): then read it. Throws IoError as the reader.
 std::optional<PointFile> map_bin_points(const std::string& path);

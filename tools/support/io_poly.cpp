@@ -4,14 +4,10 @@
 // "i x y attribute max_area"; '#' starts a comment. Indices from the vertices' first (0 or 1).
 // And Triangle's .edge: "m 1", then "i a b 1".
 #include "formats.hpp"
+#include "lines.hpp"
 
 namespace ridt::io::detail {
 namespace {
-
-struct Line {
-  std::size_t number;
-  std::string_view text;
-};
 
 // The fields of line `l`: at least `least`, at most `most`.
 std::vector<std::string_view> fields(const std::string& path, const Line& l, std::size_t least, std::size_t most,
@@ -27,41 +23,45 @@ void need(const std::string& path, const std::vector<Line>& lines, std::size_t a
     fail_file(path, "the file ends before its " + std::to_string(count) + " " + what);
 }
 
-std::size_t read_vertices(const std::string& path, std::string_view text, const std::vector<Line>& lines, Pslg& g) {
+std::size_t read_vertices(const std::string& path, const std::vector<Line>& lines, unsigned threads, Pslg& g) {
   const auto h = fields(path, lines[0], 2, 4, "a header \"vertices 2 [attributes [markers]]\"");
   const std::int64_t n = integer(path, lines[0].number, h[0], "number of vertices");
   if (integer(path, lines[0].number, h[1], "dimension") != 2) fail_line(path, lines[0].number, "dimension must be 2");
   PointFile p;
   if (n == 0) {  // the vertices in the .node file beside it
     const std::string node = (fs::path(path).replace_extension(".node")).string();
-    p = read_node(node, read_file_whole(node));
-  } else {  // the text up to the last vertex line is a .node file, line numbers and all
+    p = read_node(node, read_file_whole(node), threads);
+  } else {  // the lines up to the last vertex's are a .node file's, line numbers and all
     need(path, lines, 1, n, "vertices");
-    const Line& last = lines[static_cast<std::size_t>(n)];
-    p = read_node(path, text.substr(0, static_cast<std::size_t>(last.text.data() + last.text.size() - text.data())));
+    p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);
   }
   g.points.assign(p.points.begin(), p.points.end());
   g.first_index = p.first_index;
   return n == 0 ? 1 : 1 + static_cast<std::size_t>(n);
 }
 
-std::size_t read_segments(const std::string& path, const std::vector<Line>& lines, std::size_t at, Pslg& g) {
+std::size_t read_segments(const std::string& path, const std::vector<Line>& lines, std::size_t at, unsigned threads,
+                          Pslg& g) {
   if (at >= lines.size()) fail_file(path, "no segment header \"segments [markers]\"");
   const auto h = fields(path, lines[at], 1, 2, "a segment header \"segments [markers]\"");
   const std::int64_t m = integer(path, lines[at].number, h[0], "number of segments");
   need(path, lines, at + 1, m, "segments");
-  for (std::int64_t k = 0; k < m; ++k) {
-    const Line& l = lines[at + 1 + static_cast<std::size_t>(k)];
-    const auto f = fields(path, l, 3, 4, "\"index a b [marker]\"");
-    if (integer(path, l.number, f[0], "segment index") != g.first_index + k)
-      fail_line(path, l.number, "expected segment index " + std::to_string(g.first_index + k));
-    for (int e = 1; e <= 2; ++e) {
-      const VertexId v = vertex(path, l.number, f[static_cast<std::size_t>(e)], g.first_index);
-      if (v >= g.points.size())
-        fail_line(path, l.number, "segment end " + std::string(f[static_cast<std::size_t>(e)]) + " is not a vertex");
-      g.segments.push_back(v);
+  g.segments.resize(2 * static_cast<std::size_t>(m));
+  parse_in_ranges(0, static_cast<std::size_t>(m), threads, [&](std::size_t k) {
+    const Line& l = lines[at + 1 + k];
+    Fields f{l.text, false};
+    std::string_view index, ends[2], marker, extra;
+    if (!(f.next(index) && f.next(ends[0]) && f.next(ends[1])) || (f.next(marker) && f.next(extra)))
+      fields(path, l, 3, 4, "\"index a b [marker]\"");  // throws, naming the fields
+    const std::int64_t want = g.first_index + static_cast<std::int64_t>(k);
+    if (integer(path, l.number, index, "segment index") != want)
+      fail_line(path, l.number, "expected segment index " + std::to_string(want));
+    for (int e = 0; e < 2; ++e) {
+      const VertexId v = vertex(path, l.number, ends[e], g.first_index);
+      if (v >= g.points.size()) fail_line(path, l.number, "segment end " + std::string(ends[e]) + " is not a vertex");
+      g.segments[2 * k + static_cast<std::size_t>(e)] = v;
     }
-  }
+  });
   return at + 1 + static_cast<std::size_t>(m);
 }
 
@@ -91,26 +91,21 @@ std::size_t read_seeds(const std::string& path, const std::vector<Line>& lines, 
 
 }  // namespace
 
-Pslg read_poly(const std::string& path, std::string_view text) {
-  std::vector<Line> lines;
-  for_each_line(text, [&](std::size_t number, std::string_view line) { lines.push_back({number, line}); });
+Pslg read_poly(const std::string& path, std::string_view text, unsigned threads) {
+  const std::vector<Line> lines = split_lines(text, threads);
   if (lines.empty()) fail_file(path, "no header line \"vertices 2 [attributes [markers]]\"");
   Pslg g;
-  std::size_t at = read_vertices(path, text, lines, g);
-  at = read_segments(path, lines, at, g);
+  std::size_t at = read_vertices(path, lines, threads, g);
+  at = read_segments(path, lines, at, threads, g);
   at = read_seeds(path, lines, at, false, g);
   at = read_seeds(path, lines, at, true, g);
   if (at != lines.size()) fail_line(path, lines[at].number, "unexpected line " + quoted(lines[at].text));
   return g;
 }
 
-PointFile read_poly_points(const std::string& path, std::string_view text) {
-  Pslg g = read_poly(path, text);
+PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads) {
+  Pslg g = read_poly(path, text, threads);
   return PointFile(std::move(g.points), g.first_index);
-}
-
-std::size_t read_segments_of(const std::string& path, const std::vector<Line>& lines, std::size_t at, Pslg& g) {
-  return read_segments(path, lines, at, g);
 }
 
 }  // namespace ridt::io::detail
@@ -138,12 +133,11 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
 
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index) {
   const std::string text = detail::read_file_whole(path);
-  std::vector<detail::Line> lines;
-  detail::for_each_line(text, [&](std::size_t number, std::string_view line) { lines.push_back({number, line}); });
+  const std::vector<detail::Line> lines = detail::split_lines(text, 1);
   Pslg g;
   g.points.resize(points);
   g.first_index = first_index;
-  const std::size_t at = detail::read_segments_of(path, lines, 0, g);
+  const std::size_t at = detail::read_segments(path, lines, 0, 1, g);
   if (at != lines.size())
     detail::fail_line(path, lines[at].number, "unexpected line " + detail::quoted(lines[at].text));
   return std::move(g.segments);

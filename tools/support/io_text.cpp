@@ -1,12 +1,14 @@
 // Text files: "x y" or "x,y" a line for points, "a b c" for triangles; '#' starts a comment.
 #include "io_common.hpp"
+#include "lines.hpp"
 
 namespace ridt::io::detail {
 
-PointFile read_text_points(const std::string& path, std::string_view text) {
-  std::vector<Point> points;
-  points.reserve(count_lines(text));
-  for_each_line(text, [&](std::size_t line_no, std::string_view line) {
+PointFile read_text_points(const std::string& path, std::string_view text, unsigned threads) {
+  const std::vector<Line> lines = split_lines(text, threads);
+  std::vector<Point> points(lines.size());
+  parse_in_ranges(0, lines.size(), threads, [&](std::size_t k) {
+    const auto [line_no, line] = lines[k];
     Fields f{line, true};
     std::string_view a, b, extra;
     const bool two = f.next(a) && f.next(b) && !f.next(extra) && !f.bad;
@@ -22,23 +24,25 @@ PointFile read_text_points(const std::string& path, std::string_view text) {
     }
     if (std::isnan(x) || std::isnan(y)) fail_line(path, line_no, "coordinate is NaN");
     if (std::isinf(x) || std::isinf(y)) fail_line(path, line_no, "coordinate is infinite");
-    points.push_back({x, y});
+    points[k] = {x, y};
   });
   return PointFile(std::move(points));
 }
 
-std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index) {
-  std::vector<VertexId> out;
-  out.reserve(3 * count_lines(text));
-  for_each_line(text, [&](std::size_t line_no, std::string_view line) {
+std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index,
+                                          unsigned threads) {
+  const std::vector<Line> lines = split_lines(text, threads);
+  std::vector<VertexId> out(3 * lines.size());
+  parse_in_ranges(0, lines.size(), threads, [&](std::size_t k) {
+    const auto [line_no, line] = lines[k];
     Fields f{line, true};
     std::string_view a, b, c, extra;
     if (!(f.next(a) && f.next(b) && f.next(c) && !f.next(extra) && !f.bad)) {
       fail_line(path, line_no, "expected three vertex indices \"a b c\", got " + quoted(line));
     }
-    out.push_back(vertex(path, line_no, a, first_index));
-    out.push_back(vertex(path, line_no, b, first_index));
-    out.push_back(vertex(path, line_no, c, first_index));
+    out[3 * k] = vertex(path, line_no, a, first_index);
+    out[3 * k + 1] = vertex(path, line_no, b, first_index);
+    out[3 * k + 2] = vertex(path, line_no, c, first_index);
   });
   return out;
 }

@@ -1,6 +1,7 @@
 // Triangle's formats (Shewchuk's Triangle): .node points ("n 2 attributes markers" then
 // "i x y ..."), .ele triangles and .neigh neighbours, numbered from the .node's first index.
 #include "io_common.hpp"
+#include "lines.hpp"
 
 namespace ridt::io::detail {
 
@@ -86,65 +87,66 @@ EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_v
 
 }  // namespace
 
-PointFile read_node(const std::string& path, std::string_view text) {
-  std::optional<NodeHeader> h;
-  std::vector<Point> points;
+PointFile read_node_lines(const std::string& path, std::span<const Line> lines, unsigned threads) {
+  if (lines.empty()) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
+  const NodeHeader h = node_header(path, lines[0].number, lines[0].text);
+  std::vector<Point> points(lines.size() - 1);
   std::int64_t first = 0;
-  std::size_t count = 0;
-  for_each_line(text, [&](std::size_t line_no, std::string_view line) {
-    if (!h) {
-      h = node_header(path, line_no, line);
-      // Never trust the header for a huge allocation: a point takes at least 6 bytes.
-      points.reserve(std::min(static_cast<std::size_t>(h->n), text.size() / 6 + 1));
-      return;
-    }
+  // Line k + 1 is point k: its index must be first + k, so each line is read on its own, the
+  // first (which sets `first`) before the others.
+  auto read = [&](std::size_t k) {
+    const auto [line_no, line] = lines[k + 1];
     Fields f{line, false};
     std::string_view idx, xs, ys;
     const auto count_error = [&] {
-      return "expected " + std::to_string(h->fields) + " fields \"" + h->layout + "\", got " + quoted(line);
+      return "expected " + std::to_string(h.fields) + " fields \"" + h.layout + "\", got " + quoted(line);
     };
     if (!f.next(idx) || !f.next(xs) || !f.next(ys)) fail_line(path, line_no, count_error());
-    check_rest(f, 3, 3 + static_cast<std::size_t>(h->attrs), h->fields, path, line_no, count_error);
-    check_index(path, line_no, integer(path, line_no, idx, "point index"), count, first, "point");
+    check_rest(f, 3, 3 + static_cast<std::size_t>(h.attrs), h.fields, path, line_no, count_error);
+    std::int64_t from = first;
+    check_index(path, line_no, integer(path, line_no, idx, "point index"), k, k == 0 ? first : from, "point");
     const double x = coordinate(path, line_no, xs, [&] { return not_a_number(xs); });
     const double y = coordinate(path, line_no, ys, [&] { return not_a_number(ys); });
-    points.push_back({x, y});
-    ++count;
-  });
-  if (!h) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
-  if (count != static_cast<std::size_t>(h->n))
-    fail_file(path, "header says " + std::to_string(h->n) + " points but the file has " + std::to_string(count));
+    points[k] = {x, y};
+  };
+  if (!points.empty()) read(0);
+  parse_in_ranges(1, points.size(), threads, read);
+  if (points.size() != static_cast<std::size_t>(h.n))
+    fail_file(path, "header says " + std::to_string(h.n) + " points but the file has " + std::to_string(points.size()));
   return PointFile(std::move(points), static_cast<int>(first));
 }
 
-std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index) {
-  std::optional<EleHeader> h;
-  std::vector<VertexId> out;
-  std::int64_t first_triangle = 0;
-  std::size_t count = 0;
-  for_each_line(text, [&](std::size_t line_no, std::string_view line) {
-    if (!h) {
-      h = ele_header(path, line_no, line);
-      out.reserve(3 * std::min(static_cast<std::size_t>(h->n), text.size() / 8 + 1));
-      return;
-    }
+PointFile read_node(const std::string& path, std::string_view text, unsigned threads) {
+  return read_node_lines(path, split_lines(text, threads), threads);
+}
+
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads) {
+  const std::vector<Line> lines = split_lines(text, threads);
+  if (lines.empty()) fail_file(path, "no header line \"triangles 3 [attributes]\"");
+  const EleHeader h = ele_header(path, lines[0].number, lines[0].text);
+  std::vector<VertexId> out(3 * (lines.size() - 1));
+  std::int64_t first = 0;
+  auto read = [&](std::size_t k) {  // line k + 1, triangle k (as read_node_lines reads a point)
+    const auto [line_no, line] = lines[k + 1];
     Fields f{line, false};
     std::string_view idx, a, b, c;
     const auto count_error = [&] {
-      return "expected " + std::to_string(h->fields) + " fields \"index a b c" + (h->attrs > 0 ? " attributes" : "") +
+      return "expected " + std::to_string(h.fields) + " fields \"index a b c" + (h.attrs > 0 ? " attributes" : "") +
           "\", got " + quoted(line);
     };
     if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
-    check_rest(f, 4, h->fields, h->fields, path, line_no, count_error);
-    check_index(path, line_no, integer(path, line_no, idx, "triangle index"), count, first_triangle, "triangle");
-    out.push_back(vertex(path, line_no, a, first_index));
-    out.push_back(vertex(path, line_no, b, first_index));
-    out.push_back(vertex(path, line_no, c, first_index));
-    ++count;
-  });
-  if (!h) fail_file(path, "no header line \"triangles 3 [attributes]\"");
-  if (count != static_cast<std::size_t>(h->n))
-    fail_file(path, "header says " + std::to_string(h->n) + " triangles but the file has " + std::to_string(count));
+    check_rest(f, 4, h.fields, h.fields, path, line_no, count_error);
+    std::int64_t from = first;
+    check_index(path, line_no, integer(path, line_no, idx, "triangle index"), k, k == 0 ? first : from, "triangle");
+    out[3 * k] = vertex(path, line_no, a, first_index);
+    out[3 * k + 1] = vertex(path, line_no, b, first_index);
+    out[3 * k + 2] = vertex(path, line_no, c, first_index);
+  };
+  const std::size_t count = lines.size() - 1;
+  if (count > 0) read(0);
+  parse_in_ranges(1, count, threads, read);
+  if (count != static_cast<std::size_t>(h.n))
+    fail_file(path, "header says " + std::to_string(h.n) + " triangles but the file has " + std::to_string(count));
   return out;
 }
 
