@@ -4,7 +4,7 @@
 // lakes (holes), and, with --extra, that many uniform points around it.
 //
 //   ridt_bench_constrained [--task cdt|quality] [--n N] [--lakes L] [--extra M] [--angle DEG]
-//                          [--area A] [--reps R]
+//                          [--area A] [--reps R] [--poly OUT.poly]
 //
 // Each run is a process of its own (fork), the codes in a new random order each repetition;
 // a row gives the median time, the median of each repetition's ratio to ridt's one-thread run
@@ -48,6 +48,7 @@ struct Args {
   std::uint32_t n = 1000000, lakes = 100, extra = 0;
   double angle = 30, area = 0;
   int reps = 3;
+  std::string poly;  // write the graph here as Triangle's .poly instead of timing
 };
 
 // What a run gives back: its triangles' vertices as flat coordinates (x0 y0 x1 y1 x2 y2 ...)
@@ -194,6 +195,23 @@ Result isolated(const Code& c, const ridt::Pslg& g, const Args& a) {
   return r;
 }
 
+// The graph as Triangle's .poly (numbered from 1), for timing `ridt mesh` and `triangle -p`
+// as whole processes on the same file.
+bool write_poly(const std::string& path, const ridt::Pslg& g) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (f == nullptr) return false;
+  std::fprintf(f, "%zu 2 0 0\n", g.points.size());
+  for (std::size_t i = 0; i < g.points.size(); ++i)
+    std::fprintf(f, "%zu %.17g %.17g\n", i + 1, g.points[i].x, g.points[i].y);
+  std::fprintf(f, "%zu 0\n", g.segments.size() / 2);
+  for (std::size_t i = 0; i + 1 < g.segments.size(); i += 2)
+    std::fprintf(f, "%zu %u %u\n", i / 2 + 1, g.segments[i] + 1, g.segments[i + 1] + 1);
+  std::fprintf(f, "%zu\n", g.holes.size());
+  for (std::size_t i = 0; i < g.holes.size(); ++i)
+    std::fprintf(f, "%zu %.17g %.17g\n", i + 1, g.holes[i].x, g.holes[i].y);
+  return std::fclose(f) == 0;
+}
+
 bool parse(int argc, char** argv, Args& a) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
@@ -211,6 +229,8 @@ bool parse(int argc, char** argv, Args& a) {
       a.area = std::stod(v);
     else if (k == "--reps")
       a.reps = std::stoi(v);
+    else if (k == "--poly")
+      a.poly = v;
     else
       return false;
   }
@@ -224,12 +244,13 @@ int main(int argc, char** argv) {
   if (!parse(argc, argv, a)) {
     std::fprintf(stderr,
                  "usage: ridt_bench_constrained [--task cdt|quality] [--n N] [--lakes L] [--extra M] "
-                 "[--angle DEG] [--area A] [--reps R]\n");
+                 "[--angle DEG] [--area A] [--reps R] [--poly OUT.poly]\n");
     return 2;
   }
   ridt::Pslg g = ridt::generate_coastline(a.n, a.lakes, 1);
   for (const ridt::Point& p : ridt::generate(ridt::Distribution::Uniform, a.extra, 2))
     g.points.push_back({2.6 * p.x - 1.3, 2.6 * p.y - 1.3});
+  if (!a.poly.empty()) return write_poly(a.poly, g) ? 0 : 1;
   std::vector<std::pair<std::string, Code>> codes = {
       {"ridt, 1 thread", [](const ridt::Pslg& p, const Args& x) { return run_ridt(p, x, 1); }},
       {"ridt, all threads", [](const ridt::Pslg& p, const Args& x) { return run_ridt(p, x, 0); }}};
