@@ -114,6 +114,57 @@ inline std::string read_file_whole(const std::string& path) {
   return data;
 }
 
+/// A file's bytes: a regular file mapped into memory (the page cache's own pages, not copied
+/// into fresh ones), anything else (a pipe, a device) read whole; IoError as read_file_whole.
+class FileText {
+ public:
+  explicit FileText(const std::string& path) {
+    struct stat st {};
+    // A pipe is read, not mapped; asked before opening it, which would take the writer's end
+    // of a pipe from the reader that follows.
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+      errno = 0;
+      const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+      if (fd < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
+      if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+        bytes_ = static_cast<std::size_t>(st.st_size);
+        void* at = ::mmap(nullptr, bytes_, PROT_READ, MAP_PRIVATE, fd, 0);
+        map_ = at == MAP_FAILED ? nullptr : at;
+      }
+      ::close(fd);
+    }
+    if (map_ == nullptr) read_ = read_file_whole(path);
+  }
+  ~FileText() {
+    if (map_ != nullptr) ::munmap(map_, bytes_);
+  }
+  FileText(const FileText&) = delete;
+  FileText& operator=(const FileText&) = delete;
+
+  std::string_view view() const {
+    return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), bytes_) : std::string_view(read_);
+  }
+
+ private:
+  void* map_ = nullptr;
+  std::size_t bytes_ = 0;
+  std::string read_;
+};
+
+/// A line's content: without its comment ('#' to the end of the line) and the white space
+/// around.
+inline std::string_view content_of(std::string_view line) {
+  if (const void* hash = std::memchr(line.data(), '#', line.size()))
+    line = line.substr(0, static_cast<std::size_t>(static_cast<const char*>(hash) - line.data()));
+  return trim(line);
+}
+
+/// `text` without a UTF-8 byte order mark at its start.
+inline std::string_view without_bom(std::string_view text) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+  return text;
+}
+
 /// for_each_line's scan, with no byte order mark taken off; returns how many lines `text` has
 /// (a last one without a line end counted).
 template <class F>
@@ -125,11 +176,8 @@ inline std::size_t lines_of(std::string_view text, F&& f) {
     const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
     const char* line_end = nl ? nl : end;
     ++line_no;
-    std::string_view line(p, static_cast<std::size_t>(line_end - p));
+    const std::string_view line = content_of(std::string_view(p, static_cast<std::size_t>(line_end - p)));
     p = nl ? nl + 1 : end;
-    if (const void* hash = std::memchr(line.data(), '#', line.size()))
-      line = line.substr(0, static_cast<std::size_t>(static_cast<const char*>(hash) - line.data()));
-    line = trim(line);
     if (!line.empty()) f(line_no, line);
   }
   return line_no;
@@ -139,8 +187,7 @@ inline std::size_t lines_of(std::string_view text, F&& f) {
 /// comment ('#' to the end of the line) and surrounding white space. Line numbers count from 1.
 template <class F>
 inline void for_each_line(std::string_view text, F&& f) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
-  lines_of(text, f);
+  lines_of(without_bom(text), f);
 }
 
 /// Fields of a line, separated by white space, or (with allow_comma) by one comma with optional

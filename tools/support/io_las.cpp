@@ -2,8 +2,6 @@
 // (VLR, and the 1.4 extended ones) for the CRS, and the point records of formats 0 to 10, read
 // in place from a mapping of the file. Every offset is checked against the file's size before it
 // is read, so a truncated or inconsistent file is an IoError that says what is wrong.
-#include <sys/mman.h>
-
 #include "io_common.hpp"
 #include "terrain_io.hpp"
 
@@ -192,23 +190,8 @@ Terrain parse_las(std::string_view d, const std::string& name, const PointFilter
 }
 
 Terrain read_las(const std::string& path, const PointFilter& filter) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size == 0)
-    return parse_las(detail::read_file_whole(path), path, filter);  // a pipe, or for the message
-  errno = 0;
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw IoError("cannot read " + path + ": " + detail::errno_text(errno));
-  const auto bytes = static_cast<std::size_t>(st.st_size);
-  void* at = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE, fd, 0);
-  ::close(fd);
-  if (at == MAP_FAILED) return parse_las(detail::read_file_whole(path), path, filter);
-  ::madvise(at, bytes, MADV_SEQUENTIAL);
-  struct Unmap {
-    void* at;
-    std::size_t bytes;
-    ~Unmap() { ::munmap(at, bytes); }
-  } unmap{at, bytes};
-  return parse_las(std::string_view(static_cast<const char*>(at), bytes), path, filter);
+  const detail::FileText text(path);
+  return parse_las(text.view(), path, filter);
 }
 
 }  // namespace ridt::io

@@ -30,7 +30,7 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
   PointFile p;
   if (n == 0) {  // the vertices in the .node file beside it
     const std::string node = (fs::path(path).replace_extension(".node")).string();
-    p = read_node(node, read_file_whole(node), threads);
+    p = read_node(node, FileText(node).view(), threads);
   } else {  // the lines up to the last vertex's are a .node file's, line numbers and all
     need(path, lines, 1, n, "vertices");
     p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);

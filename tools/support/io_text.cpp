@@ -5,10 +5,9 @@
 namespace ridt::io::detail {
 
 PointFile read_text_points(const std::string& path, std::string_view text, unsigned threads) {
-  const std::vector<Line> lines = split_lines(text, threads);
+  const LinePieces lines(without_bom(text), threads);
   std::vector<Point> points(lines.size());
-  parse_in_ranges(0, lines.size(), threads, [&](std::size_t k) {
-    const auto [line_no, line] = lines[k];
+  lines.visit([&](std::size_t k, std::size_t line_no, std::string_view line) {
     Fields f{line, true};
     std::string_view a, b, extra;
     const bool two = f.next(a) && f.next(b) && !f.next(extra) && !f.bad;
@@ -31,10 +30,9 @@ PointFile read_text_points(const std::string& path, std::string_view text, unsig
 
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index,
                                           unsigned threads) {
-  const std::vector<Line> lines = split_lines(text, threads);
+  const LinePieces lines(without_bom(text), threads);
   std::vector<VertexId> out(3 * lines.size());
-  parse_in_ranges(0, lines.size(), threads, [&](std::size_t k) {
-    const auto [line_no, line] = lines[k];
+  lines.visit([&](std::size_t k, std::size_t line_no, std::string_view line) {
     Fields f{line, true};
     std::string_view a, b, c, extra;
     if (!(f.next(a) && f.next(b) && f.next(c) && !f.next(extra) && !f.bad)) {

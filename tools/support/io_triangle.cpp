@@ -87,66 +87,101 @@ EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_v
 
 }  // namespace
 
+namespace {
+
+// Point k of a .node file, on line `line_no`: its index must be first + k (the first, 0 or 1,
+// sets `first`).
+Point node_point(const std::string& path, const NodeHeader& h, std::size_t k, std::size_t line_no,
+                 std::string_view line, std::int64_t& first) {
+  Fields f{line, false};
+  std::string_view idx, xs, ys;
+  const auto count_error = [&] {
+    return "expected " + std::to_string(h.fields) + " fields \"" + h.layout + "\", got " + quoted(line);
+  };
+  if (!f.next(idx) || !f.next(xs) || !f.next(ys)) fail_line(path, line_no, count_error());
+  check_rest(f, 3, 3 + static_cast<std::size_t>(h.attrs), h.fields, path, line_no, count_error);
+  check_index(path, line_no, integer(path, line_no, idx, "point index"), k, first, "point");
+  return {coordinate(path, line_no, xs, [&] { return not_a_number(xs); }),
+          coordinate(path, line_no, ys, [&] { return not_a_number(ys); })};
+}
+
+// Triangle k of an .ele file, as node_point reads a point.
+void ele_triangle(const std::string& path, const EleHeader& h, std::size_t k, std::size_t line_no,
+                  std::string_view line, std::int64_t& first, int first_index, VertexId* out) {
+  Fields f{line, false};
+  std::string_view idx, a, b, c;
+  const auto count_error = [&] {
+    return "expected " + std::to_string(h.fields) + " fields \"index a b c" + (h.attrs > 0 ? " attributes" : "") +
+        "\", got " + quoted(line);
+  };
+  if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
+  check_rest(f, 4, h.fields, h.fields, path, line_no, count_error);
+  check_index(path, line_no, integer(path, line_no, idx, "triangle index"), k, first, "triangle");
+  out[0] = vertex(path, line_no, a, first_index);
+  out[1] = vertex(path, line_no, b, first_index);
+  out[2] = vertex(path, line_no, c, first_index);
+}
+
+// The records after a header (`rest`, `lines` its pieces, `before` the lines before it), each
+// read by read(k, line_no, line, first) on the pieces' threads: the first alone before the
+// others, as it sets `first`, the index the others follow.
+template <class Read>
+void read_records(const LinePieces& lines, std::string_view rest, std::size_t before, std::int64_t& first,
+                  Read&& read) {
+  if (const std::optional<Head> one = head_line(rest, false)) read(0, before + one->line.number, one->line.text, first);
+  lines.visit([&](std::size_t k, std::size_t line_no, std::string_view line) {
+    std::int64_t from = first;
+    read(k, line_no, line, from);
+  });
+}
+
+}  // namespace
+
 PointFile read_node_lines(const std::string& path, std::span<const Line> lines, unsigned threads) {
   if (lines.empty()) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
   const NodeHeader h = node_header(path, lines[0].number, lines[0].text);
   std::vector<Point> points(lines.size() - 1);
   std::int64_t first = 0;
-  // Line k + 1 is point k: its index must be first + k, so each line is read on its own, the
-  // first (which sets `first`) before the others.
-  auto read = [&](std::size_t k) {
-    const auto [line_no, line] = lines[k + 1];
-    Fields f{line, false};
-    std::string_view idx, xs, ys;
-    const auto count_error = [&] {
-      return "expected " + std::to_string(h.fields) + " fields \"" + h.layout + "\", got " + quoted(line);
-    };
-    if (!f.next(idx) || !f.next(xs) || !f.next(ys)) fail_line(path, line_no, count_error());
-    check_rest(f, 3, 3 + static_cast<std::size_t>(h.attrs), h.fields, path, line_no, count_error);
+  if (!points.empty()) points[0] = node_point(path, h, 0, lines[1].number, lines[1].text, first);
+  parse_in_ranges(1, points.size(), threads, [&](std::size_t k) {
     std::int64_t from = first;
-    check_index(path, line_no, integer(path, line_no, idx, "point index"), k, k == 0 ? first : from, "point");
-    const double x = coordinate(path, line_no, xs, [&] { return not_a_number(xs); });
-    const double y = coordinate(path, line_no, ys, [&] { return not_a_number(ys); });
-    points[k] = {x, y};
-  };
-  if (!points.empty()) read(0);
-  parse_in_ranges(1, points.size(), threads, read);
+    points[k] = node_point(path, h, k, lines[k + 1].number, lines[k + 1].text, from);
+  });
   if (points.size() != static_cast<std::size_t>(h.n))
     fail_file(path, "header says " + std::to_string(h.n) + " points but the file has " + std::to_string(points.size()));
   return PointFile(std::move(points), static_cast<int>(first));
 }
 
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads) {
-  return read_node_lines(path, split_lines(text, threads), threads);
+  const std::optional<Head> head = head_line(text);
+  if (!head) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
+  const NodeHeader h = node_header(path, head->line.number, head->line.text);
+  const LinePieces lines(head->rest, threads, head->line.number);
+  std::vector<Point> points(lines.size());
+  std::int64_t first = 0;
+  read_records(lines, head->rest, head->line.number, first,
+               [&](std::size_t k, std::size_t line_no, std::string_view line, std::int64_t& from) {
+                 points[k] = node_point(path, h, k, line_no, line, from);
+               });
+  if (points.size() != static_cast<std::size_t>(h.n))
+    fail_file(path, "header says " + std::to_string(h.n) + " points but the file has " + std::to_string(points.size()));
+  return PointFile(std::move(points), static_cast<int>(first));
 }
 
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads) {
-  const std::vector<Line> lines = split_lines(text, threads);
-  if (lines.empty()) fail_file(path, "no header line \"triangles 3 [attributes]\"");
-  const EleHeader h = ele_header(path, lines[0].number, lines[0].text);
-  std::vector<VertexId> out(3 * (lines.size() - 1));
+  const std::optional<Head> head = head_line(text);
+  if (!head) fail_file(path, "no header line \"triangles 3 [attributes]\"");
+  const EleHeader h = ele_header(path, head->line.number, head->line.text);
+  const LinePieces lines(head->rest, threads, head->line.number);
+  std::vector<VertexId> out(3 * lines.size());
   std::int64_t first = 0;
-  auto read = [&](std::size_t k) {  // line k + 1, triangle k (as read_node_lines reads a point)
-    const auto [line_no, line] = lines[k + 1];
-    Fields f{line, false};
-    std::string_view idx, a, b, c;
-    const auto count_error = [&] {
-      return "expected " + std::to_string(h.fields) + " fields \"index a b c" + (h.attrs > 0 ? " attributes" : "") +
-          "\", got " + quoted(line);
-    };
-    if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
-    check_rest(f, 4, h.fields, h.fields, path, line_no, count_error);
-    std::int64_t from = first;
-    check_index(path, line_no, integer(path, line_no, idx, "triangle index"), k, k == 0 ? first : from, "triangle");
-    out[3 * k] = vertex(path, line_no, a, first_index);
-    out[3 * k + 1] = vertex(path, line_no, b, first_index);
-    out[3 * k + 2] = vertex(path, line_no, c, first_index);
-  };
-  const std::size_t count = lines.size() - 1;
-  if (count > 0) read(0);
-  parse_in_ranges(1, count, threads, read);
-  if (count != static_cast<std::size_t>(h.n))
-    fail_file(path, "header says " + std::to_string(h.n) + " triangles but the file has " + std::to_string(count));
+  read_records(lines, head->rest, head->line.number, first,
+               [&](std::size_t k, std::size_t line_no, std::string_view line, std::int64_t& from) {
+                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k]);
+               });
+  if (lines.size() != static_cast<std::size_t>(h.n))
+    fail_file(path,
+              "header says " + std::to_string(h.n) + " triangles but the file has " + std::to_string(lines.size()));
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <exception>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -54,33 +55,76 @@ void on_pieces(std::size_t pieces, Run&& run) {
     if (e) std::rethrow_exception(e);
 }
 
-/// The lines of `text` that for_each_line visits, numbered as it numbers them: the text cut
-/// just after line ends into pieces of a megabyte or more, each piece scanned on one of up to
-/// `threads` threads, once to count its lines and once to place them.
-inline std::vector<Line> split_lines(std::string_view text, unsigned threads) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
-  const std::size_t pieces = std::clamp<std::size_t>(text.size() / kPieceBytes, 1, std::max(threads, 1u));
-  std::vector<std::size_t> cut(pieces + 1, text.size());  // piece k: [cut[k], cut[k + 1])
-  cut[0] = 0;
-  for (std::size_t k = 1; k < pieces; ++k) {
-    const std::size_t from = std::max(cut[k - 1], text.size() / pieces * k);
-    const void* nl = from < text.size() ? std::memchr(text.data() + from, '\n', text.size() - from) : nullptr;
-    cut[k] = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text.data()) + 1 : text.size();
+/// A text cut just after line ends into pieces of a megabyte or more, one for each of up to
+/// `threads` threads, and each piece's lines counted (on those threads): so each line's place
+/// among the lines for_each_line visits, and its number, are known before any is read.
+class LinePieces {
+ public:
+  /// `before`: how many lines come before `text` in its file (its first is line before + 1).
+  LinePieces(std::string_view text, unsigned threads, std::size_t before = 0) : text_(text) {
+    const std::size_t pieces = std::clamp<std::size_t>(text.size() / kPieceBytes, 1, std::max(threads, 1u));
+    cut_.assign(pieces + 1, text.size());  // piece k: [cut_[k], cut_[k + 1])
+    cut_[0] = 0;
+    for (std::size_t k = 1; k < pieces; ++k) {
+      const std::size_t from = std::max(cut_[k - 1], text.size() / pieces * k);
+      const void* nl = from < text.size() ? std::memchr(text.data() + from, '\n', text.size() - from) : nullptr;
+      cut_[k] = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - text.data()) + 1 : text.size();
+    }
+    numbered_.assign(pieces + 1, 0), at_.assign(pieces + 1, 0);  // before piece k: lines, and lines kept
+    on_pieces(pieces, [&](std::size_t k) {
+      std::size_t kept = 0;
+      numbered_[k + 1] = lines_of(piece(k), [&](std::size_t, std::string_view) { ++kept; });
+      at_[k + 1] = kept;
+    });
+    numbered_[0] = before;
+    for (std::size_t k = 0; k < pieces; ++k) numbered_[k + 1] += numbered_[k], at_[k + 1] += at_[k];
   }
-  // Each piece scanned twice: to count its lines, then to put them in their places.
-  std::vector<std::size_t> numbered(pieces + 1, 0), at(pieces + 1, 0);  // before piece k: lines, and lines kept
-  auto piece = [&](std::size_t k) { return text.substr(cut[k], cut[k + 1] - cut[k]); };
-  on_pieces(pieces, [&](std::size_t k) {
-    std::size_t kept = 0;
-    numbered[k + 1] = lines_of(piece(k), [&](std::size_t, std::string_view) { ++kept; });
-    at[k + 1] = kept;
-  });
-  for (std::size_t k = 0; k < pieces; ++k) numbered[k + 1] += numbered[k], at[k + 1] += at[k];
-  std::vector<Line> out(at[pieces]);
-  on_pieces(pieces, [&](std::size_t k) {
-    Line* to = out.data() + at[k];
-    lines_of(piece(k), [&](std::size_t number, std::string_view l) { *to++ = {numbered[k] + number, l}; });
-  });
+
+  /// The lines for_each_line visits.
+  std::size_t size() const { return at_.back(); }
+
+  /// visit(i, number, line) for each of them, i its place among them (from 0), each piece's
+  /// lines in order on a thread of its own; an exception ends its piece. Once all pieces have
+  /// ended, the exception of the first that threw is rethrown: where what visit checks
+  /// depends on i and the line alone, the one a single pass in order would meet first.
+  template <class Visit>
+  void visit(Visit&& visit) const {
+    on_pieces(cut_.size() - 1, [&](std::size_t k) {
+      std::size_t i = at_[k];
+      lines_of(piece(k), [&](std::size_t number, std::string_view line) { visit(i++, numbered_[k] + number, line); });
+    });
+  }
+
+ private:
+  std::string_view piece(std::size_t k) const { return text_.substr(cut_[k], cut_[k + 1] - cut_[k]); }
+
+  std::string_view text_;
+  std::vector<std::size_t> cut_, numbered_, at_;
+};
+
+/// The first line for_each_line visits in `text` (a byte order mark taken off where `file`, the
+/// text starting a file) and the text after it, or none.
+struct Head {
+  Line line;
+  std::string_view rest;
+};
+inline std::optional<Head> head_line(std::string_view text, bool file = true) {
+  if (file) text = without_bom(text);
+  for (std::size_t number = 1; !text.empty(); ++number) {
+    const std::size_t end = std::min(text.find('\n'), text.size());
+    const std::string_view line = content_of(text.substr(0, end));
+    text.remove_prefix(std::min(end + 1, text.size()));
+    if (!line.empty()) return Head{{number, line}, text};
+  }
+  return std::nullopt;
+}
+
+/// The lines of `text` that for_each_line visits, numbered as it numbers them, found on up to
+/// `threads` threads (LinePieces).
+inline std::vector<Line> split_lines(std::string_view text, unsigned threads) {
+  const LinePieces pieces(without_bom(text), threads);
+  std::vector<Line> out(pieces.size());
+  pieces.visit([&](std::size_t i, std::size_t number, std::string_view line) { out[i] = {number, line}; });
   return out;
 }
 
