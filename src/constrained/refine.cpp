@@ -104,7 +104,7 @@ class Refiner {
     offset_ = r.min_angle > 0 ? 0.475 / std::tan(r.min_angle * 3.14159265358979323846 / 360) : 0;
     box_ = extent_of(m.pts);
     tiny2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1}) * 0x1p-80;  // edges below 2^-40 of the diagonal stay
-    cells_ = 65535 / std::max(box_.x1 - box_.x0, box_.y1 - box_.y0);  // infinite for one point: clamped
+    cells_ = 65535 / std::max(box_.x1 - box_.x0, box_.y1 - box_.y0);  // infinite for one point: see curve()
     ends_.assign(m.pts.size(), {Cdt::kNone, Cdt::kNone});
   }
 
@@ -349,10 +349,12 @@ class Refiner {
 
   Cdt& m_;
   const Refinement& r_;
-  // Where p lies along the Hilbert curve over the points' box (a point added lies in it).
+  // Where p lies along the Hilbert curve over the points' box (a point added lies in it); a
+  // box too wide or too thin for the scale (an infinite or NaN cell) puts p at an end.
   std::uint32_t curve(const Point& p) const {
     auto cell = [&](double v, double from) {
-      return static_cast<std::uint32_t>(std::clamp((v - from) * cells_, 0.0, 65535.0));
+      const double c = (v - from) * cells_;
+      return c >= 0 ? (c < 65535 ? static_cast<std::uint32_t>(c) : 65535u) : 0u;
     };
     return hilbert_key(cell(p.x, box_.x0), cell(p.y, box_.y0));
   }

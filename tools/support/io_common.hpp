@@ -130,6 +130,7 @@ class FileText {
         bytes_ = static_cast<std::size_t>(st.st_size);
         void* at = ::mmap(nullptr, bytes_, PROT_READ, MAP_PRIVATE, fd, 0);
         map_ = at == MAP_FAILED ? nullptr : at;
+        if (map_ != nullptr) ::madvise(map_, bytes_, MADV_SEQUENTIAL);  // read ahead from a disk
       }
       ::close(fd);
     }

@@ -45,7 +45,7 @@ void on_pieces(std::size_t pieces, Run&& run) {
   for (std::size_t k = 1; k < pieces; ++k) {
     try {
       workers.emplace_back(guarded, k);
-    } catch (const std::system_error&) {
+    } catch (...) {  // no thread (std::system_error), or no memory for one
       guarded(k);
     }
   }
