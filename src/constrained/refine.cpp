@@ -50,7 +50,7 @@ class Buckets {
   }
   Item pop() {
     while (lists_[lowest_].empty()) ++lowest_;
-    if (lowest_ != current_ && lists_[lowest_].size() > ordered_[lowest_] + 64) along_curve(lists_[lowest_]);
+    if (lowest_ != current_ && lists_[lowest_].size() > ordered_[lowest_] + 64) along_curve(lowest_);
     current_ = lowest_;
     std::vector<Item>& l = lists_[lowest_];
     const Item item = l.back();
@@ -77,8 +77,9 @@ class Buckets {
     return static_cast<std::size_t>(key < 0 ? kSpan - 1 - q : kSpan + q);
   }
 
-  // The items sorted by the first bits of `where` (a counting sort: stable, linear).
-  void along_curve(std::vector<Item>& l) {
+  // Bucket b's items sorted by the first bits of `where` (a counting sort: stable, linear).
+  void along_curve(std::size_t b) {
+    std::vector<Item>& l = lists_[b];
     constexpr int kBits = 10;
     std::vector<std::uint32_t> at((1u << kBits) + 1, 0);
     for (const Item& i : l) ++at[(i.where >> (32 - kBits)) + 1];
@@ -86,7 +87,7 @@ class Buckets {
     std::vector<Item> sorted(l.size());
     for (const Item& i : l) sorted[at[i.where >> (32 - kBits)]++] = i;
     l.swap(sorted);
-    ordered_[lowest_] = l.size();
+    ordered_[b] = l.size();
   }
 
   std::vector<std::vector<Item>> lists_;

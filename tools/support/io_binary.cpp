@@ -53,30 +53,13 @@ PointFile read_bin_points(const std::string& path, std::string_view data, unsign
 std::optional<PointFile> map_bin_points(const std::string& path) {
   if constexpr (std::endian::native != std::endian::little) return std::nullopt;
   static_assert(sizeof(Point) == 16 && alignof(Point) <= 16);
-  struct File {
-    int fd;
-    ~File() {
-      if (fd >= 0) ::close(fd);
-    }
-  };
-  // A pipe or a device is read, not mapped; asked before opening it, which would take the
-  // writer's end of a pipe from the reader that follows.
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
-  errno = 0;
-  const File file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (file.fd < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
-  if (::fstat(file.fd, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
-  const auto bytes = static_cast<std::size_t>(st.st_size);
-  check_bin_size(path, bytes);
-  if (bytes == 0) return PointFile();
-  // The page cache's own pages, shared, never copied; brought in by the check on threads.
-  void* at = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE, file.fd, 0);
-  if (at == MAP_FAILED) return std::nullopt;
-  std::shared_ptr<const void> owner(at, [bytes](const void* p) { ::munmap(const_cast<void*>(p), bytes); });
-  const std::span<const Point> points(static_cast<const Point*>(at), bytes / 16);
+  std::optional<Mapping> m = map_file(path);
+  if (!m) return std::nullopt;
+  check_bin_size(path, m->bytes.size());
+  // Used where they lie; brought in by the check on threads.
+  const std::span<const Point> points(reinterpret_cast<const Point*>(m->bytes.data()), m->bytes.size() / 16);
   check_finite(path, points);
-  return PointFile(std::move(owner), points);
+  return PointFile(std::move(m->owner), points);
 }
 
 std::vector<VertexId> read_bin_triangles(const std::string& path, std::string_view data) {

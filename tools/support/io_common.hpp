@@ -114,41 +114,52 @@ inline std::string read_file_whole(const std::string& path) {
   return data;
 }
 
-/// A file's bytes: a regular file mapped into memory (the page cache's own pages, not copied
-/// into fresh ones), anything else (a pipe, a device) read whole; IoError as read_file_whole.
+/// A regular file's bytes mapped into memory: the page cache's own pages, shared, never
+/// copied, kept while `owner` lives.
+struct Mapping {
+  std::shared_ptr<const void> owner;
+  std::string_view bytes;
+};
+
+/// `path` mapped, or none where it is not a regular file with some bytes (a pipe, a device) or
+/// cannot be mapped: then it is to be read. IoError where it cannot be opened.
+inline std::optional<Mapping> map_file(const std::string& path) {
+  // Asked before opening it, which would take the writer's end of a pipe from the reader that
+  // follows.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size == 0) return std::nullopt;
+  errno = 0;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
+  void* at = MAP_FAILED;
+  std::size_t bytes = 0;
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    bytes = static_cast<std::size_t>(st.st_size);
+    at = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE, fd, 0);
+  }
+  ::close(fd);
+  if (at == MAP_FAILED) return std::nullopt;
+  return Mapping{std::shared_ptr<const void>(at, [bytes](const void* p) { ::munmap(const_cast<void*>(p), bytes); }),
+                 std::string_view(static_cast<const char*>(at), bytes)};
+}
+
+/// A file's bytes: mapped where it is a regular file (map_file), else read whole; IoError as
+/// read_file_whole.
 class FileText {
  public:
   explicit FileText(const std::string& path) {
-    struct stat st {};
-    // A pipe is read, not mapped; asked before opening it, which would take the writer's end
-    // of a pipe from the reader that follows.
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-      errno = 0;
-      const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-      if (fd < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
-      if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-        bytes_ = static_cast<std::size_t>(st.st_size);
-        void* at = ::mmap(nullptr, bytes_, PROT_READ, MAP_PRIVATE, fd, 0);
-        map_ = at == MAP_FAILED ? nullptr : at;
-        if (map_ != nullptr) ::madvise(map_, bytes_, MADV_SEQUENTIAL);  // read ahead from a disk
-      }
-      ::close(fd);
+    if (std::optional<Mapping> m = map_file(path)) {
+      map_ = std::move(*m);
+      ::madvise(const_cast<char*>(map_.bytes.data()), map_.bytes.size(), MADV_SEQUENTIAL);  // read ahead from a disk
+    } else {
+      read_ = read_file_whole(path);
     }
-    if (map_ == nullptr) read_ = read_file_whole(path);
   }
-  ~FileText() {
-    if (map_ != nullptr) ::munmap(map_, bytes_);
-  }
-  FileText(const FileText&) = delete;
-  FileText& operator=(const FileText&) = delete;
 
-  std::string_view view() const {
-    return map_ != nullptr ? std::string_view(static_cast<const char*>(map_), bytes_) : std::string_view(read_);
-  }
+  std::string_view view() const { return map_.owner ? map_.bytes : std::string_view(read_); }
 
  private:
-  void* map_ = nullptr;
-  std::size_t bytes_ = 0;
+  Mapping map_;
   std::string read_;
 };
 

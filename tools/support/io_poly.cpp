@@ -132,8 +132,8 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
 }
 
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index) {
-  const std::string text = detail::read_file_whole(path);
-  const std::vector<detail::Line> lines = detail::split_lines(text, 1);
+  const detail::FileText text(path);
+  const std::vector<detail::Line> lines = detail::split_lines(text.view(), 1);
   Pslg g;
   g.points.resize(points);
   g.first_index = first_index;

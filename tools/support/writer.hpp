@@ -256,18 +256,14 @@ class Writer {
   }
 
   void write_through(const char* p, std::size_t n) {
-    while (n > 0) {
-      const ssize_t k = ::write(fd_, p, n);
-      if (k < 0 && errno == EINTR) continue;
-      if (k <= 0) fail(k < 0 ? errno : ENOSPC);
-      p += k;
-      n -= static_cast<std::size_t>(k);
-    }
+    put_at(end_, std::string_view(p, n));
+    end_ += n;
   }
 
   std::string path_;
   std::string tmp_;
   int fd_ = -1;
+  std::uint64_t end_ = 0;  // what put() has written out
   std::unique_ptr<char[]> buf_{new char[kCapacity]};
   std::size_t pos_ = 0;
   bool committed_ = false;
