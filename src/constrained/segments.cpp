@@ -13,8 +13,6 @@
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "predicates/predicates.hpp"
 
@@ -32,6 +30,8 @@ class Inserter {
       const Step s = step(a, b);
       if (s.along != Cdt::kNone) {
         m_.set_fixed(s.triangle, s.slot, true);
+        // The next walk (or the next segment of a chain) starts from this triangle, at hand.
+        m_.corner[s.along] = 3 * s.triangle + static_cast<std::uint32_t>(m_.corner_of(s.triangle, s.along));
         a = s.along;
         continue;
       }
@@ -55,13 +55,19 @@ class Inserter {
   }
 
   Step step(VertexId a, VertexId b) const {
-    const auto& p = m_.pts;
     Step s;
+    // Most segments are edges already: found by the vertices alone, with no predicate.
+    if (m_.around(a, [&](std::uint32_t t) {
+          const int i = m_.corner_of(t, a);
+          if (m_.at(t, i + 1) == b) return s = {b, t, (i + 2) % 3}, true;
+          if (m_.at(t, i + 2) == b) return s = {b, t, (i + 1) % 3}, true;
+          return false;
+        }))
+      return s;
+    const auto& p = m_.pts;
     const bool found = m_.around(a, [&](std::uint32_t t) {
       const int i = m_.corner_of(t, a);
       const VertexId u = m_.at(t, i + 1), w = m_.at(t, i + 2);
-      if (u == b) return s = {u, t, (i + 2) % 3}, true;
-      if (w == b) return s = {w, t, (i + 1) % 3}, true;
       const int ou = orient2d(p[a], p[b], p[u]), ow = orient2d(p[a], p[b], p[w]);
       if (ou == 0 && key(a, b, u) > key(a, b, a) && key(a, b, u) <= key(a, b, b)) return s = {u, t, (i + 2) % 3}, true;
       if (ow == 0 && key(a, b, w) > key(a, b, a) && key(a, b, w) <= key(a, b, b)) return s = {w, t, (i + 1) % 3}, true;
@@ -121,28 +127,29 @@ class Inserter {
   }
 
   // The triangles the segment crosses from a (leaving through triangle t) up to the next
-  // vertex v on it, replaced; returns v.
+  // vertex v on it, replaced; returns v. (removed_, right_ and left_ are this call's: where it
+  // meets a fixed edge, the inserts that follow use them again, and it returns what they return.)
   VertexId cross(VertexId a, VertexId b, std::uint32_t t) {
     const auto& p = m_.pts;
-    std::vector<std::uint32_t> removed{t};
+    removed_.assign({t});
     const int i = m_.corner_of(t, a);
     VertexId u = m_.at(t, i + 1), w = m_.at(t, i + 2);  // u right, w left
-    std::vector<VertexId> right{a, u}, left{a, w};
+    right_.assign({a, u}), left_.assign({a, w});
     for (std::uint32_t cur = t;;) {
       const int k = opposite(cur, u, w);
       if (m_.fixed[3 * cur + k]) return split_crossing(a, b, cur, k);
       const auto next = static_cast<std::uint32_t>(m_.nbrs[3 * cur + k]);
-      removed.push_back(next);
+      removed_.push_back(next);
       const VertexId x = m_.at(next, opposite(next, u, w));
       const int o = orient2d(p[a], p[b], p[x]);
       if (o == 0) {
-        right.push_back(x), left.push_back(x);
-        replace(removed, right, left);
+        right_.push_back(x), left_.push_back(x);
+        replace();
         const std::uint32_t e = m_.find_edge(a, x);
         m_.set_fixed(e / 3, static_cast<int>(e % 3), true);
         return x;
       }
-      (o < 0 ? right : left).push_back(x);
+      (o < 0 ? right_ : left_).push_back(x);
       (o < 0 ? u : w) = x;
       cur = next;
     }
@@ -174,58 +181,83 @@ class Inserter {
     int back;
     std::uint8_t fixed;
   };
+  using Keyed = std::pair<std::uint64_t, Outer>;
 
-  // Triangles `removed` replaced by the triangulations of the polygons right and left of the
-  // segment's piece, in the same slots; the links inside and to the outside set anew.
-  void replace(const std::vector<std::uint32_t>& removed, const std::vector<VertexId>& right,
-               const std::vector<VertexId>& left) {
-    std::unordered_map<std::uint64_t, Outer> outer;  // each directed boundary edge, as its outer triangle runs it
-    const std::unordered_set<std::uint32_t> gone(removed.begin(), removed.end());
-    for (const std::uint32_t t : removed)
+  // Triangles removed_ replaced by the triangulations of the polygons right_ and left_ of the
+  // segment's piece, in the same slots; the links inside and to the outside set anew. Edges
+  // are looked up in sorted lists: a piece crosses a few triangles, or very many.
+  void replace() {
+    gone_.assign(removed_.begin(), removed_.end());
+    std::sort(gone_.begin(), gone_.end());
+    outer_.clear();  // each directed boundary edge, as its outer triangle runs it
+    for (const std::uint32_t t : removed_)
       for (int k = 0; k < 3; ++k) {
         const std::int32_t n = m_.nbrs[3 * t + k];
-        if (n >= 0 && gone.count(static_cast<std::uint32_t>(n))) continue;
+        if (n >= 0 && std::binary_search(gone_.begin(), gone_.end(), static_cast<std::uint32_t>(n))) continue;
         const int back = n >= 0 ? m_.back(static_cast<std::uint32_t>(n), t) : -1;
-        outer[directed(m_.at(t, k + 1), m_.at(t, k + 2))] = {n, back, m_.fixed[3 * t + k]};
+        outer_.push_back({directed(m_.at(t, k + 1), m_.at(t, k + 2)), {n, back, m_.fixed[3 * t + k]}});
       }
-    std::vector<VertexId> made;
-    fill(right, 0, right.size() - 1, false, made);
-    fill(left, 0, left.size() - 1, true, made);
-    if (made.size() != 3 * removed.size())
+    std::sort(outer_.begin(), outer_.end(), [](const Keyed& x, const Keyed& y) { return x.first < y.first; });
+    made_.clear();
+    fill(right_, 0, right_.size() - 1, false, made_);
+    fill(left_, 0, left_.size() - 1, true, made_);
+    if (made_.size() != 3 * removed_.size())
       throw std::logic_error("ridt: a segment's polygons do not fill its triangles");
-    std::unordered_map<std::uint64_t, std::uint32_t> inner;  // (x, y) of a new triangle
-    for (std::size_t k = 0; k < removed.size(); ++k) {
-      const std::uint32_t t = removed[k];
+    inner_.clear();  // (x, y) of a new triangle
+    for (std::size_t k = 0; k < removed_.size(); ++k) {
+      const std::uint32_t t = removed_[k];
       for (int j = 0; j < 3; ++j) {
-        m_.tris[3 * t + j] = made[3 * k + j];
-        m_.corner[made[3 * k + j]] = 3 * t + j;
+        m_.tris[3 * t + j] = made_[3 * k + j];
+        m_.corner[made_[3 * k + j]] = 3 * t + j;
       }
-      for (int j = 0; j < 3; ++j) inner[directed(m_.at(t, j + 1), m_.at(t, j + 2))] = t;
+      for (int j = 0; j < 3; ++j) inner_.push_back({directed(m_.at(t, j + 1), m_.at(t, j + 2)), t});
     }
-    for (const std::uint32_t t : removed)
+    std::sort(inner_.begin(), inner_.end());
+    for (const std::uint32_t t : removed_)
       for (int j = 0; j < 3; ++j) {
         const VertexId x = m_.at(t, j + 1), y = m_.at(t, j + 2);
-        if (const auto in = inner.find(directed(y, x)); in != inner.end()) {
+        const auto in = std::lower_bound(inner_.begin(), inner_.end(), std::pair{directed(y, x), std::uint32_t{0}});
+        if (in != inner_.end() && in->first == directed(y, x)) {
           m_.nbrs[3 * t + j] = static_cast<std::int32_t>(in->second);
           m_.fixed[3 * t + j] = 0;
-        } else {
-          const Outer& o = outer.at(directed(x, y));
-          m_.nbrs[3 * t + j] = o.n;
-          m_.fixed[3 * t + j] = o.fixed;
-          if (o.n >= 0) m_.nbrs[3 * o.n + o.back] = static_cast<std::int32_t>(t);
+          continue;
         }
+        const auto out = std::lower_bound(outer_.begin(), outer_.end(), directed(x, y),
+                                          [](const Keyed& e, std::uint64_t key) { return e.first < key; });
+        if (out == outer_.end() || out->first != directed(x, y))
+          throw std::logic_error("ridt: a segment's new triangle has an edge that was not there");
+        const Outer& o = out->second;
+        m_.nbrs[3 * t + j] = o.n;
+        m_.fixed[3 * t + j] = o.fixed;
+        if (o.n >= 0) m_.nbrs[3 * o.n + o.back] = static_cast<std::int32_t>(t);
       }
   }
 
   Cdt& m_;
+  // Scratch, kept between segments.
+  std::vector<std::uint32_t> removed_, gone_;
+  std::vector<VertexId> right_, left_, made_;
+  std::vector<Keyed> outer_;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> inner_;
 };
 
 }  // namespace
 
 void insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept) {
   Inserter inserter(m);
-  for (std::size_t s = 0; s + 1 < segments.size(); s += 2)
-    if (kept[segments[s]] != kept[segments[s + 1]]) inserter.insert(kept[segments[s]], kept[segments[s + 1]]);
+  // A segment's walk begins at the triangles about its first vertex, which lie wherever the
+  // Delaunay triangulation put them: those of the segment some way on are asked for ahead.
+  constexpr std::size_t kAhead = 8;
+  const std::size_t count = segments.size() / 2;
+  for (std::size_t s = 0; s < count; ++s) {
+    if (s + kAhead < count)
+      if (const std::uint32_t c = m.corner[kept[segments[2 * (s + kAhead)]]]; c != Cdt::kNone) {
+        __builtin_prefetch(&m.tris[c - c % 3]);
+        __builtin_prefetch(&m.nbrs[c - c % 3]);
+      }
+    const VertexId a = kept[segments[2 * s]], b = kept[segments[2 * s + 1]];
+    if (a != b) inserter.insert(a, b);
+  }
 }
 
 }  // namespace ridt::detail
