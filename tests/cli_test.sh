@@ -345,6 +345,8 @@ expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.el
 stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
 expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pS
 stderr_has "'S'"; absent "$dir/q3.ele"
+expect 2 "mesh YY refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq30YY
+stderr_has "'YY'"; absent "$dir/q3.ele"
 expect 0 "mesh conforming" -- "$ridt" mesh "$dir/l.poly" -o "$dir/d.ele" --switches pcD
 expect 0 "the conforming mesh is Delaunay" -- "$ridt" check "$dir/d.node" "$dir/d.ele"
 expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30

@@ -74,7 +74,9 @@ struct Quality {
 /// point; a segment whose ends coincide is left out; a segment given twice, or two that
 /// overlap, make one chain of edges. `domain` says which triangles to keep, `quality` how to
 /// refine them: from the Delaunay triangulation in canonical order, so that the mesh is the
-/// same whatever `options.method` and `options.threads`. Throws InputError for an index out of
+/// same whatever `options.method` and `options.threads`. `options.canonical_order` and
+/// `on_sorted` apply to the result's triangles, `neighbors` off leaves its neighbours empty
+/// (they are made all the same: the work needs them). Throws InputError for an index out of
 /// range, an odd list, a seed's coordinate that is not finite, or a quality bound out of range.
 ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
                                                  const Options& options = {}, const Domain& domain = {},

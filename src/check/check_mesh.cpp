@@ -50,30 +50,90 @@ std::vector<std::vector<VertexId>> adjacency(std::size_t n, std::span<const Vert
   return adj;
 }
 
+// A piece of input segment `segment` from u to w that no segment edge joins: it must lie
+// outside the mesh (in a hole or the exterior).
+struct Gap {
+  VertexId u, w;
+  std::size_t segment;
+};
+
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh:
 // the vertices near it with a segment edge, in their order along it, each joined to the next
-// by a segment edge or, across a gap, both on the boundary (or in no triangle).
+// by a segment edge or, across a gap (kept in `gaps`, for check_gaps), both on the boundary
+// (or in no triangle).
 template <class Near>
 bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
-                 const std::vector<std::uint8_t>& on_boundary, Near near) {
+                 const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
   std::vector<std::pair<double, VertexId>> along;
   const double dx = pts[b].x - pts[a].x, dy = pts[b].y - pts[a].y;
   for (VertexId v = 0; v < pts.size(); ++v)
     if (v == a || v == b || (!adj[v].empty() && near(v)))
       along.push_back({(pts[v].x - pts[a].x) * dx + (pts[v].y - pts[a].y) * dy, v});
   std::sort(along.begin(), along.end());
+  if (along.empty() || along.front().second != a || along.back().second != b) return false;
   for (std::size_t i = 0; i + 1 < along.size(); ++i) {
     const VertexId u = along[i].second, w = along[i + 1].second;
-    const bool joined = std::find(adj[u].begin(), adj[u].end(), w) != adj[u].end();
-    if (!joined && !(on_boundary[u] && on_boundary[w])) return false;  // (unused vertices count as on it)
+    if (std::find(adj[u].begin(), adj[u].end(), w) != adj[u].end()) continue;
+    if (!(on_boundary[u] && on_boundary[w])) return false;  // (unused vertices count as on it)
+    gaps.push_back({u, w, segment});
   }
-  return !along.empty() && along.front().second == a && along.back().second == b;
+  return true;
+}
+
+// Whether the open segment u-w passes through the inside of triangle a-b-c (counter-
+// clockwise): no line of an edge of either separates them (for two convex sets in the plane,
+// one of those lines does where they are apart).
+bool passes_inside(const Point& u, const Point& w, const Point& a, const Point& b, const Point& c) {
+  const Point* t[3] = {&a, &b, &c};
+  for (int i = 0; i < 3; ++i)
+    if (orient2d(*t[i], *t[(i + 1) % 3], u) <= 0 && orient2d(*t[i], *t[(i + 1) % 3], w) <= 0) return false;
+  const int oa = orient2d(u, w, a), ob = orient2d(u, w, b), oc = orient2d(u, w, c);
+  return !((oa >= 0 && ob >= 0 && oc >= 0) || (oa <= 0 && ob <= 0 && oc <= 0));
+}
+
+// Whether p lies on the open segment u-w.
+bool strictly_on(const Point& u, const Point& w, const Point& p) {
+  if (orient2d(u, w, p) != 0) return false;
+  const bool by_x = u.x != w.x;
+  const double lo = by_x ? std::min(u.x, w.x) : std::min(u.y, w.y), hi = by_x ? std::max(u.x, w.x) : std::max(u.y, w.y);
+  const double at = by_x ? p.x : p.y;
+  return at > lo && at < hi;
+}
+
+// Each gap lies outside the mesh: it passes through no triangle and no vertex. The triangles
+// sorted by their least x, each gap tested against those whose x range can meet its own.
+void check_gaps(std::span<const Point> pts, std::span<const VertexId> tris, const std::vector<Gap>& gaps,
+                const MeshSpec& spec, Report& report) {
+  if (gaps.empty()) return;
+  const std::size_t nt = tris.size() / 3;
+  std::vector<std::pair<double, std::uint32_t>> by_x(nt);
+  double widest = 0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Point &a = pts[tris[3 * t]], &b = pts[tris[3 * t + 1]], &c = pts[tris[3 * t + 2]];
+    by_x[t] = {std::min({a.x, b.x, c.x}), static_cast<std::uint32_t>(t)};
+    widest = std::max(widest, std::max({a.x, b.x, c.x}) - by_x[t].first);
+  }
+  std::sort(by_x.begin(), by_x.end());
+  for (const Gap& g : gaps) {
+    const Point &u = pts[g.u], &w = pts[g.w];
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{std::min(u.x, w.x) - widest, std::uint32_t{0}});
+    for (; it != by_x.end() && it->first <= std::max(u.x, w.x); ++it) {
+      const VertexId* v = &tris[3 * std::size_t{it->second}];
+      const bool through = passes_inside(u, w, pts[v[0]], pts[v[1]], pts[v[2]]) || strictly_on(u, w, pts[v[0]]) ||
+          strictly_on(u, w, pts[v[1]]) || strictly_on(u, w, pts[v[2]]);
+      if (!through) continue;
+      report.problem("segment ", g.segment, " (", spec.segments[2 * g.segment], "-", spec.segments[2 * g.segment + 1],
+                     ") runs through triangle ", it->second, " between points ", g.u, " and ", g.w,
+                     " with no segment edge");
+      break;
+    }
+  }
 }
 
 // Each input segment a-b a chain of segment edges: a search from a through added points near
 // the segment (within its box, grown by 10^-6 of its length) and input points exactly on it.
-void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::vector<std::uint8_t>& used,
-                  const std::vector<std::uint8_t>& on_boundary, Report& report) {
+void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
+                  const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report) {
   const auto adj = adjacency(pts.size(), spec.edges);
   const std::size_t input = spec.input_points == 0 ? pts.size() : spec.input_points;
   std::unordered_map<std::uint64_t, VertexId> vertex_at;  // an unused duplicate stands for the used one
@@ -85,6 +145,7 @@ void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::v
     return used[v] || it == vertex_at.end() || !(pts[it->second] == pts[v]) ? v : it->second;
   };
   std::vector<std::uint32_t> seen(pts.size(), 0);
+  std::vector<Gap> gaps;
   for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) {
     if (spec.segments[s] >= input || spec.segments[s + 1] >= input) {
       report.problem("segment ", s / 2, " refers to a point that is not one of the input's ", input);
@@ -116,10 +177,11 @@ void check_chains(std::span<const Point> pts, const MeshSpec& spec, const std::v
       for (const VertexId w : adj[v])
         if (seen[w] != stamp && near(w)) seen[w] = stamp, todo.push_back(w);
     }
-    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, on_boundary, near))
+    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, on_boundary, near, s / 2, gaps))
       report.problem("segment ", s / 2, " (", spec.segments[s], "-", spec.segments[s + 1],
                      ") is not a chain of segment edges");
   }
+  check_gaps(pts, tris, gaps, spec, report);
 }
 
 // No hole's seed inside or on any triangle: the seeds sorted by x, each triangle tested
@@ -255,7 +317,7 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
   std::vector<std::uint8_t> on_boundary(pts.size(), 0);
   for (const Edge& e : boundary) on_boundary[e.first] = on_boundary[e.second] = 1;
   for (VertexId v = 0; v < pts.size(); ++v) on_boundary[v] |= !used[v];
-  check_chains(pts, spec, used, on_boundary, report);
+  check_chains(pts, tris, spec, used, on_boundary, report);
   std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
   if (const int k = detail::exact_scale_exponent(input); k != 0 && !scaled.empty())
     for (Point& h : holes) h = {std::ldexp(h.x, k), std::ldexp(h.y, k)};

@@ -67,7 +67,7 @@ std::vector<VertexId> fixed_edges(const detail::Cdt& m) {
 }
 
 // Triangles put in canonical order, their attributes following them.
-void canonical(ConstrainedTriangulation& out, unsigned threads) {
+void canonical(ConstrainedTriangulation& out, const Options& options) {
   auto key = [&](std::size_t t) {
     VertexId v[3] = {out.triangles[3 * t], out.triangles[3 * t + 1], out.triangles[3 * t + 2]};
     std::rotate(v, std::min_element(v, v + 3), v + 3);
@@ -76,7 +76,7 @@ void canonical(ConstrainedTriangulation& out, unsigned threads) {
   std::unordered_map<std::uint64_t, std::vector<std::pair<VertexId, double>>> attribute;
   for (std::size_t t = 0; t < out.attributes.size(); ++t)
     attribute[key(t).first].push_back({key(t).second, out.attributes[t]});
-  detail::canonicalize(out, threads);
+  detail::canonicalize(out, options.threads, true, options.on_sorted);
   for (std::size_t t = 0; t < out.attributes.size(); ++t)
     for (const auto& [third, value] : attribute.at(key(t).first))
       if (third == key(t).second) out.attributes[t] = value;
@@ -107,8 +107,13 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   // Refinement's points depend on the order it meets the triangles in: from the canonical
   // order, the same mesh whatever method and threads made the Delaunay triangulation. The
   // constrained triangulation alone is unique whatever the order.
+  // The walks and flips need the neighbours, and the Delaunay triangles are not the result: the
+  // caller's on_sorted sees the constrained ones (canonical), its neighbours choice is kept at
+  // the end.
   Options plain = options;
   plain.canonical_order = refined;
+  plain.neighbors = true;
+  plain.on_sorted = {};
   ConstrainedTriangulation out;
   static_cast<Triangulation&>(out) = triangulate(points, plain);
   if (out.size() == 0) return out;
@@ -140,7 +145,8 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
     if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
   }
   collect(m, out, domain, points.size(), scale, carved || refined);
-  if (options.canonical_order) canonical(out, options.threads);
+  if (options.canonical_order) canonical(out, options);
+  if (!options.neighbors) out.neighbors = {};
   return out;
 }
 

@@ -210,19 +210,18 @@ class Refiner {
   // corners 0, 1, 2).
   static int shortest(const double (&l)[3]) { return l[0] <= l[1] && l[0] <= l[2] ? 0 : l[1] <= l[2] ? 1 : 2; }
 
-  // u and w lie on two chains that meet at a corner z, at one distance from it: the triangle's
-  // small angle is the input's, and splitting it would only cut the shells finer.
-  bool at_small_input_angle(VertexId u, VertexId w) const {
-    if (corner(u) || corner(w) || ends_[u].first == Cdt::kNone || ends_[w].first == Cdt::kNone) return false;
+  // Triangle z-u-w, u and w on two chains that meet at z below 60 degrees, at one distance
+  // from it: its small angle is the input's, and splitting it would only cut the shells finer.
+  // (A triangle between two shells whose third vertex is not z is split as any other.)
+  bool at_small_input_angle(VertexId u, VertexId w, VertexId z) const {
+    if (corner(u) || corner(w) || !corner(z) || !small_[z] || ends_[u].first == Cdt::kNone ||
+        ends_[w].first == Cdt::kNone)
+      return false;
+    auto from_z = [&](VertexId v) { return ends_[v].first == z || ends_[v].second == z; };
     const auto [u1, u2] = ends_[u];
-    const auto [w1, w2] = ends_[w];
-    if ((u1 == w1 && u2 == w2) || (u1 == w2 && u2 == w1)) return false;
-    for (const VertexId z : {u1, u2})
-      if (z == w1 || z == w2) {
-        const double du = dist2(m_.pts[z], m_.pts[u]), dw = dist2(m_.pts[z], m_.pts[w]);
-        if (std::fabs(du - dw) <= 1e-6 * std::max(du, dw)) return true;
-      }
-    return false;
+    if (!from_z(u) || !from_z(w) || ends_[w] == std::pair{u1, u2} || ends_[w] == std::pair{u2, u1}) return false;
+    const double du = dist2(m_.pts[z], m_.pts[u]), dw = dist2(m_.pts[z], m_.pts[w]);
+    return std::fabs(du - dw) <= 1e-6 * std::max(du, dw);
   }
 
   double area_bound(std::uint32_t t) const {
@@ -247,7 +246,7 @@ class Refiner {
       const double l[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};  // across from corner 0, 1, 2
       const int s = shortest(l);
       const double sine2 = twice * twice / (l[(s + 1) % 3] * l[(s + 2) % 3]);
-      if (l[s] >= tiny2_ && sine2 < sin2_ && !at_small_input_angle(v[(s + 1) % 3], v[(s + 2) % 3])) return l[s];
+      if (l[s] >= tiny2_ && sine2 < sin2_ && !at_small_input_angle(v[(s + 1) % 3], v[(s + 2) % 3], v[s])) return l[s];
     }
     if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) return -twice / (2 * bound);
     return kGood;
@@ -310,6 +309,8 @@ class Refiner {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     const Cdt::Place at = m_.locate(b.t, p, true);
     if (at.kind == Cdt::Place::Corner) return;
+    // On a subsegment that may not be split (the boundary's, asked to keep no new points)
+    if (at.kind == Cdt::Place::Edge && m_.fixed[3 * at.t + at.k] && !splittable(3 * at.t + at.k)) return;
     const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
     if (blocked) hit_.assign(1, 3 * at.t + at.k);
     std::vector<std::uint32_t>& hit = blocked ? hit_ : would_encroach(p, at);
@@ -317,7 +318,7 @@ class Refiner {
     for (const std::uint32_t s : hit)
       if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
     if (blocked || !hit.empty()) {
-      if (hit.empty() || b.tries >= 8) return;
+      if (hit.empty() || b.tries >= 64) return;
       for (const std::uint32_t s : hit) queue_split(s, true);
       bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
       return;

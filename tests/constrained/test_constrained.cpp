@@ -3,6 +3,7 @@
 // duplicates, crossing segments refused, every method giving the same triangles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -143,6 +144,32 @@ TEST(Constrained, EveryMethodGivesTheSameTriangles) {
     EXPECT_EQ(t.triangles, first.triangles) << to_string(m);
     EXPECT_EQ(t.neighbors, first.neighbors) << to_string(m);
     EXPECT_EQ(t.edges, first.edges) << to_string(m);
+  }
+}
+
+// Options::neighbors off leaves the result's neighbours empty (the work still has them), and
+// on_sorted sees the result's own triangles, refined or not, each once.
+TEST(Constrained, NeighboursOffAndOnSortedApplyToTheResult) {
+  const Pslg g = generate_coastline(2000, 3, 5);
+  Domain d;
+  d.convex_hull = false;
+  d.holes = g.holes;
+  for (const double angle : {0.0, 25.0}) {
+    SCOPED_TRACE(angle);
+    Quality q;
+    q.min_angle = angle;
+    Options o;
+    o.canonical_order = true;
+    const ConstrainedTriangulation full = triangulate_constrained(g.points, g.segments, o, d, q);
+    std::vector<VertexId> seen(full.triangles.size(), ~VertexId{0});
+    o.neighbors = false;
+    o.on_sorted = [&](std::size_t first, std::span<const VertexId> tris) {
+      std::copy(tris.begin(), tris.end(), seen.begin() + static_cast<std::ptrdiff_t>(3 * first));
+    };
+    const ConstrainedTriangulation bare = triangulate_constrained(g.points, g.segments, o, d, q);
+    EXPECT_TRUE(bare.neighbors.empty());
+    EXPECT_EQ(bare.triangles, full.triangles);
+    EXPECT_EQ(seen, full.triangles);
   }
 }
 

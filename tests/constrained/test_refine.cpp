@@ -3,7 +3,9 @@
 // tiny coordinates give the same mesh, scaled; the coastline generator's polygons are simple.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "helpers.hpp"
@@ -42,6 +44,15 @@ double area(const Meshed& m, std::size_t k) {
   const Point &a = m.all[m.t.triangles[3 * k]], &b = m.all[m.t.triangles[3 * k + 1]],
               &c = m.all[m.t.triangles[3 * k + 2]];
   return ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
+}
+
+// A triangle's smallest angle, in degrees.
+double smallest_angle(const Point& a, const Point& b, const Point& c) {
+  auto at = [](const Point& o, const Point& u, const Point& w) {
+    const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
+    return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / 3.14159265358979323846;
+  };
+  return std::min({at(a, b, c), at(b, c, a), at(c, a, b)});
 }
 
 // The triangles' areas summed.
@@ -122,6 +133,72 @@ TEST(Refine, SmallInputAnglesEnd) {
     if (k > 0) fan.segments.push_back(static_cast<VertexId>(k)), fan.segments.push_back(static_cast<VertexId>(k + 1));
   }
   mesh(fan, q);
+}
+
+// A 20-degree wedge closed by a right angle: refinement leaves below the bound only the
+// triangle at the wedge's apex, whose small angle is the input's; every other triangle, the
+// ones between the shells about the apex included, is split until it meets the bound.
+TEST(Refine, OnlyTheApexTriangleStaysBelowTheBound) {
+  Pslg wedge;
+  wedge.points = {{0, 0}, {20, 0}, {20, 20 * std::tan(20 * 3.14159265358979323846 / 180)}};
+  wedge.segments = {0, 1, 1, 2, 2, 0};
+  for (const double angle : {25.0, 30.0}) {
+    SCOPED_TRACE(angle);
+    Quality q;
+    q.min_angle = angle;
+    const Meshed m = mesh(wedge, q);
+    std::size_t below = 0;
+    for (std::size_t k = 0; k < m.t.size(); ++k) {
+      const VertexId* v = &m.t.triangles[3 * k];
+      if (smallest_angle(m.all[v[0]], m.all[v[1]], m.all[v[2]]) >= angle) continue;
+      ++below;
+      EXPECT_TRUE(v[0] == 0 || v[1] == 0 || v[2] == 0) << "triangle " << k << " is below the bound away from the apex";
+      EXPECT_NEAR(smallest_angle(m.all[v[0]], m.all[v[1]], m.all[v[2]]), 20, 1e-9);
+    }
+    EXPECT_EQ(below, 1u);
+  }
+}
+
+// check_mesh's chains: a segment between two boundary points that is no edge fails (the
+// kite's long diagonal, left out of its Delaunay triangles), and one across a hole passes
+// where its pieces in the mesh are edges.
+TEST(Refine, ASegmentIsAChainOrLiesOutsideTheMesh) {
+  const std::vector<Point> kite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
+  const std::vector<VertexId> tris = {0, 1, 3, 1, 2, 3}, diagonal = {0, 2};
+  MeshSpec spec;
+  spec.segments = diagonal;
+  const CheckResult lost = check_mesh(kite, tris, spec);
+  EXPECT_FALSE(lost.valid);
+  EXPECT_NE(lost.message.find("runs through triangle"), std::string::npos) << lost.message;
+  Pslg g;
+  g.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}, {-1, 2}, {5, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 8, 9};  // 8-9 across the square and its hole
+  g.holes = {{2, 1.5}, {2, 2.5}};  // the hole's halves on either side of 8-9
+  Quality q;
+  q.min_angle = 20;
+  const Meshed m = mesh(g, q, true);
+  EXPECT_NEAR(total_area(m), 16 + 2 * (4 * 1 / 2.0) - 4, 1e-9);
+}
+
+// Asked to keep the boundary whole (Triangle's -Y), refinement adds no point on it: the mesh's
+// segment edges are the input's segments themselves, though a point it wanted fell on one
+// (the right triangle's circumcentre, the middle of its long side: it stays one triangle).
+TEST(Refine, NoPointOnTheBoundaryWhenAskedNone) {
+  for (const Pslg& g : {Pslg{{{0, 0}, {20, 0}, {2, 6}}, {0, 1, 1, 2, 2, 0}, {}}, generate_coastline(500, 2, 3)}) {
+    Quality q;
+    q.min_angle = 20;
+    q.split_boundary = false;
+    Domain d;
+    d.convex_hull = false;
+    d.holes = g.holes;
+    const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, {}, d, q);
+    std::vector<std::pair<VertexId, VertexId>> input, made;
+    for (std::size_t k = 0; k < g.segments.size(); k += 2)
+      input.emplace_back(std::min(g.segments[k], g.segments[k + 1]), std::max(g.segments[k], g.segments[k + 1]));
+    for (std::size_t k = 0; k < t.edges.size(); k += 2) made.emplace_back(t.edges[k], t.edges[k + 1]);
+    std::sort(input.begin(), input.end());
+    EXPECT_EQ(made, input);
+  }
 }
 
 TEST(Refine, RegionsCarryAttributesAndAreaBounds) {

@@ -59,6 +59,8 @@ void apply_switches(Args& a) {
         a.max_area = parse_number(n, c);
     } else if (c == 'D') {
       a.conforming = true;
+    } else if (c == 'Y' && i + 1 < s.size() && s[i + 1] == 'Y') {
+      throw InputError("switch 'YY' (no points on any segment) is not supported: 'Y' keeps them off the boundary");
     } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
       (c == 'A'       ? a.attributes
            : c == 'c' ? a.convex_hull
