@@ -30,7 +30,8 @@ inline Point ray_direction(std::span<const Point> points, const Ridge& r) {
 /// The Voronoi diagram, in the layout of scipy.spatial.Voronoi, with -1 for the vertex at
 /// infinity.
 struct Voronoi {
-  /// Vertex t is the circumcentre of triangle t of the triangulation (rounded to double).
+  /// Vertex t is the circumcentre of triangle t of the triangulation: each coordinate within
+  /// 2^-44 of the circumradius and a unit in its last place of the exact one, at any scale.
   std::vector<Point> vertices;
   /// Cell c's vertices are cell_vertices[cell_offsets[c] .. cell_offsets[c + 1]),
   /// counter-clockwise; an unbounded cell (a site on the hull) ends with -1, the vertex at
@@ -56,8 +57,8 @@ struct Voronoi {
 
 /// The Voronoi diagram of `points` from their triangulation `t` (a result of triangulate on
 /// the same points), on `threads` threads (0: the machine's hardware threads). The combinatorial
-/// structure is exact (it is the triangulation's); the vertices are circumcentres rounded to
-/// double. With `merge`, the diagram proper: as merge_cocircular makes it, the cocircular
+/// structure is exact (it is the triangulation's); the vertices are circumcentres within a
+/// bound (Voronoi::vertices), computed exactly where floating point cannot keep to it. With `merge`, the diagram proper: as merge_cocircular makes it, the cocircular
 /// neighbours found in the same pass as the circumcentres. Throws InputError when `t` does not
 /// fit `points`.
 Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads = 1, bool merge = false);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "predicates/predicates.hpp"
 #include "ridt/predicates.hpp"
@@ -211,6 +212,25 @@ void barycentric_exact(const Point& a, const Point& b, const Point& c, const Poi
     const double m = part[i].scaled(0, exponent);
     weight[i] = m == 0 ? 0.0 : std::ldexp(m / whole, exponent - whole_exponent);
   }
+}
+
+Point circumcentre_exact(const Point& a, const Point& b, const Point& c) {
+  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y});
+  auto big = [e](double v) { return BigInt::from_double(v, e); };
+  const BigInt ax = big(a.x), ay = big(a.y);
+  const BigInt bx = big(b.x) - ax, by = big(b.y) - ay, cx = big(c.x) - ax, cy = big(c.y) - ay;
+  const BigInt b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const BigInt half = bx * cy - by * cx, d = half + half;
+  // Each coordinate (a d + n) / d, in units of 2^e: the quotient of the two rounded.
+  int de = 0;
+  const double dm = d.scaled(0, de);
+  if (dm == 0) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  auto quotient = [&](const BigInt& n) {
+    int ne = 0;
+    const double nm = n.scaled(0, ne);
+    return nm == 0 ? 0.0 : std::ldexp(nm / dm, ne - de + e);
+  };
+  return {quotient(ax * d + cy * b2 - by * c2), quotient(ay * d + bx * c2 - cx * b2)};
 }
 
 double doubled_area_exact(const Point& a, const Point& b, const Point& c) {

@@ -242,6 +242,36 @@ inline void barycentric(const Point& a, const Point& b, const Point& c, const Po
   if (!barycentric_quick(bounded_area(a, b, c), part, weight)) barycentric_exact(a, b, c, q, weight);
 }
 
+Point circumcentre_exact(const Point& a, const Point& b, const Point& c);
+
+/// The circumcentre of a, b and c (not collinear), each coordinate within 2^-44 of the
+/// circumradius of the exact one and within a unit in its last place beside that: computed
+/// relative to a in double precision, with bounds on the rounding of the orientation
+/// determinant and of the two numerators, and exactly (predicates/exact.cpp, the two roundings
+/// of a quotient of exact integers) where a bound is over 2^-46 of what it bounds or a value
+/// overflows (points far from the origin, slivers, huge or tiny coordinates). Infinite or NaN
+/// only where the circumcentre itself overflows or the points are collinear.
+inline Point circumcentre_bounded(const Point& a, const Point& b, const Point& c) {
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const double l = bx * cy, r = by * cx, d = l - r;
+  const double nx1 = cy * b2, nx2 = by * c2, ny1 = bx * c2, ny2 = cx * b2;
+  const double nx = nx1 - nx2, ny = ny1 - ny2;
+  // Each difference is off by a relative kEps, each square sum by 4 kEps, each product of them
+  // by 6 and each result by one more: the bounds, with room for the terms of second order, and
+  // for the absolute 2^-1075 a step can lose where it underflows.
+  constexpr double kLost = 0x1p-1068;
+  const double ed = 5 * kEps * (std::fabs(l) + std::fabs(r)) + kLost;
+  const double ex = 8 * kEps * (std::fabs(nx1) + std::fabs(nx2)) + kLost;
+  const double ey = 8 * kEps * (std::fabs(ny1) + std::fabs(ny2)) + kLost;
+  const double ox = nx / (2 * d), oy = ny / (2 * d), radius = std::max(std::fabs(ox), std::fabs(oy));
+  // An error in d moves the offset by its relative size; one in a numerator by itself over 2 d.
+  const double moved = radius * ed / std::fabs(d) + std::max(ex, ey) / (2 * std::fabs(d));
+  if (std::isfinite(moved) && std::isfinite(radius) && ed <= 0x1p-46 * std::fabs(d) && moved <= 0x1p-46 * radius)
+    return {a.x + ox, a.y + oy};
+  return circumcentre_exact(a, b, c);
+}
+
 /// Lexicographic order (x, then y): the fixed key of the symbolic perturbation.
 inline bool lex_less(const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 

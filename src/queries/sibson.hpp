@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "queries/circumcentre.hpp"
@@ -32,6 +33,7 @@ class Sibson {
       }
     }
     dig(tri, q);
+    scale_by(q);
     // Summed in an order of the points, not of the walk around the cavity (which starts where
     // the triangles' order puts it): the same bits for the same triangles in any order.
     std::sort(boundary_.begin(), boundary_.end(),
@@ -81,7 +83,23 @@ class Sibson {
       }
   }
 
-  Point rel(VertexId v, const Point& q) const { return {f_.points[v].x - q.x, f_.points[v].y - q.y}; }
+  // Where the cavity is huge or tiny (beyond 2^+-200), its points relative to q are scaled by
+  // 2^scale_ (exactly: the weights are ratios of areas) to near 1, so that the circumcentres
+  // and areas (of degree 4) neither overflow nor underflow.
+  void scale_by(const Point& q) {
+    double far = 0;  // half the largest distance along an axis, which cannot overflow
+    for (const Edge& e : boundary_) {
+      const Point& p = f_.points[e.to];
+      far = std::max({far, std::fabs(p.x / 2 - q.x / 2), std::fabs(p.y / 2 - q.y / 2)});
+    }
+    scale_ = far > 0x1p-200 && far < 0x1p200 ? 0 : far > 0 && std::isfinite(far) ? -std::ilogb(far) - 1 : 0;
+  }
+
+  Point rel(VertexId v, const Point& q) const {
+    const Point& p = f_.points[v];
+    if (scale_ == 0) return {p.x - q.x, p.y - q.y};
+    return {std::ldexp(p.x, scale_) - std::ldexp(q.x, scale_), std::ldexp(p.y, scale_) - std::ldexp(q.y, scale_)};
+  }
 
   // The area that q's cell takes from the cell of e.to: the polygon from the circumcentre of
   // (q, e.from, e.to), through the circumcentres of the cavity's triangles around e.to, to
@@ -122,6 +140,7 @@ class Sibson {
   std::vector<std::int32_t> cavity_;
   std::vector<Edge> boundary_;
   std::vector<Point> polygon_;
+  int scale_ = 0;
 };
 
 // The two answers, as queries/field.hpp's templates take them.

@@ -13,7 +13,6 @@
 
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
-#include "queries/circumcentre.hpp"
 #include "runtime/parallel.hpp"
 #include "walk/mesh.hpp"
 
@@ -267,7 +266,7 @@ Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned 
     for (std::size_t k = first; k < last; ++k) {
       const VertexId* v = &t.triangles[3 * k];
       const Point p[3] = {points[v[0]], points[v[1]], points[v[2]]};
-      out.vertices[k] = detail::circumcentre(p[0], p[1], p[2]);
+      out.vertices[k] = detail::circumcentre_bounded(p[0], p[1], p[2]);
       if (merge) cocircular_with(points, t, k, p, found[part]);
     }
   });

@@ -152,6 +152,25 @@ TEST(Interpolation, NaturalNeighbourIsContinuous) {
   for (std::size_t k = 1; k < q.size(); ++k) EXPECT_LT(std::fabs(r[k] - r[k - 1]), 1e-3) << k;
 }
 
+// Sibson's coordinates are ratios of areas: the points and queries scaled by a power of two,
+// however large or small, give the same bits, where the areas would overflow or underflow.
+TEST(Interpolation, NaturalNeighbourAtEveryScale) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 2000, 12);
+  const std::vector<Point> q = random_queries(3000, 0.05, 0.95, 13);
+  std::vector<double> f;
+  for (const Point& p : pts) f.push_back(std::sin(5 * p.x) * std::cos(3 * p.y));
+  const std::vector<double> plain = interpolate_natural_neighbor(pts, triangulate(pts), {f, 1}, q);
+  for (const int e : {-990, -700, -300, 300, 700, 1000}) {  // the points stay normal doubles
+    SCOPED_TRACE(e);
+    auto scaled = [e](std::vector<Point> v) {
+      for (Point& p : v) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+      return v;
+    };
+    const std::vector<Point> sp = scaled(pts);
+    EXPECT_EQ(interpolate_natural_neighbor(sp, triangulate(sp), {f, 1}, scaled(q)), plain);
+  }
+}
+
 TEST(Interpolation, GridQueriesOnEdgesAndVertices) {
   // Cocircular everywhere: any diagonal is Delaunay, and both interpolants are still exact on
   // linear functions, at vertices, edge midpoints and cell centres.

@@ -88,6 +88,28 @@ TEST_P(VoronoiOf, CellsAreConvexHoldTheirSitesAndTileABox) {
 
 INSTANTIATE_TEST_SUITE_P(Distributions, VoronoiOf, test::every_distribution(), test::distribution_name);
 
+// The vertices at any scale: points scaled by a power of two, where the plain circumcentre's
+// products overflow or underflow, give the vertices scaled, within the circumcentre's bound.
+TEST(Voronoi, VerticesAtEveryScale) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 3000, 21);
+  const Triangulation t = triangulate(pts);
+  const Voronoi plain = voronoi(pts, t);
+  for (const int e : {-990, -600, 400, 900}) {  // the points stay normal doubles: scaled exactly
+    SCOPED_TRACE(e);
+    std::vector<Point> sp = pts;
+    for (Point& p : sp) p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+    const Voronoi big = voronoi(sp, triangulate(sp));
+    ASSERT_EQ(big.vertices.size(), plain.vertices.size());
+    for (std::size_t k = 0; k < big.vertices.size(); ++k) {
+      const Point& a = pts[t.triangles[3 * k]];
+      const Point& v = plain.vertices[k];
+      const double radius = std::max(std::fabs(v.x - a.x), std::fabs(v.y - a.y));
+      ASSERT_NEAR(std::ldexp(big.vertices[k].x, -e), v.x, 0x1p-43 * radius + 4e-16 * std::fabs(v.x)) << k;
+      ASSERT_NEAR(std::ldexp(big.vertices[k].y, -e), v.y, 0x1p-43 * radius + 4e-16 * std::fabs(v.y)) << k;
+    }
+  }
+}
+
 TEST(Voronoi, ThreadsGiveTheSameDiagram) {
   // Enough triangles for each thread to take a stretch of them.
   const std::vector<Point> pts = generate(Distribution::Clusters, 80000, 3);
