@@ -15,6 +15,10 @@ from . import _api, _core
 _HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "QJ", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
 
 
+# scipy's tolerance of find_simplex and of its interpolators at the hull: 100 DBL_EPSILON.
+SCIPY_TOLERANCE = 100 * float(np.finfo(np.float64).eps)
+
+
 class DegenerateInputWarning(UserWarning):
     """The points have no triangulation (fewer than three distinct, or all collinear)."""
 
@@ -285,11 +289,18 @@ class Delaunay:
                      threads: Optional[int] = None) -> np.ndarray:
         """The triangle holding each point of `xi` (..., 2), -1 outside the hull: (...,) intc.
 
-        Exact: every decision is an orientation test with exact arithmetic; a point on an edge
-        or at a vertex gets one of the triangles that touch it. `bruteforce` and `tol` are
-        accepted for compatibility and change nothing. The queries are shared among `threads`
-        threads (default: those the triangulation was made with; 0 or -1: every core) with the
-        GIL released.
+        Exact inside the hull and on it: every decision is an orientation test with exact
+        arithmetic; a point on an edge or at a vertex gets one of the triangles that touch it.
+        A point outside the hull gets the hull triangle beside it, as in scipy, when each of
+        its barycentric coordinates there lies in [-tol, 1 + tol] and it lies within tol of the
+        points' bounding box (scipy's rule; `tol` defaults to scipy's 100 * DBL_EPSILON, and 0
+        answers -1 for every point outside): the triangle the exact walk towards it leaves the
+        hull by, its coordinates' signs exact. So a point that rounding put an ulp outside the
+        hull, as scipy's LinearNDInterpolator and griddata meet them, is still found; the
+        interpolators use the same default. `bruteforce` is accepted for compatibility and
+        changes nothing (the walk never fails). The queries are shared among `threads` threads
+        (default: those the triangulation was made with; 0 or -1: every core) with the GIL
+        released.
         """
         x = np.asarray(xi)
         if x.dtype.kind not in "biuf":
@@ -299,7 +310,8 @@ class Delaunay:
         shape = x.shape[:-1]
         q = np.ascontiguousarray(x.reshape(-1, 2), dtype=np.float64)
         nthreads = self._threads if threads is None else _api.thread_count(threads)
-        found = _core.locate(self._points, self._tri.triangles, self._tri.neighbors, q, nthreads)
+        eps = SCIPY_TOLERANCE if tol is None else float(tol)
+        found = _core.locate(self._points, self._tri.triangles, self._tri.neighbors, q, nthreads, eps)
         return found.view(np.intc).reshape(shape)
 
     def __getstate__(self) -> dict:

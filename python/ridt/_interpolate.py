@@ -10,7 +10,7 @@ from typing import Any, Optional, Tuple
 import numpy as np
 
 from . import _api, _core
-from ._delaunay import Delaunay, DegenerateInputWarning
+from ._delaunay import SCIPY_TOLERANCE, Delaunay, DegenerateInputWarning
 
 
 def _coordinates(points: Any, who: str) -> np.ndarray:
@@ -152,7 +152,8 @@ class _TriangulationInterpolator:
             # The nodes of a grid: each triangle takes the nodes it holds, no walks.
             xs, ys, x_major, shape = grid
             out = _core.interpolate_grid(self.tri.points, self.tri._tri, self.values, xs, ys, x_major,
-                                         float(self.fill_value), self._method, self._threads, self._gradients())
+                                         float(self.fill_value), self._method, self._threads, self._gradients(),
+                                         SCIPY_TOLERANCE)
             return out.reshape(shape + self._trailing)
         xi, shape = _as_queries(args, self._who)
         if self._rescaled:
@@ -169,10 +170,10 @@ class _TriangulationInterpolator:
     def _evaluate(self, xi: np.ndarray) -> np.ndarray:
         if not self._complex:
             return _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, float(self.fill_value),
-                                     self._method, self._threads, self._gradients())
+                                     self._method, self._threads, self._gradients(), SCIPY_TOLERANCE)
         fill = complex(self.fill_value)
         out = _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, fill.real, self._method,
-                                self._threads, self._gradients())
+                                self._threads, self._gradients(), SCIPY_TOLERANCE)
         outside = self.tri.find_simplex(xi) < 0
         out[outside, out.shape[1] // 2:] = fill.imag
         return out
@@ -359,7 +360,8 @@ def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: 
     if not np.isfinite(pts).all():
         return None  # Delaunay's error, as for the other methods
     # The library triangulates the points itself, in the order its sweeps and answers read them.
-    out, sweeps = _core.griddata_cubic(pts, v, xs, ys, x_major, float(fill_value), 1e-6, 400, nthreads)
+    out, sweeps = _core.griddata_cubic(pts, v, xs, ys, x_major, float(fill_value), 1e-6, 400, nthreads,
+                                       SCIPY_TOLERANCE)
     if sweeps < 0:  # no triangle: fill_value throughout, and Delaunay's warning saying why
         Delaunay(pts, threads=nthreads)
     if sweeps == 0:
