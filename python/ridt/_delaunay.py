@@ -14,7 +14,6 @@ from . import _api, _core
 # is exact and reports the same things whatever they say, so they are accepted and ignored.
 _HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "QJ", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
 
-
 # scipy's tolerance of find_simplex and of its interpolators at the hull: 100 DBL_EPSILON.
 SCIPY_TOLERANCE = 100 * float(np.finfo(np.float64).eps)
 
@@ -23,29 +22,48 @@ class DegenerateInputWarning(UserWarning):
     """The points have no triangulation (fewer than three distinct, or all collinear)."""
 
 
-def _check_qhull_options(options: Optional[str]) -> None:
+# Options that Qhull cannot apply to points added later; scipy refuses them with incremental.
+_INCREMENTAL_BAD_OPTIONS = ("Qbb", "Qbk", "QBk", "QbB", "Qz")
+
+
+def _option_tokens(options: Optional[str]) -> Optional[list]:
     if options is None:
-        return
+        return None
     if isinstance(options, bytes):
         options = options.decode()
     if not isinstance(options, str):
         raise TypeError("qhull_options must be a string or None")
-    for token in options.split():
+    return options.split()
+
+
+def _check_qhull_options(options: Optional[str], incremental: bool = False) -> None:
+    tokens = _option_tokens(options)
+    if tokens is None:
+        return
+    if incremental:
+        bad = [o for o in _INCREMENTAL_BAD_OPTIONS if any(o in t for t in tokens)]
+        if bad:  # scipy's check and message
+            raise ValueError(f"Qhull options {[o.encode() for o in bad]!r} are incompatible with incremental mode")
+    for token in tokens:
         if token not in _HARMLESS_QHULL_OPTIONS and not token.startswith("QJ"):
             raise ValueError(
                 f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
                 f"no tuning options (accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})")
 
 
-def _qhull_flags(options: Optional[str]) -> frozenset:
+def _qhull_flags(options: Optional[str], incremental: bool = False, furthest_site: bool = False) -> frozenset:
     """The options that change what ridt reports, as Qhull's do: Qbb (the paraboloid's lift
-    scaled), Qc (coplanar points listed), Qz (a point at infinity). scipy's default holds all
-    three; options given hold only what they say."""
-    if options is None:
-        return frozenset({"Qbb", "Qc", "Qz"})
-    if isinstance(options, bytes):
-        options = options.decode()
-    return frozenset(options.split()) & {"Qbb", "Qc", "Qz"}
+    scaled), Qc (coplanar points listed), Qz (a point at infinity). None means scipy's default:
+    all three, but only Qc in incremental mode (scipy leaves out Qbb and Qz there); options given
+    hold only what they say. Qhull ignores Qz for the farthest-point triangulation."""
+    tokens = _option_tokens(options)
+    if tokens is None:
+        flags = {"Qc"} if incremental else {"Qbb", "Qc", "Qz"}
+    else:
+        flags = set(tokens) & {"Qbb", "Qc", "Qz"}
+    if furthest_site:
+        flags.discard("Qz")
+    return frozenset(flags)
 
 
 def _refuse_masked(points: Any) -> None:
@@ -82,9 +100,11 @@ class Delaunay:
         Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
         Accepted when it holds only options that concern Qhull's robustness or what it reports
-        (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError. As in Qhull, Qbb
-        scales the paraboloid's lift (paraboloid_scale, paraboloid_shift) and Qc lists the
-        duplicates in coplanar; None means scipy's default, "Qbb Qc Qz Q12".
+        (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError. As in Qhull, Qbb scales the paraboloid's lift
+        (paraboloid_scale, paraboloid_shift; with Qz over 1.1 times the highest lift, Qhull's
+        point at infinity) and Qc lists the duplicates in coplanar. None means scipy's default,
+        "Qbb Qc Qz Q12", or "Qc" with incremental=True, where Qbb and Qz raise ValueError, as in
+        scipy; Qz counts for nothing with furthest_site=True, as in Qhull.
     method, threads, order, locate, seed, progress
         ridt's own, as in :func:`ridt.triangulate`. ``threads`` (0 or -1: every core) also
         serves ``find_simplex``.
@@ -119,12 +139,12 @@ class Delaunay:
     def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
                  qhull_options: Optional[str] = None, *, method: str = "auto", threads: int = 1,
                  order: str = "brio", locate: str = "auto", seed: int = 1, progress: _api.ProgressLike = None):
-        _check_qhull_options(qhull_options)
+        _check_qhull_options(qhull_options, bool(incremental))
         _refuse_masked(points)
         self._points = _api.as_points(points, "points", "ridt.Delaunay")
         self._threads = _api.thread_count(threads)
         self._options = dict(method=method, order=order, locate=locate, seed=seed, furthest_site=bool(furthest_site))
-        self._qhull = _qhull_flags(qhull_options)
+        self._qhull = _qhull_flags(qhull_options, bool(incremental), bool(furthest_site))
         self._incremental = bool(incremental)
         self._run(progress)
         if self._tri.warning:
