@@ -12,7 +12,9 @@ from . import _api, _core
 
 # Qhull options that only make Qhull more robust or change what it reports about facets; ridt
 # is exact and reports the same things whatever they say, so they are accepted and ignored.
-_HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "QJ", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
+# QJ is not among them: Qhull's joggle moves the points, so that duplicates become vertices and
+# the triangles are those of other points; ridt cannot give that output, and refuses it.
+_HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
 
 # scipy's tolerance of find_simplex and of its interpolators at the hull: 100 DBL_EPSILON.
 SCIPY_TOLERANCE = 100 * float(np.finfo(np.float64).eps)
@@ -44,11 +46,15 @@ def _check_qhull_options(options: Optional[str], incremental: bool = False) -> N
         bad = [o for o in _INCREMENTAL_BAD_OPTIONS if any(o in t for t in tokens)]
         if bad:  # scipy's check and message
             raise ValueError(f"Qhull options {[o.encode() for o in bad]!r} are incompatible with incremental mode")
+    accepted = f"(accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})"
     for token in tokens:
-        if token not in _HARMLESS_QHULL_OPTIONS and not token.startswith("QJ"):
-            raise ValueError(
-                f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
-                f"no tuning options (accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})")
+        if token.startswith("QJ"):
+            raise ValueError(f"qhull_options {token!r} is not supported: Qhull's joggle moves the points by random "
+                             f"amounts, so that its triangles are those of other points and duplicates become "
+                             f"vertices; ridt triangulates the points given, exactly {accepted}")
+        if token not in _HARMLESS_QHULL_OPTIONS:
+            raise ValueError(f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
+                             f"no tuning options {accepted}")
 
 
 def _qhull_flags(options: Optional[str], incremental: bool = False, furthest_site: bool = False) -> frozenset:
@@ -100,7 +106,8 @@ class Delaunay:
         Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
         Accepted when it holds only options that concern Qhull's robustness or what it reports
-        (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError. As in Qhull, Qbb scales the paraboloid's lift
+        (Qbb, Qc, Qz, Qt, Q12, Qx, ...); anything else raises ValueError, QJ (joggle) too,
+        since it changes Qhull's output. As in Qhull, Qbb scales the paraboloid's lift
         (paraboloid_scale, paraboloid_shift; with Qz over 1.1 times the highest lift, Qhull's
         point at infinity) and Qc lists the duplicates in coplanar. None means scipy's default,
         "Qbb Qc Qz Q12", or "Qc" with incremental=True, where Qbb and Qz raise ValueError, as in

@@ -77,3 +77,10 @@ def test_incremental_refuses_what_scipy_refuses(cls, options):
     with pytest.raises(ValueError, match="incompatible with incremental mode"):
         cls(PTS, incremental=True, qhull_options=options)
     cls(PTS, qhull_options=options)  # without incremental: accepted
+
+
+@pytest.mark.parametrize("options", ["QJ", "Qbb Qc Qz Q12 QJ", "QJ Pp", "QJ0.001"])
+@pytest.mark.parametrize("cls", [ridt.Delaunay, ridt.Voronoi])
+def test_joggle_is_refused_by_name(cls, options):
+    with pytest.raises(ValueError, match="'QJ[0-9.]*'.*joggle"):
+        cls(PTS, qhull_options=options)
