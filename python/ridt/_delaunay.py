@@ -138,7 +138,9 @@ class Delaunay:
         Points left out as duplicates: (point, a triangle of the equal point kept, that point).
     vertex_neighbor_vertices : tuple of two ndarrays of intc, (indptr, indices)
         The neighbours of vertex k are indices[indptr[k]:indptr[k+1]].
-    npoints, nsimplex, ndim, min_bound, max_bound, furthest_site, good
+    good : ndarray of intc, shape (nsimplex,)
+        1 for every triangle, as scipy gives it (every facet of the lifted hull is good).
+    npoints, nsimplex, ndim, min_bound, max_bound, furthest_site
     stats : dict
         ridt's counters and timings of the run.
     """
@@ -161,7 +163,6 @@ class Delaunay:
     def _run(self, progress: _api.ProgressLike = None) -> None:
         self._tri = _api.run(self._points, threads=self._threads, progress=progress, **self._options)
         self.furthest_site = self._options["furthest_site"]
-        self.good = None
         if self.furthest_site:
             # Qhull's facets of the upper hull come clockwise; the same triangles, so turned.
             self._simplices = np.ascontiguousarray(self._tri.triangles.view(np.intc)[:, [0, 2, 1]])
@@ -211,6 +212,13 @@ class Delaunay:
     def triangulation(self) -> _core.Triangulation:
         """ridt's own result (triangles, neighbors, hull, duplicates, warning, stats)."""
         return self._tri
+
+    @cached_property
+    def good(self) -> np.ndarray:
+        """Qhull's "good" flag of each simplex's facet, as scipy gives it: every triangle is a
+        facet of the lifted points' lower hull (of the upper one for furthest_site), and all are
+        good, so (nsimplex,) intc ones; simplices[good == 1] is every triangle."""
+        return np.ones(self.nsimplex, dtype=np.intc)
 
     @cached_property
     def min_bound(self) -> np.ndarray:
@@ -357,7 +365,7 @@ class Delaunay:
 
     def _clear(self) -> None:
         """Forgets what was derived from an earlier triangulation."""
-        for name in ("convex_hull", "vertex_to_simplex", "coplanar", "vertex_neighbor_vertices", "_lift",
+        for name in ("good", "convex_hull", "vertex_to_simplex", "coplanar", "vertex_neighbor_vertices", "_lift",
                      "equations", "transform", "min_bound", "max_bound"):
             self.__dict__.pop(name, None)
 

@@ -72,6 +72,11 @@ def _as_queries(args: Tuple[Any, ...], who: str) -> Tuple[np.ndarray, Tuple[int,
     return np.ascontiguousarray(xi), shape
 
 
+def _is_scipy_delaunay(points: Any) -> bool:
+    """Whether points is a scipy.spatial.Delaunay, without importing scipy."""
+    return any(c.__name__ == "Delaunay" and c.__module__.startswith("scipy.spatial") for c in type(points).__mro__)
+
+
 def _constant_along(a: np.ndarray, axis: int) -> bool:
     return a.shape[axis] == 1 or bool((a == a.take([0], axis=axis)).all())
 
@@ -126,11 +131,13 @@ class _TriangulationInterpolator:
                  threads: int = 1):
         who = f"ridt.{self._name}"
         self._threads = _api.thread_count(threads)
-        if isinstance(points, Delaunay):
+        if isinstance(points, Delaunay) or _is_scipy_delaunay(points):
             if rescale:
                 raise ValueError("Rescaling is not supported when passing a Delaunay triangulation as ``points``.")
-            self.tri = points
-            pts = points.points
+            # A scipy.spatial.Delaunay stands for its points, triangulated here (the same
+            # triangles but where Qhull broke a cocircular tie otherwise).
+            self.tri = points if isinstance(points, Delaunay) else None
+            pts = points.points if self.tri is not None else _coordinates(np.asarray(points.points), who)
         else:
             pts = _coordinates(points, who)
             self.tri = None
@@ -184,7 +191,7 @@ class LinearNDInterpolator(_TriangulationInterpolator):
     scipy.interpolate.LinearNDInterpolator's interface (in the plane).
 
     ``LinearNDInterpolator(points, values, fill_value=nan, rescale=False)``; ``points`` may be
-    a :class:`ridt.Delaunay`. Call it with an array of shape (..., 2) or with x and y arrays
+    a :class:`ridt.Delaunay`, or a scipy.spatial.Delaunay, whose points are then triangulated. Call it with an array of shape (..., 2) or with x and y arrays
     that broadcast. Outside the convex hull the answer is ``fill_value``. ``threads`` (ridt's
     own; 0 or -1: every core) serves the triangulation and every call.
     """
@@ -213,9 +220,9 @@ def estimate_gradients_2d_global(tri: Delaunay, y: Any, maxiter: int = 400, tol:
     of 2 (d/dx, d/dy); warns with :class:`GradientEstimationWarning` when the sweeps did not
     settle. Exact for linear data. ``threads`` (ridt's own; default: the triangulation's)
     share each sweep; the result does not depend on them."""
-    nthreads = tri._threads if threads is None else _api.thread_count(threads)
     if not isinstance(tri, Delaunay):
         raise TypeError("tri must be a ridt.Delaunay")
+    nthreads = tri._threads if threads is None else _api.thread_count(threads)
     y = np.asanyarray(y)
     if y.ndim == 0 or y.shape[0] != tri.npoints:
         raise ValueError("'y' has a wrong number of items")
