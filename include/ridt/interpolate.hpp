@@ -22,13 +22,18 @@ struct Values {
 
 /// For each query, the linear interpolant of the triangle that holds it (barycentric
 /// coordinates), exact on linear functions up to rounding; `fill` outside the convex hull or
-/// for a query that is not finite. The result has queries.size() * values.components numbers,
+/// for a query that is not finite. With `hull_tolerance` > 0 (kScipyTolerance: scipy's
+/// interpolators'), a query outside the hull that locate with that tolerance gives a hull
+/// triangle is answered from that triangle (its coordinates there just below 0), as scipy's
+/// LinearNDInterpolator and CloughTocher2DInterpolator answer it; the natural-neighbour
+/// interpolant answers such a query as on the hull edge, linearly. The result has queries.size() * values.components numbers,
 /// row by row. `t` is a result of triangulate on `points`; a dropped duplicate's value is not
 /// read (the point that stands for it gives the value). Runs on `threads` threads (0: the
 /// machine's hardware threads). Throws InputError for sizes that do not match.
 std::vector<double> interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
                                        std::span<const Point> queries,
-                                       double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+                                       double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1,
+                                       double hull_tolerance = 0);
 
 /// The same with Sibson's natural-neighbour coordinates: the share of each point's Voronoi
 /// cell that the query's cell would take were it inserted. Smooth (C1 away from the points),
@@ -38,16 +43,18 @@ std::vector<double> interpolate_linear(std::span<const Point> points, const Tria
 std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
                                                  std::span<const Point> queries,
                                                  double fill = std::numeric_limits<double>::quiet_NaN(),
-                                                 unsigned threads = 1);
+                                                 unsigned threads = 1, double hull_tolerance = 0);
 
 /// The same two, writing into `out` (queries.size() * values.components numbers) instead of a
 /// new vector: for callers that own the memory (a numpy array, a mapped file).
 void interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
                         std::span<const Point> queries, std::span<double> out,
-                        double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+                        double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1,
+                        double hull_tolerance = 0);
 void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
                                   std::span<const Point> queries, std::span<double> out,
-                                  double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+                                  double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1,
+                                  double hull_tolerance = 0);
 
 /// The nodes of a grid as queries: node (i, j) is (x[i], y[j]). Each axis is finite and
 /// strictly increasing or strictly decreasing. Node (i, j)'s answer is row j * x.size() + i of
@@ -64,13 +71,16 @@ struct Grid {
 /// without locating them one by one. Each triangle visits the nodes in its bounding box and
 /// takes those it holds (exact orientation tests; a node on an edge or at a vertex goes to one
 /// of its triangles only), so the cost grows with the triangles and the nodes, not with walks.
+/// `hull_tolerance` > 0 then gives the nodes just outside the hull to the hull triangles that
+/// accept them (a node beside a hull corner, near two, to one of them).
 /// Throws InputError for an axis that is not finite and monotone, or sizes that do not match.
 void interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
                         std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(),
-                        unsigned threads = 1);
+                        unsigned threads = 1, double hull_tolerance = 0);
 void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
                                   const Grid& grid, std::span<double> out,
-                                  double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+                                  double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1,
+                                  double hull_tolerance = 0);
 
 /// The barycentric coordinates of q in the counter-clockwise triangle (a, b, c), not
 /// degenerate: weight i is the area of the triangle with q in corner i's place over the whole
@@ -119,10 +129,12 @@ int estimate_gradients(std::span<const Point> points, const Triangulation& t, Va
 /// at a data point the answer is its value. `fill` outside the hull; on threads.
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, std::span<const Point> queries, std::span<double> out,
-                               double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+                               double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1,
+                               double hull_tolerance = 0);
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, const Grid& grid, std::span<double> out,
-                               double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1);
+                               double fill = std::numeric_limits<double>::quiet_NaN(), unsigned threads = 1,
+                               double hull_tolerance = 0);
 
 /// scipy's griddata(method='cubic') onto a grid: the Clough-Tocher interpolant at the grid's
 /// nodes with the gradients that estimate_gradients(tol, maxiter) finds, in one call that
@@ -131,7 +143,7 @@ void interpolate_clough_tocher(std::span<const Point> points, const Triangulatio
 /// they did not settle within maxiter).
 int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
                    std::span<double> out, double fill = std::numeric_limits<double>::quiet_NaN(), double tol = 1e-6,
-                   int maxiter = 400, unsigned threads = 1);
+                   int maxiter = 400, unsigned threads = 1, double hull_tolerance = 0);
 /// The same of the points' own Delaunay triangulation, made here (Method::Auto on `threads`)
 /// with the points already in the order the gradients and the answers read them: the same
 /// numbers as triangulate and the call above, in less time and memory. Returns -1 where the
@@ -139,7 +151,7 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
 /// `fill` throughout. Non-finite points throw InputError, as triangulate does.
 int griddata_cubic(std::span<const Point> points, Values values, const Grid& grid, std::span<double> out,
                    double fill = std::numeric_limits<double>::quiet_NaN(), double tol = 1e-6, int maxiter = 400,
-                   unsigned threads = 1);
+                   unsigned threads = 1, double hull_tolerance = 0);
 
 /// For each query, the index of a nearest point among the triangulation's vertices (a greedy
 /// walk on the Delaunay graph, which ends at a nearest one), or -1 for a query that is not

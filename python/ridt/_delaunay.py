@@ -12,36 +12,64 @@ from . import _api, _core
 
 # Qhull options that only make Qhull more robust or change what it reports about facets; ridt
 # is exact and reports the same things whatever they say, so they are accepted and ignored.
-_HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "QJ", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
+# QJ is not among them: Qhull's joggle moves the points, so that duplicates become vertices and
+# the triangles are those of other points; ridt cannot give that output, and refuses it.
+_HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
+
+# scipy's tolerance of find_simplex and of its interpolators at the hull: 100 DBL_EPSILON.
+SCIPY_TOLERANCE = 100 * float(np.finfo(np.float64).eps)
 
 
 class DegenerateInputWarning(UserWarning):
     """The points have no triangulation (fewer than three distinct, or all collinear)."""
 
 
-def _check_qhull_options(options: Optional[str]) -> None:
+# Options that Qhull cannot apply to points added later; scipy refuses them with incremental.
+_INCREMENTAL_BAD_OPTIONS = ("Qbb", "Qbk", "QBk", "QbB", "Qz")
+
+
+def _option_tokens(options: Optional[str]) -> Optional[list]:
     if options is None:
-        return
+        return None
     if isinstance(options, bytes):
         options = options.decode()
     if not isinstance(options, str):
         raise TypeError("qhull_options must be a string or None")
-    for token in options.split():
-        if token not in _HARMLESS_QHULL_OPTIONS and not token.startswith("QJ"):
-            raise ValueError(
-                f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
-                f"no tuning options (accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})")
+    return options.split()
 
 
-def _qhull_flags(options: Optional[str]) -> frozenset:
+def _check_qhull_options(options: Optional[str], incremental: bool = False) -> None:
+    tokens = _option_tokens(options)
+    if tokens is None:
+        return
+    if incremental:
+        bad = [o for o in _INCREMENTAL_BAD_OPTIONS if any(o in t for t in tokens)]
+        if bad:  # scipy's check and message
+            raise ValueError(f"Qhull options {[o.encode() for o in bad]!r} are incompatible with incremental mode")
+    accepted = f"(accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})"
+    for token in tokens:
+        if token.startswith("QJ"):
+            raise ValueError(f"qhull_options {token!r} is not supported: Qhull's joggle moves the points by random "
+                             f"amounts, so that its triangles are those of other points and duplicates become "
+                             f"vertices; ridt triangulates the points given, exactly {accepted}")
+        if token not in _HARMLESS_QHULL_OPTIONS:
+            raise ValueError(f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
+                             f"no tuning options {accepted}")
+
+
+def _qhull_flags(options: Optional[str], incremental: bool = False, furthest_site: bool = False) -> frozenset:
     """The options that change what ridt reports, as Qhull's do: Qbb (the paraboloid's lift
-    scaled), Qc (coplanar points listed), Qz (a point at infinity). scipy's default holds all
-    three; options given hold only what they say."""
-    if options is None:
-        return frozenset({"Qbb", "Qc", "Qz"})
-    if isinstance(options, bytes):
-        options = options.decode()
-    return frozenset(options.split()) & {"Qbb", "Qc", "Qz"}
+    scaled), Qc (coplanar points listed), Qz (a point at infinity). None means scipy's default:
+    all three, but only Qc in incremental mode (scipy leaves out Qbb and Qz there); options given
+    hold only what they say. Qhull ignores Qz for the farthest-point triangulation."""
+    tokens = _option_tokens(options)
+    if tokens is None:
+        flags = {"Qc"} if incremental else {"Qbb", "Qc", "Qz"}
+    else:
+        flags = set(tokens) & {"Qbb", "Qc", "Qz"}
+    if furthest_site:
+        flags.discard("Qz")
+    return frozenset(flags)
 
 
 def _refuse_masked(points: Any) -> None:
@@ -78,9 +106,12 @@ class Delaunay:
         Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
         Accepted when it holds only options that concern Qhull's robustness or what it reports
-        (Qbb, Qc, Qz, Qt, QJ, Q12, Qx, ...); anything else raises ValueError. As in Qhull, Qbb
-        scales the paraboloid's lift (paraboloid_scale, paraboloid_shift) and Qc lists the
-        duplicates in coplanar; None means scipy's default, "Qbb Qc Qz Q12".
+        (Qbb, Qc, Qz, Qt, Q12, Qx, ...); anything else raises ValueError, QJ (joggle) too,
+        since it changes Qhull's output. As in Qhull, Qbb scales the paraboloid's lift
+        (paraboloid_scale, paraboloid_shift; with Qz over 1.1 times the highest lift, Qhull's
+        point at infinity) and Qc lists the duplicates in coplanar. None means scipy's default,
+        "Qbb Qc Qz Q12", or "Qc" with incremental=True, where Qbb and Qz raise ValueError, as in
+        scipy; Qz counts for nothing with furthest_site=True, as in Qhull.
     method, threads, order, locate, seed, progress
         ridt's own, as in :func:`ridt.triangulate`. ``threads`` (0 or -1: every core) also
         serves ``find_simplex``.
@@ -107,7 +138,9 @@ class Delaunay:
         Points left out as duplicates: (point, a triangle of the equal point kept, that point).
     vertex_neighbor_vertices : tuple of two ndarrays of intc, (indptr, indices)
         The neighbours of vertex k are indices[indptr[k]:indptr[k+1]].
-    npoints, nsimplex, ndim, min_bound, max_bound, furthest_site, good
+    good : ndarray of intc, shape (nsimplex,)
+        1 for every triangle, as scipy gives it (every facet of the lifted hull is good).
+    npoints, nsimplex, ndim, min_bound, max_bound, furthest_site
     stats : dict
         ridt's counters and timings of the run.
     """
@@ -115,12 +148,12 @@ class Delaunay:
     def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
                  qhull_options: Optional[str] = None, *, method: str = "auto", threads: int = 1,
                  order: str = "brio", locate: str = "auto", seed: int = 1, progress: _api.ProgressLike = None):
-        _check_qhull_options(qhull_options)
+        _check_qhull_options(qhull_options, bool(incremental))
         _refuse_masked(points)
         self._points = _api.as_points(points, "points", "ridt.Delaunay")
         self._threads = _api.thread_count(threads)
         self._options = dict(method=method, order=order, locate=locate, seed=seed, furthest_site=bool(furthest_site))
-        self._qhull = _qhull_flags(qhull_options)
+        self._qhull = _qhull_flags(qhull_options, bool(incremental), bool(furthest_site))
         self._incremental = bool(incremental)
         self._run(progress)
         if self._tri.warning:
@@ -130,7 +163,6 @@ class Delaunay:
     def _run(self, progress: _api.ProgressLike = None) -> None:
         self._tri = _api.run(self._points, threads=self._threads, progress=progress, **self._options)
         self.furthest_site = self._options["furthest_site"]
-        self.good = None
         if self.furthest_site:
             # Qhull's facets of the upper hull come clockwise; the same triangles, so turned.
             self._simplices = np.ascontiguousarray(self._tri.triangles.view(np.intc)[:, [0, 2, 1]])
@@ -180,6 +212,13 @@ class Delaunay:
     def triangulation(self) -> _core.Triangulation:
         """ridt's own result (triangles, neighbors, hull, duplicates, warning, stats)."""
         return self._tri
+
+    @cached_property
+    def good(self) -> np.ndarray:
+        """Qhull's "good" flag of each simplex's facet, as scipy gives it: every triangle is a
+        facet of the lifted points' lower hull (of the upper one for furthest_site), and all are
+        good, so (nsimplex,) intc ones; simplices[good == 1] is every triangle."""
+        return np.ones(self.nsimplex, dtype=np.intc)
 
     @cached_property
     def min_bound(self) -> np.ndarray:
@@ -285,11 +324,18 @@ class Delaunay:
                      threads: Optional[int] = None) -> np.ndarray:
         """The triangle holding each point of `xi` (..., 2), -1 outside the hull: (...,) intc.
 
-        Exact: every decision is an orientation test with exact arithmetic; a point on an edge
-        or at a vertex gets one of the triangles that touch it. `bruteforce` and `tol` are
-        accepted for compatibility and change nothing. The queries are shared among `threads`
-        threads (default: those the triangulation was made with; 0 or -1: every core) with the
-        GIL released.
+        Exact inside the hull and on it: every decision is an orientation test with exact
+        arithmetic; a point on an edge or at a vertex gets one of the triangles that touch it.
+        A point outside the hull gets the hull triangle beside it, as in scipy, when each of
+        its barycentric coordinates there lies in [-tol, 1 + tol] and it lies within tol of the
+        points' bounding box (scipy's rule; `tol` defaults to scipy's 100 * DBL_EPSILON, and 0
+        answers -1 for every point outside): the triangle the exact walk towards it leaves the
+        hull by, its coordinates' signs exact. So a point that rounding put an ulp outside the
+        hull, as scipy's LinearNDInterpolator and griddata meet them, is still found; the
+        interpolators use the same default. `bruteforce` is accepted for compatibility and
+        changes nothing (the walk never fails). The queries are shared among `threads` threads
+        (default: those the triangulation was made with; 0 or -1: every core) with the GIL
+        released.
         """
         x = np.asarray(xi)
         if x.dtype.kind not in "biuf":
@@ -299,7 +345,8 @@ class Delaunay:
         shape = x.shape[:-1]
         q = np.ascontiguousarray(x.reshape(-1, 2), dtype=np.float64)
         nthreads = self._threads if threads is None else _api.thread_count(threads)
-        found = _core.locate(self._points, self._tri.triangles, self._tri.neighbors, q, nthreads)
+        eps = SCIPY_TOLERANCE if tol is None else float(tol)
+        found = _core.locate(self._points, self._tri.triangles, self._tri.neighbors, q, nthreads, eps)
         return found.view(np.intc).reshape(shape)
 
     def __getstate__(self) -> dict:
@@ -318,7 +365,7 @@ class Delaunay:
 
     def _clear(self) -> None:
         """Forgets what was derived from an earlier triangulation."""
-        for name in ("convex_hull", "vertex_to_simplex", "coplanar", "vertex_neighbor_vertices", "_lift",
+        for name in ("good", "convex_hull", "vertex_to_simplex", "coplanar", "vertex_neighbor_vertices", "_lift",
                      "equations", "transform", "min_bound", "max_bound"):
             self.__dict__.pop(name, None)
 

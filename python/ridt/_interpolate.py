@@ -10,7 +10,7 @@ from typing import Any, Optional, Tuple
 import numpy as np
 
 from . import _api, _core
-from ._delaunay import Delaunay, DegenerateInputWarning
+from ._delaunay import SCIPY_TOLERANCE, Delaunay, DegenerateInputWarning
 
 
 def _coordinates(points: Any, who: str) -> np.ndarray:
@@ -72,6 +72,11 @@ def _as_queries(args: Tuple[Any, ...], who: str) -> Tuple[np.ndarray, Tuple[int,
     return np.ascontiguousarray(xi), shape
 
 
+def _is_scipy_delaunay(points: Any) -> bool:
+    """Whether points is a scipy.spatial.Delaunay, without importing scipy."""
+    return any(c.__name__ == "Delaunay" and c.__module__.startswith("scipy.spatial") for c in type(points).__mro__)
+
+
 def _constant_along(a: np.ndarray, axis: int) -> bool:
     return a.shape[axis] == 1 or bool((a == a.take([0], axis=axis)).all())
 
@@ -126,11 +131,13 @@ class _TriangulationInterpolator:
                  threads: int = 1):
         who = f"ridt.{self._name}"
         self._threads = _api.thread_count(threads)
-        if isinstance(points, Delaunay):
+        if isinstance(points, Delaunay) or _is_scipy_delaunay(points):
             if rescale:
                 raise ValueError("Rescaling is not supported when passing a Delaunay triangulation as ``points``.")
-            self.tri = points
-            pts = points.points
+            # A scipy.spatial.Delaunay stands for its points, triangulated here (the same
+            # triangles but where Qhull broke a cocircular tie otherwise).
+            self.tri = points if isinstance(points, Delaunay) else None
+            pts = points.points if self.tri is not None else _coordinates(np.asarray(points.points), who)
         else:
             pts = _coordinates(points, who)
             self.tri = None
@@ -152,7 +159,8 @@ class _TriangulationInterpolator:
             # The nodes of a grid: each triangle takes the nodes it holds, no walks.
             xs, ys, x_major, shape = grid
             out = _core.interpolate_grid(self.tri.points, self.tri._tri, self.values, xs, ys, x_major,
-                                         float(self.fill_value), self._method, self._threads, self._gradients())
+                                         float(self.fill_value), self._method, self._threads, self._gradients(),
+                                         SCIPY_TOLERANCE)
             return out.reshape(shape + self._trailing)
         xi, shape = _as_queries(args, self._who)
         if self._rescaled:
@@ -169,10 +177,10 @@ class _TriangulationInterpolator:
     def _evaluate(self, xi: np.ndarray) -> np.ndarray:
         if not self._complex:
             return _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, float(self.fill_value),
-                                     self._method, self._threads, self._gradients())
+                                     self._method, self._threads, self._gradients(), SCIPY_TOLERANCE)
         fill = complex(self.fill_value)
         out = _core.interpolate(self.tri.points, self.tri._tri, self.values, xi, fill.real, self._method,
-                                self._threads, self._gradients())
+                                self._threads, self._gradients(), SCIPY_TOLERANCE)
         outside = self.tri.find_simplex(xi) < 0
         out[outside, out.shape[1] // 2:] = fill.imag
         return out
@@ -183,7 +191,7 @@ class LinearNDInterpolator(_TriangulationInterpolator):
     scipy.interpolate.LinearNDInterpolator's interface (in the plane).
 
     ``LinearNDInterpolator(points, values, fill_value=nan, rescale=False)``; ``points`` may be
-    a :class:`ridt.Delaunay`. Call it with an array of shape (..., 2) or with x and y arrays
+    a :class:`ridt.Delaunay`, or a scipy.spatial.Delaunay, whose points are then triangulated. Call it with an array of shape (..., 2) or with x and y arrays
     that broadcast. Outside the convex hull the answer is ``fill_value``. ``threads`` (ridt's
     own; 0 or -1: every core) serves the triangulation and every call.
     """
@@ -212,9 +220,9 @@ def estimate_gradients_2d_global(tri: Delaunay, y: Any, maxiter: int = 400, tol:
     of 2 (d/dx, d/dy); warns with :class:`GradientEstimationWarning` when the sweeps did not
     settle. Exact for linear data. ``threads`` (ridt's own; default: the triangulation's)
     share each sweep; the result does not depend on them."""
-    nthreads = tri._threads if threads is None else _api.thread_count(threads)
     if not isinstance(tri, Delaunay):
         raise TypeError("tri must be a ridt.Delaunay")
+    nthreads = tri._threads if threads is None else _api.thread_count(threads)
     y = np.asanyarray(y)
     if y.ndim == 0 or y.shape[0] != tri.npoints:
         raise ValueError("'y' has a wrong number of items")
@@ -359,7 +367,8 @@ def _cubic_on_grid(points: Any, values: Any, args: Tuple[Any, ...], fill_value: 
     if not np.isfinite(pts).all():
         return None  # Delaunay's error, as for the other methods
     # The library triangulates the points itself, in the order its sweeps and answers read them.
-    out, sweeps = _core.griddata_cubic(pts, v, xs, ys, x_major, float(fill_value), 1e-6, 400, nthreads)
+    out, sweeps = _core.griddata_cubic(pts, v, xs, ys, x_major, float(fill_value), 1e-6, 400, nthreads,
+                                       SCIPY_TOLERANCE)
     if sweeps < 0:  # no triangle: fill_value throughout, and Delaunay's warning saying why
         Delaunay(pts, threads=nthreads)
     if sweeps == 0:

@@ -9,16 +9,17 @@ from typing import Any, Dict, List, Optional, Tuple
 import numpy as np
 
 from . import _api, _core
-from ._delaunay import _check_qhull_options, _refuse_masked
+from ._delaunay import _check_qhull_options, _qhull_flags, _refuse_masked
 
 class Voronoi:
     """Voronoi diagram in the plane, with scipy.spatial.Voronoi's attributes.
 
-    The diagram is the dual of ridt's exact Delaunay triangulation: vertex ``t`` is the
-    circumcentre of triangle ``t``, each Delaunay edge gives a ridge, each distinct point a
-    region. Where four or more points are cocircular (a grid), each triangle keeps its own
-    vertex, so equal vertices and ridges of length zero appear where Qhull would merge them.
-    Duplicate points share the region of the point kept. Fewer than three distinct points, or
+    The diagram is the dual of ridt's exact Delaunay triangulation: each vertex is the
+    circumcentre of its triangles, each Delaunay edge gives a ridge, each distinct point a
+    region. Where four or more points are cocircular (a grid), their triangles share one
+    vertex, as Qhull merges them (the exact in-circle test decides): no two vertices are equal,
+    and the edges between such triangles give no ridge, so none has length zero. Duplicate
+    points share the region of the point kept. Fewer than three distinct points, or
     all collinear, raise :class:`ridt.InputError` (Qhull raises QhullError).
 
     Parameters
@@ -30,7 +31,9 @@ class Voronoi:
     incremental : bool
         Allow add_points (scipy's incremental mode).
     qhull_options : str, optional
-        As for :class:`ridt.Delaunay`: only Qhull's robustness options, accepted and ignored.
+        As for :class:`ridt.Delaunay`: only Qhull's robustness options, accepted and ignored,
+        but for Qz (scipy's default, not in incremental mode nor for the farthest-point
+        diagram): region 0 is then the empty region of Qhull's point at infinity.
     threads : int
         Threads for the triangulation and the diagram (0 or -1: every core).
 
@@ -55,13 +58,13 @@ class Voronoi:
 
     def __init__(self, points: Any, furthest_site: bool = False, incremental: bool = False,
                  qhull_options: Optional[str] = None, *, threads: int = 1):
-        _check_qhull_options(qhull_options)
+        _check_qhull_options(qhull_options, bool(incremental))
         self._incremental = bool(incremental)
         _refuse_masked(points)
-        options = qhull_options.decode() if isinstance(qhull_options, bytes) else qhull_options
-        # scipy's default is "Qbb Qc Qz": Qz adds a point at infinity to Qhull's input, which
-        # shows as one more region, empty, that no point owns.
-        at_infinity = (options is None or "Qz" in options.split()) and not furthest_site
+        # scipy's default is "Qbb Qc Qz" ("Qc" in incremental mode): Qz adds a point at infinity
+        # to Qhull's input, which shows as one more region, empty, that no point owns (not in the
+        # farthest-point diagram, where Qhull ignores Qz).
+        at_infinity = "Qz" in _qhull_flags(qhull_options, bool(incremental), bool(furthest_site))
         self.furthest_site = bool(furthest_site)
         self._build(_api.as_points(points, "points", "ridt.Voronoi"), _api.thread_count(threads), at_infinity)
 

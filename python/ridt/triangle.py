@@ -9,7 +9,8 @@ and the exterior are removed), ``q[DEG]`` (a quality mesh: no angle below DEG de
 no number follows), ``a[AREA]`` (no triangle larger than AREA; with no number, each region's own
 bound), ``A`` (each triangle's regional attribute, as 'triangle_attributes'), ``c`` (keep the
 convex hull), ``D`` (conforming Delaunay: every edge Delaunay), ``Y`` (no points added on the
-boundary), ``e`` (also return every edge), ``n``
+boundary; ``YY``, none on the segments inside it either, is refused), ``e`` (also return every
+edge), ``n``
 (also return the neighbours), ``z`` (indices from 0: always so here) and ``Q``/``V`` (quiet,
 verbose: ignored). The others (``r``, ``S``, ``o2``, ...) are refused with ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
@@ -39,6 +40,9 @@ def _switches(opts: str) -> Tuple[set, float, float, bool]:
         c = opts[i]
         if c not in _TAKEN:
             raise ValueError(f"switch '{c}' is not supported (ridt takes {''.join(sorted(_TAKEN))})")
+        if c == "Y" and "Y" in flags:
+            raise ValueError("switch 'YY' is not supported: ridt keeps added points off the boundary ('Y') but "
+                             "cannot keep them off the segments inside it")
         flags.add(c)
         number = _NUMBER.match(opts, i + 1) if c in "qa" else None
         if c == "q":
@@ -54,9 +58,17 @@ def _switches(opts: str) -> Tuple[set, float, float, bool]:
 
 def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     """Triangulates `tri` (a dict with 'vertices' and optionally 'segments', 'holes',
-    'vertex_markers', 'segment_markers', 'regions') as Triangle's switches `opts` say. Returns a dict:
-    'vertices', 'triangles', and as the input and switches ask 'vertex_markers', 'segments',
-    'segment_markers', 'holes', 'triangle_attributes', 'edges', 'edge_markers', 'neighbors'."""
+    'vertex_markers', 'segment_markers', 'vertex_attributes', 'regions') as Triangle's switches
+    `opts` say. Returns a dict: 'vertices', 'triangles', and as the input and switches ask
+    'vertex_markers', 'vertex_attributes', 'segments', 'segment_markers', 'holes',
+    'triangle_attributes', 'edges', 'edge_markers', 'neighbors'.
+
+    Markers follow Triangle's rules: a segment's pieces keep its marker where it is nonzero, and
+    other segments and edges get 1 on the boundary (holes' too), 0 inside; a vertex keeps its
+    input marker where nonzero, else takes that of a segment it lies on with a nonzero marker,
+    else 1 on the boundary, 0 inside. 'vertex_attributes' pass through to the output's
+    vertices; where points are added (crossings, 'q', 'a') they raise ValueError, since
+    Triangle interpolates them in the mesh of the moment each point is inserted."""
     if not isinstance(opts, str):
         raise TypeError("opts must be a string of Triangle's switches")
     flags, angle, area, regional = _switches(opts)
@@ -74,26 +86,103 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
                               min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
                               conforming="D" in flags)
     out: Dict[str, np.ndarray] = {"vertices": cdt.points.copy(), "triangles": cdt.simplices.copy()}
+    if "vertex_attributes" in tri:
+        out["vertex_attributes"] = _vertex_attributes(tri["vertex_attributes"], pts, cdt)
     boundary = _boundary_edges(cdt)
-    markers = np.zeros(cdt.npoints, dtype=np.intc)
-    markers[boundary.ravel()] = 1
-    if "vertex_markers" in tri:
-        given = np.zeros(cdt.npoints, dtype=np.intc)
-        given[:len(pts)] = np.asarray(tri["vertex_markers"]).reshape(-1)
-        markers = np.where(given != 0, given, markers).astype(np.intc)
-    out["vertex_markers"] = markers.reshape(-1, 1)
+    given = np.asarray(tri.get("segment_markers", np.zeros(len(segments))), dtype=np.intc).reshape(-1)
+    if pslg and len(given) != len(segments.reshape(-1, 2)):
+        raise ValueError(f"segment_markers has {len(given)} markers for {len(segments.reshape(-1, 2))} segments")
+    # Each piece's marker: its segment's where that is nonzero (Triangle's rule), else 0 here.
+    owner = _piece_owners(cdt.points, segments.reshape(-1, 2), cdt.edges) if given.any() else None
+    pieces = np.zeros(len(cdt.edges), dtype=np.intc)
+    if owner is not None:
+        pieces[owner >= 0] = given[owner[owner >= 0]]
+    on_boundary = np.isin(_key(cdt.edges), _key(boundary))
+    out["vertex_markers"] = _vertex_markers(tri, len(pts), cdt, boundary, pieces)
     if pslg:
         out["segments"] = cdt.edges.copy()
-        out["segment_markers"] = np.ones((len(cdt.edges), 1), dtype=np.intc)
+        out["segment_markers"] = np.where(pieces != 0, pieces, on_boundary).astype(np.intc).reshape(-1, 1)
         if holes is not None:
             out["holes"] = np.asarray(holes, dtype=float).reshape(-1, 2)
     if "A" in flags and len(cdt.attributes):
         out["triangle_attributes"] = cdt.attributes.reshape(-1, 1).copy()
     if "e" in flags:
-        out["edges"], out["edge_markers"] = _edges(cdt, boundary)
+        out["edges"], out["edge_markers"] = _edges(cdt, boundary, pieces)
     if "n" in flags:
         out["neighbors"] = cdt.neighbors.copy()
     return out
+
+
+def _key(e: np.ndarray) -> np.ndarray:
+    """Edges (a, b) with a < b as one integer each."""
+    return np.asarray(e, dtype=np.int64).reshape(-1, 2) @ np.array([1 << 32, 1], dtype=np.int64)
+
+
+def _vertex_attributes(given: Any, pts: np.ndarray, cdt: ConstrainedDelaunay) -> np.ndarray:
+    """The input's vertex attributes, carried to the output's vertices: only where no point was
+    added, since Triangle interpolates an added point's attributes in the mesh of the moment it
+    is inserted, which ridt's different insertion order cannot reproduce."""
+    a = np.asarray(given, dtype=np.float64)
+    a = a.reshape(-1, 1) if a.ndim == 1 else a.reshape(len(a), -1)
+    if len(a) != len(pts):
+        raise ValueError(f"vertex_attributes has {len(a)} rows for {len(pts)} vertices")
+    if len(cdt.added):
+        raise ValueError(f"vertex_attributes are not supported where points are added ({len(cdt.added)} here: "
+                         "crossings, 'q' or 'a'): Triangle interpolates them at each added point in the mesh of "
+                         "the moment, which ridt cannot reproduce; triangulate without them and interpolate")
+    return a.copy()
+
+
+def _vertex_markers(tri: Dict[str, Any], ninput: int, cdt: ConstrainedDelaunay, boundary: np.ndarray,
+                    pieces: np.ndarray) -> np.ndarray:
+    """Triangle's rule: the input's marker where nonzero; else that of a segment with a nonzero
+    marker the vertex lies on (the last one here); else 1 on the boundary; else 0."""
+    markers = np.zeros(cdt.npoints, dtype=np.intc)
+    markers[boundary.ravel()] = 1
+    marked = pieces != 0
+    for column in (0, 1):
+        markers[cdt.edges[marked, column]] = pieces[marked]
+    if "vertex_markers" in tri:
+        given = np.zeros(cdt.npoints, dtype=np.intc)
+        given[:ninput] = np.asarray(tri["vertex_markers"]).reshape(-1)
+        markers = np.where(given != 0, given, markers).astype(np.intc)
+    return markers.reshape(-1, 1)
+
+
+def _piece_owners(points: np.ndarray, segments: np.ndarray, pieces: np.ndarray) -> np.ndarray:
+    """For each piece (a row of `pieces`, the output's segment edges), the input segment it is a
+    part of, or -1 (an edge refinement keeps on the hull). Each segment's chain of pieces is
+    walked from its first end: at each vertex, on along the piece that heads most nearly
+    towards the other end (the points added on a segment lie on it, crossings within
+    rounding). A piece of segments that overlap goes to the first."""
+    owner = np.full(len(pieces), -1, dtype=np.intp)
+    around: Dict[int, list] = {}
+    for k, (a, b) in enumerate(pieces.tolist()):
+        around.setdefault(a, []).append((b, k))
+        around.setdefault(b, []).append((a, k))
+    for s, (u, w) in enumerate(segments.tolist()):
+        if u == w:
+            continue
+        direction = points[w] - points[u]
+        length = float(np.hypot(*direction))
+        v, reach = u, 0.0
+        for _ in range(len(pieces)):
+            if v == w:
+                break
+            best, best_cos = None, 1 - 1e-9
+            for x, k in around.get(v, ()):
+                step = points[x] - points[v]
+                size = float(np.hypot(*step))
+                cos = float(step @ direction) / (size * length) if size > 0 else -1.0
+                if cos > best_cos and float((points[x] - points[u]) @ direction) / length > reach:
+                    best, best_cos = (x, k), cos
+            if best is None:
+                break
+            v, k = best
+            reach = float((points[v] - points[u]) @ direction) / length
+            if owner[k] < 0:
+                owner[k] = s
+    return owner
 
 
 def _boundary_edges(cdt: ConstrainedDelaunay) -> np.ndarray:
@@ -104,12 +193,14 @@ def _boundary_edges(cdt: ConstrainedDelaunay) -> np.ndarray:
     return np.sort(np.stack([a, b], axis=1), axis=1).astype(np.intc)
 
 
-def _edges(cdt: ConstrainedDelaunay, boundary: np.ndarray):
-    """Every edge once, (a, b) with a < b, sorted, and 1 for those on the boundary or a segment."""
+def _edges(cdt: ConstrainedDelaunay, boundary: np.ndarray, pieces: np.ndarray):
+    """Every edge once, (a, b) with a < b, sorted, and its marker by Triangle's rule: a segment
+    piece's segment's marker where nonzero; else 1 on the boundary; else 0."""
     t = cdt.simplices
     e = np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]])
     e = np.unique(np.sort(e, axis=1), axis=0).astype(np.intc)
-    marked = np.concatenate([boundary, cdt.edges]) if len(cdt.edges) else boundary
-    key = lambda x: x[:, 0].astype(np.int64) * (1 << 32) + x[:, 1]
-    markers = np.isin(key(e), key(marked)).astype(np.intc).reshape(-1, 1)
-    return e, markers
+    markers = np.isin(_key(e), _key(boundary)).astype(np.intc)
+    if len(cdt.edges):
+        where = np.searchsorted(_key(e), _key(cdt.edges))  # every piece is an edge
+        markers[where] = np.where(pieces != 0, pieces, markers[where])
+    return e, markers.reshape(-1, 1)

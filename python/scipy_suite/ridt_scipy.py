@@ -15,7 +15,8 @@ starts with "outside ridt's claim"; the summary counts them. Any other skip is r
 such, and a test that fails fails the run. Every ridt.Delaunay a test builds is checked by the
 exact validator as it is made, and a test listed in exceptions.txt (one that pins Qhull's
 arbitrary choice among equally valid answers) must fail, strictly, with every triangulation it
-built valid.
+built valid; one listed as "refused option:" (it passes QJ, which ridt refuses) must fail by
+ridt's ValueError.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ import ridt
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUTSIDE = "outside ridt's claim"
+REFUSED = "refused option:"  # exceptions.txt: the test passes a Qhull option ridt refuses
 
 _used: Counter = Counter()  # how often each replacement was called, over the whole session
 
@@ -185,7 +187,11 @@ def pytest_collection_modifyitems(config: pytest.Config, items: List[pytest.Item
         key = _short_id(item)
         if key in exceptions:
             config._ridt_seen.add(key)  # type: ignore[attr-defined]
-            item.add_marker(pytest.mark.xfail(reason=f"pins Qhull's choice: {exceptions[key]}", strict=True))
+            why = exceptions[key]
+            if why.startswith(REFUSED):  # must fail by ridt's ValueError, nothing else
+                item.add_marker(pytest.mark.xfail(reason=why, strict=True, raises=ValueError))
+            else:
+                item.add_marker(pytest.mark.xfail(reason=f"pins Qhull's choice: {why}", strict=True))
 
 
 def pytest_runtest_setup(item: pytest.Item) -> None:
@@ -202,7 +208,9 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     tw.section("scipy's tests against ridt")
     tw.line(f"passed against ridt: {len(stats.get('passed', []))}")
     tw.line(f"failed: {len(stats.get('failed', []))}")
-    tw.line(f"listed exceptions (pin Qhull's choice; ridt's output validated): {len(stats.get('xfailed', []))}")
+    refused = sum(1 for why in config._ridt_exceptions.values() if why.startswith(REFUSED))  # type: ignore
+    tw.line(f"listed exceptions: {len(stats.get('xfailed', []))} ({refused} pass an option ridt refuses with "
+            f"ValueError; the others pin Qhull's choice, ridt's output validated)")
     for reason, count in sorted(reasons.items()):
         tw.line(f"skipped, {reason}: {count}")
     tw.line("replacements called: " + ", ".join(f"{k} {v}" for k, v in sorted(_used.items())))

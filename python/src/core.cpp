@@ -296,7 +296,8 @@ void bind_queries(py::module_& m) {
   m.def(
       "locate",
       [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
-         const py::array_t<std::int32_t, py::array::c_style>& neighbors, const Points& queries, unsigned threads) {
+         const py::array_t<std::int32_t, py::array::c_style>& neighbors, const Points& queries, unsigned threads,
+         double tolerance) {
         const auto pts = as_points(points, "points");
         const auto q = as_points(queries, "queries");
         py::array_t<std::int32_t> out(static_cast<py::ssize_t>(q.size()));
@@ -305,11 +306,12 @@ void bind_queries(py::module_& m) {
         const std::span<std::int32_t> o(out.mutable_data(), q.size());
         {
           py::gil_scoped_release nogil;
-          ridt::locate(pts, t, nb, q, o, threads);
+          ridt::locate(pts, t, nb, q, o, threads, tolerance);
         }
         return out;
       },
-      py::arg("points"), py::arg("triangles"), py::arg("neighbors"), py::arg("queries"), py::arg("threads"));
+      py::arg("points"), py::arg("triangles"), py::arg("neighbors"), py::arg("queries"), py::arg("threads"),
+      py::arg("tolerance") = 0.0);
 
   m.def(
       "check",

@@ -25,7 +25,7 @@ using ridt_python::Points;
 template <class Where>
 py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulation& t, const Points& values,
                                    const Where& where, std::size_t rows, double fill, const std::string& method,
-                                   unsigned threads, const std::optional<Points>& gradients = std::nullopt) {
+                                   unsigned threads, const std::optional<Points>& gradients, double hull_tolerance) {
   const auto pts = as_points(points, "points");
   if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
   const auto k = static_cast<std::size_t>(values.shape(1));
@@ -37,18 +37,18 @@ py::array_t<double> interpolate_at(const Points& points, const ridt::Triangulati
     if (method == "cubic") {
       if (!gradients) throw std::invalid_argument("the cubic needs gradients");
       const std::span<const double> g(gradients->data(), static_cast<std::size_t>(gradients->size()));
-      ridt::interpolate_clough_tocher(pts, t, v, g, where, out, fill, threads);
+      ridt::interpolate_clough_tocher(pts, t, v, g, where, out, fill, threads, hull_tolerance);
     } else if (method == "natural")
-      ridt::interpolate_natural_neighbor(pts, t, v, where, out, fill, threads);
+      ridt::interpolate_natural_neighbor(pts, t, v, where, out, fill, threads, hull_tolerance);
     else
-      ridt::interpolate_linear(pts, t, v, where, out, fill, threads);
+      ridt::interpolate_linear(pts, t, v, where, out, fill, threads, hull_tolerance);
   }
   return a;
 }
 
 // griddata's cubic onto a grid: (values at the nodes, sweeps).
 py::tuple cubic_on_grid(const Points& points, const Points& values, const Points& x, const Points& y, bool x_major,
-                        double fill, double tol, int maxiter, unsigned threads) {
+                        double fill, double tol, int maxiter, unsigned threads, double hull_tolerance) {
   const auto pts = as_points(points, "points");
   if (values.ndim() != 2) throw py::value_error("values must have shape (n, k)");
   if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
@@ -61,7 +61,7 @@ py::tuple cubic_on_grid(const Points& points, const Points& values, const Points
   int sweeps = 0;
   {
     py::gil_scoped_release nogil;
-    sweeps = ridt::griddata_cubic(pts, v, g, out, fill, tol, maxiter, threads);
+    sweeps = ridt::griddata_cubic(pts, v, g, out, fill, tol, maxiter, threads, hull_tolerance);
   }
   return py::make_tuple(a, sweeps);
 }
@@ -92,10 +92,11 @@ void bind_cubic(py::module_& m) {
   m.def(
       "griddata_cubic",
       [](const Points& points, const Points& values, const Points& x, const Points& y, bool x_major, double fill,
-         double tol, int maxiter,
-         unsigned threads) { return cubic_on_grid(points, values, x, y, x_major, fill, tol, maxiter, threads); },
+         double tol, int maxiter, unsigned threads, double hull_tolerance) {
+        return cubic_on_grid(points, values, x, y, x_major, fill, tol, maxiter, threads, hull_tolerance);
+      },
       py::arg("points"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("x_major"), py::arg("fill"),
-      py::arg("tol"), py::arg("maxiter"), py::arg("threads"));
+      py::arg("tol"), py::arg("maxiter"), py::arg("threads"), py::arg("hull_tolerance") = 0.0);
 }
 
 }  // namespace
@@ -104,24 +105,25 @@ void bind_interpolation(py::module_& m) {
   m.def(
       "interpolate",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& queries, double fill,
-         const std::string& method, unsigned threads, const std::optional<Points>& gradients) {
+         const std::string& method, unsigned threads, const std::optional<Points>& gradients, double hull_tolerance) {
         const auto q = as_points(queries, "queries");
-        return interpolate_at(points, t, values, q, q.size(), fill, method, threads, gradients);
+        return interpolate_at(points, t, values, q, q.size(), fill, method, threads, gradients, hull_tolerance);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("queries"), py::arg("fill"),
-      py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
+      py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none(), py::arg("hull_tolerance") = 0.0);
 
   m.def(
       "interpolate_grid",
       [](const Points& points, const ridt::Triangulation& t, const Points& values, const Points& x, const Points& y,
-         bool x_major, double fill, const std::string& method, unsigned threads,
-         const std::optional<Points>& gradients) {
+         bool x_major, double fill, const std::string& method, unsigned threads, const std::optional<Points>& gradients,
+         double hull_tolerance) {
         if (x.ndim() != 1 || y.ndim() != 1) throw py::value_error("the grid's axes must be one-dimensional");
         const ridt::Grid g{
             {x.data(), static_cast<std::size_t>(x.size())}, {y.data(), static_cast<std::size_t>(y.size())}, x_major};
-        return interpolate_at(points, t, values, g, g.size(), fill, method, threads, gradients);
+        return interpolate_at(points, t, values, g, g.size(), fill, method, threads, gradients, hull_tolerance);
       },
       py::arg("points"), py::arg("triangulation"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("x_major"),
-      py::arg("fill"), py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none());
+      py::arg("fill"), py::arg("method"), py::arg("threads"), py::arg("gradients") = py::none(),
+      py::arg("hull_tolerance") = 0.0);
   bind_cubic(m);
 }

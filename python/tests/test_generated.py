@@ -43,13 +43,31 @@ def test_find_simplex_is_exact(points, queries):
         warnings.simplefilter("ignore", ridt.DegenerateInputWarning)
         tri = ridt.Delaunay(pts)
     q = np.array(queries)
-    found = tri.find_simplex(q)
-    for x, s in zip(q, found):
-        inside = [t for t in range(tri.nsimplex) if holds(pts[tri.simplices[t]], x)]
+    exact = tri.find_simplex(q, tol=0)
+    found = tri.find_simplex(q)  # scipy's tolerance: the same, but for points just outside
+    for x, s, t in zip(q, exact, found):
+        inside = [k for k in range(tri.nsimplex) if holds(pts[tri.simplices[k]], x)]
         if s >= 0:
-            assert s in inside
+            assert s in inside and t == s
         else:
             assert not inside
+            if t >= 0:  # within the tolerance of a hull triangle, and of the bounding box
+                eps = 100 * np.finfo(np.float64).eps  # scipy's default
+                w = barycentric(pts[tri.simplices[t]], x)
+                assert all(-eps * (1 + 1e-9) <= c <= 1 + eps * (1 + 1e-9) for c in w), w
+                assert (x >= pts.min(axis=0) - eps).all() and (x <= pts.max(axis=0) + eps).all()
+
+
+def barycentric(tri, x):
+    """x's barycentric coordinates in the triangle, in exact rational arithmetic."""
+    from fractions import Fraction as F
+    (ax, ay), (bx, by), (cx, cy) = [(F(p[0]), F(p[1])) for p in tri]
+    px, py = F(x[0]), F(x[1])
+    def area(ux, uy, vx, vy, wx, wy):
+        return (vx - ux) * (wy - uy) - (vy - uy) * (wx - ux)
+    whole = area(ax, ay, bx, by, cx, cy)
+    return [area(px, py, bx, by, cx, cy) / whole, area(ax, ay, px, py, cx, cy) / whole,
+            area(ax, ay, bx, by, px, py) / whole]
 
 
 def holds(tri, x):

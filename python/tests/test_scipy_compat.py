@@ -228,7 +228,9 @@ def test_incremental_insertion_equals_a_fresh_build():
                     assert set(tri) - {tri[i]} <= set(inc.simplices[nb[i]]) and t in inc.neighbors[nb[i]]
         fv = ridt.Voronoi(whole)
         assert sorted(map(tuple, np.round(vinc.vertices, 12))) == sorted(map(tuple, np.round(fv.vertices, 12)))
-        assert len(vinc.regions) == len(fv.regions)
+        # The fresh one has Qz's empty region at infinity (scipy's default); incremental mode
+        # leaves Qz out, as in scipy.
+        assert len(vinc.regions) == len(fv.regions) - 1
     inc.close()
     vinc.close()
     with pytest.raises(RuntimeError):
@@ -343,3 +345,36 @@ def test_qhull_options_that_change_what_is_reported(options):
                                [theirs.paraboloid_scale, theirs.paraboloid_shift], rtol=1e-12)  # Qbb, Qz
     v = ridt.Voronoi(pts[:40], qhull_options=options)
     assert len(v.regions) == len(scipy.spatial.Voronoi(pts[:40], qhull_options=options).regions)  # Qz
+
+
+def test_estimate_gradients_refuses_what_is_not_a_triangulation():
+    with pytest.raises(TypeError, match="ridt.Delaunay"):
+        ridt.estimate_gradients_2d_global(np.zeros((4, 2)), np.zeros(4))
+    pts = np.random.default_rng(4).random((20, 2))
+    with pytest.raises(TypeError, match="ridt.Delaunay"):
+        ridt.estimate_gradients_2d_global(scipy.spatial.Delaunay(pts), np.zeros(20))
+
+
+@pytest.mark.parametrize("cls", [ridt.LinearNDInterpolator, ridt.CloughTocher2DInterpolator])
+def test_interpolators_take_a_scipy_delaunay_as_scipys_do(cls):
+    pts = np.random.default_rng(5).random((40, 2))
+    values = np.sin(3 * pts[:, 0]) + pts[:, 1] ** 2
+    theirs = scipy.spatial.Delaunay(pts)
+    q = np.random.default_rng(6).uniform(-0.1, 1.1, (50, 2))
+    f = cls(theirs, values)
+    np.testing.assert_array_equal(f(q), cls(pts, values)(q))
+    assert isinstance(f.tri, ridt.Delaunay) and np.array_equal(f.tri.points, pts)
+    with pytest.raises(ValueError, match="Rescaling"):
+        cls(theirs, values, rescale=True)
+
+
+@pytest.mark.parametrize("mode", [dict(), dict(furthest_site=True), dict(incremental=True)], ids=str)
+def test_good_is_scipys(mode):
+    pts = np.random.default_rng(7).random((30, 2))
+    ours, theirs = ridt.Delaunay(pts, **mode), scipy.spatial.Delaunay(pts, **mode)
+    assert ours.good.dtype == theirs.good.dtype and ours.good.shape == (ours.nsimplex,)
+    np.testing.assert_array_equal(ours.good, theirs.good)
+    if mode.get("incremental"):
+        ours.add_points(pts[:5] * 0.5 + 0.2)
+        theirs.add_points(pts[:5] * 0.5 + 0.2)
+        np.testing.assert_array_equal(ours.good, theirs.good)

@@ -88,3 +88,68 @@ def test_refused():
         triangle.triangulate({}, "")
     with pytest.raises(TypeError):
         triangle.triangulate({"vertices": SQUARE}, 3)
+
+
+def on_segment(p, a, b, eps=1e-9):
+    """p lies on the segment a-b (within rounding: crossings are rounded to doubles)."""
+    d, e = b - a, p - a
+    return abs(d[0] * e[1] - d[1] * e[0]) <= eps * (d @ d) and -eps <= (e @ d) / (d @ d) <= 1 + eps
+
+
+def test_segment_markers_pass_to_their_pieces_as_in_triangle():
+    # The square's sides marked 2, 3, 4, 5; a diagonal inside marked 7, one unmarked (0) that
+    # crosses it; refinement splits them all.
+    square = np.array(SQUARE, dtype=float)
+    tri = {"vertices": square, "segments": np.array(loop(0) + [(0, 2), (1, 3)]),
+           "segment_markers": np.array([2, 3, 4, 5, 7, 0])}
+    t = triangle.triangulate(tri, "pq30a4e")
+    v, segs, marks = t["vertices"], t["segments"], t["segment_markers"].ravel()
+    assert len(segs) > 6 and marks.shape == (len(segs),)
+    ends = {k: square[list(s)] for k, s in enumerate(tri["segments"])}
+    for (a, b), m in zip(segs, marks):
+        owners = [k for k, (p, q) in ends.items() if on_segment(v[a], p, q) and on_segment(v[b], p, q)]
+        assert len(owners) == 1, (a, b)
+        assert m == (tri["segment_markers"][owners[0]] or 0), (a, b, m)
+    # Vertices: on a marked side its marker (a corner one of its two sides'), the crossing and
+    # the diagonals' inner points 7, the rest 0 inside.
+    vm = t["vertex_markers"].ravel()
+    for k, p in enumerate(v):
+        on = [tri["segment_markers"][s] for s in range(6) if on_segment(p, *ends[s]) and tri["segment_markers"][s]]
+        if on:
+            assert vm[k] in on, (k, p, vm[k], on)
+        else:
+            assert vm[k] == 0, (k, p)
+    # Every edge: a piece's marker, else 0 (none on the boundary is unmarked here).
+    key = {tuple(s): m for s, m in zip(map(tuple, segs), marks)}
+    for e, m in zip(map(tuple, t["edges"]), t["edge_markers"].ravel()):
+        assert m == key.get(e, 0)
+
+
+def test_unmarked_segments_get_one_on_the_boundary_and_zero_inside():
+    tri = {"vertices": np.array(SQUARE + [(2, 2), (8, 8)], dtype=float), "segments": np.array(loop(0) + [(4, 5)])}
+    t = triangle.triangulate(tri, "p")
+    marks = dict(zip(map(tuple, t["segments"]), t["segment_markers"].ravel()))
+    assert marks[(4, 5)] == 0 and all(m == 1 for s, m in marks.items() if s != (4, 5))
+    assert t["vertex_markers"].ravel().tolist() == [1, 1, 1, 1, 0, 0]
+    given = triangle.triangulate(dict(tri, vertex_markers=[0, 9, 0, 0, 6, 0]), "p")["vertex_markers"].ravel()
+    assert given.tolist() == [1, 9, 1, 1, 6, 0]
+
+
+def test_vertex_attributes_are_carried_or_refused():
+    tri = {"vertices": np.array(SQUARE + [(3, 4)], dtype=float), "segments": np.array(loop(0)),
+           "vertex_attributes": np.array([[1.0, 10], [2, 20], [3, 30], [4, 40], [5, 50]])}
+    t = triangle.triangulate(tri, "p")
+    np.testing.assert_array_equal(t["vertex_attributes"], tri["vertex_attributes"])
+    flat = triangle.triangulate(dict(tri, vertex_attributes=[1.0, 2, 3, 4, 5]), "p")["vertex_attributes"]
+    assert flat.shape == (5, 1)
+    with pytest.raises(ValueError, match="vertex_attributes.*added"):
+        triangle.triangulate(tri, "pq30a1")
+    with pytest.raises(ValueError, match="rows"):
+        triangle.triangulate(dict(tri, vertex_attributes=np.ones((4, 2))), "p")
+
+
+def test_yy_is_refused_not_taken_for_y():
+    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4))}
+    assert len(triangle.triangulate(tri, "pq30Y")["segments"]) == 8
+    with pytest.raises(ValueError, match="'YY' is not supported"):
+        triangle.triangulate(tri, "pq30YY")

@@ -196,43 +196,46 @@ detail::Block<double> values_and_gradients(const char* who, std::size_t n, Value
 
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, std::span<const Point> queries, std::span<double> out,
-                               double fill, unsigned threads) {
+                               double fill, unsigned threads, double hull_tolerance) {
   const char* who = "interpolate_clough_tocher";
   const detail::Block<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
   const std::size_t width = 3 * values.components;
   detail::interpolate<CloughTocher>(who, points, t, Values{{both.get(), points.size() * width}, width},
-                                    values.components, queries, out, fill, threads);
+                                    values.components, queries, out, fill, threads, hull_tolerance);
 }
 
 void interpolate_clough_tocher(std::span<const Point> points, const Triangulation& t, Values values,
                                std::span<const double> gradients, const Grid& grid, std::span<double> out, double fill,
-                               unsigned threads) {
+                               unsigned threads, double hull_tolerance) {
   const char* who = "interpolate_clough_tocher";
   const detail::Block<double> both = values_and_gradients(who, points.size(), values, gradients, threads);
   const std::size_t width = 3 * values.components;
   detail::interpolate_grid<CloughTocher>(who, points, t, Values{{both.get(), points.size() * width}, width},
-                                         values.components, grid, out, fill, threads);
+                                         values.components, grid, out, fill, threads, hull_tolerance);
 }
 
 namespace {
 
 // griddata_cubic's gradients and answers on the renumbered field.
 int cubic_on_grid(const detail::Renumbered& field, const detail::Axis& ax, const detail::Axis& ay, const Grid& grid,
-                  std::span<double> out, double fill, double tol, int maxiter, unsigned threads) {
+                  std::span<double> out, double fill, double tol, int maxiter, unsigned threads,
+                  double hull_tolerance) {
   const std::size_t n = field.count, m = field.components;
   const detail::Block<double> grad = detail::allocate_huge<double>(2 * n * m);
   const int sweeps = detail::solve_gradients(field, tol, maxiter, threads, {grad.get(), 2 * n * m});
   // Each point's values and then its gradients, in the field's numbering.
   const detail::Block<double> both = values_and_gradients("griddata_cubic", n, Values{{field.values.get(), n * m}, m},
                                                           {grad.get(), 2 * n * m}, threads);
-  detail::answer_grid<CloughTocher>(field.field({both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out, fill, threads);
+  detail::answer_grid<CloughTocher>(field.field({both.get(), 3 * n * m}, 3 * m), ax, ay, grid, m, out, fill, threads,
+                                    hull_tolerance);
   return sweeps;
 }
 
 }  // namespace
 
 int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
-                   std::span<double> out, double fill, double tol, int maxiter, unsigned threads) {
+                   std::span<double> out, double fill, double tol, int maxiter, unsigned threads,
+                   double hull_tolerance) {
   const char* who = "griddata_cubic";
   const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
   detail::check_arrays(who, points.size(), t.triangles, t.neighbors);
@@ -246,11 +249,11 @@ int griddata_cubic(std::span<const Point> points, const Triangulation& t, Values
   // The sweeps' blocks, given back, hold the answers' values and gradients after.
   const MemoryReuse reuse(kReuseBytesPerPoint * points.size() * values.components);
   const detail::Renumbered field({points, t.triangles, t.neighbors, values}, threads);
-  return cubic_on_grid(field, ax, ay, grid, out, fill, tol, maxiter, threads);
+  return cubic_on_grid(field, ax, ay, grid, out, fill, tol, maxiter, threads, hull_tolerance);
 }
 
 int griddata_cubic(std::span<const Point> points, Values values, const Grid& grid, std::span<double> out, double fill,
-                   double tol, int maxiter, unsigned threads) {
+                   double tol, int maxiter, unsigned threads, double hull_tolerance) {
   const char* who = "griddata_cubic";
   threads = detail::thread_count(threads);
   const detail::Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
@@ -271,7 +274,7 @@ int griddata_cubic(std::span<const Point> points, Values values, const Grid& gri
     std::fill(out.begin(), out.end(), fill);
     return -1;
   }
-  return cubic_on_grid(field, ax, ay, grid, out, fill, tol, maxiter, threads);
+  return cubic_on_grid(field, ax, ay, grid, out, fill, tol, maxiter, threads, hull_tolerance);
 }
 
 }  // namespace ridt

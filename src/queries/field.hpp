@@ -8,11 +8,13 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "order/order.hpp"
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
+#include "queries/near.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 #include "runtime/memory.hpp"
@@ -243,10 +245,12 @@ class Input {
 
 // The triangle that answers at q, which triangle tri holds (as the walk found it): the other
 // one across a side that q lies on where answers_on_side gives it that side, so that the
-// answer is the same whichever of the two the walk reached.
+// answer is the same whichever of the two the walk reached. A q outside the hull that a
+// tolerance gave tri stays with tri, the triangle it is near.
 inline std::size_t settled(const Field& f, std::size_t tri, const Point& q) {
   const Point &a = f.corner(tri, 0), &b = f.corner(tri, 1), &c = f.corner(tri, 2);
   const int o[3] = {orient2d(b, c, q), orient2d(c, a, q), orient2d(a, b, q)};
+  if (o[0] < 0 || o[1] < 0 || o[2] < 0) return tri;
   if ((o[0] == 0) + (o[1] == 0) + (o[2] == 0) != 1) return tri;  // inside, or at a corner (its value)
   const int side = o[0] == 0 ? 0 : o[1] == 0 ? 1 : 2;
   return f.answers_on_side(tri, side) ? tri : static_cast<std::size_t>(f.neighbor(tri, side));
@@ -254,15 +258,17 @@ inline std::size_t settled(const Field& f, std::size_t tri, const Point& q) {
 
 // Answers each query with Answer, a class built on each thread from the field (so that its
 // scratch space is reused between queries) whose operator()(tri, q, out) writes `width`
-// numbers for q in triangle tri; `fill` outside the hull.
+// numbers for q in triangle tri; `fill` outside the hull, but for a query that
+// `hull_tolerance` gives a hull triangle (ridt/locate.hpp's tolerance): Answer then
+// extrapolates from that triangle, its q just outside.
 template <class Answer>
 void interpolate(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
                  std::size_t width, std::span<const Point> queries, std::span<double> out, double fill,
-                 unsigned threads) {
+                 unsigned threads, double hull_tolerance = 0) {
   const Input input(who, points, t, values, width, queries.size(), "queries", out, threads);
   const Field& field = input.field();
   std::vector<std::int32_t> where(queries.size());
-  locate(field.points, field.triangles, field.neighbors, queries, where, threads);
+  locate(field.points, field.triangles, field.neighbors, queries, where, threads, hull_tolerance);
   parallel_for(queries.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
     Answer answer(field);
     for (std::size_t k = first; k < last; ++k) {
@@ -406,27 +412,68 @@ void cover(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, uns
   });
 }
 
+// Calls take(tri, node, p, nullptr, f.first(tri)) for every node p of `grid` outside the hull
+// that `near` gives a hull triangle tri: p strictly beyond a hull side of tri (so that cover
+// took no triangle for it) and near tri, as location with that tolerance finds it. A node
+// beside a hull corner, near two triangles, goes to the first in the triangles' order. One
+// thread: the hull's triangles are few, and the nodes near them fewer.
+template <class Take>
+void cover_rim(const Field& f, const Axis& ax, const Axis& ay, const Grid& grid, const NearHull& near, Take& take) {
+  const std::size_t nx = grid.x.size(), ny = grid.y.size();
+  std::unordered_set<std::size_t> taken;
+  for (std::size_t tri = 0; tri < f.triangles.size() / 3; ++tri) {
+    int side = -1;
+    for (int i = 0; i < 3; ++i)
+      if (f.neighbor(tri, i) < 0) side = i;
+    if (side < 0) continue;
+    const int s = f.first(tri);
+    const Point &a = f.corner(tri, 0), &b = f.corner(tri, 1), &c = f.corner(tri, 2);
+    const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
+    const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
+    const auto [i0, i1] = ax.within(x0 - near.margin(x1 - x0), x1 + near.margin(x1 - x0));
+    const auto [j0, j1] = ay.within(y0 - near.margin(y1 - y0), y1 + near.margin(y1 - y0));
+    for (std::size_t j = j0; j < j1; ++j) {
+      for (std::size_t i = i0; i < i1; ++i) {
+        const Point p{ax.value(i), ay.value(j)};
+        bool outside = false;
+        for (int e = 0; e < 3; ++e)
+          outside =
+              outside || (f.neighbor(tri, e) < 0 && orient2d(f.corner(tri, next3(e)), f.corner(tri, prev3(e)), p) < 0);
+        if (!outside || !near(a, b, c, p)) continue;
+        const std::size_t node = grid.x_major ? ax.index(i) * ny + ay.index(j) : ay.index(j) * nx + ax.index(i);
+        if (taken.insert(node).second) take(tri, node, p, nullptr, s);
+      }
+    }
+  }
+}
+
 // Answer at every node of a grid (see cover), from a field already checked; `fill` outside
-// the hull.
+// the hull, but at a node that `hull_tolerance` gives a hull triangle (see cover_rim).
 template <class Answer>
 void answer_grid(const Field& field, const Axis& ax, const Axis& ay, const Grid& grid, std::size_t width,
-                 std::span<double> out, double fill, unsigned threads) {
+                 std::span<double> out, double fill, unsigned threads, double hull_tolerance = 0) {
   parallel_for(out.size(), threads, kGrain, [&](std::size_t first, std::size_t last) {
     std::fill(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(last), fill);
   });
-  cover(field, ax, ay, grid, threads, [&] {
+  auto make_take = [&] {
     return [&, answer = Answer(field)](std::size_t tri, std::size_t node, const Point& p, const double* w,
                                        int from) mutable { answer(tri, p, &out[node * width], w, from); };
-  });
+  };
+  cover(field, ax, ay, grid, threads, make_take);
+  if (const NearHull near(field.points, hull_tolerance); near.active()) {
+    auto take = make_take();
+    cover_rim(field, ax, ay, grid, near, take);
+  }
 }
 
 // The same from the caller's arrays, checked, and renumbered when there are many nodes.
 template <class Answer>
 void interpolate_grid(const char* who, std::span<const Point> points, const Triangulation& t, Values values,
-                      std::size_t width, const Grid& grid, std::span<double> out, double fill, unsigned threads) {
+                      std::size_t width, const Grid& grid, std::span<double> out, double fill, unsigned threads,
+                      double hull_tolerance = 0) {
   const Axis ax(who, "x", grid.x), ay(who, "y", grid.y);
   const Input input(who, points, t, values, width, grid.size(), "nodes", out, threads);
-  answer_grid<Answer>(input.field(), ax, ay, grid, width, out, fill, threads);
+  answer_grid<Answer>(input.field(), ax, ay, grid, width, out, fill, threads, hull_tolerance);
 }
 
 }  // namespace ridt::detail

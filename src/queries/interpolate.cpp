@@ -26,40 +26,45 @@ using detail::prev3;
 }  // namespace
 
 void interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
-                        std::span<const Point> queries, std::span<double> out, double fill, unsigned threads) {
-  detail::interpolate<Linear>("interpolate_linear", points, t, values, values.components, queries, out, fill, threads);
+                        std::span<const Point> queries, std::span<double> out, double fill, unsigned threads,
+                        double hull_tolerance) {
+  detail::interpolate<Linear>("interpolate_linear", points, t, values, values.components, queries, out, fill, threads,
+                              hull_tolerance);
 }
 
 void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
-                                  std::span<const Point> queries, std::span<double> out, double fill,
-                                  unsigned threads) {
+                                  std::span<const Point> queries, std::span<double> out, double fill, unsigned threads,
+                                  double hull_tolerance) {
   detail::interpolate<Natural>("interpolate_natural_neighbor", points, t, values, values.components, queries, out, fill,
-                               threads);
+                               threads, hull_tolerance);
 }
 
 void interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values, const Grid& grid,
-                        std::span<double> out, double fill, unsigned threads) {
-  detail::interpolate_grid<Linear>("interpolate_linear", points, t, values, values.components, grid, out, fill,
-                                   threads);
+                        std::span<double> out, double fill, unsigned threads, double hull_tolerance) {
+  detail::interpolate_grid<Linear>("interpolate_linear", points, t, values, values.components, grid, out, fill, threads,
+                                   hull_tolerance);
 }
 
 void interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
-                                  const Grid& grid, std::span<double> out, double fill, unsigned threads) {
+                                  const Grid& grid, std::span<double> out, double fill, unsigned threads,
+                                  double hull_tolerance) {
   detail::interpolate_grid<Natural>("interpolate_natural_neighbor", points, t, values, values.components, grid, out,
-                                    fill, threads);
+                                    fill, threads, hull_tolerance);
 }
 
 std::vector<double> interpolate_linear(std::span<const Point> points, const Triangulation& t, Values values,
-                                       std::span<const Point> queries, double fill, unsigned threads) {
+                                       std::span<const Point> queries, double fill, unsigned threads,
+                                       double hull_tolerance) {
   std::vector<double> out(queries.size() * values.components);
-  interpolate_linear(points, t, values, queries, out, fill, threads);
+  interpolate_linear(points, t, values, queries, out, fill, threads, hull_tolerance);
   return out;
 }
 
 std::vector<double> interpolate_natural_neighbor(std::span<const Point> points, const Triangulation& t, Values values,
-                                                 std::span<const Point> queries, double fill, unsigned threads) {
+                                                 std::span<const Point> queries, double fill, unsigned threads,
+                                                 double hull_tolerance) {
   std::vector<double> out(queries.size() * values.components);
-  interpolate_natural_neighbor(points, t, values, queries, out, fill, threads);
+  interpolate_natural_neighbor(points, t, values, queries, out, fill, threads, hull_tolerance);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "order/order.hpp"
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
+#include "queries/near.hpp"
 #include "runtime/parallel.hpp"
 #include "walk/mesh.hpp"
 
@@ -31,6 +32,8 @@ struct Result {
 
   const Point& corner(std::size_t t, int i) const { return points[triangles[3 * t + i]]; }
 
+  detail::NearHull near;  // whether a point outside answers from the hull triangle beside it
+
   // Whether the closed triangle t holds q.
   bool holds(std::size_t t, const Point& q) const {
     for (int i = 0; i < 3; ++i)
@@ -39,25 +42,31 @@ struct Result {
   }
 
   // Walks from triangle t towards q, crossing an edge that has q strictly on its far side,
-  // never the one it came in by. In a Delaunay triangulation such a walk cannot cycle
-  // (Edelsbrunner 1990), so it ends at a triangle that holds q, or at a hull edge with q
-  // beyond it: q is then outside the hull, whose edges' lines support it. t is left at the last
-  // triangle reached, and `steps` grows by the triangles it crossed. The step limit only guards
-  // against arrays that are not a Delaunay triangulation; a scan of every triangle answers then.
+  // never the one it came in by, nor a hull edge while another such edge leads on. In a
+  // Delaunay triangulation such a walk cannot cycle, whatever the point of view (Edelsbrunner
+  // 1990), so it ends at a triangle that holds q, or at one whose only edges with q beyond them
+  // are on the hull: q is then outside the hull, whose edges' lines support it, and beside
+  // that triangle, which answers when q is near it (see near). t is left at the last triangle
+  // reached, and `steps` grows by the triangles it crossed. The step limit only guards against
+  // arrays that are not a Delaunay triangulation; a scan of every triangle answers then.
   std::int32_t walk(std::size_t& t, const Point& q, std::size_t& steps) const {
     int from = 3;
     for (std::size_t s = 0; s <= size; ++s, ++steps) {
       int out = 3;
+      bool beyond_hull = false;
       for (int i = 0; i < 3; ++i) {
-        if (i == from) continue;
-        if (detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) < 0) {
+        if (i == from || detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) >= 0) continue;
+        if (neighbors[3 * t + i] >= 0) {
           out = i;
           break;
         }
+        beyond_hull = true;
       }
-      if (out == 3) return static_cast<std::int32_t>(t);
+      if (out == 3) {
+        const bool answers = !beyond_hull || near(corner(t, 0), corner(t, 1), corner(t, 2), q);
+        return answers ? static_cast<std::int32_t>(t) : -1;
+      }
       const std::int32_t u = neighbors[3 * t + out];
-      if (u < 0) return -1;
       from = 3;
       for (int j = 0; j < 3; ++j)
         if (neighbors[3 * std::size_t(u) + j] == static_cast<std::int32_t>(t)) from = j;
@@ -119,7 +128,7 @@ void locate_share(const Result& mesh, const Point* queries, std::size_t begin, s
 }  // namespace
 
 void locate(std::span<const Point> points, std::span<const VertexId> triangles, std::span<const std::int32_t> neighbors,
-            std::span<const Point> queries, std::span<std::int32_t> out, unsigned threads) {
+            std::span<const Point> queries, std::span<std::int32_t> out, unsigned threads, double tolerance) {
   detail::check_arrays("locate", points.size(), triangles, neighbors);
   if (out.size() != queries.size())
     throw InputError("locate: " + std::to_string(queries.size()) + " queries but room for " +
@@ -130,7 +139,7 @@ void locate(std::span<const Point> points, std::span<const VertexId> triangles, 
     std::fill(out.begin(), out.end(), -1);
     return;
   }
-  const Result mesh{points.data(), triangles.data(), neighbors.data(), size};
+  const Result mesh{points.data(), triangles.data(), neighbors.data(), size, detail::NearHull(points, tolerance)};
   // A share of fewer than some 16,000 queries is not worth a thread.
   detail::parallel_for(queries.size(), threads, 16384, [&](std::size_t first, std::size_t last) {
     locate_share(mesh, queries.data(), first, last, out.data());
@@ -138,9 +147,9 @@ void locate(std::span<const Point> points, std::span<const VertexId> triangles, 
 }
 
 std::vector<std::int32_t> locate(std::span<const Point> points, const Triangulation& triangulation,
-                                 std::span<const Point> queries, unsigned threads) {
+                                 std::span<const Point> queries, unsigned threads, double tolerance) {
   std::vector<std::int32_t> out(queries.size());
-  locate(points, triangulation.triangles, triangulation.neighbors, queries, out, threads);
+  locate(points, triangulation.triangles, triangulation.neighbors, queries, out, threads, tolerance);
   return out;
 }
 

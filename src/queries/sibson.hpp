@@ -21,13 +21,14 @@ class Sibson {
 
   void interpolate(std::size_t tri, const Point& q, double* out) {
     const std::size_t m = f_.values.components;
-    // At a vertex, its value; on a hull edge, linear along it (the cell of q would be open).
+    // At a vertex, its value; on a hull edge, linear along it (the cell of q would be open),
+    // and so beyond one, where a tolerance at the hull gives tri a query just outside it.
     for (int i = 0; i < 3; ++i) {
       if (f_.corner(tri, i) == q) {
         std::copy_n(f_.value(f_.vertex(tri, i)), m, out);
         return;
       }
-      if (f_.neighbor(tri, i) < 0 && orient2d(f_.corner(tri, next3(i)), f_.corner(tri, prev3(i)), q) == 0) {
+      if (f_.neighbor(tri, i) < 0 && orient2d(f_.corner(tri, next3(i)), f_.corner(tri, prev3(i)), q) <= 0) {
         f_.linear(tri, q, out);
         return;
       }

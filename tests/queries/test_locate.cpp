@@ -9,6 +9,7 @@
 #include "helpers.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/generate.hpp"
+#include "ridt/interpolate.hpp"
 #include "ridt/locate.hpp"
 
 namespace ridt {
@@ -129,6 +130,46 @@ TEST(Locate, EmptyTriangulationAndBadArrays) {
   const std::vector<VertexId> good = {0, 1, 2};
   EXPECT_THROW(locate(pts, good, std::vector<std::int32_t>{-1, 3, -1}, queries, out), InputError);
   EXPECT_THROW(locate(pts, good, neighbors, queries, std::span<std::int32_t>(out.data(), 1)), InputError);
+}
+
+// scipy's find_simplex tolerance: points that rounding put an ulp or so outside a hull with
+// long runs of collinear points (a grid's sides) get the hull triangle beside them, those
+// farther out -1, and points inside the same answers as without it.
+TEST(Locate, ScipyToleranceAcceptsPointsJustOutsideTheHull) {
+  std::vector<Point> pts;
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 20; ++j) pts.push_back({i / 20.0, j / 20.0});
+  const Triangulation tri = test::triangulate_checked(pts);
+  const double up = std::nextafter(1.0, 2.0), down = -std::numeric_limits<double>::denorm_min();
+  std::vector<Point> near, far;
+  for (int k = 0; k <= 97; ++k) {
+    const double y = k / 97.0;
+    near.insert(near.end(), {{up, y}, {y, up}, {down, y}, {y, down}, {std::nextafter(up, 2.0), y}});
+    far.insert(far.end(), {{1 + 1e-12, y}, {y, -1e-12}, {2, y}, {y, -5}});
+  }
+  const std::vector<std::int32_t> found = locate(pts, tri, near, 2, kScipyTolerance);
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    ASSERT_GE(found[i], 0) << "query " << i;
+    const VertexId* v = &tri.triangles[3 * static_cast<std::size_t>(found[i])];
+    for (const double w : barycentric(pts[v[0]], pts[v[1]], pts[v[2]], near[i])) {
+      EXPECT_GE(w, -kScipyTolerance) << "query " << i;
+      EXPECT_LE(w, 1 + kScipyTolerance) << "query " << i;
+    }
+  }
+  EXPECT_EQ(locate(pts, tri, near, 1), std::vector<std::int32_t>(near.size(), -1));
+  EXPECT_EQ(locate(pts, tri, far, 1, kScipyTolerance), std::vector<std::int32_t>(far.size(), -1));
+  const std::vector<Point> inside = random_queries(2000, -0.1, 1.1, 5);
+  EXPECT_EQ(locate(pts, tri, inside, 1, kScipyTolerance), locate(pts, tri, inside, 1, 0));
+}
+
+// The tolerance's bounding box is in absolute units, as scipy's: at a scale of 10^6 an ulp
+// outside the box is more than 100 DBL_EPSILON outside it, and -1.
+TEST(Locate, ScipyToleranceBoxIsAbsolute) {
+  const std::vector<Point> pts = {{0, 0}, {1e6, 0}, {1e6, 1e6}, {0, 1e6}, {4e5, 3e5}};
+  const Triangulation tri = test::triangulate_checked(pts);
+  const std::vector<Point> q = {{std::nextafter(1e6, 2e6), 5e5}, {-1e-300, 5e5}};
+  EXPECT_EQ(locate(pts, tri, q, 1, kScipyTolerance)[0], -1);
+  EXPECT_GE(locate(pts, tri, q, 1, kScipyTolerance)[1], 0);
 }
 
 }  // namespace
