@@ -37,7 +37,7 @@ bash scripts/deps.sh bench >&2
 log "build ($build, Release, with the Python module)"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=ON \
   -DRIDT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$py" >/dev/null
-ninja -C "$build" ridt_tool ridt_bench_serial ridt_bench_threads ridt_bench_peers ridt_cgal_triangulate ridt_python >/dev/null
+ninja -C "$build" ridt_tool ridt_bench_serial ridt_bench_threads ridt_bench_peers ridt_cgal_triangulate ridt_python_package >/dev/null
 
 if [ "$mode" = quick ]; then
   serial_args=(--max-n 100000 --reps 3)

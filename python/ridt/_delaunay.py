@@ -12,8 +12,10 @@ from . import _api, _core
 
 # Qhull options that only make Qhull more robust or change what it reports about facets; ridt
 # is exact and reports the same things whatever they say, so they are accepted and ignored.
-# QJ is not among them: Qhull's joggle moves the points, so that duplicates become vertices and
-# the triangles are those of other points; ridt cannot give that output, and refuses it.
+# QJ (joggle) asks that every input point be a vertex, which Qhull gets by moving the points
+# by tiny random amounts; ridt's exact triangulation of distinct points already has every point
+# a vertex, so QJ is taken (with the Qbb that Qhull sets with it), and refused where the points
+# hold copies, which only moving them could make vertices.
 _HARMLESS_QHULL_OPTIONS = {"Qbb", "Qc", "Qz", "Qt", "Q12", "Qx", "Pp", "Qs", "Qv", "Qbk:0Bk:0"}
 
 # scipy's tolerance of find_simplex and of its interpolators at the hull: 100 DBL_EPSILON.
@@ -48,13 +50,31 @@ def _check_qhull_options(options: Optional[str], incremental: bool = False) -> N
             raise ValueError(f"Qhull options {[o.encode() for o in bad]!r} are incompatible with incremental mode")
     accepted = f"(accepted and ignored: {' '.join(sorted(_HARMLESS_QHULL_OPTIONS))})"
     for token in tokens:
-        if token.startswith("QJ"):
-            raise ValueError(f"qhull_options {token!r} is not supported: Qhull's joggle moves the points by random "
-                             f"amounts, so that its triangles are those of other points and duplicates become "
-                             f"vertices; ridt triangulates the points given, exactly {accepted}")
+        if _is_joggle(token):
+            continue
         if token not in _HARMLESS_QHULL_OPTIONS:
             raise ValueError(f"qhull_options {token!r} is not supported: ridt is not Qhull; it is exact and takes "
                              f"no tuning options {accepted}")
+
+
+def _is_joggle(token: str) -> bool:
+    """QJ, or QJn with Qhull's joggle factor n."""
+    if not token.startswith("QJ"):
+        return False
+    try:
+        return token == "QJ" or float(token[2:]) >= 0
+    except ValueError:
+        return False
+
+
+def _refuse_joggled_copies(options: Optional[str], tri: _core.Triangulation, where: str) -> None:
+    """With QJ every input point must be a vertex: copies of a point cannot be, unmoved."""
+    tokens = _option_tokens(options) or []
+    if any(_is_joggle(t) for t in tokens) and len(tri.duplicates):
+        d = tri.duplicates.view(np.intc)
+        raise ValueError(f"{where}: qhull_options QJ asks every input point to be a vertex, but point {d[0, 0]} "
+                         f"equals point {d[0, 1]} ({len(d)} such copies); ridt does not move points apart "
+                         f"as Qhull's joggle does")
 
 
 def _qhull_flags(options: Optional[str], incremental: bool = False, furthest_site: bool = False) -> frozenset:
@@ -67,6 +87,8 @@ def _qhull_flags(options: Optional[str], incremental: bool = False, furthest_sit
         flags = {"Qc"} if incremental else {"Qbb", "Qc", "Qz"}
     else:
         flags = set(tokens) & {"Qbb", "Qc", "Qz"}
+        if any(_is_joggle(t) for t in tokens):
+            flags |= {"Qbb", "QJ"}  # Qhull sets Qbb with QJ
     if furthest_site:
         flags.discard("Qz")
     return frozenset(flags)
@@ -106,8 +128,9 @@ class Delaunay:
         Allow add_points (scipy's incremental mode); the result always equals a fresh build.
     qhull_options : str, optional
         Accepted when it holds only options that concern Qhull's robustness or what it reports
-        (Qbb, Qc, Qz, Qt, Q12, Qx, ...); anything else raises ValueError, QJ (joggle) too,
-        since it changes Qhull's output. As in Qhull, Qbb scales the paraboloid's lift
+        (Qbb, Qc, Qz, Qt, Q12, Qx, ...), and QJ (joggle: every input point a vertex, which
+        ridt's exact triangulation gives unmoved; ValueError where the points hold copies, and
+        Qbb set with it, as Qhull sets it); anything else raises ValueError. As in Qhull, Qbb scales the paraboloid's lift
         (paraboloid_scale, paraboloid_shift; with Qz over 1.1 times the highest lift, Qhull's
         point at infinity) and Qc lists the duplicates in coplanar. None means scipy's default,
         "Qbb Qc Qz Q12", or "Qc" with incremental=True, where Qbb and Qz raise ValueError, as in
@@ -155,6 +178,7 @@ class Delaunay:
         self._options = dict(method=method, order=order, locate=locate, seed=seed, furthest_site=bool(furthest_site))
         self._qhull = _qhull_flags(qhull_options, bool(incremental), bool(furthest_site))
         self._incremental = bool(incremental)
+        self._qhull_options = qhull_options
         self._run(progress)
         if self._tri.warning:
             warnings.warn(f"ridt: {self._tri.warning}: the triangulation is empty", DegenerateInputWarning,
@@ -162,6 +186,7 @@ class Delaunay:
 
     def _run(self, progress: _api.ProgressLike = None) -> None:
         self._tri = _api.run(self._points, threads=self._threads, progress=progress, **self._options)
+        _refuse_joggled_copies(getattr(self, "_qhull_options", None), self._tri, "ridt.Delaunay")
         self.furthest_site = self._options["furthest_site"]
         if self.furthest_site:
             # Qhull's facets of the upper hull come clockwise; the same triangles, so turned.
@@ -273,8 +298,8 @@ class Delaunay:
         low, high = float(z.min()), float(z.max())
         # Qhull's Qbb: the lifted coordinate scaled to [0, m], m the largest coordinate's size,
         # over [low, 1.1 high] with Qz (its point at infinity sits at 1.1 times the highest
-        # lift), else over [low, high].
-        span = (1.1 if "Qz" in self._qhull else 1.0) * high - low
+        # lift; not with QJ, where Qhull scales before it adds that point), else over [low, high].
+        span = (1.1 if "Qz" in self._qhull and "QJ" not in self._qhull else 1.0) * high - low
         if not span > 0:
             return 1.0, 0.0
         scale = float(np.abs(self._points).max()) / span
@@ -387,6 +412,7 @@ class Delaunay:
             self._inc = _core.Incremental(self._points[:len(self._points) - len(more)], self._tri)
         self._inc.add(more)
         self._tri = self._inc.triangulation()
+        _refuse_joggled_copies(getattr(self, "_qhull_options", None), self._tri, "ridt.Delaunay.add_points")
         self._simplices = self._tri.triangles.view(np.intc)
         self._neighbors = self._tri.neighbors.view(np.intc)
         self._clear()

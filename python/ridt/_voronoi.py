@@ -9,7 +9,7 @@ from typing import Any, Dict, List, Optional, Tuple
 import numpy as np
 
 from . import _api, _core
-from ._delaunay import _check_qhull_options, _qhull_flags, _refuse_masked
+from ._delaunay import _check_qhull_options, _qhull_flags, _refuse_joggled_copies, _refuse_masked
 
 class Voronoi:
     """Voronoi diagram in the plane, with scipy.spatial.Voronoi's attributes.
@@ -67,6 +67,8 @@ class Voronoi:
         at_infinity = "Qz" in _qhull_flags(qhull_options, bool(incremental), bool(furthest_site))
         self.furthest_site = bool(furthest_site)
         self._build(_api.as_points(points, "points", "ridt.Voronoi"), _api.thread_count(threads), at_infinity)
+        self._qhull_options = qhull_options
+        _refuse_joggled_copies(qhull_options, self._tri, "ridt.Voronoi")
 
     def _build(self, points: np.ndarray, threads: int, at_infinity: bool,
                tri: Optional[_core.Triangulation] = None) -> None:
@@ -117,6 +119,7 @@ class Voronoi:
             self._inc.add(more)
             tri = self._inc.triangulation()
         self._build(np.ascontiguousarray(np.concatenate([self._points, more])), self._threads, self._at_infinity, tri)
+        _refuse_joggled_copies(getattr(self, "_qhull_options", None), self._tri, "ridt.Voronoi.add_points")
 
     def close(self) -> None:
         """Ends incremental mode (scipy's): add_points then raises RuntimeError."""

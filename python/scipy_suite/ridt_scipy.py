@@ -15,8 +15,8 @@ starts with "outside ridt's claim"; the summary counts them. Any other skip is r
 such, and a test that fails fails the run. Every ridt.Delaunay a test builds is checked by the
 exact validator as it is made, and a test listed in exceptions.txt (one that pins Qhull's
 arbitrary choice among equally valid answers) must fail, strictly, with every triangulation it
-built valid; one listed as "refused option:" (it passes QJ, which ridt refuses) must fail by
-ridt's ValueError.
+built valid; one listed as "refused option:" (it passes QJ on points with copies, which ridt
+refuses) must fail by ridt's ValueError.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ import ridt
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUTSIDE = "outside ridt's claim"
-REFUSED = "refused option:"  # exceptions.txt: the test passes a Qhull option ridt refuses
+REFUSED = "refused option:"  # exceptions.txt: the test passes QJ where ridt refuses it
 
 _used: Counter = Counter()  # how often each replacement was called, over the whole session
 

@@ -81,6 +81,17 @@ def test_incremental_refuses_what_scipy_refuses(cls, options):
 
 @pytest.mark.parametrize("options", ["QJ", "Qbb Qc Qz Q12 QJ", "QJ Pp", "QJ0.001"])
 @pytest.mark.parametrize("cls", [ridt.Delaunay, ridt.Voronoi])
-def test_joggle_is_refused_by_name(cls, options):
-    with pytest.raises(ValueError, match="'QJ[0-9.]*'.*joggle"):
-        cls(PTS, qhull_options=options)
+def test_joggle_makes_every_point_a_vertex_or_is_refused(cls, options):
+    # Distinct points: every one a vertex, unmoved, as joggling is meant to give.
+    got = cls(PTS, qhull_options=options)
+    tri = got if cls is ridt.Delaunay else ridt.Delaunay(PTS, qhull_options=options)
+    assert np.array_equal(np.unique(tri.simplices), np.arange(len(PTS)))
+    if cls is ridt.Delaunay:  # Qhull sets Qbb with QJ: the same lift as scipy's
+        ref = ss.Delaunay(PTS, qhull_options=options)
+        # (Qhull's from the joggled points: off by the joggle's size, some 1e-10 by default)
+        off = 1e-2 if "QJ0" in options else 1e-8
+        assert got.paraboloid_scale == pytest.approx(ref.paraboloid_scale, rel=off)
+        assert got.paraboloid_shift == pytest.approx(ref.paraboloid_shift, rel=off)
+    # Copies of a point cannot all be vertices without moving them: refused by name.
+    with pytest.raises(ValueError, match="QJ.*copies"):
+        cls(np.concatenate([PTS, PTS[:2]]), qhull_options=options)
