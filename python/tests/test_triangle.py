@@ -50,6 +50,17 @@ def test_the_convex_hull_switch():
     assert ridt.check(ell, whole["triangles"], segments=loop(0, 6))[0]
 
 
+def smallest_angle(t) -> float:
+    """The smallest angle of any triangle of a result, in degrees."""
+    p = t["vertices"][t["triangles"]]
+    worst = 180.0
+    for i in range(3):
+        u, w = p[:, (i + 1) % 3] - p[:, i], p[:, (i + 2) % 3] - p[:, i]
+        cross = np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
+        worst = min(worst, float(np.degrees(np.arctan2(cross, (u * w).sum(axis=1))).min()))
+    return worst
+
+
 def test_quality_switches():
     tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4)),
            "holes": [[5, 5]], "regions": [[1, 1, 3.5, 0.5]]}
@@ -60,11 +71,12 @@ def test_quality_switches():
     p = t["vertices"][t["triangles"]]
     area = 0.5 * ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
     assert (area > 0).all() and area.max() <= 2 and abs(area.sum() - 96) < 1e-9
+    assert smallest_angle(t) >= 30 - 1e-9  # every input angle is 90 degrees: no excuse
     assert t["vertex_markers"].shape == (n, 1)
     regional = triangle.triangulate(tri, "pa")  # each region's own bound: 0.5
     assert len(regional["triangles"]) > len(t["triangles"])
     quiet = triangle.triangulate(tri, "pq")  # q alone: 20 degrees
-    assert len(quiet["triangles"]) >= 8
+    assert smallest_angle(quiet) >= 20 - 1e-9 and len(quiet["vertices"]) < len(t["vertices"])
     kept = triangle.triangulate(tri, "pq30Y")  # no point on the boundary
     assert len(kept["segments"]) == 8
 
