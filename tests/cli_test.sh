@@ -424,5 +424,17 @@ stderr_has "laszip"; absent "$dir/x.ply"
 expect 2 "unknown returns" -- "$ridt" tin "$dir/t.csv" -o "$dir/x.ply" --returns second
 stderr_has "first, last or single"
 
+# A table's first line is a header only where its coordinate fields are not numbers: a first row
+# with a word in a fourth column is a row; a row wider than the first line is refused by line.
+printf '0 0 1 99 junk\n10 0 2 98 a\n0 10 3 97 b\n' >"$dir/words.txt"
+expect 0 "a table whose rows end in words" -- "$ridt" tin "$dir/words.txt" -o "$dir/words.ply" --stats
+stdout_has "^points 3$"
+printf '0 0 1\n10 0 2 5\n0 10 3\n' >"$dir/ragged.txt"
+expect 2 "a ragged table" -- "$ridt" tin "$dir/ragged.txt" -o "$dir/ragged.ply"
+stderr_has "ragged.txt:2: expected 3 fields, as line 1 has, got 4"; absent "$dir/ragged.ply"
+printf '0,0,height\n10,0,2\n0,10,3\n' >"$dir/half.csv"
+expect 2 "a first line half header" -- "$ridt" tin "$dir/half.csv" -o "$dir/half.ply"
+stderr_has "half.csv:1: field 3"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]
