@@ -744,6 +744,20 @@ TEST_F(IoTest, WriteSvgDegenerateInputs) {
   EXPECT_EQ(read_file("wide.svg").find("nan"), std::string::npos);
 }
 
+// Points 1e-310 apart: the scale 1000 / 1e-310 overflows, and the viewBox was "inf"; the box
+// is brought near 1 by powers of two first, so the drawing is the unit square's.
+TEST_F(IoTest, SvgOfATinyBoxIsTheUnitSquaresDrawing) {
+  Square s;
+  write_triangulation(path("one.svg"), s.points, s.t, 0);
+  for (Point& p : s.points) p.x *= 1e-310, p.y *= 1e-310;
+  write_triangulation(path("tiny.svg"), s.points, s.t, 0);
+  const std::string tiny = read_file("tiny.svg");
+  EXPECT_EQ(tiny.find("inf"), std::string::npos);
+  EXPECT_EQ(tiny.find("nan"), std::string::npos);
+  EXPECT_TRUE(Has(tiny, "viewBox=\"-20 -20 1040 1040\""));
+  EXPECT_TRUE(Has(tiny, "<circle cx=\"0\" cy=\"1000\""));
+}
+
 TEST_F(IoTest, SvgRefusesTooManyTrianglesAndCreatesNothing) {
   Triangulation t;
   t.triangles.assign(3 * (kSvgMaxTriangles + 1), 0);
