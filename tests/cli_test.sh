@@ -436,5 +436,47 @@ printf '0,0,height\n10,0,2\n0,10,3\n' >"$dir/half.csv"
 expect 2 "a first line half header" -- "$ridt" tin "$dir/half.csv" -o "$dir/half.ply"
 stderr_has "half.csv:1: field 3"
 
+# Outputs that are not regular files: a symbolic link's target is written and the link kept, a
+# FIFO and /dev/stdout are written in place, in order (no temporary file, no rename).
+expect 0 "generate to a new file" -- "$ridt" generate -n 5 -o "$dir/real.txt"
+ln -s real.txt "$dir/link.txt"
+expect 0 "generate through a link" -- "$ridt" generate -n 7 -o "$dir/link.txt"
+[ -L "$dir/link.txt" ] && pass || fail "the link was replaced"
+[ "$(wc -l <"$dir/real.txt")" -eq 7 ] && pass || fail "the link's target was not written"
+ln -s made.txt "$dir/dangling.txt"
+expect 0 "generate through a dangling link" -- "$ridt" generate -n 3 -o "$dir/dangling.txt"
+[ -L "$dir/dangling.txt" ] && [ "$(wc -l <"$dir/made.txt")" -eq 3 ] && pass || fail "a dangling link's target was not made"
+mkfifo "$dir/fifo"
+timeout 30 cat "$dir/fifo" >"$dir/fifo.out" &
+reader=$!
+expect 0 "generate into a FIFO" -- timeout 20 "$ridt" generate -n 6 -o "$dir/fifo"
+wait "$reader"
+[ -p "$dir/fifo" ] && pass || fail "the FIFO was replaced"
+[ "$(wc -l <"$dir/fifo.out")" -eq 6 ] && pass || fail "the FIFO's reader got $(wc -l <"$dir/fifo.out") lines"
+mkfifo "$dir/fifo.ele"
+timeout 30 cat "$dir/fifo.ele" >"$dir/fifo.ele.out" &
+reader=$!
+expect 0 "triangulate into a FIFO" -- timeout 20 "$ridt" triangulate "$dir/uniform.txt" -o "$dir/fifo.ele"
+wait "$reader"
+expect 0 "triangulate to .ele" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/plain.ele"
+cmp -s "$dir/fifo.ele.out" "$dir/plain.ele" && pass || fail "the FIFO's .ele differs"
+# A .bin, written as the triangles are sorted where it is a file, comes after the sort here.
+mkfifo "$dir/fifo.bin"
+timeout 30 cat "$dir/fifo.bin" >"$dir/fifo.bin.out" &
+reader=$!
+expect 0 "triangulate .bin into a FIFO" -- timeout 20 "$ridt" triangulate "$dir/uniform.txt" -o "$dir/fifo.bin"
+wait "$reader"
+expect 0 "triangulate to .bin" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/plain.bin"
+cmp -s "$dir/fifo.bin.out" "$dir/plain.bin" && pass || fail "the FIFO's .bin differs"
+[ "$(timeout 20 "$ridt" generate -n 5 -o /dev/stdout | wc -l)" -eq 5 ] && pass || fail "-o /dev/stdout printed nothing"
+expect 0 "generate to /dev/null" -- "$ridt" generate -n 10 -o /dev/null
+if [ -c /dev/null ]; then pass; else
+  fail "/dev/null is no longer a character device"
+  if [ "$(id -u)" -eq 0 ]; then rm -f /dev/null; mknod -m 666 /dev/null c 1 3; fi
+fi
+mkdir "$dir/adir.txt"
+expect 2 "an output that is a directory" -- "$ridt" generate -n 5 -o "$dir/adir.txt"
+stderr_has "is a directory"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

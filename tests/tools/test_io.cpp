@@ -284,12 +284,17 @@ TEST_F(IoTest, NanAndInfinityRejectedInText) {
 TEST_F(IoTest, NanAndInfinityRejectedInBin) {
   std::vector<Point> pts(20, Point{1, 2});
   pts[12].y = std::numeric_limits<double>::quiet_NaN();
-  // write_points does not judge the values; the reader does.
-  write_points(path("n.bin"), pts);
+  // The writer refuses them (nothing written); a file made otherwise is refused by the reader.
+  EXPECT_TRUE(Has(error_of([&] { write_points(path("n.bin"), pts); }), "not finite"));
+  EXPECT_TRUE(listing().empty());
+  const auto raw = [&](const std::string& name) {
+    write_file(name, std::string(reinterpret_cast<const char*>(pts.data()), pts.size() * sizeof(Point)));
+  };
+  raw("n.bin");
   EXPECT_EQ(error_of([&] { read_points(path("n.bin")); }), path("n.bin") + ": point 12 has a NaN coordinate");
   pts[12].y = 0;
   pts[3].x = -std::numeric_limits<double>::infinity();
-  write_points(path("i.bin"), pts);
+  raw("i.bin");
   EXPECT_TRUE(Has(error_of([&] { read_points(path("i.bin")); }), "point 3 has an infinite coordinate"));
 }
 
@@ -756,6 +761,26 @@ TEST_F(IoTest, SvgOfATinyBoxIsTheUnitSquaresDrawing) {
   EXPECT_EQ(tiny.find("nan"), std::string::npos);
   EXPECT_TRUE(Has(tiny, "viewBox=\"-20 -20 1040 1040\""));
   EXPECT_TRUE(Has(tiny, "<circle cx=\"0\" cy=\"1000\""));
+}
+
+// A NaN or an infinity is never written as a coordinate: the writer fails, naming the file, and
+// leaves nothing; values (interpolate's fill) are written as "nan".
+TEST_F(IoTest, NonFiniteCoordinatesAreNeverWritten) {
+  Square s;
+  s.points[2].x = std::numeric_limits<double>::quiet_NaN();
+  for (const char* name : {"p.txt", "p.node", "p.bin"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(Has(error_of([&] { write_points(path(name), s.points, 0, 2); }), "cannot write " + path(name)));
+  }
+  s.points[2].x = std::numeric_limits<double>::infinity();
+  for (const char* name : {"t.off", "t.obj", "t.ply", "t.svg"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(Has(error_of([&] { write_triangulation(path(name), s.points, s.t, 0); }), "not finite"));
+  }
+  EXPECT_TRUE(listing().empty());
+  const std::vector<double> v = {1, std::numeric_limits<double>::quiet_NaN()};
+  write_values(path("v.csv"), std::vector<Point>{{0, 0}, {1, 1}}, v, 1);
+  EXPECT_EQ(read_file("v.csv"), "x,y,v0\n0,0,1\n1,1,nan\n");
 }
 
 TEST_F(IoTest, SvgRefusesTooManyTrianglesAndCreatesNothing) {

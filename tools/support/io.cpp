@@ -88,7 +88,8 @@ void write_triangulation(const std::string& path, std::span<const Point> points,
 
 SortedOutput::SortedOutput(const std::string& path) : path_(path) {
   const Format& f = format_of(path, &Format::write_triangulation, "output");
-  if (f.put_sorted == nullptr) return;
+  // A device or a pipe takes its bytes in order only: the file is written after the sort.
+  if (f.put_sorted == nullptr || output_target(path).in_place) return;
   writer_ = std::make_unique<Writer>(path);
   put_ = f.put_sorted;
 }

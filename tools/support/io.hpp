@@ -7,7 +7,8 @@
 // Triangles:  .ele (Triangle's format, numbered from the input .node's first index, else 0),
 //             .neigh (Triangle's neighbour file, -1 on the hull), .off, .obj, .svg (a drawing),
 //             .bin (little-endian uint32 triples). Every file is written to a temporary
-//             name beside the target and renamed, so a failure never leaves half a file.
+//             name beside the target and renamed, so a failure never leaves half a file; a
+//             device or a pipe is written in place (Writer, writer.hpp).
 #pragma once
 
 #include <array>
