@@ -351,6 +351,36 @@ expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switche
 [ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"
 absent "$dir/m.off"
+# An output that is an input is refused before anything is written: a .poly of no vertices reads
+# them from the .node beside it, which -o box.ele would overwrite.
+mkdir "$dir/own"
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' >"$dir/own/box.node"
+printf '0 2 0 0\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$dir/own/box.poly"
+cp "$dir/own/box.node" "$dir/own/box.node.orig"
+expect 2 "mesh over its own .node" -- "$ridt" mesh "$dir/own/box.poly" -o "$dir/own/box.ele"
+stderr_has "is the input"; absent "$dir/own/box.ele"; absent "$dir/own/box.edge"
+cmp -s "$dir/own/box.node" "$dir/own/box.node.orig" && pass || fail "mesh overwrote its input .node"
+expect 0 "mesh beside its .node" -- "$ridt" mesh "$dir/own/box.poly" -o "$dir/own/out.ele"
+expect 2 "triangulate over its input" -- "$ridt" triangulate "$dir/own/box.node" -o "$dir/own/box.node"
+ln -s box.node "$dir/own/alias.node"
+expect 2 "triangulate through a link to its input" -- "$ridt" triangulate "$dir/own/alias.node" -o "$dir/own/box.node"
+cmp -s "$dir/own/box.node" "$dir/own/box.node.orig" && pass || fail "triangulate overwrote its input"
+# A mesh that cannot be written removes only what it made: a directory in the way of one of its
+# files is an input error, found before any file is written; an unrelated .neigh stays.
+echo "not mine" >"$dir/own/e2.neigh"
+mkdir "$dir/own/e2.edge"
+expect 2 "mesh with a directory as .edge" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/own/e2.ele"
+stderr_has "e2.edge: it is a directory"; absent "$dir/own/e2.ele"; absent "$dir/own/e2.node"
+[ -d "$dir/own/e2.edge" ] && [ "$(cat "$dir/own/e2.neigh")" = "not mine" ] && pass || fail "mesh removed what it did not make"
+mkdir -p "$dir/own/e3.edge/inside"
+expect 2 "mesh with a full directory as .edge" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/own/e3.ele" --neighbours
+[ -d "$dir/own/e3.edge/inside" ] && pass || fail "mesh emptied a directory"
+absent "$dir/own/e3.ele"; absent "$dir/own/e3.neigh"
+mkdir "$dir/own/empty.ele"
+expect 2 "mesh onto a directory .ele" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/own/empty.ele"
+[ -d "$dir/own/empty.ele" ] && pass || fail "mesh removed the directory empty.ele"
+absent "$dir/own/empty.node"
+[ -z "$(ls "$dir/own" | grep tmp)" ] && pass || fail "a temporary file was left: $(ls "$dir/own")"
 # Text formatted on threads (runs of 32768 lines side by side) is the file one thread writes.
 awk 'BEGIN { n = 70000; print n, 2, 0, 0
   for (i = 0; i < n; i++) { a = 6.283185307179586 * i / n; r = 1 + 0.2 * sin(37 * a)

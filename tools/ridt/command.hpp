@@ -46,6 +46,14 @@ std::size_t byte_size(const std::string& text, const char* what);
 /// The box of --box ("x0,y0,x1,y1"), or the points' box and 10 % around when `text` is empty.
 io::Box box_option(const std::string& text, std::span<const Point> points);
 
+/// InputError where an output is the same regular file as an input (another name or a link to
+/// it too): writing it would destroy what is read. Asked before anything is written.
+void refuse_overwriting(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
+
+/// InputError naming `option` and `why` where `given` (an option given that the run would
+/// ignore).
+void refuse_ignored(bool given, const std::string& option, const std::string& why);
+
 /// The threads a --threads value asks for: itself, or every hardware thread for 0.
 unsigned thread_count(unsigned asked);
 

@@ -85,6 +85,7 @@ Command add_voronoi(CLI::App& app) {
                   "10 % around)");
   vor->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {vor, [a] {
+            refuse_overwriting({a->input}, {a->output});
             const io::PointFile p = io::read_points(a->input, thread_count(a->threads));
             Options o;
             o.method = Method::Auto;

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <thread>
 
 #include "command.hpp"
@@ -59,6 +60,23 @@ io::Box box_option(const std::string& text, std::span<const Point> points) {
   if (b.size() != 4 || !(b[0] < b[2]) || !(b[1] < b[3]))
     throw InputError("--box: give x0,y0,x1,y1 with x0 < x1 and y0 < y1");
   return {b[0], b[1], b[2], b[3]};
+}
+
+void refuse_overwriting(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+  namespace fs = std::filesystem;
+  for (const std::string& in : inputs) {
+    std::error_code ec;
+    // A device or a pipe may be read and written at once (/dev/stdin and /dev/stdout of a
+    // terminal are one device); a regular file would be replaced.
+    if (in.empty() || !fs::is_regular_file(in, ec)) continue;
+    for (const std::string& out : outputs)
+      if (!out.empty() && fs::equivalent(in, out, ec))
+        throw InputError("the output " + out + " is the input " + in + ": it would be overwritten; give another name");
+  }
+}
+
+void refuse_ignored(bool given, const std::string& option, const std::string& why) {
+  if (given) throw InputError(option + " " + why);
 }
 
 unsigned thread_count(unsigned asked) { return asked != 0 ? asked : std::max(1u, std::thread::hardware_concurrency()); }

@@ -68,6 +68,7 @@ int run(const Args& a) {
   if (a.queries.empty() == a.grid.empty()) throw InputError("give either a QUERIES file or --grid, not both");
   if (a.method != "linear" && a.method != "natural" && a.method != "nearest")
     throw InputError("unknown method '" + a.method + "' (use linear, natural or nearest)");
+  refuse_overwriting({a.points, a.values, a.queries}, {a.output});
   const io::PointFile p = io::read_points(a.points, thread_count(a.threads));
   std::size_t components = 0;
   const std::vector<double> values = io::read_values(a.values, components);

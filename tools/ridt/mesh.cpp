@@ -72,41 +72,39 @@ void apply_switches(Args& a) {
   }
 }
 
-// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
-// OUT.svg, its segments apart.
-void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
+// The files `a` asks for: OUT.svg, or OUT.ele and the files beside it.
+std::vector<std::string> outputs(const Args& a) {
   const std::string extension = std::filesystem::path(a.output).extension().string();
-  if (extension == ".svg") {
-    std::vector<Point> all = g.points;
-    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-    return io::write_mesh_svg(a.output, all, t, t.edges);
-  }
+  if (extension == ".svg") return {a.output};
   if (extension != ".ele")
     throw InputError(
         "mesh writes Triangle's files or a drawing: give -o OUT.ele (OUT.node and OUT.edge are "
         "written beside it) or OUT.svg");
-  const int first = a.zero_based ? 0 : g.first_index;
-  const std::filesystem::path base = std::filesystem::path(a.output).replace_extension();
-  const std::string node = base.string() + ".node", edge = base.string() + ".edge", neigh = base.string() + ".neigh";
+  return io::mesh_file_paths(a.output, a.neighbours);
+}
+
+// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
+// OUT.svg, its segments apart.
+void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
   std::vector<Point> all = g.points;
   all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-  try {
-    const unsigned threads = thread_count(a.threads);
-    io::write_elements(a.output, t.triangles,
-                       a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(), first,
-                       threads);
-    io::write_points(node, all, first, threads);
-    io::write_edges(edge, t.edges, first, threads);
-    if (a.neighbours) io::write_triangulation(neigh, all, t, first);
-  } catch (...) {
-    for (const std::string& f : {a.output, node, edge, neigh}) std::filesystem::remove(f);
-    throw;
-  }
+  if (std::filesystem::path(a.output).extension() == ".svg") return io::write_mesh_svg(a.output, all, t, t.edges);
+  io::MeshFiles m;
+  m.points = all;
+  m.triangles = std::span(t.triangles).first(3 * t.size());
+  if (a.attributes) m.attributes = t.attributes;
+  m.edges = t.edges;
+  if (a.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
+  m.first_index = a.zero_based ? 0 : g.first_index;
+  io::write_mesh_files(a.output, m, thread_count(a.threads));
 }
 
 int run(Args a) {
   apply_switches(a);
+  const std::vector<std::string> out = outputs(a);
+  refuse_overwriting({a.input}, out);
   const io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
+  refuse_overwriting({g.node_file}, out);
   Options o;
   o.method = parse<Method>(a.method);
   o.threads = a.threads;

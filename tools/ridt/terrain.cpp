@@ -78,6 +78,7 @@ void print_stats(const Tin& tin, double write_s, std::size_t cells) {
 }
 
 int run_tin(const Args& a) {
+  refuse_overwriting({a.input}, {a.output});
   ProgressLine progress;
   const Tin tin = make_tin(a, progress);
   const auto t0 = std::chrono::steady_clock::now();
@@ -91,6 +92,7 @@ int run_tin(const Args& a) {
 int run_dem(const Args& a) {
   if (!(a.resolution > 0) || !std::isfinite(a.resolution)) throw InputError("--resolution: a positive cell size");
   if (a.type != "float32" && a.type != "float64") throw InputError("--type: float32 or float64");
+  refuse_overwriting({a.input}, {a.output, a.hillshade});
   ProgressLine progress;
   const Tin tin = make_tin(a, progress);
   io::Box box = io::box_around(tin.terrain.points, 0);

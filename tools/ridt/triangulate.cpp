@@ -140,6 +140,7 @@ int run_out_of_core(const Args& a) {
 }
 
 int run(const Args& a) {
+  refuse_overwriting({a.input}, {a.output});
   if (a.out_of_core) return run_out_of_core(a);
   Options o = options(a);
   ProgressLine progress;

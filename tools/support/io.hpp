@@ -65,6 +65,7 @@ struct Pslg {
   std::vector<Point> holes;
   std::vector<std::array<double, 4>> regions;
   int first_index = 0;  ///< the file's numbering (0 or 1), for the files written from it
+  std::string node_file;  ///< the .node file beside it that the points came from, where it lists none
 };
 
 /// Reads a .poly file (its points from the .node file beside it where it lists none); throws
@@ -88,6 +89,25 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
 /// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
 /// `first_index`, each with boundary marker 1 (they are segments); formatted on `threads` threads.
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads = 1);
+
+/// A mesh as Triangle writes it (ridt mesh).
+struct MeshFiles {
+  std::span<const Point> points;  ///< every vertex: OUT.node
+  std::span<const VertexId> triangles;  ///< OUT.ele
+  std::span<const double> attributes;  ///< one a triangle (Triangle's -A), or none
+  std::span<const VertexId> edges;  ///< the segments' edges, pairs of indices: OUT.edge
+  std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh, where not empty
+  int first_index = 0;  ///< the numbering of every file
+};
+
+/// The files write_mesh_files writes for OUT.ele `ele`: it, then OUT.node, OUT.edge and, with
+/// `neighbors`, OUT.neigh.
+std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors);
+
+/// Writes the mesh's files (mesh_file_paths), all or none: each is written under a temporary
+/// name and all are renamed once all are written; IoError where one cannot be (a directory in
+/// its place, among others), and then no file that was not there is left.
+void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threads = 1);
 
 /// Writes triangles as Triangle's .ele file, numbered from `first_index`, with one attribute a
 /// triangle where `attributes` is not empty (Triangle's -A); formatted on `threads` threads.
