@@ -508,5 +508,38 @@ mkdir "$dir/adir.txt"
 expect 2 "an output that is a directory" -- "$ridt" generate -n 5 -o "$dir/adir.txt"
 stderr_has "is a directory"
 
+# Options that a run would ignore or misread are refused by name (exit 2), nothing written.
+for bad in "--max-area nan" "--max-area -1" "--min-angle nan" "--min-angle -5" "--max-area inf"; do
+  # shellcheck disable=SC2086
+  expect 2 "check $bad" -- "$ridt" check "$dir/q.node" "$dir/q.ele" $bad
+  stderr_has "${bad%% *}"
+done
+expect 2 "mesh --quality nan" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o1.ele" --quality nan
+stderr_has "minimum angle"; absent "$dir/o1.ele"
+expect 2 "mesh --switches a1e-400" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o2.ele" --switches pa1e-400
+stderr_has "out of range"; absent "$dir/o2.ele"
+expect 2 "mesh --switches a0" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o2.ele" --switches pa0
+stderr_has "positive"
+expect 2 "mesh --neighbours to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o3.svg" --neighbours
+stderr_has "^ridt: error: --neighbours"; absent "$dir/o3.svg"
+expect 2 "mesh --attributes to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o3.svg" --attributes
+stderr_has "^ridt: error: --attributes"; absent "$dir/o3.svg"
+for opt in "--seed 5" "--k 3" "--paper-locking"; do
+  # shellcheck disable=SC2086
+  expect 2 "out-of-core with $opt" -- "$ridt" triangulate "$dir/uniform.bin" -o "$dir/o4.parts" --out-of-core $opt
+  stderr_has "${opt%% *}"; absent "$dir/o4.parts"
+done
+expect 2 "--column-points without --out-of-core" -- "$ridt" triangulate "$dir/uniform.bin" --column-points 9
+stderr_has "column-points"
+for opt in "--class 2" "--returns first" "--withheld"; do
+  # shellcheck disable=SC2086
+  expect 2 "tin from a table with $opt" -- "$ridt" tin "$dir/words.txt" -o "$dir/o5.ply" $opt
+  stderr_has "^ridt: error: ${opt%% *} is for LAS input"; absent "$dir/o5.ply"
+done
+expect 2 "dem --hillshade .tif" -- "$ridt" dem "$dir/words.txt" -o "$dir/o6.png" --resolution 1 --hillshade "$dir/o7.tif"
+stderr_has "hillshade"; absent "$dir/o6.png"; absent "$dir/o7.tif"
+expect 0 "dem --hillshade .png" -- "$ridt" dem "$dir/words.txt" -o "$dir/o6.png" --resolution 1 --hillshade "$dir/o7.png"
+cmp -s "$dir/o6.png" "$dir/o7.png" && pass || fail "the hillshade is not the .png DEM's hillshade"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

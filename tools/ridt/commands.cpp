@@ -39,36 +39,42 @@ Command add_check(CLI::App& app) {
   chk->add_option("--edges", a->edges, "a mesh's .edge file (ridt mesh's OUT.edge): its segment edges");
   chk->add_option("--min-angle", a->min_angle, "no angle below DEG degrees (but beside small input angles)");
   chk->add_option("--max-area", a->max_area, "no triangle larger than A");
-  return {chk, [a] {
-            const unsigned threads = thread_count(0);  // as check() takes
-            const io::PointFile p = io::read_points(a->points, threads);
-            const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
-            const CheckResult r = [&] {
-              if (!mesh && io::is_parts_index(a->triangles)) {
-                // Parts may hold more triangles than memory with their edge table: read in
-                // passes, a part at a time.
-                const std::vector<std::string> parts = io::part_files(a->triangles);
-                return check_in_passes(p.points, [&](const TriangleSink& sink) {
-                  for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
-                });
-              }
-              const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index, threads);
-              if (!mesh) return check(p.points, t);
-              const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly, threads);
-              std::vector<VertexId> edges;
-              if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
-              MeshSpec spec;
-              spec.edges = edges;
-              spec.segments = g.segments;
-              spec.input_points = a->poly.empty() ? 0 : g.points.size();
-              spec.holes = g.holes;
-              spec.min_angle = a->min_angle;
-              spec.max_area = a->max_area;
-              return check_mesh(p.points, t, spec);
-            }();
-            std::printf("%s\n", r.message.c_str());
-            return r.valid ? 0 : kExitInvalid;
-          }};
+  return {
+      chk, [a] {
+        // NaN compared false with every bound, and a negative one checked nothing: "valid".
+        if (!(a->min_angle >= 0 && a->min_angle < 60))
+          throw InputError("--min-angle: an angle in degrees from 0 to below 60, got " + std::to_string(a->min_angle));
+        if (!(a->max_area >= 0) || !std::isfinite(a->max_area))
+          throw InputError("--max-area: a positive finite area, got " + std::to_string(a->max_area));
+        const unsigned threads = thread_count(0);  // as check() takes
+        const io::PointFile p = io::read_points(a->points, threads);
+        const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
+        const CheckResult r = [&] {
+          if (!mesh && io::is_parts_index(a->triangles)) {
+            // Parts may hold more triangles than memory with their edge table: read in
+            // passes, a part at a time.
+            const std::vector<std::string> parts = io::part_files(a->triangles);
+            return check_in_passes(p.points, [&](const TriangleSink& sink) {
+              for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
+            });
+          }
+          const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index, threads);
+          if (!mesh) return check(p.points, t);
+          const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly, threads);
+          std::vector<VertexId> edges;
+          if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
+          MeshSpec spec;
+          spec.edges = edges;
+          spec.segments = g.segments;
+          spec.input_points = a->poly.empty() ? 0 : g.points.size();
+          spec.holes = g.holes;
+          spec.min_angle = a->min_angle;
+          spec.max_area = a->max_area;
+          return check_mesh(p.points, t, spec);
+        }();
+        std::printf("%s\n", r.message.c_str());
+        return r.valid ? 0 : kExitInvalid;
+      }};
 }
 
 Command add_voronoi(CLI::App& app) {

@@ -101,6 +101,10 @@ struct DemFile {
 /// memory). Nothing is left at `path` on failure. Throws IoError.
 void write_dem(const std::string& path, const Dem& dem, const DemFile& file);
 
+/// Writes the DEM's hillshade (sun in the north-west, 45 degrees high) as a grey .png, transparent
+/// where there is no height; IoError for another extension. Nothing is left at `path` on failure.
+void write_hillshade(const std::string& path, const Dem& dem);
+
 namespace detail {
 
 /// What GDAL does for the terrain formats, from a module of its own (libridt_gdal.so, built
