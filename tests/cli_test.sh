@@ -541,5 +541,16 @@ stderr_has "hillshade"; absent "$dir/o6.png"; absent "$dir/o7.tif"
 expect 0 "dem --hillshade .png" -- "$ridt" dem "$dir/words.txt" -o "$dir/o6.png" --resolution 1 --hillshade "$dir/o7.png"
 cmp -s "$dir/o6.png" "$dir/o7.png" && pass || fail "the hillshade is not the .png DEM's hillshade"
 
+# A point output's extension names its format; one the tool has no point writer for is refused.
+expect 0 "generate .csv" -- "$ridt" generate -n 20 --seed 3 -o "$dir/g.csv"
+[ "$(head -1 "$dir/g.csv" | tr -cd , | wc -c)" -eq 1 ] && pass || fail "generate's .csv is not x,y"
+expect 0 "triangulate the .csv" -- "$ridt" triangulate "$dir/g.csv" -o "$dir/gcsv.ele"
+expect 0 "generate .ply" -- "$ridt" generate -n 20 -o "$dir/g.ply"
+head -1 "$dir/g.ply" | grep -q '^ply$' && pass || fail "generate's .ply is not PLY"
+for ext in ele off svg; do
+  expect 2 "generate .$ext" -- "$ridt" generate -n 20 -o "$dir/g.$ext"
+  stderr_has "unknown point output extension '.$ext'"; absent "$dir/g.$ext"
+done
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -148,7 +148,7 @@ TEST_F(IoTest, LargeTriangleFilesComeBackInOrder) {
 
 TEST_F(IoTest, PointRoundTripEveryFormat) {
   const std::vector<Point> pts = tricky_points();
-  for (const char* name : {"p.txt", "p.xy", "p.node", "p.bin", "noextension"}) {
+  for (const char* name : {"p.txt", "p.xy", "p.pts", "p.dat", "p.csv", "p.node", "p.bin", "noextension"}) {
     SCOPED_TRACE(name);
     write_points(path(name), pts);
     const PointFile back = read_points(path(name));
@@ -157,7 +157,27 @@ TEST_F(IoTest, PointRoundTripEveryFormat) {
     EXPECT_TRUE(std::signbit(back.points[2].x));
   }
   EXPECT_EQ(fs::file_size(path("p.bin")), 16 * pts.size());
-  EXPECT_EQ(listing(), (std::vector<std::string>{"noextension", "p.bin", "p.node", "p.txt", "p.xy"}));
+  EXPECT_EQ(listing(), (std::vector<std::string>{"noextension", "p.bin", "p.csv", "p.dat", "p.node", "p.pts", "p.txt",
+                                                 "p.xy"}));
+}
+
+// An extension that names a format is written in it, or refused: .csv and .ply were text.
+TEST_F(IoTest, PointOutputExtensionsNameTheirFormat) {
+  const std::vector<Point> pts = {{0.1, -2}, {1e-300, 3.5}};
+  write_points(path("p.csv"), pts);
+  EXPECT_EQ(read_file("p.csv"), "0.1,-2\n1e-300,3.5\n");
+  write_points(path("p.ply"), pts);
+  const std::string ply = read_file("p.ply");
+  EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+  EXPECT_TRUE(Has(ply, "element vertex 2\n"));
+  EXPECT_EQ(ply.size(), ply.find("end_header\n") + 11 + 2 * 24);
+  for (const char* name : {"p.ele", "p.off", "p.svg", "p.json", "p.xyz"}) {
+    SCOPED_TRACE(name);
+    const std::string msg = error_of([&] { write_points(path(name), pts); });
+    EXPECT_TRUE(Has(msg, "unknown point output extension"));
+    EXPECT_TRUE(Has(msg, ".csv"));
+    EXPECT_FALSE(fs::exists(path(name)));
+  }
 }
 
 // A .bin file is mapped, not read: the points stay valid when the PointFile moves, they equal

@@ -17,7 +17,7 @@ Command add_generate(CLI::App& app) {
   gen->add_option("--dist", a->dist, choices_help("", Distribution::Uniform));
   gen->add_option("-n", a->n, "number of points")->required();
   gen->add_option("--seed", a->seed, "seed")->check(kSeed);
-  gen->add_option("-o,--output", a->output, "output: " + io::point_formats())->required();
+  gen->add_option("-o,--output", a->output, "output: " + io::point_output_formats())->required();
   return {gen, [a] {
             io::write_points(a->output, generate(parse<Distribution>(a->dist), a->n, a->seed), 0, thread_count(0));
             return 0;

@@ -25,7 +25,7 @@ PointFile parse_points(std::string_view data, const std::string& name, unsigned 
 }
 
 void write_points(const std::string& path, std::span<const Point> points, int first_index, unsigned threads) {
-  const Format& f = format_of(path, &Format::write_points, "point output");
+  const Format& f = format_of(path, &Format::write_points, "point output", false);
   Writer out(path);
   f.write_points(out, points, first_index, threads);
   out.commit();

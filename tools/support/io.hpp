@@ -3,7 +3,8 @@
 // Points in:  .node (Triangle's format: "n 2 attributes markers" then "i x y ..."; its first
 //             index, 0 or 1, is kept), .bin (raw little-endian float64 x, y pairs), anything
 //             else text (one point a line, "x y" or "x,y", '#' starts a comment).
-// Points out: .node, .bin, anything else text ("x y" with the shortest exact decimal form).
+// Points out: .node, .bin, .ply, .csv ("x,y"), text ("x y" with the shortest exact decimal
+//             form) for .txt, .xy, .pts, .dat or no extension; another extension is refused.
 // Triangles:  .ele (Triangle's format, numbered from the input .node's first index, else 0),
 //             .neigh (Triangle's neighbour file, -1 on the hull), .off, .obj, .svg (a drawing),
 //             .bin (little-endian uint32 triples). Every file is written to a temporary
@@ -116,6 +117,7 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
 
 /// The extensions of each kind of file, for a help text ("a, b or text").
 std::string point_formats();
+std::string point_output_formats();
 std::string triangle_formats();
 std::string triangulation_formats();
 std::string voronoi_formats();
@@ -129,7 +131,9 @@ PointFile read_points(const std::string& path, unsigned threads = 1);
 /// and stands for the file in messages.
 PointFile parse_points(std::string_view data, const std::string& name, unsigned threads = 1);
 
-/// Writes points (format by extension); text is formatted on `threads` threads.
+/// Writes points (format by extension: .node, .bin, .ply (vertices alone), .csv ("x,y" lines),
+/// text for .txt, .xy, .pts, .dat and no extension; IoError naming these for another one);
+/// text is formatted on `threads` threads.
 void write_points(const std::string& path, std::span<const Point> points, int first_index = 0, unsigned threads = 1);
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;

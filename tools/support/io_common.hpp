@@ -403,6 +403,8 @@ PointFile read_text_points(const std::string& path, std::string_view text, unsig
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index,
                                           unsigned threads = 1);
 void write_text_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
+/// "x,y" a line (read back as text).
+void write_csv_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 
 // Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);
