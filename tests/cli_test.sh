@@ -552,5 +552,16 @@ for ext in ele off svg; do
   stderr_has "unknown point output extension '.$ext'"; absent "$dir/g.$ext"
 done
 
+# Points on a line: nearest still answers, linear and natural are refused rather than all NaN.
+printf '0 0\n1 1\n2 2\n3 3\n' >"$dir/iline.txt"
+printf '10\n11\n12\n13\n' >"$dir/iline.v"
+printf '2.9 2.2\n-5 -5\n10 0\n' >"$dir/iline.q"
+expect 0 "nearest on collinear points" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" "$dir/iline.q" -o "$dir/iline.csv" --method nearest
+[ "$(tail -n +2 "$dir/iline.csv" | cut -d, -f3 | tr '\n' ' ')" = "13 10 13 " ] && pass || fail "nearest on a line: $(cat "$dir/iline.csv")"
+for m in linear natural; do
+  expect 2 "$m on collinear points" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" --grid 4,4 -o "$dir/iline_$m.csv" --method $m
+  stderr_has "no triangle"; absent "$dir/iline_$m.csv"
+done
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

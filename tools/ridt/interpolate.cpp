@@ -1,7 +1,10 @@
 // ridt interpolate POINTS VALUES (QUERIES | --grid nx,ny[,x0,y0,x1,y1]) -o OUT
 //                  [--method linear|natural|nearest] [--fill V] [--threads N]
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <utility>
 
 #include "command.hpp"
 #include "ridt/interpolate.hpp"
@@ -39,12 +42,42 @@ Where grid_nodes(const std::string& text, std::span<const Point> points) {
   return w;
 }
 
+// For each query, a nearest of `points` where they lie on one line (no triangle: nearest_vertex
+// has no graph to walk), or -1 for a query that is not finite. Ordered along the line, the
+// points nearest a query are those beside its projection.
+std::vector<std::int32_t> nearest_on_line(std::span<const Point> points, std::span<const Point> queries) {
+  std::vector<std::int32_t> out(queries.size(), -1);
+  if (points.empty()) return out;
+  const auto lex = [](const Point& p, const Point& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); };
+  const Point a = *std::min_element(points.begin(), points.end(), lex);
+  const Point b = *std::max_element(points.begin(), points.end(), lex);
+  // Halves keep b - a finite for any finite points.
+  const double dx = b.x * 0.5 - a.x * 0.5, dy = b.y * 0.5 - a.y * 0.5;
+  const auto along = [&](const Point& p) { return (p.x * 0.5 - a.x * 0.5) * dx + (p.y * 0.5 - a.y * 0.5) * dy; };
+  std::vector<std::pair<double, std::int32_t>> order(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) order[i] = {along(points[i]), static_cast<std::int32_t>(i)};
+  std::sort(order.begin(), order.end());
+  const auto distance = [&](std::int32_t i, const Point& q) {
+    return std::hypot(points[static_cast<std::size_t>(i)].x - q.x, points[static_cast<std::size_t>(i)].y - q.y);
+  };
+  for (std::size_t k = 0; k < queries.size(); ++k) {
+    const Point& q = queries[k];
+    if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
+    const auto at = std::lower_bound(order.begin(), order.end(), std::make_pair(along(q), std::int32_t{-1}));
+    std::int32_t best = at != order.end() ? at->second : order.back().second;
+    if (at != order.begin() && distance(std::prev(at)->second, q) <= distance(best, q)) best = std::prev(at)->second;
+    out[k] = best;
+  }
+  return out;
+}
+
 // The answers, `components` a query (a grid: each triangle takes the nodes it holds).
 std::vector<double> answer(const Args& a, std::span<const Point> points, const Triangulation& t, const Values& v,
                            const Where& w) {
   std::vector<double> out;
   if (a.method == "nearest") {
-    const std::vector<std::int32_t> near = nearest_vertex(points, t, w.queries, a.threads);
+    const std::vector<std::int32_t> near =
+        t.size() > 0 ? nearest_vertex(points, t, w.queries, a.threads) : nearest_on_line(points, w.queries);
     out.assign(w.queries.size() * v.components, a.fill);
     for (std::size_t q = 0; q < w.queries.size(); ++q)
       if (near[q] >= 0)
@@ -86,6 +119,10 @@ int run(const Args& a) {
   o.method = Method::Auto;
   o.threads = a.threads;
   const Triangulation t = triangulate(p.points, o);
+  // Without a triangle every query would be "outside the hull": all --fill, which says nothing.
+  if (t.size() == 0 && a.method != "nearest")
+    throw InputError(a.points + ": no triangle to interpolate " + a.method + "ly in" +
+                     (t.warning.empty() ? "" : " (" + t.warning + ")") + "; --method nearest answers");
   const std::vector<double> out = answer(a, p.points, t, {values, components}, w);
   io::write_values(a.output, w.queries, out, components, w.xs.size(), w.ys.size());
   return 0;
