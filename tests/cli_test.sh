@@ -563,5 +563,12 @@ for m in linear natural; do
   stderr_has "no triangle"; absent "$dir/iline_$m.csv"
 done
 
+# Memory is checked before it is taken (--memory-limit stands for a small machine).
+expect 2 "generate past the memory limit" -- "$ridt" generate -n 1000000 -o "$dir/m1.txt" --memory-limit 1M
+stderr_has "generating 1000000 points needs about"; absent "$dir/m1.txt"
+expect 0 "generate within the memory limit" -- "$ridt" generate -n 1000 -o "$dir/m1.txt" --memory-limit 1M
+expect 2 "interpolate's grid past the memory limit" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" --grid 1000,1000 -o "$dir/m2.csv" --method nearest --memory-limit 10M
+stderr_has "interpolating on 1000 by 1000 nodes needs about"; absent "$dir/m2.csv"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

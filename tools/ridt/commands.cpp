@@ -8,7 +8,7 @@ namespace ridt::tool {
 
 Command add_generate(CLI::App& app) {
   struct Args {
-    std::string dist = "uniform", output;
+    std::string dist = "uniform", output, memory_limit;
     std::uint32_t n = 0;
     std::uint64_t seed = 1;
   };
@@ -18,7 +18,11 @@ Command add_generate(CLI::App& app) {
   gen->add_option("-n", a->n, "number of points")->required();
   gen->add_option("--seed", a->seed, "seed")->check(kSeed);
   gen->add_option("-o,--output", a->output, "output: " + io::point_output_formats())->required();
+  gen->add_option("--memory-limit", a->memory_limit, kMemoryLimitHelp);
   return {gen, [a] {
+            // The points (16 bytes each) and as much again for the distributions' own work.
+            check_memory("generating " + std::to_string(a->n) + " points", std::size_t{32} * a->n,
+                         a->memory_limit.empty() ? 0 : byte_size(a->memory_limit, "--memory-limit"));
             io::write_points(a->output, generate(parse<Distribution>(a->dist), a->n, a->seed), 0, thread_count(0));
             return 0;
           }};

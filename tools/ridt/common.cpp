@@ -54,6 +54,20 @@ std::size_t byte_size(const std::string& text, const char* what) {
   return static_cast<std::size_t>(bytes);
 }
 
+void check_memory(const std::string& what, std::size_t needed, std::size_t limit) {
+  if (limit == 0) limit = available_memory();
+  if (limit == 0 || needed <= limit) return;  // 0: the system does not say
+  const auto gb = [](std::size_t bytes) {
+    char text[32];
+    if (bytes >= 1000000000)
+      std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    else
+      std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+    return std::string(text);
+  };
+  throw MemoryError(what + " needs about " + gb(needed) + "; " + gb(limit) + " is available", needed, limit);
+}
+
 io::Box box_option(const std::string& text, std::span<const Point> points) {
   if (text.empty()) return io::box_around(points, 0.1);
   const std::vector<double> b = numbers(text, "--box");

@@ -13,7 +13,7 @@ namespace ridt::tool {
 namespace {
 
 struct Args {
-  std::string points, values, queries, grid, method = "linear", output;
+  std::string points, values, queries, grid, method = "linear", output, memory_limit;
   double fill = std::numeric_limits<double>::quiet_NaN();
   unsigned threads = 0;
 };
@@ -24,12 +24,20 @@ struct Where {
   std::vector<double> xs, ys;
 };
 
-Where grid_nodes(const std::string& text, std::span<const Point> points) {
+// The grid's nodes; MemoryError first where they, their values (`components` a node) and the
+// triangulation of `points` need more than `limit` (0: what the system can give).
+Where grid_nodes(const std::string& text, std::span<const Point> points, std::size_t components, std::size_t limit) {
   const std::vector<double> g = numbers(text, "--grid");
   if ((g.size() != 2 && g.size() != 6) || g[0] < 2 || g[1] < 2 || g[0] != std::floor(g[0]) ||
       g[1] != std::floor(g[1]) || g[0] * g[1] > 1e9)
     throw InputError("--grid: give nx,ny (at least 2 each) or nx,ny,x0,y0,x1,y1");
   const auto nx = static_cast<std::size_t>(g[0]), ny = static_cast<std::size_t>(g[1]);
+  // A node: its point (16 bytes), its values, and a nearest point's index (4).
+  const std::size_t node = 16 + 8 * components + 4;
+  Options o;
+  o.method = Method::Auto;
+  check_memory("interpolating on " + std::to_string(nx) + " by " + std::to_string(ny) + " nodes",
+               nx * ny * node + estimate_memory(points.size(), o), limit);
   const io::Box b = g.size() == 6 ? io::Box{g[2], g[3], g[4], g[5]} : io::box_around(points, 0);
   Where w;
   for (std::size_t i = 0; i < nx; ++i)
@@ -108,9 +116,10 @@ int run(const Args& a) {
   if (values.size() != p.points.size() * components)
     throw InputError(a.values + ": " + std::to_string(values.size() / components) + " rows of values for " +
                      std::to_string(p.points.size()) + " points");
+  const std::size_t limit = a.memory_limit.empty() ? 0 : byte_size(a.memory_limit, "--memory-limit");
   Where w;
   if (!a.grid.empty())
-    w = grid_nodes(a.grid, p.points);
+    w = grid_nodes(a.grid, p.points, components, limit);
   else {
     const io::PointFile q = io::read_points(a.queries, thread_count(a.threads));
     w.queries.assign(q.points.begin(), q.points.end());
@@ -118,6 +127,7 @@ int run(const Args& a) {
   Options o;
   o.method = Method::Auto;
   o.threads = a.threads;
+  o.memory_limit = limit;
   const Triangulation t = triangulate(p.points, o);
   // Without a triangle every query would be "outside the hull": all --fill, which says nothing.
   if (t.size() == 0 && a.method != "nearest")
@@ -146,6 +156,7 @@ Command add_interpolate(CLI::App& app) {
   ip->add_option("--fill", a->fill, "the value outside the convex hull (default nan)");
   ip->add_option("-o,--output", a->output, "output: " + io::values_formats())->required();
   ip->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
+  ip->add_option("--memory-limit", a->memory_limit, kMemoryLimitHelp);
   return {ip, [a] { return run(*a); }};
 }
 
