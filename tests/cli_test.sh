@@ -570,5 +570,25 @@ expect 0 "generate within the memory limit" -- "$ridt" generate -n 1000 -o "$dir
 expect 2 "interpolate's grid past the memory limit" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" --grid 1000,1000 -o "$dir/m2.csv" --method nearest --memory-limit 10M
 stderr_has "interpolating on 1000 by 1000 nodes needs about"; absent "$dir/m2.csv"
 
+# No NaN or infinity is written: points 1e-310 apart draw a finite viewBox, and a Voronoi
+# diagram whose vertices do not fit in a double is written finite or refused, leaving no file.
+python3 -c "
+import random
+random.seed(3)
+for _ in range(200): print(repr(random.random() * 1e-310), repr(random.random() * 1e-310))" >"$dir/tiny.txt"
+expect 0 "a drawing of points 1e-310 apart" -- "$ridt" triangulate "$dir/tiny.txt" -o "$dir/tiny.svg"
+grep -q 'viewBox="-20 -20 [0-9.]* [0-9.]*"' "$dir/tiny.svg" && pass || fail "tiny.svg's viewBox: $(grep -o 'viewBox="[^"]*"' "$dir/tiny.svg")"
+python3 -c "
+import random
+random.seed(3)
+for _ in range(200): print(repr(random.random() * 1e150), repr(random.random() * 1e150))" >"$dir/huge.txt"
+for ext in json off svg; do
+  if "$ridt" voronoi "$dir/huge.txt" -o "$dir/huge.$ext" 2>"$dir/err"; then
+    ! grep -qi 'nan\|inf' "$dir/huge.$ext" && pass || fail "voronoi .$ext wrote a number that is not finite"
+  else
+    stderr_has "not finite"; absent "$dir/huge.$ext"
+  fi
+done
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]
