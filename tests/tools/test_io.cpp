@@ -157,8 +157,8 @@ TEST_F(IoTest, PointRoundTripEveryFormat) {
     EXPECT_TRUE(std::signbit(back.points[2].x));
   }
   EXPECT_EQ(fs::file_size(path("p.bin")), 16 * pts.size());
-  EXPECT_EQ(listing(), (std::vector<std::string>{"noextension", "p.bin", "p.csv", "p.dat", "p.node", "p.pts", "p.txt",
-                                                 "p.xy"}));
+  EXPECT_EQ(listing(),
+            (std::vector<std::string>{"noextension", "p.bin", "p.csv", "p.dat", "p.node", "p.pts", "p.txt", "p.xy"}));
 }
 
 // An extension that names a format is written in it, or refused: .csv and .ply were text.
