@@ -590,5 +590,17 @@ for ext in json off svg; do
   fi
 done
 
+# GDAL's outputs too: a link's target is written and the link kept; a FIFO gets the file's bytes.
+touch "$dir/dem_real.tif"
+ln -s dem_real.tif "$dir/dem_link.tif"
+expect 0 "dem through a link" -- "$ridt" dem "$dir/t.csv" -o "$dir/dem_link.tif" --resolution 50
+[ -L "$dir/dem_link.tif" ] && gdalinfo "$dir/dem_real.tif" 2>/dev/null | grep -q "Size is 20, 20" && pass || fail "dem through a link"
+mkfifo "$dir/tin_fifo.geojson"
+timeout 30 cat "$dir/tin_fifo.geojson" >"$dir/tin_fifo.out" &
+reader=$!
+expect 0 "tin into a FIFO" -- timeout 20 "$ridt" tin "$dir/t.csv" -o "$dir/tin_fifo.geojson"
+wait "$reader"
+grep -q '"FeatureCollection"' "$dir/tin_fifo.out" && [ -p "$dir/tin_fifo.geojson" ] && pass || fail "tin into a FIFO"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -51,9 +51,9 @@ void refuse_ignored_filters(const Args& a) {
 }
 
 Tin make_tin(const Args& a, ProgressLine& progress) {
-  refuse_ignored_filters(a);
   io::PointFilter filter;
-  filter.returns = parse<Returns>(a.returns);
+  filter.returns = parse<Returns>(a.returns);  // an unknown value named first
+  refuse_ignored_filters(a);
   filter.withheld = a.withheld;
   if (!a.classes.empty())
     for (const double c : numbers(a.classes, "--class")) {
