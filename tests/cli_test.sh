@@ -353,6 +353,36 @@ expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switche
 [ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"
 absent "$dir/m.off"
+# An output that is an input is refused before anything is written: a .poly of no vertices reads
+# them from the .node beside it, which -o box.ele would overwrite.
+mkdir "$dir/own"
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' >"$dir/own/box.node"
+printf '0 2 0 0\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$dir/own/box.poly"
+cp "$dir/own/box.node" "$dir/own/box.node.orig"
+expect 2 "mesh over its own .node" -- "$ridt" mesh "$dir/own/box.poly" -o "$dir/own/box.ele"
+stderr_has "is the input"; absent "$dir/own/box.ele"; absent "$dir/own/box.edge"
+cmp -s "$dir/own/box.node" "$dir/own/box.node.orig" && pass || fail "mesh overwrote its input .node"
+expect 0 "mesh beside its .node" -- "$ridt" mesh "$dir/own/box.poly" -o "$dir/own/out.ele"
+expect 2 "triangulate over its input" -- "$ridt" triangulate "$dir/own/box.node" -o "$dir/own/box.node"
+ln -s box.node "$dir/own/alias.node"
+expect 2 "triangulate through a link to its input" -- "$ridt" triangulate "$dir/own/alias.node" -o "$dir/own/box.node"
+cmp -s "$dir/own/box.node" "$dir/own/box.node.orig" && pass || fail "triangulate overwrote its input"
+# A mesh that cannot be written removes only what it made: a directory in the way of one of its
+# files is an input error, found before any file is written; an unrelated .neigh stays.
+echo "not mine" >"$dir/own/e2.neigh"
+mkdir "$dir/own/e2.edge"
+expect 2 "mesh with a directory as .edge" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/own/e2.ele"
+stderr_has "e2.edge: it is a directory"; absent "$dir/own/e2.ele"; absent "$dir/own/e2.node"
+[ -d "$dir/own/e2.edge" ] && [ "$(cat "$dir/own/e2.neigh")" = "not mine" ] && pass || fail "mesh removed what it did not make"
+mkdir -p "$dir/own/e3.edge/inside"
+expect 2 "mesh with a full directory as .edge" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/own/e3.ele" --neighbours
+[ -d "$dir/own/e3.edge/inside" ] && pass || fail "mesh emptied a directory"
+absent "$dir/own/e3.ele"; absent "$dir/own/e3.neigh"
+mkdir "$dir/own/empty.ele"
+expect 2 "mesh onto a directory .ele" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/own/empty.ele"
+[ -d "$dir/own/empty.ele" ] && pass || fail "mesh removed the directory empty.ele"
+absent "$dir/own/empty.node"
+[ -z "$(ls "$dir/own" | grep tmp)" ] && pass || fail "a temporary file was left: $(ls "$dir/own")"
 # Text formatted on threads (runs of 32768 lines side by side) is the file one thread writes.
 awk 'BEGIN { n = 70000; print n, 2, 0, 0
   for (i = 0; i < n; i++) { a = 6.283185307179586 * i / n; r = 1 + 0.2 * sin(37 * a)
@@ -425,6 +455,154 @@ expect 2 "LAZ" -- "$ridt" tin "$dir/x.laz" -o "$dir/x.ply"
 stderr_has "laszip"; absent "$dir/x.ply"
 expect 2 "unknown returns" -- "$ridt" tin "$dir/t.csv" -o "$dir/x.ply" --returns second
 stderr_has "first, last or single"
+
+# A table's first line is a header only where its coordinate fields are not numbers: a first row
+# with a word in a fourth column is a row; a row wider than the first line is refused by line.
+printf '0 0 1 99 junk\n10 0 2 98 a\n0 10 3 97 b\n' >"$dir/words.txt"
+expect 0 "a table whose rows end in words" -- "$ridt" tin "$dir/words.txt" -o "$dir/words.ply" --stats
+stdout_has "^points 3$"
+printf '0 0 1\n10 0 2 5\n0 10 3\n' >"$dir/ragged.txt"
+expect 2 "a ragged table" -- "$ridt" tin "$dir/ragged.txt" -o "$dir/ragged.ply"
+stderr_has "ragged.txt:2: expected 3 fields, as line 1 has, got 4"; absent "$dir/ragged.ply"
+printf '0,0,height\n10,0,2\n0,10,3\n' >"$dir/half.csv"
+expect 2 "a first line half header" -- "$ridt" tin "$dir/half.csv" -o "$dir/half.ply"
+stderr_has "half.csv:1: field 3"
+
+# Outputs that are not regular files: a symbolic link's target is written and the link kept, a
+# FIFO and /dev/stdout are written in place, in order (no temporary file, no rename).
+expect 0 "generate to a new file" -- "$ridt" generate -n 5 -o "$dir/real.txt"
+ln -s real.txt "$dir/link.txt"
+expect 0 "generate through a link" -- "$ridt" generate -n 7 -o "$dir/link.txt"
+[ -L "$dir/link.txt" ] && pass || fail "the link was replaced"
+[ "$(wc -l <"$dir/real.txt")" -eq 7 ] && pass || fail "the link's target was not written"
+ln -s made.txt "$dir/dangling.txt"
+expect 0 "generate through a dangling link" -- "$ridt" generate -n 3 -o "$dir/dangling.txt"
+[ -L "$dir/dangling.txt" ] && [ "$(wc -l <"$dir/made.txt")" -eq 3 ] && pass || fail "a dangling link's target was not made"
+mkfifo "$dir/fifo"
+timeout 30 cat "$dir/fifo" >"$dir/fifo.out" &
+reader=$!
+expect 0 "generate into a FIFO" -- timeout 20 "$ridt" generate -n 6 -o "$dir/fifo"
+wait "$reader"
+[ -p "$dir/fifo" ] && pass || fail "the FIFO was replaced"
+[ "$(wc -l <"$dir/fifo.out")" -eq 6 ] && pass || fail "the FIFO's reader got $(wc -l <"$dir/fifo.out") lines"
+mkfifo "$dir/fifo.ele"
+timeout 30 cat "$dir/fifo.ele" >"$dir/fifo.ele.out" &
+reader=$!
+expect 0 "triangulate into a FIFO" -- timeout 20 "$ridt" triangulate "$dir/uniform.txt" -o "$dir/fifo.ele"
+wait "$reader"
+expect 0 "triangulate to .ele" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/plain.ele"
+cmp -s "$dir/fifo.ele.out" "$dir/plain.ele" && pass || fail "the FIFO's .ele differs"
+# A .bin, written as the triangles are sorted where it is a file, comes after the sort here.
+mkfifo "$dir/fifo.bin"
+timeout 30 cat "$dir/fifo.bin" >"$dir/fifo.bin.out" &
+reader=$!
+expect 0 "triangulate .bin into a FIFO" -- timeout 20 "$ridt" triangulate "$dir/uniform.txt" -o "$dir/fifo.bin"
+wait "$reader"
+expect 0 "triangulate to .bin" -- "$ridt" triangulate "$dir/uniform.txt" -o "$dir/plain.bin"
+cmp -s "$dir/fifo.bin.out" "$dir/plain.bin" && pass || fail "the FIFO's .bin differs"
+[ "$(timeout 20 "$ridt" generate -n 5 -o /dev/stdout | wc -l)" -eq 5 ] && pass || fail "-o /dev/stdout printed nothing"
+expect 0 "generate to /dev/null" -- "$ridt" generate -n 10 -o /dev/null
+if [ -c /dev/null ]; then pass; else
+  fail "/dev/null is no longer a character device"
+  if [ "$(id -u)" -eq 0 ]; then rm -f /dev/null; mknod -m 666 /dev/null c 1 3; fi
+fi
+mkdir "$dir/adir.txt"
+expect 2 "an output that is a directory" -- "$ridt" generate -n 5 -o "$dir/adir.txt"
+stderr_has "is a directory"
+
+# Options that a run would ignore or misread are refused by name (exit 2), nothing written.
+for bad in "--max-area nan" "--max-area -1" "--min-angle nan" "--min-angle -5" "--max-area inf"; do
+  # shellcheck disable=SC2086
+  expect 2 "check $bad" -- "$ridt" check "$dir/q.node" "$dir/q.ele" $bad
+  stderr_has "${bad%% *}"
+done
+expect 2 "mesh --quality nan" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o1.ele" --quality nan
+stderr_has "minimum angle"; absent "$dir/o1.ele"
+expect 2 "mesh --switches a1e-400" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o2.ele" --switches pa1e-400
+stderr_has "out of range"; absent "$dir/o2.ele"
+expect 2 "mesh --switches a0" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o2.ele" --switches pa0
+stderr_has "positive"
+expect 2 "mesh --neighbours to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o3.svg" --neighbours
+stderr_has "^ridt: error: --neighbours"; absent "$dir/o3.svg"
+expect 2 "mesh --attributes to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/o3.svg" --attributes
+stderr_has "^ridt: error: --attributes"; absent "$dir/o3.svg"
+for opt in "--seed 5" "--k 3" "--paper-locking"; do
+  # shellcheck disable=SC2086
+  expect 2 "out-of-core with $opt" -- "$ridt" triangulate "$dir/uniform.bin" -o "$dir/o4.parts" --out-of-core $opt
+  stderr_has "${opt%% *}"; absent "$dir/o4.parts"
+done
+expect 2 "--column-points without --out-of-core" -- "$ridt" triangulate "$dir/uniform.bin" --column-points 9
+stderr_has "column-points"
+for opt in "--class 2" "--returns first" "--withheld"; do
+  # shellcheck disable=SC2086
+  expect 2 "tin from a table with $opt" -- "$ridt" tin "$dir/words.txt" -o "$dir/o5.ply" $opt
+  stderr_has "^ridt: error: ${opt%% *} is for LAS input"; absent "$dir/o5.ply"
+done
+expect 2 "dem --hillshade .tif" -- "$ridt" dem "$dir/words.txt" -o "$dir/o6.png" --resolution 1 --hillshade "$dir/o7.tif"
+stderr_has "hillshade"; absent "$dir/o6.png"; absent "$dir/o7.tif"
+expect 0 "dem --hillshade .png" -- "$ridt" dem "$dir/words.txt" -o "$dir/o6.png" --resolution 1 --hillshade "$dir/o7.png"
+cmp -s "$dir/o6.png" "$dir/o7.png" && pass || fail "the hillshade is not the .png DEM's hillshade"
+
+# A point output's extension names its format; one the tool has no point writer for is refused.
+expect 0 "generate .csv" -- "$ridt" generate -n 20 --seed 3 -o "$dir/g.csv"
+[ "$(head -1 "$dir/g.csv" | tr -cd , | wc -c)" -eq 1 ] && pass || fail "generate's .csv is not x,y"
+expect 0 "triangulate the .csv" -- "$ridt" triangulate "$dir/g.csv" -o "$dir/gcsv.ele"
+expect 0 "generate .ply" -- "$ridt" generate -n 20 -o "$dir/g.ply"
+head -1 "$dir/g.ply" | grep -q '^ply$' && pass || fail "generate's .ply is not PLY"
+for ext in ele off svg; do
+  expect 2 "generate .$ext" -- "$ridt" generate -n 20 -o "$dir/g.$ext"
+  stderr_has "unknown point output extension '.$ext'"; absent "$dir/g.$ext"
+done
+
+# Points on a line: nearest still answers, linear and natural are refused rather than all NaN.
+printf '0 0\n1 1\n2 2\n3 3\n' >"$dir/iline.txt"
+printf '10\n11\n12\n13\n' >"$dir/iline.v"
+printf '2.9 2.2\n-5 -5\n10 0\n' >"$dir/iline.q"
+expect 0 "nearest on collinear points" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" "$dir/iline.q" -o "$dir/iline.csv" --method nearest
+[ "$(tail -n +2 "$dir/iline.csv" | cut -d, -f3 | tr '\n' ' ')" = "13 10 13 " ] && pass || fail "nearest on a line: $(cat "$dir/iline.csv")"
+for m in linear natural; do
+  expect 2 "$m on collinear points" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" --grid 4,4 -o "$dir/iline_$m.csv" --method $m
+  stderr_has "no triangle"; absent "$dir/iline_$m.csv"
+done
+
+# Memory is checked before it is taken (--memory-limit stands for a small machine).
+expect 2 "generate past the memory limit" -- "$ridt" generate -n 1000000 -o "$dir/m1.txt" --memory-limit 1M
+stderr_has "generating 1000000 points needs about"; absent "$dir/m1.txt"
+expect 0 "generate within the memory limit" -- "$ridt" generate -n 1000 -o "$dir/m1.txt" --memory-limit 1M
+expect 2 "interpolate's grid past the memory limit" -- "$ridt" interpolate "$dir/iline.txt" "$dir/iline.v" --grid 1000,1000 -o "$dir/m2.csv" --method nearest --memory-limit 10M
+stderr_has "interpolating on 1000 by 1000 nodes needs about"; absent "$dir/m2.csv"
+
+# No NaN or infinity is written: points 1e-310 apart draw a finite viewBox, and a Voronoi
+# diagram whose vertices do not fit in a double is written finite or refused, leaving no file.
+python3 -c "
+import random
+random.seed(3)
+for _ in range(200): print(repr(random.random() * 1e-310), repr(random.random() * 1e-310))" >"$dir/tiny.txt"
+expect 0 "a drawing of points 1e-310 apart" -- "$ridt" triangulate "$dir/tiny.txt" -o "$dir/tiny.svg"
+grep -q 'viewBox="-20 -20 [0-9.]* [0-9.]*"' "$dir/tiny.svg" && pass || fail "tiny.svg's viewBox: $(grep -o 'viewBox="[^"]*"' "$dir/tiny.svg")"
+python3 -c "
+import random
+random.seed(3)
+for _ in range(200): print(repr(random.random() * 1e150), repr(random.random() * 1e150))" >"$dir/huge.txt"
+for ext in json off svg; do
+  if "$ridt" voronoi "$dir/huge.txt" -o "$dir/huge.$ext" 2>"$dir/err"; then
+    ! grep -qi 'nan\|inf' "$dir/huge.$ext" && pass || fail "voronoi .$ext wrote a number that is not finite"
+  else
+    stderr_has "not finite"; absent "$dir/huge.$ext"
+  fi
+done
+
+# GDAL's outputs too: a link's target is written and the link kept; a FIFO gets the file's bytes.
+touch "$dir/dem_real.tif"
+ln -s dem_real.tif "$dir/dem_link.tif"
+expect 0 "dem through a link" -- "$ridt" dem "$dir/t.csv" -o "$dir/dem_link.tif" --resolution 50
+[ -L "$dir/dem_link.tif" ] && gdalinfo "$dir/dem_real.tif" 2>/dev/null | grep -q "Size is 20, 20" && pass || fail "dem through a link"
+mkfifo "$dir/tin_fifo.geojson"
+timeout 30 cat "$dir/tin_fifo.geojson" >"$dir/tin_fifo.out" &
+reader=$!
+expect 0 "tin into a FIFO" -- timeout 20 "$ridt" tin "$dir/t.csv" -o "$dir/tin_fifo.geojson"
+wait "$reader"
+grep -q '"FeatureCollection"' "$dir/tin_fifo.out" && [ -p "$dir/tin_fifo.geojson" ] && pass || fail "tin into a FIFO"
 
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -148,7 +148,7 @@ TEST_F(IoTest, LargeTriangleFilesComeBackInOrder) {
 
 TEST_F(IoTest, PointRoundTripEveryFormat) {
   const std::vector<Point> pts = tricky_points();
-  for (const char* name : {"p.txt", "p.xy", "p.node", "p.bin", "noextension"}) {
+  for (const char* name : {"p.txt", "p.xy", "p.pts", "p.dat", "p.csv", "p.node", "p.bin", "noextension"}) {
     SCOPED_TRACE(name);
     write_points(path(name), pts);
     const PointFile back = read_points(path(name));
@@ -157,7 +157,27 @@ TEST_F(IoTest, PointRoundTripEveryFormat) {
     EXPECT_TRUE(std::signbit(back.points[2].x));
   }
   EXPECT_EQ(fs::file_size(path("p.bin")), 16 * pts.size());
-  EXPECT_EQ(listing(), (std::vector<std::string>{"noextension", "p.bin", "p.node", "p.txt", "p.xy"}));
+  EXPECT_EQ(listing(),
+            (std::vector<std::string>{"noextension", "p.bin", "p.csv", "p.dat", "p.node", "p.pts", "p.txt", "p.xy"}));
+}
+
+// An extension that names a format is written in it, or refused: .csv and .ply were text.
+TEST_F(IoTest, PointOutputExtensionsNameTheirFormat) {
+  const std::vector<Point> pts = {{0.1, -2}, {1e-300, 3.5}};
+  write_points(path("p.csv"), pts);
+  EXPECT_EQ(read_file("p.csv"), "0.1,-2\n1e-300,3.5\n");
+  write_points(path("p.ply"), pts);
+  const std::string ply = read_file("p.ply");
+  EXPECT_EQ(ply.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u);
+  EXPECT_TRUE(Has(ply, "element vertex 2\n"));
+  EXPECT_EQ(ply.size(), ply.find("end_header\n") + 11 + 2 * 24);
+  for (const char* name : {"p.ele", "p.off", "p.svg", "p.json", "p.xyz"}) {
+    SCOPED_TRACE(name);
+    const std::string msg = error_of([&] { write_points(path(name), pts); });
+    EXPECT_TRUE(Has(msg, "unknown point output extension"));
+    EXPECT_TRUE(Has(msg, ".csv"));
+    EXPECT_FALSE(fs::exists(path(name)));
+  }
 }
 
 // A .bin file is mapped, not read: the points stay valid when the PointFile moves, they equal
@@ -284,12 +304,17 @@ TEST_F(IoTest, NanAndInfinityRejectedInText) {
 TEST_F(IoTest, NanAndInfinityRejectedInBin) {
   std::vector<Point> pts(20, Point{1, 2});
   pts[12].y = std::numeric_limits<double>::quiet_NaN();
-  // write_points does not judge the values; the reader does.
-  write_points(path("n.bin"), pts);
+  // The writer refuses them (nothing written); a file made otherwise is refused by the reader.
+  EXPECT_TRUE(Has(error_of([&] { write_points(path("n.bin"), pts); }), "not finite"));
+  EXPECT_TRUE(listing().empty());
+  const auto raw = [&](const std::string& name) {
+    write_file(name, std::string(reinterpret_cast<const char*>(pts.data()), pts.size() * sizeof(Point)));
+  };
+  raw("n.bin");
   EXPECT_EQ(error_of([&] { read_points(path("n.bin")); }), path("n.bin") + ": point 12 has a NaN coordinate");
   pts[12].y = 0;
   pts[3].x = -std::numeric_limits<double>::infinity();
-  write_points(path("i.bin"), pts);
+  raw("i.bin");
   EXPECT_TRUE(Has(error_of([&] { read_points(path("i.bin")); }), "point 3 has an infinite coordinate"));
 }
 
@@ -742,6 +767,40 @@ TEST_F(IoTest, WriteSvgDegenerateInputs) {
   write_triangulation(path("wide.svg"), std::vector<Point>{{-big, -big}, {big, big}, {5, 5}}, empty, 0);
   EXPECT_EQ(read_file("wide.svg").find("inf"), std::string::npos);
   EXPECT_EQ(read_file("wide.svg").find("nan"), std::string::npos);
+}
+
+// Points 1e-310 apart: the scale 1000 / 1e-310 overflows, and the viewBox was "inf"; the box
+// is brought near 1 by powers of two first, so the drawing is the unit square's.
+TEST_F(IoTest, SvgOfATinyBoxIsTheUnitSquaresDrawing) {
+  Square s;
+  write_triangulation(path("one.svg"), s.points, s.t, 0);
+  for (Point& p : s.points) p.x *= 1e-310, p.y *= 1e-310;
+  write_triangulation(path("tiny.svg"), s.points, s.t, 0);
+  const std::string tiny = read_file("tiny.svg");
+  EXPECT_EQ(tiny.find("inf"), std::string::npos);
+  EXPECT_EQ(tiny.find("nan"), std::string::npos);
+  EXPECT_TRUE(Has(tiny, "viewBox=\"-20 -20 1040 1040\""));
+  EXPECT_TRUE(Has(tiny, "<circle cx=\"0\" cy=\"1000\""));
+}
+
+// A NaN or an infinity is never written as a coordinate: the writer fails, naming the file, and
+// leaves nothing; values (interpolate's fill) are written as "nan".
+TEST_F(IoTest, NonFiniteCoordinatesAreNeverWritten) {
+  Square s;
+  s.points[2].x = std::numeric_limits<double>::quiet_NaN();
+  for (const char* name : {"p.txt", "p.node", "p.bin"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(Has(error_of([&] { write_points(path(name), s.points, 0, 2); }), "cannot write " + path(name)));
+  }
+  s.points[2].x = std::numeric_limits<double>::infinity();
+  for (const char* name : {"t.off", "t.obj", "t.ply", "t.svg"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(Has(error_of([&] { write_triangulation(path(name), s.points, s.t, 0); }), "not finite"));
+  }
+  EXPECT_TRUE(listing().empty());
+  const std::vector<double> v = {1, std::numeric_limits<double>::quiet_NaN()};
+  write_values(path("v.csv"), std::vector<Point>{{0, 0}, {1, 1}}, v, 1);
+  EXPECT_EQ(read_file("v.csv"), "x,y,v0\n0,0,1\n1,1,nan\n");
 }
 
 TEST_F(IoTest, SvgRefusesTooManyTrianglesAndCreatesNothing) {

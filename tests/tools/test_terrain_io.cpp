@@ -193,6 +193,32 @@ TEST_F(TerrainIo, TablesWithAndWithoutHeaders) {
   EXPECT_THROW(parse_table("x,y,z\n1,2,3\n", "e.csv", Columns{"x", "y", "9"}), IoError);
 }
 
+// The first line is a header only where its coordinate fields are not numbers: a row with
+// another field that is not a number is a row, not a header lost; a first line of both is
+// refused, as is a row of another width than the first line, naming its line.
+TEST_F(TerrainIo, TableHeaderAndWidthRules) {
+  const Terrain a = parse_table("12.1 55.2 3.4 99 junk\n13 56 4 98 more\n", "a.txt");
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.points[0].x, 12.1);
+  EXPECT_EQ(a.z[0], 3.4);
+  const Terrain b = parse_table("id,x,y,z\n1,2,3,4\n", "b.csv", Columns{"2", "3", "4"});
+  ASSERT_EQ(b.points.size(), 1u);
+  EXPECT_EQ(b.z[0], 4);
+  const auto message = [](const char* text) {
+    try {
+      parse_table(text, "c.csv");
+    } catch (const IoError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("1,2,z\n1,2,3\n").rfind("c.csv:1: field 3 \"z\" is not a number", 0), 0u)
+      << message("1,2,z\n1,2,3\n");
+  EXPECT_EQ(message("1,2,3\n4,5,6,7\n").rfind("c.csv:2: expected 3 fields, as line 1 has, got 4", 0), 0u)
+      << message("1,2,3\n4,5,6,7\n");
+  EXPECT_EQ(message("x,y,z\n1,2,3\n\n4,5\n").rfind("c.csv:4: expected 3 fields", 0), 0u);
+}
+
 // A small terrain and its TIN, for the GDAL round trips.
 struct Sample {
   Terrain terrain;

@@ -2,7 +2,8 @@
 // loaded by tools/support/io_gdal.cpp on first use. Point layers in through OGR, a TIN out as a
 // layer of PolygonZ triangles, a DEM out band by band through a raster driver. Each output is
 // written under a temporary name beside the target (with its side files, as a Shapefile has) and
-// renamed when GDAL has closed it without error, so a failure leaves nothing.
+// renamed when GDAL has closed it without error, so a failure leaves nothing; a device or a pipe
+// gets the finished file's bytes.
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_string.h>
@@ -39,32 +40,64 @@ struct Close {
 };
 using Dataset = std::unique_ptr<GDALDataset, Close>;
 
+// Copies the file `from` into `to`, which is not a regular file (a device, a pipe), in order.
+void copy_in_place(const std::string& from, const std::string& to, const std::string& path) {
+  const std::string bytes = detail::read_file_whole(from);
+  const int fd = ::open(to.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) throw IoError("cannot write " + path + ": " + detail::errno_text(errno));
+  for (std::size_t at = 0; at < bytes.size();) {
+    const ssize_t n = ::write(fd, bytes.data() + at, bytes.size() - at);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      throw IoError("cannot write " + path + ": " + detail::errno_text(err));
+    }
+    at += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) throw IoError("cannot write " + path + ": " + detail::errno_text(errno));
+}
+
 // The files of one output: written under `temp` (the target's stem + ".tmp-PID-N" + its
 // extension, so the driver sees the extension), renamed onto the target's stem by commit(), all
-// removed otherwise: a Shapefile's .shx, .dbf and .prj go with its .shp.
+// removed otherwise: a Shapefile's .shx, .dbf and .prj go with its .shp. The target is the
+// path's with symbolic links followed (output_target); one that is not a regular file (a device,
+// a pipe) is made in the temporary directory and copied into it, if it is one file.
 class Output {
  public:
-  explicit Output(const std::string& path) : path_(path) {
+  explicit Output(const std::string& path) : path_(path), target_(output_target(path)) {
     static std::atomic<unsigned> counter{0};
-    const detail::fs::path p(path);
-    dir_ = p.parent_path().empty() ? detail::fs::path(".") : p.parent_path();
+    const detail::fs::path p(target_.path);
+    dir_ = target_.in_place       ? detail::fs::temp_directory_path()
+        : p.parent_path().empty() ? detail::fs::path(".")
+                                  : p.parent_path();
     stem_ = p.stem().string();
     temp_stem_ = stem_ + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
-    temp_ = (dir_ / (temp_stem_ + p.extension().string())).string();
+    temp_ = (dir_ / (temp_stem_ + detail::fs::path(path).extension().string())).string();
   }
   Output(const Output&) = delete;
   Output& operator=(const Output&) = delete;
   ~Output() {
-    if (!committed_)
+    if (!committed_ || target_.in_place)
       for (const auto& f : mine()) std::remove(f.c_str());
   }
 
   const std::string& temp() const { return temp_; }
 
   void commit() {
-    for (const auto& f : mine()) {
+    const std::vector<std::string> files = mine();
+    if (target_.in_place) {
+      if (files.size() != 1)
+        throw IoError("cannot write " + path_ + ": the format makes " + std::to_string(files.size()) + " files, and " +
+                      path_ + " is not a regular file");
+      copy_in_place(files[0], target_.path, path_);
+      committed_ = true;
+      return;
+    }
+    for (const auto& f : files) {
       const std::string name = detail::fs::path(f).filename().string();
-      const std::string target = (dir_ / (stem_ + name.substr(temp_stem_.size()))).string();
+      // The file itself keeps the target's name (a link's target may have another extension).
+      const std::string target = f == temp_ ? target_.path : (dir_ / (stem_ + name.substr(temp_stem_.size()))).string();
       if (std::rename(f.c_str(), target.c_str()) != 0)
         throw IoError("cannot write " + target + ": " + detail::errno_text(errno));
     }
@@ -80,7 +113,9 @@ class Output {
     return files;
   }
 
-  std::string path_, stem_, temp_stem_, temp_;
+  std::string path_;
+  OutputTarget target_;
+  std::string stem_, temp_stem_, temp_;
   detail::fs::path dir_;
   bool committed_ = false;
 };

@@ -43,8 +43,26 @@ std::vector<double> numbers(const std::string& text, const char* what);
 /// `what` names it in a message.
 std::size_t byte_size(const std::string& text, const char* what);
 
+/// MemoryError, before anything is allocated, where `needed` bytes (for `what`, e.g. "writing N
+/// points") are more than `limit` (a --memory-limit; 0: what the system can give now,
+/// ridt::available_memory()).
+void check_memory(const std::string& what, std::size_t needed, std::size_t limit);
+
+/// The help of a --memory-limit option.
+inline constexpr const char* kMemoryLimitHelp =
+    "the most memory the run may take, e.g. 800M or 12G (default: what the system can give); a run that needs "
+    "more is refused before it starts";
+
 /// The box of --box ("x0,y0,x1,y1"), or the points' box and 10 % around when `text` is empty.
 io::Box box_option(const std::string& text, std::span<const Point> points);
+
+/// InputError where an output is the same regular file as an input (another name or a link to
+/// it too): writing it would destroy what is read. Asked before anything is written.
+void refuse_overwriting(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs);
+
+/// InputError naming `option` and `why` where `given` (an option given that the run would
+/// ignore).
+void refuse_ignored(bool given, const std::string& option, const std::string& why);
 
 /// The threads a --threads value asks for: itself, or every hardware thread for 0.
 unsigned thread_count(unsigned asked);

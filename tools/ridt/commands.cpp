@@ -8,7 +8,7 @@ namespace ridt::tool {
 
 Command add_generate(CLI::App& app) {
   struct Args {
-    std::string dist = "uniform", output;
+    std::string dist = "uniform", output, memory_limit;
     std::uint32_t n = 0;
     std::uint64_t seed = 1;
   };
@@ -17,8 +17,12 @@ Command add_generate(CLI::App& app) {
   gen->add_option("--dist", a->dist, choices_help("", Distribution::Uniform));
   gen->add_option("-n", a->n, "number of points")->required();
   gen->add_option("--seed", a->seed, "seed")->check(kSeed);
-  gen->add_option("-o,--output", a->output, "output: " + io::point_formats())->required();
+  gen->add_option("-o,--output", a->output, "output: " + io::point_output_formats())->required();
+  gen->add_option("--memory-limit", a->memory_limit, kMemoryLimitHelp);
   return {gen, [a] {
+            // The points (16 bytes each) and as much again for the distributions' own work.
+            check_memory("generating " + std::to_string(a->n) + " points", std::size_t{32} * a->n,
+                         a->memory_limit.empty() ? 0 : byte_size(a->memory_limit, "--memory-limit"));
             io::write_points(a->output, generate(parse<Distribution>(a->dist), a->n, a->seed), 0, thread_count(0));
             return 0;
           }};
@@ -39,36 +43,42 @@ Command add_check(CLI::App& app) {
   chk->add_option("--edges", a->edges, "a mesh's .edge file (ridt mesh's OUT.edge): its segment edges");
   chk->add_option("--min-angle", a->min_angle, "no angle below DEG degrees (but beside small input angles)");
   chk->add_option("--max-area", a->max_area, "no triangle larger than A");
-  return {chk, [a] {
-            const unsigned threads = thread_count(0);  // as check() takes
-            const io::PointFile p = io::read_points(a->points, threads);
-            const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
-            const CheckResult r = [&] {
-              if (!mesh && io::is_parts_index(a->triangles)) {
-                // Parts may hold more triangles than memory with their edge table: read in
-                // passes, a part at a time.
-                const std::vector<std::string> parts = io::part_files(a->triangles);
-                return check_in_passes(p.points, [&](const TriangleSink& sink) {
-                  for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
-                });
-              }
-              const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index, threads);
-              if (!mesh) return check(p.points, t);
-              const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly, threads);
-              std::vector<VertexId> edges;
-              if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
-              MeshSpec spec;
-              spec.edges = edges;
-              spec.segments = g.segments;
-              spec.input_points = a->poly.empty() ? 0 : g.points.size();
-              spec.holes = g.holes;
-              spec.min_angle = a->min_angle;
-              spec.max_area = a->max_area;
-              return check_mesh(p.points, t, spec);
-            }();
-            std::printf("%s\n", r.message.c_str());
-            return r.valid ? 0 : kExitInvalid;
-          }};
+  return {
+      chk, [a] {
+        // NaN compared false with every bound, and a negative one checked nothing: "valid".
+        if (!(a->min_angle >= 0 && a->min_angle < 60))
+          throw InputError("--min-angle: an angle in degrees from 0 to below 60, got " + std::to_string(a->min_angle));
+        if (!(a->max_area >= 0) || !std::isfinite(a->max_area))
+          throw InputError("--max-area: a positive finite area, got " + std::to_string(a->max_area));
+        const unsigned threads = thread_count(0);  // as check() takes
+        const io::PointFile p = io::read_points(a->points, threads);
+        const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
+        const CheckResult r = [&] {
+          if (!mesh && io::is_parts_index(a->triangles)) {
+            // Parts may hold more triangles than memory with their edge table: read in
+            // passes, a part at a time.
+            const std::vector<std::string> parts = io::part_files(a->triangles);
+            return check_in_passes(p.points, [&](const TriangleSink& sink) {
+              for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
+            });
+          }
+          const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index, threads);
+          if (!mesh) return check(p.points, t);
+          const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly, threads);
+          std::vector<VertexId> edges;
+          if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
+          MeshSpec spec;
+          spec.edges = edges;
+          spec.segments = g.segments;
+          spec.input_points = a->poly.empty() ? 0 : g.points.size();
+          spec.holes = g.holes;
+          spec.min_angle = a->min_angle;
+          spec.max_area = a->max_area;
+          return check_mesh(p.points, t, spec);
+        }();
+        std::printf("%s\n", r.message.c_str());
+        return r.valid ? 0 : kExitInvalid;
+      }};
 }
 
 Command add_voronoi(CLI::App& app) {
@@ -85,6 +95,7 @@ Command add_voronoi(CLI::App& app) {
                   "10 % around)");
   vor->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {vor, [a] {
+            refuse_overwriting({a->input}, {a->output});
             const io::PointFile p = io::read_points(a->input, thread_count(a->threads));
             Options o;
             o.method = Method::Auto;

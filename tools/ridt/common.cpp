@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <thread>
 
 #include "command.hpp"
@@ -53,12 +54,43 @@ std::size_t byte_size(const std::string& text, const char* what) {
   return static_cast<std::size_t>(bytes);
 }
 
+void check_memory(const std::string& what, std::size_t needed, std::size_t limit) {
+  if (limit == 0) limit = available_memory();
+  if (limit == 0 || needed <= limit) return;  // 0: the system does not say
+  const auto gb = [](std::size_t bytes) {
+    char text[32];
+    if (bytes >= 1000000000)
+      std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    else
+      std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / 1e6);
+    return std::string(text);
+  };
+  throw MemoryError(what + " needs about " + gb(needed) + "; " + gb(limit) + " is available", needed, limit);
+}
+
 io::Box box_option(const std::string& text, std::span<const Point> points) {
   if (text.empty()) return io::box_around(points, 0.1);
   const std::vector<double> b = numbers(text, "--box");
   if (b.size() != 4 || !(b[0] < b[2]) || !(b[1] < b[3]))
     throw InputError("--box: give x0,y0,x1,y1 with x0 < x1 and y0 < y1");
   return {b[0], b[1], b[2], b[3]};
+}
+
+void refuse_overwriting(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
+  namespace fs = std::filesystem;
+  for (const std::string& in : inputs) {
+    std::error_code ec;
+    // A device or a pipe may be read and written at once (/dev/stdin and /dev/stdout of a
+    // terminal are one device); a regular file would be replaced.
+    if (in.empty() || !fs::is_regular_file(in, ec)) continue;
+    for (const std::string& out : outputs)
+      if (!out.empty() && fs::equivalent(in, out, ec))
+        throw InputError("the output " + out + " is the input " + in + ": it would be overwritten; give another name");
+  }
+}
+
+void refuse_ignored(bool given, const std::string& option, const std::string& why) {
+  if (given) throw InputError(option + " " + why);
 }
 
 unsigned thread_count(unsigned asked) { return asked != 0 ? asked : std::max(1u, std::thread::hardware_concurrency()); }

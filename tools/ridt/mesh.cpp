@@ -2,6 +2,8 @@
 // ...: the constrained Delaunay triangulation or quality mesh of a planar straight-line graph,
 // written as Triangle writes it: OUT.ele, OUT.node (every vertex: the input's in its numbering,
 // then the points added) and OUT.edge (the segments' edges), OUT.neigh with -n.
+#include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -15,7 +17,8 @@ struct Args {
   std::string input, output, switches;
   std::string method = "auto";
   unsigned threads = 0;
-  double quality = -1, max_area = 0;
+  double quality = 0, max_area = 0;
+  bool quality_given = false;  // --quality or q: the library judges the angle, NaN included
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
        neighbours = false, conforming = false;
 };
@@ -33,10 +36,16 @@ std::string number_after(const std::string& s, std::size_t& at) {
   return n;
 }
 
+// A switch's number; one that strtod takes only by rounding it to 0 or to infinity (1e-400,
+// 1e400) is refused, as an area bound that is not positive is: 0 would mean no bound at all.
 double parse_number(const std::string& text, char sw) {
   char* end = nullptr;
+  errno = 0;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0') throw InputError(std::string("switch '") + sw + "': bad number '" + text + "'");
+  const std::string what = std::string("switch '") + sw + "': ";
+  if (text.empty() || *end != '\0') throw InputError(what + "bad number '" + text + "'");
+  if (errno == ERANGE || !std::isfinite(v)) throw InputError(what + "'" + text + "' is out of range of a double");
+  if (sw == 'a' && !(v > 0)) throw InputError(what + "an area bound is positive, got '" + text + "'");
   return v;
 }
 
@@ -51,6 +60,7 @@ void apply_switches(Args& a) {
     if (c == 'q') {
       const std::string n = number_after(s, i);
       a.quality = n.empty() ? 20 : parse_number(n, c);
+      a.quality_given = true;
     } else if (c == 'a') {
       const std::string n = number_after(s, i);
       if (n.empty())
@@ -74,41 +84,45 @@ void apply_switches(Args& a) {
   }
 }
 
-// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
-// OUT.svg, its segments apart.
-void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
+// The files `a` asks for: OUT.svg, or OUT.ele and the files beside it.
+std::vector<std::string> outputs(const Args& a) {
   const std::string extension = std::filesystem::path(a.output).extension().string();
-  if (extension == ".svg") {
-    std::vector<Point> all = g.points;
-    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-    return io::write_mesh_svg(a.output, all, t, t.edges);
-  }
+  if (extension == ".svg") return {a.output};
   if (extension != ".ele")
     throw InputError(
         "mesh writes Triangle's files or a drawing: give -o OUT.ele (OUT.node and OUT.edge are "
         "written beside it) or OUT.svg");
-  const int first = a.zero_based ? 0 : g.first_index;
-  const std::filesystem::path base = std::filesystem::path(a.output).replace_extension();
-  const std::string node = base.string() + ".node", edge = base.string() + ".edge", neigh = base.string() + ".neigh";
+  return io::mesh_file_paths(a.output, a.neighbours);
+}
+
+// OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
+// OUT.svg, its segments apart.
+void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
   std::vector<Point> all = g.points;
   all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-  try {
-    const unsigned threads = thread_count(a.threads);
-    io::write_elements(a.output, t.triangles,
-                       a.attributes ? std::span<const double>(t.attributes) : std::span<const double>(), first,
-                       threads);
-    io::write_points(node, all, first, threads);
-    io::write_edges(edge, t.edges, first, threads);
-    if (a.neighbours) io::write_triangulation(neigh, all, t, first);
-  } catch (...) {
-    for (const std::string& f : {a.output, node, edge, neigh}) std::filesystem::remove(f);
-    throw;
-  }
+  if (std::filesystem::path(a.output).extension() == ".svg") return io::write_mesh_svg(a.output, all, t, t.edges);
+  io::MeshFiles m;
+  m.points = all;
+  m.triangles = std::span(t.triangles).first(3 * t.size());
+  if (a.attributes) m.attributes = t.attributes;
+  m.edges = t.edges;
+  if (a.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
+  m.first_index = a.zero_based ? 0 : g.first_index;
+  io::write_mesh_files(a.output, m, thread_count(a.threads));
 }
 
 int run(Args a) {
   apply_switches(a);
+  if (std::filesystem::path(a.output).extension() == ".svg") {
+    const char* why = "is not drawn: a drawing (.svg) has no neighbours, attributes or numbering; give -o OUT.ele";
+    refuse_ignored(a.neighbours, "--neighbours (n)", why);
+    refuse_ignored(a.attributes, "--attributes (A)", why);
+    refuse_ignored(a.zero_based, "numbering from 0 (z)", why);
+  }
+  const std::vector<std::string> out = outputs(a);
+  refuse_overwriting({a.input}, out);
   const io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
+  refuse_overwriting({g.node_file}, out);
   Options o;
   o.method = parse<Method>(a.method);
   o.threads = a.threads;
@@ -118,7 +132,7 @@ int run(Args a) {
   domain.holes = g.holes;
   for (const auto& r : g.regions) domain.regions.push_back({{r[0], r[1]}, r[2], a.region_areas ? r[3] : 0});
   Quality q;
-  q.min_angle = a.quality > 0 ? a.quality : 0;
+  q.min_angle = a.quality_given ? a.quality : 0;
   q.max_area = a.max_area;
   q.split_boundary = !a.no_boundary;
   q.conforming = a.conforming;
@@ -140,7 +154,8 @@ Command add_mesh(CLI::App& app) {
   mesh->add_option("input", a->input, "a planar straight-line graph: .poly (Triangle's)")->required();
   mesh->add_option("-o,--output", a->output, "OUT.ele (OUT.node and OUT.edge are written beside it), or OUT.svg")
       ->required();
-  mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
+  CLI::Option* quality =
+      mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
   mesh->add_option("--max-area", a->max_area, "no triangle larger than A (Triangle's -a)");
   mesh->add_flag("--region-areas", a->region_areas, "the regions' own area bounds (Triangle's -a with no number)");
   mesh->add_flag("--attributes", a->attributes, "each triangle's regional attribute in OUT.ele (Triangle's -A)");
@@ -153,7 +168,10 @@ Command add_mesh(CLI::App& app) {
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
                    "threads of the triangulation and of the output's text (0, the default: all hardware threads)");
-  return {mesh, [a] { return run(*a); }};
+  return {mesh, [a, quality] {
+            a->quality_given = quality->count() > 0;
+            return run(*a);
+          }};
 }
 
 }  // namespace ridt::tool

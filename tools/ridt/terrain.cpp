@@ -3,7 +3,9 @@
 //          [--max-edge L] [--extent x0,y0,x1,y1] [--type float32|float64] [--hillshade F.png]
 // Both: [--class 2,9] [--returns all|first|last|single] [--withheld] [--columns x,y,z]
 //       [--duplicates first|last|lowest|highest|mean] [--threads N] [--stats]
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "command.hpp"
@@ -29,9 +31,29 @@ struct Tin {
   double read_s = 0, triangulate_s = 0;
 };
 
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// Refuses the options that the input's format would ignore: LAS's filters on a table or a GDAL
+// layer, a table's columns on LAS.
+void refuse_ignored_filters(const Args& a) {
+  const std::string ext = lower_extension(a.input);
+  const bool las = ext == ".las" || ext == ".laz";
+  const std::string no_las = "is for LAS input, and " + a.input + " is not LAS (its points have no classes or returns)";
+  refuse_ignored(!las && !a.classes.empty(), "--class", no_las);
+  refuse_ignored(!las && a.returns != "all", "--returns", no_las);
+  refuse_ignored(!las && a.withheld, "--withheld", no_las);
+  refuse_ignored(las && !a.columns.empty(), "--columns",
+                 "is for a table or a GDAL layer; LAS has its x, y and z (" + a.input + ")");
+}
+
 Tin make_tin(const Args& a, ProgressLine& progress) {
   io::PointFilter filter;
-  filter.returns = parse<Returns>(a.returns);
+  filter.returns = parse<Returns>(a.returns);  // an unknown value named first
+  refuse_ignored_filters(a);
   filter.withheld = a.withheld;
   if (!a.classes.empty())
     for (const double c : numbers(a.classes, "--class")) {
@@ -78,6 +100,7 @@ void print_stats(const Tin& tin, double write_s, std::size_t cells) {
 }
 
 int run_tin(const Args& a) {
+  refuse_overwriting({a.input}, {a.output});
   ProgressLine progress;
   const Tin tin = make_tin(a, progress);
   const auto t0 = std::chrono::steady_clock::now();
@@ -91,6 +114,10 @@ int run_tin(const Args& a) {
 int run_dem(const Args& a) {
   if (!(a.resolution > 0) || !std::isfinite(a.resolution)) throw InputError("--resolution: a positive cell size");
   if (a.type != "float32" && a.type != "float64") throw InputError("--type: float32 or float64");
+  refuse_overwriting({a.input}, {a.output, a.hillshade});
+  if (!a.hillshade.empty() && lower_extension(a.hillshade) != ".png")
+    throw InputError("--hillshade: the hillshade is a .png picture, got " + a.hillshade +
+                     " (for the DEM itself, -o DEM.tif)");
   ProgressLine progress;
   const Tin tin = make_tin(a, progress);
   io::Box box = io::box_around(tin.terrain.points, 0);
@@ -112,7 +139,7 @@ int run_dem(const Args& a) {
   file.float32 = a.type == "float32";
   file.progress = [&](double f) { progress.show("writing the DEM", f); };
   io::write_dem(a.output, dem, file);
-  if (!a.hillshade.empty()) io::write_dem(a.hillshade, dem, file);
+  if (!a.hillshade.empty()) io::write_hillshade(a.hillshade, dem);
   progress.clear();
   if (a.stats) print_stats(tin, seconds_since(t0), dem.grid().size());
   return 0;

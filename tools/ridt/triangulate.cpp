@@ -17,6 +17,7 @@ struct Args {
   double k = 10;
   unsigned threads = 0;
   bool profile = false, paper_locking = false, no_thread_timing = false, out_of_core = false;
+  bool seed_given = false, k_given = false;  // options whose defaults are values too
   std::string memory_limit;
   std::uint64_t column_points = 0;
 };
@@ -108,10 +109,11 @@ Options options(const Args& a) {
 
 // --out-of-core: strip by strip within the memory limit (tools/support/out_of_core.hpp).
 int run_out_of_core(const Args& a) {
-  if (a.method != "auto" || a.order != "brio" || a.locate != "auto" || a.bounding != "symbolic" || a.profile)
+  if (a.method != "auto" || a.order != "brio" || a.locate != "auto" || a.bounding != "symbolic" || a.profile ||
+      a.seed_given || a.k_given || a.paper_locking || a.no_thread_timing)
     throw InputError(
-        "--out-of-core takes no --method, --order, --locate, --bounding or --profile: "
-        "each strip is triangulated by the walking kernel");
+        "--out-of-core takes no --method, --order, --locate, --seed, --bounding, --k, --paper-locking, "
+        "--no-thread-timing or --profile: each strip is triangulated by the walking kernel in an order of its own");
   if (a.output.empty()) throw InputError("--out-of-core needs an output, -o OUT.parts");
   if (a.stats != "" && a.stats != "json") throw InputError("--out-of-core prints its stats as json only");
   io::OutOfCoreOptions o;
@@ -140,7 +142,9 @@ int run_out_of_core(const Args& a) {
 }
 
 int run(const Args& a) {
+  refuse_overwriting({a.input}, {a.output});
   if (a.out_of_core) return run_out_of_core(a);
+  refuse_ignored(a.column_points != 0, "--column-points", "is for --out-of-core only");
   Options o = options(a);
   ProgressLine progress;
   if (progress.on()) o.progress = [&](double done) { progress.show(done < 1 ? "inserting" : "finishing", done); };
@@ -169,8 +173,8 @@ int run(const Args& a) {
   return 0;
 }
 
-// The paper's experiment switches (Options::experiment), apart in the help.
-void add_experiment(CLI::App* tri, Args& a) {
+// The paper's experiment switches (Options::experiment), apart in the help; returns --k.
+CLI::Option* add_experiment(CLI::App* tri, Args& a) {
   const std::string x = "Experiment (the paper's section 4)";
   tri->add_flag("--paper-locking", a.paper_locking, "pessimistic: lock from the leaves' parents, as the paper does")
       ->group(x);
@@ -178,7 +182,7 @@ void add_experiment(CLI::App* tri, Args& a) {
       ->group(x);
   tri->add_flag("--profile", a.profile, "serial: time location, split and legalization (Fig. 8)")->group(x);
   tri->add_option("--bounding", a.bounding, choices_help("the starting triangle", Bounding::Symbolic))->group(x);
-  tri->add_option("--k", a.k, "finite bounding triangle: K = k * box size (default 10)")->group(x);
+  return tri->add_option("--k", a.k, "finite bounding triangle: K = k * box size (default 10)")->group(x);
 }
 
 }  // namespace
@@ -188,7 +192,7 @@ Command add_triangulate(CLI::App& app) {
   CLI::App* tri = app.add_subcommand("triangulate", "triangulate a point file");
   tri->add_option("input", a->input, "points: " + io::point_formats())->required();
   tri->add_option("-o,--output", a->output, "triangles: " + io::triangulation_formats());
-  tri->add_option("--seed", a->seed, "seed of the random insertion order")->check(kSeed);
+  CLI::Option* seed = tri->add_option("--seed", a->seed, "seed of the random insertion order")->check(kSeed);
   tri->add_option("--method", a->method, choices_help("", Method::Auto));
   tri->add_option("--threads", a->threads,
                   "threads of a threaded method (0, the default: all hardware threads; batch: threads - 1 locators "
@@ -206,9 +210,10 @@ Command add_triangulate(CLI::App& app) {
                   "8 columns and loads one more on either side)");
   CLI::Option* stats =
       tri->add_option("--stats", a->stats, "print counters and times: json (default) or table")->expected(0, 1);
-  add_experiment(tri, *a);
-  return {tri, [a, stats] {
+  CLI::Option* k = add_experiment(tri, *a);
+  return {tri, [a, stats, seed, k] {
             if (*stats && a->stats.empty()) a->stats = "json";
+            a->seed_given = seed->count() > 0, a->k_given = k->count() > 0;
             return run(*a);
           }};
 }

@@ -5,6 +5,7 @@
 namespace ridt::io::detail {
 
 void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.cpp
+void write_ply_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
 Pslg read_poly(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
 PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads);
 
@@ -62,11 +63,15 @@ constexpr Format kFormats[] = {
     {".ele", "Triangle's elements",         nullptr,          read_ele,            nullptr,           ele_out,   nullptr,            nullptr, nullptr},
     {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr, nullptr, true},
     {".off", "OFF mesh",                    nullptr,          nullptr,             nullptr,           off_out,   write_voronoi_off,  nullptr, nullptr},
-    {".ply", "Stanford PLY, binary",        nullptr,          nullptr,             nullptr,           write_ply, nullptr,            nullptr, nullptr},
+    {".ply", "Stanford PLY, binary",        nullptr,          nullptr,             write_ply_points,  write_ply, nullptr,            nullptr, nullptr},
     {".obj", "Wavefront OBJ",               nullptr,          nullptr,             nullptr,           obj_out,   nullptr,            nullptr, nullptr},
     {".svg", "a drawing",                   nullptr,          nullptr,             nullptr,           svg_out,   write_voronoi_svg,  nullptr, nullptr, true},
     {".json", "JSON",                       nullptr,          nullptr,             nullptr,           nullptr,   write_voronoi_json, nullptr, nullptr},
-    {".csv", "x,y,values rows",             nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_csv, nullptr},
+    {".csv", "x,y rows (and values)",       read_text_points, nullptr,             write_csv_points,  nullptr,   nullptr,            write_values_csv, nullptr},
+    {".txt", "text, a point a line",        read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
+    {".xy", "text, a point a line",         read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
+    {".pts", "text, a point a line",        read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
+    {".dat", "text, a point a line",        read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
     {".png", "a colour map of a grid",      nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_png, nullptr},
     {".bin", "little-endian binary",        read_bin_points,  bin_triangles_in,    write_bin_points,  bin_out,   nullptr,            write_values_bin, nullptr, false, put_bin_sorted},
     {"", "text, a point or triangle a line", read_text_points, read_text_triangles, write_text_points, nullptr,  nullptr,            nullptr, nullptr},
@@ -82,6 +87,7 @@ std::span<const Format> formats() { return kFormats; }
 namespace ridt::io {
 
 std::string point_formats() { return detail::extensions_with(&detail::Format::read_points); }
+std::string point_output_formats() { return detail::extensions_with(&detail::Format::write_points, false); }
 std::string triangle_formats() { return detail::extensions_with(&detail::Format::read_triangles); }
 std::string triangulation_formats() { return detail::extensions_with(&detail::Format::write_triangulation); }
 std::string voronoi_formats() {

@@ -61,16 +61,19 @@ struct Format {
 };
 
 /// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws
-/// IoError naming the extensions that have it, `what` naming the role.
+/// IoError naming the extensions that have it, `what` naming the role. With `any_extension`
+/// false, text (the format of extension "") is only for a path without an extension: an output
+/// whose extension names another format is not written as text.
 template <class Role>
-const Format& format_of(const std::string& path, Role Format::*role, const char* what);
+const Format& format_of(const std::string& path, Role Format::*role, const char* what, bool any_extension = true);
 
 /// The registered formats.
 std::span<const Format> formats();
 
-/// "a, b or c": the extensions of the formats with `role` (", or text" where any other is).
+/// "a, b or c": the extensions of the formats with `role` (" or text" where any other is, " or
+/// none (text)" where only a path without an extension is: `any_extension` false).
 template <class Role>
-std::string extensions_with(Role Format::*role) {
+std::string extensions_with(Role Format::*role, bool any_extension = true) {
   std::string list;
   bool text = false;
   std::vector<std::string_view> found;
@@ -78,17 +81,18 @@ std::string extensions_with(Role Format::*role) {
     if (f.*role != nullptr) f.extension.empty() ? void(text = true) : found.push_back(f.extension);
   for (std::size_t i = 0; i < found.size(); ++i)
     list += std::string(i == 0 ? "" : i + 1 == found.size() && !text ? " or " : ", ") + std::string(found[i]);
-  return text ? list + " or text" : list;
+  return !text ? list : any_extension ? list + " or text" : list + " or none (text)";
 }
 
 template <class Role>
-const Format& format_of(const std::string& path, Role Format::*role, const char* what) {
+const Format& format_of(const std::string& path, Role Format::*role, const char* what, bool any_extension) {
   const std::string ext = extension_of(path);
   for (const Format& f : formats())
     if (f.extension == ext && f.*role != nullptr) return f;
   for (const Format& f : formats())
-    if (f.extension.empty() && f.*role != nullptr) return f;
-  throw IoError("unknown " + std::string(what) + " extension '" + ext + "' (use " + extensions_with(role) + ")");
+    if (any_extension && f.extension.empty() && f.*role != nullptr) return f;
+  throw IoError("unknown " + std::string(what) + " extension '" + ext + "' (use " +
+                extensions_with(role, any_extension) + ")");
 }
 
 }  // namespace ridt::io::detail

@@ -25,7 +25,7 @@ PointFile parse_points(std::string_view data, const std::string& name, unsigned 
 }
 
 void write_points(const std::string& path, std::span<const Point> points, int first_index, unsigned threads) {
-  const Format& f = format_of(path, &Format::write_points, "point output");
+  const Format& f = format_of(path, &Format::write_points, "point output", false);
   Writer out(path);
   f.write_points(out, points, first_index, threads);
   out.commit();
@@ -88,7 +88,8 @@ void write_triangulation(const std::string& path, std::span<const Point> points,
 
 SortedOutput::SortedOutput(const std::string& path) : path_(path) {
   const Format& f = format_of(path, &Format::write_triangulation, "output");
-  if (f.put_sorted == nullptr) return;
+  // A device or a pipe takes its bytes in order only: the file is written after the sort.
+  if (f.put_sorted == nullptr || output_target(path).in_place) return;
   writer_ = std::make_unique<Writer>(path);
   put_ = f.put_sorted;
 }

@@ -3,11 +3,13 @@
 // Points in:  .node (Triangle's format: "n 2 attributes markers" then "i x y ..."; its first
 //             index, 0 or 1, is kept), .bin (raw little-endian float64 x, y pairs), anything
 //             else text (one point a line, "x y" or "x,y", '#' starts a comment).
-// Points out: .node, .bin, anything else text ("x y" with the shortest exact decimal form).
+// Points out: .node, .bin, .ply, .csv ("x,y"), text ("x y" with the shortest exact decimal
+//             form) for .txt, .xy, .pts, .dat or no extension; another extension is refused.
 // Triangles:  .ele (Triangle's format, numbered from the input .node's first index, else 0),
 //             .neigh (Triangle's neighbour file, -1 on the hull), .off, .obj, .svg (a drawing),
 //             .bin (little-endian uint32 triples). Every file is written to a temporary
-//             name beside the target and renamed, so a failure never leaves half a file.
+//             name beside the target and renamed, so a failure never leaves half a file; a
+//             device or a pipe is written in place (Writer, writer.hpp).
 #pragma once
 
 #include <array>
@@ -64,6 +66,7 @@ struct Pslg {
   std::vector<Point> holes;
   std::vector<std::array<double, 4>> regions;
   int first_index = 0;  ///< the file's numbering (0 or 1), for the files written from it
+  std::string node_file;  ///< the .node file beside it that the points came from, where it lists none
 };
 
 /// Reads a .poly file (its points from the .node file beside it where it lists none); throws
@@ -88,6 +91,25 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
 /// `first_index`, each with boundary marker 1 (they are segments); formatted on `threads` threads.
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads = 1);
 
+/// A mesh as Triangle writes it (ridt mesh).
+struct MeshFiles {
+  std::span<const Point> points;  ///< every vertex: OUT.node
+  std::span<const VertexId> triangles;  ///< OUT.ele
+  std::span<const double> attributes;  ///< one a triangle (Triangle's -A), or none
+  std::span<const VertexId> edges;  ///< the segments' edges, pairs of indices: OUT.edge
+  std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh, where not empty
+  int first_index = 0;  ///< the numbering of every file
+};
+
+/// The files write_mesh_files writes for OUT.ele `ele`: it, then OUT.node, OUT.edge and, with
+/// `neighbors`, OUT.neigh.
+std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors);
+
+/// Writes the mesh's files (mesh_file_paths), all or none: each is written under a temporary
+/// name and all are renamed once all are written; IoError where one cannot be (a directory in
+/// its place, among others), and then no file that was not there is left.
+void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threads = 1);
+
 /// Writes triangles as Triangle's .ele file, numbered from `first_index`, with one attribute a
 /// triangle where `attributes` is not empty (Triangle's -A); formatted on `threads` threads.
 void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
@@ -95,6 +117,7 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
 
 /// The extensions of each kind of file, for a help text ("a, b or text").
 std::string point_formats();
+std::string point_output_formats();
 std::string triangle_formats();
 std::string triangulation_formats();
 std::string voronoi_formats();
@@ -108,7 +131,9 @@ PointFile read_points(const std::string& path, unsigned threads = 1);
 /// and stands for the file in messages.
 PointFile parse_points(std::string_view data, const std::string& name, unsigned threads = 1);
 
-/// Writes points (format by extension); text is formatted on `threads` threads.
+/// Writes points (format by extension: .node, .bin, .ply (vertices alone), .csv ("x,y" lines),
+/// text for .txt, .xy, .pts, .dat and no extension; IoError naming these for another one);
+/// text is formatted on `threads` threads.
 void write_points(const std::string& path, std::span<const Point> points, int first_index = 0, unsigned threads = 1);
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;

@@ -353,6 +353,32 @@ inline VertexId vertex(const std::string& path, std::size_t line, std::string_vi
 
 using io::Writer;
 
+/// A drawing's map of the box [x0, x1] x [y0, y1] onto [0, side] along its longer side, y down.
+/// The box is brought near 1 by exact powers of two before the one rounded multiplication, so
+/// that every box of finite corners maps to finite numbers: one 1e-310 wide (whose side / width
+/// overflows) as well as one wider than the largest double (whose width does).
+class ViewMap {
+ public:
+  ViewMap(double x0, double y0, double x1, double y1, double side) : x0_(x0), y1_(y1) {
+    // Halving is exact for the large coordinates that need it; differences of halves are finite.
+    shift_ = std::max({std::fabs(x0), std::fabs(y0), std::fabs(x1), std::fabs(y1)}) > 0x1p1000 ? 1 : 0;
+    const double w = dx(x1), h = dy(y0), longer = std::max(w, h);
+    exponent_ = longer > 0 ? std::ilogb(longer) : 0;
+    factor_ = side / std::ldexp(longer > 0 ? longer : 1, -exponent_);  // longer scaled into [1, 2)
+    width = x(x1), height = y(y0);
+  }
+  double x(double c) const { return std::ldexp(dx(c), -exponent_) * factor_; }
+  double y(double c) const { return std::ldexp(dy(c), -exponent_) * factor_; }
+  double width = 0, height = 0;  ///< of the box, in the drawing's units
+
+ private:
+  double dx(double c) const { return std::ldexp(c, -shift_) - std::ldexp(x0_, -shift_); }
+  double dy(double c) const { return std::ldexp(y1_, -shift_) - std::ldexp(c, -shift_); }
+  double x0_, y1_;
+  int shift_ = 0, exponent_ = 0;
+  double factor_ = 1;
+};
+
 /// IoError unless every index of `ids` names one of `n` points.
 inline void check_indices(const std::string& path, std::span<const VertexId> ids, std::size_t n, const char* what) {
   for (std::size_t i = 0; i < ids.size(); ++i) {
@@ -377,6 +403,8 @@ PointFile read_text_points(const std::string& path, std::string_view text, unsig
 std::vector<VertexId> read_text_triangles(const std::string& path, std::string_view text, int first_index,
                                           unsigned threads = 1);
 void write_text_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
+/// "x,y" a line (read back as text).
+void write_csv_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 
 // Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);

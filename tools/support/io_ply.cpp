@@ -21,4 +21,12 @@ void write_ply(const std::string& path, const TriangulationOut& o) {
   out.commit();
 }
 
+// Points alone: the vertices, and no face.
+void write_ply_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned /*threads*/) {
+  out.put("ply\nformat binary_little_endian 1.0\ncomment ridt: points\nelement vertex ");
+  out.put_int(static_cast<std::int64_t>(points.size()));
+  out.put("\nproperty double x\nproperty double y\nproperty double z\nend_header\n");
+  for (const Point& p : points) out.put_f64_le(p.x), out.put_f64_le(p.y), out.put_f64_le(0.0);
+}
+
 }  // namespace ridt::io::detail

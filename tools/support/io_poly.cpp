@@ -31,6 +31,7 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
   if (n == 0) {  // the vertices in the .node file beside it
     const std::string node = (fs::path(path).replace_extension(".node")).string();
     p = read_node(node, FileText(node).view(), threads);
+    g.node_file = node;
   } else {  // the lines up to the last vertex's are a .node file's, line numbers and all
     need(path, lines, 1, n, "vertices");
     p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);
@@ -112,8 +113,9 @@ PointFile read_poly_points(const std::string& path, std::string_view text, unsig
 
 namespace ridt::io {
 
-void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads) {
-  detail::Writer out(path);
+namespace {
+
+void put_edges(detail::Writer& out, std::span<const VertexId> edges, int first_index, unsigned threads) {
   out.put_int(static_cast<std::int64_t>(edges.size() / 2));
   out.put(" 1\n");
   out.put_lines(edges.size() / 2, threads, [&](std::size_t k, TextPart& line) {
@@ -121,6 +123,30 @@ void write_edges(const std::string& path, std::span<const VertexId> edges, int f
     for (int e = 0; e < 2; ++e) line.put(' '), line.put_int(static_cast<std::int64_t>(edges[2 * k + e]) + first_index);
     line.put(" 1\n");
   });
+}
+
+// Renames the closed writers' files onto their targets; where one fails, the files that this
+// call has put where there was none are removed again.
+void commit_all(std::vector<std::unique_ptr<detail::Writer>>& out) {
+  std::vector<std::string> made;
+  try {
+    for (const auto& w : out) {
+      struct stat st {};
+      const bool there = ::stat(w->target().c_str(), &st) == 0;
+      w->commit();
+      if (!there && !w->in_place()) made.push_back(w->target());
+    }
+  } catch (...) {
+    for (const std::string& f : made) std::remove(f.c_str());
+    throw;
+  }
+}
+
+}  // namespace
+
+void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads) {
+  detail::Writer out(path);
+  put_edges(out, edges, first_index, threads);
   out.commit();
 }
 
@@ -129,6 +155,31 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
   detail::Writer out(path);
   detail::write_ele(out, triangles, first_index, attributes, threads);
   out.commit();
+}
+
+std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors) {
+  const std::string base = detail::fs::path(ele).replace_extension().string();
+  std::vector<std::string> paths = {ele, base + ".node", base + ".edge"};
+  if (neighbors) paths.push_back(base + ".neigh");
+  return paths;
+}
+
+void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threads) {
+  if (!m.neighbors.empty() && m.neighbors.size() != m.triangles.size())
+    detail::fail_file(ele,
+                      std::to_string(m.neighbors.size()) + " neighbour entries for " +
+                          std::to_string(m.triangles.size() / 3) + " triangles");
+  // Every file opened first (a directory in the way is refused before any is written), all
+  // written and closed, then renamed together.
+  std::vector<std::unique_ptr<detail::Writer>> out;
+  for (const std::string& path : mesh_file_paths(ele, !m.neighbors.empty()))
+    out.push_back(std::make_unique<detail::Writer>(path));
+  detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads);
+  detail::write_node(*out[1], m.points, m.first_index, threads);
+  put_edges(*out[2], m.edges, m.first_index, threads);
+  if (out.size() > 3) detail::write_neigh(*out[3], m.neighbors, m.first_index, threads);
+  for (const auto& w : out) w->close();
+  commit_all(out);
 }
 
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index) {

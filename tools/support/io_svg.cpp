@@ -7,36 +7,35 @@ namespace {
 constexpr double kSide = 1000;
 constexpr double kMargin = 20;
 
-// The points' box mapped to [0, 1000] along its longer side, y flipped so up is up. Halved
-// coordinates keep the differences finite even for a box wider than the largest double. Line
-// widths come from the mean edge length of a triangulation of this size in the box.
+// The points' box mapped to [0, 1000] along its longer side, y flipped so up is up (ViewMap:
+// finite for any finite box). Line widths come from the mean edge length of a triangulation of
+// this size in the box.
 struct Drawing {
-  Drawing(std::span<const Point> pts, std::size_t triangles) : points(pts) {
-    if (!points.empty()) {
-      min_x = max_x = points[0].x;
-      min_y = max_y = points[0].y;
-    }
-    for (const Point& p : points) {
-      min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
-      min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
-    }
-    const double half_w = max_x * 0.5 - min_x * 0.5, half_h = max_y * 0.5 - min_y * 0.5;
-    const double half_box = std::max(half_w, half_h);
-    scale = half_box > 0 ? kSide / half_box : 1;  // per halved unit
-    width = half_w * scale + 2 * kMargin, height = half_h * scale + 2 * kMargin;
+  Drawing(std::span<const Point> pts, std::size_t triangles) : points(pts), map(box(pts)) {
+    width = map.width + 2 * kMargin, height = map.height + 2 * kMargin;
     const double edge = kSide / std::sqrt(static_cast<double>(triangles) / 2 + 1);
     thin = std::clamp(edge / 25, 0.05, 1.0);
     thick = std::max(3 * thin, 1.5);
     radius = std::clamp(edge / 10, 0.3, 3.0);
   }
-  double sx(double x) const { return (x * 0.5 - min_x * 0.5) * scale; }
-  double sy(double y) const { return (max_y * 0.5 - y * 0.5) * scale; }
+  static ViewMap box(std::span<const Point> points) {
+    double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+    if (!points.empty()) min_x = max_x = points[0].x, min_y = max_y = points[0].y;
+    for (const Point& p : points) {
+      min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+      min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+    }
+    return ViewMap(min_x, min_y, max_x, max_y, kSide);
+  }
+  double sx(double x) const { return map.x(x); }
+  double sy(double y) const { return map.y(y); }
   void xy(Writer& out, VertexId v) const {
     out.put_fixed(sx(points[v].x), 3), out.put(' '), out.put_fixed(sy(points[v].y), 3);
   }
 
   std::span<const Point> points;
-  double min_x = 0, max_x = 0, min_y = 0, max_y = 0, scale = 1, width = 0, height = 0;
+  ViewMap map;
+  double width = 0, height = 0;
   double thin = 0, thick = 0, radius = 0;
 };
 

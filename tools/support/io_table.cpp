@@ -61,10 +61,54 @@ std::size_t column(const std::string& path, const std::string& spec, const std::
 
 }  // namespace
 
+namespace {
+
+// The first line's fields that are coordinates: those --columns numbers, else the first three;
+// none where --columns names a column (then the line must be a header that has the name).
+std::vector<std::size_t> coordinate_fields(const Columns& columns, bool& named) {
+  std::vector<std::size_t> at;
+  named = false;
+  std::size_t fallback = 0;
+  for (const std::string* spec : {&columns.x, &columns.y, &columns.z}) {
+    std::int64_t k = 0;
+    if (spec->empty())
+      at.push_back(fallback);
+    else if (detail::parse_int(*spec, k) == detail::Parse::Ok && k >= 1)
+      at.push_back(static_cast<std::size_t>(k - 1));
+    else
+      named = true;
+    ++fallback;
+  }
+  return at;
+}
+
+// Whether the first line (its fields) is a header: where its coordinate fields are all not
+// numbers, or --columns names a column. Where some are numbers and some not, it is neither.
+bool is_header(const std::string& path, std::size_t line, std::string_view content,
+               const std::vector<std::string_view>& fields, const Columns& columns) {
+  bool named = false;
+  std::size_t numbers = 0, texts = 0, text_at = 0;
+  for (const std::size_t c : coordinate_fields(columns, named)) {
+    if (c >= fields.size()) continue;
+    if (is_number(fields[c]))
+      ++numbers;
+    else if (texts++ == 0)
+      text_at = c;
+  }
+  if (named || numbers == 0) return true;
+  if (texts == 0) return false;
+  fail_line(
+      path, line,
+      "field " + std::to_string(text_at + 1) + " " + detail::quoted(fields[text_at]) +
+          " is not a number, others are: neither a header (names) nor a row of numbers: " + detail::quoted(content));
+}
+
+}  // namespace
+
 Terrain parse_table(std::string_view text, const std::string& name, const Columns& columns) {
   Terrain out;
   char delimiter = 0;
-  std::size_t cx = 0, cy = 0, cz = 0, width = 0;
+  std::size_t cx = 0, cy = 0, cz = 0, width = 0, first = 0;
   std::vector<std::string_view> fields;
   detail::for_each_line(text, [&](std::size_t line, std::string_view content) {
     if (delimiter == 0) {  // the first line: the delimiter, and a header or not
@@ -73,8 +117,8 @@ Terrain parse_table(std::string_view text, const std::string& name, const Column
           : content.find('\t') != content.npos      ? '\t'
                                                     : ' ';
       split(content, delimiter, fields);
-      width = fields.size();
-      const bool header = !std::all_of(fields.begin(), fields.end(), is_number);
+      width = fields.size(), first = line;
+      const bool header = is_header(name, line, content, fields, columns);
       std::vector<std::string> names;
       for (std::size_t i = 0; i < width; ++i)
         names.push_back(header ? detail::lower_case(fields[i]) : std::to_string(i + 1));
@@ -85,8 +129,10 @@ Terrain parse_table(std::string_view text, const std::string& name, const Column
     } else {
       split(content, delimiter, fields);
     }
-    if (fields.size() < width)
-      fail_line(name, line, "expected " + std::to_string(width) + " fields, got " + detail::quoted(content));
+    if (fields.size() != width)  // a ragged table is a broken one: its columns cannot be trusted
+      fail_line(name, line,
+                "expected " + std::to_string(width) + " fields, as line " + std::to_string(first) + " has, got " +
+                    std::to_string(fields.size()) + ": " + detail::quoted(content));
     const auto value = [&](std::size_t c) {
       return detail::coordinate(name, line, fields[c], [&] {
         return "field " + std::to_string(c + 1) + " " + detail::quoted(fields[c]) + " is not a number";

@@ -74,6 +74,12 @@ void write_tin(const std::string& path, const Terrain& terrain, const Triangulat
   fail_file(path, "unknown TIN extension '" + ext + "' (use " + tin_formats() + ")");
 }
 
+void write_hillshade(const std::string& path, const Dem& dem) {
+  if (detail::lower_case(detail::extension_of(path)) != ".png")
+    fail_file(path, "a hillshade is a .png picture (the DEM itself: .tif or .img)");
+  write_hillshade_png(path, dem);
+}
+
 void write_dem(const std::string& path, const Dem& dem, const DemFile& file) {
   if (detail::extension_of(path) == ".png") return write_hillshade_png(path, dem);
   detail::write_dem_gdal(path, dem, file);

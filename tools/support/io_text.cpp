@@ -54,4 +54,13 @@ void write_text_points(Writer& out, std::span<const Point> points, int /*first_i
   });
 }
 
+void write_csv_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned threads) {
+  out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
+    line.put_double(points[k].x);
+    line.put(',');
+    line.put_double(points[k].y);
+    line.put('\n');
+  });
+}
+
 }  // namespace ridt::io::detail

@@ -103,7 +103,7 @@ void write_values_png(Writer& out, const ValuesOut& v) {
 }
 
 void write_values_bin(Writer& out, const ValuesOut& v) {
-  for (const double x : v.values) out.put_f64_le(x);
+  for (const double x : v.values) out.put_value_f64_le(x);
 }
 
 void write_values_csv(Writer& out, const ValuesOut& v) {
@@ -112,7 +112,7 @@ void write_values_csv(Writer& out, const ValuesOut& v) {
   out.put('\n');
   for (std::size_t i = 0; i < v.queries.size(); ++i) {
     out.put_double(v.queries[i].x), out.put(','), out.put_double(v.queries[i].y);
-    for (std::size_t k = 0; k < v.components; ++k) out.put(','), out.put_double(v.values[i * v.components + k]);
+    for (std::size_t k = 0; k < v.components; ++k) out.put(','), out.put_value(v.values[i * v.components + k]);
     out.put('\n');
   }
 }

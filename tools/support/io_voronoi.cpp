@@ -158,11 +158,11 @@ void write_voronoi_svg(Writer& out, const VoronoiOut& v) {
               std::to_string(v.vd.cells()) + " cells are too many to draw usefully (at most " +
                   std::to_string(kSvgMaxTriangles) + "); write .json or .off instead");
   const Box& box = v.box;
-  const double w = box.x1 - box.x0, h = box.y1 - box.y0, scale = 1000 / std::max(w, h);
-  auto x = [&](double c) { return (c - box.x0) * scale; };
-  auto y = [&](double c) { return (box.y1 - c) * scale; };
+  const ViewMap map(box.x0, box.y0, box.x1, box.y1, 1000);
+  auto x = [&](double c) { return map.x(c); };
+  auto y = [&](double c) { return map.y(c); };
   out.put("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 ");
-  out.put_fixed(w * scale, 3), out.put(' '), out.put_fixed(h * scale, 3);
+  out.put_fixed(map.width, 3), out.put(' '), out.put_fixed(map.height, 3);
   out.put("\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
   out.put("<g fill=\"#dbe9f6\" stroke=\"#2c6fad\" stroke-width=\"0.6\" stroke-linejoin=\"round\">\n");
   for (const auto& poly : clipped_cells(v)) {

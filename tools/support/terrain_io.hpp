@@ -64,8 +64,11 @@ Terrain parse_las(std::string_view data, const std::string& name, const PointFil
 /// The same from a file (mapped into memory, not copied).
 Terrain read_las(const std::string& path, const PointFilter& filter = {});
 
-/// A table's points (see the file's head); throws IoError naming the line of a bad field, a
-/// column that is not there, or a table without a z column.
+/// A table's points (see the file's head). The first line is a header (the columns' names) when
+/// none of its coordinate fields (those --columns numbers, else the first three) is a number, or
+/// when `columns` names a column; a row when all are. Every line has as many fields as the
+/// first. Throws IoError naming the line of a bad field, of a row of another width, of a first
+/// line that is neither, a column that is not there, or a table without a z column.
 Terrain parse_table(std::string_view text, const std::string& name, const Columns& columns = {});
 
 /// Points with heights from any of the formats, chosen by extension: .las, .laz (refused),
@@ -97,6 +100,10 @@ struct DemFile {
 /// the build has GDAL. A .png is a hillshade (quick look, no GDAL needed; the whole raster in
 /// memory). Nothing is left at `path` on failure. Throws IoError.
 void write_dem(const std::string& path, const Dem& dem, const DemFile& file);
+
+/// Writes the DEM's hillshade (sun in the north-west, 45 degrees high) as a grey .png, transparent
+/// where there is no height; IoError for another extension. Nothing is left at `path` on failure.
+void write_hillshade(const std::string& path, const Dem& dem);
 
 namespace detail {
 

@@ -1,8 +1,10 @@
 // A file written whole or not at all: buffered output to a temporary name beside the target,
-// renamed onto it by commit(). Every writer of the tools uses it (io_*.cpp, ridt-mpi).
+// renamed onto it by commit(); a device or a pipe is written in place instead. Every writer of
+// the tools uses it (io_*.cpp, ridt-mpi).
 #pragma once
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,10 +12,12 @@
 #include <bit>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -24,6 +28,47 @@
 #include "io.hpp"
 
 namespace ridt::io {
+
+/// A number that is not finite met by a writer of coordinates: never written, the file is
+/// refused instead (a NaN or an infinity is not a number that a reader takes back).
+class NotFinite : public IoError {
+ public:
+  explicit NotFinite(double v)
+      : IoError(std::string("a number that is not finite (") +
+                (std::isnan(v) ? "NaN"
+                     : v > 0   ? "inf"
+                               : "-inf") +
+                ") cannot be written") {}
+};
+
+/// Where the bytes of an output named `path` go.
+struct OutputTarget {
+  std::string path;  ///< `path` with its symbolic links followed: the file that is written
+  bool in_place = false;  ///< an existing file that is not a regular one (a device, a pipe): written in order
+};
+
+/// The target of `path`: a symbolic link is followed to its target (existing or not), so that
+/// the target is written and the link kept; IoError where it is a directory or a loop of links.
+inline OutputTarget output_target(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {  // the kernel follows the links, /proc's too
+    if (S_ISDIR(st.st_mode)) throw IoError("cannot write " + path + ": it is a directory");
+    if (!S_ISREG(st.st_mode)) return {path, true};
+    const fs::path real = fs::canonical(path, ec);
+    if (ec) throw IoError("cannot write " + path + ": " + ec.message());
+    return {real.string(), false};
+  }
+  fs::path p = path;  // none there: a dangling link's target is made
+  for (int hops = 0; fs::is_symlink(p, ec); ++hops) {
+    if (hops == 40) throw IoError("cannot write " + path + ": " + std::strerror(ELOOP));
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) throw IoError("cannot write " + path + ": " + ec.message());
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  return {p.string(), false};
+}
 
 /// Text formatted into memory, in the Writer's forms: a run of a file's lines that threads
 /// format side by side (Writer::put_lines).
@@ -41,8 +86,9 @@ class TextPart {
     char* at = room(kNumberRoom);
     size_ = static_cast<std::size_t>(std::to_chars(at, at + kNumberRoom, v).ptr - buf_.get());
   }
-  /// Shortest decimal form that reads back to exactly `v`.
+  /// Shortest decimal form that reads back to exactly `v`; NotFinite for NaN or an infinity.
   void put_double(double v) {
+    if (!std::isfinite(v)) throw NotFinite(v);
     char* at = room(kNumberRoom);
     size_ = static_cast<std::size_t>(std::to_chars(at, at + kNumberRoom, v).ptr - buf_.get());
   }
@@ -66,12 +112,20 @@ class TextPart {
   std::size_t size_ = 0, capacity_ = 0;
 };
 
-/// Buffered output to a temporary file beside `path`, renamed onto `path` by commit(). If the
-/// writer is destroyed without a successful commit the temporary file is removed.
+/// Buffered output to a temporary file beside `path`'s target (output_target: a symbolic link
+/// followed), renamed onto the target by commit(). If the writer is destroyed without a
+/// successful commit the temporary file is removed. A target that exists and is not a regular
+/// file (a device such as /dev/stdout, a pipe) is written in place, in order, as the bytes come:
+/// there an error midway cannot take back what was written.
 class Writer {
  public:
-  explicit Writer(const std::string& path) : path_(path), tmp_(temp_name(path)) {
-    fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  explicit Writer(const std::string& path) : path_(path), target_(output_target(path)) {
+    if (target_.in_place) {
+      fd_ = ::open(target_.path.c_str(), O_WRONLY | O_CLOEXEC);
+    } else {
+      tmp_ = temp_name(target_.path);
+      fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    }
     if (fd_ < 0) fail(errno);
   }
 
@@ -80,8 +134,14 @@ class Writer {
 
   ~Writer() {
     if (fd_ >= 0) ::close(fd_);
-    if (!committed_) std::remove(tmp_.c_str());
+    if (!committed_ && !tmp_.empty()) std::remove(tmp_.c_str());
   }
+
+  /// Whether the file is written in place (a device, a pipe), not renamed: put_at takes only
+  /// the bytes that come next.
+  bool in_place() const { return target_.in_place; }
+  /// The file written: the path with its symbolic links followed.
+  const std::string& target() const { return target_.path; }
 
   void put(std::string_view s) {
     if (s.size() > kCapacity - pos_) {
@@ -100,15 +160,26 @@ class Writer {
     buf_[pos_++] = c;
   }
 
-  /// Shortest decimal form that reads back to exactly `v`.
+  /// Shortest decimal form that reads back to exactly `v`; NotFinite (as IoError naming the
+  /// file) for NaN or an infinity.
   void put_double(double v) {
+    if (!std::isfinite(v)) fail_not_finite(v);
     room(kNumberRoom);
     const auto r = std::to_chars(buf_.get() + pos_, buf_.get() + kCapacity, v);
     pos_ = static_cast<std::size_t>(r.ptr - buf_.get());
   }
 
-  /// `v` with at most `decimals` digits after the point, trailing zeros removed.
+  /// A value where NaN and infinities are meant (a fill value): "nan", "inf", "-inf", else as
+  /// put_double.
+  void put_value(double v) {
+    if (std::isfinite(v)) return put_double(v);
+    put(std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf");
+  }
+
+  /// `v` with at most `decimals` digits after the point, trailing zeros removed; IoError for NaN
+  /// or an infinity, as put_double.
   void put_fixed(double v, int decimals) {
+    if (!std::isfinite(v)) fail_not_finite(v);
     room(kNumberRoom + 320);  // fixed notation of a huge double is long
     char* const begin = buf_.get() + pos_;
     const auto r = std::to_chars(begin, buf_.get() + kCapacity, v, std::chars_format::fixed, decimals);
@@ -137,7 +208,14 @@ class Writer {
     pos_ += 4;
   }
 
+  /// IoError for NaN or an infinity, as put_double.
   void put_f64_le(double d) {
+    if (!std::isfinite(d)) fail_not_finite(d);
+    put_value_f64_le(d);
+  }
+
+  /// A value where NaN and infinities are meant (a fill value), as it is.
+  void put_value_f64_le(double d) {
     std::uint64_t v = std::bit_cast<std::uint64_t>(d);
     if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap64(v);
     room(8);
@@ -147,9 +225,12 @@ class Writer {
 
   /// Writes `s` at byte `offset` of the file, past what put() buffers: from any thread, several
   /// at once (a file filled in stretches as they are ready; its size, their end).
+  /// In place (a device, a pipe), only the bytes that come next are taken.
   void put_at(std::uint64_t offset, std::string_view s) {
+    if (target_.in_place && offset != end_) fail(ESPIPE);
     while (!s.empty()) {
-      const ssize_t n = ::pwrite(fd_, s.data(), s.size(), static_cast<off_t>(offset));
+      const ssize_t n = target_.in_place ? ::write(fd_, s.data(), s.size())
+                                         : ::pwrite(fd_, s.data(), s.size(), static_cast<off_t>(offset));
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) fail(n < 0 ? errno : ENOSPC);
       s.remove_prefix(static_cast<std::size_t>(n));
@@ -162,6 +243,34 @@ class Writer {
   /// wave before.
   template <class Line>
   void put_lines(std::size_t count, unsigned threads, Line&& line) {
+    try {
+      put_lines_on(count, threads, line);
+    } catch (const NotFinite& e) {
+      throw IoError("cannot write " + path_ + ": " + e.what());
+    }
+  }
+
+  /// Writes out and closes the file under its temporary name (throws if that fails): what is
+  /// left is the rename, which commit() does. For writers that must agree before any renames.
+  void close() {
+    if (fd_ < 0) return;
+    flush();
+    if (::close(std::exchange(fd_, -1)) != 0) fail(errno);
+  }
+
+  void commit() {
+    close();
+    errno = 0;
+    if (!target_.in_place && std::rename(tmp_.c_str(), target_.path.c_str()) != 0) fail(errno);
+    committed_ = true;
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = std::size_t{1} << 20;
+  static constexpr std::size_t kNumberRoom = 48;
+
+  template <class Line>
+  void put_lines_on(std::size_t count, unsigned threads, Line& line) {
     constexpr std::size_t kRun = std::size_t{1} << 15;
     const std::size_t runs = (count + kRun - 1) / kRun;
     auto format = [&](TextPart& part, std::size_t run) {
@@ -216,25 +325,6 @@ class Writer {
     }
   }
 
-  /// Writes out and closes the file under its temporary name (throws if that fails): what is
-  /// left is the rename, which commit() does. For writers that must agree before any renames.
-  void close() {
-    if (fd_ < 0) return;
-    flush();
-    if (::close(std::exchange(fd_, -1)) != 0) fail(errno);
-  }
-
-  void commit() {
-    close();
-    errno = 0;
-    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail(errno);
-    committed_ = true;
-  }
-
- private:
-  static constexpr std::size_t kCapacity = std::size_t{1} << 20;
-  static constexpr std::size_t kNumberRoom = 48;
-
   static std::string temp_name(const std::string& path) {
     static std::atomic<unsigned> counter{0};
     return path + ".tmp-" + std::to_string(static_cast<long long>(::getpid())) + "-" +
@@ -243,6 +333,10 @@ class Writer {
 
   [[noreturn]] void fail(int err) const {
     throw IoError("cannot write " + path_ + ": " + (err != 0 ? std::strerror(err) : "unknown error"));
+  }
+
+  [[noreturn]] void fail_not_finite(double v) const {
+    throw IoError("cannot write " + path_ + ": " + NotFinite(v).what());
   }
 
   void room(std::size_t n) {
@@ -261,7 +355,8 @@ class Writer {
   }
 
   std::string path_;
-  std::string tmp_;
+  OutputTarget target_;
+  std::string tmp_;  // empty in place
   int fd_ = -1;
   std::uint64_t end_ = 0;  // what put() has written out
   std::unique_ptr<char[]> buf_{new char[kCapacity]};
