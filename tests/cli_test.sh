@@ -584,12 +584,9 @@ python3 -c "
 import random
 random.seed(3)
 for _ in range(200): print(repr(random.random() * 1e150), repr(random.random() * 1e150))" >"$dir/huge.txt"
-for ext in json off svg; do
-  if "$ridt" voronoi "$dir/huge.txt" -o "$dir/huge.$ext" 2>"$dir/err"; then
-    ! grep -qi 'nan\|inf' "$dir/huge.$ext" && pass || fail "voronoi .$ext wrote a number that is not finite"
-  else
-    stderr_has "not finite"; absent "$dir/huge.$ext"
-  fi
+for ext in json off svg; do  # the circumcentres are finite at any scale
+  expect 0 "voronoi of points near 1e150 to .$ext" -- "$ridt" voronoi "$dir/huge.txt" -o "$dir/huge.$ext"
+  ! grep -qi 'nan\|inf' "$dir/huge.$ext" && pass || fail "voronoi .$ext wrote a number that is not finite"
 done
 
 # GDAL's outputs too: a link's target is written and the link kept; a FIFO gets the file's bytes.
