@@ -341,6 +341,25 @@ expect 1 "check the mesh, a tighter bound" -- "$ridt" check "$dir/q.node" "$dir/
 expect 0 "mesh long options" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q2.ele" --quality 33 --max-area 1 --neighbours
 [ -s "$dir/q2.neigh" ] && pass || fail "--neighbours wrote no .neigh"
 expect 0 "check the mesh at 33" -- "$ridt" check "$dir/q2.node" "$dir/q2.ele" --poly "$dir/sq.poly" --edges "$dir/q2.edge" --min-angle 33 --max-area 1
+# Markers in OUT.edge by Triangle's rule: a segment's pieces keep its marker (7 along y = 0,
+# 9 along y = 10), other boundary edges 1, an inner segment (x = 5, unmarked) 0; the vertices'
+# attributes and markers, read and checked, are said not to be carried.
+printf '6 2 1 1\n1 0 0 5 3\n2 10 0 6 0\n3 10 10 7 0\n4 0 10 8 0\n5 5 2 1 0\n6 5 8 1 0\n5 1\n1 1 2 7\n2 2 3 0\n3 3 4 9\n4 4 1 0\n5 5 6 0\n0\n' >"$dir/marked.poly"
+expect 0 "mesh with segment markers" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked.ele" --switches pq30a5
+stderr_has "not carried"
+/usr/bin/python3 - "$dir/marked" <<'PY' && pass || fail "edge markers not as Triangle gives them"
+import sys
+rows = lambda ext: [l.split() for l in open(sys.argv[1] + ext) if l.strip() and not l.startswith("#")][1:]
+xy = {r[0]: (float(r[1]), float(r[2])) for r in rows(".node")}
+seen = set()
+for _, a, b, m in rows(".edge"):
+    (ax, ay), (bx, by) = xy[a], xy[b]
+    want = 7 if ay == by == 0 else 9 if ay == by == 10 else 0 if ax == bx == 5 else 1
+    assert int(m) == want, (a, b, m, want)
+    seen.add(want)
+assert seen == {0, 1, 7, 9}, seen
+PY
+
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
 stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
 expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pS

@@ -2,13 +2,17 @@
 // ...: the constrained Delaunay triangulation or quality mesh of a planar straight-line graph,
 // written as Triangle writes it: OUT.ele, OUT.node (every vertex: the input's in its numbering,
 // then the points added) and OUT.edge (the segments' edges), OUT.neigh with -n.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "command.hpp"
 #include "ridt/constrained.hpp"
+#include "ridt/predicates.hpp"
 
 namespace ridt::tool {
 namespace {
@@ -95,6 +99,59 @@ std::vector<std::string> outputs(const Args& a) {
   return io::mesh_file_paths(a.output, a.neighbours);
 }
 
+std::uint64_t undirected(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
+
+// The pieces of input segment a-b, marked `marker`, followed from a through the segment edges
+// to points on it (exactly, or added points within a rounding of it), each piece marked; the
+// walk stops where the chain does (a stretch of the segment in a hole).
+void mark_pieces(std::span<const Point> all, std::size_t input, VertexId a, VertexId b, std::int64_t marker,
+                 const std::vector<std::vector<VertexId>>& adjacent,
+                 const std::unordered_map<std::uint64_t, std::size_t>& edge_of, std::vector<std::int64_t>& markers) {
+  const Point &pa = all[a], &pb = all[b];
+  const double dx = pb.x - pa.x, dy = pb.y - pa.y, length2 = dx * dx + dy * dy;
+  auto along = [&](VertexId v) { return ((all[v].x - pa.x) * dx + (all[v].y - pa.y) * dy) / length2; };
+  auto on = [&](VertexId v) {
+    if (v == b || orientation(pa, pb, all[v]) == 0) return true;
+    const double cross = dx * (all[v].y - pa.y) - dy * (all[v].x - pa.x);
+    return v >= input && std::fabs(cross) <= 0x1p-40 * length2;
+  };
+  for (VertexId v = a; v != b;) {
+    VertexId next = v;
+    for (const VertexId w : adjacent[v])
+      if (along(w) > along(v) && along(w) <= 1 && on(w) && (next == v || along(w) < along(next))) next = w;
+    if (next == v) return;
+    markers[edge_of.at(undirected(v, next))] = marker;
+    v = next;
+  }
+}
+
+// Each segment edge's marker, by Triangle's rule: that of the input segment it is a piece of
+// where not 0; else 1 on the boundary (an edge of one triangle), 0 inside.
+std::vector<std::int64_t> edge_markers(const io::Pslg& g, const ConstrainedTriangulation& t,
+                                       std::span<const Point> all) {
+  std::unordered_set<std::uint64_t> directed;
+  for (std::size_t k = 0; k < 3 * t.size(); ++k)
+    directed.insert((std::uint64_t{t.triangles[k]} << 32) | t.triangles[k % 3 == 2 ? k - 2 : k + 1]);
+  const std::size_t count = t.edges.size() / 2;
+  std::vector<std::int64_t> markers(count);
+  std::unordered_map<std::uint64_t, std::size_t> edge_of;
+  std::vector<std::vector<VertexId>> adjacent(all.size());
+  for (std::size_t k = 0; k < count; ++k) {
+    const VertexId a = t.edges[2 * k], b = t.edges[2 * k + 1];
+    markers[k] = directed.count((std::uint64_t{a} << 32) | b) && directed.count((std::uint64_t{b} << 32) | a) ? 0 : 1;
+    edge_of[undirected(a, b)] = k;
+    adjacent[a].push_back(b), adjacent[b].push_back(a);
+  }
+  std::vector<VertexId> kept(g.points.size());  // a duplicate end stands for the point kept
+  for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
+  for (const Duplicate& d : t.duplicates) kept[d.dropped] = d.kept;
+  for (std::size_t s = 0; s < g.segment_markers.size(); ++s)
+    if (const VertexId a = kept[g.segments[2 * s]], b = kept[g.segments[2 * s + 1]];
+        g.segment_markers[s] != 0 && a != b)
+      mark_pieces(all, g.points.size(), a, b, g.segment_markers[s], adjacent, edge_of, markers);
+  return markers;
+}
+
 // OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
 // OUT.svg, its segments apart.
 void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
@@ -106,6 +163,8 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   m.triangles = std::span(t.triangles).first(3 * t.size());
   if (a.attributes) m.attributes = t.attributes;
   m.edges = t.edges;
+  const std::vector<std::int64_t> markers = edge_markers(g, t, all);
+  m.edge_markers = markers;
   if (a.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
   m.first_index = a.zero_based ? 0 : g.first_index;
   io::write_mesh_files(a.output, m, thread_count(a.threads));
@@ -138,6 +197,9 @@ int run(Args a) {
   q.conforming = a.conforming;
   const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
+  if (g.vertex_attributes > 0 || g.vertex_markers > 0)
+    std::fprintf(stderr, "ridt: the vertices' attributes and markers of %s are not carried into the .node written\n",
+                 a.input.c_str());
   if (t.crossings > 0)
     std::fprintf(stderr, "ridt: %zu points added where segments cross (the first %zu added points)\n", t.crossings,
                  t.crossings);

@@ -28,11 +28,19 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
   const std::int64_t n = integer(path, lines[0].number, h[0], "number of vertices");
   if (integer(path, lines[0].number, h[1], "dimension") != 2) fail_line(path, lines[0].number, "dimension must be 2");
   PointFile p;
+  auto declared = [&](const std::vector<std::string_view>& fields, std::size_t line_no) {
+    if (fields.size() > 2) g.vertex_attributes = integer(path, line_no, fields[2], "number of attributes");
+    if (fields.size() > 3) g.vertex_markers = integer(path, line_no, fields[3], "number of boundary markers");
+  };
   if (n == 0) {  // the vertices in the .node file beside it
     const std::string node = (fs::path(path).replace_extension(".node")).string();
-    p = read_node(node, FileText(node).view(), threads);
+    const FileText text(node);
+    p = read_node(node, text.view(), threads);
+    if (const std::optional<Head> head = head_line(text.view()))
+      declared(fields(node, head->line, 2, 4, "a header \"points 2 [attributes [markers]]\""), head->line.number);
     g.node_file = node;
-  } else {  // the lines up to the last vertex's are a .node file's, line numbers and all
+  } else {
+    declared(h, lines[0].number);  // the lines up to the last vertex's are a .node file's, line numbers and all
     need(path, lines, 1, n, "vertices");
     p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);
   }
@@ -48,6 +56,9 @@ std::size_t read_segments(const std::string& path, const std::vector<Line>& line
   const std::int64_t m = integer(path, lines[at].number, h[0], "number of segments");
   need(path, lines, at + 1, m, "segments");
   g.segments.resize(2 * static_cast<std::size_t>(m));
+  g.segment_markers.assign(
+      h.size() > 1 && integer(path, lines[at].number, h[1], "number of markers") > 0 ? static_cast<std::size_t>(m) : 0,
+      0);
   parse_in_ranges(0, static_cast<std::size_t>(m), threads, [&](std::size_t k) {
     const Line& l = lines[at + 1 + k];
     Fields f{l.text, false};
@@ -62,6 +73,8 @@ std::size_t read_segments(const std::string& path, const std::vector<Line>& line
       if (v >= g.points.size()) fail_line(path, l.number, "segment end " + std::string(ends[e]) + " is not a vertex");
       g.segments[2 * k + static_cast<std::size_t>(e)] = v;
     }
+    if (!g.segment_markers.empty())
+      g.segment_markers[k] = marker.empty() ? 0 : integer(path, l.number, marker, "segment marker");
   });
   return at + 1 + static_cast<std::size_t>(m);
 }
@@ -115,13 +128,14 @@ namespace ridt::io {
 
 namespace {
 
-void put_edges(detail::Writer& out, std::span<const VertexId> edges, int first_index, unsigned threads) {
+void put_edges(detail::Writer& out, std::span<const VertexId> edges, int first_index, unsigned threads,
+               std::span<const std::int64_t> markers = {}) {
   out.put_int(static_cast<std::int64_t>(edges.size() / 2));
   out.put(" 1\n");
   out.put_lines(edges.size() / 2, threads, [&](std::size_t k, TextPart& line) {
     line.put_int(static_cast<std::int64_t>(k) + first_index);
     for (int e = 0; e < 2; ++e) line.put(' '), line.put_int(static_cast<std::int64_t>(edges[2 * k + e]) + first_index);
-    line.put(" 1\n");
+    line.put(' '), line.put_int(markers.empty() ? 1 : markers[k]), line.put('\n');
   });
 }
 
@@ -176,7 +190,7 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
     out.push_back(std::make_unique<detail::Writer>(path));
   detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads);
   detail::write_node(*out[1], m.points, m.first_index, threads);
-  put_edges(*out[2], m.edges, m.first_index, threads);
+  put_edges(*out[2], m.edges, m.first_index, threads, m.edge_markers);
   if (out.size() > 3) detail::write_neigh(*out[3], m.neighbors, m.first_index, threads);
   for (const auto& w : out) w->close();
   commit_all(out);
