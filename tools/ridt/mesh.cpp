@@ -7,8 +7,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "command.hpp"
 #include "ridt/constrained.hpp"
@@ -99,14 +97,46 @@ std::vector<std::string> outputs(const Args& a) {
   return io::mesh_file_paths(a.output, a.neighbours);
 }
 
-std::uint64_t undirected(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
+// The segment edges (ConstrainedTriangulation::edges: pairs a < b, sorted) as lists of
+// neighbours, and the index of edge a-b among them (or the count where it is none).
+struct SegmentEdges {
+  explicit SegmentEdges(std::span<const VertexId> edges, std::size_t points) : edges_(edges), start_(points + 1, 0) {
+    for (const VertexId v : edges) ++start_[v + 1];
+    for (std::size_t v = 1; v < start_.size(); ++v) start_[v] += start_[v - 1];
+    next_.resize(edges.size());
+    std::vector<std::size_t> at(start_.begin(), start_.end() - 1);
+    for (std::size_t k = 0; k < edges.size(); k += 2)
+      next_[at[edges[k]]++] = edges[k + 1], next_[at[edges[k + 1]]++] = edges[k];
+  }
+  std::span<const VertexId> around(VertexId v) const {
+    return std::span(next_).subspan(start_[v], start_[v + 1] - start_[v]);
+  }
+  std::size_t index(VertexId a, VertexId b) const {
+    const std::pair key{std::min(a, b), std::max(a, b)};
+    std::size_t lo = 0, hi = edges_.size() / 2;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (std::pair{edges_[2 * mid], edges_[2 * mid + 1]} < key)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return lo < edges_.size() / 2 && edges_[2 * lo] == key.first && edges_[2 * lo + 1] == key.second
+        ? lo
+        : edges_.size() / 2;
+  }
+
+ private:
+  std::span<const VertexId> edges_;
+  std::vector<std::size_t> start_;
+  std::vector<VertexId> next_;
+};
 
 // The pieces of input segment a-b, marked `marker`, followed from a through the segment edges
 // to points on it (exactly, or added points within a rounding of it), each piece marked; the
 // walk stops where the chain does (a stretch of the segment in a hole).
 void mark_pieces(std::span<const Point> all, std::size_t input, VertexId a, VertexId b, std::int64_t marker,
-                 const std::vector<std::vector<VertexId>>& adjacent,
-                 const std::unordered_map<std::uint64_t, std::size_t>& edge_of, std::vector<std::int64_t>& markers) {
+                 const SegmentEdges& edges, std::vector<std::int64_t>& markers) {
   const Point &pa = all[a], &pb = all[b];
   const double dx = pb.x - pa.x, dy = pb.y - pa.y, length2 = dx * dx + dy * dy;
   auto along = [&](VertexId v) { return ((all[v].x - pa.x) * dx + (all[v].y - pa.y) * dy) / length2; };
@@ -117,38 +147,33 @@ void mark_pieces(std::span<const Point> all, std::size_t input, VertexId a, Vert
   };
   for (VertexId v = a; v != b;) {
     VertexId next = v;
-    for (const VertexId w : adjacent[v])
+    for (const VertexId w : edges.around(v))
       if (along(w) > along(v) && along(w) <= 1 && on(w) && (next == v || along(w) < along(next))) next = w;
     if (next == v) return;
-    markers[edge_of.at(undirected(v, next))] = marker;
+    markers[edges.index(v, next)] = marker;
     v = next;
   }
 }
 
 // Each segment edge's marker, by Triangle's rule: that of the input segment it is a piece of
-// where not 0; else 1 on the boundary (an edge of one triangle), 0 inside.
+// where not 0; else 1 on the boundary (an edge with no triangle across), 0 inside.
 std::vector<std::int64_t> edge_markers(const io::Pslg& g, const ConstrainedTriangulation& t,
                                        std::span<const Point> all) {
-  std::unordered_set<std::uint64_t> directed;
-  for (std::size_t k = 0; k < 3 * t.size(); ++k)
-    directed.insert((std::uint64_t{t.triangles[k]} << 32) | t.triangles[k % 3 == 2 ? k - 2 : k + 1]);
-  const std::size_t count = t.edges.size() / 2;
-  std::vector<std::int64_t> markers(count);
-  std::unordered_map<std::uint64_t, std::size_t> edge_of;
-  std::vector<std::vector<VertexId>> adjacent(all.size());
-  for (std::size_t k = 0; k < count; ++k) {
-    const VertexId a = t.edges[2 * k], b = t.edges[2 * k + 1];
-    markers[k] = directed.count((std::uint64_t{a} << 32) | b) && directed.count((std::uint64_t{b} << 32) | a) ? 0 : 1;
-    edge_of[undirected(a, b)] = k;
-    adjacent[a].push_back(b), adjacent[b].push_back(a);
-  }
+  const SegmentEdges edges(t.edges, all.size());
+  std::vector<std::int64_t> markers(t.edges.size() / 2, 0);
+  for (std::size_t s = 0; s < 3 * t.size() && s < t.neighbors.size(); ++s)
+    if (t.neighbors[s] < 0) {
+      const std::size_t first = s - s % 3;
+      const std::size_t k = edges.index(t.triangles[first + (s + 1) % 3], t.triangles[first + (s + 2) % 3]);
+      if (k < markers.size()) markers[k] = 1;
+    }
   std::vector<VertexId> kept(g.points.size());  // a duplicate end stands for the point kept
   for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
   for (const Duplicate& d : t.duplicates) kept[d.dropped] = d.kept;
   for (std::size_t s = 0; s < g.segment_markers.size(); ++s)
     if (const VertexId a = kept[g.segments[2 * s]], b = kept[g.segments[2 * s + 1]];
         g.segment_markers[s] != 0 && a != b)
-      mark_pieces(all, g.points.size(), a, b, g.segment_markers[s], adjacent, edge_of, markers);
+      mark_pieces(all, g.points.size(), a, b, g.segment_markers[s], edges, markers);
   return markers;
 }
 
