@@ -3,6 +3,8 @@
 // interpolation of a grid's nodes (queries/field.hpp), so that both accept the same points.
 #pragma once
 
+#include <memory>
+#include <mutex>
 #include <span>
 
 #include "predicates/predicates.hpp"
@@ -18,9 +20,12 @@ namespace ridt::detail {
 class NearHull {
  public:
   NearHull() = default;
-  /// No tolerance (0 or less, or NaN) accepts nothing; the box is found only where one is given.
-  NearHull(std::span<const Point> points, double tolerance) : tolerance_(tolerance > 0 ? tolerance : 0) {
-    if (tolerance_ > 0) box_ = extent_of(points);
+  /// No tolerance (0 or less, or NaN) accepts nothing. The box is found the first time a point
+  /// outside the hull asks (once, whichever thread asks first): a call whose queries all lie
+  /// inside does not scan the points.
+  NearHull(std::span<const Point> points, double tolerance)
+      : tolerance_(tolerance > 0 ? tolerance : 0), lazy_(std::make_shared<Lazy>()) {
+    lazy_->points = points;
   }
 
   bool active() const { return tolerance_ > 0; }
@@ -33,7 +38,9 @@ class NearHull {
   bool operator()(const Point& a, const Point& b, const Point& c, const Point& q) const {
     if (!(tolerance_ > 0)) return false;
     const double t = tolerance_;
-    if (q.x < box_.x0 - t || q.x > box_.x1 + t || q.y < box_.y0 - t || q.y > box_.y1 + t) return false;
+    std::call_once(lazy_->once, [this] { lazy_->box = extent_of(lazy_->points); });
+    const Extent& box = lazy_->box;
+    if (q.x < box.x0 - t || q.x > box.x1 + t || q.y < box.y0 - t || q.y > box.y1 + t) return false;
     double w[3];
     barycentric(a, b, c, q, w);
     for (const double x : w)
@@ -42,8 +49,13 @@ class NearHull {
   }
 
  private:
+  struct Lazy {
+    std::span<const Point> points;
+    std::once_flag once;
+    Extent box;
+  };
   double tolerance_ = 0;
-  Extent box_;
+  std::shared_ptr<Lazy> lazy_;  // shared by the copies the threads hold
 };
 
 }  // namespace ridt::detail

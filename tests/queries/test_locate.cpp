@@ -1,6 +1,8 @@
 // Point location (ridt/locate.hpp) against an exact scan of every triangle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -160,6 +162,20 @@ TEST(Locate, ScipyToleranceAcceptsPointsJustOutsideTheHull) {
   EXPECT_EQ(locate(pts, tri, far, 1, kScipyTolerance), std::vector<std::int32_t>(far.size(), -1));
   const std::vector<Point> inside = random_queries(2000, -0.1, 1.1, 5);
   EXPECT_EQ(locate(pts, tri, inside, 1, kScipyTolerance), locate(pts, tri, inside, 1, 0));
+}
+
+// Enough queries just outside the hull for every thread to ask for the tolerance's box at once
+// (found once, by whichever asks first): the same answers as on one thread.
+TEST(Locate, ScipyToleranceOnThreads) {
+  const std::vector<Point> pts = generate(Distribution::Grid, 10000, 3);
+  const Triangulation tri = test::triangulate_checked(pts);
+  double x1 = pts[0].x;
+  for (const Point& p : pts) x1 = std::max(x1, p.x);
+  std::vector<Point> q;
+  for (int k = 0; k < 60000; ++k) q.push_back({std::nextafter(x1, 2 * x1 + 1), pts[k % pts.size()].y});
+  const std::vector<std::int32_t> one = locate(pts, tri, q, 1, kScipyTolerance);
+  EXPECT_EQ(locate(pts, tri, q, 4, kScipyTolerance), one);
+  EXPECT_GT(std::count_if(one.begin(), one.end(), [](std::int32_t t) { return t >= 0; }), 50000);
 }
 
 // The tolerance's bounding box is in absolute units, as scipy's: at a scale of 10^6 an ulp
