@@ -306,7 +306,7 @@ expect 2 "missing part" -- "$ridt" check "$dir/uniform.bin" "$dir/bad.parts"
 printf '8 2 0 1\n1 0 0 1\n2 10 0 1\n3 10 10 1\n4 0 10 1\n5 4 4 1\n6 6 4 1\n7 6 6 1\n8 4 6 1\n8 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n1\n1 5 5\n' >"$dir/sq.poly"
 expect 0 "mesh" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sq.ele"
 [ "$(head -1 "$dir/sq.ele")" = "8 3 0" ] && pass || fail "the holed square is not 8 triangles"
-[ "$(head -1 "$dir/sq.node")" = "8 2 0 0" ] && pass || fail "sq.node"
+[ "$(head -1 "$dir/sq.node")" = "8 2 0 1" ] && pass || fail "sq.node: its header, with a marker a vertex"
 [ "$(head -1 "$dir/sq.edge")" = "8 1" ] && pass || fail "sq.edge"
 grep -q '^1 ' "$dir/sq.ele" && pass || fail ".ele not numbered from 1 as its .poly"
 expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
@@ -341,9 +341,10 @@ expect 1 "check the mesh, a tighter bound" -- "$ridt" check "$dir/q.node" "$dir/
 expect 0 "mesh long options" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q2.ele" --quality 33 --max-area 1 --neighbours
 [ -s "$dir/q2.neigh" ] && pass || fail "--neighbours wrote no .neigh"
 expect 0 "check the mesh at 33" -- "$ridt" check "$dir/q2.node" "$dir/q2.ele" --poly "$dir/sq.poly" --edges "$dir/q2.edge" --min-angle 33 --max-area 1
-# Markers in OUT.edge by Triangle's rule: a segment's pieces keep its marker (7 along y = 0,
-# 9 along y = 10), other boundary edges 1, an inner segment (x = 5, unmarked) 0; the vertices'
-# attributes and markers, read and checked, are said not to be carried.
+# Markers by Triangle's rule: a segment's pieces keep its marker (7 along y = 0, 9 along
+# y = 10), other boundary edges 1, an inner segment (x = 5, unmarked) 0; a vertex its own
+# marker where not 0 (3 at the origin), else a marked piece's, else 1 on the boundary, else 0;
+# the vertices' attributes, read and checked, are said not to be carried.
 printf '6 2 1 1\n1 0 0 5 3\n2 10 0 6 0\n3 10 10 7 0\n4 0 10 8 0\n5 5 2 1 0\n6 5 8 1 0\n5 1\n1 1 2 7\n2 2 3 0\n3 3 4 9\n4 4 1 0\n5 5 6 0\n0\n' >"$dir/marked.poly"
 expect 0 "mesh with segment markers" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked.ele" --switches pq30a5
 stderr_has "not carried"
@@ -358,6 +359,10 @@ for _, a, b, m in rows(".edge"):
     assert int(m) == want, (a, b, m, want)
     seen.add(want)
 assert seen == {0, 1, 7, 9}, seen
+for _, x, y, m in rows(".node"):
+    x, y = float(x), float(y)
+    want = 3 if x == y == 0 else 7 if y == 0 else 9 if y == 10 else 1 if x in (0, 10) else 0
+    assert int(m) == want, (x, y, m, want)
 PY
 
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
@@ -413,7 +418,7 @@ done
 for ext in ele node edge; do
   cmp -s "$dir/big1.$ext" "$dir/big3.$ext" && pass || fail "mesh's .$ext differs on 3 threads"
 done
-[ "$(head -1 "$dir/big1.node")" = "70000 2 0 0" ] && pass || fail "big1.node's header"
+[ "$(head -1 "$dir/big1.node")" = "70000 2 0 1" ] && pass || fail "big1.node's header"
 expect 0 "generate 100000 .node" -- "$ridt" generate -n 100000 --seed 5 -o "$dir/big.node"
 expect 0 "generate 100000 .txt" -- "$ridt" generate -n 100000 --seed 5 -o "$dir/big.txt"
 expect 0 "generate 100000 .bin" -- "$ridt" generate -n 100000 --seed 5 -o "$dir/big.bin"

@@ -97,46 +97,41 @@ std::vector<std::string> outputs(const Args& a) {
   return io::mesh_file_paths(a.output, a.neighbours);
 }
 
-// The segment edges (ConstrainedTriangulation::edges: pairs a < b, sorted) as lists of
-// neighbours, and the index of edge a-b among them (or the count where it is none).
-struct SegmentEdges {
-  explicit SegmentEdges(std::span<const VertexId> edges, std::size_t points) : edges_(edges), start_(points + 1, 0) {
+// The segment edges (pairs of indices) as lists of neighbours, each with the edge's index.
+class SegmentEdges {
+ public:
+  SegmentEdges(std::span<const VertexId> edges, std::size_t points) : start_(points + 1, 0), count_(edges.size() / 2) {
     for (const VertexId v : edges) ++start_[v + 1];
     for (std::size_t v = 1; v < start_.size(); ++v) start_[v] += start_[v - 1];
     next_.resize(edges.size());
     std::vector<std::size_t> at(start_.begin(), start_.end() - 1);
-    for (std::size_t k = 0; k < edges.size(); k += 2)
-      next_[at[edges[k]]++] = edges[k + 1], next_[at[edges[k + 1]]++] = edges[k];
+    for (std::size_t k = 0; k < edges.size(); k += 2) {
+      next_[at[edges[k]]++] = {edges[k + 1], static_cast<std::uint32_t>(k / 2)};
+      next_[at[edges[k + 1]]++] = {edges[k], static_cast<std::uint32_t>(k / 2)};
+    }
   }
-  std::span<const VertexId> around(VertexId v) const {
+  /// The neighbours of v, each with the index of the edge to it.
+  std::span<const std::pair<VertexId, std::uint32_t>> around(VertexId v) const {
     return std::span(next_).subspan(start_[v], start_[v + 1] - start_[v]);
   }
+  /// The index of edge a-b, or the number of edges where it is none.
   std::size_t index(VertexId a, VertexId b) const {
-    const std::pair key{std::min(a, b), std::max(a, b)};
-    std::size_t lo = 0, hi = edges_.size() / 2;
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi) / 2;
-      if (std::pair{edges_[2 * mid], edges_[2 * mid + 1]} < key)
-        lo = mid + 1;
-      else
-        hi = mid;
-    }
-    return lo < edges_.size() / 2 && edges_[2 * lo] == key.first && edges_[2 * lo + 1] == key.second
-        ? lo
-        : edges_.size() / 2;
+    for (const auto& [w, k] : around(a))
+      if (w == b) return k;
+    return count_;
   }
 
  private:
-  std::span<const VertexId> edges_;
   std::vector<std::size_t> start_;
-  std::vector<VertexId> next_;
+  std::vector<std::pair<VertexId, std::uint32_t>> next_;
+  std::size_t count_;
 };
 
 // The pieces of input segment a-b, marked `marker`, followed from a through the segment edges
-// to points on it (exactly, or added points within a rounding of it), each piece marked; the
-// walk stops where the chain does (a stretch of the segment in a hole).
+// to points on it (exactly, or added points within a rounding of it), each piece and its ends
+// marked; the walk stops where the chain does (a stretch of the segment in a hole).
 void mark_pieces(std::span<const Point> all, std::size_t input, VertexId a, VertexId b, std::int64_t marker,
-                 const SegmentEdges& edges, std::vector<std::int64_t>& markers) {
+                 const SegmentEdges& edges, std::vector<std::int64_t>& markers, std::vector<std::int64_t>& ends) {
   const Point &pa = all[a], &pb = all[b];
   const double dx = pb.x - pa.x, dy = pb.y - pa.y, length2 = dx * dx + dy * dy;
   auto along = [&](VertexId v) { return ((all[v].x - pa.x) * dx + (all[v].y - pa.y) * dy) / length2; };
@@ -147,25 +142,32 @@ void mark_pieces(std::span<const Point> all, std::size_t input, VertexId a, Vert
   };
   for (VertexId v = a; v != b;) {
     VertexId next = v;
-    for (const VertexId w : edges.around(v))
+    for (const auto& [w, k] : edges.around(v))
       if (along(w) > along(v) && along(w) <= 1 && on(w) && (next == v || along(w) < along(next))) next = w;
     if (next == v) return;
     markers[edges.index(v, next)] = marker;
+    ends[v] = ends[next] = marker;
     v = next;
   }
 }
 
-// Each segment edge's marker, by Triangle's rule: that of the input segment it is a piece of
-// where not 0; else 1 on the boundary (an edge with no triangle across), 0 inside.
-std::vector<std::int64_t> edge_markers(const io::Pslg& g, const ConstrainedTriangulation& t,
-                                       std::span<const Point> all) {
+struct Markers {
+  std::vector<std::int64_t> edges, points;
+};
+
+// The markers Triangle writes. A segment edge's: that of the input segment it is a piece of
+// where not 0; else 1 on the boundary (an edge with no triangle across), 0 inside. A vertex's:
+// the input's where not 0; else that of a marked segment edge it ends; else 1 on the boundary,
+// 0 inside.
+Markers markers_of(const io::Pslg& g, const ConstrainedTriangulation& t, std::span<const Point> all) {
   const SegmentEdges edges(t.edges, all.size());
-  std::vector<std::int64_t> markers(t.edges.size() / 2, 0);
+  Markers m{std::vector<std::int64_t>(t.edges.size() / 2, 0), std::vector<std::int64_t>(all.size(), 0)};
   for (std::size_t s = 0; s < 3 * t.size() && s < t.neighbors.size(); ++s)
     if (t.neighbors[s] < 0) {
       const std::size_t first = s - s % 3;
-      const std::size_t k = edges.index(t.triangles[first + (s + 1) % 3], t.triangles[first + (s + 2) % 3]);
-      if (k < markers.size()) markers[k] = 1;
+      const VertexId a = t.triangles[first + (s + 1) % 3], b = t.triangles[first + (s + 2) % 3];
+      m.points[a] = m.points[b] = 1;
+      if (const std::size_t k = edges.index(a, b); k < m.edges.size()) m.edges[k] = 1;
     }
   std::vector<VertexId> kept(g.points.size());  // a duplicate end stands for the point kept
   for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
@@ -173,8 +175,10 @@ std::vector<std::int64_t> edge_markers(const io::Pslg& g, const ConstrainedTrian
   for (std::size_t s = 0; s < g.segment_markers.size(); ++s)
     if (const VertexId a = kept[g.segments[2 * s]], b = kept[g.segments[2 * s + 1]];
         g.segment_markers[s] != 0 && a != b)
-      mark_pieces(all, g.points.size(), a, b, g.segment_markers[s], edges, markers);
-  return markers;
+      mark_pieces(all, g.points.size(), a, b, g.segment_markers[s], edges, m.edges, m.points);
+  for (std::size_t v = 0; v < g.point_markers.size(); ++v)
+    if (g.point_markers[v] != 0) m.points[v] = g.point_markers[v];
+  return m;
 }
 
 // OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
@@ -188,8 +192,9 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   m.triangles = std::span(t.triangles).first(3 * t.size());
   if (a.attributes) m.attributes = t.attributes;
   m.edges = t.edges;
-  const std::vector<std::int64_t> markers = edge_markers(g, t, all);
-  m.edge_markers = markers;
+  const Markers markers = markers_of(g, t, all);
+  m.edge_markers = markers.edges;
+  m.point_markers = markers.points;
   if (a.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
   m.first_index = a.zero_based ? 0 : g.first_index;
   io::write_mesh_files(a.output, m, thread_count(a.threads));
@@ -222,8 +227,8 @@ int run(Args a) {
   q.conforming = a.conforming;
   const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
-  if (g.vertex_attributes > 0 || g.vertex_markers > 0)
-    std::fprintf(stderr, "ridt: the vertices' attributes and markers of %s are not carried into the .node written\n",
+  if (g.vertex_attributes > 0)
+    std::fprintf(stderr, "ridt: the vertices' attributes of %s are not carried into the .node written\n",
                  a.input.c_str());
   if (t.crossings > 0)
     std::fprintf(stderr, "ridt: %zu points added where segments cross (the first %zu added points)\n", t.crossings,

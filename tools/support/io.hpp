@@ -68,8 +68,10 @@ struct Pslg {
   int first_index = 0;  ///< the file's numbering (0 or 1), for the files written from it
   std::string node_file;  ///< the .node file beside it that the points came from, where it lists none
   std::vector<std::int64_t> segment_markers;  ///< one a segment where the file gives them, else none
-  /// The vertices' attributes and markers the file declares (read and checked, not kept).
-  std::int64_t vertex_attributes = 0, vertex_markers = 0;
+  /// The vertices' attributes the file declares (read and checked, not kept), and their
+  /// boundary markers where it gives them (else none).
+  std::int64_t vertex_attributes = 0;
+  std::vector<std::int64_t> point_markers;
 };
 
 /// Reads a .poly file (its points from the .node file beside it where it lists none); throws
@@ -101,6 +103,7 @@ struct MeshFiles {
   std::span<const double> attributes;  ///< one a triangle (Triangle's -A), or none
   std::span<const VertexId> edges;  ///< the segments' edges, pairs of indices: OUT.edge
   std::span<const std::int64_t> edge_markers;  ///< one an edge (none: 1 each)
+  std::span<const std::int64_t> point_markers;  ///< one a point, or none (no marker column)
   std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh, where not empty
   int first_index = 0;  ///< the numbering of every file
 };

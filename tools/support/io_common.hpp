@@ -410,6 +410,9 @@ void write_csv_points(Writer& out, std::span<const Point> points, int first_inde
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads = 1);
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
+/// The same with a boundary marker column, `markers` one a point.
+void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads,
+                std::span<const std::int64_t> markers);
 /// With `attributes` (one a triangle), Triangle's one attribute column (-A). The lines are
 /// formatted on `threads` threads.
 void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index,

@@ -23,26 +23,43 @@ void need(const std::string& path, const std::vector<Line>& lines, std::size_t a
     fail_file(path, "the file ends before its " + std::to_string(count) + " " + what);
 }
 
+// The boundary markers of vertex records, each line's last field (the records are checked).
+std::vector<std::int64_t> markers_of(const std::string& path, std::span<const Line> records) {
+  std::vector<std::int64_t> out(records.size());
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    Fields f{records[k].text, false};
+    std::string_view field, last;
+    while (f.next(field)) last = field;
+    out[k] = integer(path, records[k].number, last, "boundary marker");
+  }
+  return out;
+}
+
 std::size_t read_vertices(const std::string& path, const std::vector<Line>& lines, unsigned threads, Pslg& g) {
   const auto h = fields(path, lines[0], 2, 4, "a header \"vertices 2 [attributes [markers]]\"");
   const std::int64_t n = integer(path, lines[0].number, h[0], "number of vertices");
   if (integer(path, lines[0].number, h[1], "dimension") != 2) fail_line(path, lines[0].number, "dimension must be 2");
-  PointFile p;
-  auto declared = [&](const std::vector<std::string_view>& fields, std::size_t line_no) {
-    if (fields.size() > 2) g.vertex_attributes = integer(path, line_no, fields[2], "number of attributes");
-    if (fields.size() > 3) g.vertex_markers = integer(path, line_no, fields[3], "number of boundary markers");
+  // The attributes and markers a header declares (read_node checks the counts and records).
+  auto declared = [&](const std::vector<std::string_view>& head, std::size_t line_no, std::span<const Line> records,
+                      const std::string& file) {
+    if (head.size() > 2) g.vertex_attributes = integer(file, line_no, head[2], "number of attributes");
+    if (head.size() > 3 && integer(file, line_no, head[3], "number of boundary markers") > 0)
+      g.point_markers = markers_of(file, records);
   };
+  PointFile p;
   if (n == 0) {  // the vertices in the .node file beside it
     const std::string node = (fs::path(path).replace_extension(".node")).string();
     const FileText text(node);
     p = read_node(node, text.view(), threads);
-    if (const std::optional<Head> head = head_line(text.view()))
-      declared(fields(node, head->line, 2, 4, "a header \"points 2 [attributes [markers]]\""), head->line.number);
+    const std::vector<Line> all = split_lines(text.view(), threads);
+    if (!all.empty())
+      declared(fields(node, all[0], 2, 4, "a header \"points 2 [attributes [markers]]\""), all[0].number,
+               std::span(all).subspan(1), node);
     g.node_file = node;
-  } else {
-    declared(h, lines[0].number);  // the lines up to the last vertex's are a .node file's, line numbers and all
+  } else {  // the lines up to the last vertex's are a .node file's, line numbers and all
     need(path, lines, 1, n, "vertices");
     p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);
+    declared(h, lines[0].number, std::span(lines).subspan(1, static_cast<std::size_t>(n)), path);
   }
   g.points.assign(p.points.begin(), p.points.end());
   g.first_index = p.first_index;
@@ -189,7 +206,7 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
   for (const std::string& path : mesh_file_paths(ele, !m.neighbors.empty()))
     out.push_back(std::make_unique<detail::Writer>(path));
   detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads);
-  detail::write_node(*out[1], m.points, m.first_index, threads);
+  detail::write_node(*out[1], m.points, m.first_index, threads, m.point_markers);
   put_edges(*out[2], m.edges, m.first_index, threads, m.edge_markers);
   if (out.size() > 3) detail::write_neigh(*out[3], m.neighbors, m.first_index, threads);
   for (const auto& w : out) w->close();

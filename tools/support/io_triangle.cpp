@@ -186,14 +186,20 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
 }
 
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads) {
+  write_node(out, points, first_index, threads, {});
+}
+
+void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads,
+                std::span<const std::int64_t> markers) {
   out.put_int(static_cast<std::int64_t>(points.size()));
-  out.put(" 2 0 0\n");
+  out.put(markers.empty() ? " 2 0 0\n" : " 2 0 1\n");
   out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
     line.put_int(static_cast<std::int64_t>(k) + first_index);
     line.put(' ');
     line.put_double(points[k].x);
     line.put(' ');
     line.put_double(points[k].y);
+    if (!markers.empty()) line.put(' '), line.put_int(markers[k]);
     line.put('\n');
   });
 }
