@@ -344,11 +344,11 @@ expect 0 "check the mesh at 33" -- "$ridt" check "$dir/q2.node" "$dir/q2.ele" --
 # Markers by Triangle's rule: a segment's pieces keep its marker (7 along y = 0, 9 along
 # y = 10), other boundary edges 1, an inner segment (x = 5, unmarked) 0; a vertex its own
 # marker where not 0 (3 at the origin), else a marked piece's, else 1 on the boundary, else 0;
-# the vertices' attributes, read and checked, are said not to be carried.
-printf '6 2 1 1\n1 0 0 5 3\n2 10 0 6 0\n3 10 10 7 0\n4 0 10 8 0\n5 5 2 1 0\n6 5 8 1 0\n5 1\n1 1 2 7\n2 2 3 0\n3 3 4 9\n4 4 1 0\n5 5 6 0\n0\n' >"$dir/marked.poly"
-expect 0 "mesh with segment markers" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked.ele" --switches pq30a5
-stderr_has "not carried"
-/usr/bin/python3 - "$dir/marked" <<'PY' && pass || fail "edge markers not as Triangle gives them"
+# the vertices' attributes are carried, those of the points added interpolated linearly (here
+# 2x + 3y + 1 and 7, which that reproduces).
+printf '6 2 2 1\n1 0 0 1 7 3\n2 10 0 21 7 0\n3 10 10 51 7 0\n4 0 10 31 7 0\n5 5 2 17 7 0\n6 5 8 35 7 0\n5 1\n1 1 2 7\n2 2 3 0\n3 3 4 9\n4 4 1 0\n5 5 6 0\n0\n' >"$dir/marked.poly"
+expect 0 "mesh with markers and attributes" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked.ele" --switches pq30a5
+/usr/bin/python3 - "$dir/marked" <<'PY' && pass || fail "markers not as Triangle gives them, or attributes not carried"
 import sys
 rows = lambda ext: [l.split() for l in open(sys.argv[1] + ext) if l.strip() and not l.startswith("#")][1:]
 xy = {r[0]: (float(r[1]), float(r[2])) for r in rows(".node")}
@@ -359,10 +359,12 @@ for _, a, b, m in rows(".edge"):
     assert int(m) == want, (a, b, m, want)
     seen.add(want)
 assert seen == {0, 1, 7, 9}, seen
-for _, x, y, m in rows(".node"):
+assert open(sys.argv[1] + ".node").readline().split() == ["23", "2", "2", "1"]
+for _, x, y, a1, a2, m in rows(".node"):
     x, y = float(x), float(y)
     want = 3 if x == y == 0 else 7 if y == 0 else 9 if y == 10 else 1 if x in (0, 10) else 0
     assert int(m) == want, (x, y, m, want)
+    assert abs(float(a1) - (2 * x + 3 * y + 1)) < 1e-12 * 60 and abs(float(a2) - 7) < 1e-13, (x, y, a1, a2)
 PY
 
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 
 #include "command.hpp"
 #include "ridt/constrained.hpp"
+#include "ridt/interpolate.hpp"
 #include "ridt/predicates.hpp"
 
 namespace ridt::tool {
@@ -181,6 +183,28 @@ Markers markers_of(const io::Pslg& g, const ConstrainedTriangulation& t, std::sp
   return m;
 }
 
+// Every vertex's attributes: the input's as given, those of the points added interpolated
+// linearly over the Delaunay triangulation of the input's points (exact on attributes linear
+// in the position; Triangle interpolates in the triangle that holds a point when it is added,
+// so the two differ where the attributes are not linear); the nearest input point's where a
+// point added lies a rounding outside their hull.
+std::vector<double> vertex_attributes(const io::Pslg& g, const ConstrainedTriangulation& t, unsigned threads) {
+  const std::size_t count = g.vertex_attributes;
+  std::vector<double> out(g.point_attributes);
+  if (t.steiner.empty()) return out;
+  Options o;
+  o.threads = threads;
+  const Triangulation d = triangulate(g.points, o);
+  std::vector<double> added = interpolate_linear(g.points, d, {g.point_attributes, count}, t.steiner,
+                                                 std::numeric_limits<double>::quiet_NaN(), threads);
+  const std::vector<std::int32_t> near = nearest_vertex(g.points, d, t.steiner, threads);
+  for (std::size_t k = 0; k < t.steiner.size(); ++k)
+    if (std::isnan(added[k * count]) && near[k] >= 0)
+      std::copy_n(&g.point_attributes[static_cast<std::size_t>(near[k]) * count], count, &added[k * count]);
+  out.insert(out.end(), added.begin(), added.end());
+  return out;
+}
+
 // OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
 // OUT.svg, its segments apart.
 void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
@@ -195,6 +219,10 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   const Markers markers = markers_of(g, t, all);
   m.edge_markers = markers.edges;
   m.point_markers = markers.points;
+  const std::vector<double> attributes =
+      g.vertex_attributes > 0 ? vertex_attributes(g, t, thread_count(a.threads)) : std::vector<double>{};
+  m.point_attributes = attributes;
+  m.point_attribute_count = g.vertex_attributes;
   if (a.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
   m.first_index = a.zero_based ? 0 : g.first_index;
   io::write_mesh_files(a.output, m, thread_count(a.threads));
@@ -227,9 +255,6 @@ int run(Args a) {
   q.conforming = a.conforming;
   const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
-  if (g.vertex_attributes > 0)
-    std::fprintf(stderr, "ridt: the vertices' attributes of %s are not carried into the .node written\n",
-                 a.input.c_str());
   if (t.crossings > 0)
     std::fprintf(stderr, "ridt: %zu points added where segments cross (the first %zu added points)\n", t.crossings,
                  t.crossings);

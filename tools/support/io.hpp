@@ -68,9 +68,10 @@ struct Pslg {
   int first_index = 0;  ///< the file's numbering (0 or 1), for the files written from it
   std::string node_file;  ///< the .node file beside it that the points came from, where it lists none
   std::vector<std::int64_t> segment_markers;  ///< one a segment where the file gives them, else none
-  /// The vertices' attributes the file declares (read and checked, not kept), and their
-  /// boundary markers where it gives them (else none).
-  std::int64_t vertex_attributes = 0;
+  /// The vertices' attributes (`vertex_attributes` a point, row by row) and boundary markers
+  /// where the file gives them (else none).
+  std::size_t vertex_attributes = 0;
+  std::vector<double> point_attributes;
   std::vector<std::int64_t> point_markers;
 };
 
@@ -104,6 +105,8 @@ struct MeshFiles {
   std::span<const VertexId> edges;  ///< the segments' edges, pairs of indices: OUT.edge
   std::span<const std::int64_t> edge_markers;  ///< one an edge (none: 1 each)
   std::span<const std::int64_t> point_markers;  ///< one a point, or none (no marker column)
+  std::span<const double> point_attributes;  ///< `point_attribute_count` a point, row by row
+  std::size_t point_attribute_count = 0;
   std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh, where not empty
   int first_index = 0;  ///< the numbering of every file
 };

@@ -410,9 +410,14 @@ void write_csv_points(Writer& out, std::span<const Point> points, int first_inde
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads = 1);
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
-/// The same with a boundary marker column, `markers` one a point.
+/// Attributes to write beside points: `count` a point, row by row.
+struct NodeAttributes {
+  std::span<const double> values;
+  std::size_t count = 0;
+};
+/// The same with a boundary marker column (`markers` one a point, or none) and attributes.
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads,
-                std::span<const std::int64_t> markers);
+                std::span<const std::int64_t> markers, NodeAttributes attributes = {});
 /// With `attributes` (one a triangle), Triangle's one attribute column (-A). The lines are
 /// formatted on `threads` threads.
 void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index,

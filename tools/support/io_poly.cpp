@@ -23,6 +23,18 @@ void need(const std::string& path, const std::vector<Line>& lines, std::size_t a
     fail_file(path, "the file ends before its " + std::to_string(count) + " " + what);
 }
 
+// The attributes of vertex records, `count` a record after "index x y" (the records are checked).
+std::vector<double> attributes_of(std::span<const Line> records, std::size_t count) {
+  std::vector<double> out(records.size() * count);
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    Fields f{records[k].text, false};
+    std::string_view field;
+    for (int skip = 0; skip < 3; ++skip) f.next(field);
+    for (std::size_t a = 0; a < count && f.next(field); ++a) parse_double(field, out[k * count + a]);
+  }
+  return out;
+}
+
 // The boundary markers of vertex records, each line's last field (the records are checked).
 std::vector<std::int64_t> markers_of(const std::string& path, std::span<const Line> records) {
   std::vector<std::int64_t> out(records.size());
@@ -42,7 +54,9 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
   // The attributes and markers a header declares (read_node checks the counts and records).
   auto declared = [&](const std::vector<std::string_view>& head, std::size_t line_no, std::span<const Line> records,
                       const std::string& file) {
-    if (head.size() > 2) g.vertex_attributes = integer(file, line_no, head[2], "number of attributes");
+    if (head.size() > 2)
+      g.vertex_attributes = static_cast<std::size_t>(integer(file, line_no, head[2], "number of attributes"));
+    if (g.vertex_attributes > 0) g.point_attributes = attributes_of(records, g.vertex_attributes);
     if (head.size() > 3 && integer(file, line_no, head[3], "number of boundary markers") > 0)
       g.point_markers = markers_of(file, records);
   };
@@ -206,7 +220,8 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
   for (const std::string& path : mesh_file_paths(ele, !m.neighbors.empty()))
     out.push_back(std::make_unique<detail::Writer>(path));
   detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads);
-  detail::write_node(*out[1], m.points, m.first_index, threads, m.point_markers);
+  detail::write_node(*out[1], m.points, m.first_index, threads, m.point_markers,
+                     {m.point_attributes, m.point_attribute_count});
   put_edges(*out[2], m.edges, m.first_index, threads, m.edge_markers);
   if (out.size() > 3) detail::write_neigh(*out[3], m.neighbors, m.first_index, threads);
   for (const auto& w : out) w->close();

@@ -1,5 +1,6 @@
 // Triangle's formats (Shewchuk's Triangle): .node points ("n 2 attributes markers" then
 // "i x y ..."), .ele triangles and .neigh neighbours, numbered from the .node's first index.
+#include <stdexcept>
 #include "io_common.hpp"
 #include "lines.hpp"
 
@@ -190,15 +191,21 @@ void write_node(Writer& out, std::span<const Point> points, int first_index, uns
 }
 
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads,
-                std::span<const std::int64_t> markers) {
+                std::span<const std::int64_t> markers, NodeAttributes attributes) {
+  const std::size_t count = attributes.count;
+  if (attributes.values.size() != points.size() * count)
+    throw std::logic_error("ridt: node attributes for another number of points");
   out.put_int(static_cast<std::int64_t>(points.size()));
-  out.put(markers.empty() ? " 2 0 0\n" : " 2 0 1\n");
+  out.put(" 2 ");
+  out.put_int(static_cast<std::int64_t>(count));
+  out.put(markers.empty() ? " 0\n" : " 1\n");
   out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
     line.put_int(static_cast<std::int64_t>(k) + first_index);
     line.put(' ');
     line.put_double(points[k].x);
     line.put(' ');
     line.put_double(points[k].y);
+    for (std::size_t a = 0; a < count; ++a) line.put(' '), line.put_double(attributes.values[k * count + a]);
     if (!markers.empty()) line.put(' '), line.put_int(markers[k]);
     line.put('\n');
   });
