@@ -67,8 +67,8 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     other segments and edges get 1 on the boundary (holes' too), 0 inside; a vertex keeps its
     input marker where nonzero, else takes that of a segment it lies on with a nonzero marker,
     else 1 on the boundary, 0 inside. 'vertex_attributes' pass through to the output's
-    vertices; where points are added (crossings, 'q', 'a') they raise ValueError, since
-    Triangle interpolates them in the mesh of the moment each point is inserted."""
+    vertices, those of the points added (crossings, 'q', 'a') interpolated linearly over the
+    Delaunay triangulation of the input's points."""
     if not isinstance(opts, str):
         raise TypeError("opts must be a string of Triangle's switches")
     flags, angle, area, regional = _switches(opts)
@@ -119,18 +119,25 @@ def _key(e: np.ndarray) -> np.ndarray:
 
 
 def _vertex_attributes(given: Any, pts: np.ndarray, cdt: ConstrainedDelaunay) -> np.ndarray:
-    """The input's vertex attributes, carried to the output's vertices: only where no point was
-    added, since Triangle interpolates an added point's attributes in the mesh of the moment it
-    is inserted, which ridt's different insertion order cannot reproduce."""
+    """The input's vertex attributes, carried to the output's vertices; those of the points
+    added (crossings, 'q', 'a') interpolated linearly over the Delaunay triangulation of the
+    input's points, as `ridt mesh` does (exact where the attributes are linear in the position;
+    Triangle interpolates in the mesh of the moment each point is inserted, so the two differ
+    where they are not), the nearest input point's a rounding outside their hull."""
+    from ._interpolate import LinearNDInterpolator, NearestNDInterpolator
+
     a = np.asarray(given, dtype=np.float64)
     a = a.reshape(-1, 1) if a.ndim == 1 else a.reshape(len(a), -1)
     if len(a) != len(pts):
         raise ValueError(f"vertex_attributes has {len(a)} rows for {len(pts)} vertices")
-    if len(cdt.added):
-        raise ValueError(f"vertex_attributes are not supported where points are added ({len(cdt.added)} here: "
-                         "crossings, 'q' or 'a'): Triangle interpolates them at each added point in the mesh of "
-                         "the moment, which ridt cannot reproduce; triangulate without them and interpolate")
-    return a.copy()
+    added = cdt.points[len(pts):]
+    if len(added) == 0:
+        return a.copy()
+    at = LinearNDInterpolator(pts, a)(added).reshape(len(added), a.shape[1])
+    outside = np.isnan(at).any(axis=1)
+    if outside.any():
+        at[outside] = NearestNDInterpolator(pts, a)(added[outside]).reshape(-1, a.shape[1])
+    return np.concatenate([a, at])
 
 
 def _vertex_markers(tri: Dict[str, Any], ninput: int, cdt: ConstrainedDelaunay, boundary: np.ndarray,

@@ -147,15 +147,22 @@ def test_unmarked_segments_get_one_on_the_boundary_and_zero_inside():
     assert given.tolist() == [1, 9, 1, 1, 6, 0]
 
 
-def test_vertex_attributes_are_carried_or_refused():
+def test_vertex_attributes_are_carried_and_interpolated():
     tri = {"vertices": np.array(SQUARE + [(3, 4)], dtype=float), "segments": np.array(loop(0)),
            "vertex_attributes": np.array([[1.0, 10], [2, 20], [3, 30], [4, 40], [5, 50]])}
     t = triangle.triangulate(tri, "p")
     np.testing.assert_array_equal(t["vertex_attributes"], tri["vertex_attributes"])
     flat = triangle.triangulate(dict(tri, vertex_attributes=[1.0, 2, 3, 4, 5]), "p")["vertex_attributes"]
     assert flat.shape == (5, 1)
-    with pytest.raises(ValueError, match="vertex_attributes.*added"):
-        triangle.triangulate(tri, "pq30a1")
+    # The points added get the attributes interpolated linearly: exact on linear ones.
+    pts = tri["vertices"]
+    linear = np.stack([2 * pts[:, 0] + 3 * pts[:, 1] + 1, np.full(len(pts), 7.0)], axis=1)
+    q = triangle.triangulate(dict(tri, vertex_attributes=linear), "pq30a1")
+    v = q["vertices"]
+    assert len(v) > len(pts)
+    np.testing.assert_array_equal(q["vertex_attributes"][:len(pts)], linear)
+    np.testing.assert_allclose(q["vertex_attributes"][:, 0], 2 * v[:, 0] + 3 * v[:, 1] + 1, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(q["vertex_attributes"][:, 1], 7, rtol=0, atol=1e-13)
     with pytest.raises(ValueError, match="rows"):
         triangle.triangulate(dict(tri, vertex_attributes=np.ones((4, 2))), "p")
 
