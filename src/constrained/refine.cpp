@@ -345,6 +345,8 @@ class Refiner {
   }
 
   void split(std::uint32_t s);
+  VertexId split_at(std::uint32_t s, const Point& p);
+  void relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right);
   void added(VertexId v);
   void find_small_angles();
   bool terminated(std::uint32_t s, std::uint32_t t) const;
@@ -370,32 +372,67 @@ class Refiner {
   std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
 };
 
-// Subsegment s split at its split point, as though that lay on it (it does, up to rounding);
-// where that would fold a triangle over, inside the triangle beside it that holds the point
-// (x-y freed, the point added, x-p and p-y fixed); else left whole.
+// Subsegment s split at its split point, or, where that cannot be placed (a vertex a rounding
+// from the subsegment folds the triangles there), at a quarter or three eighths from either
+// end instead; left whole where none can.
 void Refiner::split(std::uint32_t s) {
   if (!splittable(s)) return;
   const std::uint32_t t = s / 3;
   const int k = static_cast<int>(s % 3);
   const VertexId x = m_.at(t, k + 1), y = m_.at(t, k + 2);
-  const Point p = split_point(x, y);
   const std::pair<VertexId, VertexId> ends = chain(x, y);
-  VertexId v = 0;
-  if (m_.fits_on_edge(t, k, p)) {
-    v = m_.insert_on_edge(p, t, k);
-  } else {
-    if (boundary(s)) return;
-    const Cdt::Place at = m_.beside(t, static_cast<int>(k), p);
-    if (at.kind != Cdt::Place::Inside) return;
-    m_.set_fixed(t, k, false);
-    v = m_.insert(p, at);
-    for (const VertexId e : {x, y})
-      if (const std::uint32_t f = m_.find_edge(v, e); f != Cdt::kNone)
-        m_.set_fixed(f / 3, static_cast<int>(f % 3), true);
-  }
-  ends_.resize(m_.pts.size(), {Cdt::kNone, Cdt::kNone});
-  ends_[v] = ends;
-  added(v);
+  const Point &a = m_.pts[x], &b = m_.pts[y];
+  auto at = [&](double f) { return Point{a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f}; };
+  const Point tries[5] = {split_point(x, y), at(0.25), at(0.75), at(0.375), at(0.625)};
+  for (const Point& p : tries)
+    if (const VertexId v = split_at(s, p); v != Cdt::kNone) {
+      ends_.resize(m_.pts.size(), {Cdt::kNone, Cdt::kNone});
+      ends_[v] = ends;
+      added(v);
+      return;
+    }
+}
+
+// p added on subsegment s as though it lay on it (it does, up to rounding); where that would
+// fold a triangle over, inside the triangle beside it that holds p (x-y freed, p added, x-p and
+// p-y fixed, the regions on either side kept); kNone where neither can be done.
+VertexId Refiner::split_at(std::uint32_t s, const Point& p) {
+  const std::uint32_t t = s / 3;
+  const int k = static_cast<int>(s % 3);
+  if (m_.fits_on_edge(t, k, p)) return m_.insert_on_edge(p, t, k);
+  if (boundary(s)) return Cdt::kNone;
+  const Cdt::Place at = m_.beside(t, static_cast<int>(k), p);
+  if (at.kind != Cdt::Place::Inside) return Cdt::kNone;
+  const VertexId x = m_.at(t, k + 1), y = m_.at(t, k + 2);
+  // The regions of t (left of x -> y) and across, which the flips about p could mix.
+  const std::int32_t across = m_.nbrs[s];
+  const std::int32_t left = m_.region.empty() ? -1 : m_.region[t];
+  const std::int32_t right = m_.region.empty() || across < 0 ? left : m_.region[static_cast<std::uint32_t>(across)];
+  m_.set_fixed(t, k, false);
+  const VertexId v = m_.insert(p, at);
+  for (const VertexId e : {x, y})
+    if (const std::uint32_t f = m_.find_edge(v, e); f != Cdt::kNone) m_.set_fixed(f / 3, static_cast<int>(f % 3), true);
+  if (left != right) relabel(v, x, y, left, right);
+  return v;
+}
+
+// The triangles about v, added beside segment x-y (now x-v-y), given the regions left and
+// right of x -> v -> y: the flips made triangles about v, which v-x and v-y part into two fans.
+// Triangle (v, p, q) is in the left one where v->p lies in the angle from v->y counter-clockwise
+// to v->x (exact orientations; the angle is near a half-turn, either side of it).
+void Refiner::relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right) {
+  const Point &pv = m_.pts[v], &px = m_.pts[x], &py = m_.pts[y];
+  const bool reflex = orient2d(pv, py, px) <= 0;  // the left angle is a half-turn or more
+  m_.around(v, [&](std::uint32_t u) {
+    const VertexId p = m_.at(u, m_.corner_of(u, v) + 1);
+    bool in_left = p == y;
+    if (p != x && p != y) {
+      const bool after_y = orient2d(pv, py, m_.pts[p]) > 0, before_x = orient2d(pv, px, m_.pts[p]) < 0;
+      in_left = reflex ? after_y || before_x : after_y && before_x;
+    }
+    m_.region[u] = in_left ? left : right;
+    return false;
+  });
 }
 
 // Each corner's sectors: the angles the domain's triangles make at it between two fixed
