@@ -309,7 +309,7 @@ class Refiner {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     const Cdt::Place at = m_.locate(b.t, p, true);
     if (at.kind == Cdt::Place::Corner) return;
-    // On a subsegment that may not be split (the boundary's, asked to keep no new points)
+    // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
     if (at.kind == Cdt::Place::Edge && m_.fixed[3 * at.t + at.k] && !splittable(3 * at.t + at.k)) return;
     const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
     if (blocked) hit_.assign(1, 3 * at.t + at.k);
