@@ -45,22 +45,26 @@ std::vector<VertexId> read_text_triangles(const std::string& path, std::string_v
   return out;
 }
 
-void write_text_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned threads) {
+namespace {
+
+// One point a line, its coordinates apart by `separator`.
+void put_points(Writer& out, std::span<const Point> points, unsigned threads, char separator) {
   out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
     line.put_double(points[k].x);
-    line.put(' ');
+    line.put(separator);
     line.put_double(points[k].y);
     line.put('\n');
   });
 }
 
+}  // namespace
+
+void write_text_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned threads) {
+  put_points(out, points, threads, ' ');
+}
+
 void write_csv_points(Writer& out, std::span<const Point> points, int /*first_index*/, unsigned threads) {
-  out.put_lines(points.size(), threads, [&](std::size_t k, TextPart& line) {
-    line.put_double(points[k].x);
-    line.put(',');
-    line.put_double(points[k].y);
-    line.put('\n');
-  });
+  put_points(out, points, threads, ',');
 }
 
 }  // namespace ridt::io::detail
