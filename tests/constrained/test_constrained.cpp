@@ -71,6 +71,30 @@ std::vector<Point> with_steiner(const std::vector<Point>& pts, const Constrained
   return all;
 }
 
+// The edges come sorted as pairs (a, b), a < b, whatever order and direction the segments had:
+// around a vertex of many segments (sorted apart from the few) and across vertices.
+TEST(Constrained, EdgesSortedAroundAVertexOfManySegments) {
+  std::vector<Point> pts;
+  std::vector<VertexId> segs;
+  for (VertexId k = 0; k < 40; ++k) {  // spokes from a hub (vertex 20) to a circle, listed at random
+    const double a = 2 * M_PI * k / 40;
+    pts.push_back(k == 20 ? Point{0, 0} : Point{std::cos(a), std::sin(a)});
+  }
+  for (VertexId k = 0; k < 40; ++k)
+    if (const VertexId far = (k * 17) % 40; far != 20)
+      segs.push_back(k % 2 ? far : 20), segs.push_back(k % 2 ? 20 : far);
+  const ConstrainedTriangulation t = checked(pts, segs);
+  std::vector<VertexId> want;
+  for (VertexId k = 0; k < 40; ++k)
+    if (k != 20) want.push_back(std::min<VertexId>(k, 20)), want.push_back(std::max<VertexId>(k, 20));
+  std::vector<std::pair<VertexId, VertexId>> pairs;
+  for (std::size_t k = 0; k < want.size(); k += 2) pairs.emplace_back(want[k], want[k + 1]);
+  std::sort(pairs.begin(), pairs.end());
+  want.clear();
+  for (const auto& [a, b] : pairs) want.push_back(a), want.push_back(b);
+  EXPECT_EQ(t.edges, want);
+}
+
 TEST(Constrained, CrossingSegmentsAreSplitWhereTheyCross) {
   const std::vector<Point> kite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
   const ConstrainedTriangulation t = triangulate_constrained(kite, std::vector<VertexId>{0, 2, 1, 3});
