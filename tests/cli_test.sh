@@ -310,6 +310,14 @@ expect 0 "mesh" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sq.ele"
 [ "$(head -1 "$dir/sq.edge")" = "8 1" ] && pass || fail "sq.edge"
 grep -q '^1 ' "$dir/sq.ele" && pass || fail ".ele not numbered from 1 as its .poly"
 expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
+# Extensions in any case: the same formats, the same files.
+cp "$dir/sq.poly" "$dir/SQ.POLY"
+expect 0 "mesh, upper-case names" -- "$ridt" mesh "$dir/SQ.POLY" -o "$dir/SQ.ELE"
+cmp -s "$dir/SQ.ELE" "$dir/sq.ele" && cmp -s "$dir/SQ.node" "$dir/sq.node" && pass || fail "SQ.POLY meshed otherwise"
+expect 0 "generate .BIN" -- "$ridt" generate -n 500 --seed 4 -o "$dir/up.BIN"
+[ "$(stat -c %s "$dir/up.BIN")" = 8000 ] && pass || fail "up.BIN is not 500 float64 pairs"
+expect 0 "triangulate .BIN to .Ele" -- "$ridt" triangulate "$dir/up.BIN" -o "$dir/up.Ele"
+expect 0 "check .BIN .Ele" -- "$ridt" check "$dir/up.BIN" "$dir/up.Ele"
 sed -n 2p "$dir/z.ele" | grep -q '^0 ' && pass || fail "-z: .ele not numbered from 0"
 # An L: its notch is outside the segments (4 triangles), inside the convex hull (5).
 printf '6 2

@@ -61,9 +61,9 @@ inline std::optional<Args> parse(int argc, char** argv, std::string& error) {
     error = "no input file";
   else if (a.output.empty())
     error = "no output (-o OUT.ele)";
-  else if (std::filesystem::path(a.input).extension() != ".bin")
+  else if (ridt::io::extension(a.input) != ".bin")
     error = a.input + ": ridt-mpi reads .bin files (float64 x, y pairs); ridt generate -o FILE.bin writes one";
-  else if (std::filesystem::path(a.output).extension() != ".ele")
+  else if (ridt::io::extension(a.output) != ".ele")
     error = a.output + ": ridt-mpi writes .ele files";
   return a;
 }

@@ -90,7 +90,7 @@ void apply_switches(Args& a) {
 
 // The files `a` asks for: OUT.svg, or OUT.ele and the files beside it.
 std::vector<std::string> outputs(const Args& a) {
-  const std::string extension = std::filesystem::path(a.output).extension().string();
+  const std::string extension = io::extension(a.output);
   if (extension == ".svg") return {a.output};
   if (extension != ".ele")
     throw InputError(
@@ -210,7 +210,7 @@ std::vector<double> vertex_attributes(const io::Pslg& g, const ConstrainedTriang
 void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
   std::vector<Point> all = g.points;
   all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-  if (std::filesystem::path(a.output).extension() == ".svg") return io::write_mesh_svg(a.output, all, t, t.edges);
+  if (io::extension(a.output) == ".svg") return io::write_mesh_svg(a.output, all, t, t.edges);
   io::MeshFiles m;
   m.points = all;
   m.triangles = std::span(t.triangles).first(3 * t.size());
@@ -230,7 +230,7 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
 
 int run(Args a) {
   apply_switches(a);
-  if (std::filesystem::path(a.output).extension() == ".svg") {
+  if (io::extension(a.output) == ".svg") {
     const char* why = "is not drawn: a drawing (.svg) has no neighbours, attributes or numbering; give -o OUT.ele";
     refuse_ignored(a.neighbours, "--neighbours (n)", why);
     refuse_ignored(a.attributes, "--attributes (A)", why);

@@ -31,16 +31,10 @@ struct Tin {
   double read_s = 0, triangulate_s = 0;
 };
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 // Refuses the options that the input's format would ignore: LAS's filters on a table or a GDAL
 // layer, a table's columns on LAS.
 void refuse_ignored_filters(const Args& a) {
-  const std::string ext = lower_extension(a.input);
+  const std::string ext = io::extension(a.input);
   const bool las = ext == ".las" || ext == ".laz";
   const std::string no_las = "is for LAS input, and " + a.input + " is not LAS (its points have no classes or returns)";
   refuse_ignored(!las && !a.classes.empty(), "--class", no_las);
@@ -115,7 +109,7 @@ int run_dem(const Args& a) {
   if (!(a.resolution > 0) || !std::isfinite(a.resolution)) throw InputError("--resolution: a positive cell size");
   if (a.type != "float32" && a.type != "float64") throw InputError("--type: float32 or float64");
   refuse_overwriting({a.input}, {a.output, a.hillshade});
-  if (!a.hillshade.empty() && lower_extension(a.hillshade) != ".png")
+  if (!a.hillshade.empty() && io::extension(a.hillshade) != ".png")
     throw InputError("--hillshade: the hillshade is a .png picture, got " + a.hillshade +
                      " (for the DEM itself, -o DEM.tif)");
   ProgressLine progress;

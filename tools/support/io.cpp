@@ -36,6 +36,8 @@ std::vector<VertexId> read_triangles(const std::string& path, int first_index, u
   return parse_triangles(FileText(path).view(), path, first_index, threads);
 }
 
+std::string extension(const std::string& path) { return extension_of(path); }
+
 bool is_parts_index(const std::string& path) { return extension_of(path) == ".parts"; }
 
 std::vector<std::string> part_files(const std::string& path) {

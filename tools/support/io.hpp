@@ -154,6 +154,8 @@ std::vector<VertexId> read_triangles(const std::string& path, int first_index, u
 /// then the N part files, .ele (0-based) or .bin, named relative to the index), the parts'
 /// triangles one after another.
 std::vector<VertexId> read_parts(const std::string& path, unsigned threads = 1);
+/// A file's extension in lower case, as the formats are chosen (".tif" for "dem.TIF").
+std::string extension(const std::string& path);
 /// Whether `path` names an index of parts (.parts).
 bool is_parts_index(const std::string& path);
 /// The part files that a .parts index names, in its order, each checked to be .ele or .bin.

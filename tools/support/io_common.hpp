@@ -39,14 +39,15 @@ namespace fs = std::filesystem;
 // ---------------------------------------------------------------------------------------------
 // Small helpers.
 
-inline std::string extension_of(const std::string& path) { return fs::path(path).extension().string(); }
-
 /// `s` in lower case (ASCII): for names and extensions compared in any case.
 inline std::string lower_case(std::string_view s) {
   std::string out(s);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out;
 }
+
+/// A file's extension in lower case: formats are chosen by extension in any case (.TIF, .Ele).
+inline std::string extension_of(const std::string& path) { return lower_case(fs::path(path).extension().string()); }
 
 [[noreturn]] inline void fail_file(const std::string& path, const std::string& why) {
   throw IoError(path + ": " + why);

@@ -28,7 +28,7 @@ constexpr Driver kRasterDrivers[] = {{".tif", "GTiff"}, {".tiff", "GTiff"}, {".i
 
 template <std::size_t N>
 const char* driver_of(const std::string& path, const Driver (&drivers)[N]) {
-  const std::string ext = detail::lower_case(detail::extension_of(path));
+  const std::string ext = detail::extension_of(path);
   for (const Driver& d : drivers)
     if (ext == d.extension) return d.name;
   return nullptr;

@@ -145,7 +145,7 @@ Terrain parse_table(std::string_view text, const std::string& name, const Column
 }
 
 Terrain read_terrain(const std::string& path, const PointFilter& filter, const Columns& columns) {
-  const std::string ext = detail::lower_case(detail::extension_of(path));
+  const std::string ext = detail::extension_of(path);
   if (ext == ".laz")
     fail_file(path,
               "compressed LAS (LAZ) is not read; decompress it first, e.g. \"laszip -i " + path +

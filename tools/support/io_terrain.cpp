@@ -75,7 +75,7 @@ void write_tin(const std::string& path, const Terrain& terrain, const Triangulat
 }
 
 void write_hillshade(const std::string& path, const Dem& dem) {
-  if (detail::lower_case(detail::extension_of(path)) != ".png")
+  if (detail::extension_of(path) != ".png")
     fail_file(path, "a hillshade is a .png picture (the DEM itself: .tif or .img)");
   write_hillshade_png(path, dem);
 }

@@ -261,9 +261,9 @@ std::uint64_t run_strip(Strip& s, const CellStore& cells, std::vector<Checker>& 
 
 OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
   const fs::path out(options.output);
-  if (out.extension() != ".parts")
+  if (detail::extension_of(options.output) != ".parts")
     throw InputError(options.output + ": the out-of-core mode writes parts and their index, OUT.parts");
-  if (fs::path(options.input).extension() != ".bin")
+  if (detail::extension_of(options.input) != ".bin")
     throw InputError(options.input + ": the out-of-core mode reads .bin point files");
   std::error_code size_error;
   if (const auto bytes = fs::file_size(options.input, size_error); !size_error && bytes / 16 > UINT32_MAX)
