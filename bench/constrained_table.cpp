@@ -4,12 +4,13 @@
 // lakes (holes), and, with --extra, that many uniform points around it.
 //
 //   ridt_bench_constrained [--task cdt|quality] [--n N] [--lakes L] [--extra M] [--angle DEG]
-//                          [--area A] [--reps R] [--poly OUT.poly]
+//                          [--area A] [--reps R] [--csv FILE] [--poly OUT.poly]
 //
 // Each run is a process of its own (fork), the codes in a new random order each repetition;
 // a row gives the median time, the median of each repetition's ratio to ridt's one-thread run
 // in it, the triangles, the smallest angle of any triangle and the peak memory the run added
-// to its process. ridt and Triangle remove the exterior and the lakes; CGAL's triangulation
+// to its process (--csv: the rows also appended to FILE, a header first where it is new, for
+// the performance page). ridt and Triangle remove the exterior and the lakes; CGAL's triangulation
 // keeps them (its mesher meshes inside the coastline and leaves the lakes out, seeded as
 // Triangle's holes are).
 #include <sys/wait.h>
@@ -48,6 +49,7 @@ struct Args {
   std::uint32_t n = 1000000, lakes = 100, extra = 0;
   double angle = 30, area = 0;
   int reps = 3;
+  std::string csv;  // append the rows here
   std::string poly;  // write the graph here as Triangle's .poly instead of timing
 };
 
@@ -229,6 +231,8 @@ bool parse(int argc, char** argv, Args& a) {
       a.area = std::stod(v);
     else if (k == "--reps")
       a.reps = std::stoi(v);
+    else if (k == "--csv")
+      a.csv = v;
     else if (k == "--poly")
       a.poly = v;
     else
@@ -244,7 +248,7 @@ int main(int argc, char** argv) {
   if (!parse(argc, argv, a)) {
     std::fprintf(stderr,
                  "usage: ridt_bench_constrained [--task cdt|quality] [--n N] [--lakes L] [--extra M] "
-                 "[--angle DEG] [--area A] [--reps R] [--poly OUT.poly]\n");
+                 "[--angle DEG] [--area A] [--reps R] [--csv FILE] [--poly OUT.poly]\n");
     return 2;
   }
   ridt::Pslg g = ridt::generate_coastline(a.n, a.lakes, 1);
@@ -278,6 +282,13 @@ int main(int argc, char** argv) {
   // "ratio": the median of each repetition's ratio to the first code's run in it (the runs of
   // one repetition are next to each other in time, so a drift of the machine's speed cancels).
   std::printf("%-20s %10s %8s %12s %10s %10s\n", "code", "seconds", "ratio", "triangles", "min angle", "MB added");
+  FILE* csv = a.csv.empty() ? nullptr : std::fopen(a.csv.c_str(), "a");
+  if (!a.csv.empty() && csv == nullptr) {
+    std::perror(a.csv.c_str());
+    return 1;
+  }
+  if (csv != nullptr && std::fseek(csv, 0, SEEK_END) == 0 && std::ftell(csv) == 0)
+    std::fprintf(csv, "task,n,lakes,extra,angle,area,reps,code,seconds,ratio,triangles,min_angle,mb_added\n");
   for (std::size_t c = 0; c < codes.size(); ++c) {
     std::vector<double> s, mem, ratio;
     for (std::size_t r = 0; r < runs[c].size(); ++r) {
@@ -287,6 +298,11 @@ int main(int argc, char** argv) {
     std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), ridt::bench::median(s),
                 ridt::bench::median(ratio), runs[c][0].triangles, runs[c][0].worst_angle,
                 ridt::bench::median(mem) / 1e6);
+    if (csv != nullptr)
+      std::fprintf(csv, "%s,%u,%u,%u,%g,%g,%d,\"%s\",%.4f,%.3f,%zu,%.2f,%.1f\n", a.task.c_str(), a.n, a.lakes, a.extra,
+                   a.task == "quality" ? a.angle : 0.0, a.task == "quality" ? a.area : 0.0, a.reps,
+                   codes[c].first.c_str(), ridt::bench::median(s), ridt::bench::median(ratio), runs[c][0].triangles,
+                   runs[c][0].worst_angle, ridt::bench::median(mem) / 1e6);
   }
-  return 0;
+  return csv != nullptr && std::fclose(csv) != 0 ? 1 : 0;
 }

@@ -282,6 +282,34 @@ def interpolate_section(results):
                 ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")
 
 
+def constrained_section(results):
+    """ridt_bench_constrained's rows (constrained.csv) and the whole-process page beside them."""
+    data = rows(results, "constrained.csv")
+    body = []
+    for r in data:
+        graph = f"{n_text(r['n'])} vertices, {r['lakes']} lakes"
+        if int(r["extra"]) > 0:
+            graph += f", {n_text(r['extra'])} more points"
+        task = "CDT" if r["task"] == "cdt" else f"quality {float(r['angle']):g}°"
+        angle = f"{float(r['min_angle']):.2f}" if r["task"] == "quality" else ""
+        body.append([task, graph, r["code"], f"{float(r['seconds']):.3f}", f"{float(r['ratio']):.2f}",
+                     n_text(r["triangles"]), angle, f"{float(r['mb_added']):.0f}"])
+    process = included(results, "mesh_process.md", "Whole processes: ridt mesh against triangle",
+                       "The graph: `ridt_bench_constrained --poly`.", "Machine:")
+    return (
+        "## Constrained triangulations and quality meshes against Triangle and CGAL\n\n"
+        "`ridt_bench_constrained`: generate_coastline's island with lakes (and, where said, uniform points "
+        "around it), the same graph to each code, each run a process of its own (forked, the graph "
+        "already in memory), the codes in a new random order each repetition. ridt and Triangle remove "
+        "the lakes and the exterior; CGAL's `Constrained_Delaunay_triangulation_2` keeps them (hence its "
+        "triangle count), its `Delaunay_mesher_2` meshes inside the coastline. Ratio: the median of each "
+        "repetition's time over ridt's one-thread time in it (above 1: slower than ridt); MB: the memory "
+        "the run added to its process. How the mesher works: [constrained.md](constrained.md).\n\n"
+        + table(["task", "graph", "code", "s", "ratio", "triangles", "min angle", "MB"], body,
+                ["---", "---", "---", "---:", "---:", "---:", "---:", "---:"])
+        + "\n\n" + process.replace("## ", "### ", 1))
+
+
 def included(results, name, heading, footer, skip):
     """The page a benchmark wrote (results/NAME) under this page's HEADING, without its title
     and the lines that start with SKIP (its machine: the head of this page has it)."""
@@ -323,7 +351,8 @@ def main():
         "taken in the same run, not seconds across runs.\n")
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
              threads_section(args.results), table3_section(args.results), python_section(args.results),
-             interpolate_section(args.results), terrain_section(args.results), out_of_core_section(args.results)]
+             interpolate_section(args.results), constrained_section(args.results), terrain_section(args.results),
+             out_of_core_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"
                  + "\n".join(cmd for _, cmd in commands) + "\n```\n")
     with open(args.out, "w") as f:

@@ -37,7 +37,8 @@ bash scripts/deps.sh bench >&2
 log "build ($build, Release, with the Python module)"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=ON \
   -DRIDT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$py" >/dev/null
-ninja -C "$build" ridt_tool ridt_bench_serial ridt_bench_threads ridt_bench_peers ridt_cgal_triangulate ridt_python_package >/dev/null
+ninja -C "$build" ridt_tool ridt_bench_serial ridt_bench_threads ridt_bench_peers ridt_cgal_triangulate ridt_bench_constrained \
+  ridt_python_package >/dev/null
 
 if [ "$mode" = quick ]; then
   serial_args=(--max-n 100000 --reps 3)
@@ -49,6 +50,10 @@ if [ "$mode" = quick ]; then
   interpolate_args=(--n 100000 --grid 500 --reps 2)
   terrain_args=(--sizes 100000 --reps 1 --gdal-nearest-max 100000)
   ooc_args=(--sizes 1000000 --limits 100M)
+  cdt_args=(--n 100000 --lakes 10 --reps 3)
+  cdt_extra_args=(--n 10000 --lakes 5 --extra 90000 --reps 3)
+  quality_args=(--n 25000 --lakes 10 --angle 30 --reps 3)
+  mesh_args=(--cdt 100000:10 --quality 25000:10:30 --reps 3)
 else
   serial_args=(--reps 5)
   threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
@@ -59,6 +64,10 @@ else
   interpolate_args=(--n 1000000 --grid 2000 --reps 3)
   terrain_args=(--sizes 1000000,10000000 --reps 3)
   ooc_args=(--sizes 10000000 --limits 500M)
+  cdt_args=(--n 1000000 --lakes 100 --reps 5)
+  cdt_extra_args=(--n 100000 --lakes 10 --extra 900000 --reps 5)
+  quality_args=(--n 250000 --lakes 50 --angle 30 --reps 5)
+  mesh_args=(--cdt 1000000:100 --quality 250000:50:30 --reps 5)
   if [ "$mode" = large ]; then
     ooc_args=(--sizes 10000000,100000000,500000000 --limits 500M,2G,4G)
     python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
@@ -93,6 +102,15 @@ mkdir -p "$tmp/ooc"
 run out_of_core "$py" bench/out_of_core_table.py --build "$build" "${ooc_args[@]}" --threads 2 --dir "$tmp/ooc" \
   --out "$tmp/out_of_core.md"
 rm -rf "$tmp/ooc"
+run constrained_cdt "$build/ridt_bench_constrained" --task cdt "${cdt_args[@]}" --csv "$tmp/constrained.csv"
+run constrained_extra "$build/ridt_bench_constrained" --task cdt "${cdt_extra_args[@]}" --csv "$tmp/constrained.csv"
+run constrained_quality "$build/ridt_bench_constrained" --task quality "${quality_args[@]}" --csv "$tmp/constrained.csv"
+if [ "$mode" = large ]; then  # some 5 minutes: Triangle and CGAL take 2 each
+  run constrained_quality_large "$build/ridt_bench_constrained" --task quality --n 2500000 --lakes 100 --angle 30 \
+    --reps 1 --csv "$tmp/constrained.csv"
+fi
+run mesh_process "$py" bench/mesh_process_table.py --build "$build" "${mesh_args[@]}" --threads 2 \
+  --out "$tmp/mesh_process.md"
 run plots "$py" bench/plot_threads.py "$tmp/threads.csv" "$tmp"
 run plots_root "$py" bench/plot_threads.py "$tmp/table3.csv" "$tmp" root_
 
