@@ -310,6 +310,18 @@ expect 0 "mesh" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sq.ele"
 [ "$(head -1 "$dir/sq.edge")" = "8 1" ] && pass || fail "sq.edge"
 grep -q '^1 ' "$dir/sq.ele" && pass || fail ".ele not numbered from 1 as its .poly"
 expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
+# A SIGBUS (an input file cut short while it is mapped) ends the tool with a message and status
+# 2, and no output: here sent while the tool waits to open a FIFO no one writes.
+mkfifo "$dir/wait.fifo"
+"$ridt" triangulate "$dir/wait.fifo" -o "$dir/never.ele" 2>"$dir/err" &
+bus_pid=$!
+sleep 0.5
+kill -BUS "$bus_pid"
+wait "$bus_pid"
+bus_rc=$?
+[ "$bus_rc" = 2 ] && pass || fail "SIGBUS: exit $bus_rc, wanted 2"
+stderr_has "could not be read to its end"
+absent "$dir/never.ele"
 # Extensions in any case: the same formats, the same files.
 cp "$dir/sq.poly" "$dir/SQ.POLY"
 expect 0 "mesh, upper-case names" -- "$ridt" mesh "$dir/SQ.POLY" -o "$dir/SQ.ELE"
