@@ -241,6 +241,37 @@ bool parse(int argc, char** argv, Args& a) {
   return argc % 2 == 1 && (a.task == "cdt" || a.task == "quality");
 }
 
+// The table's rows, and with --csv the same appended to that file; returns the exit status.
+int print_rows(const Args& a, const std::vector<std::pair<std::string, Code>>& codes,
+               const std::vector<std::vector<Result>>& runs) {
+  // "ratio": the median of each repetition's ratio to the first code's run in it (the runs of
+  // one repetition are next to each other in time, so a drift of the machine's speed cancels).
+  std::printf("%-20s %10s %8s %12s %10s %10s\n", "code", "seconds", "ratio", "triangles", "min angle", "MB added");
+  FILE* csv = a.csv.empty() ? nullptr : std::fopen(a.csv.c_str(), "a");
+  if (!a.csv.empty() && csv == nullptr) {
+    std::perror(a.csv.c_str());
+    return 1;
+  }
+  if (csv != nullptr && std::fseek(csv, 0, SEEK_END) == 0 && std::ftell(csv) == 0)
+    std::fprintf(csv, "task,n,lakes,extra,angle,area,reps,code,seconds,ratio,triangles,min_angle,mb_added\n");
+  for (std::size_t c = 0; c < codes.size(); ++c) {
+    std::vector<double> s, mem, ratio;
+    for (std::size_t r = 0; r < runs[c].size(); ++r) {
+      s.push_back(runs[c][r].seconds), mem.push_back(runs[c][r].added_bytes);
+      ratio.push_back(runs[c][r].seconds / runs[0][r].seconds);
+    }
+    std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), ridt::bench::median(s),
+                ridt::bench::median(ratio), runs[c][0].triangles, runs[c][0].worst_angle,
+                ridt::bench::median(mem) / 1e6);
+    if (csv != nullptr)
+      std::fprintf(csv, "%s,%u,%u,%u,%g,%g,%d,\"%s\",%.4f,%.3f,%zu,%.2f,%.1f\n", a.task.c_str(), a.n, a.lakes, a.extra,
+                   a.task == "quality" ? a.angle : 0.0, a.task == "quality" ? a.area : 0.0, a.reps,
+                   codes[c].first.c_str(), ridt::bench::median(s), ridt::bench::median(ratio), runs[c][0].triangles,
+                   runs[c][0].worst_angle, ridt::bench::median(mem) / 1e6);
+  }
+  return csv != nullptr && std::fclose(csv) != 0 ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -279,30 +310,5 @@ int main(int argc, char** argv) {
                                         .c_str()
                                   : "",
               a.reps);
-  // "ratio": the median of each repetition's ratio to the first code's run in it (the runs of
-  // one repetition are next to each other in time, so a drift of the machine's speed cancels).
-  std::printf("%-20s %10s %8s %12s %10s %10s\n", "code", "seconds", "ratio", "triangles", "min angle", "MB added");
-  FILE* csv = a.csv.empty() ? nullptr : std::fopen(a.csv.c_str(), "a");
-  if (!a.csv.empty() && csv == nullptr) {
-    std::perror(a.csv.c_str());
-    return 1;
-  }
-  if (csv != nullptr && std::fseek(csv, 0, SEEK_END) == 0 && std::ftell(csv) == 0)
-    std::fprintf(csv, "task,n,lakes,extra,angle,area,reps,code,seconds,ratio,triangles,min_angle,mb_added\n");
-  for (std::size_t c = 0; c < codes.size(); ++c) {
-    std::vector<double> s, mem, ratio;
-    for (std::size_t r = 0; r < runs[c].size(); ++r) {
-      s.push_back(runs[c][r].seconds), mem.push_back(runs[c][r].added_bytes);
-      ratio.push_back(runs[c][r].seconds / runs[0][r].seconds);
-    }
-    std::printf("%-20s %10.3f %8.2f %12zu %10.2f %10.1f\n", codes[c].first.c_str(), ridt::bench::median(s),
-                ridt::bench::median(ratio), runs[c][0].triangles, runs[c][0].worst_angle,
-                ridt::bench::median(mem) / 1e6);
-    if (csv != nullptr)
-      std::fprintf(csv, "%s,%u,%u,%u,%g,%g,%d,\"%s\",%.4f,%.3f,%zu,%.2f,%.1f\n", a.task.c_str(), a.n, a.lakes, a.extra,
-                   a.task == "quality" ? a.angle : 0.0, a.task == "quality" ? a.area : 0.0, a.reps,
-                   codes[c].first.c_str(), ridt::bench::median(s), ridt::bench::median(ratio), runs[c][0].triangles,
-                   runs[c][0].worst_angle, ridt::bench::median(mem) / 1e6);
-  }
-  return csv != nullptr && std::fclose(csv) != 0 ? 1 : 0;
+  return print_rows(a, codes, runs);
 }
