@@ -318,6 +318,8 @@ def included(results, name, heading, footer, skip):
         return ""
     lines = open(path).read().splitlines()
     body = "\n".join(line for line in lines[1:] if not line.startswith(skip)).strip()
+    while "\n\n\n" in body:  # the skipped lines' blank neighbours
+        body = body.replace("\n\n\n", "\n\n")
     return f"## {heading}\n\n{body}\n\n{footer} Output: [results/{name}](results/{name}).\n"
 
 

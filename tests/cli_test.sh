@@ -315,7 +315,7 @@ expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
 mkfifo "$dir/wait.fifo"
 "$ridt" triangulate "$dir/wait.fifo" -o "$dir/never.ele" 2>"$dir/err" &
 bus_pid=$!
-sleep 0.5
+sleep 1
 kill -BUS "$bus_pid"
 wait "$bus_pid"
 bus_rc=$?

@@ -43,17 +43,23 @@ void check_input(std::span<const Point> points, std::span<const VertexId> segmen
 Point scaled(const Point& p, int scale) { return {std::ldexp(p.x, scale), std::ldexp(p.y, scale)}; }
 
 // The fixed edges, pairs (a, b) with a < b, sorted. Each is taken once (from the side where it
-// runs a -> b, or the only side) in one pass that appends without a branch: a third of the
-// slots are fixed, at random, and a branch on each mispredicted often. Then counted by a, and
-// each a's few sorted.
+// runs a -> b, or the only side), counted, then collected in a pass that appends without a
+// branch: a third of the slots are fixed, at random, and a branch on each mispredicted often.
+// Then counted by a, and each a's few sorted.
 std::vector<VertexId> fixed_edges(const detail::Cdt& m) {
-  std::vector<std::uint64_t> pairs(m.tris.size() + 1);
+  auto taken = [&m](std::size_t s, VertexId a, VertexId b) {
+    return static_cast<std::size_t>(m.fixed[s] & ((a < b) | (m.nbrs[s] < 0)));
+  };
   std::size_t count = 0;
+  for (std::size_t s = 0; s < m.tris.size(); s += 3)
+    for (int j = 0; j < 3; ++j) count += taken(s + j, m.tris[s + (j + 1) % 3], m.tris[s + (j + 2) % 3]);
+  std::vector<std::uint64_t> pairs(count + 1);  // one more: the last slot's write when it is not taken
+  count = 0;
   for (std::size_t s = 0; s < m.tris.size(); s += 3)
     for (int j = 0; j < 3; ++j) {
       const std::uint64_t a = m.tris[s + (j + 1) % 3], b = m.tris[s + (j + 2) % 3];
       pairs[count] = a < b ? a << 32 | b : b << 32 | a;
-      count += m.fixed[s + j] & ((a < b) | (m.nbrs[s + j] < 0));
+      count += taken(s + j, static_cast<VertexId>(a), static_cast<VertexId>(b));
     }
   std::vector<std::uint32_t> start(m.pts.size() + 1, 0);
   for (std::size_t k = 0; k < count; ++k) ++start[(pairs[k] >> 32) + 1];

@@ -20,13 +20,15 @@ Command add_generate(CLI::App& app) {
   gen->add_option("-o,--output", a->output, "output: " + io::point_output_formats())->required();
   gen->add_option("--memory-limit", a->memory_limit, kMemoryLimitHelp);
   return {gen, [a] {
-            // The points (16 bytes each) and the writer's buffers (a text file's, up to some 8 MB):
-            // the process grew by 7.7, 23 and 166 MB at 10^5, 10^6 and 10^7 points (text), every
-            // distribution alike.
-            const std::size_t buffers = std::min<std::size_t>(std::size_t{8} << 20, std::size_t{64} * a->n);
+            // The points (16 bytes each) and the text writer's buffers: its own and two runs of
+            // 32,768 lines a thread, some 1.6 MB each (the process grew by 7.7, 23 and 166 MB at
+            // 10^5, 10^6 and 10^7 text points on 2 threads, every distribution alike).
+            const unsigned threads = thread_count(0);
+            const std::size_t buffers =
+                std::min<std::size_t>((2 * std::size_t{threads} + 1) * (std::size_t{13} << 17), std::size_t{64} * a->n);
             check_memory("generating " + std::to_string(a->n) + " points", std::size_t{18} * a->n + buffers,
                          a->memory_limit.empty() ? 0 : byte_size(a->memory_limit, "--memory-limit"));
-            io::write_points(a->output, generate(parse<Distribution>(a->dist), a->n, a->seed), 0, thread_count(0));
+            io::write_points(a->output, generate(parse<Distribution>(a->dist), a->n, a->seed), 0, threads);
             return 0;
           }};
 }

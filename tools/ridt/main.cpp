@@ -22,8 +22,10 @@ using namespace ridt::tool;
 
 // The input files are mapped into memory where they are regular files: one cut short while it
 // is read (or on storage that fails) raises SIGBUS at the pages past its new end, which would
-// end the process with a core dump. The tool says so and exits with status 2 instead, before any
-// output is begun (the inputs are read first), with the calls a signal handler may make.
+// end the process with a core dump. The tool says so and exits with status 2 instead, with the
+// calls a signal handler may make. No target is half-written (outputs are written under a
+// temporary name and renamed when complete), but a .bin input is read while its triangulation's
+// output is written: the temporary file begun then stays beside the target.
 extern "C" void on_bus_error(int) {
   static const char text[] =
       "ridt: error: an input file could not be read to its end (it was cut short while ridt read it, or its "

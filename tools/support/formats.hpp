@@ -91,7 +91,7 @@ const Format& format_of(const std::string& path, Role Format::*role, const char*
     if (f.extension == ext && f.*role != nullptr) return f;
   for (const Format& f : formats())
     if (any_extension && f.extension.empty() && f.*role != nullptr) return f;
-  throw IoError("unknown " + std::string(what) + " extension '" + ext + "' (use " +
+  throw IoError("unknown " + std::string(what) + " extension '" + fs::path(path).extension().string() + "' (use " +
                 extensions_with(role, any_extension) + ")");
 }
 

@@ -95,7 +95,9 @@ void detail::write_tin_ogr(const std::string& path, const Terrain& terrain, cons
 void detail::write_dem_gdal(const std::string& path, const Dem& dem, const DemFile& file) {
   const char* driver = driver_of(path, kRasterDrivers);
   if (driver == nullptr)
-    fail_file(path, "unknown DEM extension '" + extension_of(path) + "' (use .tif, .img, or .png for a hillshade)");
+    fail_file(path,
+              "unknown DEM extension '" + detail::fs::path(path).extension().string() +
+                  "' (use .tif, .img, or .png for a hillshade)");
   gdal_module(path).write_dem(path, driver, dem.grid(), dem.options().nodata, file, dem.band_rows(),
                               [&](std::size_t b, std::span<double> out) { dem.band(b, out); });
 }

@@ -71,7 +71,8 @@ void write_tin(const std::string& path, const Terrain& terrain, const Triangulat
   if (ext == ".ply") return write_ply_z(path, terrain, t);
   if (ext == ".obj") return write_obj_z(path, terrain, t);
   if (detail::is_gdal_vector(path)) return detail::write_tin_ogr(path, terrain, t);
-  fail_file(path, "unknown TIN extension '" + ext + "' (use " + tin_formats() + ")");
+  fail_file(path,
+            "unknown TIN extension '" + detail::fs::path(path).extension().string() + "' (use " + tin_formats() + ")");
 }
 
 void write_hillshade(const std::string& path, const Dem& dem) {
