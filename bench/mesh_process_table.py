@@ -14,18 +14,15 @@ resident memory. Writes a Markdown table (and CSV) with the machine and the comm
                               [--reps 5] [--threads 2] [--out docs/results/mesh_process.md]
 """
 import argparse
-import csv
 import os
-import random
 import shutil
-import statistics
 import subprocess
 import sys
 import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from process_table import compiler, machine, run_once  # noqa: E402
+from process_table import compiler, interleaved, machine, write_csv  # noqa: E402
 
 
 def triangles_in(ele):
@@ -61,28 +58,13 @@ def measure(a, tmp, task):
         (f"ridt mesh, {t} threads", [ridt, "mesh", poly, "-o", os.path.join(tmp, "r2.ele"), "--threads", t] + options,
          os.path.join(tmp, "r2.ele")),
     ]
-    walls = {c[0]: [] for c in codes}
-    peaks = {c[0]: [] for c in codes}
-    ratios = {c[0]: [] for c in codes}
-    for _ in range(a.reps):
-        order = list(codes)
-        random.shuffle(order)
-        this = {}
-        for code, cmd, _ in order:
-            wall, peak = run_once(cmd)
-            walls[code].append(wall)
-            peaks[code].append(peak)
-            this[code] = wall
-        for code in this:
-            ratios[code].append(this[code] / this["Triangle"])
-    base = statistics.median(walls["Triangle"])
+    timed = interleaved({code: cmd for code, cmd, _ in codes}, a.reps)
     rows = []
     for code, _, ele in codes:
-        med = statistics.median(walls[code])
-        rows.append({"task": name, "vertices": n, "lakes": lakes, "code": code, "median_s": med,
-                     "min_s": min(walls[code]), "max_s": max(walls[code]), "ratio": med / base,
-                     "paired_ratio": statistics.median(ratios[code]), "triangles": triangles_in(ele),
-                     "peak_mb": statistics.median(peaks[code]) / 1e6})
+        med, low, high, ratio, paired, peak = timed[code]
+        rows.append({"task": name, "vertices": n, "lakes": lakes, "code": code, "median_s": med, "min_s": low,
+                     "max_s": high, "ratio": ratio, "paired_ratio": paired, "triangles": triangles_in(ele),
+                     "peak_mb": peak / 1e6})
         r = rows[-1]
         print(f"{name:<12} {n:>9} {code:<22} {med:8.3f} s  x{r['ratio']:.3f} (paired {r['paired_ratio']:.3f})"
               f"  {r['triangles']:>10} triangles  {r['peak_mb']:7.1f} MB", flush=True)
@@ -91,10 +73,7 @@ def measure(a, tmp, task):
 
 def write_page(a, rows):
     """The Markdown page and the CSV beside it."""
-    with open(os.path.splitext(a.out)[0] + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
+    write_csv(a.out, rows)
     with open(a.out, "w") as f:
         f.write("# Whole-process meshes against Triangle\n\n")
         f.write(f"Written by `bench/mesh_process_table.py --build {a.build} --cdt {a.cdt} --quality {a.quality} "

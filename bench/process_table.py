@@ -36,6 +36,38 @@ def run_once(cmd):
     return wall, usage.ru_maxrss * 1024
 
 
+def interleaved(commands, reps):
+    """Each named command run `reps` times, the names in a new random order each repetition.
+    Returns, by name, (median wall s, min, max, ratio of medians to the first name's, median of
+    the paired ratios to the first name's run in the same repetition, median peak bytes)."""
+    names = list(commands)
+    walls = {name: [] for name in names}
+    peaks = {name: [] for name in names}
+    ratios = {name: [] for name in names}
+    for _ in range(reps):
+        order = list(names)
+        random.shuffle(order)
+        this = {}
+        for name in order:
+            this[name], peak = run_once(commands[name])
+            walls[name].append(this[name])
+            peaks[name].append(peak)
+        for name in names:
+            ratios[name].append(this[name] / this[names[0]])
+    base = statistics.median(walls[names[0]])
+    return {name: (statistics.median(walls[name]), min(walls[name]), max(walls[name]),
+                   statistics.median(walls[name]) / base, statistics.median(ratios[name]),
+                   statistics.median(peaks[name])) for name in names}
+
+
+def write_csv(out, rows):
+    """The rows as CSV beside the Markdown file `out`."""
+    with open(os.path.splitext(out)[0] + ".csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+
+
 def machine():
     cpu = "unknown CPU"
     try:
@@ -79,10 +111,7 @@ def compiler(build):
 
 def write_page(a, rows):
     """The Markdown page and the CSV beside it."""
-    with open(os.path.splitext(a.out)[0] + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
+    write_csv(a.out, rows)
     with open(a.out, "w") as f:
         f.write("# Whole-process timings against CGAL\n\n")
         f.write(f"Written by `bench/process_table.py --build {a.build} --sizes {a.sizes} --dists {a.dists} "
@@ -124,27 +153,11 @@ def main():
             for dist in a.dists.split(","):
                 points = os.path.join(tmp, f"{dist}-{n}.bin")
                 subprocess.run([ridt, "generate", "--dist", dist, "-n", str(n), "-o", points], check=True)
-                walls = {name: [] for name, _ in codes}
-                peaks = {name: [] for name, _ in codes}
-                ratios = {name: [] for name, _ in codes}
-                for _ in range(a.reps):
-                    order = list(codes)
-                    random.shuffle(order)
-                    this = {}
-                    for name, cmd in order:
-                        wall, peak = run_once(cmd(points))
-                        walls[name].append(wall)
-                        peaks[name].append(peak)
-                        this[name] = wall
-                    for name in this:
-                        ratios[name].append(this[name] / this[codes[0][0]])
-                base = statistics.median(walls[codes[0][0]])
+                timed = interleaved({name: cmd(points) for name, cmd in codes}, a.reps)
                 for name, _ in codes:
-                    med = statistics.median(walls[name])
-                    rows.append({"n": n, "dist": dist, "code": name, "median_s": med,
-                                 "min_s": min(walls[name]), "max_s": max(walls[name]),
-                                 "ratio": med / base, "paired_ratio": statistics.median(ratios[name]),
-                                 "bytes_per_point": statistics.median(peaks[name]) / n})
+                    med, low, high, ratio, paired, peak = timed[name]
+                    rows.append({"n": n, "dist": dist, "code": name, "median_s": med, "min_s": low, "max_s": high,
+                                 "ratio": ratio, "paired_ratio": paired, "bytes_per_point": peak / n})
                     r = rows[-1]
                     print(f"{n:>9} {dist:<9} {name:<26} {med:8.3f} s  x{r['ratio']:.3f}"
                           f" (paired {r['paired_ratio']:.3f})  {r['bytes_per_point']:6.1f} B/pt", flush=True)
