@@ -38,9 +38,10 @@ struct Domain {
   /// Keep every triangle of the convex hull (the default); false: remove those that can be
   /// reached from the hull without crossing a segment, leaving what the segments enclose.
   bool convex_hull = true;
-  /// Seeds of holes: the triangle that holds each (the first found where one lies on an edge)
-  /// and every triangle reached from it without crossing a segment are removed. A seed outside
-  /// the convex hull removes nothing.
+  /// Seeds of holes: every triangle that holds one, inside or on its boundary (a seed on an
+  /// edge or at a vertex empties the triangles on each side of it), and every triangle reached
+  /// from those without crossing a segment are removed. A seed outside the convex hull removes
+  /// nothing.
   std::vector<Point> holes;
   /// Regions, marked after the holes are removed; where two share triangles, the later wins.
   std::vector<Region> regions;

@@ -32,8 +32,9 @@ class ConstrainedDelaunay:
     points : array_like, shape (npoints, 2)
     segments : array_like of int, shape (nsegments, 2)
     holes : array_like, shape (nholes, 2), optional
-        Seeds of holes: the triangle holding each, and all reached from it without crossing a
-        segment, are removed (Triangle's convention).
+        Seeds of holes: the triangles holding each (inside or on their boundary: a seed on a
+        segment empties both sides), and all reached from them without crossing a segment, are
+        removed (Triangle's convention).
     convex_hull : bool
         True (the default) keeps every triangle of the convex hull; False removes those reached
         from the hull without crossing a segment, leaving what the segments enclose.

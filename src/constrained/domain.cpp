@@ -15,6 +15,24 @@ std::int64_t holding(const Cdt& m, const Point& q, std::uint32_t& from) {
   return at.t;
 }
 
+// The triangles whose closure holds q: one, or two beside an edge, or every one about a vertex
+// (a hole's seed there empties them all: the validator finds no seed inside or on a triangle).
+std::vector<std::uint32_t> holding_all(const Cdt& m, const Point& q, std::uint32_t& from) {
+  std::vector<std::uint32_t> out;
+  if (m.size() == 0) return out;
+  const Cdt::Place at = m.find(std::min<std::uint32_t>(from, static_cast<std::uint32_t>(m.size() - 1)), q);
+  if (at.kind == Cdt::Place::Outside) return out;
+  from = at.t;
+  if (at.kind == Cdt::Place::Corner) {
+    m.around(m.at(at.t, at.k), [&](std::uint32_t t) { return out.push_back(t), false; });
+    return out;
+  }
+  out.push_back(at.t);
+  if (const std::int32_t n = m.nbrs[3 * at.t + at.k]; at.kind == Cdt::Place::Edge && n >= 0)
+    out.push_back(static_cast<std::uint32_t>(n));
+  return out;
+}
+
 // Every triangle reached from `seed` across edges that are not fixed, given `mark` (those
 // whose mark is already `mark` are not entered again).
 template <class T>
@@ -66,8 +84,7 @@ bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& r
       if (m.nbrs[3 * t + j] < 0 && !m.fixed[3 * t + j]) flood<std::uint8_t>(m, t, gone, 1);
   std::uint32_t from = 0;
   for (const Point& h : holes)
-    if (const std::int64_t t = holding(m, h, from); t >= 0)
-      flood<std::uint8_t>(m, static_cast<std::uint32_t>(t), gone, 1);
+    for (const std::uint32_t t : holding_all(m, h, from)) flood<std::uint8_t>(m, t, gone, 1);
   const bool removed = std::find(gone.begin(), gone.end(), 1) != gone.end();
   if (removed) remove(m, gone);
   if (regions.empty()) return removed;

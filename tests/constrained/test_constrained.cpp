@@ -271,5 +271,40 @@ TEST(Constrained, TheExteriorAndHolesAreRemoved) {
   EXPECT_THROW(triangulate_constrained(pts, segs, {}, domain), InputError);
 }
 
+// A seed on a segment or at a vertex empties the triangles on every side of it, whatever the
+// walk to it found first: no triangle holds a seed inside or on its boundary (check_mesh). The
+// first case is the fuzzer's: a triangle whose long side, the diagonal (0, 0)-(10, 10), runs
+// through two corners of a square (4, 4)-(6, 6) and through the hole seed (5, 5).
+TEST(Constrained, HoleSeedsOnAnEdgeOrAVertexEmptyEverySide) {
+  const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 6, 6, 3};
+  auto holed = [&](bool hull, std::vector<Point> holes) {
+    Domain domain;
+    domain.convex_hull = hull;
+    domain.holes = holes;
+    const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+    MeshSpec spec;
+    spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = holes;
+    const CheckResult verdict = check_mesh(pts, t.triangles, spec);
+    EXPECT_TRUE(verdict.valid) << verdict.message;
+    return t.size();
+  };
+  const std::size_t all = holed(true, {}), outline = holed(false, {});
+  ASSERT_LT(outline, all);
+  // (5, 5) on the diagonal: the half square below it goes, the half above was outside already.
+  EXPECT_LT(holed(false, {{5, 5}}), outline);
+  // With the convex hull kept, both halves go; and a seed at the corner (6, 6) or (4, 4) takes
+  // every triangle about it, on both sides of the diagonal and of the square's sides.
+  EXPECT_LT(holed(true, {{5, 5}}), holed(true, {{5.5, 4.5}}));
+  EXPECT_LT(holed(true, {{6, 6}}), holed(true, {{5, 5}}));
+  EXPECT_EQ(holed(true, {{4, 4}}), holed(true, {{6, 6}}));
+  // The outline's corner (0, 0) takes the triangles on both sides of the diagonal there, more
+  // than a seed beside it does. With (5, 5) too, one triangle is left, (4, 6)-(6, 6)-(10, 10),
+  // closed off above the square by segments and the hull; (6, 7) lies in it.
+  EXPECT_LT(holed(true, {{0, 0}}), holed(true, {{1, 0.5}}));
+  EXPECT_EQ(holed(true, {{0, 0}, {5, 5}}), 1u);
+  EXPECT_EQ(holed(true, {{0, 0}, {5, 5}, {6, 7}}), 0u);
+}
+
 }  // namespace
 }  // namespace ridt::test
