@@ -14,6 +14,7 @@
 #include <mutex>
 
 #include "io_common.hpp"
+#include "temporaries.hpp"
 #include "terrain_io.hpp"
 
 namespace ridt::io {
@@ -74,12 +75,17 @@ class Output {
     stem_ = p.stem().string();
     temp_stem_ = stem_ + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
     temp_ = (dir_ / (temp_stem_ + detail::fs::path(path).extension().string())).string();
+    // For a signal that ends the tool (temporaries.hpp): the file, the side files GDAL's drivers
+    // write beside it (a Shapefile's, a GeoPackage's journals, an .aux.xml), before any exists.
+    for (const char* side : {"", "-journal", "-wal", "-shm", ".aux.xml"}) names_.emplace_back(temp_ + side);
+    for (const char* ext : {".shx", ".dbf", ".prj", ".cpg"}) names_.emplace_back((dir_ / (temp_stem_ + ext)).string());
   }
   Output(const Output&) = delete;
   Output& operator=(const Output&) = delete;
   ~Output() {
     if (!committed_ || target_.in_place)
       for (const auto& f : mine()) std::remove(f.c_str());
+    names_.clear();
   }
 
   const std::string& temp() const { return temp_; }
@@ -91,7 +97,7 @@ class Output {
         throw IoError("cannot write " + path_ + ": the format makes " + std::to_string(files.size()) + " files, and " +
                       path_ + " is not a regular file");
       copy_in_place(files[0], target_.path, path_);
-      committed_ = true;
+      committed_ = true;  // the destructor removes the file made in the temporary directory
       return;
     }
     for (const auto& f : files) {
@@ -102,6 +108,7 @@ class Output {
         throw IoError("cannot write " + target + ": " + detail::errno_text(errno));
     }
     committed_ = true;
+    names_.clear();
   }
 
  private:
@@ -117,6 +124,7 @@ class Output {
   OutputTarget target_;
   std::string stem_, temp_stem_, temp_;
   detail::fs::path dir_;
+  std::vector<TemporaryName> names_;
   bool committed_ = false;
 };
 
@@ -254,6 +262,7 @@ void dem_out(const std::string& path, const char* name, const RasterGrid& g, dou
 }  // namespace ridt::io
 
 extern "C" const ridt::io::detail::GdalModule* ridt_gdal_module() {
-  static const ridt::io::detail::GdalModule module{ridt::io::points_in, ridt::io::tin_out, ridt::io::dem_out};
+  static const ridt::io::detail::GdalModule module{ridt::io::points_in, ridt::io::tin_out, ridt::io::dem_out,
+                                                   ridt::io::remove_temporaries};
   return &module;
 }

@@ -21,6 +21,7 @@
 #include "args.hpp"
 #include "exchange.hpp"
 #include "mpi.hpp"
+#include "temporaries.hpp"
 
 namespace ridt::mpi {
 namespace {
@@ -422,6 +423,8 @@ int run(Mpi& mpi, const Args& a) {
 int main(int argc, char** argv) {
   using namespace ridt::mpi;
   MPI_Init(&argc, &argv);
+  // A rank interrupted or killed (mpirun passes SIGINT and SIGTERM on) leaves no temporary file.
+  ridt::io::end_on_signals("ridt-mpi: error: an input file could not be read to its end\n");
   int status = 0;
   {
     Mpi mpi;

@@ -9,30 +9,22 @@
 //   ridt dem INPUT.las|.csv|.gpkg -o DEM.tif --resolution R [--method M] [--max-edge L]
 // Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage, 3 an
 // internal error.
-#include <signal.h>
-#include <unistd.h>
 
 #include <optional>
 
 #include "command.hpp"
+#include "temporaries.hpp"
 
 namespace {
 
 using namespace ridt::tool;
 
 // The input files are mapped into memory where they are regular files: one cut short while it
-// is read (or on storage that fails) raises SIGBUS at the pages past its new end, which would
-// end the process with a core dump. The tool says so and exits with status 2 instead, with the
-// calls a signal handler may make. No target is half-written (outputs are written under a
-// temporary name and renamed when complete), but a .bin input is read while its triangulation's
-// output is written: the temporary file begun then stays beside the target.
-extern "C" void on_bus_error(int) {
-  static const char text[] =
-      "ridt: error: an input file could not be read to its end (it was cut short while ridt read it, or its "
-      "storage failed)\n";
-  (void)!::write(STDERR_FILENO, text, sizeof text - 1);
-  ::_exit(kExitUsage);
-}
+// is read (or on storage that fails) raises SIGBUS at the pages past its new end. The tool then
+// says so and exits with status 2 (temporaries.hpp's end_on_signals), as it does on any error.
+constexpr const char* kBusError =
+    "ridt: error: an input file could not be read to its end (it was cut short while ridt read it, or its "
+    "storage failed)\n";
 
 /// "ridt VERSION (COMPILER, assertions on|off)": what benchmark pages record of the binary.
 std::string version() {
@@ -95,10 +87,8 @@ int run(const std::vector<Command>& commands) {
 int main(int argc, char** argv) {
   // One triangulation a process: blocks kept for a next call would only raise the peak.
   ridt::set_memory_cache_limit(0);
-  struct sigaction bus {};
-  bus.sa_handler = on_bus_error;
-  sigemptyset(&bus.sa_mask);
-  sigaction(SIGBUS, &bus, nullptr);
+  // Interrupted, killed or cut short: no temporary file left beside an output.
+  ridt::io::end_on_signals(kBusError);
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version());

@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "io_common.hpp"
+#include "temporaries.hpp"
 #include "terrain_io.hpp"
 
 namespace ridt::io {
@@ -59,7 +60,11 @@ Loaded load() {
       continue;
     }
     using Entry = const detail::GdalModule* (*)();
-    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module"))) return {entry(), ""};
+    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module"))) {
+      const detail::GdalModule* module = entry();
+      also_remove_temporaries(module->remove_temporaries);  // its files too, on a signal
+      return {module, ""};
+    }
     why = place + " is not ridt's GDAL module";
   }
   return {nullptr, why.empty() ? "ridt's GDAL module (libridt_gdal.so) is not installed" : why};

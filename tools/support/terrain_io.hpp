@@ -118,6 +118,8 @@ struct GdalModule {
   void (*write_dem)(const std::string& path, const char* driver, const RasterGrid& grid, double nodata,
                     const DemFile& file, std::size_t band_rows,
                     const std::function<void(std::size_t, std::span<double>)>& band);
+  /// The module's own list of temporary files (temporaries.hpp), emptied: async-signal-safe.
+  void (*remove_temporaries)() noexcept;
 };
 
 /// The module, loaded once; IoError naming `path` where the build has none or it cannot be

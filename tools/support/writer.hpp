@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "io.hpp"
+#include "temporaries.hpp"
 
 namespace ridt::io {
 
@@ -114,7 +115,8 @@ class TextPart {
 
 /// Buffered output to a temporary file beside `path`'s target (output_target: a symbolic link
 /// followed), renamed onto the target by commit(). If the writer is destroyed without a
-/// successful commit the temporary file is removed. A target that exists and is not a regular
+/// successful commit the temporary file is removed, and a signal that ends the tool removes it
+/// too (temporaries.hpp). A target that exists and is not a regular
 /// file (a device such as /dev/stdout, a pipe) is written in place, in order, as the bytes come:
 /// there an error midway cannot take back what was written.
 class Writer {
@@ -124,6 +126,7 @@ class Writer {
       fd_ = ::open(target_.path.c_str(), O_WRONLY | O_CLOEXEC);
     } else {
       tmp_ = temp_name(target_.path);
+      registered_ = TemporaryName(tmp_);  // before the file exists: a signal never finds it unnamed
       fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     }
     if (fd_ < 0) fail(errno);
@@ -135,6 +138,7 @@ class Writer {
   ~Writer() {
     if (fd_ >= 0) ::close(fd_);
     if (!committed_ && !tmp_.empty()) std::remove(tmp_.c_str());
+    registered_.release();
   }
 
   /// Whether the file is written in place (a device, a pipe), not renamed: put_at takes only
@@ -263,6 +267,7 @@ class Writer {
     errno = 0;
     if (!target_.in_place && std::rename(tmp_.c_str(), target_.path.c_str()) != 0) fail(errno);
     committed_ = true;
+    registered_.release();
   }
 
  private:
@@ -357,6 +362,7 @@ class Writer {
   std::string path_;
   OutputTarget target_;
   std::string tmp_;  // empty in place
+  TemporaryName registered_;  // tmp_, for a signal that ends the tool
   int fd_ = -1;
   std::uint64_t end_ = 0;  // what put() has written out
   std::unique_ptr<char[]> buf_{new char[kCapacity]};
