@@ -322,14 +322,20 @@ bus_rc=$?
 [ "$bus_rc" = 2 ] && pass || fail "SIGBUS: exit $bus_rc, wanted 2"
 stderr_has "could not be read to its end"
 absent "$dir/never.ele"
-# SIGTERM while a large file is written: the tool ends by that signal, and neither the file nor
-# its temporary name is left (the unit tests raise each signal mid-file; this is the tool's).
+# SIGTERM while a large file is written (its temporary file seen): the tool ends by that signal,
+# and neither the file nor its temporary name is left (the unit tests raise each signal mid-file
+# in a writer; this is the tool's).
 "$ridt" generate -n 10000000 -o "$dir/killed.txt" &
 term_pid=$!
-sleep 0.3
+seen=0
+for _ in $(seq 1000); do
+  if compgen -G "$dir/killed.txt.tmp-*" >/dev/null; then seen=1; break; fi
+  sleep 0.01
+done
 kill -TERM "$term_pid"
 wait "$term_pid"
 term_rc=$?
+[ "$seen" = 1 ] && pass || fail "SIGTERM: the temporary file never appeared"
 [ "$term_rc" = 143 ] && pass || fail "SIGTERM: exit $term_rc, wanted 143"
 left=$(find "$dir" -name 'killed.txt*' | wc -l)
 [ "$left" = 0 ] && pass || fail "SIGTERM left $left files"

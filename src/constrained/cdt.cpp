@@ -4,6 +4,7 @@
 #include "constrained/cdt.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "predicates/predicates.hpp"
@@ -175,6 +176,18 @@ bool Cdt::fits_on_edge(std::uint32_t t, int k, const Point& p) const {
   if (n < 0) return true;
   const Point& d = pts[at(static_cast<std::uint32_t>(n), back(static_cast<std::uint32_t>(n), t))];
   return orient2d(d, y, p) > 0 && orient2d(d, p, x) > 0;
+}
+
+Point Cdt::not_beyond(std::uint32_t t, int k, Point p) const {
+  const Point &x = pts[at(t, k + 1)], &y = pts[at(t, k + 2)];
+  // t lies left of x -> y: toward it is the left normal's way, an ulp a step in each
+  // coordinate that moves (a rounding off the line, so a few steps).
+  const double nx = x.y - y.y, ny = y.x - x.x;
+  for (int step = 0; step < 64 && orient2d(x, y, p) < 0; ++step) {
+    if (nx != 0) p.x = std::nextafter(p.x, nx > 0 ? HUGE_VAL : -HUGE_VAL);
+    if (ny != 0) p.y = std::nextafter(p.y, ny > 0 ? HUGE_VAL : -HUGE_VAL);
+  }
+  return p;
 }
 
 VertexId Cdt::insert_cavity(const Point& p, const std::vector<std::uint32_t>& cavity) {

@@ -44,6 +44,9 @@ class Cdt {
   /// Whether p, added on edge k of t as though it lay on it (a rounded point lies off its
   /// segment by a rounding), leaves every triangle there counter-clockwise.
   bool fits_on_edge(std::uint32_t t, int k, const Point& p) const;
+  /// p, or where it lies beyond edge k of t (on the side away from t, by a rounding) the
+  /// nearest doubles toward t that do not: a point split off a boundary edge stays inside.
+  Point not_beyond(std::uint32_t t, int k, Point p) const;
 
   /// p added by replacing `cavity` (triangles linked without crossing a fixed edge, whose
   /// circles hold p: Bowyer and Watson) with a fan about p; kNone, with nothing changed, where

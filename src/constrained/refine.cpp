@@ -32,10 +32,9 @@ double dist2(const Point& a, const Point& b) { return (a.x - b.x) * (a.x - b.x) 
 constexpr double kGood = std::numeric_limits<double>::infinity();
 
 // A priority queue of items with a `key` (smaller first), in buckets of a quarter octave of
-// the key, last in first out within one: the order refinement needs within a few per cent,
-// with none of a heap's misses. A bucket is put in order along the Hilbert curve (by `where`,
-// in 1024 stretches of the curve, last in first out within one) when the queue comes to it
-// and more than a few of its items came since it last was in order: then one pop's triangle
+// it, last in first out within one: the order refinement needs within a few per cent, without a
+// heap's misses. A bucket is put in order along the Hilbert curve (by `where`, in 1024 stretches)
+// when the queue comes to it and more than a few of its items came since: then one pop's triangle
 // lies near the last one's in the plane, and the slots they free and take, near in memory.
 template <class Item>
 class Buckets {
@@ -345,7 +344,7 @@ class Refiner {
   }
 
   void split(std::uint32_t s);
-  VertexId split_at(std::uint32_t s, const Point& p);
+  VertexId split_at(std::uint32_t s, const Point& given);
   void relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right);
   void added(VertexId v);
   void find_small_angles();
@@ -393,12 +392,13 @@ void Refiner::split(std::uint32_t s) {
     }
 }
 
-// p added on subsegment s as though it lay on it (it does, up to rounding); where that would
-// fold a triangle over, inside the triangle beside it that holds p (x-y freed, p added, x-p and
-// p-y fixed, the regions on either side kept); kNone where neither can be done.
-VertexId Refiner::split_at(std::uint32_t s, const Point& p) {
+// p added on subsegment s as though it lay on it (it does, up to rounding; on the boundary never
+// beyond it, lest the domain grow over a hole's seed); where that folds a triangle, inside the one
+// beside it that holds p (x-y freed, p added, x-p and p-y fixed, the regions kept); else kNone.
+VertexId Refiner::split_at(std::uint32_t s, const Point& given) {
   const std::uint32_t t = s / 3;
   const int k = static_cast<int>(s % 3);
+  const Point p = boundary(s) ? m_.not_beyond(t, k, given) : given;
   if (m_.fits_on_edge(t, k, p)) return m_.insert_on_edge(p, t, k);
   if (boundary(s)) return Cdt::kNone;
   const Cdt::Place at = m_.beside(t, static_cast<int>(k), p);

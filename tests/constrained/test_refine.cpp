@@ -11,6 +11,7 @@
 
 #include "helpers.hpp"
 #include "order/random.hpp"
+#include "predicates/predicates.hpp"
 #include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
@@ -256,6 +257,33 @@ TEST(Refine, RegionsStayOnTheirSideWhereSplitsMissTheSegment) {
           ASSERT_EQ(m.t.attributes[k], m.t.attributes[static_cast<std::size_t>(n)]) << "triangle " << k;
       }
   }
+}
+
+// A hole's seed a rounding inside it, at the point its edge's split computes (the midpoint, in
+// doubles): the split point, beyond the domain's side of that edge, goes in nudged onto it, so
+// the domain does not grow over the seed, and check_mesh finds no triangle holding it.
+TEST(Refine, BoundarySplitsStayInsideTheDomain) {
+  detail::Rng rng(9);
+  int seeds_inside = 0;
+  for (int trial = 0; seeds_inside < 12 && trial < 400; ++trial) {
+    SCOPED_TRACE(trial);
+    Pslg g;
+    Point a{1 + 8 * rng.uniform(), 1 + 8 * rng.uniform()}, b{1 + 8 * rng.uniform(), 1 + 8 * rng.uniform()},
+        c{1 + 8 * rng.uniform(), 1 + 8 * rng.uniform()};
+    if (detail::orient2d(a, b, c) < 0) std::swap(b, c);
+    const Point mid{a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+    const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if (detail::orient2d(a, b, mid) <= 0 || twice_area < 8) continue;  // the seed in the hole, no sliver
+    ++seeds_inside;
+    g.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, a, b, c};
+    g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 4};
+    g.holes = {mid};
+    Quality q;
+    q.min_angle = 30;
+    q.max_area = 1;
+    mesh(g, q);
+  }
+  EXPECT_EQ(seeds_inside, 12);
 }
 
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {

@@ -76,9 +76,11 @@ class Output {
     temp_stem_ = stem_ + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
     temp_ = (dir_ / (temp_stem_ + detail::fs::path(path).extension().string())).string();
     // For a signal that ends the tool (temporaries.hpp): the file, the side files GDAL's drivers
-    // write beside it (a Shapefile's, a GeoPackage's journals, an .aux.xml), before any exists.
+    // write beside it (a Shapefile's, a GeoPackage's journals, GML's schema, an .aux.xml, HFA's
+    // .ige, FlatGeobuf's unsorted features), named before any exists.
     for (const char* side : {"", "-journal", "-wal", "-shm", ".aux.xml"}) names_.emplace_back(temp_ + side);
-    for (const char* ext : {".shx", ".dbf", ".prj", ".cpg"}) names_.emplace_back((dir_ / (temp_stem_ + ext)).string());
+    for (const char* ext : {".shx", ".dbf", ".prj", ".cpg", ".xsd", ".ige", "_temp.fgb"})
+      names_.emplace_back((dir_ / (temp_stem_ + ext)).string());
   }
   Output(const Output&) = delete;
   Output& operator=(const Output&) = delete;
@@ -261,7 +263,9 @@ void dem_out(const std::string& path, const char* name, const RasterGrid& g, dou
 
 }  // namespace ridt::io
 
-extern "C" const ridt::io::detail::GdalModule* ridt_gdal_module() {
+// The entry's name carries the GdalModule layout's version: a module built for another layout is
+// not found, rather than misread.
+extern "C" const ridt::io::detail::GdalModule* ridt_gdal_module_2() {
   static const ridt::io::detail::GdalModule module{ridt::io::points_in, ridt::io::tin_out, ridt::io::dem_out,
                                                    ridt::io::remove_temporaries};
   return &module;

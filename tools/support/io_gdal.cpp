@@ -60,12 +60,12 @@ Loaded load() {
       continue;
     }
     using Entry = const detail::GdalModule* (*)();
-    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module"))) {
+    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module_2"))) {
       const detail::GdalModule* module = entry();
       also_remove_temporaries(module->remove_temporaries);  // its files too, on a signal
       return {module, ""};
     }
-    why = place + " is not ridt's GDAL module";
+    why = place + " is not this version's GDAL module of ridt";
   }
   return {nullptr, why.empty() ? "ridt's GDAL module (libridt_gdal.so) is not installed" : why};
 #endif

@@ -26,13 +26,13 @@ namespace detail {
 struct TemporarySlot {
   // 0: free; 1: being written or cleared (not to be read); 2: holds a path.
   std::atomic<int> state{0};
-  char path[4096];
+  char path[4096] = {};
 };
 
 // At most this many temporary files at once (`ridt mesh` writes four side by side); past that
 // a file is still removed by its writer on every path but a signal.
 inline constexpr std::size_t kTemporarySlots = 64;
-inline std::array<TemporarySlot, kTemporarySlots> temporary_slots;
+inline constinit std::array<TemporarySlot, kTemporarySlots> temporary_slots{};  // in zeroed memory
 // Another list's remover (the GDAL module's), called by remove_temporaries().
 inline std::atomic<void (*)() noexcept> other_temporaries{nullptr};
 // Set while remove_temporaries() runs: a second signal, or the other list when it is this one
@@ -97,13 +97,21 @@ class TemporaryName {
 
 namespace detail {
 
+// Set by the first ending signal's handler: a second one, on another thread, waits for the first
+// to remove the files and end the process (the handlers block the others on their own thread).
+inline std::atomic<bool> ending{false};
+
 extern "C" inline void end_by_signal(int sig) {
+  if (ending.exchange(true))
+    for (;;) ::pause();
   remove_temporaries();
   ::signal(sig, SIG_DFL);
   ::raise(sig);  // ends the process as the signal would have: a shell sees 128 + sig
 }
 
 extern "C" inline void end_by_bus_error(int) {
+  if (ending.exchange(true))
+    for (;;) ::pause();
   remove_temporaries();
   (void)!::write(STDERR_FILENO, bus_error_text, std::strlen(bus_error_text));
   ::_exit(2);
@@ -121,6 +129,7 @@ inline void end_on_signals(const char* bus_error) {
   detail::bus_error_text = bus_error;
   struct sigaction end {};
   sigemptyset(&end.sa_mask);
+  for (const int sig : {SIGINT, SIGTERM, SIGHUP, SIGBUS}) sigaddset(&end.sa_mask, sig);
   end.sa_handler = detail::end_by_signal;
   for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
     struct sigaction before {};
