@@ -75,8 +75,9 @@ struct RasterGrid {
 
   /// The raster of cells `cell` wide over the box [x0, x1] x [y0, y1], its edges on multiples of
   /// `cell` (the box grown out to them; a box of zero width gets one cell). Throws InputError
-  /// for a cell that is not positive and finite, a box that is not finite or is inverted, or a
-  /// raster of more than 2^40 cells.
+  /// for a cell that is not positive and finite, a box that is not finite or is inverted, a
+  /// raster of more than 2^40 cells, or cells too small for their coordinates (within a few
+  /// units in the last place: the centres would not be distinct doubles).
   static RasterGrid around(double x0, double y0, double x1, double y1, double cell);
 };
 

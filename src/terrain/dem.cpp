@@ -46,6 +46,16 @@ std::pair<std::size_t, std::size_t> rows_within(const RasterGrid& g, double lo, 
           static_cast<std::size_t>(std::clamp(bottom, 0.0, last))};
 }
 
+// InputError unless the cells' centres are distinct doubles, in order: where a cell is no more
+// than a few units in the last place of the coordinates (a fine cell far from the origin), two
+// centres would round to one.
+void check_centres(const RasterGrid& g) {
+  const double far = std::max({std::fabs(g.x(0)), std::fabs(g.x(g.nx)), std::fabs(g.y(0)), std::fabs(g.y(g.ny))});
+  if (!(g.cell > 4 * (std::nextafter(far, HUGE_VAL) - far)))
+    throw InputError("raster: cells " + std::to_string(g.cell) + " wide are too small for coordinates as large as " +
+                     std::to_string(far) + " (their centres would not be distinct numbers); choose a larger cell");
+}
+
 }  // namespace
 
 RasterGrid RasterGrid::around(double x0, double y0, double x1, double y1, double cell) {
@@ -60,7 +70,9 @@ RasterGrid RasterGrid::around(double x0, double y0, double x1, double y1, double
   if (!(nx * ny <= kMaxCells))
     throw InputError("raster: " + std::to_string(nx) + " by " + std::to_string(ny) +
                      " cells is more than 2^40; choose a larger cell");
-  return {left, top, cell, static_cast<std::size_t>(nx), static_cast<std::size_t>(ny)};
+  const RasterGrid g{left, top, cell, static_cast<std::size_t>(nx), static_cast<std::size_t>(ny)};
+  check_centres(g);
+  return g;
 }
 
 Dem::Dem(std::span<const Point> points, const Triangulation& t, std::span<const double> z, const RasterGrid& grid,
@@ -74,6 +86,7 @@ Dem::Dem(std::span<const Point> points, const Triangulation& t, std::span<const 
     throw InputError("dem: " + std::to_string(z.size()) + " heights for " + std::to_string(points.size()) + " points");
   if (!(options.max_edge > 0)) throw InputError("dem: the largest edge must be positive");
   if (grid.nx == 0 || grid.ny == 0 || !(grid.cell > 0)) throw InputError("dem: an empty raster");
+  check_centres(grid);
   options_.threads = thread_count(options.threads);
   renumber(points, t.triangles, z);
   bucket();

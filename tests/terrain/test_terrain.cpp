@@ -62,6 +62,13 @@ TEST(RasterGrid, EdgesOnMultiplesOfTheCell) {
   EXPECT_THROW(RasterGrid::around(0, 0, 1, 1, std::nan("")), InputError);
   EXPECT_THROW(RasterGrid::around(1, 0, 0, 1, 1), InputError);
   EXPECT_THROW(RasterGrid::around(0, 0, 1e9, 1e9, 1e-3), InputError);
+  // Cells of a few units in the last place of their coordinates: centres that would coincide
+  // (the fuzzer's LAS file far from the origin), refused here and by a Dem given such a grid.
+  EXPECT_THROW(RasterGrid::around(1e16, 0, 1e16 + 64, 1, 1), InputError);  // an ulp there is 2
+  EXPECT_EQ(RasterGrid::around(1e15, 0, 1e15 + 64, 1, 1).nx, 64u);  // an ulp there is 1/8
+  const std::vector<Point> pts = {{1e16, 0}, {1e16 + 64, 0}, {1e16, 64}};
+  const RasterGrid fine{1e16, 64, 1, 64, 64};
+  EXPECT_THROW(Dem(pts, triangulate(pts), std::vector<double>{1, 2, 3}, fine), InputError);
 }
 
 // A DEM with a max_edge gives the same cells from the triangles in any order and stored from
