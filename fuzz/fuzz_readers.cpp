@@ -8,6 +8,7 @@
 // sanitizer report is a finding.
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -108,9 +109,31 @@ void validate(const io::Pslg& g, const ridt::ConstrainedTriangulation& t, const 
   if (!verdict.valid) finding("a mesh the validator rejects: " + verdict.message);
 }
 
+// The quality a .poly is meshed to, picked by a hash of its bytes (the same file, the same
+// mesh): no angle or 20 to 33 degrees, no area bound or a fiftieth or a five-hundredth of its
+// box's, points on the boundary or not (-Y), conforming or not (-D); its regions' own bounds.
+ridt::Quality quality_for(std::string_view data, const io::Pslg& g) {
+  std::uint64_t h = 1469598103934665603u;
+  for (const char c : data) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211u;
+  constexpr double kAngles[] = {0, 20, 25, 30, 33};
+  ridt::Quality q;
+  q.min_angle = kAngles[h % 5];
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  for (const Point& p : g.points)
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  const double box = (x1 - x0) * (y1 - y0), share = (h >> 3) % 3 == 0 ? 0 : (h >> 3) % 3 == 1 ? 50 : 500;
+  if (share > 0 && std::isfinite(box) && box > 0) q.max_area = box / share;
+  q.split_boundary = ((h >> 5) & 3) != 0;
+  q.conforming = ((h >> 7) & 3) == 0;
+  if (!q.enabled()) q.min_angle = 25;
+  q.max_steiner = 5000;
+  return q;
+}
+
 // A .poly: either IoError, or finite points and holes, segments between them, and then a
-// constrained triangulation (crossings split) and a quality mesh at 25 degrees (at most 5000
-// points added) that the exact validator accepts.
+// constrained triangulation (crossings split) and a quality mesh (quality_for: at most 5000
+// points added, its regions too) that the exact validator accepts, with the bounds asked where
+// points may go on the boundary.
 void graph(std::string_view data) {
   io::Pslg g;
   try {
@@ -135,11 +158,12 @@ void graph(std::string_view data) {
     const ridt::ConstrainedTriangulation carved = ridt::triangulate_constrained(g.points, g.segments, {}, domain);
     if (carved.size() > t.size()) finding("carving added triangles");
     validate(g, carved, domain, {});
-    ridt::Quality q;
-    q.min_angle = 25;
-    q.max_steiner = 5000;
+    const ridt::Quality q = quality_for(data, g);
+    for (const auto& [x, y, attribute, max_area] : g.regions) domain.regions.push_back({{x, y}, attribute, max_area});
     const ridt::ConstrainedTriangulation meshed = ridt::triangulate_constrained(g.points, g.segments, {}, domain, q);
-    if (meshed.steiner.size() < 5000 + meshed.crossings) validate(g, meshed, domain, q);
+    ridt::Quality asked = q;
+    if (!q.split_boundary) asked.min_angle = asked.max_area = 0;  // -Y: a bad triangle may have to stay
+    if (meshed.steiner.size() < 5000 + meshed.crossings && meshed.warning.empty()) validate(g, meshed, domain, asked);
   } catch (const ridt::InputError&) {}
 }
 

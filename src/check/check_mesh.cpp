@@ -130,8 +130,10 @@ void check_gaps(std::span<const Point> pts, std::span<const VertexId> tris, cons
   }
 }
 
-// Each input segment a-b a chain of segment edges: a search from a through added points near
-// the segment (within its box, grown by 10^-6 of its length) and input points exactly on it.
+// Each input segment a-b a chain of segment edges: a search from a through points near the
+// segment (within its box, grown by 10^-6 of its length): input points on its line up to a few
+// units in the last place (a crossing rounded onto one), added points up to the roundings that
+// splits of splits gather (2^-40 of the coordinates: a point on another segment is farther).
 void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
                   const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report) {
   const auto adj = adjacency(pts.size(), spec.edges);
@@ -161,12 +163,10 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       const Point& p = pts[v];
       if (v == b) return true;
       if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
-      if (v >= input || orient2d(pts[a], pts[b], p) == 0) return true;
-      // An input point within a few units in the last place of the line: a crossing that
-      // rounded onto it.
+      if (orient2d(pts[a], pts[b], p) == 0) return true;
       const double cross = (pts[b].x - pts[a].x) * (p.y - pts[a].y) - (pts[b].y - pts[a].y) * (p.x - pts[a].x);
       const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(pts[a].x), std::fabs(pts[a].y)});
-      return std::fabs(cross) <= 0x1p-50 * scale * length;
+      return std::fabs(cross) <= (v >= input ? 0x1p-40 : 0x1p-50) * scale * length;
     };
     const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
     std::vector<VertexId> todo{a};

@@ -156,15 +156,18 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
   const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
   if (refined) {
+    const auto first = static_cast<VertexId>(m.pts.size());
+    const std::vector<VertexId> pinched = detail::split_pinches(m);  // walks round a vertex see all
     detail::Refinement r{quality.min_angle,
                          std::ldexp(quality.max_area, 2 * scale),
                          {},
                          quality.split_boundary,
                          quality.max_steiner,
-                         static_cast<VertexId>(points.size() + out.crossings)};
+                         static_cast<VertexId>(points.size() + out.crossings + pinched.size())};
     for (const Region& g : domain.regions)
       r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
     if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
+    detail::merge_pinches(m, first, pinched);
   }
   collect(m, out, domain, points.size(), scale, carved || refined);
   if (options.canonical_order) canonical(out, options);

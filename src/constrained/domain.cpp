@@ -95,4 +95,42 @@ bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& r
   return removed;
 }
 
+std::vector<VertexId> split_pinches(Cdt& m) {
+  // A fan about a vertex on the boundary begins at the boundary edge that leaves it (v -> w, the
+  // fan's triangle on its left): count them.
+  const auto tail = [&m](std::uint32_t s) { return m.tris[s - s % 3 + (s % 3 + 1) % 3]; };
+  std::vector<std::uint32_t> fans(m.pts.size(), 0);
+  for (std::uint32_t s = 0; s < m.tris.size(); ++s)
+    if (m.nbrs[s] < 0) ++fans[tail(s)];
+  std::vector<VertexId> stands_for;
+  for (std::uint32_t s = 0; s < m.tris.size(); ++s) {
+    const VertexId v = tail(s);
+    if (m.nbrs[s] >= 0 || fans[v] < 2) continue;
+    --fans[v];  // the last fan found keeps v
+    const auto alias = static_cast<VertexId>(m.pts.size());
+    m.pts.push_back(m.pts[v]);
+    m.corner.push_back(s - s % 3 + (s % 3 + 1) % 3);
+    stands_for.push_back(v);
+    // Counter-clockwise about v from the leaving edge, across the edges that come into v.
+    for (std::int32_t t = static_cast<std::int32_t>(s / 3); t >= 0;) {
+      const int i = m.corner_of(static_cast<std::uint32_t>(t), v);
+      m.tris[3 * t + i] = alias;
+      t = m.nbrs[3 * t + (i + 1) % 3];
+    }
+  }
+  if (!stands_for.empty())
+    for (std::uint32_t k = 0; k < m.tris.size(); ++k) m.corner[m.tris[k]] = k;
+  return stands_for;
+}
+
+void merge_pinches(Cdt& m, VertexId first, const std::vector<VertexId>& stands_for) {
+  if (stands_for.empty()) return;
+  const auto count = static_cast<VertexId>(stands_for.size());
+  for (VertexId& v : m.tris)
+    if (v >= first) v = v < first + count ? stands_for[v - first] : v - count;
+  m.pts.erase(m.pts.begin() + first, m.pts.begin() + first + count);
+  m.corner.assign(m.pts.size(), Cdt::kNone);
+  for (std::uint32_t k = 0; k < m.tris.size(); ++k) m.corner[m.tris[k]] = k;
+}
+
 }  // namespace ridt::detail

@@ -15,4 +15,14 @@ namespace ridt::detail {
 /// Renumbers the triangles that stay in their order; returns whether any were removed.
 bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull);
 
+/// Where the domain touches itself at a vertex (two holes, or a hole and the outline, meeting
+/// at a corner), the triangles about it make fans that no edge joins, and a walk round it
+/// (Cdt::around) sees one. Each such fan but one is given a vertex of its own at the same point,
+/// added after m's points; returns, for each added vertex in turn, the vertex it stands for.
+std::vector<VertexId> split_pinches(Cdt& m);
+
+/// Undoes split_pinches, whose first added vertex was `first`: each one replaced in m's triangles
+/// by the vertex it stands for, the vertices after them numbered down, their points removed.
+void merge_pinches(Cdt& m, VertexId first, const std::vector<VertexId>& stands_for);
+
 }  // namespace ridt::detail

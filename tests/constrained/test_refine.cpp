@@ -286,6 +286,29 @@ TEST(Refine, BoundarySplitsStayInsideTheDomain) {
   EXPECT_EQ(seeds_inside, 12);
 }
 
+// A triangle (0, 0)-(10, 0)-(10, 10) and a square (4, 4)-(6, 6) whose corners (4, 4) and (6, 6)
+// lie on its diagonal. A hole in the square's lower half leaves its upper half, enclosed by
+// segments outside the triangle, touching the rest of the domain only at (4, 4) and (6, 6):
+// fans that no edge joins, each refined to the bounds (its points added at the corners' own
+// shells). A hole seed on the diagonal removes both halves: the diagonal then runs through the
+// hole, a gap its chain leaves, and the chain's added points are told from the square's.
+TEST(Refine, FansThatTouchOnlyAtAVertexAndSegmentsThroughHoles) {
+  Pslg g;
+  g.points = {{0, 0}, {10, 0}, {10, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  g.segments = {0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 6, 6, 3};
+  for (const Point seed : {Point{5, 4.5}, Point{5, 5}})
+    for (const double angle : {0.0, 20.0, 30.0}) {
+      SCOPED_TRACE(seed.y + angle);
+      g.holes = {seed};
+      Quality q;
+      q.min_angle = angle;
+      q.max_area = 0.2;
+      const Meshed m = mesh(g, q);
+      // The triangle's 50 less the lower half's 2, and the upper half's 2 where it stays.
+      EXPECT_NEAR(total_area(m), seed.y == 5 ? 48 : 50, 1e-9);
+    }
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
