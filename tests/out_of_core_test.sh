@@ -75,6 +75,23 @@ assert s["strips"] >= 8 and s["points"] == 200000, s
 assert s["loaded"] <= 4 * s["points"], s
 EOF
 
+# SIGTERM once the first part is written: the tool ends by that signal and leaves no part, no
+# temporary file and no index (the parts stand only together, named by the index).
+mkdir -p "$dir/term"
+"$ridt" triangulate "$dir/large.bin" -o "$dir/term/k.parts" --out-of-core --memory-limit 42M --threads 1 &
+term_pid=$!
+seen=0
+for _ in $(seq 2000); do
+  if compgen -G "$dir/term/k.0-of-*.bin" >/dev/null; then seen=1; break; fi
+  sleep 0.005
+done
+kill -TERM "$term_pid"
+wait "$term_pid"
+term_rc=$?
+[ "$seen" = 1 ] && pass || fail "SIGTERM: no part appeared"
+[ "$term_rc" = 143 ] && pass || fail "SIGTERM: exit $term_rc, wanted 143"
+[ -z "$(ls -A "$dir/term")" ] && pass || fail "SIGTERM left $(ls "$dir/term")"
+
 # The check of parts reads them in passes: damaged parts are refused (exit status 1), whether a
 # triangle is missing or a part is named twice.
 "$ridt" triangulate "$dir/large.bin" -o "$dir/d.parts" --out-of-core --memory-limit 42M --threads 1 >/dev/null

@@ -200,10 +200,13 @@ std::uint64_t write_part(const std::string& path, const Strip& s, const Triangul
   return count;
 }
 
-// The parts written so far, removed unless the whole run succeeds.
+// The parts written so far, removed unless the whole run succeeds (by a signal too, as
+// temporary files are: temporaries.hpp).
 struct Parts {
   std::vector<std::string> written;
+  std::vector<TemporaryName> names;
   bool done = false;
+  void add(const std::string& part) { written.push_back(part), names.emplace_back(part); }
   ~Parts() {
     if (done) return;
     for (const std::string& p : written) std::remove(p.c_str());
@@ -299,7 +302,7 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
     const std::string part = (out.parent_path() / name(k)).string();
     // Points all on one line (their hull has no corner but the two ends) have no triangle.
     st.triangles += cells.hull().size() < 3 ? write_part(part, s, {}) : run_strip(s, cells, checkers, o, part, st);
-    parts.written.push_back(part);
+    parts.add(part);
   }
   Writer index(options.output);
   index.put("ridt parts " + std::to_string(st.strips) + "\n");

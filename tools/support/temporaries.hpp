@@ -29,9 +29,10 @@ struct TemporarySlot {
   char path[4096] = {};
 };
 
-// At most this many temporary files at once (`ridt mesh` writes four side by side); past that
-// a file is still removed by its writer on every path but a signal.
-inline constexpr std::size_t kTemporarySlots = 64;
+// At most this many temporary files at once (`ridt mesh` writes four side by side, an
+// out-of-core run keeps its parts until its index is written); past that a file is still
+// removed by its writer on every path but a signal. Untouched slots cost no memory (zeroed).
+inline constexpr std::size_t kTemporarySlots = 1024;
 inline constinit std::array<TemporarySlot, kTemporarySlots> temporary_slots{};  // in zeroed memory
 // Another list's remover (the GDAL module's), called by remove_temporaries().
 inline std::atomic<void (*)() noexcept> other_temporaries{nullptr};
