@@ -12,9 +12,9 @@ cmake --build build --target ridt_tool
 mkdir -p build/demo
 build/ridt generate --dist uniform -n 1000000 --seed 1 -o build/demo/uniform.bin
 echo "== serial (walking, no DAG)"
-build/ridt triangulate build/demo/uniform.bin -o build/demo/uniform.ele --stats=table
+build/ridt triangulate build/demo/uniform.bin -o build/demo/uniform.ele --method serial --stats=table
 echo "== serial, the paper's history DAG"
-build/ridt triangulate build/demo/uniform.bin -o build/demo/uniform_dag.ele --locate dag --stats=table
+build/ridt triangulate build/demo/uniform.bin -o build/demo/uniform_dag.ele --method serial --locate dag --stats=table
 echo "== partition, 2 threads (no DAG, no lock)"
 build/ridt triangulate build/demo/uniform.bin -o build/demo/uniform_partition.ele \
   --method partition --threads 2 --stats=table
