@@ -57,6 +57,14 @@ struct Gap {
   std::size_t segment;
 };
 
+// Where p lies along a -> b, exactly: its coordinate on the axis a -> b moves most along (x
+// where it moves at least as much in x), signed so that it grows from a to b.
+double along_key(const Point& a, const Point& b, const Point& p) {
+  const bool by_x = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y);
+  const double from = by_x ? a.x : a.y, to = by_x ? b.x : b.y, at = by_x ? p.x : p.y;
+  return to >= from ? at : -at;
+}
+
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh:
 // the vertices near it with a segment edge, in their order along it, each joined to the next
 // by a segment edge or, across a gap (kept in `gaps`, for check_gaps), both on the boundary
@@ -65,10 +73,8 @@ template <class Near>
 bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
                  const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
   std::vector<std::pair<double, VertexId>> along;
-  const double dx = pts[b].x - pts[a].x, dy = pts[b].y - pts[a].y;
   for (VertexId v = 0; v < pts.size(); ++v)
-    if (v == a || v == b || (!adj[v].empty() && near(v)))
-      along.push_back({(pts[v].x - pts[a].x) * dx + (pts[v].y - pts[a].y) * dy, v});
+    if (v == a || v == b || (!adj[v].empty() && near(v))) along.push_back({along_key(pts[a], pts[b], pts[v]), v});
   std::sort(along.begin(), along.end());
   if (along.empty() || along.front().second != a || along.back().second != b) return false;
   for (std::size_t i = 0; i + 1 < along.size(); ++i) {
@@ -131,9 +137,10 @@ void check_gaps(std::span<const Point> pts, std::span<const VertexId> tris, cons
 }
 
 // Each input segment a-b a chain of segment edges: a search from a through points near the
-// segment (within its box, grown by 10^-6 of its length): input points on its line up to a few
-// units in the last place (a crossing rounded onto one), added points up to the roundings that
-// splits of splits gather (2^-40 of the coordinates: a point on another segment is farther).
+// segment (between its ends along it, within its box grown by 10^-6 of its length): input
+// points on its line up to a few units in the last place (a crossing rounded onto one), added
+// points up to the roundings that splits of splits gather (2^-40 of the coordinates: a point
+// on another segment is farther).
 void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
                   const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report) {
   const auto adj = adjacency(pts.size(), spec.edges);
@@ -159,10 +166,16 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
     const double grow = 1e-6 * length;
     const double x0 = std::min(pts[a].x, pts[b].x) - grow, x1 = std::max(pts[a].x, pts[b].x) + grow;
     const double y0 = std::min(pts[a].y, pts[b].y) - grow, y1 = std::max(pts[a].y, pts[b].y) + grow;
+    const double from = along_key(pts[a], pts[b], pts[a]), to = along_key(pts[a], pts[b], pts[b]);
     auto near = [&](VertexId v) {
       const Point& p = pts[v];
       if (v == b) return true;
       if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
+      // Between the ends along the segment, up to 2^-40 of each end's coordinate (a crossing
+      // rounded past an end): a point beside a very long segment's end, within that segment's
+      // rounding of its line, is not on it.
+      const double at = along_key(pts[a], pts[b], p);
+      if (!(at > from - 0x1p-40 * std::fabs(from) && at < to + 0x1p-40 * std::fabs(to))) return false;
       if (orient2d(pts[a], pts[b], p) == 0) return true;
       const double cross = (pts[b].x - pts[a].x) * (p.y - pts[a].y) - (pts[b].y - pts[a].y) * (p.x - pts[a].x);
       const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(pts[a].x), std::fabs(pts[a].y)});

@@ -306,5 +306,23 @@ TEST(Constrained, HoleSeedsOnAnEdgeOrAVertexEmptyEverySide) {
   EXPECT_EQ(holed(true, {{0, 0}, {5, 5}, {6, 7}}), 0u);
 }
 
+// A segment 1.9e20 long whose end (10, 10) lies beside a square (4, 4)-(6, 6): the square's
+// corners are within that segment's rounding of its line (2^-50 of 1.9e20 is 10^5 units), but
+// beyond its end, so check_mesh does not take them for points on it. The hole takes all but
+// the square, and the long segment runs through it whole.
+TEST(Constrained, ASquareBesideTheEndOfAVeryLongSegment) {
+  const std::vector<Point> pts = {{0, 0}, {1.9e20, 0}, {10, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 6, 6, 3};
+  Domain domain;
+  domain.convex_hull = false;
+  domain.holes = {{5, 2}};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+  EXPECT_EQ(t.size(), 2u);  // the square's halves
+  MeshSpec spec;
+  spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
+  const CheckResult verdict = check_mesh(pts, t.triangles, spec);
+  EXPECT_TRUE(verdict.valid) << verdict.message;
+}
+
 }  // namespace
 }  // namespace ridt::test
