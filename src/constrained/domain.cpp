@@ -105,7 +105,7 @@ std::vector<VertexId> split_pinches(Cdt& m) {
   std::vector<VertexId> stands_for;
   for (std::uint32_t s = 0; s < m.tris.size(); ++s) {
     const VertexId v = tail(s);
-    if (m.nbrs[s] >= 0 || fans[v] < 2) continue;
+    if (m.nbrs[s] >= 0 || v >= fans.size() || fans[v] < 2) continue;  // (a fan leaves its vertex once)
     --fans[v];  // the last fan found keeps v
     const auto alias = static_cast<VertexId>(m.pts.size());
     m.pts.push_back(m.pts[v]);
