@@ -3,6 +3,7 @@
 // angles and areas.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -65,23 +66,44 @@ double along_key(const Point& a, const Point& b, const Point& p) {
   return to >= from ? at : -at;
 }
 
-// A segment that runs through a hole or the exterior is a chain where it lies in the mesh:
-// the vertices near it with a segment edge, in their order along it, each joined to the next
-// by a segment edge or, across a gap (kept in `gaps`, for check_gaps), both on the boundary
-// (or in no triangle).
+// A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
+// followed from a: from each vertex by a segment edge to a point near the segment and ahead
+// along it, the nearest to its line where there are several (another segment's chain may run
+// within rounding of this one's, as two segments at a hair's angle do); where there is none,
+// across a gap to the next point near the segment ahead, both on the boundary (or in no
+// triangle), the gap kept for check_gaps.
 template <class Near>
 bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
                  const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
-  std::vector<std::pair<double, VertexId>> along;
+  constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
+  auto key = [&](VertexId v) { return along_key(pts[a], pts[b], pts[v]); };
+  auto off = [&](VertexId v) {
+    const Point &p = pts[v], &pa = pts[a], &pb = pts[b];
+    return std::fabs((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x));
+  };
+  auto better = [&](VertexId w, VertexId than) {  // ahead sooner, then nearer the line
+    return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
+  };
+  std::vector<std::pair<double, VertexId>> ahead;  // the points near the segment, by key
   for (VertexId v = 0; v < pts.size(); ++v)
-    if (v == a || v == b || (!adj[v].empty() && near(v))) along.push_back({along_key(pts[a], pts[b], pts[v]), v});
-  std::sort(along.begin(), along.end());
-  if (along.empty() || along.front().second != a || along.back().second != b) return false;
-  for (std::size_t i = 0; i + 1 < along.size(); ++i) {
-    const VertexId u = along[i].second, w = along[i + 1].second;
-    if (std::find(adj[u].begin(), adj[u].end(), w) != adj[u].end()) continue;
-    if (!(on_boundary[u] && on_boundary[w])) return false;  // (unused vertices count as on it)
-    gaps.push_back({u, w, segment});
+    if (v == b || (!adj[v].empty() && near(v))) ahead.push_back({key(v), v});
+  std::sort(ahead.begin(), ahead.end());
+  for (VertexId u = a; u != b;) {
+    VertexId next = kNone;
+    for (const VertexId w : adj[u])
+      if (key(w) > key(u) && near(w) &&
+          (next == kNone || off(w) < off(next) || (off(w) == off(next) && better(w, next))))
+        next = w;
+    if (next != kNone) {
+      u = next;
+      continue;
+    }
+    auto it = std::upper_bound(ahead.begin(), ahead.end(), std::pair{key(u), std::numeric_limits<VertexId>::max()});
+    for (auto other = it; other != ahead.end() && other->first == it->first; ++other)
+      if (better(other->second, next)) next = other->second;
+    if (next == kNone || !(on_boundary[u] && on_boundary[next])) return false;  // (unused vertices count as on it)
+    gaps.push_back({u, next, segment});
+    u = next;
   }
   return true;
 }
@@ -161,7 +183,7 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       continue;
     }
     const VertexId a = stand(spec.segments[s]), b = stand(spec.segments[s + 1]);
-    if (a == b) continue;
+    if (a == b || pts[a] == pts[b]) continue;  // (two equal points, both unused)
     const double length = std::max(std::fabs(pts[a].x - pts[b].x), std::fabs(pts[a].y - pts[b].y));
     const double grow = 1e-6 * length;
     const double x0 = std::min(pts[a].x, pts[b].x) - grow, x1 = std::max(pts[a].x, pts[b].x) + grow;

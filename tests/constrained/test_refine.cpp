@@ -311,6 +311,21 @@ TEST(Refine, FansThatTouchOnlyAtAVertexAndSegmentsThroughHoles) {
     }
 }
 
+// Two segments from (0, 2^63) at a hair's angle (10^-18 radians): refined to an area bound,
+// their chains' points lie within rounding of each other's lines, and at the same heights.
+// check_mesh follows each chain by its edges, the nearest to the line at each step, and across
+// the gap where the first segment runs on past (10, 10) outside the domain.
+TEST(Refine, ChainsOfTwoSegmentsAtAHairsAngle) {
+  Pslg g;
+  g.points = {{0, 0x1p63}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  g.holes = {{5, 5}};
+  Quality q;
+  q.max_area = 10 * 0x1p63 / 50;
+  const Meshed m = mesh(g, q);
+  EXPECT_GT(m.t.steiner.size(), 20u);
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
