@@ -74,7 +74,8 @@ double along_key(const Point& a, const Point& b, const Point& p) {
 // triangle), the gap kept for check_gaps.
 template <class Near>
 bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
-                 const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
+                 std::span<const std::pair<double, VertexId>> by_x, const std::vector<std::uint8_t>& on_boundary,
+                 Near near, std::size_t segment, std::vector<Gap>& gaps) {
   constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
   auto key = [&](VertexId v) { return along_key(pts[a], pts[b], pts[v]); };
   auto off = [&](VertexId v) {
@@ -84,9 +85,14 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
   auto better = [&](VertexId w, VertexId than) {  // ahead sooner, then nearer the line
     return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
   };
-  std::vector<std::pair<double, VertexId>> ahead;  // the points near the segment, by key
-  for (VertexId v = 0; v < pts.size(); ++v)
-    if (v == b || (!adj[v].empty() && near(v))) ahead.push_back({key(v), v});
+  // The points near the segment, by key: those with a segment edge within its x range (by_x:
+  // every such point, by x), so that a mesh with many segments in holes is checked in n log n.
+  std::vector<std::pair<double, VertexId>> ahead{{key(b), b}};
+  const double x0 = std::min(pts[a].x, pts[b].x), x1 = std::max(pts[a].x, pts[b].x);
+  const double grow = 1e-6 * std::max(x1 - x0, std::fabs(pts[a].y - pts[b].y));
+  for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0 - grow, VertexId{0}});
+       it != by_x.end() && it->first <= x1 + grow; ++it)
+    if (it->second != b && near(it->second)) ahead.push_back({key(it->second), it->second});
   std::sort(ahead.begin(), ahead.end());
   for (VertexId u = a; u != b;) {
     VertexId next = kNone;
@@ -101,6 +107,7 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
     auto it = std::upper_bound(ahead.begin(), ahead.end(), std::pair{key(u), std::numeric_limits<VertexId>::max()});
     for (auto other = it; other != ahead.end() && other->first == it->first; ++other)
       if (better(other->second, next)) next = other->second;
+    if (next == kNone) next = b;  // at b's place along the segment already (another end there)
     if (next == kNone || !(on_boundary[u] && on_boundary[next])) return false;  // (unused vertices count as on it)
     gaps.push_back({u, next, segment});
     u = next;
@@ -175,6 +182,10 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
     const auto it = vertex_at.find(bits(pts[v]));
     return used[v] || it == vertex_at.end() || !(pts[it->second] == pts[v]) ? v : it->second;
   };
+  std::vector<std::pair<double, VertexId>> by_x;  // the points with a segment edge, by x (across_gaps)
+  for (VertexId v = 0; v < pts.size(); ++v)
+    if (!adj[v].empty()) by_x.push_back({pts[v].x, v});
+  std::sort(by_x.begin(), by_x.end());
   std::vector<std::uint32_t> seen(pts.size(), 0);
   std::vector<Gap> gaps;
   for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) {
@@ -212,7 +223,7 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       for (const VertexId w : adj[v])
         if (seen[w] != stamp && near(w)) seen[w] = stamp, todo.push_back(w);
     }
-    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, on_boundary, near, s / 2, gaps))
+    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, by_x, on_boundary, near, s / 2, gaps))
       report.problem("segment ", s / 2, " (", spec.segments[s], "-", spec.segments[s + 1],
                      ") is not a chain of segment edges");
   }

@@ -173,7 +173,7 @@ bool Cdt::fits_on_edge(std::uint32_t t, int k, const Point& p) const {
   const Point &x = pts[at(t, k + 1)], &y = pts[at(t, k + 2)];
   if (orient2d(pts[at(t, k)], x, p) <= 0 || orient2d(pts[at(t, k)], p, y) <= 0) return false;
   const std::int32_t n = nbrs[3 * t + k];
-  if (n < 0) return true;
+  if (n < 0) return orient2d(x, y, p) >= 0;  // on the boundary: not beyond it
   const Point& d = pts[at(static_cast<std::uint32_t>(n), back(static_cast<std::uint32_t>(n), t))];
   return orient2d(d, y, p) > 0 && orient2d(d, p, x) > 0;
 }

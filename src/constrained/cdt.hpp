@@ -42,7 +42,8 @@ class Cdt {
   VertexId insert(const Point& p, const Place& at);
 
   /// Whether p, added on edge k of t as though it lay on it (a rounded point lies off its
-  /// segment by a rounding), leaves every triangle there counter-clockwise.
+  /// segment by a rounding), leaves every triangle there counter-clockwise; on the boundary,
+  /// whether also p is not beyond the edge (the domain never grows).
   bool fits_on_edge(std::uint32_t t, int k, const Point& p) const;
   /// p, or where it lies beyond edge k of t (on the side away from t, by a rounding) the
   /// nearest doubles toward t that do not: a point split off a boundary edge stays inside.
