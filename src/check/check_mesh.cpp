@@ -74,8 +74,8 @@ double along_key(const Point& a, const Point& b, const Point& p) {
 // triangle), the gap kept for check_gaps.
 template <class Near>
 bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
-                 std::span<const std::pair<double, VertexId>> by_x, const std::vector<std::uint8_t>& on_boundary,
-                 Near near, std::size_t segment, std::vector<Gap>& gaps) {
+                 std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
+                 const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
   constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
   auto key = [&](VertexId v) { return along_key(pts[a], pts[b], pts[v]); };
   auto off = [&](VertexId v) {
@@ -85,13 +85,11 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
   auto better = [&](VertexId w, VertexId than) {  // ahead sooner, then nearer the line
     return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
   };
-  // The points near the segment, by key: those with a segment edge within its x range (by_x:
-  // every such point, by x), so that a mesh with many segments in holes is checked in n log n.
+  // The points near the segment, by key: those with a segment edge within near's x range
+  // [x0, x1] (by_x: every such point, by x), so that many segments in holes cost n log n.
   std::vector<std::pair<double, VertexId>> ahead{{key(b), b}};
-  const double x0 = std::min(pts[a].x, pts[b].x), x1 = std::max(pts[a].x, pts[b].x);
-  const double grow = 1e-6 * std::max(x1 - x0, std::fabs(pts[a].y - pts[b].y));
-  for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0 - grow, VertexId{0}});
-       it != by_x.end() && it->first <= x1 + grow; ++it)
+  for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0, VertexId{0}});
+       it != by_x.end() && it->first <= x1; ++it)
     if (it->second != b && near(it->second)) ahead.push_back({key(it->second), it->second});
   std::sort(ahead.begin(), ahead.end());
   for (VertexId u = a; u != b;) {
@@ -223,7 +221,7 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       for (const VertexId w : adj[v])
         if (seen[w] != stamp && near(w)) seen[w] = stamp, todo.push_back(w);
     }
-    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, by_x, on_boundary, near, s / 2, gaps))
+    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, by_x, x0, x1, on_boundary, near, s / 2, gaps))
       report.problem("segment ", s / 2, " (", spec.segments[s], "-", spec.segments[s + 1],
                      ") is not a chain of segment edges");
   }

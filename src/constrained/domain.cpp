@@ -2,33 +2,39 @@
 #include "constrained/domain.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace ridt::detail {
 namespace {
 
-// The triangle that holds q (inside or on its boundary), or -1; `from` (a hint) moves to it.
-std::int64_t holding(const Cdt& m, const Point& q, std::uint32_t& from) {
-  if (m.size() == 0) return -1;
+// Where q lies (inside a triangle, on an edge or at a corner), or nothing where no triangle
+// holds it; `from` (a hint) moves to its triangle.
+std::optional<Cdt::Place> place(const Cdt& m, const Point& q, std::uint32_t& from) {
+  if (m.size() == 0) return std::nullopt;
   const Cdt::Place at = m.find(std::min<std::uint32_t>(from, static_cast<std::uint32_t>(m.size() - 1)), q);
-  if (at.kind == Cdt::Place::Outside) return -1;
+  if (at.kind == Cdt::Place::Outside) return std::nullopt;
   from = at.t;
-  return at.t;
+  return at;
+}
+
+// The triangle that holds q (inside or on its boundary), or -1.
+std::int64_t holding(const Cdt& m, const Point& q, std::uint32_t& from) {
+  const std::optional<Cdt::Place> at = place(m, q, from);
+  return at ? std::int64_t{at->t} : -1;
 }
 
 // The triangles whose closure holds q: one, or two beside an edge, or every one about a vertex
 // (a hole's seed there empties them all: the validator finds no seed inside or on a triangle).
 std::vector<std::uint32_t> holding_all(const Cdt& m, const Point& q, std::uint32_t& from) {
   std::vector<std::uint32_t> out;
-  if (m.size() == 0) return out;
-  const Cdt::Place at = m.find(std::min<std::uint32_t>(from, static_cast<std::uint32_t>(m.size() - 1)), q);
-  if (at.kind == Cdt::Place::Outside) return out;
-  from = at.t;
-  if (at.kind == Cdt::Place::Corner) {
-    m.around(m.at(at.t, at.k), [&](std::uint32_t t) { return out.push_back(t), false; });
+  const std::optional<Cdt::Place> at = place(m, q, from);
+  if (!at) return out;
+  if (at->kind == Cdt::Place::Corner) {
+    m.around(m.at(at->t, at->k), [&](std::uint32_t t) { return out.push_back(t), false; });
     return out;
   }
-  out.push_back(at.t);
-  if (const std::int32_t n = m.nbrs[3 * at.t + at.k]; at.kind == Cdt::Place::Edge && n >= 0)
+  out.push_back(at->t);
+  if (const std::int32_t n = m.nbrs[3 * at->t + at->k]; at->kind == Cdt::Place::Edge && n >= 0)
     out.push_back(static_cast<std::uint32_t>(n));
   return out;
 }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io.hpp"
+#include "tools/scratch_dir.hpp"
 
 namespace ridt::io {
 namespace {
@@ -26,12 +27,7 @@ namespace fs = std::filesystem;
 
 class IoTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("ridt_io_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::fresh_test_dir("ridt_io"); }
   void TearDown() override {
     std::error_code ec;
     fs::remove_all(dir_, ec);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "temporaries.hpp"
+#include "tools/scratch_dir.hpp"
 #include "writer.hpp"
 
 namespace ridt::io {
@@ -25,12 +26,7 @@ namespace fs = std::filesystem;
 
 class Temporaries : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("ridt_temporaries_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::fresh_test_dir("ridt_temporaries"); }
   void TearDown() override {
     std::error_code ec;
     fs::remove_all(dir_, ec);

@@ -16,6 +16,7 @@
 #include "las_writer.hpp"
 #include "ridt/terrain.hpp"
 #include "terrain_io.hpp"
+#include "tools/scratch_dir.hpp"
 
 namespace ridt::io {
 namespace {
@@ -29,11 +30,7 @@ class TerrainIo : public ::testing::Test {
  protected:
   void SetUp() override {
     GDALAllRegister();
-    dir_ = fs::temp_directory_path() /
-        ("ridt_terrain_" + std::to_string(::getpid()) + "_" +
-         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = test::fresh_test_dir("ridt_terrain");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
