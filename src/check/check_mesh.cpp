@@ -291,7 +291,8 @@ struct Shape {
 
 // Angles and areas: a triangle below the angle is excused where one of its vertices lies on a
 // chain of segment edges that ends at an input angle below 60 degrees (refinement stops short
-// of those, as its concentric shells reach them).
+// of those, as its concentric shells reach them), or where its shortest edge is below 2^-40 of
+// the points' extent (refinement splits no edge that short).
 Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
                   const Chains& chains, Report& report) {
   Shape shape;
@@ -301,6 +302,16 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
     for (const std::uint32_t k : chains.on[v])
       if (chains.small[chains.ends[k].first] || chains.small[chains.ends[k].second]) return true;
     return false;
+  };
+  constexpr long double kFar = std::numeric_limits<long double>::infinity();
+  long double x0 = kFar, y0 = kFar, x1 = -kFar, y1 = -kFar;
+  for (const Point& p : pts)
+    x0 = std::min<long double>(x0, p.x), x1 = std::max<long double>(x1, p.x), y0 = std::min<long double>(y0, p.y),
+    y1 = std::max<long double>(y1, p.y);
+  const long double tiny2 = ((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)) * 0x1p-80L;
+  auto length2 = [&](VertexId a, VertexId b) {
+    const long double dx = pts[a].x - (long double)pts[b].x, dy = pts[a].y - (long double)pts[b].y;
+    return dx * dx + dy * dy;
   };
   for (std::size_t t = 0; t < tris.size() / 3; ++t) {
     const VertexId* v = &tris[3 * t];
@@ -320,7 +331,8 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
     if (spec.max_area > 0 && area > spec.max_area * (1 + 1e-9L))
       report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec.max_area);
     if (spec.min_angle > 0 && worst < spec.min_angle * (1 - 1e-9L)) {
-      if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]))
+      const long double shortest = std::min({length2(v[0], v[1]), length2(v[1], v[2]), length2(v[2], v[0])});
+      if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2)
         ++shape.excused;
       else
         report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",
@@ -375,7 +387,8 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
     << " edges, every other edge locally Delaunay; smallest angle " << static_cast<double>(shape.smallest)
     << " degrees";
   if (shape.excused > 0)
-    s << " (" << shape.excused << " triangles below " << spec.min_angle << " beside small input angles)";
+    s << " (" << shape.excused << " triangles below " << spec.min_angle
+      << " beside small input angles or with an edge below 2^-40 of the extent)";
   s << ", largest area " << static_cast<double>(shape.largest_area);
   return report.result(s.str());
 }

@@ -162,6 +162,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
                          std::ldexp(quality.max_area, 2 * scale),
                          {},
                          quality.split_boundary,
+                         quality.conforming,
                          quality.max_steiner,
                          static_cast<VertexId>(points.size() + out.crossings + pinched.size())};
     for (const Region& g : domain.regions)

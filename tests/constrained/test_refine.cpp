@@ -253,8 +253,9 @@ TEST(Refine, RegionsStayOnTheirSideWhereSplitsMissTheSegment) {
       for (int i = 0; i < 3; ++i) {
         const std::int32_t n = m.t.neighbors[3 * k + i];
         const VertexId u = m.t.triangles[3 * k + (i + 1) % 3], v = m.t.triangles[3 * k + (i + 2) % 3];
-        if (n >= 0 && !segment.count({std::min(u, v), std::max(u, v)}))
+        if (n >= 0 && !segment.count({std::min(u, v), std::max(u, v)})) {
           ASSERT_EQ(m.t.attributes[k], m.t.attributes[static_cast<std::size_t>(n)]) << "triangle " << k;
+        }
       }
   }
 }
@@ -324,6 +325,47 @@ TEST(Refine, ChainsOfTwoSegmentsAtAHairsAngle) {
   q.max_area = 10 * 0x1p63 / 50;
   const Meshed m = mesh(g, q);
   EXPECT_GT(m.t.steiner.size(), 20u);
+  // With an angle bound: the needle's triangles, 10 wide and 2^63 long, keep their angles of
+  // 10^-16 degrees (their short edges are below 2^-40 of the extent), and check_mesh says so.
+  q.min_angle = 25;
+  const Meshed needle = mesh(g, q);
+  EXPECT_GT(needle.t.steiner.size(), 20u);
+}
+
+// Two segments from one corner at 10^-3 to 10^-12 radians, of unequal lengths, and two side by
+// side 10^-6 apart with their ends offset, in a box: an area bound alone needs no point in the
+// gap between them, and an angle bound leaves the thin wedge's triangles as they are (a ladder
+// across it) rather than cut the segments down to the gap (the runs stop at max_steiner where
+// they would).
+TEST(Refine, SegmentsCloseTogetherAreNotCutDownToTheGap) {
+  auto box = [](std::vector<Point> pts) {
+    Pslg g;
+    g.points = {{-5, -5}, {15, 5}};
+    for (const Point& p : pts) g.points.push_back(p);
+    g.segments = {2, 3, 4, 5};
+    return g;
+  };
+  std::vector<Pslg> graphs;
+  for (const double angle : {1e-3, 1e-7, 1e-12})
+    graphs.push_back(box({{0, 0}, {10, 0}, {0, 0}, {12.7 * std::cos(angle), 12.7 * std::sin(angle)}}));
+  graphs.push_back(box({{0, 0}, {10, 0}, {0.3, 1e-6}, {10.7, 1e-6}}));
+  for (std::size_t k = 0; k < graphs.size(); ++k) {
+    SCOPED_TRACE(k);
+    Quality area;
+    area.max_area = 1;
+    area.max_steiner = 100000;
+    const Meshed a = mesh(graphs[k], area, true);
+    EXPECT_EQ(a.t.warning, "");
+    EXPECT_LT(a.t.steiner.size(), 200u);
+    if (k == 3) continue;  // side by side, an angle bound needs the gap's size all along
+    for (const double degrees : {20.0, 30.0}) {
+      Quality q;
+      q.min_angle = degrees;
+      q.max_steiner = 500000;
+      const Meshed m = mesh(graphs[k], q, true);
+      EXPECT_EQ(m.t.warning, "") << degrees;
+    }
+  }
 }
 
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {

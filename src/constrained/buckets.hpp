@@ -1,0 +1,76 @@
+// The queue of bad triangles of refinement (constrained/refine.cpp).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace ridt::detail {
+
+// A priority queue of items with a `key` (smaller first), in buckets of a quarter octave of
+// it, last in first out within one: the order refinement needs within a few per cent, without a
+// heap's misses. A bucket is put in order along the Hilbert curve (by `where`, in 1024 stretches)
+// when the queue comes to it and more than a few of its items came since: then one pop's triangle
+// lies near the last one's in the plane, and the slots they free and take, near in memory.
+template <class Item>
+class Buckets {
+ public:
+  bool empty() const { return size_ == 0; }
+  void push(const Item& item) {
+    const std::size_t b = bucket(item.key);
+    if (b >= lists_.size()) lists_.resize(b + 1), ordered_.resize(b + 1, 0);
+    lists_[b].push_back(item);
+    lowest_ = std::min(lowest_, b);
+    ++size_;
+  }
+  Item pop() {
+    while (lists_[lowest_].empty()) ++lowest_;
+    if (lowest_ != current_ && lists_[lowest_].size() > ordered_[lowest_] + 64) along_curve(lowest_);
+    current_ = lowest_;
+    std::vector<Item>& l = lists_[lowest_];
+    const Item item = l.back();
+    l.pop_back();
+    ordered_[lowest_] = std::min(ordered_[lowest_], l.size());
+    --size_;
+    return item;
+  }
+  // The item that would come k pops after the next, in the lowest bucket, or null.
+  const Item* ahead(std::size_t k) const {
+    if (size_ == 0 || lowest_ >= lists_.size()) return nullptr;
+    const std::vector<Item>& l = lists_[lowest_];
+    return l.size() > k ? &l[l.size() - 1 - k] : nullptr;
+  }
+
+ private:
+  // Negative keys first (the most negative first), then the rest, each by quarter octaves.
+  static std::size_t bucket(double key) {
+    constexpr int kSpan = 4 * 2200;  // quarter octaves of every double's exponent
+    int e = 0;
+    const double f = std::frexp(std::fabs(key), &e);  // |key| = f 2^e, f in [0.5, 1)
+    const int quarter = 4 * (e + 1100) + static_cast<int>((f - 0.5) * 8);  // f's quarters of [0.5, 1)
+    const int q = std::clamp(quarter, 0, kSpan - 1);
+    return static_cast<std::size_t>(key < 0 ? kSpan - 1 - q : kSpan + q);
+  }
+
+  // Bucket b's items sorted by the first bits of `where` (a counting sort: stable, linear).
+  void along_curve(std::size_t b) {
+    std::vector<Item>& l = lists_[b];
+    constexpr int kBits = 10;
+    std::vector<std::uint32_t> at((1u << kBits) + 1, 0);
+    for (const Item& i : l) ++at[(i.where >> (32 - kBits)) + 1];
+    std::partial_sum(at.begin(), at.end(), at.begin());
+    std::vector<Item> sorted(l.size());
+    for (const Item& i : l) sorted[at[i.where >> (32 - kBits)]++] = i;
+    l.swap(sorted);
+    ordered_[b] = l.size();
+  }
+
+  std::vector<std::vector<Item>> lists_;
+  std::vector<std::size_t> ordered_;  // per bucket: how many of its first items are in curve order
+  std::size_t lowest_ = std::numeric_limits<std::size_t>::max(), current_ = lowest_, size_ = 0;
+};
+
+}  // namespace ridt::detail

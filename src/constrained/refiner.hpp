@@ -1,0 +1,341 @@
+// The refiner of constrained/refine.cpp: its state and its small steps. Its steps near small
+// input angles are in constrained/small_angles.cpp.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "constrained/buckets.hpp"
+#include "constrained/cdt.hpp"
+#include "constrained/refine.hpp"
+#include "order/order.hpp"
+#include "predicates/predicates.hpp"
+#include "queries/circumcentre.hpp"
+#include "runtime/memory.hpp"
+
+namespace ridt::detail::refining {
+
+inline double dot(const Point& a, const Point& b, const Point& p) {
+  return (a.x - p.x) * (b.x - p.x) + (a.y - p.y) * (b.y - p.y);
+}
+inline double dist2(const Point& a, const Point& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
+
+inline constexpr double kGood = std::numeric_limits<double>::infinity();
+
+class Refiner {
+ public:
+  Refiner(Cdt& m, const Refinement& r) : m_(m), r_(r) {
+    const double s = std::sin(r.min_angle * 3.14159265358979323846 / 180);
+    sin2_ = s * s;
+    // The off-centre 5 % nearer the edge than where the new triangle's angle would be the
+    // bound exactly: then it is not bad again by a rounding (23 % fewer points on a coastline of 10^4 vertices).
+    half_bound_ = r.min_angle * 3.14159265358979323846 / 360;
+    offset_ = r.min_angle > 0 ? 0.475 / std::tan(r.min_angle * 3.14159265358979323846 / 360) : 0;
+    box_ = extent_of(m.pts);
+    tiny2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1}) * 0x1p-80;  // edges below 2^-40 of the diagonal stay
+    cells_ = 65535 / std::max(box_.x1 - box_.x0, box_.y1 - box_.y0);  // infinite for one point: see curve()
+    ends_.assign(m.pts.size(), {Cdt::kNone, Cdt::kNone});
+  }
+
+  std::string run() {
+    for (std::uint32_t s = 0; s < m_.tris.size(); ++s)
+      if (m_.nbrs[s] < 0) m_.fixed[s] = 1;
+    for (std::uint32_t s = 0; s < m_.tris.size(); ++s)
+      if (m_.fixed[s] && encroached(s)) queue_split(s, false);
+    find_small_angles();
+    for (std::uint32_t t = 0; t < m_.size(); ++t) queue_bad(t);
+    const std::size_t first = m_.pts.size();
+    // Each point added costs some 160 bytes (two triangles, the point, queue entries): stop
+    // before the memory the system has left runs out, rather than be killed for it.
+    const std::size_t room = available_memory() / 160 * 3 / 4;
+    while (true) {
+      if (r_.max_steiner > 0 && m_.pts.size() - first >= r_.max_steiner)
+        return "quality refinement stopped after " + std::to_string(r_.max_steiner) + " points (the limit asked)";
+      if (room > 0 && m_.pts.size() - first >= room)
+        return "quality refinement stopped after " + std::to_string(room) + " points: the memory left holds no more";
+      if (!segments_.empty()) {
+        const Split w = segments_.back();
+        segments_.pop_back();
+        const std::uint32_t s = m_.find_edge(w.x, w.y);
+        if (s != Cdt::kNone && m_.fixed[s] && (w.forced || encroached(s))) split(s);
+        continue;
+      }
+      if (bad_.empty()) return "";
+      const Bad b = bad_.pop();
+      prefetch_ahead();
+      // A triangle still there has the vertices, so the badness, it was queued with.
+      if (alive(b)) improve(b);
+    }
+  }
+
+ private:
+  struct Split {
+    VertexId x, y;
+    bool forced;  // split even where no vertex encroaches it (a point to be added would)
+  };
+  void queue_split(std::uint32_t s, bool forced) {
+    segments_.push_back({m_.at(s / 3, static_cast<int>(s % 3) + 1), m_.at(s / 3, static_cast<int>(s % 3) + 2), forced});
+  }
+
+  // Most queued triangles are gone by their turn (four in five on a coastline), and those
+  // still there, with their neighbours, lie anywhere in memory: what the next pops will read is
+  // asked for in stages, each reading only what the stage before asked for some pops earlier.
+  // Eight pops ahead a triangle's vertices (to tell whether it is still there); four ahead,
+  // where it is, its points and neighbours; two ahead its neighbours' vertices.
+  void prefetch_ahead() const {
+    auto still_there = [&](std::size_t ahead) {
+      const Bad* b = bad_.ahead(ahead);
+      return b != nullptr && alive(*b) ? b : nullptr;
+    };
+    if (const Bad* b = bad_.ahead(8)) __builtin_prefetch(&m_.tris[3 * std::size_t{b->t}]);
+    if (const Bad* b = still_there(4)) {
+      for (const VertexId v : b->v) __builtin_prefetch(&m_.pts[v]);
+      __builtin_prefetch(&m_.nbrs[3 * std::size_t{b->t}]);
+    }
+    if (const Bad* b = still_there(2))
+      for (int k = 0; k < 3; ++k)
+        if (const std::int32_t n = m_.nbrs[3 * std::size_t{b->t} + k]; n >= 0)
+          __builtin_prefetch(&m_.tris[3 * static_cast<std::size_t>(n)]);
+  }
+
+  struct Bad {
+    double key;  // badness(t), the smaller first
+    std::uint32_t t;
+    VertexId v[3];
+    int tries;
+    std::uint32_t where;  // the Hilbert key of t's first vertex
+  };
+
+  bool corner(VertexId v) const { return v < r_.corners; }
+  bool boundary(std::uint32_t s) const { return m_.nbrs[s] < 0; }
+  bool alive(const Bad& b) const {
+    return b.t < m_.size() && m_.tris[3 * b.t] == b.v[0] && m_.tris[3 * b.t + 1] == b.v[1] &&
+        m_.tris[3 * b.t + 2] == b.v[2];
+  }
+  void queue_bad(std::uint32_t t) {
+    if (const double key = badness(t); key != kGood)
+      bad_.push({key, t, {m_.tris[3 * t], m_.tris[3 * t + 1], m_.tris[3 * t + 2]}, 0, curve(m_.pts[m_.tris[3 * t]])});
+  }
+
+  // The subsegment in slot s has a vertex strictly inside its diametral circle: the apex of its
+  // triangle or of the one across. A point added on another subsegment counts only for a
+  // conforming triangulation: two segments near each other (at a small angle, or side by side)
+  // would split each other down to the gap between them, where the bounds need no such thing
+  // (an angle bound splits them through their triangles' off-centres where it must).
+  bool encroached(std::uint32_t s) const {
+    const std::uint32_t t = s / 3;
+    const int k = static_cast<int>(s % 3);
+    const Point &a = m_.pts[m_.at(t, k + 1)], &b = m_.pts[m_.at(t, k + 2)];
+    auto inside = [&](VertexId v) {
+      return (r_.conforming || corner(v) || ends_[v].first == Cdt::kNone) && dot(a, b, m_.pts[v]) < 0;
+    };
+    if (inside(m_.at(t, k))) return true;
+    const std::int32_t n = m_.nbrs[s];
+    return n >= 0 && inside(m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t)));
+  }
+
+  // The corners at the ends of the chain of subsegments that subsegment x-y lies on.
+  std::pair<VertexId, VertexId> chain(VertexId x, VertexId y) const {
+    return corner(x) && corner(y) ? std::pair{x, y} : corner(x) ? ends_[y] : ends_[x];
+  }
+
+  // The corner across from triangle t's shortest edge, given its squared sides l (across from
+  // corners 0, 1, 2).
+  static int shortest(const double (&l)[3]) { return l[0] <= l[1] && l[0] <= l[2] ? 0 : l[1] <= l[2] ? 1 : 2; }
+
+  // The corners at the ends of the chain a vertex on one lies on, the smaller first.
+  std::pair<VertexId, VertexId> chain_of(VertexId v) const {
+    return {std::min(ends_[v].first, ends_[v].second), std::max(ends_[v].first, ends_[v].second)};
+  }
+
+  // The corner below 60 degrees where the chains of u and w (two of them) meet, or kNone.
+  VertexId apex(VertexId u, VertexId w) const {
+    if (corner(u) || corner(w) || ends_[u].first == Cdt::kNone || ends_[w].first == Cdt::kNone) return Cdt::kNone;
+    const auto [u1, u2] = ends_[u];
+    const auto [w1, w2] = ends_[w];
+    if ((u1 == w1 && u2 == w2) || (u1 == w2 && u2 == w1)) return Cdt::kNone;  // one chain
+    for (const VertexId z : {u1, u2})
+      if (small_[z] && (z == w1 || z == w2)) return z;
+    return Cdt::kNone;
+  }
+
+  // apex(u, w) where the chains make an angle below half the angle bound there: a wedge so
+  // thin that mending its triangles would cut the chains down to the gap between them.
+  VertexId thin_apex(VertexId u, VertexId w) const {
+    const VertexId z = apex(u, w);
+    if (z == Cdt::kNone) return z;
+    const Point &o = m_.pts[z], &pu = m_.pts[u], &pw = m_.pts[w];
+    const double ux = pu.x - o.x, uy = pu.y - o.y, wx = pw.x - o.x, wy = pw.y - o.y;
+    return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) < half_bound_ ? z : Cdt::kNone;
+  }
+
+  // Edge u-w is seditious (Shewchuk's word): u and w lie on two chains that meet at a corner z
+  // below 60 degrees, at one distance from z. A triangle whose shortest edge it is gets its
+  // small angle from the input's where it is z-u-w, or where its point would split one of the
+  // two chains; splitting it would only cut the shells finer.
+  bool seditious(VertexId u, VertexId w) const {
+    const VertexId z = apex(u, w);
+    if (z == Cdt::kNone) return false;
+    const double du = dist2(m_.pts[z], m_.pts[u]), dw = dist2(m_.pts[z], m_.pts[w]);
+    return std::fabs(du - dw) <= 1e-6 * std::max(du, dw);
+  }
+  bool at_apex(VertexId u, VertexId w, VertexId third) const { return third == apex(u, w) && seditious(u, w); }
+
+  double area_bound(std::uint32_t t) const {
+    double bound = r_.max_area;
+    if (!m_.region.empty() && m_.region[t] >= 0) {
+      const double own = r_.region_area[static_cast<std::size_t>(m_.region[t])];
+      if (own > 0) bound = bound > 0 ? std::min(bound, own) : own;
+    }
+    return bound;
+  }
+
+  // Where triangle t stands in the queue of bad triangles, kGood where it is good: one too large
+  // (whatever its angles) by minus its area over its bound (the largest first), one with a small
+  // angle by its shortest edge's squared length (the smallest first: the sizes then grade out
+  // from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex coastline).
+  double badness(std::uint32_t t) const {
+    const VertexId v[3] = {m_.tris[3 * t], m_.tris[3 * t + 1], m_.tris[3 * t + 2]};
+    const Point &a = m_.pts[v[0]], &b = m_.pts[v[1]], &c = m_.pts[v[2]];
+    const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    // First: the terminator (improve) may leave a small angle, never an area above its bound.
+    if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) return -twice / (2 * bound);
+    if (sin2_ > 0) {
+      const double l[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};  // across from corner 0, 1, 2
+      const int s = shortest(l);
+      const double sine2 = twice * twice / (l[(s + 1) % 3] * l[(s + 2) % 3]);
+      if (l[s] >= tiny2_ && sine2 < sin2_ && !at_apex(v[(s + 1) % 3], v[(s + 2) % 3], v[s])) return l[s];
+    }
+    return kGood;
+  }
+
+  // Where triangle t gets its point: the off-centre of its shortest edge.
+  Point off_centre(std::uint32_t t) const {
+    const Point &a = m_.pts[m_.tris[3 * t]], &b = m_.pts[m_.tris[3 * t + 1]], &c = m_.pts[m_.tris[3 * t + 2]];
+    const Point cc = circumcentre(a, b, c);
+    if (offset_ == 0) return cc;
+    const double l[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};
+    const int s = shortest(l);
+    const Point &p = m_.pts[m_.at(t, s + 1)], &q = m_.pts[m_.at(t, s + 2)];
+    const Point mid{(p.x + q.x) / 2, (p.y + q.y) / 2};
+    const double reach = offset_ * std::sqrt(l[s]), far = std::sqrt(dist2(cc, mid));
+    if (!(far > reach)) return cc;
+    const double f = reach / far;
+    return {mid.x + (cc.x - mid.x) * f, mid.y + (cc.y - mid.y) * f};
+  }
+
+  // The fixed edges that p, added in `at`, would see strictly inside their diametral circles:
+  // those bounding the triangles whose circles hold p, flooded from `at` without crossing a
+  // fixed edge.
+  std::vector<std::uint32_t>& would_encroach(const Point& p, const Cdt::Place& at) {
+    std::vector<std::uint32_t>&todo = todo_, &seen = seen_, &out = hit_;
+    todo.assign(1, at.t), seen.assign(1, at.t), out.clear();
+    if (at.kind == Cdt::Place::Edge && !m_.fixed[3 * at.t + at.k] && m_.nbrs[3 * at.t + at.k] >= 0)
+      todo.push_back(static_cast<std::uint32_t>(m_.nbrs[3 * at.t + at.k])), seen.push_back(todo.back());
+    while (!todo.empty()) {
+      const std::uint32_t t = todo.back();
+      todo.pop_back();
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t s = 3 * t + k;
+        if (m_.fixed[s]) {
+          if (dot(m_.pts[m_.at(t, k + 1)], m_.pts[m_.at(t, k + 2)], p) < 0) out.push_back(s);
+          continue;
+        }
+        const auto n = static_cast<std::uint32_t>(m_.nbrs[s]);
+        if (std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
+        const VertexId* v = &m_.tris[3 * n];
+        if (incircle(m_.pts[v[0]], m_.pts[v[1]], m_.pts[v[2]], p) <= 0) {
+          __builtin_prefetch(&m_.nbrs[3 * std::size_t{n}]);  // on the rim: the fan links back to it
+          continue;
+        }
+        seen.push_back(n), todo.push_back(n);
+      }
+    }
+    return out;
+  }
+
+  bool splittable(std::uint32_t s) const {
+    if (!r_.split_boundary && boundary(s)) return false;
+    const std::uint32_t t = s / 3;
+    const int k = static_cast<int>(s % 3);
+    return dist2(m_.pts[m_.at(t, k + 1)], m_.pts[m_.at(t, k + 2)]) >= 4 * tiny2_;
+  }
+
+  void improve(const Bad& b) {
+    const Point p = off_centre(b.t);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    const Cdt::Place at = m_.locate(b.t, p, true);
+    if (at.kind == Cdt::Place::Corner) return;
+    // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
+    if (at.kind == Cdt::Place::Edge && m_.fixed[3 * at.t + at.k] && !splittable(3 * at.t + at.k)) return;
+    const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
+    if (blocked) hit_.assign(1, 3 * at.t + at.k);
+    std::vector<std::uint32_t>& hit = blocked ? hit_ : would_encroach(p, at);
+    std::erase_if(hit, [&](std::uint32_t s) { return !splittable(s); });
+    for (const std::uint32_t s : hit)
+      if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
+    if (blocked || !hit.empty()) {
+      if (b.key >= 0 && wedged(b.t, hit)) return;
+      if (hit.empty() || b.tries >= 64) return;
+      for (const std::uint32_t s : hit) queue_split(s, true);
+      bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
+      return;
+    }
+    // The triangles whose circles hold p are known (would_encroach's): replaced by a fan
+    // about p where they make a cavity p sees whole, else p added with flips.
+    const VertexId v = m_.insert_cavity(p, seen_);
+    added(v != Cdt::kNone ? v : m_.insert(p, at));
+  }
+
+  // Where subsegment x-y is split: at the power of two nearest half its length from its
+  // corner where one end is a corner, or, both ends corners, the one at a small angle; else
+  // at its midpoint.
+  Point split_point(VertexId x, VertexId y) const {
+    const Point &a = m_.pts[x], &b = m_.pts[y];
+    bool from_x = corner(x) && !corner(y), from_y = corner(y) && !corner(x);
+    if (corner(x) && corner(y)) from_x = small_[x] && !small_[y], from_y = small_[y] && !small_[x];
+    if (!from_x && !from_y) return {a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+    const Point &z = from_x ? a : b, &o = from_x ? b : a;
+    const double length = std::sqrt(dist2(a, b));
+    const double d = std::exp2(std::round(std::log2(length / 2)));
+    const double f = d / length;
+    return {z.x + (o.x - z.x) * f, z.y + (o.y - z.y) * f};
+  }
+
+  void split(std::uint32_t s);
+  VertexId split_at(std::uint32_t s, const Point& given);
+  void relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right);
+  void added(VertexId v);
+  void find_small_angles();
+  bool wedged(std::uint32_t t, const std::vector<std::uint32_t>& hit);
+  bool partnered(std::uint32_t t);
+  bool partner(VertexId x, VertexId y, VertexId z);
+  bool terminated(std::uint32_t s, std::uint32_t t) const;
+
+  Cdt& m_;
+  const Refinement& r_;
+  // Where p lies along the Hilbert curve over the points' box (a point added lies in it); a
+  // box too wide or too thin for the scale (an infinite or NaN cell) puts p at an end.
+  std::uint32_t curve(const Point& p) const {
+    auto cell = [&](double v, double from) {
+      const double c = (v - from) * cells_;
+      return c >= 0 ? (c < 65535 ? static_cast<std::uint32_t>(c) : 65535u) : 0u;
+    };
+    return hilbert_key(cell(p.x, box_.x0), cell(p.y, box_.y0));
+  }
+
+  double sin2_ = 0, half_bound_ = 0, offset_ = 0, tiny2_ = 0, cells_ = 0;
+  Extent box_;
+  std::vector<std::pair<VertexId, VertexId>> ends_;  // per vertex on a chain: its corners
+  std::vector<std::uint8_t> small_;  // per corner: two of its segments meet at less than 60 degrees
+  std::vector<Split> segments_;  // subsegments to split, if still there (and encroached)
+  Buckets<Bad> bad_;
+  std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
+};
+
+}  // namespace ridt::detail::refining
