@@ -245,7 +245,9 @@ void check_holes(std::span<const Point> pts, std::span<const VertexId> tris, std
 }
 
 // The chains of segment edges between corners (input points, and added points where other
-// than two segment edges meet): each chain's two ends, and per vertex the chains it lies on.
+// than two segment edges meet or where the two turn, off the line between their other ends by
+// more than check_chains lets a point on a segment lie: a point added where segments cross):
+// each chain's two ends, and per vertex the chains it lies on.
 struct Chains {
   std::vector<std::pair<VertexId, VertexId>> ends;
   std::vector<std::vector<std::uint32_t>> on;
@@ -257,7 +259,13 @@ Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, st
   Chains c;
   c.on.resize(pts.size());
   c.small.assign(pts.size(), 0);
-  auto corner = [&](VertexId v) { return v < input || adj[v].size() != 2; };
+  auto corner = [&](VertexId v) {
+    if (v < input || adj[v].size() != 2) return true;
+    const Point &u = pts[adj[v][0]], &p = pts[v], &w = pts[adj[v][1]];
+    const double cross = (w.x - u.x) * (p.y - u.y) - (w.y - u.y) * (p.x - u.x);
+    const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(u.x), std::fabs(u.y)});
+    return std::fabs(cross) > 0x1p-40 * scale * std::max(std::fabs(w.x - u.x), std::fabs(w.y - u.y));
+  };
   for (VertexId z = 0; z < pts.size(); ++z) {
     if (!corner(z)) continue;
     for (const VertexId first : adj[z]) {
