@@ -270,9 +270,9 @@ class Refiner {
     const Point p = off_centre(b.t);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     const Cdt::Place at = m_.locate(b.t, p, true);
-    if (at.kind == Cdt::Place::Corner) return;
+    if (at.kind == Cdt::Place::Corner) return centroid(b);
     // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
-    if (at.kind == Cdt::Place::Edge && m_.fixed[3 * at.t + at.k] && !splittable(3 * at.t + at.k)) return;
+    if (at.kind == Cdt::Place::Edge && m_.fixed[3 * at.t + at.k] && !splittable(3 * at.t + at.k)) return centroid(b);
     const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
     if (blocked) hit_.assign(1, 3 * at.t + at.k);
     std::vector<std::uint32_t>& hit = blocked ? hit_ : would_encroach(p, at);
@@ -281,7 +281,7 @@ class Refiner {
       if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
     if (blocked || !hit.empty()) {
       if (b.key >= 0 && wedged(b.t, hit)) return;
-      if (hit.empty() || b.tries >= 64) return;
+      if (hit.empty() || b.tries >= 64) return centroid(b);
       for (const std::uint32_t s : hit) queue_split(s, true);
       bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
       return;
@@ -290,6 +290,17 @@ class Refiner {
     // about p where they make a cavity p sees whole, else p added with flips.
     const VertexId v = m_.insert_cavity(p, seen_);
     added(v != Cdt::kNone ? v : m_.insert(p, at));
+  }
+
+  // A triangle too large whose off-centre cannot go in (on a vertex, on the boundary kept whole,
+  // or across subsegments too short to split): its centroid, inside it, instead. A triangle bad
+  // only for its shape is left.
+  void centroid(const Bad& b) {
+    if (b.key >= 0) return;
+    const Point &p = m_.pts[b.v[0]], &q = m_.pts[b.v[1]], &r = m_.pts[b.v[2]];
+    const Point c{p.x / 3 + q.x / 3 + r.x / 3, p.y / 3 + q.y / 3 + r.y / 3};
+    const Cdt::Place at = m_.locate(b.t, c, true);
+    if (at.kind == Cdt::Place::Inside) added(m_.insert(c, at));
   }
 
   // Where subsegment x-y is split: at the power of two nearest half its length from its

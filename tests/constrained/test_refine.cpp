@@ -203,6 +203,20 @@ TEST(Refine, NoPointOnTheBoundaryWhenAskedNone) {
     for (std::size_t k = 0; k < t.edges.size(); k += 2) made.emplace_back(t.edges[k], t.edges[k + 1]);
     std::sort(input.begin(), input.end());
     EXPECT_EQ(made, input);
+    // With an area bound too: a triangle too large whose point would fall on the boundary gets
+    // its centroid instead, so that every triangle meets the bound and the boundary stays whole.
+    q.max_area = 0.05;
+    const ConstrainedTriangulation small = triangulate_constrained(g.points, g.segments, {}, d, q);
+    made.clear();
+    for (std::size_t k = 0; k < small.edges.size(); k += 2) made.emplace_back(small.edges[k], small.edges[k + 1]);
+    EXPECT_EQ(made, input);
+    std::vector<Point> all = g.points;
+    all.insert(all.end(), small.steiner.begin(), small.steiner.end());
+    for (std::size_t k = 0; k < small.size(); ++k) {
+      const Point &a = all[small.triangles[3 * k]], &b = all[small.triangles[3 * k + 1]],
+                  &c = all[small.triangles[3 * k + 2]];
+      EXPECT_LE(((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2, 0.05) << "triangle " << k;
+    }
   }
 }
 
