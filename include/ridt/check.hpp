@@ -77,7 +77,7 @@ struct MeshSpec {
   std::span<const Point> holes;  ///< seeds no triangle may hold, inside or on its boundary
   /// No triangle with an angle below `min_angle` degrees (but those beside an input angle
   /// below 60 degrees between two segments, which refinement cannot mend, and those with an
-  /// edge below 2^-40 of the points' extent, which it does not split: counted apart) or an
+  /// edge below 2^-39 of the points' extent, which it does not split: counted apart) or an
   /// area above `max_area`; 0: not checked.
   double min_angle = 0;
   double max_area = 0;

@@ -299,8 +299,8 @@ struct Shape {
 
 // Angles and areas: a triangle below the angle is excused where one of its vertices lies on a
 // chain of segment edges that ends at an input angle below 60 degrees (refinement stops short
-// of those, as its concentric shells reach them), or where its shortest edge is below 2^-40 of
-// the points' extent (refinement splits no edge that short).
+// of those, as its concentric shells reach them), or where its shortest edge is below 2^-39 of
+// the points' extent (refinement splits no subsegment that short).
 Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
                   const Chains& chains, Report& report) {
   Shape shape;
@@ -316,7 +316,7 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
   for (const Point& p : pts)
     x0 = std::min<long double>(x0, p.x), x1 = std::max<long double>(x1, p.x), y0 = std::min<long double>(y0, p.y),
     y1 = std::max<long double>(y1, p.y);
-  const long double tiny2 = ((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)) * 0x1p-80L;
+  const long double tiny2 = ((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)) * 0x1p-78L;
   auto length2 = [&](VertexId a, VertexId b) {
     const long double dx = pts[a].x - (long double)pts[b].x, dy = pts[a].y - (long double)pts[b].y;
     return dx * dx + dy * dy;
@@ -396,7 +396,7 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
     << " degrees";
   if (shape.excused > 0)
     s << " (" << shape.excused << " triangles below " << spec.min_angle
-      << " beside small input angles or with an edge below 2^-40 of the extent)";
+      << " beside small input angles or with an edge below 2^-39 of the extent)";
   s << ", largest area " << static_cast<double>(shape.largest_area);
   return report.result(s.str());
 }

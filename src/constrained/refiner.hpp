@@ -26,6 +26,9 @@ inline double dot(const Point& a, const Point& b, const Point& p) {
 inline double dist2(const Point& a, const Point& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); }
 
 inline constexpr double kGood = std::numeric_limits<double>::infinity();
+// Two squared distances from a corner this close, relatively, are one distance (seditious edges,
+// partners).
+inline constexpr double kOneDistance = 1e-5;
 
 class Refiner {
  public:
@@ -182,7 +185,7 @@ class Refiner {
     const VertexId z = apex(u, w);
     if (z == Cdt::kNone) return false;
     const double du = dist2(m_.pts[z], m_.pts[u]), dw = dist2(m_.pts[z], m_.pts[w]);
-    return std::fabs(du - dw) <= 1e-6 * std::max(du, dw);
+    return std::fabs(du - dw) <= kOneDistance * std::max(du, dw);
   }
   bool at_apex(VertexId u, VertexId w, VertexId third) const { return third == apex(u, w) && seditious(u, w); }
 
@@ -268,7 +271,7 @@ class Refiner {
 
   void improve(const Bad& b) {
     const Point p = off_centre(b.t);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return centroid(b);
     const Cdt::Place at = m_.locate(b.t, p, true);
     if (at.kind == Cdt::Place::Corner) return centroid(b);
     // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
@@ -300,7 +303,8 @@ class Refiner {
     const Point &p = m_.pts[b.v[0]], &q = m_.pts[b.v[1]], &r = m_.pts[b.v[2]];
     const Point c{p.x / 3 + q.x / 3 + r.x / 3, p.y / 3 + q.y / 3 + r.y / 3};
     const Cdt::Place at = m_.locate(b.t, c, true);
-    if (at.kind == Cdt::Place::Inside) added(m_.insert(c, at));
+    if (at.kind == Cdt::Place::Inside || (at.kind == Cdt::Place::Edge && !m_.fixed[3 * at.t + at.k]))
+      added(m_.insert(c, at));
   }
 
   // Where subsegment x-y is split: at the power of two nearest half its length from its

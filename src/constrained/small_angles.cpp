@@ -46,7 +46,7 @@ bool Refiner::partnered(std::uint32_t t) {
 }
 
 // A point on y's chain at x's distance from z, on one of the subsegments at y where that
-// distance falls inside it (not within 10^-5 of its ends); false where it does not.
+// distance falls inside it (not at one distance with its ends); false where it does not.
 bool Refiner::partner(VertexId x, VertexId y, VertexId z) {
   const Point& pz = m_.pts[z];
   const double dx = dist2(pz, m_.pts[x]), dy = dist2(pz, m_.pts[y]);
@@ -59,7 +59,7 @@ bool Refiner::partner(VertexId x, VertexId y, VertexId z) {
       const VertexId n = m_.at(f, i + 3 - j);
       if (!m_.fixed[e] || !(n == chain.first || n == chain.second || (!corner(n) && chain_of(n) == chain))) continue;
       const double dn = dist2(pz, m_.pts[n]), lo = std::min(dn, dy), hi = std::max(dn, dy);
-      if (dx > lo * (1 + 1e-5) && dx < hi * (1 - 1e-5) && splittable(e)) slot = e;
+      if (dx > lo * (1 + kOneDistance) && dx < hi * (1 - kOneDistance) && splittable(e)) slot = e;
     }
     return slot != Cdt::kNone;
   });
