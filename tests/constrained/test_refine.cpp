@@ -383,6 +383,24 @@ TEST(Refine, SegmentsCloseTogetherAreNotCutDownToTheGap) {
   }
 }
 
+// A segment from (0, 0) to (11, 10) cuts a square's corner off, the rest of the graph outside
+// the domain: the domain's boundary turns at the two crossings (47.7 degrees at (6, 5.45)), where
+// refinement may leave a triangle below the bound; check_mesh takes each crossing for the end of
+// the chains through it, so that the angle there counts as small.
+TEST(Refine, ACrossingWhereTheBoundaryTurnsEndsAChain) {
+  Pslg g;
+  g.points = {{0, 0}, {11, 0}, {10, 10}, {11, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  g.segments = {0, 1, 1, 0, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  g.holes = {{5, 5}};
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = 0.22;
+  const Meshed m = mesh(g, q);
+  EXPECT_EQ(m.t.warning, "");
+  EXPECT_EQ(m.t.crossings, 2u);
+  EXPECT_GT(m.t.size(), 5u);
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
