@@ -311,12 +311,9 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
       if (chains.small[chains.ends[k].first] || chains.small[chains.ends[k].second]) return true;
     return false;
   };
-  constexpr long double kFar = std::numeric_limits<long double>::infinity();
-  long double x0 = kFar, y0 = kFar, x1 = -kFar, y1 = -kFar;
-  for (const Point& p : pts)
-    x0 = std::min<long double>(x0, p.x), x1 = std::max<long double>(x1, p.x), y0 = std::min<long double>(y0, p.y),
-    y1 = std::max<long double>(y1, p.y);
-  const long double tiny2 = ((x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)) * 0x1p-78L;
+  const detail::Extent box = detail::extent_of(pts);
+  const long double w = box.x1 - (long double)box.x0, h = box.y1 - (long double)box.y0;
+  const long double tiny2 = (w * w + h * h) * 0x1p-78L;
   auto length2 = [&](VertexId a, VertexId b) {
     const long double dx = pts[a].x - (long double)pts[b].x, dy = pts[a].y - (long double)pts[b].y;
     return dx * dx + dy * dy;

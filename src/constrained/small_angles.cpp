@@ -12,8 +12,8 @@ bool Refiner::wedged(std::uint32_t t, const std::vector<std::uint32_t>& hit) {
   const VertexId* v = &m_.tris[3 * t];
   auto on_its_chain = [&](VertexId u) {
     return std::any_of(hit.begin(), hit.end(), [&](std::uint32_t s) {
-      const auto [a, b] = chain(m_.at(s / 3, static_cast<int>(s % 3) + 1), m_.at(s / 3, static_cast<int>(s % 3) + 2));
-      return std::pair{std::min(a, b), std::max(a, b)} == chain_of(u);
+      return ordered(chain(m_.at(s / 3, static_cast<int>(s % 3) + 1), m_.at(s / 3, static_cast<int>(s % 3) + 2))) ==
+          chain_of(u);
     });
   };
   bool wedge = false;
@@ -80,9 +80,7 @@ bool Refiner::partner(VertexId x, VertexId y, VertexId z) {
 void Refiner::find_small_angles() {
   small_.assign(r_.corners, 0);
   auto angle = [&](std::uint32_t t, int i) {
-    const Point &o = m_.pts[m_.at(t, i)], &u = m_.pts[m_.at(t, i + 1)], &w = m_.pts[m_.at(t, i + 2)];
-    const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
-    return std::atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+    return turn(m_.pts[m_.at(t, i)], m_.pts[m_.at(t, i + 1)], m_.pts[m_.at(t, i + 2)]);
   };
   for (VertexId z = 0; z < r_.corners; ++z) {
     if (m_.corner[z] == Cdt::kNone) continue;
