@@ -77,6 +77,10 @@ def codes_for(n, a, ridt, cgal):
 PHASES = (("read", "time_read_s"), ("scan", "time_scan_s"), ("mesh", "time_mesh_s"),
           ("order", "time_order_s"), ("copy", "time_copy_s"), ("insert", "time_insert_s"),
           ("finish", "time_finish_s"))
+# The partition method's insertion in parts (`--stats json`): the second passes, the points
+# inserted on one thread and their time, the threads' waits summed.
+PARTS = (("second", "time_second_pass_s"), ("alone_s", "time_alone_s"), ("alone", "alone"),
+         ("wait", "time_wait_s"))
 
 
 def measure(files, codes, reps, n, label):
@@ -92,7 +96,7 @@ def measure(files, codes, reps, n, label):
             wall, peak, stats = this[name]
             row = {"n": n, "dist": key, "code": name, "method": method, "threads": t, "rep": rep,
                    "wall_s": wall, "peak_bytes": peak}
-            for k in ("time_triangulate_s",) + tuple(f for _, f in PHASES):
+            for k in ("time_triangulate_s",) + tuple(f for _, f in PHASES + PARTS):
                 row[k] = stats.get(k, "") if stats else ""
             for ref, col in (("CGAL range insert", "vs_cgal"), ("ridt serial (walk)", "vs_serial_walk")):
                 found = [c for c in codes if c[0].startswith(ref) and c[3] == key]
@@ -110,7 +114,7 @@ def measure(files, codes, reps, n, label):
              "wall_s": med("wall_s"), "min_s": min(r["wall_s"] for r in rs), "max_s": max(r["wall_s"] for r in rs),
              "vs_cgal": med("vs_cgal"), "vs_serial_walk": med("vs_serial_walk"),
              "triangulate_s": med("time_triangulate_s"), "bytes_per_point": med("peak_bytes") / n}
-        for phase, field in PHASES:
+        for phase, field in PHASES + PARTS:
             s[phase] = med(field)
         summary.append(s)
         ratio = f"{s['vs_cgal']:.3f} of CGAL  " if s["vs_cgal"] is not None else ""
@@ -244,8 +248,28 @@ def write_page(a, runs, summary, more_runs, more):
                     "arrays); *rest*: the whole process less the read and the call (the process's start "
                     "and exit, memory given back).\n\n")
             phase_table(f, [s for s in at_n if s["method"] in ("serial walk", "partition")])
+            parts_table(f, [s for s in at_n if s["method"] == "partition"])
         if more:
             write_more(f, a, more)
+
+
+def parts_table(f, rows, key="threads"):
+    """The partition method's insertion in parts, one row a code."""
+    rows = [s for s in rows if s.get("second") is not None]
+    if not rows:
+        return
+    f.write("The partition method's insertion in parts (`--stats json`, medians): the first passes "
+            "(the rest of the insertion), the second passes (`time_second_pass_s`), the points "
+            "left to one thread and its seconds (`alone`, `time_alone_s`: the small rounds and "
+            "what both passes put off), and the threads' waits for the slowest at the passes' ends "
+            "(`time_wait_s`, summed over threads, and a thread's mean).\n\n"
+            f"| {key} | insert | first passes | second passes | one thread | points alone "
+            "| waits summed | a thread's wait |\n|---|---:|---:|---:|---:|---:|---:|---:|\n")
+    for s in rows:
+        first = s["insert"] - s["second"] - s["alone_s"]
+        f.write(f"| {s[key]} | {s['insert']:.3f} | {first:.3f} | {s['second']:.3f} | {s['alone_s']:.3f} "
+                f"| {s['alone']:,.0f} | {s['wait']:.3f} | {s['wait'] / s['threads']:.3f} |\n")
+    f.write("\n")
 
 
 def write_more(f, a, more):
@@ -268,6 +292,7 @@ def write_more(f, a, more):
             f.write(f"| {s['label']} | {s['threads']} | " + " | ".join(f"{s[p]:.3f}" for p, _ in PHASES) +
                     f" | {s['wall_s'] - s['triangulate_s'] - s['read']:.3f} | {s['wall_s']:.3f} |\n")
         f.write("\n")
+        parts_table(f, dists, key="dist")
     huge = [s for s in more if s["n"] == a.huge]
     if huge:
         s = huge[0]
@@ -279,6 +304,7 @@ def write_more(f, a, more):
         f.write("|---|---:|" + "---:|" * (len(PHASES) + 2) + "\n")
         f.write(f"| {s['label']} | {s['threads']} | " + " | ".join(f"{s[p]:.3f}" for p, _ in PHASES) +
                 f" | {s['wall_s'] - s['triangulate_s'] - s['read']:.3f} | {s['wall_s']:.3f} |\n\n")
+        parts_table(f, huge)
 
 
 if __name__ == "__main__":

@@ -173,6 +173,9 @@ struct Stats {
   double time_stall_s = 0;  ///< batch: locators waiting for room in the queue, summed
   double queue_depth_mean = 0;  ///< batch: hints queued ahead of the modifier, on average
   std::uint64_t stale_hints = 0;  ///< batch: hints no longer a leaf when the modifier took them
+  double time_second_pass_s = 0;  ///< partition: wall seconds of the second passes (within time_insert_s)
+  double time_alone_s = 0;  ///< partition: wall seconds inserting on one thread (within time_insert_s)
+  std::uint64_t alone = 0;  ///< partition: points inserted on one thread (small rounds, what both passes put off)
   std::vector<ThreadStats> per_thread;
   double time_locate_s = 0;  ///< only with Experiment::profile
   double time_split_s = 0;  ///< only with Experiment::profile
@@ -338,6 +341,9 @@ constexpr void for_each_stat(Visit&& visit) {
   visit("time_stall_s", &Stats::time_stall_s);
   visit("queue_depth_mean", &Stats::queue_depth_mean);
   visit("stale_hints", &Stats::stale_hints);
+  visit("time_second_pass_s", &Stats::time_second_pass_s);
+  visit("time_alone_s", &Stats::time_alone_s);
+  visit("alone", &Stats::alone);
   visit("time_locate_s", &Stats::time_locate_s);
   visit("time_split_s", &Stats::time_split_s);
   visit("time_legalize_s", &Stats::time_legalize_s);

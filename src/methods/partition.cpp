@@ -42,7 +42,6 @@ void Partition<kLattice>::insert_round(VertexId b, VertexId e) {
   const TriangleId base = mesh_.grow(2 * m);
   const auto anywhere = Mesh::kAnywhere;
   std::vector<Stretch> stretch(threads_);
-  std::vector<std::pair<VertexId, VertexId>> held;
   for (unsigned i = 0; i < threads_; ++i) {
     Worker& w = workers_[i];
     Stretch& s = stretch[i];
@@ -57,7 +56,6 @@ void Partition<kLattice>::insert_round(VertexId b, VertexId e) {
       w.ask.store(kWorking, std::memory_order_relaxed);
     } else {  // no start: every point is put off, and the thread begins by asking for some
       for (VertexId p = s.a; p < s.b; ++p) w.deferred.push_back({p, kNoTriangle});
-      if (s.a < s.b) held.emplace_back(s.a, s.b);
       w.remaining.store(0, std::memory_order_relaxed);
       w.ask.store(kIdle, std::memory_order_relaxed);
     }
@@ -72,10 +70,12 @@ void Partition<kLattice>::insert_round(VertexId b, VertexId e) {
     w.pool = SlotPool{};
     for (const auto& [first, end] : w.spare) release(first, end);
     w.spare.clear();
-    held.insert(held.end(), w.held.begin(), w.held.end());
-    w.held.clear();
   }
-  if (left.size() >= 64 * threads_) left = second_pass(std::move(left), std::move(held));
+  if (left.size() >= 64 * threads_) {
+    const auto t0 = Clock::now();
+    left = second_pass(std::move(left));
+    stats_.time_second_pass_s += seconds(Clock::now() - t0);
+  }
   std::sort(left.begin(), left.end());
   insert_alone(left);
 }
@@ -119,7 +119,6 @@ bool Partition<kLattice>::insert_stretch(unsigned i, Stretch& s) {
     if ((p & 63) == 0)
       w.remaining.store(!w.giving ? 0 : up ? (s.b - next) + (s.from - s.a) : next - s.a, std::memory_order_relaxed);
   }
-  w.held.emplace_back(s.a, s.b);
   return true;
 }
 

@@ -40,8 +40,8 @@
 // giver wrote there before what the taker writes. It refuses when its next walk would start
 // in the part it gives.
 //
-// The points put off are inserted in a second pass whose cuts lie in the middle of the first
-// pass's stretches, and what is left after it by one thread. Small rounds are inserted by one
+// The points put off are inserted in a second pass whose regions are made of cells of a grid
+// turned against the first pass's borders, and what is left after it by one thread. Small rounds are inserted by one
 // thread: their mesh is small and their cavities reach the bounding vertices, which belong to
 // no thread.
 #pragma once
@@ -66,7 +66,7 @@
 namespace ridt::detail {
 
 // A round is cut among the threads when each thread gets at least this many points.
-inline constexpr VertexId kMinStretch = 1024;
+inline constexpr VertexId kMinStretch = 256;
 // Tries to find a thread's first triangle among its first points before the pass.
 inline constexpr std::size_t kStartTries = 64;
 // A thread that has run out of points asks another for about half of its rest when that is
@@ -118,7 +118,6 @@ class Partition {
     std::vector<PutOff> deferred;
     SlotPool pool;
     TriangleId last = 0;
-    std::vector<std::pair<VertexId, VertexId>> held;  // the first pass's stretches it inserted
     std::vector<std::pair<TriangleId, TriangleId>> spare;  // slots its pools did not hand out
     std::vector<TriangleId> seen;  // deep_in's search
     std::uint32_t tried = 0;  // points tried since the last report
@@ -134,7 +133,7 @@ class Partition {
   };
   // A region of the second pass and its points, in curve order.
   struct Task {
-    Region range;
+    CellRegion range;
     std::vector<PutOff> todo, deferred;  // hints in todo only where the region owns them
     TriangleId start = 0;  // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
@@ -164,32 +163,46 @@ class Partition {
   bool live(TriangleId t) const { return t < mesh_.slots() && mesh_.vertex(t, 0) != kNoVertex; }
 
   // Whether triangle t has all three vertices in region r (tested together, without a branch
-  // between them: the answers are hard to predict).
-  bool owns(const Region& r, TriangleId t) const {
+  // between them: the answers are hard to predict). R: Region (the first pass) or CellRegion
+  // (the second), here and below.
+  template <class R>
+  bool owns(const R& r, TriangleId t) const {
     const VertexId a = mesh_.vertex(t, 0), b = mesh_.vertex(t, 1), c = mesh_.vertex(t, 2);
     return (std::max(a, std::max(b, c)) < n_) & r.holds(a) & r.holds(b) & r.holds(c);
   }
 
   // Whether vertex v is in region r.
-  bool owns_vertex(const Region& r, VertexId v) const { return (v < n_) & r.holds(v); }
+  template <class R>
+  bool owns_vertex(const R& r, VertexId v) const {
+    return (v < n_) & r.holds(v);
+  }
   // Whether the triangle entered by link l from one with all its vertices in region r has all
   // of them there too (Mesh::find_cavity's `owned`).
-  bool enters(const Region& r, Link l) const { return owns_vertex(r, mesh_.opposite(l)); }
+  template <class R>
+  bool enters(const R& r, Link l) const {
+    return owns_vertex(r, mesh_.opposite(l));
+  }
   // Whether a walk in region r may cross the edge a b: one of its vertices is in r.
-  bool crosses(const Region& r, VertexId a, VertexId b) const { return owns_vertex(r, a) | owns_vertex(r, b); }
+  template <class R>
+  bool crosses(const R& r, VertexId a, VertexId b) const {
+    return owns_vertex(r, a) | owns_vertex(r, b);
+  }
   // Mesh::walk's `cross` for a walk that enters only region r's own triangles (from one of
   // them), and for one that crosses the edges with a vertex in r.
-  auto own_triangles(const Region& r) const {
+  template <class R>
+  auto own_triangles(const R& r) const {
     return [this, &r](Link l) { return enters(r, l); };
   }
-  auto own_edges(const Region& r) const {
+  template <class R>
+  auto own_edges(const R& r) const {
     return [this, &r](VertexId a, VertexId b) { return crosses(r, a, b); };
   }
 
   // Whether region r's triangles reachable from t through the region number some dozens: a
   // thread that starts in a small pocket of its region cut off by the border would put off
   // every point. Reads only triangles of r and their neighbours.
-  bool deep_in(const Region& r, TriangleId t, std::vector<TriangleId>& seen) const {
+  template <class R>
+  bool deep_in(const R& r, TriangleId t, std::vector<TriangleId>& seen) const {
     if (!owns(r, t)) return false;
     constexpr std::size_t kEnough = 48;
     seen.assign(1, t);
@@ -206,8 +219,8 @@ class Partition {
   // A triangle deep in region r from which to insert points [a, b): walking from t, entering
   // only triangles that `enter` allows, to the points from the middle of [a, b) on. The point
   // it holds, or false.
-  template <class Enter>
-  bool find_start(Enter&& enter, const Region& r, VertexId a, VertexId b, TriangleId& t, VertexId& from,
+  template <class Enter, class R>
+  bool find_start(Enter&& enter, const R& r, VertexId a, VertexId b, TriangleId& t, VertexId& from,
                   std::vector<TriangleId>& seen) const {
     const VertexId size = b - a;
     for (VertexId k = 0; k < std::min<VertexId>(size, kStartTries); ++k) {
@@ -267,9 +280,11 @@ class Partition {
   bool take_from_another(unsigned i, Stretch& s);
 
   // The second pass: the points put off lie along the borders between the first pass's
-  // stretches; regions cut in the middle of each stretch put each such border inside one. The
-  // last region wraps round to key 0. Returns what is left.
-  std::vector<PutOff> second_pass(std::vector<PutOff> left, std::vector<std::pair<VertexId, VertexId>> held);
+  // regions, which follow the sides of the Hilbert curve's squares. The second pass's regions
+  // are runs of cells of a turned grid (CellRegion), in the grid's own Hilbert order, about
+  // twice as many as threads with about equal numbers of these points: their borders cross the
+  // first pass's at single places. Returns what is left.
+  std::vector<PutOff> second_pass(std::vector<PutOff> left);
 
   // Task t's start, and slots for all its points, the free ones from free_[taken] on first.
   // Returns how many free slots it took.
@@ -283,8 +298,8 @@ class Partition {
   // the run stops: an error, or the progress callback threw. The walk, the cavity and their
   // predicates all in line (flatten): with the class made twice (kLattice), the compiler
   // otherwise leaves the predicates out of line (2-5 % more instructions on uniform points).
-  [[gnu::flatten]] bool try_insert(unsigned i, const Region& r, VertexId p, std::vector<PutOff>& deferred,
-                                   SlotPool& pool) {
+  template <class R>
+  [[gnu::flatten]] bool try_insert(unsigned i, const R& r, VertexId p, std::vector<PutOff>& deferred, SlotPool& pool) {
     Worker& w = workers_[i];
     if (++w.tried == 1024) {
       w.tried = 0;
@@ -327,7 +342,8 @@ class Partition {
 
   // The walk from t to p across edges with a vertex in region r, to a triangle of r: whether
   // it got there (out of line: the common path has no use for it).
-  [[gnu::noinline]] bool walk_on(const Region& r, TriangleId& t, VertexId p) const {
+  template <class R>
+  [[gnu::noinline]] bool walk_on(const R& r, TriangleId& t, VertexId p) const {
     return mesh_.walk<kLattice>(t, p, own_edges(r)) && owns(r, t);
   }
 
@@ -378,6 +394,7 @@ class Partition {
   std::vector<Worker> workers_;
   std::vector<Clock::time_point> pass_end_ = std::vector<Clock::time_point>(threads_);
   std::vector<Task> tasks_;  // the second pass's regions
+  std::vector<std::uint16_t> owner_;  // the second pass's region of each cell (CellRegion)
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> inserted_{0};  // counted by the threads as they go
   std::uint64_t before_ = 0;  // done_ when the pass began

@@ -1,5 +1,9 @@
 // The partition method's second pass over the points put off, and what is left to one thread
 // (partition.hpp says how the method works).
+#include <bit>
+#include <numeric>
+#include <vector>
+
 #include "methods/partition.hpp"
 
 namespace ridt::detail {
@@ -30,25 +34,51 @@ std::size_t Partition<kLattice>::prepare(Task& t, std::size_t taken) {
   return listed;
 }
 
+namespace {
+
+// The cells of CellRegion's grid along the grid's Hilbert curve: the curve of order 16 passes
+// through the squares of 2^(16 - k) units in the order of the curve of order k, so the top 2k
+// bits of a square's corner's key are its place on the grid's curve.
+const std::vector<std::uint16_t>& cells_along_the_curve() {
+  constexpr int kSide = CellRegion::kSide;
+  constexpr int kBits = std::bit_width(unsigned{kSide - 1});
+  static_assert(std::has_single_bit(unsigned{kSide}) && 2 * kBits <= 16);
+  static const std::vector<std::uint16_t> order = [] {
+    std::vector<std::uint16_t> cells(kSide * kSide);
+    for (std::uint32_t y = 0; y < kSide; ++y)
+      for (std::uint32_t x = 0; x < kSide; ++x)
+        cells[hilbert_key(x << (16 - kBits), y << (16 - kBits)) >> (32 - 2 * kBits)] =
+            static_cast<std::uint16_t>(y * kSide + x);
+    return cells;
+  }();
+  return order;
+}
+
+}  // namespace
+
 template <bool kLattice>
-auto Partition<kLattice>::second_pass(std::vector<PutOff> left, std::vector<std::pair<VertexId, VertexId>> held)
-    -> std::vector<PutOff> {
-  std::vector<std::uint32_t> from;  // the smallest key of each region
-  for (const auto& [a, b] : held)
-    if (a < b) from.push_back(key_[a + (b - a) / 2]);
-  std::sort(from.begin(), from.end());
-  from.erase(std::unique(from.begin(), from.end()), from.end());
-  if (from.empty()) return left;
+auto Partition<kLattice>::second_pass(std::vector<PutOff> left) -> std::vector<PutOff> {
+  const Vertices& v = mesh_.vertices();
+  const CellRegion grid = CellRegion::grid(v.data(), n_, left);
+  std::vector<std::uint32_t> count(CellRegion::kSide * CellRegion::kSide);
+  for (const PutOff& x : left) ++count[static_cast<std::size_t>(grid.cell(v[x.p]))];
+  // Runs of cells along the curve, each with about an equal share of the points.
+  const std::size_t regions = 2 * std::size_t{threads_};
+  owner_.resize(count.size());
+  std::uint64_t before = 0;
+  for (const std::uint16_t c : cells_along_the_curve()) {
+    owner_[c] = static_cast<std::uint16_t>(std::min(regions - 1, before * regions / left.size()));
+    before += count[c];
+  }
+  tasks_.assign(regions, Task{});
+  for (std::size_t j = 0; j < regions; ++j) {
+    tasks_[j].range = grid;
+    tasks_[j].range.owner = owner_.data();
+    tasks_[j].range.id = static_cast<std::uint16_t>(j);
+  }
   std::sort(left.begin(), left.end());  // curve order: the round is sorted by key
-  tasks_.assign(from.size(), Task{});
-  for (std::size_t j = 0; j < from.size(); ++j)
-    tasks_[j].range = region(
-        from[j],
-        j + 1 < from.size() ? std::uint64_t{from[j + 1]} - from[j] : (std::uint64_t{1} << 32) - (from[j] - from[0]));
   for (PutOff x : left) {
-    // The last region whose first key is at most p's, or the last of all (which wraps round).
-    const auto above = std::upper_bound(from.begin(), from.end(), key_[x.p]) - from.begin();
-    Task& t = tasks_[above > 0 ? static_cast<std::size_t>(above - 1) : from.size() - 1];
+    Task& t = tasks_[owner_[static_cast<std::size_t>(grid.cell(v[x.p]))]];
     // A hint the region does not own may change under another thread: read it now or never.
     if (!live(x.near) || !owns(t.range, x.near)) x.near = kNoTriangle;
     t.todo.push_back(x);
@@ -56,11 +86,16 @@ auto Partition<kLattice>::second_pass(std::vector<PutOff> left, std::vector<std:
   // Before the threads start: each region's start, and slots for all its points.
   std::size_t taken = 0;
   for (Task& t : tasks_) taken += prepare(t, taken);
+  // The largest regions first: a large one taken last would leave the other threads waiting.
+  std::vector<std::size_t> largest_first(tasks_.size());
+  std::iota(largest_first.begin(), largest_first.end(), std::size_t{0});
+  std::stable_sort(largest_first.begin(), largest_first.end(),
+                   [&](std::size_t a, std::size_t b) { return tasks_[a].todo.size() > tasks_[b].todo.size(); });
   std::atomic<std::size_t> next{0};
   run_threads([&](unsigned i) {
     // relaxed: the counter only hands out each region once; the joins order the rest.
     for (std::size_t j; (j = next.fetch_add(1, std::memory_order_relaxed)) < tasks_.size();)
-      if (!insert_task(i, tasks_[j])) return;
+      if (!insert_task(i, tasks_[largest_first[j]])) return;
   });
   // What the pools did not hand out is free now; the free slots they took are used.
   std::vector<TriangleId> unused;
@@ -105,6 +140,7 @@ void Partition<kLattice>::release(TriangleId first, TriangleId end) {
 
 template <bool kLattice>
 void Partition<kLattice>::insert_alone(const std::vector<PutOff>& list) {
+  const auto t0 = Clock::now();
   Worker& w = workers_[0];
   SlotPool pool;
   pool.list = free_.data();
@@ -127,6 +163,8 @@ void Partition<kLattice>::insert_alone(const std::vector<PutOff>& list) {
               free_.begin() + static_cast<std::ptrdiff_t>(listed));
   pool.listed = 0;
   mesh_.give_back(pool);
+  stats_.alone += list.size();
+  stats_.time_alone_s += seconds(Clock::now() - t0);
 }
 
 // The second pass's members, for both forms of the predicates; the first pass's are made where

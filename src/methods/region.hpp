@@ -1,11 +1,15 @@
-// A partition thread's region (methods/partition.cpp): the vertices whose Hilbert keys lie in one
-// interval round the circle of 32-bit keys, tested by vertex id alone.
+// A partition thread's region (methods/partition.cpp): in the first pass the vertices whose
+// Hilbert keys lie in one interval round the circle of 32-bit keys, tested by vertex id alone;
+// in the second, cells of a grid turned against the curve's squares.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
+
+#include "ridt/ridt.hpp"
 
 #include "order/order.hpp"
 
@@ -61,6 +65,52 @@ struct Region {
     const Ids& r = ids[round_of(v)];
     return static_cast<std::uint32_t>(v - r.first) < r.count;
   }
+};
+
+/// A region of the partition method's second pass: the vertices v < n whose cell, in a grid of
+/// kSide by kSide cells turned by atan(1/2) against the axes, has `id` in `owner`. The first
+/// pass's borders follow the Hilbert curve's squares, along the axes, and the points it put off
+/// lie along them; this grid's lines cross them at single places, where an interval of the
+/// curve cut elsewhere would share whole sides of its squares with them.
+struct CellRegion {
+  static constexpr int kSide = 128;
+  static constexpr double kCos = 0.89442719099991588, kSin = 0.44721359549995794;  // 2 and 1 over sqrt(5)
+
+  /// The grid over `put_off` (items whose `p` is a vertex id): its box in the turned axes cut
+  /// into kSide by kSide cells; vertices outside it fall in the cells at its edges.
+  template <class PutOffs>
+  static CellRegion grid(const Point* points, std::uint32_t n, const PutOffs& put_off) {
+    double u_lo = HUGE_VAL, u_hi = -HUGE_VAL, w_lo = HUGE_VAL, w_hi = -HUGE_VAL;
+    for (const auto& x : put_off) {
+      const Point q = points[x.p];
+      const double u = q.x * kCos + q.y * kSin, w = q.y * kCos - q.x * kSin;
+      u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u), w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
+    }
+    CellRegion r;
+    r.points = points, r.n = n;
+    r.u0 = u_lo, r.w0 = w_lo;
+    // One column (or row) where the points lie on a line across it, or where the box's width
+    // overflows.
+    const double du = u_hi - u_lo, dw = w_hi - w_lo;
+    r.su = du > 0 && du < HUGE_VAL ? kSide / du : 0;
+    r.sw = dw > 0 && dw < HUGE_VAL ? kSide / dw : 0;
+    return r;
+  }
+
+  /// The cell of point q: kSide * row + column, the coordinates clamped into the grid.
+  int cell(Point q) const {
+    return kSide * index((q.y * kCos - q.x * kSin - w0) * sw) + index((q.x * kCos + q.y * kSin - u0) * su);
+  }
+  /// t clamped to [0, kSide - 1] and rounded down (NaN: 0).
+  static int index(double t) { return static_cast<int>(std::min<double>(kSide - 1, std::max(0.0, t))); }
+  /// Whether vertex v is in the region (v past the points: no, and no read past them).
+  bool holds(std::uint32_t v) const { return (v < n) & (owner[cell(points[std::min(v, n - 1)])] == id); }
+
+  const Point* points = nullptr;
+  const std::uint16_t* owner = nullptr;  // kSide * kSide cells' regions
+  double u0 = 0, w0 = 0, su = 0, sw = 0;
+  std::uint32_t n = 0;
+  std::uint16_t id = 0;
 };
 
 }  // namespace ridt::detail

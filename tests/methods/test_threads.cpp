@@ -16,6 +16,8 @@
 #include <thread>
 
 #include "helpers.hpp"
+#include "methods/partition.hpp"
+#include "order/order.hpp"
 #include "ridt/generate.hpp"
 #include "runtime/parallel.hpp"
 
@@ -186,14 +188,19 @@ TEST(Partition, SameResultAsSerialForEveryThreadCountAndSeed) {
   }
 }
 
+// The partition method on `threads` threads, its output checked.
+Triangulation partition_of_uniform(const std::vector<Point>& pts, unsigned threads) {
+  Options o;
+  o.method = Method::Partition;
+  o.threads = threads;
+  return triangulate_checked(pts, o);
+}
+
 // The passes really share the work: on a large round each thread inserts points, and the
 // points put off along the regions' borders are few. The counts add up to the input.
 TEST(Partition, ThreadsShareTheRoundsAndFewPointsArePutOff) {
   const std::vector<Point> pts = generate(Distribution::Uniform, 4 * kPartitionN, 12);
-  Options o;
-  o.method = Method::Partition;
-  o.threads = 4;
-  const Triangulation t = triangulate_checked(pts, o);
+  const Triangulation t = partition_of_uniform(pts, 4);
   ASSERT_EQ(t.stats.per_thread.size(), 4u);
   std::uint64_t points = 0;
   for (const ThreadStats& w : t.stats.per_thread) {
@@ -202,6 +209,25 @@ TEST(Partition, ThreadsShareTheRoundsAndFewPointsArePutOff) {
   }
   EXPECT_EQ(points, pts.size());
   EXPECT_LT(t.stats.retries, pts.size() / 10);
+}
+
+// The second pass's regions cross the first pass's borders rather than share them: of the
+// points put off along those borders few are left to one thread, besides the small rounds,
+// which it takes whole. (Regions cut along the curve again left over a third of them.)
+TEST(Partition, TheSecondPassLeavesFewPointsToOneThread) {
+  const std::vector<Point> pts = generate(Distribution::Uniform, 4 * kPartitionN, 12);
+  constexpr unsigned kThreads = 8;
+  const Triangulation t = partition_of_uniform(pts, kThreads);
+  std::uint64_t small = 0;  // points of rounds too small to cut among the threads
+  for (std::uint32_t b = 0; b < pts.size(); b = detail::round_end(b)) {
+    const std::uint64_t e = std::min<std::uint64_t>(detail::round_end(b), pts.size());
+    if (e - b < std::uint64_t{detail::kMinStretch} * kThreads) small += e - b;
+  }
+  ASSERT_GE(t.stats.alone, small);
+  EXPECT_GT(t.stats.retries, 0u);
+  EXPECT_LT(t.stats.alone - small, t.stats.retries / 4);
+  EXPECT_GT(t.stats.time_second_pass_s, 0);
+  EXPECT_LE(t.stats.time_second_pass_s + t.stats.time_alone_s, t.stats.time_insert_s);
 }
 
 // A thread that falls behind gives points away: thread 0 sleeps in the progress callback (it
