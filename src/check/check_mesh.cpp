@@ -66,6 +66,19 @@ double along_key(const Point& a, const Point& b, const Point& p) {
   return to >= from ? at : -at;
 }
 
+// How far p lies off the line a-b, in units of the coordinates' magnitudes: an error of r
+// times the largest |x| of a, b and p in x, and of r times the largest |y| in y, moves p by r
+// of this measure at most. Each coordinate on its own scale: a point on a long segment almost
+// along an axis may be off by much along the segment, but only by the other coordinate's
+// roundings across it. (Zero where the measure is: then p is on the line.)
+double off_line(const Point& a, const Point& b, const Point& p) {
+  const double cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+  const double sx = std::max({std::fabs(a.x), std::fabs(b.x), std::fabs(p.x)});
+  const double sy = std::max({std::fabs(a.y), std::fabs(b.y), std::fabs(p.y)});
+  const double bound = std::fabs(b.x - a.x) * sy + std::fabs(b.y - a.y) * sx;
+  return cross == 0 ? 0 : std::fabs(cross) / bound;
+}
+
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
 // along it, the nearest to its line where there are several (another segment's chain may run
@@ -207,10 +220,7 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       // rounding of its line, is not on it.
       const double at = along_key(pts[a], pts[b], p);
       if (!(at > from - 0x1p-40 * std::fabs(from) && at < to + 0x1p-40 * std::fabs(to))) return false;
-      if (orient2d(pts[a], pts[b], p) == 0) return true;
-      const double cross = (pts[b].x - pts[a].x) * (p.y - pts[a].y) - (pts[b].y - pts[a].y) * (p.x - pts[a].x);
-      const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(pts[a].x), std::fabs(pts[a].y)});
-      return std::fabs(cross) <= (v >= input ? 0x1p-40 : 0x1p-50) * scale * length;
+      return orient2d(pts[a], pts[b], p) == 0 || off_line(pts[a], pts[b], p) <= (v >= input ? 0x1p-40 : 0x1p-50);
     };
     const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
     std::vector<VertexId> todo{a};
@@ -261,10 +271,7 @@ Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, st
   c.small.assign(pts.size(), 0);
   auto corner = [&](VertexId v) {
     if (v < input || adj[v].size() != 2) return true;
-    const Point &u = pts[adj[v][0]], &p = pts[v], &w = pts[adj[v][1]];
-    const double cross = (w.x - u.x) * (p.y - u.y) - (w.y - u.y) * (p.x - u.x);
-    const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(u.x), std::fabs(u.y)});
-    return std::fabs(cross) > 0x1p-40 * scale * std::max(std::fabs(w.x - u.x), std::fabs(w.y - u.y));
+    return off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v]) > 0x1p-40;
   };
   for (VertexId z = 0; z < pts.size(); ++z) {
     if (!corner(z)) continue;

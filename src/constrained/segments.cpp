@@ -13,6 +13,8 @@
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "predicates/predicates.hpp"
 
@@ -101,9 +103,8 @@ class Inserter {
     } else if (m_.fits_on_edge(t, k, x)) {  // in neither triangle by a rounding: on the edge
       v = m_.insert_on_edge(x, t, k);
     } else {  // beside triangles thinner than a rounding: wherever it lies
-      const Cdt::Place far = m_.find(t, x);
-      if (far.kind == Cdt::Place::Outside) throw std::logic_error("ridt: a crossing falls outside the triangulation");
-      v = far.kind == Cdt::Place::Corner ? m_.at(far.t, far.k) : m_.insert(x, far);
+      const auto [y, far] = found_near(t, x);
+      v = far.kind == Cdt::Place::Corner ? m_.at(far.t, far.k) : m_.insert(y, far);
     }
     // u-w, no longer fixed, may be left standing where it is not locally Delaunay (x rounded
     // onto a vertex): flipped as it needs.
@@ -112,6 +113,24 @@ class Inserter {
     insert(v, w);
     insert(a, v);
     return v;
+  }
+
+  // Where x lies in the triangulation (found from triangle t), and x itself; where x lies
+  // outside it, beyond the hull by a rounding (the exact crossing lies on both segments, so
+  // inside), the nearest of the doubles next to x in each coordinate that lies in it.
+  std::pair<Point, Cdt::Place> found_near(std::uint32_t t, const Point& x) const {
+    if (const Cdt::Place at = m_.find(t, x); at.kind != Cdt::Place::Outside) return {x, at};
+    std::vector<Point> next;
+    for (const double dx : {-1, 0, 1})
+      for (const double dy : {-1, 0, 1})
+        if (dx != 0 || dy != 0)
+          next.push_back(
+              {dx == 0 ? x.x : std::nextafter(x.x, dx * HUGE_VAL), dy == 0 ? x.y : std::nextafter(x.y, dy * HUGE_VAL)});
+    auto off = [&](const Point& q) { return std::hypot(q.x - x.x, q.y - x.y); };
+    std::stable_sort(next.begin(), next.end(), [&](const Point& p, const Point& q) { return off(p) < off(q); });
+    for (const Point& y : next)
+      if (const Cdt::Place at = m_.find(t, y); at.kind != Cdt::Place::Outside) return {y, at};
+    throw std::logic_error("ridt: a crossing falls outside the triangulation");
   }
 
   // The first of `ends` within 4 units in the last place of x in each coordinate, or kNone:

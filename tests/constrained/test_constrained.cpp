@@ -134,6 +134,19 @@ TEST(Constrained, ACrossingWhoseSegmentSpansZero) {
   EXPECT_TRUE(check_constrained(with_steiner(pts, t), t.triangles, t.edges).valid);
 }
 
+TEST(Constrained, ACrossingRoundedOutsideTheHullIsMovedIntoIt) {
+  // (6, 6)-(10, 0) meets (10, 1.04e-322)-(0, 10) some 2e-322 left of x = 10, at y = 3.1e-322;
+  // rounded to nearest that is (10, 3.1e-322), beyond the hull's edge from (10, 1.04e-322) to
+  // (6, 6). The point added is the next double to the left, inside.
+  const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 1.04e-322}, {0, 10}, {6, 6}};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, std::vector<VertexId>{4, 1, 2, 3});
+  ASSERT_EQ(t.crossings, 1u);
+  EXPECT_EQ(t.steiner[0].x, std::nextafter(10.0, 0.0));
+  EXPECT_GT(t.steiner[0].y, 2e-322);
+  EXPECT_LT(t.steiner[0].y, 4e-322);
+  EXPECT_TRUE(check_constrained(with_steiner(pts, t), t.triangles, t.edges).valid);
+}
+
 TEST(Constrained, ManyCrossingSegmentsGiveAnExactTriangulation) {
   const std::vector<Point> pts = generate(Distribution::Uniform, 2000, 5);
   std::vector<VertexId> segs;

@@ -401,6 +401,20 @@ TEST(Refine, ACrossingWhereTheBoundaryTurnsEndsAChain) {
   EXPECT_GT(m.t.size(), 5u);
 }
 
+// A domain 1.9 * 10^20 wide, its long sides almost along the x axis, round a square two units
+// wide: check_mesh measures how far a point lies off a segment with each coordinate on its own
+// scale, and so does not take the square's corners, 5 units off the long side that ends at
+// (1, 10), for points on it (on one scale, 2^-50 of 10^20, it took them for that, and found the
+// side not a chain of segment edges).
+TEST(Refine, AGraphFarWiderThanItsDetails) {
+  Pslg g;
+  g.points = {{0, 5}, {192233720368547758070.0, 0}, {1, 10}, {10, 10}, {4, 4}, {6, 4}, {7, 7}, {4, 6}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  g.holes = {{5, 2}};
+  const Meshed m = mesh(g, Quality{});
+  EXPECT_EQ(m.t.crossings, 2u);
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
