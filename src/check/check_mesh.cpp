@@ -70,13 +70,16 @@ double along_key(const Point& a, const Point& b, const Point& p) {
 // times the largest |x| of a, b and p in x, and of r times the largest |y| in y, moves p by r
 // of this measure at most. Each coordinate on its own scale: a point on a long segment almost
 // along an axis may be off by much along the segment, but only by the other coordinate's
-// roundings across it. (Zero where the measure is: then p is on the line.)
+// roundings across it.
 double off_line(const Point& a, const Point& b, const Point& p) {
-  const double cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-  const double sx = std::max({std::fabs(a.x), std::fabs(b.x), std::fabs(p.x)});
-  const double sy = std::max({std::fabs(a.y), std::fabs(b.y), std::fabs(p.y)});
-  const double bound = std::fabs(b.x - a.x) * sy + std::fabs(b.y - a.y) * sx;
-  return cross == 0 ? 0 : std::fabs(cross) / bound;
+  // In long double: the products of doubles neither overflow nor underflow there. A scale
+  // no less than the least normal double: below it roundings are absolute, not relative.
+  using L = long double;
+  const L cross = (L{b.x} - a.x) * (L{p.y} - a.y) - (L{b.y} - a.y) * (L{p.x} - a.x);
+  const L sx = std::max({std::fabs(a.x), std::fabs(b.x), std::fabs(p.x), 0x1p-1022});
+  const L sy = std::max({std::fabs(a.y), std::fabs(b.y), std::fabs(p.y), 0x1p-1022});
+  const L bound = std::fabs(L{b.x} - a.x) * sy + std::fabs(L{b.y} - a.y) * sx;
+  return cross == 0 ? 0 : static_cast<double>(std::fabs(cross) / bound);
 }
 
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,

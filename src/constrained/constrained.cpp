@@ -5,6 +5,7 @@
 // or tiny.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <unordered_map>
 
@@ -41,6 +42,24 @@ void check_input(std::span<const Point> points, std::span<const VertexId> segmen
 }
 
 Point scaled(const Point& p, int scale) { return {std::ldexp(p.x, scale), std::ldexp(p.y, scale)}; }
+
+// Refinement computes lengths, circumcentres and angles in doubles, on the points scaled by a
+// power of two where that is exact: where the box's squared diagonal overflows even so (points
+// near 10^154 and beyond beside others too small to be scaled with them), it cannot.
+void check_refinable(std::span<const Point> points) {
+  const detail::Extent e = detail::extent_of(points);
+  const int k = detail::exact_scale_exponent(e) + 1;
+  const double w = std::ldexp(e.x1 / 2 - e.x0 / 2, k), h = std::ldexp(e.y1 / 2 - e.y0 / 2, k);
+  auto g = [](long double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3Lg", v);
+    return std::string(text);
+  };
+  if (!std::isfinite(w * w + h * h))
+    throw InputError("quality meshing needs the points' box below about 1e154 across (it is " +
+                     g(static_cast<long double>(e.x1) - e.x0) + " by " + g(static_cast<long double>(e.y1) - e.y0) +
+                     ", and coordinates as small as " + g(e.smallest) + " keep it from being scaled exactly)");
+}
 
 // The fixed edges, pairs (a, b) with a < b, sorted. Each is taken once (from the side where it
 // runs a -> b, or the only side), counted, then collected in a pass that appends without a
@@ -126,6 +145,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   check_input(points, segments, domain, quality);
   const bool refined = quality.enabled() ||
       std::any_of(domain.regions.begin(), domain.regions.end(), [](const Region& g) { return g.max_area > 0; });
+  if (refined) check_refinable(points);
   // Refinement's points depend on the order it meets the triangles in: from the canonical
   // order, the same mesh whatever method and threads made the Delaunay triangulation. The
   // constrained triangulation alone is unique whatever the order.

@@ -10,7 +10,7 @@ void Partition<kLattice>::run() {
   const auto t0 = Clock::now();
   for (VertexId b = 0; b < n; b = round_end(b)) {
     const VertexId e = std::min(round_end(b), n);
-    if (e - b < kMinStretch * threads_) {
+    if (!cut_among_threads(e - b, threads_)) {
       std::vector<PutOff> all(e - b);
       for (VertexId p = b; p < e; ++p) all[p - b] = {p, kNoTriangle};
       insert_alone(all);

@@ -41,9 +41,9 @@
 // in the part it gives.
 //
 // The points put off are inserted in a second pass whose regions are made of cells of a grid
-// turned against the first pass's borders, and what is left after it by one thread. Small rounds are inserted by one
-// thread: their mesh is small and their cavities reach the bounding vertices, which belong to
-// no thread.
+// turned against the first pass's borders, and what is left after it by one thread. Small
+// rounds are inserted by one thread (cut_among_threads): their mesh is small and their
+// cavities reach the bounding vertices, which belong to no thread.
 #pragma once
 
 #include <algorithm>
@@ -65,8 +65,16 @@
 
 namespace ridt::detail {
 
-// A round is cut among the threads when each thread gets at least this many points.
+// A round is cut among the threads when each thread gets at least this many points, and the
+// round at least kMinCutRound: a smaller one meets a mesh so small that most of its points
+// would be put off.
 inline constexpr VertexId kMinStretch = 256;
+inline constexpr VertexId kMinCutRound = 4096;
+
+// Whether a round of `points` is cut among `threads` threads (else the calling thread inserts it).
+constexpr bool cut_among_threads(std::uint64_t points, unsigned threads) {
+  return points >= kMinCutRound && points >= std::uint64_t{kMinStretch} * threads;
+}
 // Tries to find a thread's first triangle among its first points before the pass.
 inline constexpr std::size_t kStartTries = 64;
 // A thread that has run out of points asks another for about half of its rest when that is

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -413,6 +414,39 @@ TEST(Refine, AGraphFarWiderThanItsDetails) {
   g.holes = {{5, 2}};
   const Meshed m = mesh(g, Quality{});
   EXPECT_EQ(m.t.crossings, 2u);
+}
+
+// Below the least normal double roundings are absolute steps: points added on the segment
+// along y = 3 * 2^-1074 across a square land a step off it, and check_mesh still takes them as
+// on it (on a scale of their own coordinates, a step is a quarter of them).
+TEST(Refine, PointsAddedOnASegmentAmongSubnormalCoordinates) {
+  const double y = 3 * std::numeric_limits<double>::denorm_min();
+  Pslg g;
+  g.points = {{0, -1}, {1, -1}, {1, 1}, {0, 1}, {0, y}, {1, y}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5};
+  Quality q;
+  q.max_area = 0.01;
+  const Meshed m = mesh(g, q);
+  std::size_t off = 0;
+  for (const Point& p : m.t.steiner) off += p.y != y && std::fabs(p.y) < 1e-300;
+  EXPECT_GT(off, 0u);
+}
+
+// Refinement works in doubles: a box whose squared diagonal overflows even scaled by the power
+// of two that keeps its smallest coordinates exact is refused before any work (the constrained
+// triangulation alone is not); one that scaling brings into range is meshed.
+TEST(Refine, ABoxTooWideToRefineIsRefused) {
+  const std::vector<VertexId> segments = {0, 1, 1, 2, 2, 0};
+  Quality q;
+  q.min_angle = 25;
+  const std::vector<Point> wide = {{0, 0}, {1e308, 0}, {1, 3e45}, {1, 2}};
+  EXPECT_THROW(triangulate_constrained(wide, segments, {}, {}, q), InputError);
+  EXPECT_GT(triangulate_constrained(wide, segments).size(), 0u);
+  const std::vector<Point> scalable = {{0, 0}, {1e308, 0}, {1e300, 3e305}, {1e300, 2e300}};
+  Pslg g;
+  g.points = scalable;
+  g.segments = segments;
+  EXPECT_GT(mesh(g, q).t.steiner.size(), 0u);
 }
 
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
