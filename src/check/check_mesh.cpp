@@ -82,6 +82,15 @@ double off_line(const Point& a, const Point& b, const Point& p) {
   return cross == 0 ? 0 : static_cast<double>(std::fabs(cross) / bound);
 }
 
+// Where p lies along a -> b, in order: along_key, then, where that ties, the coordinate on the
+// other axis, signed the same way (a point a rounding beside an end of a steep segment lies at
+// that end's along_key, yet ahead of it or behind).
+std::pair<double, double> along_keys(const Point& a, const Point& b, const Point& p) {
+  const bool by_x = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y);
+  const double from = by_x ? a.y : a.x, to = by_x ? b.y : b.x, at = by_x ? p.y : p.x;
+  return {along_key(a, b, p), to >= from ? at : -at};
+}
+
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
 // along it, the nearest to its line where there are several (another segment's chain may run
@@ -93,7 +102,8 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
                  std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
                  const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
   constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
-  auto key = [&](VertexId v) { return along_key(pts[a], pts[b], pts[v]); };
+  using Key = std::pair<double, double>;
+  auto key = [&](VertexId v) { return along_keys(pts[a], pts[b], pts[v]); };
   auto off = [&](VertexId v) {
     const Point &p = pts[v], &pa = pts[a], &pb = pts[b];
     return std::fabs((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x));
@@ -103,7 +113,7 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
   };
   // The points near the segment, by key: those with a segment edge within near's x range
   // [x0, x1] (by_x: every such point, by x), so that many segments in holes cost n log n.
-  std::vector<std::pair<double, VertexId>> ahead{{key(b), b}};
+  std::vector<std::pair<Key, VertexId>> ahead{{key(b), b}};
   for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0, VertexId{0}});
        it != by_x.end() && it->first <= x1; ++it)
     if (it->second != b && near(it->second)) ahead.push_back({key(it->second), it->second});

@@ -449,6 +449,23 @@ TEST(Refine, ABoxTooWideToRefineIsRefused) {
   EXPECT_GT(mesh(g, q).t.steiner.size(), 0u);
 }
 
+// A segment from (0, 3.3e64) to (3, 0), steep, is crossed 1.1e-43 beside its top end, at that
+// end's height; the rest of it runs outside the domain. check_mesh follows it from the end to
+// the crossing (ahead along the other axis where the heights tie), then across the gap.
+TEST(Refine, ACrossingBesideASteepSegmentsEndIsAheadOfIt) {
+  Pslg g;
+  g.points = {{0, 33392233720368547758083333333333333333333333333333323333333333330.0},
+              {3, 0},
+              {2, 1},
+              {0, 1},
+              {1, 3e107},
+              {0, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 0, 3};
+  g.holes = {{0.1, 1.9}};
+  const Meshed m = mesh(g, Quality{});
+  EXPECT_EQ(m.t.crossings, 1u);
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
