@@ -406,8 +406,19 @@ PY
 
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
 stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
-expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pS
-stderr_has "'S'"; absent "$dir/q3.ele"
+expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pu
+stderr_has "'u'"; absent "$dir/q3.ele"
+# Triangle's -S: at most N points added by refinement (then a warning), S0 none at all.
+expect 0 "mesh with a Steiner limit" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/s.ele" --switches pq30a0.01S10
+stderr_has "stopped after 10 points"
+[ "$(head -1 "$dir/s.node")" = "18 2 0 1" ] && pass || fail "S10: not the 8 points and 10 added"
+expect 0 "the limited mesh is sound" -- "$ridt" check "$dir/s.node" "$dir/s.ele" --poly "$dir/sq.poly" --edges "$dir/s.edge"
+expect 0 "mesh --max-steiner" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/s2.ele" --quality 30 --max-area 0.01 --max-steiner 10
+cmp -s "$dir/s.ele" "$dir/s2.ele" && cmp -s "$dir/s.node" "$dir/s2.node" && pass || fail "--max-steiner 10 is not S10"
+expect 0 "mesh S0" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/s0.ele" --switches pq30a0.01S0
+[ "$(head -1 "$dir/s0.node")" = "8 2 0 1" ] && pass || fail "S0 added points"
+expect 2 "mesh S with no number" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq30S
+stderr_has "whole number"; absent "$dir/q3.ele"
 expect 2 "mesh YY refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq30YY
 stderr_has "'YY'"; absent "$dir/q3.ele"
 expect 0 "mesh conforming" -- "$ridt" mesh "$dir/l.poly" -o "$dir/d.ele" --switches pcD

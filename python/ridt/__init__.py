@@ -15,7 +15,7 @@ and thread count.
 
 from ._api import available_memory, check, estimate_memory, triangulate
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
-from ._constrained import ConstrainedDelaunay
+from ._constrained import ConstrainedDelaunay, RefinementWarning
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
@@ -35,6 +35,7 @@ __all__ = [
     "LinearNDInterpolator",
     "NaturalNeighborInterpolator",
     "NearestNDInterpolator",
+    "RefinementWarning",
     "Triangulation",
     "available_memory",
     "cached_memory",

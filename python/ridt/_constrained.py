@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import warnings
 from functools import cached_property
 from typing import Any, Tuple
 
@@ -9,6 +10,11 @@ import numpy as np
 
 from . import _api, _core
 from ._delaunay import hull_edges
+
+
+class RefinementWarning(RuntimeWarning):
+    """Quality refinement stopped before the bounds were met (``max_steiner``, or the memory left):
+    the mesh is a valid constrained triangulation, and ``check()`` then tests no bounds."""
 
 
 class ConstrainedDelaunay:
@@ -77,8 +83,8 @@ class ConstrainedDelaunay:
 
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
-                 split_boundary: bool = True, conforming: bool = False, method: str = "auto", threads: int = 1,
-                 seed: int = 1):
+                 split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0, method: str = "auto",
+                 threads: int = 1, seed: int = 1):
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
         if segs.size and segs.max() >= pts.shape[0]:
@@ -89,12 +95,17 @@ class ConstrainedDelaunay:
         zones = np.zeros((0, 4)) if regions is None or np.size(regions) == 0 else np.asarray(regions, dtype=float)
         if zones.ndim != 2 or zones.shape[1] != 4:
             raise ValueError(f"regions must have shape (nregions, 4): x, y, attribute, max_area; got {zones.shape}")
+        if isinstance(max_steiner, bool) or int(max_steiner) != max_steiner or max_steiner < 0:
+            raise ValueError(f"max_steiner must be a whole number >= 0 (0: no limit), got {max_steiner!r}")
         method = _api._choice(method, "method", _api.METHODS)
         tri, edges, added, crossings, attributes = _core.triangulate_constrained(
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
-            bool(conforming))
+            bool(conforming), int(max_steiner))
         self._tri = tri
+        if tri.warning:  # refinement stopped early (max_steiner, or the memory left): the bounds are not kept
+            warnings.warn(f"ridt: {tri.warning}", RefinementWarning, stacklevel=2)
+            min_angle, max_area = 0.0, 0.0
         self.ninput = int(pts.shape[0])
         self._points = np.concatenate([pts, added]) if len(added) else pts
         self.added = added

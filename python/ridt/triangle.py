@@ -9,10 +9,11 @@ and the exterior are removed), ``q[DEG]`` (a quality mesh: no angle below DEG de
 no number follows), ``a[AREA]`` (no triangle larger than AREA; with no number, each region's own
 bound), ``A`` (each triangle's regional attribute, as 'triangle_attributes'), ``c`` (keep the
 convex hull), ``D`` (conforming Delaunay: every edge Delaunay), ``Y`` (no points added on the
-boundary; ``YY``, none on the segments inside it either, is refused), ``e`` (also return every
-edge), ``n``
-(also return the neighbours), ``z`` (indices from 0: always so here) and ``Q``/``V`` (quiet,
-verbose: ignored). The others (``r``, ``S``, ``o2``, ...) are refused with ValueError.
+boundary; ``YY``, none on the segments inside it either, is refused), ``S[N]`` (at most N
+points added by refinement, then a ``ridt.RefinementWarning``; ``S0``, none), ``e`` (also return
+every edge), ``n`` (also return the neighbours), ``z`` (indices from 0: always so here) and
+``Q``/``V`` (quiet, verbose: ignored). The others (``r``, ``o2``, ...) are refused with
+ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
 ``a`` ask). Every triangle is counter-clockwise; indices are 0-based; the points added follow the
 input's in 'vertices'.
@@ -28,14 +29,15 @@ import numpy as np
 from . import _api
 from ._constrained import ConstrainedDelaunay
 
-_TAKEN = set("pqaAcDYenzQV")
+_TAKEN = set("pqaAcDYSenzQV")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
-def _switches(opts: str) -> Tuple[set, float, float, bool]:
-    """The switches without numbers, the angle (-1: none), the area (0: none) and whether the
-    regions' own areas bound them."""
-    flags, angle, area, regional, i = set(), -1.0, 0.0, False, 0
+def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
+    """The switches without numbers, the angle (-1: none), the area (0: none), whether the
+    regions' own areas bound them, and the most points refinement may add ('S': -1 none
+    given)."""
+    flags, angle, area, regional, steiner, i = set(), -1.0, 0.0, False, -1, 0
     while i < len(opts):
         c = opts[i]
         if c not in _TAKEN:
@@ -44,7 +46,7 @@ def _switches(opts: str) -> Tuple[set, float, float, bool]:
             raise ValueError("switch 'YY' is not supported: ridt keeps added points off the boundary ('Y') but "
                              "cannot keep them off the segments inside it")
         flags.add(c)
-        number = _NUMBER.match(opts, i + 1) if c in "qa" else None
+        number = _NUMBER.match(opts, i + 1) if c in "qaS" else None
         if c == "q":
             angle = float(number.group()) if number else 20.0
         elif c == "a":
@@ -52,8 +54,12 @@ def _switches(opts: str) -> Tuple[set, float, float, bool]:
                 area = float(number.group())
             else:
                 regional = True
+        elif c == "S":
+            if not number or float(number.group()) != int(float(number.group())):
+                raise ValueError("switch 'S' needs the most points refinement may add, a whole number")
+            steiner = int(float(number.group()))
         i = number.end() if number else i + 1
-    return flags, angle, area, regional
+    return flags, angle, area, regional, steiner
 
 
 def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
@@ -71,7 +77,9 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     Delaunay triangulation of the input's points."""
     if not isinstance(opts, str):
         raise TypeError("opts must be a string of Triangle's switches")
-    flags, angle, area, regional = _switches(opts)
+    flags, angle, area, regional, steiner = _switches(opts)
+    if steiner == 0:  # Triangle's S0: nothing refined (the crossings, which the graph needs, stay)
+        angle, area, regional = -1.0, 0.0, False
     if "vertices" not in tri:
         raise ValueError("tri needs 'vertices'")
     pts = _api.as_points(tri["vertices"], "vertices", "ridt.triangle")
@@ -84,7 +92,7 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
                               holes=holes, convex_hull="c" in flags or not pslg, regions=regions,
                               min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
-                              conforming="D" in flags)
+                              conforming="D" in flags, max_steiner=max(steiner, 0))
     out: Dict[str, np.ndarray] = {"vertices": cdt.points.copy(), "triangles": cdt.simplices.copy()}
     if "vertex_attributes" in tri:
         out["vertex_attributes"] = _vertex_attributes(tri["vertex_attributes"], pts, cdt)

@@ -220,7 +220,7 @@ void bind_constrained(py::module_& m) {
       [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments, const Points& holes,
          bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical,
          const py::array_t<double, py::array::c_style>& regions, double min_angle, double max_area, bool split_boundary,
-         bool conforming) {
+         bool conforming, std::size_t max_steiner) {
         ridt::Options o;
         o.method = ridt::parse<ridt::Method>(method);
         o.threads = threads;
@@ -242,6 +242,7 @@ void bind_constrained(py::module_& m) {
         q.max_area = max_area;
         q.split_boundary = split_boundary;
         q.conforming = conforming;
+        q.max_steiner = max_steiner;
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
@@ -259,7 +260,7 @@ void bind_constrained(py::module_& m) {
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
       py::arg("threads"), py::arg("seed"), py::arg("canonical"), py::arg("regions"), py::arg("min_angle"),
-      py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"));
+      py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"), py::arg("max_steiner"));
 }
 
 // The validator of constrained triangulations and meshes.

@@ -131,6 +131,18 @@ def test_regions_carry_attributes_and_area_bounds():
     assert c.check()[0]
 
 
+def test_max_steiner_stops_refinement_with_a_warning():
+    g = SQUARE_WITH_HOLE
+    with pytest.warns(ridt.RefinementWarning, match="stopped after 25 points"):
+        c = ridt.ConstrainedDelaunay(g["vertices"], g["segments"], holes=g["holes"], convex_hull=False,
+                                     min_angle=30, max_area=0.0005, max_steiner=25)
+    assert len(c.added) == 25
+    valid, message = c.check()  # a sound constrained triangulation; the bounds, not met, are not tested
+    assert valid, message
+    with pytest.raises(ValueError, match="max_steiner"):
+        ridt.ConstrainedDelaunay(KITE, [(0, 2)], min_angle=30, max_steiner=-1)
+
+
 def test_quality_bounds_are_checked():
     with pytest.raises(ValueError, match="34"):
         ridt.ConstrainedDelaunay(KITE, [(0, 2)], min_angle=40)

@@ -91,11 +91,23 @@ def test_conforming_delaunay():
     assert not ridt.check(pts, triangle.triangulate(tri, "pc")["triangles"])[0]
 
 
+def test_a_steiner_limit():
+    # S10: refinement stops after 10 points, with a warning; S0: nothing refined.
+    tri = {"vertices": SQUARE, "segments": np.array(loop(0))}
+    with pytest.warns(ridt.RefinementWarning, match="stopped after 10 points"):
+        t = triangle.triangulate(tri, "pq30a0.01S10")
+    assert len(t["vertices"]) == len(SQUARE) + 10
+    assert len(triangle.triangulate(tri, "pq30a0.01S0")["vertices"]) == len(SQUARE)
+    assert len(triangle.triangulate(tri, "pq30a0.01S100000")["vertices"]) > len(SQUARE) + 10
+
+
 def test_refused():
     with pytest.raises(ValueError, match="'r' is not supported"):
         triangle.triangulate({"vertices": SQUARE}, "pr")
-    with pytest.raises(ValueError, match="'S' is not supported"):
+    with pytest.raises(ValueError, match="'S' needs"):
         triangle.triangulate({"vertices": SQUARE}, "pS")
+    with pytest.raises(ValueError, match="'o' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "po2")
     with pytest.raises(ValueError, match="needs 'vertices'"):
         triangle.triangulate({}, "")
     with pytest.raises(TypeError):

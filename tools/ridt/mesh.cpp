@@ -22,6 +22,8 @@ struct Args {
   std::string method = "auto";
   unsigned threads = 0;
   double quality = 0, max_area = 0;
+  std::size_t max_steiner = 0;  // 0: no limit
+  bool no_steiner = false;  // S0: no refinement at all (crossings are still added)
   bool quality_given = false;  // --quality or q: the library judges the angle, NaN included
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
        neighbours = false, conforming = false;
@@ -56,7 +58,8 @@ double parse_number(const std::string& text, char sw) {
 // Triangle's switches that ridt takes: p (a .poly: always), q[DEG] (quality, 20 degrees where no
 // number follows), a[AREA] (an area bound; with no number, the regions' own), A (regional
 // attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added on the boundary), n (.neigh),
-// z (number from 0), Q and V (quiet, verbose: ignored); the others are refused by name.
+// z (number from 0), S[N] (at most N points added by refinement), Q and V (quiet, verbose:
+// ignored); the others are refused by name.
 void apply_switches(Args& a) {
   const std::string& s = a.switches;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -73,6 +76,13 @@ void apply_switches(Args& a) {
         a.max_area = parse_number(n, c);
     } else if (c == 'D') {
       a.conforming = true;
+    } else if (c == 'S') {
+      const std::string n = number_after(s, i);
+      const double v = n.empty() ? -1 : parse_number(n, c);
+      if (!(v >= 0 && v == std::floor(v) && v < 0x1p53))
+        throw InputError("switch 'S': give the most points refinement may add, a whole number (got '" + n + "')");
+      a.max_steiner = static_cast<std::size_t>(v);
+      a.no_steiner = a.max_steiner == 0;
     } else if (c == 'Y' && i + 1 < s.size() && s[i + 1] == 'Y') {
       throw InputError("switch 'YY' (no points on any segment) is not supported: 'Y' keeps them off the boundary");
     } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
@@ -83,7 +93,7 @@ void apply_switches(Args& a) {
                       : a.zero_based) = true;
     } else if (c != 'p' && c != 'Q' && c != 'V') {
       throw InputError(std::string("unknown or unsupported switch '") + c +
-                       "' (ridt takes p, q, a, A, c, D, Y, n, z, Q, V)");
+                       "' (ridt takes p, q, a, A, c, D, Y, S, n, z, Q, V)");
     }
   }
 }
@@ -253,6 +263,11 @@ int run(Args a) {
   q.max_area = a.max_area;
   q.split_boundary = !a.no_boundary;
   q.conforming = a.conforming;
+  q.max_steiner = a.max_steiner;
+  if (a.no_steiner) {  // Triangle's -S0: nothing refined (the crossings, which the graph needs, stay)
+    q = Quality{};
+    for (Region& r : domain.regions) r.max_area = 0;
+  }
   const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
   if (t.crossings > 0)
@@ -281,7 +296,9 @@ Command add_mesh(CLI::App& app) {
                  "keep every triangle of the convex hull (Triangle's -c); else what the segments enclose");
   mesh->add_flag("--neighbours", a->neighbours, "write OUT.neigh too (Triangle's -n)");
   mesh->add_flag("--conforming", a->conforming, "conforming Delaunay: every edge Delaunay (Triangle's -D)");
-  mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, D, Y, n, z, Q and V are taken");
+  mesh->add_option("--max-steiner", a->max_steiner,
+                   "stop refining after adding N points, with a warning (Triangle's -S; 0, the default: no limit)");
+  mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, D, Y, S, n, z, Q and V are taken");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
                    "threads of the triangulation and of the output's text (0, the default: all hardware threads)");
