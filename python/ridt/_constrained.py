@@ -9,7 +9,7 @@ from typing import Any, Tuple
 import numpy as np
 
 from . import _api, _core
-from ._delaunay import hull_edges
+from ._delaunay import DegenerateInputWarning, hull_edges
 
 
 class RefinementWarning(RuntimeWarning):
@@ -103,7 +103,9 @@ class ConstrainedDelaunay:
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
             bool(conforming), int(max_steiner))
         self._tri = tri
-        if tri.warning:  # refinement stopped early (max_steiner, or the memory left): the bounds are not kept
+        if tri.warning and len(tri.triangles) == 0:  # too few distinct points, or all collinear
+            warnings.warn(f"ridt: {tri.warning}: the triangulation is empty", DegenerateInputWarning, stacklevel=2)
+        elif tri.warning:  # refinement stopped early (max_steiner, or the memory left): the bounds are not kept
             warnings.warn(f"ridt: {tri.warning}", RefinementWarning, stacklevel=2)
             min_angle, max_area = 0.0, 0.0
         self.ninput = int(pts.shape[0])

@@ -143,6 +143,12 @@ def test_max_steiner_stops_refinement_with_a_warning():
         ridt.ConstrainedDelaunay(KITE, [(0, 2)], min_angle=30, max_steiner=-1)
 
 
+def test_collinear_points_warn_as_delaunay_does():
+    with pytest.warns(ridt.DegenerateInputWarning, match="collinear"):
+        c = ridt.ConstrainedDelaunay([(0, 0), (1, 1), (2, 2)], [(0, 2)], min_angle=30)
+    assert c.nsimplex == 0
+
+
 def test_quality_bounds_are_checked():
     with pytest.raises(ValueError, match="34"):
         ridt.ConstrainedDelaunay(KITE, [(0, 2)], min_angle=40)
