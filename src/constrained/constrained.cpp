@@ -46,8 +46,7 @@ Point scaled(const Point& p, int scale) { return {std::ldexp(p.x, scale), std::l
 // Refinement computes lengths, circumcentres and angles in doubles, on the points scaled by a
 // power of two where that is exact: where the box's squared diagonal overflows even so (points
 // near 10^154 and beyond beside others too small to be scaled with them), it cannot.
-void check_refinable(std::span<const Point> points) {
-  const detail::Extent e = detail::extent_of(points);
+void check_refinable(const detail::Extent& e) {
   const int k = detail::exact_scale_exponent(e) + 1;
   const double w = std::ldexp(e.x1 / 2 - e.x0 / 2, k), h = std::ldexp(e.y1 / 2 - e.y0 / 2, k);
   auto g = [](long double v) {
@@ -145,7 +144,8 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   check_input(points, segments, domain, quality);
   const bool refined = quality.enabled() ||
       std::any_of(domain.regions.begin(), domain.regions.end(), [](const Region& g) { return g.max_area > 0; });
-  if (refined) check_refinable(points);
+  const detail::Extent extent = detail::extent_of(points);
+  if (refined) check_refinable(extent);
   // Refinement's points depend on the order it meets the triangles in: from the canonical
   // order, the same mesh whatever method and threads made the Delaunay triangulation. The
   // constrained triangulation alone is unique whatever the order.
@@ -163,7 +163,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
   for (const Duplicate& d : out.duplicates) kept[d.dropped] = d.kept;
   // The predicates on an exactly scaled copy where the coordinates are huge or tiny.
-  const int scale = detail::exact_scale_exponent(points);
+  const int scale = detail::exact_scale_exponent(extent);
   std::vector<Point> pts(points.begin(), points.end());
   if (scale != 0)
     for (Point& p : pts) p = scaled(p, scale);

@@ -65,7 +65,7 @@ auto Partition<kLattice>::second_pass(std::vector<PutOff> left) -> std::vector<P
   // Runs of cells along the curve, each with about an equal share of the points.
   const std::size_t regions = 2 * std::size_t{threads_};
   owner_.resize(count.size());
-  std::uint64_t before = 0;
+  std::size_t before = 0;
   for (const std::uint16_t c : cells_along_the_curve()) {
     owner_[c] = static_cast<std::uint16_t>(std::min(regions - 1, before * regions / left.size()));
     before += count[c];

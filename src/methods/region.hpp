@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 #include "ridt/ridt.hpp"
 
@@ -82,8 +83,7 @@ struct CellRegion {
   static CellRegion grid(const Point* points, std::uint32_t n, const PutOffs& put_off) {
     double u_lo = HUGE_VAL, u_hi = -HUGE_VAL, w_lo = HUGE_VAL, w_hi = -HUGE_VAL;
     for (const auto& x : put_off) {
-      const Point q = points[x.p];
-      const double u = q.x * kCos + q.y * kSin, w = q.y * kCos - q.x * kSin;
+      const auto [u, w] = turned(points[x.p]);
       u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u), w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
     }
     CellRegion r;
@@ -97,9 +97,12 @@ struct CellRegion {
     return r;
   }
 
+  /// Point q's coordinates (u, w) on the turned axes.
+  static std::pair<double, double> turned(Point q) { return {q.x * kCos + q.y * kSin, q.y * kCos - q.x * kSin}; }
   /// The cell of point q: kSide * row + column, the coordinates clamped into the grid.
   int cell(Point q) const {
-    return kSide * index((q.y * kCos - q.x * kSin - w0) * sw) + index((q.x * kCos + q.y * kSin - u0) * su);
+    const auto [u, w] = turned(q);
+    return kSide * index((w - w0) * sw) + index((u - u0) * su);
   }
   /// t clamped to [0, kSide - 1] and rounded down (NaN: 0).
   static int index(double t) { return static_cast<int>(std::min<double>(kSide - 1, std::max(0.0, t))); }
