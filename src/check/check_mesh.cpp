@@ -275,6 +275,10 @@ struct Chains {
   std::vector<std::pair<VertexId, VertexId>> ends;
   std::vector<std::vector<std::uint32_t>> on;
   std::vector<std::uint8_t> small;  // per vertex: a corner where two chains meet below 60 degrees
+  struct Wedge {
+    VertexId corner, end1, end2;  // two chains from `corner` below 60 degrees, by their other ends
+  };
+  std::vector<Wedge> wedges;
 };
 
 Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input) {
@@ -307,7 +311,10 @@ Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, st
         auto other = [&](std::uint32_t k) { return c.ends[k].first == z ? c.ends[k].second : c.ends[k].first; };
         const Point &o = pts[z], &u = pts[other(c.on[z][i])], &w = pts[other(c.on[z][j])];
         const double ux = u.x - o.x, uy = u.y - o.y, wx = w.x - o.x, wy = w.y - o.y;
-        if (std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) < 3.14159265358979323846 / 3) c.small[z] = 1;
+        if (std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) < 3.14159265358979323846 / 3) {
+          c.small[z] = 1;
+          c.wedges.push_back({z, other(c.on[z][i]), other(c.on[z][j])});
+        }
       }
   return c;
 }
@@ -317,10 +324,32 @@ struct Shape {
   std::size_t excused = 0;
 };
 
+// Whether the circle through a, b and c meets both chains of a wedge (as the straight lines from
+// its corner to their other ends): the triangle is squeezed between them, and its point would
+// split one of them. A circle too large for long double (a, b and c in a line there) meets them.
+bool squeezed(std::span<const Point> pts, const Point& a, const Point& b, const Point& c, const Chains::Wedge& w) {
+  using L = long double;
+  const L bx = b.x - L(a.x), by = b.y - L(a.y), cx = c.x - L(a.x), cy = c.y - L(a.y);
+  const L d = 2 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const L ox = (cy * b2 - by * c2) / d, oy = (bx * c2 - cx * b2) / d, r2 = ox * ox + oy * oy;
+  if (!std::isfinite(r2)) return true;
+  auto meets = [&](VertexId from, VertexId to) {  // the segment from-to, relative to a
+    const L px = pts[from].x - L(a.x), py = pts[from].y - L(a.y), qx = pts[to].x - L(a.x), qy = pts[to].y - L(a.y);
+    const L ex = qx - px, ey = qy - py, e2 = ex * ex + ey * ey;
+    const L s = e2 > 0 ? std::clamp(((ox - px) * ex + (oy - py) * ey) / e2, L(0), L(1)) : L(0);
+    const L dx = px + s * ex - ox, dy = py + s * ey - oy;
+    return dx * dx + dy * dy <= r2;
+  };
+  return meets(w.corner, w.end1) && meets(w.corner, w.end2);
+}
+
 // Angles and areas: a triangle below the angle is excused where one of its vertices lies on a
 // chain of segment edges that ends at an input angle below 60 degrees (refinement stops short
-// of those, as its concentric shells reach them), or where its shortest edge is below 2^-39 of
-// the points' extent (refinement splits no subsegment that short).
+// of those, as its concentric shells reach them), where its circle meets both chains of such an
+// angle (it lies in a wedge thinner than the bound can fill: the area bound or the wedge's far
+// end put points there, and splitting it would cut the chains down to the gap between them),
+// or where its shortest edge is below 2^-39 of the points' extent (refinement splits no
+// subsegment that short).
 Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
                   const Chains& chains, Report& report) {
   Shape shape;
@@ -357,7 +386,12 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
       report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec.max_area);
     if (spec.min_angle > 0 && worst < spec.min_angle * (1 - 1e-9L)) {
       const long double shortest = std::min({length2(v[0], v[1]), length2(v[1], v[2]), length2(v[2], v[0])});
-      if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2)
+      auto in_a_wedge = [&] {
+        return std::any_of(chains.wedges.begin(), chains.wedges.end(),
+                           [&](const Chains::Wedge& w) { return squeezed(pts, a, b, c, w); });
+      };
+      if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2 ||
+          in_a_wedge())
         ++shape.excused;
       else
         report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",

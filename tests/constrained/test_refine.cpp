@@ -466,6 +466,54 @@ TEST(Refine, ACrossingBesideASteepSegmentsEndIsAheadOfIt) {
   EXPECT_EQ(m.t.crossings, 1u);
 }
 
+// A polygon 9.2 * 10^19 long and at most 2 high: its sides meet at 10^-20 radians at the far
+// end, and the area bound puts points between them. Triangles there stay far below 20 degrees
+// with no vertex on the two sides (a triangle that met the bound would be a unit across), and
+// check_mesh excuses them as it does the refiner: their circles meet both sides of that
+// corner. (A fuzzer's input; the hole lies outside the polygon.)
+TEST(Refine, AWedgeTooThinForTheBoundKeepsItsBadTriangles) {
+  Pslg g;
+  g.points = {{0, 0}, {3, 0}, {2, 1}, {0, 1}, {1, 1}, {92233720368547758070.0, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 0, 3};
+  g.holes = {{0.1, 1.9}};
+  Quality q;
+  q.min_angle = 20;
+  q.max_area = 3.7e17;
+  const Meshed m = mesh(g, q);
+  EXPECT_TRUE(m.t.warning.empty()) << m.t.warning;
+  std::set<VertexId> sides;  // the vertices on the two long sides, 4-5 and 5-0
+  for (std::size_t k = 0; k + 1 < m.t.edges.size(); k += 2)
+    for (const VertexId v : {m.t.edges[k], m.t.edges[k + 1]})
+      if (m.all[v].x > 3) sides.insert(v);
+  std::size_t inside = 0;
+  for (std::size_t k = 0; k < m.t.size(); ++k) {
+    const VertexId* v = &m.t.triangles[3 * k];
+    inside += smallest_angle(m.all[v[0]], m.all[v[1]], m.all[v[2]]) < 20 && !sides.count(v[0]) && !sides.count(v[1]) &&
+        !sides.count(v[2]) && m.all[v[0]].x > 3;
+  }
+  EXPECT_GT(inside, 0u);
+}
+
+// The wedge's excuse is its own: a square with a V of two segments inside, 5.7 degrees apart
+// at (5, 8), and a point half a unit above its bottom side, triangulated but not refined, has a
+// triangle of 5.7 degrees on that side whose circle meets neither side of the V: check_mesh
+// refuses it at 20 degrees.
+TEST(Refine, ABadTriangleAwayFromASmallAngleIsNoWedges) {
+  const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 0.5}, {5, 8}, {8, 8.2}, {8, 7.9}};
+  const std::vector<VertexId> segments = {0, 1, 1, 2, 2, 3, 3, 0, 5, 6, 5, 7};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, segments);
+  MeshSpec spec;
+  spec.edges = t.edges;
+  spec.segments = segments;
+  spec.input_points = pts.size();
+  spec.min_angle = 20;
+  const CheckResult r = check_mesh(pts, t.triangles, spec);
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.message.find("no small input angle beside it"), std::string::npos) << r.message;
+  spec.min_angle = 5;
+  EXPECT_TRUE(check_mesh(pts, t.triangles, spec).valid) << check_mesh(pts, t.triangles, spec).message;
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
