@@ -14,6 +14,10 @@ namespace ridt::detail {
 Cdt::Cdt(std::vector<Point> points, Triangulation& t)
     : pts(std::move(points)), tris(std::move(t.triangles)), nbrs(std::move(t.neighbors)) {
   fixed.assign(tris.size(), 0);
+  index_corners();
+}
+
+void Cdt::index_corners() {
   corner.assign(pts.size(), kNone);
   for (std::size_t k = 0; k < tris.size(); ++k) corner[tris[k]] = static_cast<std::uint32_t>(k);
 }

@@ -95,6 +95,8 @@ class Cdt {
   /// The slot (3 t + k) of an edge a-b, as a triangle at a sees it; kNone when none.
   std::uint32_t find_edge(VertexId a, VertexId b) const;
   std::size_t size() const { return tris.size() / 3; }
+  /// Each vertex's corner set again from the triangles (kNone for a vertex in none).
+  void index_corners();
 
   std::vector<Point> pts;  ///< the points, then those added
   std::vector<VertexId> tris;

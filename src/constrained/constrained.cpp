@@ -177,6 +177,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
   if (refined) {
     const auto first = static_cast<VertexId>(m.pts.size());
+    if (carved) m.index_corners();
     const std::vector<VertexId> pinched = detail::split_pinches(m);  // walks round a vertex see all
     detail::Refinement r{quality.min_angle,
                          std::ldexp(quality.max_area, 2 * scale),

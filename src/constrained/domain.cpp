@@ -58,7 +58,8 @@ void flood(const Cdt& m, std::uint32_t seed, std::vector<T>& label, T mark) {
   }
 }
 
-// Triangles whose `gone` is set removed; the rest renumbered in order.
+// Triangles whose `gone` is set removed; the rest renumbered in order. The vertices' corners are
+// left unset: only refinement walks round vertices after this (Cdt::index_corners).
 void remove(Cdt& m, const std::vector<std::uint8_t>& gone) {
   const std::size_t nt = m.size();
   std::vector<std::int32_t> id(nt, -1);
@@ -77,7 +78,6 @@ void remove(Cdt& m, const std::vector<std::uint8_t>& gone) {
   }
   m.tris.resize(3 * kept), m.nbrs.resize(3 * kept), m.fixed.resize(3 * kept);
   std::fill(m.corner.begin(), m.corner.end(), Cdt::kNone);
-  for (std::uint32_t k = 0; k < m.tris.size(); ++k) m.corner[m.tris[k]] = k;
 }
 
 }  // namespace
@@ -124,8 +124,7 @@ std::vector<VertexId> split_pinches(Cdt& m) {
       t = m.nbrs[3 * t + (i + 1) % 3];
     }
   }
-  if (!stands_for.empty())
-    for (std::uint32_t k = 0; k < m.tris.size(); ++k) m.corner[m.tris[k]] = k;
+  if (!stands_for.empty()) m.index_corners();
   return stands_for;
 }
 
@@ -135,8 +134,7 @@ void merge_pinches(Cdt& m, VertexId first, const std::vector<VertexId>& stands_f
   for (VertexId& v : m.tris)
     if (v >= first) v = v < first + count ? stands_for[v - first] : v - count;
   m.pts.erase(m.pts.begin() + first, m.pts.begin() + first + count);
-  m.corner.assign(m.pts.size(), Cdt::kNone);
-  for (std::uint32_t k = 0; k < m.tris.size(); ++k) m.corner[m.tris[k]] = k;
+  m.index_corners();
 }
 
 }  // namespace ridt::detail
