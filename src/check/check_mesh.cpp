@@ -66,18 +66,26 @@ double along_key(const Point& a, const Point& b, const Point& p) {
   return to >= from ? at : -at;
 }
 
-// How far p lies off the line a-b, in units of the coordinates' magnitudes: an error of r
-// times the largest |x| of a, b and p in x, and of r times the largest |y| in y, moves p by r
-// of this measure at most. Each coordinate on its own scale: a point on a long segment almost
-// along an axis may be off by much along the segment, but only by the other coordinate's
-// roundings across it.
+// How far p lies off the line a-b, in units of the coordinates' magnitudes where p lies along
+// it: an error of r times |x| in x and r times |y| in y, those of p or, where larger, those a
+// and b's give by interpolation at p's place along a-b, moves p by r of this measure at most.
+// (A point split off the segment or its pieces, or rounded from a crossing, is off the line by
+// the roundings of the points it was computed from, which interpolate so: on a segment from
+// near 10^19 to (10, 0), a point a few units from (10, 0) is far off it.) Each coordinate on
+// its own scale: a point on a long segment almost along an axis may be off by much along the
+// segment, but only by the other coordinate's roundings across it.
 double off_line(const Point& a, const Point& b, const Point& p) {
   // In long double: the products of doubles neither overflow nor underflow there. A scale
   // no less than the least normal double: below it roundings are absolute, not relative.
   using L = long double;
-  const L cross = (L{b.x} - a.x) * (L{p.y} - a.y) - (L{b.y} - a.y) * (L{p.x} - a.x);
-  const L sx = std::max({std::fabs(a.x), std::fabs(b.x), std::fabs(p.x), 0x1p-1022});
-  const L sy = std::max({std::fabs(a.y), std::fabs(b.y), std::fabs(p.y), 0x1p-1022});
+  const L ex = L{b.x} - a.x, ey = L{b.y} - a.y;
+  const L cross = ex * (L{p.y} - a.y) - ey * (L{p.x} - a.x);
+  const L e2 = ex * ex + ey * ey;
+  const L t = e2 > 0 ? std::clamp((ex * (L{p.x} - a.x) + ey * (L{p.y} - a.y)) / e2, L(0), L(1)) : L(0);
+  auto scale = [&](double pa, double pb, double pp) {
+    return std::max({(1 - t) * std::fabs(pa) + t * std::fabs(pb), L(std::fabs(pp)), L(0x1p-1022)});
+  };
+  const L sx = scale(a.x, b.x, p.x), sy = scale(a.y, b.y, p.y);
   const L bound = std::fabs(L{b.x} - a.x) * sy + std::fabs(L{b.y} - a.y) * sx;
   return cross == 0 ? 0 : static_cast<double>(std::fabs(cross) / bound);
 }
@@ -233,7 +241,10 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       // rounding of its line, is not on it.
       const double at = along_key(pts[a], pts[b], p);
       if (!(at > from - 0x1p-40 * std::fabs(from) && at < to + 0x1p-40 * std::fabs(to))) return false;
-      return orient2d(pts[a], pts[b], p) == 0 || off_line(pts[a], pts[b], p) <= (v >= input ? 0x1p-40 : 0x1p-50);
+      // An added point within 2^-40 (roundings upon roundings); an input point on it exactly,
+      // or where a crossing within a few units in the last place of its coordinates was merged
+      // into it: within 2^-49 (the merge's 4 units, the crossing's rounding).
+      return orient2d(pts[a], pts[b], p) == 0 || off_line(pts[a], pts[b], p) <= (v >= input ? 0x1p-40 : 0x1p-49);
     };
     const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
     std::vector<VertexId> todo{a};

@@ -319,10 +319,9 @@ TEST(Constrained, HoleSeedsOnAnEdgeOrAVertexEmptyEverySide) {
   EXPECT_EQ(holed(true, {{0, 0}, {5, 5}, {6, 7}}), 0u);
 }
 
-// A segment 1.9e20 long whose end (10, 10) lies beside a square (4, 4)-(6, 6): the square's
-// corners are within that segment's rounding of its line (2^-50 of 1.9e20 is 10^5 units), but
-// beyond its end, so check_mesh does not take them for points on it. The hole takes all but
-// the square, and the long segment runs through it whole.
+// A segment 1.9e20 long whose end (10, 10) lies beside a square (4, 4)-(6, 6), a few units off
+// its line and beyond that end: check_mesh does not take the square's corners for points on it.
+// The hole takes all but the square, and the long segment runs through it whole.
 TEST(Constrained, ASquareBesideTheEndOfAVeryLongSegment) {
   const std::vector<Point> pts = {{0, 0}, {1.9e20, 0}, {10, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
   const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 6, 6, 3};
@@ -334,6 +333,34 @@ TEST(Constrained, ASquareBesideTheEndOfAVeryLongSegment) {
   MeshSpec spec;
   spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
   const CheckResult verdict = check_mesh(pts, t.triangles, spec);
+  EXPECT_TRUE(verdict.valid) << verdict.message;
+}
+
+// A fuzzer's graph: the segment from (9.2e18, 9.2e18) to (10, 0) runs outside the domain (its
+// outline is open there), past the vertices (0, 10), (6, 6) and the crossing (4, 10), which lie
+// 4 to 14 units off its line: within 2^-50 of its far end's coordinates, but points on it there
+// are computed to the roundings of coordinates near 10, so check_mesh takes none of them for a
+// point on it, and finds the segment a gap through no triangle.
+TEST(Constrained, PointsBesideTheSmallEndOfAHugeSegmentAreNotOnIt) {
+  const std::vector<Point> pts = {{9223372036427387904.0, 9223372036747855872.0},
+                                  {10, 0},
+                                  {10, 10},
+                                  {0, 10},
+                                  {4, 4},
+                                  {6, 4},
+                                  {6, 6},
+                                  {5, 79223372036854775807.0}};
+  const std::vector<VertexId> segs = {0, 1, 3, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  Domain domain;
+  domain.convex_hull = false;
+  domain.holes = {{0, 5}};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+  EXPECT_EQ(t.crossings, 4u);
+  std::vector<Point> all = pts;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  MeshSpec spec;
+  spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
+  const CheckResult verdict = check_mesh(all, t.triangles, spec);
   EXPECT_TRUE(verdict.valid) << verdict.message;
 }
 
