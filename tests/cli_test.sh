@@ -5,9 +5,7 @@ set -u
 ridt=$1
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-fails=0 passes=0
-pass() { passes=$((passes + 1)); }
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. "$(dirname "$0")/shell_helpers.sh"
 # expect STATUS DESCRIPTION -- command...
 expect() {
   local want=$1 what=$2; shift 3
@@ -325,16 +323,7 @@ absent "$dir/never.ele"
 # SIGTERM while a large file is written (its temporary file seen): the tool ends by that signal,
 # and neither the file nor its temporary name is left (the unit tests raise each signal mid-file
 # in a writer; this is the tool's).
-"$ridt" generate -n 10000000 -o "$dir/killed.txt" &
-term_pid=$!
-seen=0
-for _ in $(seq 1000); do
-  if compgen -G "$dir/killed.txt.tmp-*" >/dev/null; then seen=1; break; fi
-  sleep 0.01
-done
-kill -TERM "$term_pid"
-wait "$term_pid"
-term_rc=$?
+terminate_once "$dir/killed.txt.tmp-*" -- "$ridt" generate -n 10000000 -o "$dir/killed.txt"
 [ "$seen" = 1 ] && pass || fail "SIGTERM: the temporary file never appeared"
 [ "$term_rc" = 143 ] && pass || fail "SIGTERM: exit $term_rc, wanted 143"
 left=$(find "$dir" -name 'killed.txt*' | wc -l)

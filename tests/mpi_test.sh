@@ -16,9 +16,7 @@ export OMPI_MCA_btl=self,vader OMPI_MCA_pml=ob1
 # allocations to the end and are unloaded before the leak check, which then cannot tell them
 # from ours (their frames have no module left to match a suppression).
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
-fails=0 passes=0
-pass() { passes=$((passes + 1)); }
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. "$(dirname "$0")/shell_helpers.sh"
 run() { timeout 120 mpirun -np "$1" --oversubscribe "$mpi" "${@:2}"; }  # a hang fails
 
 # The point sets, as .bin files.

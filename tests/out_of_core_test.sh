@@ -8,9 +8,7 @@ set -u
 ridt=$1 fixtures=$2
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-fails=0 passes=0
-pass() { passes=$((passes + 1)); }
-fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+. "$(dirname "$0")/shell_helpers.sh"
 
 for d in uniform normal grid clusters; do
   "$ridt" generate --dist "$d" -n 30000 --seed 5 -o "$dir/$d.bin" || fail "generate $d"
@@ -78,16 +76,8 @@ EOF
 # SIGTERM once the first part is written: the tool ends by that signal and leaves no part, no
 # temporary file and no index (the parts stand only together, named by the index).
 mkdir -p "$dir/term"
-"$ridt" triangulate "$dir/large.bin" -o "$dir/term/k.parts" --out-of-core --memory-limit 42M --threads 1 &
-term_pid=$!
-seen=0
-for _ in $(seq 2000); do
-  if compgen -G "$dir/term/k.0-of-*.bin" >/dev/null; then seen=1; break; fi
-  sleep 0.005
-done
-kill -TERM "$term_pid"
-wait "$term_pid"
-term_rc=$?
+terminate_once "$dir/term/k.0-of-*.bin" -- \
+  "$ridt" triangulate "$dir/large.bin" -o "$dir/term/k.parts" --out-of-core --memory-limit 42M --threads 1
 [ "$seen" = 1 ] && pass || fail "SIGTERM: no part appeared"
 [ "$term_rc" = 143 ] && pass || fail "SIGTERM: exit $term_rc, wanted 143"
 [ -z "$(ls -A "$dir/term")" ] && pass || fail "SIGTERM left $(ls "$dir/term")"
