@@ -69,21 +69,24 @@ double along_key(const Point& a, const Point& b, const Point& p) {
 // How far p lies off the line a-b, in units of the coordinates' magnitudes where p lies along
 // it: an error of r times |x| in x and r times |y| in y, those of p or, where larger, those a
 // and b's give by interpolation at p's place along a-b, moves p by r of this measure at most.
-// (A point split off the segment or its pieces, or rounded from a crossing, is off the line by
-// the roundings of the points it was computed from, which interpolate so: on a segment from
-// near 10^19 to (10, 0), a point a few units from (10, 0) is far off it.) Each coordinate on
-// its own scale: a point on a long segment almost along an axis may be off by much along the
-// segment, but only by the other coordinate's roundings across it.
-double off_line(const Point& a, const Point& b, const Point& p) {
-  // In long double: the products of doubles neither overflow nor underflow there. A scale
-  // no less than the least normal double: below it roundings are absolute, not relative.
+// (A point computed on the segment, on its pieces or at its crossings is off the line by the
+// roundings of the points it was computed from, which interpolate so: on a segment from near
+// 10^19 to (10, 0), a point a few units from (10, 0) is far off it.) Each coordinate on its own
+// scale: a point on a long segment almost along an axis may be off by much along the segment,
+// but only by the other coordinate's roundings across it. No scale is below `least`: where the
+// mesher worked in coordinates scaled by a power of two, its roundings below the least normal
+// double there are absolute, and `least` is that double in these coordinates.
+double off_line(const Point& a, const Point& b, const Point& p, long double least) {
+  // The cross product from the end nearer p: from the far one, its two terms could be some
+  // 10^20 times it, and long double's roundings of them as large as the measure itself.
   using L = long double;
   const L ex = L{b.x} - a.x, ey = L{b.y} - a.y;
-  const L cross = ex * (L{p.y} - a.y) - ey * (L{p.x} - a.x);
   const L e2 = ex * ex + ey * ey;
   const L t = e2 > 0 ? std::clamp((ex * (L{p.x} - a.x) + ey * (L{p.y} - a.y)) / e2, L(0), L(1)) : L(0);
+  const Point& n = t < 0.5 ? a : b;
+  const L cross = ex * (L{p.y} - n.y) - ey * (L{p.x} - n.x);
   auto scale = [&](double pa, double pb, double pp) {
-    return std::max({(1 - t) * std::fabs(pa) + t * std::fabs(pb), L(std::fabs(pp)), L(0x1p-1022)});
+    return std::max({(1 - t) * std::fabs(pa) + t * std::fabs(pb), L(std::fabs(pp)), least});
   };
   const L sx = scale(a.x, b.x, p.x), sy = scale(a.y, b.y, p.y);
   const L bound = std::fabs(L{b.x} - a.x) * sy + std::fabs(L{b.y} - a.y) * sx;
@@ -202,7 +205,7 @@ void check_gaps(std::span<const Point> pts, std::span<const VertexId> tris, cons
 // points on its line up to a few units in the last place (a crossing rounded onto one), added
 // points up to the roundings that splits of splits gather (2^-40 of the coordinates: a point
 // on another segment is farther).
-void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
+void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec, long double least,
                   const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report) {
   const auto adj = adjacency(pts.size(), spec.edges);
   const std::size_t input = spec.input_points == 0 ? pts.size() : spec.input_points;
@@ -244,7 +247,7 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       // An added point within 2^-40 (roundings upon roundings); an input point on it exactly,
       // or where a crossing within a few units in the last place of its coordinates was merged
       // into it: within 2^-49 (the merge's 4 units, the crossing's rounding).
-      return orient2d(pts[a], pts[b], p) == 0 || off_line(pts[a], pts[b], p) <= (v >= input ? 0x1p-40 : 0x1p-49);
+      return orient2d(pts[a], pts[b], p) == 0 || off_line(pts[a], pts[b], p, least) <= (v >= input ? 0x1p-40 : 0x1p-49);
     };
     const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
     std::vector<VertexId> todo{a};
@@ -292,14 +295,14 @@ struct Chains {
   std::vector<Wedge> wedges;
 };
 
-Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input) {
+Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input, long double least) {
   const auto adj = adjacency(pts.size(), edges);
   Chains c;
   c.on.resize(pts.size());
   c.small.assign(pts.size(), 0);
   auto corner = [&](VertexId v) {
     if (v < input || adj[v].size() != 2) return true;
-    return off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v]) > 0x1p-40;
+    return off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v], least) > 0x1p-40;
   };
   for (VertexId z = 0; z < pts.size(); ++z) {
     if (!corner(z)) continue;
@@ -443,15 +446,18 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
   std::vector<std::uint8_t> on_boundary(pts.size(), 0);
   for (const Edge& e : boundary) on_boundary[e.first] = on_boundary[e.second] = 1;
   for (VertexId v = 0; v < pts.size(); ++v) on_boundary[v] |= !used[v];
-  check_chains(pts, tris, spec, used, on_boundary, report);
+  // The least normal double in the coordinates the mesher worked in (the input points scaled
+  // by a power of two where they are huge or tiny), in these coordinates (scaled or not).
+  const std::size_t input_points = spec.input_points == 0 ? pts.size() : std::min(spec.input_points, pts.size());
+  const int here = scaled.empty() ? 0 : detail::exact_scale_exponent(input);
+  const long double least = std::ldexp(0x1p-1022L, here - detail::exact_scale_exponent(input.first(input_points)));
+  check_chains(pts, tris, spec, least, used, on_boundary, report);
   std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
-  if (const int k = detail::exact_scale_exponent(input); k != 0 && !scaled.empty())
-    for (Point& h : holes) h = {std::ldexp(h.x, k), std::ldexp(h.y, k)};
+  if (here != 0)
+    for (Point& h : holes) h = {std::ldexp(h.x, here), std::ldexp(h.y, here)};
   check_holes(pts, tris, holes, report);
-  const Shape shape = check_shape(
-      input, tris, spec, chains_of(pts, spec.edges, spec.input_points == 0 ? pts.size() : spec.input_points), report);
+  const Shape shape = check_shape(input, tris, spec, chains_of(pts, spec.edges, input_points, least), report);
   std::ostringstream s;
-  const std::size_t input_points = spec.input_points == 0 ? pts.size() : spec.input_points;
   s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
     << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()
     << " edges, every other edge locally Delaunay; smallest angle " << static_cast<double>(shape.smallest)

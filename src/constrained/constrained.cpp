@@ -174,10 +174,9 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   std::vector<Region> regions = domain.regions;
   for (Point& h : holes) h = scaled(h, scale);
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
-  const bool carved = detail::carve(m, holes, regions, domain.convex_hull);
+  const bool carved = detail::carve(m, holes, regions, domain.convex_hull, refined);
   if (refined) {
     const auto first = static_cast<VertexId>(m.pts.size());
-    if (carved) m.index_corners();
     const std::vector<VertexId> pinched = detail::split_pinches(m);  // walks round a vertex see all
     detail::Refinement r{quality.min_angle,
                          std::ldexp(quality.max_area, 2 * scale),

@@ -17,14 +17,9 @@ std::optional<Cdt::Place> place(const Cdt& m, const Point& q, std::uint32_t& fro
   return at;
 }
 
-// The triangle that holds q (inside or on its boundary), or -1.
-std::int64_t holding(const Cdt& m, const Point& q, std::uint32_t& from) {
-  const std::optional<Cdt::Place> at = place(m, q, from);
-  return at ? std::int64_t{at->t} : -1;
-}
-
 // The triangles whose closure holds q: one, or two beside an edge, or every one about a vertex
-// (a hole's seed there empties them all: the validator finds no seed inside or on a triangle).
+// (a hole's seed there empties them all: the validator finds no seed inside or on a triangle;
+// a region's marks them all, whichever the walk to it met first).
 std::vector<std::uint32_t> holding_all(const Cdt& m, const Point& q, std::uint32_t& from) {
   std::vector<std::uint32_t> out;
   const std::optional<Cdt::Place> at = place(m, q, from);
@@ -40,27 +35,29 @@ std::vector<std::uint32_t> holding_all(const Cdt& m, const Point& q, std::uint32
 }
 
 // Every triangle reached from `seed` across edges that are not fixed, given `mark` (those
-// whose mark is already `mark` are not entered again).
+// whose mark is already `mark` are not entered again). Breadth first: a triangle's links are
+// asked for when it is queued, and read some way on, when its turn comes.
 template <class T>
 void flood(const Cdt& m, std::uint32_t seed, std::vector<T>& label, T mark) {
   if (label[seed] == mark) return;
-  std::vector<std::uint32_t> todo{seed};
+  std::vector<std::uint32_t> queue{seed};
   label[seed] = mark;
-  while (!todo.empty()) {
-    const std::uint32_t t = todo.back();
-    todo.pop_back();
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const std::uint32_t t = queue[next];
     for (int j = 0; j < 3; ++j) {
       const std::int32_t n = m.nbrs[3 * t + j];
       if (n < 0 || m.fixed[3 * t + j] || label[n] == mark) continue;
       label[n] = mark;
-      todo.push_back(static_cast<std::uint32_t>(n));
+      __builtin_prefetch(&m.nbrs[3 * static_cast<std::size_t>(n)]);
+      __builtin_prefetch(&m.fixed[3 * static_cast<std::size_t>(n)]);
+      queue.push_back(static_cast<std::uint32_t>(n));
     }
   }
 }
 
-// Triangles whose `gone` is set removed; the rest renumbered in order. The vertices' corners are
-// left unset: only refinement walks round vertices after this (Cdt::index_corners).
-void remove(Cdt& m, const std::vector<std::uint8_t>& gone) {
+// Triangles whose `gone` is set removed; the rest renumbered in order. The vertices' corners
+// are set again where `corners` asks it, else left unset.
+void remove(Cdt& m, const std::vector<std::uint8_t>& gone, bool corners) {
   const std::size_t nt = m.size();
   std::vector<std::int32_t> id(nt, -1);
   std::uint32_t kept = 0;
@@ -77,12 +74,16 @@ void remove(Cdt& m, const std::vector<std::uint8_t>& gone) {
     }
   }
   m.tris.resize(3 * kept), m.nbrs.resize(3 * kept), m.fixed.resize(3 * kept);
-  std::fill(m.corner.begin(), m.corner.end(), Cdt::kNone);
+  if (corners)
+    m.index_corners();
+  else
+    std::fill(m.corner.begin(), m.corner.end(), Cdt::kNone);
 }
 
 }  // namespace
 
-bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull) {
+bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull,
+           bool corners) {
   const std::size_t nt = m.size();
   std::vector<std::uint8_t> gone(nt, 0);
   for (std::uint32_t t = 0; t < nt && !convex_hull; ++t)
@@ -92,12 +93,12 @@ bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& r
   for (const Point& h : holes)
     for (const std::uint32_t t : holding_all(m, h, from)) flood<std::uint8_t>(m, t, gone, 1);
   const bool removed = std::find(gone.begin(), gone.end(), 1) != gone.end();
-  if (removed) remove(m, gone);
+  if (removed) remove(m, gone, corners || !regions.empty());  // a region's seed at a vertex walks round it
   if (regions.empty()) return removed;
   m.region.assign(m.size(), -1);
   for (std::size_t r = 0; r < regions.size(); ++r)
-    if (const std::int64_t t = holding(m, regions[r].seed, from); t >= 0)
-      flood<std::int32_t>(m, static_cast<std::uint32_t>(t), m.region, static_cast<std::int32_t>(r));
+    for (const std::uint32_t t : holding_all(m, regions[r].seed, from))
+      flood<std::int32_t>(m, t, m.region, static_cast<std::int32_t>(r));
   return removed;
 }
 

@@ -12,9 +12,10 @@ namespace ridt::detail {
 /// Removes from m the triangles outside `domain` (holes and, without convex_hull, the
 /// exterior: flooded across every edge that is not fixed), then marks each region's
 /// triangles (m.region; left empty without regions). Seeds are in m's (scaled) coordinates.
-/// Renumbers the triangles that stay in their order; returns whether any were removed, and
-/// where it did, leaves every vertex's corner unset (Cdt::index_corners sets them again).
-bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull);
+/// Renumbers the triangles that stay in their order; returns whether any were removed. Where
+/// it did, the vertices' corners are set again only where `corners` asks it (what follows
+/// walks round vertices), else left unset (Cdt::index_corners sets them).
+bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull, bool corners);
 
 /// Where the domain touches itself at a vertex (two holes, or a hole and the outline, meeting
 /// at a corner), the triangles about it make fans that no edge joins, and a walk round it

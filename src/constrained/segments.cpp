@@ -265,15 +265,22 @@ class Inserter {
 void insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const VertexId> kept) {
   Inserter inserter(m);
   // A segment's walk begins at the triangles about its first vertex, which lie wherever the
-  // Delaunay triangulation put them: those of the segment some way on are asked for ahead.
-  constexpr std::size_t kAhead = 8;
+  // Delaunay triangulation put them: those of the segments some way on are asked for ahead, in
+  // two stages, the triangle at the vertex and then, once it is at hand, its neighbours.
+  constexpr std::size_t kFar = 16, kNear = 8;
   const std::size_t count = segments.size() / 2;
+  auto slot_of = [&](std::size_t s) { return s < count ? m.corner[kept[segments[2 * s]]] : Cdt::kNone; };
   for (std::size_t s = 0; s < count; ++s) {
-    if (s + kAhead < count)
-      if (const std::uint32_t c = m.corner[kept[segments[2 * (s + kAhead)]]]; c != Cdt::kNone) {
-        __builtin_prefetch(&m.tris[c - c % 3]);
-        __builtin_prefetch(&m.nbrs[c - c % 3]);
-      }
+    if (const std::uint32_t c = slot_of(s + kFar); c != Cdt::kNone) {
+      __builtin_prefetch(&m.tris[c - c % 3]);
+      __builtin_prefetch(&m.nbrs[c - c % 3]);
+    }
+    if (const std::uint32_t c = slot_of(s + kNear); c != Cdt::kNone)
+      for (std::uint32_t j = c - c % 3; j < c - c % 3 + 3; ++j)
+        if (const std::int32_t n = m.nbrs[j]; n >= 0) {
+          __builtin_prefetch(&m.tris[3 * static_cast<std::size_t>(n)]);
+          __builtin_prefetch(&m.nbrs[3 * static_cast<std::size_t>(n)]);
+        }
     const VertexId a = kept[segments[2 * s]], b = kept[segments[2 * s + 1]];
     if (a != b) inserter.insert(a, b);
   }

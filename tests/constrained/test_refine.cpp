@@ -237,6 +237,32 @@ TEST(Refine, RegionsCarryAttributesAndAreaBounds) {
   }
 }
 
+// A region's seed on a segment, or at a vertex, marks the triangles on every side of it, as a
+// hole's empties them, whichever the walk to it met first; a region given after it marks its
+// own side over that.
+TEST(Refine, ARegionSeedOnASegmentMarksEverySide) {
+  Pslg g;
+  g.points = {{0, 0}, {2, 0}, {2, 1}, {0, 1}, {1, 0}, {1, 1}};
+  g.segments = {0, 4, 4, 1, 1, 2, 2, 5, 5, 3, 3, 0, 4, 5};
+  auto attributes = [&](std::vector<Region> regions) {
+    const Meshed m = mesh(g, {}, false, std::move(regions));
+    std::set<std::pair<bool, double>> sides;  // (left of x = 1, attribute)
+    for (std::size_t k = 0; k < m.t.size(); ++k) {
+      const VertexId* v = &m.t.triangles[3 * k];
+      sides.insert({m.all[v[0]].x + m.all[v[1]].x + m.all[v[2]].x < 3, m.t.attributes.at(k)});
+    }
+    return sides;
+  };
+  using Sides = std::set<std::pair<bool, double>>;
+  EXPECT_EQ(attributes({{{1, 0.5}, 7, 0}}), (Sides{{true, 7}, {false, 7}}));
+  EXPECT_EQ(attributes({{{1, 1}, 7, 0}}), (Sides{{true, 7}, {false, 7}}));
+  EXPECT_EQ(attributes({{{1, 0.5}, 7, 0}, {{1.5, 0.5}, -2, 0}}), (Sides{{true, 7}, {false, -2}}));
+  // A point beside the rectangle: the triangles between it and the rectangle are carved away
+  // first, and the seed at a vertex still finds every triangle about it.
+  g.points.push_back({3, 0.5});
+  EXPECT_EQ(attributes({{{1, 1}, 7, 0}}), (Sides{{true, 7}, {false, 7}}));
+}
+
 // A region boundary with points a unit in the last place beside it: a subsegment's split point
 // there may not lie on it, and the point is then added in a triangle beside it, the flips
 // about it free to cross the old subsegment. The triangles on each side of the segments keep
@@ -512,6 +538,26 @@ TEST(Refine, ABadTriangleAwayFromASmallAngleIsNoWedges) {
   EXPECT_NE(r.message.find("no small input angle beside it"), std::string::npos) << r.message;
   spec.min_angle = 5;
   EXPECT_TRUE(check_mesh(pts, t.triangles, spec).valid) << check_mesh(pts, t.triangles, spec).message;
+}
+
+// Segments from a vertex near 10^22 or 10^308 to one near 1, refined: the points split off
+// them near their small ends are computed from far larger coordinates, or, in the coordinates
+// the mesher scales huge ones into, are subnormal there, and check_mesh still takes them for
+// points on the segment (it measures each point from the segment's nearer end, and no finer
+// than the mesher's least normal double). Fuzzers' graphs.
+TEST(Refine, PointsSplitNearTheSmallEndOfAHugeSegment) {
+  Pslg g;
+  g.points = {{33, 3.3333333333333333e22}, {3, 0}, {2, 1}, {0, 1}, {1, 2}, {0, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 0, 3};
+  g.holes = {{0.1, 1.9}};
+  Quality q;
+  q.min_angle = 25;
+  EXPECT_GT(mesh(g, q).t.steiner.size(), 50u);
+  Pslg wide;
+  wide.points = {{0, 0}, {10, 1e308}, {10, 429496729510}, {0, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  wide.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
+  wide.holes = {{5, 5}};
+  EXPECT_GT(mesh(wide, q).t.steiner.size(), 30u);
 }
 
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
