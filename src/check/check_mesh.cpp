@@ -2,6 +2,7 @@
 // what it was asked: its segment edges, the input's segments as chains of them, holes empty,
 // angles and areas.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -104,10 +105,11 @@ std::pair<double, double> along_keys(const Point& a, const Point& b, const Point
 
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
-// along it, the nearest to its line where there are several (another segment's chain may run
-// within rounding of this one's, as two segments at a hair's angle do); where there is none,
-// across a gap to the next point near the segment ahead, both on the boundary (or in no
-// triangle), the gap kept for check_gaps.
+// along it, the nearest to its line first; where there is none, across a gap to the next point
+// near the segment ahead, both on the boundary (or in no triangle), the gaps of the way that
+// reaches b kept for check_gaps. Depth first: another segment's chain may run within rounding
+// of this one's (two segments at a hair's angle from one end), and a step onto it ends where it
+// leaves this segment, and the search goes back to take the other.
 template <class Near>
 bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
                  std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
@@ -115,12 +117,12 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
   constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
   using Key = std::pair<double, double>;
   auto key = [&](VertexId v) { return along_keys(pts[a], pts[b], pts[v]); };
-  auto off = [&](VertexId v) {
-    const Point &p = pts[v], &pa = pts[a], &pb = pts[b];
-    return std::fabs((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x));
-  };
+  auto off = [&](VertexId v) { return std::fabs(detail::doubled_area(pts[a], pts[b], pts[v])); };
   auto better = [&](VertexId w, VertexId than) {  // ahead sooner, then nearer the line
     return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
+  };
+  auto nearer = [&](VertexId w, VertexId than) {
+    return off(w) < off(than) || (off(w) == off(than) && better(w, than));
   };
   // The points near the segment, by key: those with a segment edge within near's x range
   // [x0, x1] (by_x: every such point, by x), so that many segments in holes cost n log n.
@@ -129,25 +131,36 @@ bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::
        it != by_x.end() && it->first <= x1; ++it)
     if (it->second != b && near(it->second)) ahead.push_back({key(it->second), it->second});
   std::sort(ahead.begin(), ahead.end());
-  for (VertexId u = a; u != b;) {
-    VertexId next = kNone;
+  std::unordered_map<VertexId, std::pair<VertexId, bool>> from{
+      {a, {kNone, false}}};  // the step to each: from where, across a gap
+  std::vector<VertexId> todo{a}, steps;
+  while (!todo.empty()) {
+    const VertexId u = todo.back();
+    todo.pop_back();
+    if (u == b) {
+      for (VertexId v = b; v != a; v = from[v].first)
+        if (from[v].second) gaps.push_back({from[v].first, v, segment});
+      return true;
+    }
+    steps.clear();
     for (const VertexId w : adj[u])
-      if (key(w) > key(u) && near(w) &&
-          (next == kNone || off(w) < off(next) || (off(w) == off(next) && better(w, next))))
-        next = w;
-    if (next != kNone) {
-      u = next;
+      if (key(w) > key(u) && near(w) && !from.count(w)) steps.push_back(w);
+    if (!steps.empty()) {  // the nearest to the line taken first: pushed last
+      std::sort(steps.begin(), steps.end(), [&](VertexId w, VertexId v) { return nearer(v, w); });
+      for (const VertexId w : steps) from[w] = {u, false}, todo.push_back(w);
       continue;
     }
+    VertexId next = kNone;
     auto it = std::upper_bound(ahead.begin(), ahead.end(), std::pair{key(u), std::numeric_limits<VertexId>::max()});
     for (auto other = it; other != ahead.end() && other->first == it->first; ++other)
       if (better(other->second, next)) next = other->second;
     if (next == kNone) next = b;  // at b's place along the segment already (another end there)
-    if (next == kNone || !(on_boundary[u] && on_boundary[next])) return false;  // (unused vertices count as on it)
-    gaps.push_back({u, next, segment});
-    u = next;
+    // (unused vertices count as on the boundary)
+    if (!on_boundary[u] || !on_boundary[next] || from.count(next)) continue;
+    from[next] = {u, true};
+    todo.push_back(next);
   }
-  return true;
+  return false;
 }
 
 // Whether the open segment u-w passes through the inside of triangle a-b-c (counter-
@@ -338,24 +351,90 @@ struct Shape {
   std::size_t excused = 0;
 };
 
-// Whether the circle through a, b and c meets both chains of a wedge (as the straight lines from
-// its corner to their other ends): the triangle is squeezed between them, and its point would
-// split one of them. A circle too large for long double (a, b and c in a line there) meets them.
+// Whether triangle a-b-c lies in a wedge (in the closed triangle of its corner and its chains'
+// other ends) and its circle meets both chains (as the straight lines from the corner to those
+// ends): the triangle is squeezed between them, and its point would split one of them. A circle
+// too large for long double (a, b and c in a line there) meets them.
 bool squeezed(std::span<const Point> pts, const Point& a, const Point& b, const Point& c, const Chains::Wedge& w) {
+  const Point &z = pts[w.corner], &e1 = pts[w.end1], &e2 = pts[w.end2];
+  for (const Point* v : {&a, &b, &c}) {
+    const int o1 = orient2d(z, e1, *v), o2 = orient2d(e1, e2, *v), o3 = orient2d(e2, z, *v);
+    if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) return false;
+  }
   using L = long double;
   const L bx = b.x - L(a.x), by = b.y - L(a.y), cx = c.x - L(a.x), cy = c.y - L(a.y);
   const L d = 2 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
   const L ox = (cy * b2 - by * c2) / d, oy = (bx * c2 - cx * b2) / d, r2 = ox * ox + oy * oy;
   if (!std::isfinite(r2)) return true;
-  auto meets = [&](VertexId from, VertexId to) {  // the segment from-to, relative to a
-    const L px = pts[from].x - L(a.x), py = pts[from].y - L(a.y), qx = pts[to].x - L(a.x), qy = pts[to].y - L(a.y);
+  auto meets = [&](const Point& from, const Point& to) {  // the segment from-to, relative to a
+    const L px = from.x - L(a.x), py = from.y - L(a.y), qx = to.x - L(a.x), qy = to.y - L(a.y);
     const L ex = qx - px, ey = qy - py, e2 = ex * ex + ey * ey;
     const L s = e2 > 0 ? std::clamp(((ox - px) * ex + (oy - py) * ey) / e2, L(0), L(1)) : L(0);
     const L dx = px + s * ex - ox, dy = py + s * ey - oy;
     return dx * dx + dy * dy <= r2;
   };
-  return meets(w.corner, w.end1) && meets(w.corner, w.end2);
+  return meets(z, e1) && meets(z, e2);
 }
+
+// The wedges by where they lie, for squeezed(): a grid over their triangles' boxes, each wedge
+// listed in the cells its box covers, or, where that is more than 64, in a list every query
+// reads.
+class Wedges {
+ public:
+  Wedges(std::span<const Point> pts, const std::vector<Chains::Wedge>& wedges) : pts_(pts), wedges_(wedges) {
+    if (wedges.empty()) return;
+    auto box = [&](const Chains::Wedge& w) {
+      const Point &z = pts[w.corner], &p = pts[w.end1], &q = pts[w.end2];
+      return std::array<double, 4>{std::min({z.x, p.x, q.x}), std::min({z.y, p.y, q.y}), std::max({z.x, p.x, q.x}),
+                                   std::max({z.y, p.y, q.y})};
+    };
+    x0_ = y0_ = INFINITY, x1_ = y1_ = -INFINITY;
+    for (const Chains::Wedge& w : wedges) {
+      const auto b = box(w);
+      x0_ = std::min(x0_, b[0]), y0_ = std::min(y0_, b[1]), x1_ = std::max(x1_, b[2]), y1_ = std::max(y1_, b[3]);
+    }
+    size_ = static_cast<int>(std::clamp(std::sqrt(static_cast<double>(wedges.size())), 1.0, 512.0));
+    cells_.resize(static_cast<std::size_t>(size_) * size_);
+    for (std::uint32_t k = 0; k < wedges.size(); ++k) {
+      const auto b = box(wedges[k]);
+      const int i0 = cell(b[0], x0_, x1_), i1 = cell(b[2], x0_, x1_), j0 = cell(b[1], y0_, y1_),
+                j1 = cell(b[3], y0_, y1_);
+      if ((i1 - i0 + 1) * (j1 - j0 + 1) > 64) {
+        wide_.push_back(k);
+        continue;
+      }
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) cells_[static_cast<std::size_t>(j) * size_ + i].push_back(k);
+    }
+  }
+
+  // Whether a-b-c is squeezed in any wedge.
+  bool hold(const Point& a, const Point& b, const Point& c) const {
+    if (wedges_.empty()) return false;
+    const long double mx = (a.x + static_cast<long double>(b.x) + c.x) / 3,
+                      my = (a.y + static_cast<long double>(b.y) + c.y) / 3;
+    if (mx < x0_ || mx > x1_ || my < y0_ || my > y1_) return false;  // in no wedge's box
+    auto any = [&](const std::vector<std::uint32_t>& list) {
+      return std::any_of(list.begin(), list.end(),
+                         [&](std::uint32_t k) { return squeezed(pts_, a, b, c, wedges_[k]); });
+    };
+    const std::size_t at = static_cast<std::size_t>(cell(my, y0_, y1_)) * size_ + cell(mx, x0_, x1_);
+    return any(cells_[at]) || any(wide_);
+  }
+
+ private:
+  int cell(long double v, long double lo, long double hi) const {
+    const long double f = hi > lo ? (v - lo) / (hi - lo) : 0;
+    return static_cast<int>(std::clamp<long double>(std::floor(f * size_), 0, size_ - 1));
+  }
+
+  std::span<const Point> pts_;
+  const std::vector<Chains::Wedge>& wedges_;
+  double x0_ = 0, y0_ = 0, x1_ = 0, y1_ = 0;
+  int size_ = 1;
+  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> wide_;
+};
 
 // Angles and areas: a triangle below the angle is excused where one of its vertices lies on a
 // chain of segment edges that ends at an input angle below 60 degrees (refinement stops short
@@ -364,9 +443,10 @@ bool squeezed(std::span<const Point> pts, const Point& a, const Point& b, const 
 // end put points there, and splitting it would cut the chains down to the gap between them),
 // or where its shortest edge is below 2^-39 of the points' extent (refinement splits no
 // subsegment that short).
-Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
-                  const Chains& chains, Report& report) {
+Shape check_shape(std::span<const Point> pts, std::span<const Point> scaled, std::span<const VertexId> tris,
+                  const MeshSpec& spec, const Chains& chains, Report& report) {
   Shape shape;
+  const Wedges wedges(scaled, chains.wedges);  // in the predicates' coordinates
   const long double pi = 3.14159265358979323846264338327950288L;
   // A vertex on a chain that ends at a corner with a small angle: refinement stops there.
   auto beside_small_angle = [&](VertexId v) {
@@ -400,12 +480,8 @@ Shape check_shape(std::span<const Point> pts, std::span<const VertexId> tris, co
       report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec.max_area);
     if (spec.min_angle > 0 && worst < spec.min_angle * (1 - 1e-9L)) {
       const long double shortest = std::min({length2(v[0], v[1]), length2(v[1], v[2]), length2(v[2], v[0])});
-      auto in_a_wedge = [&] {
-        return std::any_of(chains.wedges.begin(), chains.wedges.end(),
-                           [&](const Chains::Wedge& w) { return squeezed(pts, a, b, c, w); });
-      };
       if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2 ||
-          in_a_wedge())
+          wedges.hold(scaled[v[0]], scaled[v[1]], scaled[v[2]]))
         ++shape.excused;
       else
         report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",
@@ -450,13 +526,17 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
   // by a power of two where they are huge or tiny), in these coordinates (scaled or not).
   const std::size_t input_points = spec.input_points == 0 ? pts.size() : std::min(spec.input_points, pts.size());
   const int here = scaled.empty() ? 0 : detail::exact_scale_exponent(input);
-  const long double least = std::ldexp(0x1p-1022L, here - detail::exact_scale_exponent(input.first(input_points)));
+  // No finer either than the roundings of the output's doubles, 2^-1074 apart below the least
+  // normal (points computed in scaled coordinates and scaled back), 2^-40 of the scale.
+  const long double least =
+      std::max(std::ldexp(0x1p-1022L, here - detail::exact_scale_exponent(input.first(input_points))),
+               std::ldexp(0x1p-1034L, here));
   check_chains(pts, tris, spec, least, used, on_boundary, report);
   std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
   if (here != 0)
     for (Point& h : holes) h = {std::ldexp(h.x, here), std::ldexp(h.y, here)};
   check_holes(pts, tris, holes, report);
-  const Shape shape = check_shape(input, tris, spec, chains_of(pts, spec.edges, input_points, least), report);
+  const Shape shape = check_shape(input, pts, tris, spec, chains_of(pts, spec.edges, input_points, least), report);
   std::ostringstream s;
   s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
     << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()
@@ -464,7 +544,7 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
     << " degrees";
   if (shape.excused > 0)
     s << " (" << shape.excused << " triangles below " << spec.min_angle
-      << " beside small input angles or with an edge below 2^-39 of the extent)";
+      << " beside small input angles, in their wedges or with an edge below 2^-39 of the extent)";
   s << ", largest area " << static_cast<double>(shape.largest_area);
   return report.result(s.str());
 }

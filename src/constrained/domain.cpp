@@ -25,7 +25,18 @@ std::vector<std::uint32_t> holding_all(const Cdt& m, const Point& q, std::uint32
   const std::optional<Cdt::Place> at = place(m, q, from);
   if (!at) return out;
   if (at->kind == Cdt::Place::Corner) {
-    m.around(m.at(at->t, at->k), [&](std::uint32_t t) { return out.push_back(t), false; });
+    const VertexId v = m.at(at->t, at->k);
+    bool open = false;  // a fan that ends at the boundary: where the domain touches itself at v, one of several
+    m.around(v, [&](std::uint32_t t) {
+      const int i = m.corner_of(t, v);
+      open = open || m.nbrs[3 * t + (i + 1) % 3] < 0 || m.nbrs[3 * t + (i + 2) % 3] < 0;
+      return out.push_back(t), false;
+    });
+    if (open) {  // every triangle at v, whichever fan it is in
+      out.clear();
+      for (std::uint32_t t = 0; t < m.size(); ++t)
+        if (m.tris[3 * t] == v || m.tris[3 * t + 1] == v || m.tris[3 * t + 2] == v) out.push_back(t);
+    }
     return out;
   }
   out.push_back(at->t);

@@ -261,6 +261,11 @@ TEST(Refine, ARegionSeedOnASegmentMarksEverySide) {
   // first, and the seed at a vertex still finds every triangle about it.
   g.points.push_back({3, 0.5});
   EXPECT_EQ(attributes({{{1, 1}, 7, 0}}), (Sides{{true, 7}, {false, 7}}));
+  // Two squares that touch only at (1, 1), the triangles between them carved away: a seed there
+  // marks both.
+  g.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 1}, {2, 2}, {1, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 2, 4, 4, 5, 5, 6, 6, 2};
+  EXPECT_EQ(attributes({{{1, 1}, 7, 0}}), (Sides{{true, 7}, {false, 7}}));
 }
 
 // A region boundary with points a unit in the last place beside it: a subsegment's split point
@@ -558,6 +563,26 @@ TEST(Refine, PointsSplitNearTheSmallEndOfAHugeSegment) {
   wide.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4};
   wide.holes = {{5, 5}};
   EXPECT_GT(mesh(wide, q).t.steiner.size(), 30u);
+}
+
+// Two segments from (9331, 3.2e60) to (0, 1) and (0, 2), at 10^-121 radians: their chains share
+// the roundings of their first points, and the one to (0, 1) leaves the domain into a hole
+// near its end. check_mesh follows it depth first, back from a step onto the other's chain
+// where that chain turns away. A fuzzer's graph.
+TEST(Refine, TwoSegmentsAtAHairsAngleFromAFarEndIntoAHole) {
+  Pslg g;
+  g.points = {{9331, 3.236854775800000000000000000000000000000008775347666385906451e60},
+              {3, 0},
+              {2, 1},
+              {0, 1},
+              {1, 2},
+              {0, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 0, 0, 3};
+  g.holes = {{0.1, 1.9}};
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = 6.04e61;
+  EXPECT_GT(mesh(g, q).t.steiner.size(), 100u);
 }
 
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
