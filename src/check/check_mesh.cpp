@@ -103,66 +103,6 @@ std::pair<double, double> along_keys(const Point& a, const Point& b, const Point
   return {along_key(a, b, p), to >= from ? at : -at};
 }
 
-// A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
-// followed from a: from each vertex by a segment edge to a point near the segment and ahead
-// along it, the nearest to its line first; where there is none, across a gap to the next point
-// near the segment ahead, both on the boundary (or in no triangle), the gaps of the way that
-// reaches b kept for check_gaps. Depth first: another segment's chain may run within rounding
-// of this one's (two segments at a hair's angle from one end), and a step onto it ends where it
-// leaves this segment, and the search goes back to take the other.
-template <class Near>
-bool across_gaps(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
-                 std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
-                 const std::vector<std::uint8_t>& on_boundary, Near near, std::size_t segment, std::vector<Gap>& gaps) {
-  constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
-  using Key = std::pair<double, double>;
-  auto key = [&](VertexId v) { return along_keys(pts[a], pts[b], pts[v]); };
-  auto off = [&](VertexId v) { return std::fabs(detail::doubled_area(pts[a], pts[b], pts[v])); };
-  auto better = [&](VertexId w, VertexId than) {  // ahead sooner, then nearer the line
-    return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
-  };
-  auto nearer = [&](VertexId w, VertexId than) {
-    return off(w) < off(than) || (off(w) == off(than) && better(w, than));
-  };
-  // The points near the segment, by key: those with a segment edge within near's x range
-  // [x0, x1] (by_x: every such point, by x), so that many segments in holes cost n log n.
-  std::vector<std::pair<Key, VertexId>> ahead{{key(b), b}};
-  for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0, VertexId{0}});
-       it != by_x.end() && it->first <= x1; ++it)
-    if (it->second != b && near(it->second)) ahead.push_back({key(it->second), it->second});
-  std::sort(ahead.begin(), ahead.end());
-  std::unordered_map<VertexId, std::pair<VertexId, bool>> from{
-      {a, {kNone, false}}};  // the step to each: from where, across a gap
-  std::vector<VertexId> todo{a}, steps;
-  while (!todo.empty()) {
-    const VertexId u = todo.back();
-    todo.pop_back();
-    if (u == b) {
-      for (VertexId v = b; v != a; v = from[v].first)
-        if (from[v].second) gaps.push_back({from[v].first, v, segment});
-      return true;
-    }
-    steps.clear();
-    for (const VertexId w : adj[u])
-      if (key(w) > key(u) && near(w) && !from.count(w)) steps.push_back(w);
-    if (!steps.empty()) {  // the nearest to the line taken first: pushed last
-      std::sort(steps.begin(), steps.end(), [&](VertexId w, VertexId v) { return nearer(v, w); });
-      for (const VertexId w : steps) from[w] = {u, false}, todo.push_back(w);
-      continue;
-    }
-    VertexId next = kNone;
-    auto it = std::upper_bound(ahead.begin(), ahead.end(), std::pair{key(u), std::numeric_limits<VertexId>::max()});
-    for (auto other = it; other != ahead.end() && other->first == it->first; ++other)
-      if (better(other->second, next)) next = other->second;
-    if (next == kNone) next = b;  // at b's place along the segment already (another end there)
-    // (unused vertices count as on the boundary)
-    if (!on_boundary[u] || !on_boundary[next] || from.count(next)) continue;
-    from[next] = {u, true};
-    todo.push_back(next);
-  }
-  return false;
-}
-
 // Whether the open segment u-w passes through the inside of triangle a-b-c (counter-
 // clockwise): no line of an edge of either separates them (for two convex sets in the plane,
 // one of those lines does where they are apart).
@@ -183,34 +123,134 @@ bool strictly_on(const Point& u, const Point& w, const Point& p) {
   return at > lo && at < hi;
 }
 
-// Each gap lies outside the mesh: it passes through no triangle and no vertex. The triangles
-// sorted by their least x, each gap tested against those whose x range can meet its own.
-void check_gaps(std::span<const Point> pts, std::span<const VertexId> tris, const std::vector<Gap>& gaps,
-                const MeshSpec& spec, Report& report) {
-  if (gaps.empty()) return;
-  const std::size_t nt = tris.size() / 3;
-  std::vector<std::pair<double, std::uint32_t>> by_x(nt);
-  double widest = 0;
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Point &a = pts[tris[3 * t]], &b = pts[tris[3 * t + 1]], &c = pts[tris[3 * t + 2]];
-    by_x[t] = {std::min({a.x, b.x, c.x}), static_cast<std::uint32_t>(t)};
-    widest = std::max(widest, std::max({a.x, b.x, c.x}) - by_x[t].first);
-  }
-  std::sort(by_x.begin(), by_x.end());
-  for (const Gap& g : gaps) {
-    const Point &u = pts[g.u], &w = pts[g.w];
-    auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{std::min(u.x, w.x) - widest, std::uint32_t{0}});
-    for (; it != by_x.end() && it->first <= std::max(u.x, w.x); ++it) {
-      const VertexId* v = &tris[3 * std::size_t{it->second}];
-      const bool through = passes_inside(u, w, pts[v[0]], pts[v[1]], pts[v[2]]) || strictly_on(u, w, pts[v[0]]) ||
-          strictly_on(u, w, pts[v[1]]) || strictly_on(u, w, pts[v[2]]);
-      if (!through) continue;
-      report.problem("segment ", g.segment, " (", spec.segments[2 * g.segment], "-", spec.segments[2 * g.segment + 1],
-                     ") runs through triangle ", it->second, " between points ", g.u, " and ", g.w,
-                     " with no segment edge");
-      break;
+// The triangles sorted by their least x, for the gaps of segments through holes: the first
+// that an open segment u-w passes through (or through one of whose vertices), tested against
+// those whose x range can meet its own.
+class TrianglesByX {
+ public:
+  TrianglesByX(std::span<const Point> pts, std::span<const VertexId> tris) : pts_(pts), tris_(tris) {}
+
+  std::int64_t through(VertexId gu, VertexId gw) {
+    if (by_x_.empty() && !tris_.empty()) sort();
+    const Point &u = pts_[gu], &w = pts_[gw];
+    auto it = std::lower_bound(by_x_.begin(), by_x_.end(), std::pair{std::min(u.x, w.x) - widest_, std::uint32_t{0}});
+    for (; it != by_x_.end() && it->first <= std::max(u.x, w.x); ++it) {
+      const VertexId* v = &tris_[3 * std::size_t{it->second}];
+      if (passes_inside(u, w, pts_[v[0]], pts_[v[1]], pts_[v[2]]) || strictly_on(u, w, pts_[v[0]]) ||
+          strictly_on(u, w, pts_[v[1]]) || strictly_on(u, w, pts_[v[2]]))
+        return it->second;
     }
+    return -1;
   }
+
+ private:
+  void sort() {
+    by_x_.resize(tris_.size() / 3);
+    for (std::size_t t = 0; t < by_x_.size(); ++t) {
+      const Point &a = pts_[tris_[3 * t]], &b = pts_[tris_[3 * t + 1]], &c = pts_[tris_[3 * t + 2]];
+      by_x_[t] = {std::min({a.x, b.x, c.x}), static_cast<std::uint32_t>(t)};
+      widest_ = std::max(widest_, std::max({a.x, b.x, c.x}) - by_x_[t].first);
+    }
+    std::sort(by_x_.begin(), by_x_.end());
+  }
+
+  std::span<const Point> pts_;
+  std::span<const VertexId> tris_;
+  std::vector<std::pair<double, std::uint32_t>> by_x_;
+  double widest_ = 0;
+};
+
+// A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
+// followed from a: from each vertex by a segment edge to a point near the segment and ahead
+// along it, the nearest to its line first; where there is none, across a gap to a point near
+// the segment ahead, both on the boundary (or in no triangle), the gap through no triangle and
+// no vertex. Depth first: another segment's chain may run within rounding of this one's (two
+// segments at a hair's angle, or crossing near a shared end), and a step onto it ends where
+// it leaves this segment, and the search goes back to take the other. Where no way reaches b,
+// the way that jumps each gap to the next point ahead is reported: its first gap through a
+// triangle, or, where it stops, the segment as no chain.
+template <class Near>
+void follow_across_gaps(std::span<const Point> pts, VertexId a, VertexId b,
+                        const std::vector<std::vector<VertexId>>& adj,
+                        std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
+                        const std::vector<std::uint8_t>& on_boundary, Near near, TrianglesByX& triangles,
+                        std::size_t segment, const MeshSpec& spec, Report& report) {
+  constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
+  using Key = std::pair<double, double>;
+  auto key = [&](VertexId v) { return along_keys(pts[a], pts[b], pts[v]); };
+  auto off = [&](VertexId v) { return std::fabs(detail::doubled_area(pts[a], pts[b], pts[v])); };
+  auto better = [&](VertexId w, VertexId than) {  // ahead sooner, then nearer the line
+    return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
+  };
+  auto nearer = [&](VertexId w, VertexId than) {
+    return off(w) < off(than) || (off(w) == off(than) && better(w, than));
+  };
+  // The points near the segment, by key: those with a segment edge within near's x range
+  // [x0, x1] (by_x: every such point, by x), so that many segments in holes cost n log n.
+  std::vector<std::pair<Key, VertexId>> ahead{{key(b), b}};
+  for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0, VertexId{0}});
+       it != by_x.end() && it->first <= x1; ++it)
+    if (it->second != b && near(it->second)) ahead.push_back({key(it->second), it->second});
+  std::sort(ahead.begin(), ahead.end());
+  auto after = [&](VertexId u) {
+    return std::upper_bound(ahead.begin(), ahead.end(), std::pair{key(u), std::numeric_limits<VertexId>::max()});
+  };
+  // `checked`: gaps only through no triangle, to any of the next few points ahead; else the
+  // one way that jumps to the next, its gaps kept to report.
+  auto search = [&](bool checked, std::vector<Gap>& gaps) {
+    std::unordered_map<VertexId, std::pair<VertexId, bool>> from{{a, {kNone, false}}};  // from where, across a gap
+    std::vector<VertexId> todo{a}, steps;
+    while (!todo.empty()) {
+      const VertexId u = todo.back();
+      todo.pop_back();
+      if (u == b) {
+        for (VertexId v = b; v != a; v = from[v].first)
+          if (from[v].second) gaps.push_back({from[v].first, v, segment});
+        return true;
+      }
+      steps.clear();
+      for (const VertexId w : adj[u])
+        if (key(w) > key(u) && near(w) && !from.count(w)) steps.push_back(w);
+      if (!steps.empty()) {  // the nearest to the line taken first: pushed last
+        std::sort(steps.begin(), steps.end(), [&](VertexId w, VertexId v) { return nearer(v, w); });
+        for (const VertexId w : steps) from[w] = {u, false}, todo.push_back(w);
+        continue;
+      }
+      if (!on_boundary[u]) continue;  // (unused vertices count as on the boundary)
+      if (checked) {
+        for (auto it = after(u); it != ahead.end() && steps.size() < 16; ++it)
+          if (on_boundary[it->second] && !from.count(it->second) && triangles.through(u, it->second) < 0)
+            steps.push_back(it->second);
+        for (auto w = steps.rbegin(); w != steps.rend(); ++w) from[*w] = {u, true}, todo.push_back(*w);
+        continue;
+      }
+      VertexId next = kNone;
+      const auto it = after(u);
+      for (auto other = it; other != ahead.end() && other->first == it->first; ++other)
+        if (better(other->second, next)) next = other->second;
+      if (next == kNone) next = b;  // at b's place along the segment already (another end there)
+      if (!on_boundary[next] || from.count(next)) continue;
+      from[next] = {u, true};
+      todo.push_back(next);
+    }
+    return false;
+  };
+  std::vector<Gap> gaps;
+  if (search(true, gaps)) return;
+  gaps.clear();
+  if (!search(false, gaps)) {
+    report.problem("segment ", segment, " (", spec.segments[2 * segment], "-", spec.segments[2 * segment + 1],
+                   ") is not a chain of segment edges");
+    return;
+  }
+  for (auto g = gaps.rbegin(); g != gaps.rend(); ++g)
+    if (const std::int64_t t = triangles.through(g->u, g->w); t >= 0) {
+      report.problem("segment ", segment, " (", spec.segments[2 * segment], "-", spec.segments[2 * segment + 1],
+                     ") runs through triangle ", t, " between points ", g->u, " and ", g->w, " with no segment edge");
+      return;
+    }
+  report.problem("segment ", segment, " (", spec.segments[2 * segment], "-", spec.segments[2 * segment + 1],
+                 ") is not a chain of segment edges");
 }
 
 // Each input segment a-b a chain of segment edges: a search from a through points near the
@@ -235,7 +275,7 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
     if (!adj[v].empty()) by_x.push_back({pts[v].x, v});
   std::sort(by_x.begin(), by_x.end());
   std::vector<std::uint32_t> seen(pts.size(), 0);
-  std::vector<Gap> gaps;
+  TrianglesByX triangles(pts, tris);  // sorted when a segment first runs through a hole
   for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) {
     if (spec.segments[s] >= input || spec.segments[s + 1] >= input) {
       report.problem("segment ", s / 2, " refers to a point that is not one of the input's ", input);
@@ -271,11 +311,9 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       for (const VertexId w : adj[v])
         if (seen[w] != stamp && near(w)) seen[w] = stamp, todo.push_back(w);
     }
-    if (seen[b] != stamp && !across_gaps(pts, a, b, adj, by_x, x0, x1, on_boundary, near, s / 2, gaps))
-      report.problem("segment ", s / 2, " (", spec.segments[s], "-", spec.segments[s + 1],
-                     ") is not a chain of segment edges");
+    if (seen[b] != stamp)
+      follow_across_gaps(pts, a, b, adj, by_x, x0, x1, on_boundary, near, triangles, s / 2, spec, report);
   }
-  check_gaps(pts, tris, gaps, spec, report);
 }
 
 // No hole's seed inside or on any triangle: the seeds sorted by x, each triangle tested

@@ -364,5 +364,29 @@ TEST(Constrained, PointsBesideTheSmallEndOfAHugeSegmentAreNotOnIt) {
   EXPECT_TRUE(verdict.valid) << verdict.message;
 }
 
+// A fuzzer's graph: (10, 10^-322) just above (10, 0), and three segments that end at (10, 0)
+// cross the one from (10, 10^-322) within 10^-14 of it, at points rounded into the hull; then a
+// hole takes most of the square. Near (10, 0) the chains of four segments lie within rounding
+// of one another: check_mesh finds the one from (10, 0) to (4, 4) by going back from steps onto
+// the others' chains and from gaps that pass through triangles.
+TEST(Constrained, ChainsWithinRoundingOfOneAnotherBesideAnEndIntoAHole) {
+  const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 104.9e-324}, {0, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
+  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+  for (const bool hull : {true, false}) {
+    SCOPED_TRACE(hull);
+    Domain domain;
+    domain.convex_hull = hull;
+    domain.holes = {{5, 5}};
+    const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+    EXPECT_EQ(t.crossings, 4u);
+    std::vector<Point> all = pts;
+    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+    MeshSpec spec;
+    spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
+    const CheckResult verdict = check_mesh(all, t.triangles, spec);
+    EXPECT_TRUE(verdict.valid) << verdict.message;
+  }
+}
+
 }  // namespace
 }  // namespace ridt::test
