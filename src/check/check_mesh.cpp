@@ -389,29 +389,42 @@ struct Shape {
   std::size_t excused = 0;
 };
 
+// The circle through a, b and c, in long double, relative to a; `flat` where it is too large
+// for long double (a, b and c in a line there), and then it meets everything.
+struct Circle {
+  Circle(const Point& pa, const Point& b, const Point& c) : a(pa) {
+    const L bx = b.x - L(a.x), by = b.y - L(a.y), cx = c.x - L(a.x), cy = c.y - L(a.y);
+    const L d = 2 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    ox = (cy * b2 - by * c2) / d, oy = (bx * c2 - cx * b2) / d, r2 = ox * ox + oy * oy;
+    flat = !std::isfinite(r2);
+  }
+  // Whether it meets the segment from-to.
+  bool meets(const Point& from, const Point& to) const {
+    if (flat) return true;
+    const L px = from.x - L(a.x), py = from.y - L(a.y), qx = to.x - L(a.x), qy = to.y - L(a.y);
+    const L ex = qx - px, ey = qy - py, e2 = ex * ex + ey * ey;
+    const L s = e2 > 0 ? std::clamp(((ox - px) * ex + (oy - py) * ey) / e2, L(0), L(1)) : L(0);
+    const L dx = px + s * ex - ox, dy = py + s * ey - oy;
+    return dx * dx + dy * dy <= r2;
+  }
+
+  using L = long double;
+  Point a;
+  L ox = 0, oy = 0, r2 = 0;
+  bool flat = false;
+};
+
 // Whether triangle a-b-c lies in a wedge (in the closed triangle of its corner and its chains'
 // other ends) and its circle meets both chains (as the straight lines from the corner to those
-// ends): the triangle is squeezed between them, and its point would split one of them. A circle
-// too large for long double (a, b and c in a line there) meets them.
+// ends): the triangle is squeezed between them, and its point would split one of them.
 bool squeezed(std::span<const Point> pts, const Point& a, const Point& b, const Point& c, const Chains::Wedge& w) {
   const Point &z = pts[w.corner], &e1 = pts[w.end1], &e2 = pts[w.end2];
   for (const Point* v : {&a, &b, &c}) {
     const int o1 = orient2d(z, e1, *v), o2 = orient2d(e1, e2, *v), o3 = orient2d(e2, z, *v);
     if (!((o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0))) return false;
   }
-  using L = long double;
-  const L bx = b.x - L(a.x), by = b.y - L(a.y), cx = c.x - L(a.x), cy = c.y - L(a.y);
-  const L d = 2 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  const L ox = (cy * b2 - by * c2) / d, oy = (bx * c2 - cx * b2) / d, r2 = ox * ox + oy * oy;
-  if (!std::isfinite(r2)) return true;
-  auto meets = [&](const Point& from, const Point& to) {  // the segment from-to, relative to a
-    const L px = from.x - L(a.x), py = from.y - L(a.y), qx = to.x - L(a.x), qy = to.y - L(a.y);
-    const L ex = qx - px, ey = qy - py, e2 = ex * ex + ey * ey;
-    const L s = e2 > 0 ? std::clamp(((ox - px) * ex + (oy - py) * ey) / e2, L(0), L(1)) : L(0);
-    const L dx = px + s * ex - ox, dy = py + s * ey - oy;
-    return dx * dx + dy * dy <= r2;
-  };
-  return meets(z, e1) && meets(z, e2);
+  const Circle circle(a, b, c);
+  return circle.meets(z, e1) && circle.meets(z, e2);
 }
 
 // The wedges by where they lie, for squeezed(): a grid over their triangles' boxes, each wedge
@@ -495,6 +508,13 @@ Shape check_shape(std::span<const Point> pts, std::span<const Point> scaled, std
   const detail::Extent box = detail::extent_of(pts);
   const long double w = box.x1 - (long double)box.x0, h = box.y1 - (long double)box.y0;
   const long double tiny2 = (w * w + h * h) * 0x1p-78L;
+  // The segment edges refinement never splits (below 2^-39 of the extent, with a margin).
+  std::vector<Edge> short_edges;
+  for (std::size_t k = 0; k + 1 < spec.edges.size(); k += 2) {
+    const Point &p = pts[spec.edges[k]], &q = pts[spec.edges[k + 1]];
+    const long double dx = p.x - (long double)q.x, dy = p.y - (long double)q.y;
+    if (dx * dx + dy * dy < 2 * tiny2) short_edges.emplace_back(spec.edges[k], spec.edges[k + 1]);
+  }
   auto length2 = [&](VertexId a, VertexId b) {
     const long double dx = pts[a].x - (long double)pts[b].x, dy = pts[a].y - (long double)pts[b].y;
     return dx * dx + dy * dy;
@@ -518,8 +538,14 @@ Shape check_shape(std::span<const Point> pts, std::span<const Point> scaled, std
       report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec.max_area);
     if (spec.min_angle > 0 && worst < spec.min_angle * (1 - 1e-9L)) {
       const long double shortest = std::min({length2(v[0], v[1]), length2(v[1], v[2]), length2(v[2], v[0])});
+      auto at_a_short_one = [&] {  // its circle meets a segment edge too short to split
+        if (short_edges.empty()) return false;
+        const Circle circle(scaled[v[0]], scaled[v[1]], scaled[v[2]]);
+        return std::any_of(short_edges.begin(), short_edges.end(),
+                           [&](const Edge& e) { return circle.meets(scaled[e.first], scaled[e.second]); });
+      };
       if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2 ||
-          wedges.hold(scaled[v[0]], scaled[v[1]], scaled[v[2]]))
+          wedges.hold(scaled[v[0]], scaled[v[1]], scaled[v[2]]) || at_a_short_one())
         ++shape.excused;
       else
         report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",

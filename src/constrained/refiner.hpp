@@ -73,7 +73,7 @@ class Refiner {
         if (s != Cdt::kNone && m_.fixed[s] && (w.forced || encroached(s))) split(s);
         continue;
       }
-      if (bad_.empty()) return "";
+      if (bad_.empty()) return left_bad();
       const Bad b = bad_.pop();
       prefetch_ahead();
       // A triangle still there has the vertices, so the badness, it was queued with.
@@ -121,6 +121,21 @@ class Refiner {
 
   bool corner(VertexId v) const { return v < r_.corners; }
   bool boundary(std::uint32_t s) const { return m_.nbrs[s] < 0; }
+  // The warning for triangles still below the angle that refinement gave up on: each time the
+  // subsegments its point would encroach were split, it stood again, 64 times (in a wedge so
+  // thin beside one so wide that the splits cannot reach it before the subsegments are too
+  // short to split).
+  std::string left_bad() const {
+    std::vector<std::uint32_t> still;
+    for (const Bad& b : given_up_)
+      if (const double key = alive(b) ? badness(b.t) : kGood; key >= 0 && key != kGood) still.push_back(b.t);
+    std::sort(still.begin(), still.end());
+    const auto left = static_cast<std::size_t>(std::unique(still.begin(), still.end()) - still.begin());
+    if (left == 0) return "";
+    return "quality refinement left " + std::to_string(left) + " triangle" + (left == 1 ? "" : "s") +
+        " below the minimum angle: the subsegments near them could not be split far enough";
+  }
+
   bool alive(const Bad& b) const {
     return b.t < m_.size() && m_.tris[3 * b.t] == b.v[0] && m_.tris[3 * b.t + 1] == b.v[1] &&
         m_.tris[3 * b.t + 2] == b.v[2];
@@ -288,6 +303,7 @@ class Refiner {
       if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
     if (blocked || !hit.empty()) {
       if (b.key >= 0 && wedged(b.t, hit)) return;
+      if (b.tries >= 64 && b.key >= 0) given_up_.push_back(b);
       if (hit.empty() || b.tries >= 64) return centroid(b);
       for (const std::uint32_t s : hit) queue_split(s, true);
       bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
@@ -353,6 +369,7 @@ class Refiner {
   std::vector<std::pair<VertexId, VertexId>> ends_;  // per vertex on a chain: its corners
   std::vector<std::uint8_t> small_;  // per corner: two of its segments meet at less than 60 degrees
   std::vector<Split> segments_;  // subsegments to split, if still there (and encroached)
+  std::vector<Bad> given_up_;  // triangles bad for their shape, left after 64 tries
   Buckets<Bad> bad_;
   std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
 };

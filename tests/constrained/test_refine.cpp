@@ -499,9 +499,10 @@ TEST(Refine, ACrossingBesideASteepSegmentsEndIsAheadOfIt) {
 
 // A polygon 9.2 * 10^19 long and at most 2 high: its sides meet at 10^-20 radians at the far
 // end, and the area bound puts points between them. Triangles there stay far below 20 degrees
-// with no vertex on the two sides (a triangle that met the bound would be a unit across), and
-// check_mesh excuses them as it does the refiner: their circles meet both sides of that
-// corner. (A fuzzer's input; the hole lies outside the polygon.)
+// with no vertex on the two sides (a triangle that met the bound would be a unit across):
+// refinement says it left them, and check_mesh, asked for the bounds all the same, excuses
+// them as squeezed in that corner's wedge, their circles meeting both sides. (A fuzzer's input;
+// the hole lies outside the polygon.)
 TEST(Refine, AWedgeTooThinForTheBoundKeepsItsBadTriangles) {
   Pslg g;
   g.points = {{0, 0}, {3, 0}, {2, 1}, {0, 1}, {1, 1}, {92233720368547758070.0, 2}};
@@ -511,7 +512,7 @@ TEST(Refine, AWedgeTooThinForTheBoundKeepsItsBadTriangles) {
   q.min_angle = 20;
   q.max_area = 3.7e17;
   const Meshed m = mesh(g, q);
-  EXPECT_TRUE(m.t.warning.empty()) << m.t.warning;
+  EXPECT_NE(m.t.warning.find("left"), std::string::npos) << m.t.warning;
   std::set<VertexId> sides;  // the vertices on the two long sides, 4-5 and 5-0
   for (std::size_t k = 0; k + 1 < m.t.edges.size(); k += 2)
     for (const VertexId v : {m.t.edges[k], m.t.edges[k + 1]})
@@ -523,6 +524,34 @@ TEST(Refine, AWedgeTooThinForTheBoundKeepsItsBadTriangles) {
         !sides.count(v[2]) && m.all[v[0]].x > 3;
   }
   EXPECT_GT(inside, 0u);
+  MeshSpec spec;
+  spec.edges = m.t.edges, spec.segments = g.segments, spec.input_points = g.points.size(), spec.holes = g.holes;
+  spec.min_angle = q.min_angle, spec.max_area = q.max_area;
+  const CheckResult verdict = check_mesh(m.all, m.t.triangles, spec);
+  EXPECT_TRUE(verdict.valid) << verdict.message;
+}
+
+// Three segments from (0, 9.2e18) to points a unit apart near the origin, meshed at 30 degrees
+// with an area bound: in the wedges between them the subsegments are split down to the least
+// length refinement splits (2^-39 of the extent) before the triangles between could be mended.
+// Refinement gives up on them after 64 tries each and says how many it left; check_mesh, asked
+// for the bound, names one. (A fuzzer's input.)
+TEST(Refine, TrianglesRefinementGivesUpOnAreReported) {
+  Pslg g;
+  g.points = {{0, 9223372018427387903.0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  g.segments = {0, 1, 1, 2, 1, 3, 3, 4, 5, 0, 0, 3};
+  g.holes = {{0.1, 1.99223}};
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = 3.689348807370955e16;
+  const Meshed m = mesh(g, q);  // validated without the bounds, as the warning says
+  EXPECT_NE(m.t.warning.find("quality refinement left"), std::string::npos) << m.t.warning;
+  MeshSpec spec;
+  spec.edges = m.t.edges, spec.segments = g.segments, spec.input_points = g.points.size(), spec.holes = g.holes;
+  spec.min_angle = q.min_angle, spec.max_area = q.max_area;
+  const CheckResult verdict = check_mesh(m.all, m.t.triangles, spec);
+  EXPECT_FALSE(verdict.valid);
+  EXPECT_NE(verdict.message.find("below 30"), std::string::npos) << verdict.message;
 }
 
 // The wedge's excuse is its own: a square with a V of two segments inside, 5.7 degrees apart
