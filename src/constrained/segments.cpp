@@ -93,9 +93,21 @@ class Inserter {
     const VertexId u = m_.at(t, k + 1), w = m_.at(t, k + 2);
     const Point x = crossing_rounded(m_.pts[a], m_.pts[b], m_.pts[u], m_.pts[w]);
     m_.set_fixed(t, k, false);
+    // Pieces of segments at a hair's angle, their ends rounded, can cross again at each crossing
+    // added (a cascade, each piece's insertion nested in the last's): past kCascade levels the
+    // crossing goes to the nearest of the four ends instead, and no point is added.
+    struct Level {
+      int& depth;
+      explicit Level(int& d) : depth(++d) {
+        if (depth > 4 * kCascade) throw std::logic_error("ridt: crossings of segments at a hair's angle did not end");
+      }
+      ~Level() { --depth; }
+    } level(depth_);
     VertexId v = 0;
     if (const VertexId end = within_ulps(x, {a, b, u, w}); end != Cdt::kNone) {
       v = end;  // within a few units in the last place of an end: the segments bend through it
+    } else if (depth_ > kCascade) {
+      v = nearest(x, {a, b, u, w});
     } else if (const Cdt::Place at = m_.beside(t, k, x); at.kind == Cdt::Place::Corner) {
       v = m_.at(at.t, at.k);
     } else if (at.kind == Cdt::Place::Inside || at.kind == Cdt::Place::Edge) {
@@ -131,6 +143,16 @@ class Inserter {
     for (const Point& y : next)
       if (const Cdt::Place at = m_.find(t, y); at.kind != Cdt::Place::Outside) return {y, at};
     throw std::logic_error("ridt: a crossing falls outside the triangulation");
+  }
+
+  // The one of `ends` nearest x.
+  VertexId nearest(const Point& x, std::initializer_list<VertexId> ends) const {
+    auto d2 = [&](VertexId e) {
+      const long double dx = m_.pts[e].x - static_cast<long double>(x.x),
+                        dy = m_.pts[e].y - static_cast<long double>(x.y);
+      return dx * dx + dy * dy;
+    };
+    return *std::min_element(ends.begin(), ends.end(), [&](VertexId p, VertexId q) { return d2(p) < d2(q); });
   }
 
   // The first of `ends` within 4 units in the last place of x in each coordinate, or kNone:
@@ -252,7 +274,9 @@ class Inserter {
       }
   }
 
+  static constexpr int kCascade = 32;
   Cdt& m_;
+  int depth_ = 0;  // split_crossing's calls nested
   // Scratch, kept between segments.
   std::vector<std::uint32_t> removed_, gone_;
   std::vector<VertexId> right_, left_, made_;

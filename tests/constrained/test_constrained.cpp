@@ -388,5 +388,29 @@ TEST(Constrained, ChainsWithinRoundingOfOneAnotherBesideAnEndIntoAHole) {
   }
 }
 
+// The same square with (3, 4) in place of (4, 4): the pieces of the segments from (10, 0) and
+// (10, 10^-322), their ends rounded, cross again at each crossing added, each nearer the last
+// (a cascade that ran the stack out). Past 32 levels a crossing goes to the nearest end of the
+// two pieces, and the result is a valid constrained triangulation of the graph so bent.
+TEST(Constrained, CrossingsThatCascadeEnd) {
+  const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 104.9e-324}, {0, 10}, {3, 4}, {6, 4}, {6, 6}, {4, 6}};
+  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+  for (const bool hull : {true, false}) {
+    SCOPED_TRACE(hull);
+    Domain domain;
+    domain.convex_hull = hull;
+    domain.holes = {{5, 5}};
+    const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+    EXPECT_GT(t.crossings, 30u);
+    EXPECT_LT(t.crossings, 100u);
+    std::vector<Point> all = pts;
+    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+    MeshSpec spec;
+    spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
+    const CheckResult verdict = check_mesh(all, t.triangles, spec);
+    EXPECT_TRUE(verdict.valid) << verdict.message;
+  }
+}
+
 }  // namespace
 }  // namespace ridt::test
