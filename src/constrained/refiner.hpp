@@ -126,14 +126,20 @@ class Refiner {
   // thin beside one so wide that the splits cannot reach it before the subsegments are too
   // short to split).
   std::string left_bad() const {
-    std::vector<std::uint32_t> still;
+    std::vector<std::uint32_t> shape, area;  // still bad: for the angle, for the area
     for (const Bad& b : given_up_)
-      if (const double key = alive(b) ? badness(b.t) : kGood; key >= 0 && key != kGood) still.push_back(b.t);
-    std::sort(still.begin(), still.end());
-    const auto left = static_cast<std::size_t>(std::unique(still.begin(), still.end()) - still.begin());
-    if (left == 0) return "";
-    return "quality refinement left " + std::to_string(left) + " triangle" + (left == 1 ? "" : "s") +
-        " below the minimum angle: the subsegments near them could not be split far enough";
+      if (const double key = alive(b) ? badness(b.t) : kGood; key != kGood) (key >= 0 ? shape : area).push_back(b.t);
+    auto count = [](std::vector<std::uint32_t>& v) {
+      std::sort(v.begin(), v.end());
+      return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
+    };
+    const std::size_t below = count(shape), above = count(area);
+    if (below + above == 0) return "";
+    auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
+    std::string w = "quality refinement left ";
+    if (below > 0) w += triangles(below) + " below the minimum angle";
+    if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area";
+    return w + ": the subsegments near them could not be split far enough";
   }
 
   bool alive(const Bad& b) const {
@@ -313,6 +319,12 @@ class Refiner {
     // about p where they make a cavity p sees whole, else p added with flips.
     const VertexId v = m_.insert_cavity(p, seen_);
     added(v != Cdt::kNone ? v : m_.insert(p, at));
+    // p beyond a subsegment too short to split from t (a triangle far thinner than long): t
+    // stands, tried again, then given its centroid.
+    if (alive(b)) {
+      if (b.tries < 64) return bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
+      centroid(b);
+    }
   }
 
   // A triangle too large whose off-centre cannot go in (on a vertex, on the boundary kept whole,
@@ -324,7 +336,8 @@ class Refiner {
     const Point c{p.x / 3 + q.x / 3 + r.x / 3, p.y / 3 + q.y / 3 + r.y / 3};
     const Cdt::Place at = m_.locate(b.t, c, true);
     if (at.kind == Cdt::Place::Inside || (at.kind == Cdt::Place::Edge && !m_.fixed[3 * at.t + at.k]))
-      added(m_.insert(c, at));
+      return added(m_.insert(c, at));
+    given_up_.push_back(b);  // a triangle too thin for its centroid to fall inside it: left, and said
   }
 
   // Where subsegment x-y is split: at the power of two nearest half its length from its
@@ -369,7 +382,7 @@ class Refiner {
   std::vector<std::pair<VertexId, VertexId>> ends_;  // per vertex on a chain: its corners
   std::vector<std::uint8_t> small_;  // per corner: two of its segments meet at less than 60 degrees
   std::vector<Split> segments_;  // subsegments to split, if still there (and encroached)
-  std::vector<Bad> given_up_;  // triangles bad for their shape, left after 64 tries
+  std::vector<Bad> given_up_;  // triangles left bad: for their shape after 64 tries, too large with no point inside
   Buckets<Bad> bad_;
   std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
 };

@@ -614,6 +614,23 @@ TEST(Refine, TwoSegmentsAtAHairsAngleFromAFarEndIntoAHole) {
   EXPECT_GT(mesh(g, q).t.steiner.size(), 100u);
 }
 
+// Segments from (2, 2e179) to points near the origin, meshed with an area bound a fiftieth of
+// the box: a triangle a unit wide and 10^178 long has its off-centre beyond a subsegment too
+// short to split, and inserting it there leaves the triangle standing. It is tried again, then
+// given its centroid, and the mesh meets its bounds (refinement had dropped it, too large, in
+// silence). A fuzzer's input.
+TEST(Refine, ATriangleThatOutlivesItsOwnPointIsTriedAgain) {
+  Pslg g;
+  g.points = {{3, 0}, {3, 0}, {2, 2e179}, {5, 1}, {1, 2}, {0, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 2, 0, 0, 3};
+  g.holes = {{0.1, 1.9}};
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = 2e178;
+  const Meshed m = mesh(g, q, false, {{{1.5, 0.5}, 3, 0.1}});
+  EXPECT_TRUE(m.t.warning.empty()) << m.t.warning;
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
