@@ -67,17 +67,19 @@ double along_key(const Point& a, const Point& b, const Point& p) {
   return to >= from ? at : -at;
 }
 
-// How far p lies off the line a-b, in units of the coordinates' magnitudes where p lies along
-// it: an error of r times |x| in x and r times |y| in y, those of p or, where larger, those a
-// and b's give by interpolation at p's place along a-b, moves p by r of this measure at most.
-// (A point computed on the segment, on its pieces or at its crossings is off the line by the
-// roundings of the points it was computed from, which interpolate so: on a segment from near
-// 10^19 to (10, 0), a point a few units from (10, 0) is far off it.) Each coordinate on its own
-// scale: a point on a long segment almost along an axis may be off by much along the segment,
-// but only by the other coordinate's roundings across it. No scale is below `least`: where the
-// mesher worked in coordinates scaled by a power of two, its roundings below the least normal
-// double there are absolute, and `least` is that double in these coordinates.
-double off_line(const Point& a, const Point& b, const Point& p, long double least) {
+// How far p lies off the line a-b, in units of the coordinates' magnitudes: an error of r
+// times |x| in x and r times |y| in y moves p by r of this measure at most, where |x| and |y|
+// are, for a point computed from the segment's ends (`computed`: split off it, on the segment
+// or its pieces, from either end), the largest of a's, b's and p's; for an input point (on
+// the segment exactly, or where a crossing within a few units of its own coordinates was
+// merged into it), p's own or, where larger, those a and b give by interpolation at p's place
+// along a-b (on a segment from near 10^19 to (10, 0), a vertex 4 units from (10, 0) is far off
+// it). Each coordinate on its own scale: a point on a long segment almost along an axis may be
+// off by much along the segment, but only by the other coordinate's roundings across it. No
+// scale is below `least`: where the mesher worked in coordinates scaled by a power of two, its
+// roundings below the least normal double there are absolute, and `least` is that double in
+// these coordinates.
+double off_line(const Point& a, const Point& b, const Point& p, long double least, bool computed) {
   // The cross product from the end nearer p: from the far one, its two terms could be some
   // 10^20 times it, and long double's roundings of them as large as the measure itself.
   using L = long double;
@@ -87,7 +89,8 @@ double off_line(const Point& a, const Point& b, const Point& p, long double leas
   const Point& n = t < 0.5 ? a : b;
   const L cross = ex * (L{p.y} - n.y) - ey * (L{p.x} - n.x);
   auto scale = [&](double pa, double pb, double pp) {
-    return std::max({(1 - t) * std::fabs(pa) + t * std::fabs(pb), L(std::fabs(pp)), least});
+    const L ends = computed ? std::max(std::fabs(pa), std::fabs(pb)) : (1 - t) * std::fabs(pa) + t * std::fabs(pb);
+    return std::max({ends, L(std::fabs(pp)), least});
   };
   const L sx = scale(a.x, b.x, p.x), sy = scale(a.y, b.y, p.y);
   const L bound = std::fabs(L{b.x} - a.x) * sy + std::fabs(L{b.y} - a.y) * sx;
@@ -300,7 +303,9 @@ void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, co
       // An added point within 2^-40 (roundings upon roundings); an input point on it exactly,
       // or where a crossing within a few units in the last place of its coordinates was merged
       // into it: within 2^-49 (the merge's 4 units, the crossing's rounding).
-      return orient2d(pts[a], pts[b], p) == 0 || off_line(pts[a], pts[b], p, least) <= (v >= input ? 0x1p-40 : 0x1p-49);
+      return orient2d(pts[a], pts[b], p) == 0 ||
+          (v >= input ? off_line(pts[a], pts[b], p, least, true) <= 0x1p-40
+                      : off_line(pts[a], pts[b], p, least, false) <= 0x1p-49);
     };
     const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
     std::vector<VertexId> todo{a};
@@ -353,7 +358,7 @@ Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, st
   c.small.assign(pts.size(), 0);
   auto corner = [&](VertexId v) {
     if (v < input || adj[v].size() != 2) return true;
-    return off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v], least) > 0x1p-40;
+    return off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v], least, true) > 0x1p-40;
   };
   for (VertexId z = 0; z < pts.size(); ++z) {
     if (!corner(z)) continue;

@@ -631,6 +631,20 @@ TEST(Refine, ATriangleThatOutlivesItsOwnPointIsTriedAgain) {
   EXPECT_TRUE(m.t.warning.empty()) << m.t.warning;
 }
 
+// Segments from (33, 333301) to points near the origin, refined at 33 degrees: the points split
+// off them near their small ends are computed from the far end, and carry its roundings (some
+// 10^-14 across, at x near 10^-4): check_mesh takes them for points on the segment, so each is
+// a chain (the structure only: the angles near the far end's small corners are not asked).
+TEST(Refine, PointsSplitFromAFarEndCarryItsRoundings) {
+  Pslg g;
+  g.points = {{33, 333301}, {3, 0}, {2, 1}, {0, 1}, {1, 2}, {0, 2}};
+  g.segments = {0, 1, 1, 4, 2, 3, 3, 4, 4, 5, 5, 0, 0, 3};
+  g.holes = {{0.1, 1.9}};
+  Quality q;
+  q.min_angle = 33;
+  EXPECT_GT(mesh(g, q, false, {}, false).t.steiner.size(), 100u);
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
