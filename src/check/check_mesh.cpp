@@ -183,9 +183,10 @@ class GapSearch {
       }
       if (!on_boundary_[u]) continue;  // (unused vertices count as on the boundary)
       if (checked) {
+        auto clear = [&](VertexId w) { return on_boundary_[w] && !from_.count(w) && triangles_.through(u, w) < 0; };
         for (auto it = after(u); it != ahead_.end() && steps.size() < 16; ++it)
-          if (on_boundary_[it->second] && !from_.count(it->second) && triangles_.through(u, it->second) < 0)
-            steps.push_back(it->second);
+          if (clear(it->second)) steps.push_back(it->second);
+        if (const VertexId next = next_ahead(u); steps.empty() && next == b_ && clear(b_)) steps.push_back(b_);
       } else if (const VertexId next = next_ahead(u); on_boundary_[next] && !from_.count(next)) {
         steps.push_back(next);
       }
@@ -241,12 +242,12 @@ void follow_across_gaps(std::span<const Point> pts, VertexId a, VertexId b,
   if (search.run(true, gaps)) return;
   gaps.clear();
   const VertexId sa = spec.segments[2 * segment], sb = spec.segments[2 * segment + 1];
-  if (search.run(false, gaps))
-    for (auto g = gaps.rbegin(); g != gaps.rend(); ++g)
-      if (const std::int64_t t = triangles.through(g->u, g->w); t >= 0)
-        return report.problem("segment ", segment, " (", sa, "-", sb, ") runs through triangle ", t, " between points ",
-                              g->u, " and ", g->w, " with no segment edge");
-  report.problem("segment ", segment, " (", sa, "-", sb, ") is not a chain of segment edges");
+  if (!search.run(false, gaps))
+    return report.problem("segment ", segment, " (", sa, "-", sb, ") is not a chain of segment edges");
+  for (auto g = gaps.rbegin(); g != gaps.rend(); ++g)
+    if (const std::int64_t t = triangles.through(g->u, g->w); t >= 0)
+      return report.problem("segment ", segment, " (", sa, "-", sb, ") runs through triangle ", t, " between points ",
+                            g->u, " and ", g->w, " with no segment edge");
 }
 
 // Each input segment a-b a chain of segment edges: a search from a through points near the

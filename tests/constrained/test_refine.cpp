@@ -645,6 +645,21 @@ TEST(Refine, PointsSplitFromAFarEndCarryItsRoundings) {
   EXPECT_GT(mesh(g, q, false, {}, false).t.steiner.size(), 100u);
 }
 
+// A segment from (0, 0) to (3, 0) under one from (0, 0) to (420, 10^-323), refined: the first
+// is merged into the second, whose chain passes (3, 5e-324), and (3, 0) is left in no
+// triangle. check_mesh takes the step from there to (3, 0) as a gap through no triangle, even
+// though (3, 0) is not ahead of it along the segment. A fuzzer's input.
+TEST(Refine, ASegmentMergedIntoAnotherASubnormalAbove) {
+  Pslg g;
+  g.points = {{0, 0}, {3, 0}, {420, 9e-324}, {0, 0}, {1, 2}, {0, 2}};
+  g.segments = {0, 1, 1, 3, 2, 3, 2, 4, 4, 5, 5, 0, 0, 3};
+  g.holes = {{92233720368547758080.1, 1.9}};
+  Quality q;
+  q.min_angle = 20;
+  q.max_area = 1.68;
+  EXPECT_GT(mesh(g, q, false, {{{2.5, 0.5}, 300.1, 0}}).t.steiner.size(), 100u);
+}
+
 TEST(Refine, HugeAndTinyCoordinatesGiveTheSameMesh) {
   const Pslg g = generate_coastline(500, 2, 3);
   Quality q;
