@@ -2,7 +2,6 @@
 // what it was asked: its segment edges, the input's segments as chains of them, holes empty,
 // angles and areas.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -134,9 +133,9 @@ class TrianglesByX {
 // the segment ahead, both on the boundary (or in no triangle), the gap through no triangle and
 // no vertex. Depth first: another segment's chain may run within rounding of this one's (two
 // segments at a hair's angle, or crossing near a shared end), and a step onto it ends where
-// it leaves this segment, and the search goes back to take the other. Where no way reaches b,
-// the way that jumps each gap to the next point ahead is reported: its first gap through a
-// triangle, or, where it stops, the segment as no chain.
+// it leaves this segment, and the search goes back to take the other. Where no such way
+// reaches b, the way that jumps each gap to the next point ahead (or to b behind) is taken:
+// its first gap through a triangle is reported, or, where it stops, the segment as no chain.
 template <class Near>
 class GapSearch {
  public:

@@ -121,10 +121,11 @@ class Refiner {
 
   bool corner(VertexId v) const { return v < r_.corners; }
   bool boundary(std::uint32_t s) const { return m_.nbrs[s] < 0; }
-  // The warning for triangles still below the angle that refinement gave up on: each time the
-  // subsegments its point would encroach were split, it stood again, 64 times (in a wedge so
-  // thin beside one so wide that the splits cannot reach it before the subsegments are too
-  // short to split).
+  // The warning for the triangles refinement gave up on that are still bad: below the angle
+  // after 64 tries (each time the subsegments its point would encroach were split, or its point
+  // went in beyond one, it stood again: in a wedge so thin beside one so wide that the splits
+  // cannot reach it before the subsegments are too short to split), or too large where its
+  // centroid could not go in.
   std::string left_bad() const {
     std::vector<std::uint32_t> shape, area;  // still bad: for the angle, for the area
     for (const Bad& b : given_up_)
@@ -309,8 +310,8 @@ class Refiner {
       if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
     if (blocked || !hit.empty()) {
       if (b.key >= 0 && wedged(b.t, hit)) return;
-      if (b.tries >= 64 && b.key >= 0) given_up_.push_back(b);
-      if (hit.empty() || b.tries >= 64) return centroid(b);
+      if (b.tries >= 64) return leave(b);
+      if (hit.empty()) return centroid(b);
       for (const std::uint32_t s : hit) queue_split(s, true);
       bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
       return;
@@ -323,8 +324,15 @@ class Refiner {
     // stands, tried again, then given its centroid.
     if (alive(b)) {
       if (b.tries < 64) return bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
-      centroid(b);
+      leave(b);
     }
+  }
+
+  // Triangle b after 64 tries: one bad for its shape left, and counted for the warning; one too
+  // large given its centroid.
+  void leave(const Bad& b) {
+    if (b.key >= 0) given_up_.push_back(b);
+    centroid(b);
   }
 
   // A triangle too large whose off-centre cannot go in (on a vertex, on the boundary kept whole,

@@ -26,6 +26,20 @@ ConstrainedTriangulation checked(const std::vector<Point>& pts, const std::vecto
   return t;
 }
 
+// The constrained triangulation of pts and segs over `domain`, through check_mesh (the points
+// added where segments cross after the input's).
+ConstrainedTriangulation carved(const std::vector<Point>& pts, const std::vector<VertexId>& segs,
+                                const Domain& domain) {
+  ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
+  std::vector<Point> all = pts;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  MeshSpec spec;
+  spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
+  const CheckResult verdict = check_mesh(all, t.triangles, spec);
+  EXPECT_TRUE(verdict.valid) << verdict.message;
+  return t;
+}
+
 TEST(Constrained, TheKitesLongDiagonal) {
   const std::vector<Point> kite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
   const ConstrainedTriangulation t = checked(kite, {0, 2});
@@ -295,12 +309,7 @@ TEST(Constrained, HoleSeedsOnAnEdgeOrAVertexEmptyEverySide) {
     Domain domain;
     domain.convex_hull = hull;
     domain.holes = holes;
-    const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
-    MeshSpec spec;
-    spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = holes;
-    const CheckResult verdict = check_mesh(pts, t.triangles, spec);
-    EXPECT_TRUE(verdict.valid) << verdict.message;
-    return t.size();
+    return carved(pts, segs, domain).size();
   };
   const std::size_t all = holed(true, {}), outline = holed(false, {});
   ASSERT_LT(outline, all);
@@ -328,12 +337,7 @@ TEST(Constrained, ASquareBesideTheEndOfAVeryLongSegment) {
   Domain domain;
   domain.convex_hull = false;
   domain.holes = {{5, 2}};
-  const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
-  EXPECT_EQ(t.size(), 2u);  // the square's halves
-  MeshSpec spec;
-  spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
-  const CheckResult verdict = check_mesh(pts, t.triangles, spec);
-  EXPECT_TRUE(verdict.valid) << verdict.message;
+  EXPECT_EQ(carved(pts, segs, domain).size(), 2u);  // the square's halves
 }
 
 // A fuzzer's graph: the segment from (9.2e18, 9.2e18) to (10, 0) runs outside the domain (its
@@ -354,14 +358,7 @@ TEST(Constrained, PointsBesideTheSmallEndOfAHugeSegmentAreNotOnIt) {
   Domain domain;
   domain.convex_hull = false;
   domain.holes = {{0, 5}};
-  const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
-  EXPECT_EQ(t.crossings, 4u);
-  std::vector<Point> all = pts;
-  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-  MeshSpec spec;
-  spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
-  const CheckResult verdict = check_mesh(all, t.triangles, spec);
-  EXPECT_TRUE(verdict.valid) << verdict.message;
+  EXPECT_EQ(carved(pts, segs, domain).crossings, 4u);
 }
 
 // A fuzzer's graph: (10, 10^-322) just above (10, 0), and three segments that end at (10, 0)
@@ -377,14 +374,7 @@ TEST(Constrained, ChainsWithinRoundingOfOneAnotherBesideAnEndIntoAHole) {
     Domain domain;
     domain.convex_hull = hull;
     domain.holes = {{5, 5}};
-    const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
-    EXPECT_EQ(t.crossings, 4u);
-    std::vector<Point> all = pts;
-    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-    MeshSpec spec;
-    spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
-    const CheckResult verdict = check_mesh(all, t.triangles, spec);
-    EXPECT_TRUE(verdict.valid) << verdict.message;
+    EXPECT_EQ(carved(pts, segs, domain).crossings, 4u);
   }
 }
 
@@ -400,15 +390,9 @@ TEST(Constrained, CrossingsThatCascadeEnd) {
     Domain domain;
     domain.convex_hull = hull;
     domain.holes = {{5, 5}};
-    const ConstrainedTriangulation t = triangulate_constrained(pts, segs, {}, domain);
-    EXPECT_GT(t.crossings, 30u);
-    EXPECT_LT(t.crossings, 100u);
-    std::vector<Point> all = pts;
-    all.insert(all.end(), t.steiner.begin(), t.steiner.end());
-    MeshSpec spec;
-    spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
-    const CheckResult verdict = check_mesh(all, t.triangles, spec);
-    EXPECT_TRUE(verdict.valid) << verdict.message;
+    const std::size_t crossings = carved(pts, segs, domain).crossings;
+    EXPECT_GT(crossings, 30u);
+    EXPECT_LT(crossings, 100u);
   }
 }
 

@@ -25,7 +25,20 @@ struct Meshed {
   std::vector<Point> all;  // the input's points, then those added
 };
 
-// The mesh, validated, with the bounds asked unless `bounds` is off (then only its structure).
+// check_mesh's verdict on mesh m of g, asked for q's bounds where `bounds`.
+CheckResult verdict(const Meshed& m, const Pslg& g, const Quality& q, bool bounds) {
+  MeshSpec spec;
+  spec.edges = m.t.edges;
+  spec.segments = g.segments;
+  spec.input_points = g.points.size();
+  spec.holes = g.holes;
+  spec.min_angle = bounds ? q.min_angle : 0;
+  spec.max_area = bounds ? q.max_area : 0;
+  return check_mesh(m.all, m.t.triangles, spec);
+}
+
+// The mesh, validated, with the bounds asked unless `bounds` is off (then only its structure)
+// or refinement warned (a run that stopped early, or left triangles, keeps no bound).
 Meshed mesh(const Pslg& g, const Quality& q, bool convex_hull = false, std::vector<Region> regions = {},
             bool bounds = true) {
   Domain d;
@@ -34,14 +47,7 @@ Meshed mesh(const Pslg& g, const Quality& q, bool convex_hull = false, std::vect
   d.regions = std::move(regions);
   Meshed m{triangulate_constrained(g.points, g.segments, {}, d, q), g.points};
   m.all.insert(m.all.end(), m.t.steiner.begin(), m.t.steiner.end());
-  MeshSpec spec;
-  spec.edges = m.t.edges;
-  spec.segments = g.segments;
-  spec.input_points = g.points.size();
-  spec.holes = g.holes;
-  spec.min_angle = m.t.warning.empty() && bounds ? q.min_angle : 0;  // a run stopped early keeps no bound
-  spec.max_area = m.t.warning.empty() && bounds ? q.max_area : 0;
-  const CheckResult r = check_mesh(m.all, m.t.triangles, spec);
+  const CheckResult r = verdict(m, g, q, bounds && m.t.warning.empty());
   EXPECT_TRUE(r.valid) << r.message;
   return m;
 }
@@ -524,11 +530,8 @@ TEST(Refine, AWedgeTooThinForTheBoundKeepsItsBadTriangles) {
         !sides.count(v[2]) && m.all[v[0]].x > 3;
   }
   EXPECT_GT(inside, 0u);
-  MeshSpec spec;
-  spec.edges = m.t.edges, spec.segments = g.segments, spec.input_points = g.points.size(), spec.holes = g.holes;
-  spec.min_angle = q.min_angle, spec.max_area = q.max_area;
-  const CheckResult verdict = check_mesh(m.all, m.t.triangles, spec);
-  EXPECT_TRUE(verdict.valid) << verdict.message;
+  const CheckResult bounded = verdict(m, g, q, true);
+  EXPECT_TRUE(bounded.valid) << bounded.message;
 }
 
 // Three segments from (0, 9.2e18) to points a unit apart near the origin, meshed at 30 degrees
@@ -546,12 +549,9 @@ TEST(Refine, TrianglesRefinementGivesUpOnAreReported) {
   q.max_area = 3.689348807370955e16;
   const Meshed m = mesh(g, q);  // validated without the bounds, as the warning says
   EXPECT_NE(m.t.warning.find("quality refinement left"), std::string::npos) << m.t.warning;
-  MeshSpec spec;
-  spec.edges = m.t.edges, spec.segments = g.segments, spec.input_points = g.points.size(), spec.holes = g.holes;
-  spec.min_angle = q.min_angle, spec.max_area = q.max_area;
-  const CheckResult verdict = check_mesh(m.all, m.t.triangles, spec);
-  EXPECT_FALSE(verdict.valid);
-  EXPECT_NE(verdict.message.find("below 30"), std::string::npos) << verdict.message;
+  const CheckResult bounded = verdict(m, g, q, true);
+  EXPECT_FALSE(bounded.valid);
+  EXPECT_NE(bounded.message.find("below 30"), std::string::npos) << bounded.message;
 }
 
 // The wedge's excuse is its own: a square with a V of two segments inside, 5.7 degrees apart
