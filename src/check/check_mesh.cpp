@@ -129,9 +129,9 @@ class TrianglesByX {
 
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
-// along it, the nearest to its line first; where there is none, across a gap to a point near
-// the segment ahead, both on the boundary (or in no triangle), the gap through no triangle and
-// no vertex. Depth first: another segment's chain may run within rounding of this one's (two
+// along it, the nearest to its line first; where there is none, or none leads on to b, across
+// a gap to a point near the segment ahead, both on the boundary (or in no triangle), the gap
+// through no triangle and no vertex. Depth first: another segment's chain may run within rounding of this one's (two
 // segments at a hair's angle, or crossing near a shared end), and a step onto it ends where
 // it leaves this segment, and the search goes back to take the other. Where no such way
 // reaches b, the way that jumps each gap to the next point ahead (or to b behind) is taken:
@@ -163,9 +163,10 @@ class GapSearch {
   // way that jumps to the next point ahead, its gaps kept to report. Whether b was reached.
   bool run(bool checked, std::vector<Gap>& gaps) {
     from_ = {{a_, {kNone, false}}};  // how each point was reached: from where, across a gap
-    std::vector<VertexId> todo{a_}, steps;
+    std::vector<std::pair<VertexId, bool>> todo{{a_, false}};  // a point; true: its gaps only
+    std::vector<VertexId> steps;
     while (!todo.empty()) {
-      const VertexId u = todo.back();
+      const auto [u, gaps_only] = todo.back();
       todo.pop_back();
       if (u == b_) {
         for (VertexId v = b_; v != a_; v = from_[v].first)
@@ -173,11 +174,15 @@ class GapSearch {
         return true;
       }
       steps.clear();
-      for (const VertexId w : adj_[u])
-        if (key(w) > key(u) && near_(w) && !from_.count(w)) steps.push_back(w);
+      if (!gaps_only)
+        for (const VertexId w : adj_[u])
+          if (key(w) > key(u) && near_(w) && !from_.count(w)) steps.push_back(w);
       if (!steps.empty()) {  // the nearest to the line taken first: pushed last
+        // Its gaps only once every way on from its edges has failed (an edge onto another
+        // segment's chain, within rounding of this one beside a hole): pushed first.
+        if (checked) todo.push_back({u, true});
         std::sort(steps.begin(), steps.end(), [&](VertexId w, VertexId v) { return nearer(v, w); });
-        for (const VertexId w : steps) from_[w] = {u, false}, todo.push_back(w);
+        for (const VertexId w : steps) from_[w] = {u, false}, todo.push_back({w, false});
         continue;
       }
       if (!on_boundary_[u]) continue;  // (unused vertices count as on the boundary)
@@ -189,7 +194,7 @@ class GapSearch {
       } else if (const VertexId next = next_ahead(u); on_boundary_[next] && !from_.count(next)) {
         steps.push_back(next);
       }
-      for (auto w = steps.rbegin(); w != steps.rend(); ++w) from_[*w] = {u, true}, todo.push_back(*w);
+      for (auto w = steps.rbegin(); w != steps.rend(); ++w) from_[*w] = {u, true}, todo.push_back({*w, false});
     }
     return false;
   }

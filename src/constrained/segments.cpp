@@ -114,9 +114,12 @@ class Inserter {
       v = m_.insert(x, at);
     } else if (m_.fits_on_edge(t, k, x)) {  // in neither triangle by a rounding: on the edge
       v = m_.insert_on_edge(x, t, k);
-    } else {  // beside triangles thinner than a rounding: wherever it lies
-      const auto [y, far] = found_near(t, x);
-      v = far.kind == Cdt::Place::Corner ? m_.at(far.t, far.k) : m_.insert(y, far);
+    } else if (const auto [y, far] = found_near(t, x); far.kind == Cdt::Place::Corner) {
+      v = m_.at(far.t, far.k);  // beside triangles thinner than a rounding: wherever it lies
+    } else if (far.kind != Cdt::Place::Outside) {
+      v = m_.insert(y, far);
+    } else {  // in a sliver of the hull with no double of its own near x: a corner at hand
+      v = nearest(x, {a, b, u, w, m_.at(t, k)});
     }
     // u-w, no longer fixed, may be left standing where it is not locally Delaunay (x rounded
     // onto a vertex): flipped as it needs.
@@ -129,7 +132,8 @@ class Inserter {
 
   // Where x lies in the triangulation (found from triangle t), and x itself; where x lies
   // outside it, beyond the hull by a rounding (the exact crossing lies on both segments, so
-  // inside), the nearest of the doubles next to x in each coordinate that lies in it.
+  // inside), the nearest of the doubles next to x in each coordinate that lies in it; Outside
+  // where none does (the hull there thinner than a unit in the last place of x).
   std::pair<Point, Cdt::Place> found_near(std::uint32_t t, const Point& x) const {
     if (const Cdt::Place at = m_.find(t, x); at.kind != Cdt::Place::Outside) return {x, at};
     std::vector<Point> next;
@@ -142,7 +146,7 @@ class Inserter {
     std::stable_sort(next.begin(), next.end(), [&](const Point& p, const Point& q) { return off(p) < off(q); });
     for (const Point& y : next)
       if (const Cdt::Place at = m_.find(t, y); at.kind != Cdt::Place::Outside) return {y, at};
-    throw std::logic_error("ridt: a crossing falls outside the triangulation");
+    return {x, Cdt::Place{Cdt::Place::Outside, 0, 0}};
   }
 
   // The one of `ends` nearest x.

@@ -396,5 +396,21 @@ TEST(Constrained, CrossingsThatCascadeEnd) {
   }
 }
 
+TEST(Constrained, ACrossingInASliverOfTheHullGoesToACornerAtHand) {
+  // (6, 6)-(10, 0) crosses (10, 1e-322)-(0, 10) 2e-322 left of x = 10, where the hull is
+  // 1e-322 wide: the crossing and the doubles next to it lie outside, so it goes to the
+  // nearest corner, (10, 1e-322). Without the hull only the sliver between (6, 4)-(10, 0) and
+  // the segment above it and the triangle that (6, 4)-(6, 6) closes beyond it are left.
+  const std::vector<Point> pts = {{0, 1}, {10, 0}, {10, 104.9e-324}, {0, 10}, {3, 4}, {6, 4}, {6, 6}, {4, 6}};
+  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+  Domain domain;
+  domain.holes = {{5, 5}};
+  const ConstrainedTriangulation t = carved(pts, segs, domain);
+  EXPECT_TRUE(t.steiner.empty());
+  EXPECT_EQ(canonical(t.triangles), canonical(std::vector<VertexId>{1, 2, 5, 2, 6, 5}));
+  domain.convex_hull = true;
+  EXPECT_TRUE(carved(pts, segs, domain).steiner.empty());
+}
+
 }  // namespace
 }  // namespace ridt::test
