@@ -127,6 +127,41 @@ class TrianglesByX {
   double widest_ = 0;
 };
 
+// Whether a point lies on input segment a-b, as far as its chain goes: between its ends along
+// it (up to 2^-40 of each end's coordinate: a crossing rounded past an end; a point beside a
+// very long segment's end, within that segment's rounding of its line, is not on it), within
+// its box grown by 10^-6 of its length, and off its line by no more than an added point's
+// roundings upon roundings (2^-40 of the coordinates: a point on another segment is farther)
+// or an input point's where a crossing within a few units in the last place of its
+// coordinates was merged into it (2^-49: the merge's 4 units, the crossing's rounding).
+struct OnSegment {
+  OnSegment(std::span<const Point> points, VertexId from_a, VertexId to_b, std::size_t input_points, long double floor)
+      : pts(points), a(from_a), b(to_b), input(input_points), least(floor) {
+    const Point &pa = pts[a], &pb = pts[b];
+    const double grow = 1e-6 * std::max(std::fabs(pa.x - pb.x), std::fabs(pa.y - pb.y));
+    x0 = std::min(pa.x, pb.x) - grow, x1 = std::max(pa.x, pb.x) + grow;
+    y0 = std::min(pa.y, pb.y) - grow, y1 = std::max(pa.y, pb.y) + grow;
+    from = along_key(pa, pb, pa), to = along_key(pa, pb, pb);
+  }
+
+  bool operator()(VertexId v) const {
+    const Point& p = pts[v];
+    if (v == b) return true;
+    if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
+    const double at = along_key(pts[a], pts[b], p);
+    if (!(at > from - 0x1p-40 * std::fabs(from) && at < to + 0x1p-40 * std::fabs(to))) return false;
+    return orient2d(pts[a], pts[b], p) == 0 ||
+        (v >= input ? off_line(pts[a], pts[b], p, least, true) <= 0x1p-40
+                    : off_line(pts[a], pts[b], p, least, false) <= 0x1p-49);
+  }
+
+  std::span<const Point> pts;
+  VertexId a, b;
+  std::size_t input;
+  long double least;
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0, from = 0, to = 0;
+};
+
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
 // along it, the nearest to its line first; where there is none, or none leads on to b, across
@@ -136,15 +171,14 @@ class TrianglesByX {
 // it leaves this segment, and the search goes back to take the other. Where no such way
 // reaches b, the way that jumps each gap to the next point ahead (or to b behind) is taken:
 // its first gap through a triangle is reported, or, where it stops, the segment as no chain.
-template <class Near>
 class GapSearch {
  public:
-  GapSearch(std::span<const Point> pts, VertexId a, VertexId b, const std::vector<std::vector<VertexId>>& adj,
-            std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
-            const std::vector<std::uint8_t>& on_boundary, Near near, TrianglesByX& triangles, std::size_t segment)
+  GapSearch(std::span<const Point> pts, const OnSegment& near, const std::vector<std::vector<VertexId>>& adj,
+            std::span<const std::pair<double, VertexId>> by_x, const std::vector<std::uint8_t>& on_boundary,
+            TrianglesByX& triangles, std::size_t segment)
       : pts_(pts),
-        a_(a),
-        b_(b),
+        a_(near.a),
+        b_(near.b),
         adj_(adj),
         on_boundary_(on_boundary),
         near_(near),
@@ -152,11 +186,18 @@ class GapSearch {
         segment_(segment) {
     // The points near the segment, by key: those with a segment edge within near's x range
     // [x0, x1] (by_x: every such point, by x), so that many segments in holes cost n log n.
-    ahead_.push_back({key(b), b});
-    for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{x0, VertexId{0}});
-         it != by_x.end() && it->first <= x1; ++it)
-      if (it->second != b && near(it->second)) ahead_.push_back({key(it->second), it->second});
+    ahead_.push_back({key(b_), b_});
+    for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair{near.x0, VertexId{0}});
+         it != by_x.end() && it->first <= near.x1; ++it)
+      if (it->second != b_ && near(it->second)) ahead_.push_back({key(it->second), it->second});
     std::sort(ahead_.begin(), ahead_.end());
+  }
+
+  // The points near the segment (those with a segment edge, and b).
+  std::vector<VertexId> points() const {
+    std::vector<VertexId> all;
+    for (const auto& [k, v] : ahead_) all.push_back(v);
+    return all;
   }
 
   // `checked`: gaps only through no triangle, to any of the next 16 points ahead; else the one
@@ -228,95 +269,122 @@ class GapSearch {
   VertexId a_, b_;
   const std::vector<std::vector<VertexId>>& adj_;
   const std::vector<std::uint8_t>& on_boundary_;
-  Near near_;
+  const OnSegment& near_;
   TrianglesByX& triangles_;
   std::size_t segment_;
   std::vector<std::pair<Key, VertexId>> ahead_;
   std::unordered_map<VertexId, std::pair<VertexId, bool>> from_;
 };
 
-template <class Near>
-void follow_across_gaps(std::span<const Point> pts, VertexId a, VertexId b,
-                        const std::vector<std::vector<VertexId>>& adj,
-                        std::span<const std::pair<double, VertexId>> by_x, double x0, double x1,
-                        const std::vector<std::uint8_t>& on_boundary, Near near, TrianglesByX& triangles,
-                        std::size_t segment, const MeshSpec& spec, Report& report) {
-  GapSearch<Near> search(pts, a, b, adj, by_x, x0, x1, on_boundary, near, triangles, segment);
-  std::vector<Gap> gaps;
-  if (search.run(true, gaps)) return;
-  gaps.clear();
-  const VertexId sa = spec.segments[2 * segment], sb = spec.segments[2 * segment + 1];
-  if (!search.run(false, gaps))
-    return report.problem("segment ", segment, " (", sa, "-", sb, ") is not a chain of segment edges");
-  for (auto g = gaps.rbegin(); g != gaps.rend(); ++g)
-    if (const std::int64_t t = triangles.through(g->u, g->w); t >= 0)
-      return report.problem("segment ", segment, " (", sa, "-", sb, ") runs through triangle ", t, " between points ",
-                            g->u, " and ", g->w, " with no segment edge");
-}
+// Each input segment a-b a chain of segment edges: a search from a through points on it
+// (OnSegment), along segment edges or, where it runs through a hole, across gaps. And the added
+// points that lie on a segment between their two segment edges' other ends (straight): no
+// corner of the chains that check_shape measures angles between, however their neighbours'
+// coordinates measure the turn (a point split off near the small end of a long segment
+// carries the roundings of its far end).
+class ChainCheck {
+ public:
+  ChainCheck(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec, long double least,
+             const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report)
+      : straight(pts.size(), 0),
+        pts_(pts),
+        spec_(spec),
+        least_(least),
+        used_(used),
+        on_boundary_(on_boundary),
+        report_(report),
+        adj_(adjacency(pts.size(), spec.edges)),
+        input_(spec.input_points == 0 ? pts.size() : spec.input_points),
+        seen_(pts.size(), 0),
+        triangles_(pts, tris) {  // sorted when a segment first runs through a hole
+    for (VertexId v = 0; v < pts.size(); ++v)
+      if (used[v]) vertex_at_.emplace(bits(pts[v]), v);
+    for (VertexId v = 0; v < pts.size(); ++v)
+      if (!adj_[v].empty()) by_x_.push_back({pts[v].x, v});
+    std::sort(by_x_.begin(), by_x_.end());
+  }
 
-// Each input segment a-b a chain of segment edges: a search from a through points near the
-// segment (between its ends along it, within its box grown by 10^-6 of its length): input
-// points on its line up to a few units in the last place (a crossing rounded onto one), added
-// points up to the roundings that splits of splits gather (2^-40 of the coordinates: a point
-// on another segment is farther).
-void check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec, long double least,
-                  const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report) {
-  const auto adj = adjacency(pts.size(), spec.edges);
-  const std::size_t input = spec.input_points == 0 ? pts.size() : spec.input_points;
-  std::unordered_map<std::uint64_t, VertexId> vertex_at;  // an unused duplicate stands for the used one
-  auto bits = [](const Point& p) { return std::hash<double>{}(p.x) * 31 + std::hash<double>{}(p.y); };
-  for (VertexId v = 0; v < pts.size(); ++v)
-    if (used[v]) vertex_at.emplace(bits(pts[v]), v);
-  auto stand = [&](VertexId v) {
-    const auto it = vertex_at.find(bits(pts[v]));
-    return used[v] || it == vertex_at.end() || !(pts[it->second] == pts[v]) ? v : it->second;
-  };
-  std::vector<std::pair<double, VertexId>> by_x;  // the points with a segment edge, by x (across_gaps)
-  for (VertexId v = 0; v < pts.size(); ++v)
-    if (!adj[v].empty()) by_x.push_back({pts[v].x, v});
-  std::sort(by_x.begin(), by_x.end());
-  std::vector<std::uint32_t> seen(pts.size(), 0);
-  TrianglesByX triangles(pts, tris);  // sorted when a segment first runs through a hole
-  for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) {
-    if (spec.segments[s] >= input || spec.segments[s + 1] >= input) {
-      report.problem("segment ", s / 2, " refers to a point that is not one of the input's ", input);
-      continue;
-    }
-    const VertexId a = stand(spec.segments[s]), b = stand(spec.segments[s + 1]);
-    if (a == b || pts[a] == pts[b]) continue;  // (two equal points, both unused)
-    const double length = std::max(std::fabs(pts[a].x - pts[b].x), std::fabs(pts[a].y - pts[b].y));
-    const double grow = 1e-6 * length;
-    const double x0 = std::min(pts[a].x, pts[b].x) - grow, x1 = std::max(pts[a].x, pts[b].x) + grow;
-    const double y0 = std::min(pts[a].y, pts[b].y) - grow, y1 = std::max(pts[a].y, pts[b].y) + grow;
-    const double from = along_key(pts[a], pts[b], pts[a]), to = along_key(pts[a], pts[b], pts[b]);
-    auto near = [&](VertexId v) {
-      const Point& p = pts[v];
-      if (v == b) return true;
-      if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
-      // Between the ends along the segment, up to 2^-40 of each end's coordinate (a crossing
-      // rounded past an end): a point beside a very long segment's end, within that segment's
-      // rounding of its line, is not on it.
-      const double at = along_key(pts[a], pts[b], p);
-      if (!(at > from - 0x1p-40 * std::fabs(from) && at < to + 0x1p-40 * std::fabs(to))) return false;
-      // An added point within 2^-40 (roundings upon roundings); an input point on it exactly,
-      // or where a crossing within a few units in the last place of its coordinates was merged
-      // into it: within 2^-49 (the merge's 4 units, the crossing's rounding).
-      return orient2d(pts[a], pts[b], p) == 0 ||
-          (v >= input ? off_line(pts[a], pts[b], p, least, true) <= 0x1p-40
-                      : off_line(pts[a], pts[b], p, least, false) <= 0x1p-49);
-    };
-    const auto stamp = static_cast<std::uint32_t>(s / 2 + 1);
-    std::vector<VertexId> todo{a};
-    seen[a] = stamp;
-    while (!todo.empty() && seen[b] != stamp) {
+  void check(std::size_t s) {
+    if (spec_.segments[2 * s] >= input_ || spec_.segments[2 * s + 1] >= input_)
+      return report_.problem("segment ", s, " refers to a point that is not one of the input's ", input_);
+    const VertexId a = stand(spec_.segments[2 * s]), b = stand(spec_.segments[2 * s + 1]);
+    if (a == b || pts_[a] == pts_[b]) return;  // (two equal points, both unused)
+    const OnSegment near(pts_, a, b, input_, least_);
+    const auto stamp = static_cast<std::uint32_t>(s + 1);
+    std::vector<VertexId> todo{a}, reached{a};
+    seen_[a] = stamp;
+    while (!todo.empty()) {
       const VertexId v = todo.back();
       todo.pop_back();
-      for (const VertexId w : adj[v])
-        if (seen[w] != stamp && near(w)) seen[w] = stamp, todo.push_back(w);
+      for (const VertexId w : adj_[v])
+        if (seen_[w] != stamp && near(w)) seen_[w] = stamp, todo.push_back(w), reached.push_back(w);
     }
-    if (seen[b] != stamp)
-      follow_across_gaps(pts, a, b, adj, by_x, x0, x1, on_boundary, near, triangles, s / 2, spec, report);
+    if (seen_[b] != stamp) reached = across_gaps(near, s);
+    mark_straight(near, reached);
   }
+
+  std::vector<std::uint8_t> straight;  // per point
+
+ private:
+  static std::size_t bits(const Point& p) { return std::hash<double>{}(p.x) * 31 + std::hash<double>{}(p.y); }
+  VertexId stand(VertexId v) const {  // an unused duplicate stands for the used one
+    const auto it = vertex_at_.find(bits(pts_[v]));
+    return used_[v] || it == vertex_at_.end() || !(pts_[it->second] == pts_[v]) ? v : it->second;
+  }
+
+  // The segment through a hole: a chain where it lies in the mesh (GapSearch), or reported.
+  // Returns the points on it.
+  std::vector<VertexId> across_gaps(const OnSegment& near, std::size_t s) {
+    GapSearch search(pts_, near, adj_, by_x_, on_boundary_, triangles_, s);
+    std::vector<Gap> gaps;
+    if (search.run(true, gaps)) return search.points();
+    gaps.clear();
+    const VertexId sa = spec_.segments[2 * s], sb = spec_.segments[2 * s + 1];
+    if (!search.run(false, gaps)) {
+      report_.problem("segment ", s, " (", sa, "-", sb, ") is not a chain of segment edges");
+      return {};
+    }
+    for (auto g = gaps.rbegin(); g != gaps.rend(); ++g)
+      if (const std::int64_t t = triangles_.through(g->u, g->w); t >= 0) {
+        report_.problem("segment ", s, " (", sa, "-", sb, ") runs through triangle ", t, " between points ", g->u,
+                        " and ", g->w, " with no segment edge");
+        break;
+      }
+    return {};
+  }
+
+  // Added points with two segment edges, to points on the segment either side of them along it.
+  void mark_straight(const OnSegment& near, const std::vector<VertexId>& reached) {
+    const Point &a = pts_[near.a], &b = pts_[near.b];
+    for (const VertexId v : reached) {
+      if (v < input_ || adj_[v].size() != 2 || !near(adj_[v][0]) || !near(adj_[v][1])) continue;
+      const auto kp = along_keys(a, b, pts_[adj_[v][0]]), kv = along_keys(a, b, pts_[v]),
+                 kq = along_keys(a, b, pts_[adj_[v][1]]);
+      if ((kp < kv && kv < kq) || (kq < kv && kv < kp)) straight[v] = 1;
+    }
+  }
+
+  std::span<const Point> pts_;
+  const MeshSpec& spec_;
+  long double least_;
+  const std::vector<std::uint8_t>& used_;
+  const std::vector<std::uint8_t>& on_boundary_;
+  Report& report_;
+  std::vector<std::vector<VertexId>> adj_;
+  std::size_t input_;
+  std::unordered_map<std::uint64_t, VertexId> vertex_at_;
+  std::vector<std::pair<double, VertexId>> by_x_;  // the points with a segment edge, by x (GapSearch)
+  std::vector<std::uint32_t> seen_;
+  TrianglesByX triangles_;
+};
+
+// The input's segments checked as chains; returns which added points lie on one (ChainCheck).
+std::vector<std::uint8_t> check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
+                                       long double least, const std::vector<std::uint8_t>& used,
+                                       const std::vector<std::uint8_t>& on_boundary, Report& report) {
+  ChainCheck chains(pts, tris, spec, least, used, on_boundary, report);
+  for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) chains.check(s / 2);
+  return std::move(chains.straight);
 }
 
 // No hole's seed inside or on any triangle: the seeds sorted by x, each triangle tested
@@ -375,12 +443,13 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
   const long double least =
       std::max(std::ldexp(0x1p-1022L, here - detail::exact_scale_exponent(input.first(input_points))),
                std::ldexp(0x1p-1034L, here));
-  check_chains(pts, tris, spec, least, used, on_boundary, report);
+  const std::vector<std::uint8_t> straight = check_chains(pts, tris, spec, least, used, on_boundary, report);
   std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
   if (here != 0)
     for (Point& h : holes) h = {std::ldexp(h.x, here), std::ldexp(h.y, here)};
   check_holes(pts, tris, holes, report);
-  const detail::MeshShape shape = detail::check_mesh_shape(input, pts, tris, spec, input_points, least, report);
+  const detail::MeshShape shape =
+      detail::check_mesh_shape(input, pts, tris, spec, input_points, least, straight, report);
   std::ostringstream s;
   s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
     << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()

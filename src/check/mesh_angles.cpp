@@ -52,9 +52,10 @@ double off_line(const Point& a, const Point& b, const Point& p, long double leas
 namespace {
 
 // The chains of segment edges between corners (input points, and added points where other
-// than two segment edges meet or where the two turn, off the line between their other ends by
-// more than check_chains lets a point on a segment lie: a point added where segments cross):
-// each chain's two ends, and per vertex the chains it lies on.
+// than two segment edges meet or where the two turn: not found on an input segment between
+// them (`straight`), and off the line between their other ends by more than check_chains lets
+// a point on a segment lie, as a point added where segments cross): each chain's two ends, and
+// per vertex the chains it lies on.
 struct Chains {
   std::vector<std::pair<VertexId, VertexId>> ends;
   std::vector<std::vector<std::uint32_t>> on;
@@ -65,14 +66,15 @@ struct Chains {
   std::vector<Wedge> wedges;
 };
 
-Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input, long double least) {
+Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input, long double least,
+                 std::span<const std::uint8_t> straight) {
   const auto adj = adjacency(pts.size(), edges);
   Chains c;
   c.on.resize(pts.size());
   c.small.assign(pts.size(), 0);
   auto corner = [&](VertexId v) {
     if (v < input || adj[v].size() != 2) return true;
-    return off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v], least, true) > 0x1p-40;
+    return !straight[v] && off_line(pts[adj[v][0]], pts[adj[v][1]], pts[v], least, true) > 0x1p-40;
   };
   for (VertexId z = 0; z < pts.size(); ++z) {
     if (!corner(z)) continue;
@@ -272,8 +274,9 @@ MeshShape check_shape(std::span<const Point> pts, std::span<const Point> scaled,
 }  // namespace
 
 MeshShape check_mesh_shape(std::span<const Point> input, std::span<const Point> pts, std::span<const VertexId> tris,
-                           const MeshSpec& spec, std::size_t input_points, long double least, Report& report) {
-  return check_shape(input, pts, tris, spec, chains_of(pts, spec.edges, input_points, least), report);
+                           const MeshSpec& spec, std::size_t input_points, long double least,
+                           std::span<const std::uint8_t> straight, Report& report) {
+  return check_shape(input, pts, tris, spec, chains_of(pts, spec.edges, input_points, least, straight), report);
 }
 
 }  // namespace ridt::detail

@@ -25,8 +25,10 @@ struct MeshShape {
 
 /// The triangles' angles and areas against spec's bounds, each that breaks one reported; `input`
 /// the points as given, `pts` as the predicates see them (scaled), the first `input_points` the
-/// input's, `least` as for off_line.
+/// input's, `least` as for off_line; `straight`: per point, an added one that lies on an input
+/// segment between its two segment edges (no corner of the segments' chains).
 MeshShape check_mesh_shape(std::span<const Point> input, std::span<const Point> pts, std::span<const VertexId> tris,
-                           const MeshSpec& spec, std::size_t input_points, long double least, Report& report);
+                           const MeshSpec& spec, std::size_t input_points, long double least,
+                           std::span<const std::uint8_t> straight, Report& report);
 
 }  // namespace ridt::detail

@@ -631,18 +631,23 @@ TEST(Refine, ATriangleThatOutlivesItsOwnPointIsTriedAgain) {
   EXPECT_TRUE(m.t.warning.empty()) << m.t.warning;
 }
 
-// Segments from (33, 333301) to points near the origin, refined at 33 degrees: the points split
-// off them near their small ends are computed from the far end, and carry its roundings (some
-// 10^-14 across, at x near 10^-4): check_mesh takes them for points on the segment, so each is
-// a chain (the structure only: the angles near the far end's small corners are not asked).
+// Segments from (33, 333301) to points near the origin, refined at 30 and 33 degrees: the
+// points split off them near their small ends are computed from the far end, and carry its
+// roundings (some 10^-14 across, at x near 10^-4). check_mesh takes them for points on the
+// segment, so each is a chain, and no corner of it either: the triangles left below the bound
+// beside the thin wedges these segments make are beside the small angle at (33, 333301).
 TEST(Refine, PointsSplitFromAFarEndCarryItsRoundings) {
   Pslg g;
   g.points = {{33, 333301}, {3, 0}, {2, 1}, {0, 1}, {1, 2}, {0, 2}};
   g.segments = {0, 1, 1, 4, 2, 3, 3, 4, 4, 5, 5, 0, 0, 3};
   g.holes = {{0.1, 1.9}};
-  Quality q;
-  q.min_angle = 33;
-  EXPECT_GT(mesh(g, q, false, {}, false).t.steiner.size(), 100u);
+  for (const double angle : {30.0, 33.0}) {
+    Quality q;
+    q.min_angle = angle;
+    const Meshed m = mesh(g, q);
+    EXPECT_TRUE(m.t.warning.empty()) << m.t.warning;
+    EXPECT_GT(m.t.steiner.size(), 100u);
+  }
 }
 
 // A segment from (0, 0) to (3, 0) under one from (0, 0) to (420, 10^-323), refined: the first
