@@ -207,7 +207,8 @@ class GapSearch {
     std::vector<std::pair<VertexId, bool>> todo{{a_, false}};  // a point; true: its gaps only
     std::vector<VertexId> steps;
     while (!todo.empty()) {
-      const auto [u, gaps_only] = todo.back();
+      const VertexId u = todo.back().first;  // (not a structured binding: lambdas below take it)
+      const bool gaps_only = todo.back().second;
       todo.pop_back();
       if (u == b_) {
         for (VertexId v = b_; v != a_; v = from_[v].first)
