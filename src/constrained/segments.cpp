@@ -27,6 +27,13 @@ class Inserter {
  public:
   explicit Inserter(Cdt& m) : m_(m) {}
 
+  // Input segment a-b, its pieces fixed edges.
+  void insert_segment(VertexId a, VertexId b) {
+    first_added_ = static_cast<VertexId>(m_.pts.size());
+    insert(a, b);
+  }
+
+ private:
   void insert(VertexId a, VertexId b) {
     while (a != b) {
       const Step s = step(a, b);
@@ -41,7 +48,6 @@ class Inserter {
     }
   }
 
- private:
   struct Step {
     VertexId along = Cdt::kNone;  // an edge a-along runs along the segment (edge `slot` of `triangle`)
     std::uint32_t triangle = Cdt::kNone;  // else the triangle at a through which the segment leaves a
@@ -106,7 +112,7 @@ class Inserter {
     VertexId v = 0;
     if (const VertexId end = within_ulps(x, {a, b, u, w}); end != Cdt::kNone) {
       v = end;  // within a few units in the last place of an end: the segments bend through it
-    } else if (depth_ > kCascade) {
+    } else if (depth_ > kCascade || u >= first_added_ || w >= first_added_) {
       v = nearest(x, {a, b, u, w});
     } else if (const Cdt::Place at = m_.beside(t, k, x); at.kind == Cdt::Place::Corner) {
       v = m_.at(at.t, at.k);
@@ -281,6 +287,7 @@ class Inserter {
   static constexpr int kCascade = 32;
   Cdt& m_;
   int depth_ = 0;  // split_crossing's calls nested
+  VertexId first_added_ = 0;  // the first point added for the input segment being inserted
   // Scratch, kept between segments.
   std::vector<std::uint32_t> removed_, gone_;
   std::vector<VertexId> right_, left_, made_;
@@ -310,7 +317,7 @@ void insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const
           __builtin_prefetch(&m.nbrs[3 * static_cast<std::size_t>(n)]);
         }
     const VertexId a = kept[segments[2 * s]], b = kept[segments[2 * s + 1]];
-    if (a != b) inserter.insert(a, b);
+    if (a != b) inserter.insert_segment(a, b);
   }
 }
 
