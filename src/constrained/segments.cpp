@@ -100,8 +100,10 @@ class Inserter {
     const Point x = crossing_rounded(m_.pts[a], m_.pts[b], m_.pts[u], m_.pts[w]);
     m_.set_fixed(t, k, false);
     // Pieces of segments at a hair's angle, their ends rounded, can cross again at each crossing
-    // added (a cascade, each piece's insertion nested in the last's): past kCascade levels the
-    // crossing goes to the nearest of the four ends instead, and no point is added.
+    // added (a cascade, each piece's insertion nested in the last's, or one crossing after
+    // another along the segment): past kCascade levels, or where u-w ends at a point added for
+    // this input segment (which it meets again only by rounding), the crossing goes to the
+    // nearest of the four ends instead, and no point is added.
     struct Level {
       int& depth;
       explicit Level(int& d) : depth(++d) {
