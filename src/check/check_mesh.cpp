@@ -22,6 +22,7 @@ using detail::Edge;
 using detail::off_line;
 using detail::orient2d;
 using detail::Report;
+using detail::SegmentEdges;
 
 std::uint64_t key(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
@@ -166,11 +167,12 @@ struct OnSegment {
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
 // along it, the nearest to its line first; where there is none, or none leads on to b, across
 // a gap to a point near the segment ahead, both on the boundary (or in no triangle), the gap
-// through no triangle and no vertex. Depth first: another segment's chain may run within rounding of this one's (two
-// segments at a hair's angle, or crossing near a shared end), and a step onto it ends where
-// it leaves this segment, and the search goes back to take the other. Where no such way
-// reaches b, the way that jumps each gap to the next point ahead (or to b behind) is taken:
-// its first gap through a triangle is reported, or, where it stops, the segment as no chain.
+// through no triangle and no vertex. Depth first: another segment's chain may run within
+// rounding of this one's (two segments at a hair's angle, or crossing near a shared end), and
+// a step onto it ends where it leaves this segment, and the search goes back to take the
+// other. Where no such way reaches b, the way that jumps each gap to the next point ahead (or
+// to b behind) is taken: its first gap through a triangle is reported, or, where it stops, the
+// segment as no chain.
 class GapSearch {
  public:
   GapSearch(std::span<const Point> pts, const OnSegment& near, const std::vector<std::vector<VertexId>>& adj,
@@ -287,21 +289,20 @@ class ChainCheck {
  public:
   ChainCheck(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec, long double least,
              const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report)
-      : straight(pts.size(), 0),
+      : edges_{adjacency(pts.size(), spec.edges), std::vector<std::uint8_t>(pts.size(), 0)},
         pts_(pts),
         spec_(spec),
         least_(least),
         used_(used),
         on_boundary_(on_boundary),
         report_(report),
-        adj_(adjacency(pts.size(), spec.edges)),
         input_(spec.input_points == 0 ? pts.size() : spec.input_points),
         seen_(pts.size(), 0),
         triangles_(pts, tris) {  // sorted when a segment first runs through a hole
     for (VertexId v = 0; v < pts.size(); ++v)
       if (used[v]) vertex_at_.emplace(bits(pts[v]), v);
     for (VertexId v = 0; v < pts.size(); ++v)
-      if (!adj_[v].empty()) by_x_.push_back({pts[v].x, v});
+      if (!edges_.adj[v].empty()) by_x_.push_back({pts[v].x, v});
     std::sort(by_x_.begin(), by_x_.end());
   }
 
@@ -317,14 +318,15 @@ class ChainCheck {
     while (!todo.empty()) {
       const VertexId v = todo.back();
       todo.pop_back();
-      for (const VertexId w : adj_[v])
+      for (const VertexId w : edges_.adj[v])
         if (seen_[w] != stamp && near(w)) seen_[w] = stamp, todo.push_back(w), reached.push_back(w);
     }
     if (seen_[b] != stamp) reached = across_gaps(near, s);
     mark_straight(near, reached);
   }
 
-  std::vector<std::uint8_t> straight;  // per point
+  // The segment edges, and the added points found on a segment between theirs.
+  SegmentEdges take() { return std::move(edges_); }
 
  private:
   static std::size_t bits(const Point& p) { return std::hash<double>{}(p.x) * 31 + std::hash<double>{}(p.y); }
@@ -336,7 +338,7 @@ class ChainCheck {
   // The segment through a hole: a chain where it lies in the mesh (GapSearch), or reported.
   // Returns the points on it.
   std::vector<VertexId> across_gaps(const OnSegment& near, std::size_t s) {
-    GapSearch search(pts_, near, adj_, by_x_, on_boundary_, triangles_, s);
+    GapSearch search(pts_, near, edges_.adj, by_x_, on_boundary_, triangles_, s);
     std::vector<Gap> gaps;
     if (search.run(true, gaps)) return search.points();
     gaps.clear();
@@ -358,20 +360,20 @@ class ChainCheck {
   void mark_straight(const OnSegment& near, const std::vector<VertexId>& reached) {
     const Point &a = pts_[near.a], &b = pts_[near.b];
     for (const VertexId v : reached) {
-      if (v < input_ || adj_[v].size() != 2 || !near(adj_[v][0]) || !near(adj_[v][1])) continue;
-      const auto kp = along_keys(a, b, pts_[adj_[v][0]]), kv = along_keys(a, b, pts_[v]),
-                 kq = along_keys(a, b, pts_[adj_[v][1]]);
-      if ((kp < kv && kv < kq) || (kq < kv && kv < kp)) straight[v] = 1;
+      const std::vector<VertexId>& n = edges_.adj[v];
+      if (v < input_ || n.size() != 2 || !near(n[0]) || !near(n[1])) continue;
+      const auto kp = along_keys(a, b, pts_[n[0]]), kv = along_keys(a, b, pts_[v]), kq = along_keys(a, b, pts_[n[1]]);
+      if ((kp < kv && kv < kq) || (kq < kv && kv < kp)) edges_.straight[v] = 1;
     }
   }
 
+  SegmentEdges edges_;
   std::span<const Point> pts_;
   const MeshSpec& spec_;
   long double least_;
   const std::vector<std::uint8_t>& used_;
   const std::vector<std::uint8_t>& on_boundary_;
   Report& report_;
-  std::vector<std::vector<VertexId>> adj_;
   std::size_t input_;
   std::unordered_map<std::uint64_t, VertexId> vertex_at_;
   std::vector<std::pair<double, VertexId>> by_x_;  // the points with a segment edge, by x (GapSearch)
@@ -379,13 +381,13 @@ class ChainCheck {
   TrianglesByX triangles_;
 };
 
-// The input's segments checked as chains; returns which added points lie on one (ChainCheck).
-std::vector<std::uint8_t> check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
-                                       long double least, const std::vector<std::uint8_t>& used,
-                                       const std::vector<std::uint8_t>& on_boundary, Report& report) {
+// The input's segments checked as chains; returns the segment edges (ChainCheck).
+SegmentEdges check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
+                          long double least, const std::vector<std::uint8_t>& used,
+                          const std::vector<std::uint8_t>& on_boundary, Report& report) {
   ChainCheck chains(pts, tris, spec, least, used, on_boundary, report);
   for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) chains.check(s / 2);
-  return std::move(chains.straight);
+  return chains.take();
 }
 
 // No hole's seed inside or on any triangle: the seeds sorted by x, each triangle tested
@@ -444,13 +446,12 @@ CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> t
   const long double least =
       std::max(std::ldexp(0x1p-1022L, here - detail::exact_scale_exponent(input.first(input_points))),
                std::ldexp(0x1p-1034L, here));
-  const std::vector<std::uint8_t> straight = check_chains(pts, tris, spec, least, used, on_boundary, report);
+  const detail::SegmentEdges edges = check_chains(pts, tris, spec, least, used, on_boundary, report);
   std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
   if (here != 0)
     for (Point& h : holes) h = {std::ldexp(h.x, here), std::ldexp(h.y, here)};
   check_holes(pts, tris, holes, report);
-  const detail::MeshShape shape =
-      detail::check_mesh_shape(input, pts, tris, spec, input_points, least, straight, report);
+  const detail::MeshShape shape = detail::check_mesh_shape(input, pts, tris, spec, input_points, least, edges, report);
   std::ostringstream s;
   s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
     << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()

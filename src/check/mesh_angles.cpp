@@ -53,7 +53,7 @@ namespace {
 
 // The chains of segment edges between corners (input points, and added points where other
 // than two segment edges meet or where the two turn: not found on an input segment between
-// them (`straight`), and off the line between their other ends by more than check_chains lets
+// them (SegmentEdges::straight), and off the line between their other ends by more than check_chains lets
 // a point on a segment lie, as a point added where segments cross): each chain's two ends, and
 // per vertex the chains it lies on.
 struct Chains {
@@ -66,9 +66,9 @@ struct Chains {
   std::vector<Wedge> wedges;
 };
 
-Chains chains_of(std::span<const Point> pts, std::span<const VertexId> edges, std::size_t input, long double least,
-                 std::span<const std::uint8_t> straight) {
-  const auto adj = adjacency(pts.size(), edges);
+Chains chains_of(std::span<const Point> pts, const SegmentEdges& edges, std::size_t input, long double least) {
+  const auto& adj = edges.adj;
+  const auto& straight = edges.straight;
   Chains c;
   c.on.resize(pts.size());
   c.small.assign(pts.size(), 0);
@@ -274,9 +274,9 @@ MeshShape check_shape(std::span<const Point> pts, std::span<const Point> scaled,
 }  // namespace
 
 MeshShape check_mesh_shape(std::span<const Point> input, std::span<const Point> pts, std::span<const VertexId> tris,
-                           const MeshSpec& spec, std::size_t input_points, long double least,
-                           std::span<const std::uint8_t> straight, Report& report) {
-  return check_shape(input, pts, tris, spec, chains_of(pts, spec.edges, input_points, least, straight), report);
+                           const MeshSpec& spec, std::size_t input_points, long double least, const SegmentEdges& edges,
+                           Report& report) {
+  return check_shape(input, pts, tris, spec, chains_of(pts, edges, input_points, least), report);
 }
 
 }  // namespace ridt::detail

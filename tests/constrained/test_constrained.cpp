@@ -40,6 +40,14 @@ ConstrainedTriangulation carved(const std::vector<Point>& pts, const std::vector
   return t;
 }
 
+// Fuzzers' graphs beside (10, 0): a square from `first` through (10, 0), (10, above) just above
+// it and (0, 10), and inside it `inner`, (6, 4), (6, 6), (4, 6); segments round the square,
+// from (6, 4) and (6, 6) to (10, 0), (6, 4)-(6, 6), and (10, 0)-`inner` (kBesideTen).
+std::vector<Point> beside_ten(const Point& first, double above, const Point& inner) {
+  return {first, {10, 0}, {10, above}, {0, 10}, inner, {6, 4}, {6, 6}, {4, 6}};
+}
+const std::vector<VertexId> kBesideTen = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+
 TEST(Constrained, TheKitesLongDiagonal) {
   const std::vector<Point> kite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
   const ConstrainedTriangulation t = checked(kite, {0, 2});
@@ -367,14 +375,13 @@ TEST(Constrained, PointsBesideTheSmallEndOfAHugeSegmentAreNotOnIt) {
 // of one another: check_mesh finds the one from (10, 0) to (4, 4) by going back from steps onto
 // the others' chains and from gaps that pass through triangles.
 TEST(Constrained, ChainsWithinRoundingOfOneAnotherBesideAnEndIntoAHole) {
-  const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 104.9e-324}, {0, 10}, {4, 4}, {6, 4}, {6, 6}, {4, 6}};
-  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+  const std::vector<Point> pts = beside_ten({0, 0}, 104.9e-324, {4, 4});
   for (const bool hull : {true, false}) {
     SCOPED_TRACE(hull);
     Domain domain;
     domain.convex_hull = hull;
     domain.holes = {{5, 5}};
-    EXPECT_EQ(carved(pts, segs, domain).crossings, 4u);
+    EXPECT_EQ(carved(pts, kBesideTen, domain).crossings, 4u);
   }
 }
 
@@ -390,8 +397,8 @@ TEST(Constrained, CrossingsThatCascadeEnd) {
     for (const bool forward : {true, false})
       for (const bool hull : {true, false}) {
         SCOPED_TRACE(testing::Message() << above << (forward ? " forward" : " backward") << (hull ? " hull" : ""));
-        const std::vector<Point> pts = {{0, 0}, {10, 0}, {10, above}, {0, 10}, {3, 4}, {6, 4}, {6, 6}, {4, 6}};
-        std::vector<VertexId> segs = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+        const std::vector<Point> pts = beside_ten({0, 0}, above, {3, 4});
+        std::vector<VertexId> segs = kBesideTen;
         if (!forward) std::swap(segs[14], segs[15]);
         Domain domain;
         domain.convex_hull = hull;
@@ -405,15 +412,14 @@ TEST(Constrained, ACrossingInASliverOfTheHullGoesToACornerAtHand) {
   // 1e-322 wide: the crossing and the doubles next to it lie outside, so it goes to the
   // nearest corner, (10, 1e-322). Without the hull only the sliver between (6, 4)-(10, 0) and
   // the segment above it and the triangle that (6, 4)-(6, 6) closes beyond it are left.
-  const std::vector<Point> pts = {{0, 1}, {10, 0}, {10, 104.9e-324}, {0, 10}, {3, 4}, {6, 4}, {6, 6}, {4, 6}};
-  const std::vector<VertexId> segs = {0, 1, 1, 2, 2, 3, 3, 0, 5, 1, 5, 6, 6, 1, 1, 4};
+  const std::vector<Point> pts = beside_ten({0, 1}, 104.9e-324, {3, 4});
   Domain domain;
   domain.holes = {{5, 5}};
-  const ConstrainedTriangulation t = carved(pts, segs, domain);
+  const ConstrainedTriangulation t = carved(pts, kBesideTen, domain);
   EXPECT_TRUE(t.steiner.empty());
   EXPECT_EQ(canonical(t.triangles), canonical(std::vector<VertexId>{1, 2, 5, 2, 6, 5}));
   domain.convex_hull = true;
-  EXPECT_TRUE(carved(pts, segs, domain).steiner.empty());
+  EXPECT_TRUE(carved(pts, kBesideTen, domain).steiner.empty());
 }
 
 }  // namespace
