@@ -11,6 +11,14 @@ import numpy as np
 from . import _api, _core
 from ._delaunay import _check_qhull_options, _qhull_flags, _refuse_joggled_copies, _refuse_masked
 
+def ray_directions(points: np.ndarray, hull_edges: np.ndarray) -> np.ndarray:
+    """The direction of the ray that bisects each hull edge (a, b), as the diagram lists its
+    points (counter-clockwise about the hull, which lies on the edge's left): the edge turned a
+    quarter clockwise, outward, as long as the edge."""
+    a, b = points[hull_edges[:, 0]], points[hull_edges[:, 1]]
+    return np.stack([b[:, 1] - a[:, 1], a[:, 0] - b[:, 0]], axis=1)
+
+
 class Voronoi:
     """Voronoi diagram in the plane, with scipy.spatial.Voronoi's attributes.
 
@@ -169,10 +177,7 @@ class Voronoi:
     def ridge_directions(self) -> np.ndarray:
         d = np.zeros((len(self.ridge_points), 2))
         ray = self._ridge_vertices[:, 1] < 0
-        a = self._points[self.ridge_points[ray, 0]]
-        b = self._points[self.ridge_points[ray, 1]]
-        d[ray, 0] = b[:, 1] - a[:, 1]
-        d[ray, 1] = a[:, 0] - b[:, 0]
+        d[ray] = ray_directions(self._points, self.ridge_points[ray])
         return d
 
     @cached_property

@@ -17,17 +17,23 @@ ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
 ``a`` ask). Every triangle is counter-clockwise; indices are 0-based; the points added follow the
 input's in 'vertices'.
+
+The package's other calls are here too: ``delaunay(pts)`` (its triangles), ``convex_hull(pts)``
+(the hull's edges) and ``voronoi(pts)`` (the diagram's vertices, edges and rays).
 """
 
 from __future__ import annotations
 
 import re
+import warnings
 from typing import Any, Dict, Tuple
 
 import numpy as np
 
-from . import _api
+from . import _api, _core
 from ._constrained import ConstrainedDelaunay
+from ._delaunay import DegenerateInputWarning, hull_edges
+from ._voronoi import ray_directions
 
 _TAKEN = set("pqaAcDYSenzQV")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
@@ -119,6 +125,53 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     if "n" in flags:
         out["neighbors"] = cdt.neighbors.copy()
     return out
+
+
+def _plain(pts: Any, what: str) -> Tuple[np.ndarray, _core.Triangulation]:
+    """The points checked and their Delaunay triangulation; a DegenerateInputWarning where it is
+    empty."""
+    points = _api.as_points(pts, "pts", what)
+    tri = _api.run(points)
+    if tri.warning:
+        warnings.warn(f"{what}: {tri.warning}: the triangulation is empty", DegenerateInputWarning, stacklevel=3)
+    return points, tri
+
+
+def delaunay(pts: Any) -> np.ndarray:
+    """The Delaunay triangulation of `pts` (the package's ``delaunay``: Triangle's ``Qz``), an
+    (M, 3) intc array of vertex indices, each triangle counter-clockwise. Exact: ties among
+    cocircular points are broken by a fixed symbolic perturbation. Of equal points the first
+    stands for them; the others are in no triangle. Fewer than three distinct points, or all on
+    a line: no triangle, with a ``ridt.DegenerateInputWarning``."""
+    _, tri = _plain(pts, "ridt.triangle.delaunay")
+    return tri.triangles.view(np.intc).reshape(-1, 3).copy()
+
+
+def convex_hull(pts: Any) -> np.ndarray:
+    """The convex hull's edges (the package's ``convex_hull``: the segments Triangle's ``Qzc``
+    gives), an (K, 2) intc array, each edge (a, b) with the hull on its left, in order
+    counter-clockwise; points on an edge of the hull are corners of it. Degenerate input (as
+    for ``delaunay``): no edge, with the warning."""
+    _, tri = _plain(pts, "ridt.triangle.convex_hull")
+    return hull_edges(tri).astype(np.intc)
+
+
+def voronoi(pts: Any) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The Voronoi diagram of `pts` (the package's ``voronoi``): ``(points, edges, ray_origins,
+    ray_directions)``. ``points`` are the diagram's vertices, the circumcentres of the Delaunay
+    triangles, where cocircular points' triangles share one (as ``ridt.Voronoi`` merges them: no
+    edge has length zero); ``edges`` (intc pairs) join two vertices; each ray starts at the vertex
+    ``ray_origins[k]`` and runs to infinity along ``ray_directions[k]``, the outward normal of
+    the hull edge it bisects, as long as that edge. Degenerate input (as for ``delaunay``):
+    every array empty, with the warning."""
+    points, tri = _plain(pts, "ridt.triangle.voronoi")
+    if len(tri) == 0:
+        return (np.empty((0, 2)), np.empty((0, 2), dtype=np.intc), np.empty(0, dtype=np.intc), np.empty((0, 2)))
+    vertices, _, _, _, ridge_points, ridge_vertices = _core.voronoi(points, tri, 1)
+    ridge_points, ridge_vertices = ridge_points.view(np.intc), ridge_vertices.view(np.intc)
+    ray = ridge_vertices[:, 1] < 0
+    return (vertices, ridge_vertices[~ray].copy(), ridge_vertices[ray, 0].copy(),
+            ray_directions(points, ridge_points[ray]))
 
 
 def _key(e: np.ndarray) -> np.ndarray:

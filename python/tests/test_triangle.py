@@ -184,3 +184,81 @@ def test_yy_is_refused_not_taken_for_y():
     assert len(triangle.triangulate(tri, "pq30Y")["segments"]) == 8
     with pytest.raises(ValueError, match="'YY' is not supported"):
         triangle.triangulate(tri, "pq30YY")
+
+
+FIVE = [[0, 0], [0, 1], [0.5, 0.5], [1, 1], [1, 0]]  # a square and its centre
+
+
+def undirected(edges):
+    return set(map(tuple, np.sort(np.asarray(edges), axis=1).tolist()))
+
+
+def test_delaunay_and_convex_hull_as_the_package_gives_them():
+    tris = triangle.delaunay(FIVE)
+    assert tris.dtype == np.intc and triangle_set(tris) == triangle_set([[1, 0, 2], [2, 4, 3], [4, 2, 0], [2, 3, 1]])
+    p = np.asarray(FIVE, dtype=float)[tris]
+    u, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    assert (u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0] > 0).all()  # counter-clockwise
+    hull = triangle.convex_hull([[0, 0], [0, 1], [1, 1], [1, 0]])
+    assert hull.dtype == np.intc and undirected(hull) == {(0, 3), (2, 3), (1, 2), (0, 1)}
+    assert (hull[:, 1] == np.roll(hull[:, 0], -1)).all()  # one cycle, edge after edge
+    # Points on the hull's edges are its corners: the square's midpoints make 8 edges.
+    ring = [[0, 0], [1, 0], [2, 0], [2, 1], [2, 2], [1, 2], [0, 2], [0, 1], [1, 1]]
+    assert undirected(triangle.convex_hull(ring)) == {(k, (k + 1) % 8) if k < 7 else (0, 7) for k in range(8)}
+
+
+def test_delaunay_and_convex_hull_match_scipy_in_general_position():
+    spatial = pytest.importorskip("scipy.spatial")
+    pts = np.random.default_rng(7).random((2000, 2))
+    assert triangle_set(triangle.delaunay(pts)) == triangle_set(spatial.Delaunay(pts).simplices)
+    hull = triangle.convex_hull(pts)
+    assert undirected(hull) == undirected(spatial.ConvexHull(pts).simplices)
+    a, b = pts[hull[:, 0]], pts[hull[:, 1]]
+    for k in range(len(hull)):  # every point on the left of (or on) every edge: counter-clockwise
+        d = b[k] - a[k]
+        assert (d[0] * (pts[:, 1] - a[k, 1]) - d[1] * (pts[:, 0] - a[k, 0]) >= 0).all()
+
+
+def test_voronoi_of_the_package_example():
+    vertices, edges, origins, directions = triangle.voronoi(FIVE)
+    found = {tuple(v) for v in vertices.tolist()}
+    assert found == {(0.0, 0.5), (1.0, 0.5), (0.5, 0.0), (0.5, 1.0)}
+    assert edges.dtype == np.intc and origins.dtype == np.intc and len(edges) == 4 and len(origins) == 4
+    for o, d in zip(origins, directions):  # each ray leaves the square through the middle of a side
+        side = vertices[o]
+        assert np.abs(d).sum() == 1 and np.dot(side - 0.5, d) == 0.5
+    assert undirected(edges) == {tuple(sorted((i, j))) for i in range(4) for j in range(i + 1, 4)
+                                 if np.hypot(*(vertices[i] - vertices[j])) < 1}  # not across the square
+
+
+def test_voronoi_matches_scipy():
+    spatial = pytest.importorskip("scipy.spatial")
+    rng = np.random.default_rng(3)
+    for pts in (rng.random((500, 2)), np.array([(x, y) for x in range(6) for y in range(5)], dtype=float)):
+        vertices, edges, origins, directions = triangle.voronoi(pts)
+        theirs = spatial.Voronoi(pts)
+        np.testing.assert_allclose(np.sort(vertices.view("f8,f8"), axis=0).view(float),
+                                   np.sort(theirs.vertices.view("f8,f8"), axis=0).view(float), rtol=0, atol=1e-12)
+        ridges = np.array(theirs.ridge_vertices)
+        assert len(edges) == (ridges >= 0).all(axis=1).sum() and len(origins) == (ridges < 0).any(axis=1).sum()
+        assert len(origins) == len(triangle.convex_hull(pts))
+        for o, d in zip(origins, directions):
+            # The ray bisects a hull edge: of the points farthest along d (a side of the hull),
+            # the two nearest its origin are equally near it, and no point is nearer.
+            along = pts @ d
+            side = np.flatnonzero(along >= along.max() - 1e-12)
+            near = np.sort(np.hypot(*(pts[side] - vertices[o]).T))
+            assert len(side) >= 2 and near[0] == pytest.approx(near[1], abs=1e-12)
+            assert near[0] <= np.hypot(*(pts - vertices[o]).T).min() + 1e-12
+
+
+def test_the_package_calls_on_degenerate_input_warn_and_return_nothing():
+    line = [[0, 0], [1, 1], [2, 2], [3, 3]]
+    with pytest.warns(ridt.DegenerateInputWarning, match="delaunay"):
+        assert triangle.delaunay(line).shape == (0, 3)
+    with pytest.warns(ridt.DegenerateInputWarning):
+        assert triangle.convex_hull(line).shape == (0, 2)
+    with pytest.warns(ridt.DegenerateInputWarning):
+        assert [a.shape for a in triangle.voronoi(line)] == [(0, 2), (0, 2), (0,), (0, 2)]
+    with pytest.raises(ValueError):
+        triangle.delaunay([[0, 0], [1, np.nan], [2, 0]])
