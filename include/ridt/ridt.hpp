@@ -404,8 +404,9 @@ class MemoryReuse {
 std::size_t estimate_memory(std::size_t n, const Options& options = {});
 
 /// The memory this process can take now without swapping or being killed: the system's
-/// MemAvailable, and below it the room left under the process's cgroup limit (memory.max) where
-/// there is one; in bytes, 0 where neither can be read.
+/// MemAvailable, and below it the room left under the process's cgroup limit (memory.max) and
+/// under its limits on address space and data (ulimit -v, -d) where there are such; in bytes, 0
+/// where none can be read.
 std::size_t available_memory();
 
 }  // namespace ridt

@@ -194,7 +194,8 @@ def estimate_memory(n: int, *, method: str = "auto", threads: int = 1, order: st
 
 
 def available_memory() -> int:
-    """The bytes this process can take now: MemAvailable, or less under a cgroup's limit."""
+    """The bytes this process can take now: MemAvailable, or less under a cgroup's limit or the
+    process's limits on address space and data (``ulimit -v``, ``-d``)."""
     return _core.available_memory()
 
 

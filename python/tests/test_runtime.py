@@ -123,6 +123,36 @@ def test_ctrl_c_stops_a_long_run():
     assert out.startswith("interrupted"), out
 
 
+def test_the_process_limits_on_memory_are_room_too():
+    # Under ulimit -v (as batch systems set it) the room is what the limit leaves of what the
+    # process maps already: a run that would not fit is refused before it starts, with the
+    # numbers, rather than running out part way; the quality mesher stops with its warning.
+    code = textwrap.dedent("""
+        import resource, warnings, numpy as np, ridt
+        pts = np.random.default_rng(0).random((4_000_000, 2))
+        size = int(open("/proc/self/statm").read().split()[0]) * resource.getpagesize()
+        resource.setrlimit(resource.RLIMIT_AS, (size + (200 << 20), resource.RLIM_INFINITY))
+        print("room", ridt.available_memory() >> 20, flush=True)
+        try:
+            ridt.triangulate(pts)
+            print("ran", flush=True)
+        except MemoryError as e:
+            print("refused", "needs about" in str(e) and "is available" in str(e), flush=True)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            m = ridt.ConstrainedDelaunay([(0, 0), (1, 0), (1, 1), (0, 1)], [(0, 1), (1, 2), (2, 3), (3, 0)],
+                                         max_area=1e-12)
+        print("mesh", len(m.simplices) > 100000, [str(w.message) for w in caught], flush=True)
+    """)
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=300)
+    lines = out.stdout.splitlines()
+    assert out.returncode == 0, out.stderr
+    assert 150 <= int(lines[0].split()[1]) <= 200, lines
+    assert lines[1] == "refused True", lines
+    assert lines[2].startswith("mesh True") and "the memory left holds no more" in lines[2], lines
+
+
 def test_memory_is_planned_before_the_run():
     import ridt
     pts = np.random.default_rng(1).random((50000, 2))

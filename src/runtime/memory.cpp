@@ -1,6 +1,8 @@
 #include "runtime/memory.hpp"
 
 #include <sys/mman.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -291,6 +293,29 @@ std::optional<std::size_t> cgroup_room() {
   return *limit - std::min(*limit, used.value_or(0));
 }
 
+// The room left under this process's limits on its address space and its data (ulimit -v and
+// -d: batch systems set them), against what it maps now (/proc/self/statm: the whole size, and
+// the data and stack), or none where neither is set.
+std::optional<std::size_t> rlimit_room() {
+  unsigned long long pages = 0, resident = 0, shared = 0, text = 0, lib = 0, data = 0;
+  if (std::FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%llu %llu %llu %llu %llu %llu", &pages, &resident, &shared, &text, &lib, &data) != 6)
+      pages = data = 0;
+    std::fclose(f);
+  }
+  const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  std::optional<std::size_t> room;
+  auto under = [&](int resource, unsigned long long used) {
+    rlimit r{};
+    if (getrlimit(resource, &r) != 0 || r.rlim_cur == RLIM_INFINITY) return;
+    const std::size_t limit = r.rlim_cur, taken = static_cast<std::size_t>(used) * page;
+    room = std::min(room.value_or(limit), limit - std::min(limit, taken));
+  };
+  under(RLIMIT_AS, pages);
+  under(RLIMIT_DATA, data);
+  return room;
+}
+
 }  // namespace
 
 std::size_t available_memory() {
@@ -303,7 +328,8 @@ std::size_t available_memory() {
     std::fclose(f);
     bytes = static_cast<std::size_t>(kib) * 1024;
   }
-  if (const std::optional<std::size_t> room = cgroup_room()) bytes = bytes == 0 ? *room : std::min(bytes, *room);
+  for (const std::optional<std::size_t> room : {cgroup_room(), rlimit_room()})
+    if (room) bytes = bytes == 0 ? *room : std::min(bytes, *room);
   return bytes;
 }
 
