@@ -3,6 +3,7 @@ exterior and holes removed as the switches say, unsupported switches refused."""
 
 import numpy as np
 import pytest
+import scipy.spatial
 
 import ridt
 from conftest import triangle_set
@@ -208,11 +209,10 @@ def test_delaunay_and_convex_hull_as_the_package_gives_them():
 
 
 def test_delaunay_and_convex_hull_match_scipy_in_general_position():
-    spatial = pytest.importorskip("scipy.spatial")
     pts = np.random.default_rng(7).random((2000, 2))
-    assert triangle_set(triangle.delaunay(pts)) == triangle_set(spatial.Delaunay(pts).simplices)
+    assert triangle_set(triangle.delaunay(pts)) == triangle_set(scipy.spatial.Delaunay(pts).simplices)
     hull = triangle.convex_hull(pts)
-    assert undirected(hull) == undirected(spatial.ConvexHull(pts).simplices)
+    assert undirected(hull) == undirected(scipy.spatial.ConvexHull(pts).simplices)
     a, b = pts[hull[:, 0]], pts[hull[:, 1]]
     for k in range(len(hull)):  # every point on the left of (or on) every edge: counter-clockwise
         d = b[k] - a[k]
@@ -232,11 +232,10 @@ def test_voronoi_of_the_package_example():
 
 
 def test_voronoi_matches_scipy():
-    spatial = pytest.importorskip("scipy.spatial")
     rng = np.random.default_rng(3)
     for pts in (rng.random((500, 2)), np.array([(x, y) for x in range(6) for y in range(5)], dtype=float)):
         vertices, edges, origins, directions = triangle.voronoi(pts)
-        theirs = spatial.Voronoi(pts)
+        theirs = scipy.spatial.Voronoi(pts)
         np.testing.assert_allclose(np.sort(vertices.view("f8,f8"), axis=0).view(float),
                                    np.sort(theirs.vertices.view("f8,f8"), axis=0).view(float), rtol=0, atol=1e-12)
         ridges = np.array(theirs.ridge_vertices)
