@@ -393,6 +393,38 @@ for _, x, y, a1, a2, m in rows(".node"):
     assert abs(float(a1) - (2 * x + 3 * y + 1)) < 1e-12 * 60 and abs(float(a2) - 7) < 1e-13, (x, y, a1, a2)
 PY
 
+# Six-node triangles (o2): the same corners, then a node at the middle of each edge, one an edge,
+# shared by its two triangles, the exact mean of its ends; its marker and attributes by the
+# vertices' rules (the middle of a marked segment edge takes its marker; attributes linear).
+expect 0 "mesh with six-node triangles" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked6.ele" --switches pq30a5o2
+/usr/bin/python3 - "$dir/marked" "$dir/marked6" <<'PY' && pass || fail "six-node triangles wrong"
+import sys
+rows = lambda base, ext: [l.split() for l in open(base + ext) if l.strip() and not l.startswith("#")]
+three, six = rows(sys.argv[1], ".ele"), rows(sys.argv[2], ".ele")
+assert six[0] == [three[0][0], "6", "0"], six[0]
+assert [r[:4] for r in six[1:]] == [r[:4] for r in three[1:]]  # the same corners
+nodes = rows(sys.argv[2], ".node")
+xy = {r[0]: (float(r[1]), float(r[2])) for r in nodes[1:]}
+first = len(rows(sys.argv[1], ".node")) - 1
+middle = {}
+for r in six[1:]:
+    for k in range(3):
+        a, b, m = r[1 + (k + 1) % 3], r[1 + (k + 2) % 3], r[4 + k]
+        assert int(m) > first and middle.setdefault(frozenset((a, b)), m) == m, (r, k)
+        assert xy[m] == ((xy[a][0] + xy[b][0]) / 2, (xy[a][1] + xy[b][1]) / 2), (r, k)
+assert sorted(middle.values(), key=int) == [str(v) for v in range(first + 1, len(nodes))]
+for _, x, y, a1, a2, m in nodes[1 + first:]:
+    x, y = float(x), float(y)
+    want = 7 if y == 0 else 9 if y == 10 else 1 if x in (0, 10) else 0
+    assert int(m) == want, (x, y, m, want)
+    assert abs(float(a1) - (2 * x + 3 * y + 1)) < 1e-12 * 60 and abs(float(a2) - 7) < 1e-13, (x, y, a1, a2)
+PY
+expect 0 "mesh --second-order" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked6b.ele" --quality 30 --max-area 5 --second-order
+cmp -s "$dir/marked6.ele" "$dir/marked6b.ele" && cmp -s "$dir/marked6.node" "$dir/marked6b.node" && pass || fail "--second-order is not o2"
+expect 2 "check of six-node triangles" -- "$ridt" check "$dir/marked6.node" "$dir/marked6.ele"
+stderr_has "six-node triangles"
+expect 2 "mesh o3 refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches po3
+expect 2 "six-node triangles are not drawn" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m6.svg" --second-order
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
 stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
 expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pu

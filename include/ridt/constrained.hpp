@@ -83,4 +83,23 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
                                                  const Options& options = {}, const Domain& domain = {},
                                                  const Quality& quality = {});
 
+/// Six-node triangles for quadratic finite elements (Triangle's -o2): a node at the middle of
+/// every edge.
+struct SecondOrder {
+  /// Node vertices.size() + k: the middle of the edge from ends[2k] to ends[2k + 1], each
+  /// coordinate the exact mean of the ends' rounded to the nearest double.
+  std::vector<Point> nodes;
+  std::vector<VertexId> ends;
+  /// Six a triangle: its three corners as the triangulation has them, then the nodes of the
+  /// edges across from corners 0, 1 and 2 (Triangle's order).
+  std::vector<VertexId> triangles;
+};
+
+/// The six-node triangles of `t`, whose vertices are `vertices` (a constrained triangulation's:
+/// the input's points, then its steiner points). Nodes are numbered as the triangles, in order,
+/// first meet their edges. Throws InputError where t has no neighbours (they pair the two
+/// triangles of an edge: Options::neighbors), they do not match, a vertex is not one of
+/// `vertices`, or the nodes would not fit in VertexId.
+SecondOrder second_order(std::span<const Point> vertices, const Triangulation& t);
+
 }  // namespace ridt

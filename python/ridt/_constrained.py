@@ -151,6 +151,14 @@ class ConstrainedDelaunay:
         """ridt's own result (triangles, neighbors, hull, duplicates, warning, stats)."""
         return self._tri
 
+    def second_order(self) -> Tuple[np.ndarray, np.ndarray]:
+        """Six-node triangles for quadratic elements (Triangle's -o2): ``(points, simplices)``,
+        ``points`` this triangulation's then a node at the middle of every edge (the exact mean
+        of its ends, rounded once), ``simplices`` (nsimplex, 6) intc: each triangle's corners as
+        in ``simplices``, then the nodes of the edges across from corners 0, 1 and 2."""
+        nodes, _, six = _core.second_order(self._points, self._tri)
+        return np.concatenate([self._points, nodes]), six.view(np.intc)
+
     def check(self) -> Tuple[bool, str]:
         """The exact validator of constrained triangulations and meshes (ridt.check_mesh): every
         edge but the segments' locally Delaunay, every segment a chain of ``edges``, the holes

@@ -11,7 +11,9 @@ bound), ``A`` (each triangle's regional attribute, as 'triangle_attributes'), ``
 convex hull), ``D`` (conforming Delaunay: every edge Delaunay), ``Y`` (no points added on the
 boundary; ``YY``, none on the segments inside it either, is refused), ``S[N]`` (at most N
 points added by refinement, then a ``ridt.RefinementWarning``; ``S0``, none), ``e`` (also return
-every edge), ``n`` (also return the neighbours), ``z`` (indices from 0: always so here) and
+every edge), ``n`` (also return the neighbours), ``o2`` (six-node triangles: a node at the middle
+of every edge, after the vertices; each triangle its corners, then the nodes of the edges
+across from them), ``z`` (indices from 0: always so here) and
 ``Q``/``V`` (quiet, verbose: ignored). The others (``r``, ``o2``, ...) are refused with
 ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
@@ -35,7 +37,7 @@ from ._constrained import ConstrainedDelaunay
 from ._delaunay import DegenerateInputWarning, hull_edges
 from ._voronoi import ray_directions
 
-_TAKEN = set("pqaAcDYSenzQV")
+_TAKEN = set("pqaAcDYSenozQV")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
@@ -48,6 +50,8 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
         c = opts[i]
         if c not in _TAKEN:
             raise ValueError(f"switch '{c}' is not supported (ridt takes {''.join(sorted(_TAKEN))})")
+        if c == "o" and opts[i + 1:i + 2] != "2":
+            raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
         if c == "Y" and "Y" in flags:
             raise ValueError("switch 'YY' is not supported: ridt keeps added points off the boundary ('Y') but "
                              "cannot keep them off the segments inside it")
@@ -64,7 +68,7 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
             if not number or float(number.group()) != int(float(number.group())):
                 raise ValueError("switch 'S' needs the most points refinement may add, a whole number")
             steiner = int(float(number.group()))
-        i = number.end() if number else i + 1
+        i = number.end() if number else i + 2 if c == "o" else i + 1
     return flags, angle, area, regional, steiner
 
 
@@ -124,7 +128,34 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
         out["edges"], out["edge_markers"] = _edges(cdt, boundary, pieces)
     if "n" in flags:
         out["neighbors"] = cdt.neighbors.copy()
+    if "o" in flags:
+        _six_nodes(out, cdt, boundary, pieces)
     return out
+
+
+def _six_nodes(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, boundary: np.ndarray, pieces: np.ndarray) -> None:
+    """'o2': a node at the middle of every edge, after the vertices (ridt.second_order: the exact
+    mean of the ends, rounded once), and each triangle's six nodes: its corners, then the nodes
+    of the edges across from them. A node's marker by the vertices' rule (its segment edge's
+    marker where nonzero, else 1 on the boundary, 0 inside); its attributes the mean of its
+    ends', as linear interpolation along the edge gives them."""
+    nodes, ends, six = _core.second_order(cdt.points, cdt.triangulation)
+    keys = _key(np.sort(ends, axis=1))
+    markers = np.isin(keys, _key(boundary)).astype(np.intc)
+    if len(cdt.edges):
+        pieces_by_key = dict(zip(_key(cdt.edges).tolist(), pieces.tolist()))
+        given = np.array([pieces_by_key.get(k, 0) for k in keys.tolist()], dtype=np.intc)
+        markers = np.where(given != 0, given, markers).astype(np.intc)
+    out["vertices"] = np.concatenate([out["vertices"], nodes])
+    out["triangles"] = six.astype(np.intc)
+    out["vertex_markers"] = np.concatenate([out["vertex_markers"], markers.reshape(-1, 1)])
+    if "vertex_attributes" in out:
+        a = out["vertex_attributes"]
+        u, w = a[ends[:, 0]], a[ends[:, 1]]
+        with np.errstate(over="ignore"):
+            mean = (u + w) / 2
+        mean = np.where(np.isfinite(mean), mean, u / 2 + w / 2)
+        out["vertex_attributes"] = np.concatenate([a, mean])
 
 
 def _plain(pts: Any, what: str) -> Tuple[np.ndarray, _core.Triangulation]:

@@ -395,6 +395,23 @@ void bind_voronoi(py::module_& m) {
       },
       py::arg("points"), py::arg("triangulation"), py::arg("threads"));
 
+  m.def(
+      "second_order",
+      [](const Points& points, const ridt::Triangulation& t) {
+        const auto pts = as_points(points, "points");
+        ridt::SecondOrder s;
+        {
+          py::gil_scoped_release nogil;
+          s = ridt::second_order(pts, t);
+        }
+        const auto nodes = static_cast<py::ssize_t>(s.nodes.size());
+        const auto triangles = static_cast<py::ssize_t>(s.triangles.size() / 6);
+        return py::make_tuple(adopt<ridt::Point, double>(std::move(s.nodes), {nodes, 2}),
+                              adopt(std::move(s.ends), {nodes, 2}), adopt(std::move(s.triangles), {triangles, 6}));
+      },
+      py::arg("points"), py::arg("triangulation"),
+      "Six-node triangles (ridt::second_order): (nodes (k, 2), their edges' ends (k, 2), triangles (m, 6)).");
+
   m.def("lists", &lists, py::arg("flat"), py::arg("offsets"), py::arg("ints"),
         "Rows of `flat` as a list of lists: row r is flat[offsets[r]:offsets[r + 1]]; each value v >= 0\n"
         "is the object ints[v] (shared, not a new int), -1 is -1.");

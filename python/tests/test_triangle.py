@@ -107,8 +107,8 @@ def test_refused():
         triangle.triangulate({"vertices": SQUARE}, "pr")
     with pytest.raises(ValueError, match="'S' needs"):
         triangle.triangulate({"vertices": SQUARE}, "pS")
-    with pytest.raises(ValueError, match="'o' is not supported"):
-        triangle.triangulate({"vertices": SQUARE}, "po2")
+    with pytest.raises(ValueError, match="'u' is not supported"):
+        triangle.triangulate({"vertices": SQUARE}, "pu")
     with pytest.raises(ValueError, match="needs 'vertices'"):
         triangle.triangulate({}, "")
     with pytest.raises(TypeError):
@@ -261,3 +261,39 @@ def test_the_package_calls_on_degenerate_input_warn_and_return_nothing():
         assert [a.shape for a in triangle.voronoi(line)] == [(0, 2), (0, 2), (0,), (0, 2)]
     with pytest.raises(ValueError):
         triangle.delaunay([[0, 0], [1, np.nan], [2, 0]])
+
+
+def test_six_node_triangles():
+    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4)),
+           "holes": [[5, 5]], "segment_markers": [5, 0, 0, 0, 0, 0, 0, 0]}
+    pts = tri["vertices"]
+    tri["vertex_attributes"] = np.stack([2 * pts[:, 0] + 3 * pts[:, 1] + 1, np.full(len(pts), 7.0)], axis=1)
+    three, six = triangle.triangulate(tri, "pq30a4"), triangle.triangulate(tri, "pq30a4o2")
+    t, v = six["triangles"], six["vertices"]
+    assert t.dtype == np.intc and t.shape == (len(three["triangles"]), 6)
+    np.testing.assert_array_equal(t[:, :3], three["triangles"])  # the same corners
+    first = len(three["vertices"])
+    np.testing.assert_array_equal(v[:first], three["vertices"])
+    middle = {}
+    for row in t.tolist():
+        for k in range(3):
+            a, b, m = row[(k + 1) % 3], row[(k + 2) % 3], row[3 + k]
+            assert middle.setdefault(frozenset((a, b)), m) == m  # one node an edge, shared
+            assert tuple(v[m]) == ((v[a][0] + v[b][0]) / 2, (v[a][1] + v[b][1]) / 2)
+    assert sorted(middle.values()) == list(range(first, len(v)))
+    # Markers by the vertices' rule: 5 along y = 0 (the marked segment), 1 elsewhere on the
+    # boundary (the hole's too), 0 inside; attributes linear, so the means are exact.
+    x, y = v[first:, 0], v[first:, 1]
+    boundary = (x == 0) | (x == 10) | (y == 10) | (((x == 4) | (x == 6)) & (y >= 4) & (y <= 6)) | \
+               (((y == 4) | (y == 6)) & (x >= 4) & (x <= 6))
+    want = np.where(y == 0, 5, boundary.astype(int))
+    np.testing.assert_array_equal(six["vertex_markers"][first:, 0], want)
+    np.testing.assert_allclose(six["vertex_attributes"][:, 0], 2 * v[:, 0] + 3 * v[:, 1] + 1, rtol=0, atol=1e-12)
+    # The class gives the same.
+    cdt = ridt.ConstrainedDelaunay(pts, tri["segments"], holes=[[5, 5]], convex_hull=False, min_angle=30,
+                                   max_area=4)
+    points, simplices = cdt.second_order()
+    np.testing.assert_array_equal(points, v)
+    np.testing.assert_array_equal(simplices, t)
+    with pytest.raises(ValueError, match="'o2' only"):
+        triangle.triangulate(tri, "po3")

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <numeric>
 
 #include "command.hpp"
 #include "ridt/constrained.hpp"
@@ -26,7 +27,7 @@ struct Args {
   bool no_steiner = false;  // S0: no refinement at all (crossings are still added)
   bool quality_given = false;  // --quality or q: the library judges the angle, NaN included
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
-       neighbours = false, conforming = false;
+       neighbours = false, conforming = false, second_order = false;
 };
 
 // The number that follows switch `at` in Triangle's switch string (digits, '.', 'e' and a sign
@@ -58,8 +59,8 @@ double parse_number(const std::string& text, char sw) {
 // Triangle's switches that ridt takes: p (a .poly: always), q[DEG] (quality, 20 degrees where no
 // number follows), a[AREA] (an area bound; with no number, the regions' own), A (regional
 // attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added on the boundary), n (.neigh),
-// z (number from 0), S[N] (at most N points added by refinement), Q and V (quiet, verbose:
-// ignored); the others are refused by name.
+// z (number from 0), S[N] (at most N points added by refinement), o2 (six-node triangles), Q and V
+// (quiet, verbose: ignored); the others are refused by name.
 void apply_switches(Args& a) {
   const std::string& s = a.switches;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -83,6 +84,11 @@ void apply_switches(Args& a) {
         throw InputError("switch 'S': give the most points refinement may add, a whole number (got '" + n + "')");
       a.max_steiner = static_cast<std::size_t>(v);
       a.no_steiner = a.max_steiner == 0;
+    } else if (c == 'o') {
+      if (i + 1 >= s.size() || s[i + 1] != '2')
+        throw InputError("switch 'o' is taken as o2 only (six-node triangles: Triangle's -o2)");
+      a.second_order = true;
+      ++i;
     } else if (c == 'Y' && i + 1 < s.size() && s[i + 1] == 'Y') {
       throw InputError("switch 'YY' (no points on any segment) is not supported: 'Y' keeps them off the boundary");
     } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
@@ -93,7 +99,7 @@ void apply_switches(Args& a) {
                       : a.zero_based) = true;
     } else if (c != 'p' && c != 'Q' && c != 'V') {
       throw InputError(std::string("unknown or unsupported switch '") + c +
-                       "' (ridt takes p, q, a, A, c, D, Y, S, n, z, Q, V)");
+                       "' (ridt takes p, q, a, A, c, D, Y, S, n, z, o2, Q, V)");
     }
   }
 }
@@ -215,6 +221,32 @@ std::vector<double> vertex_attributes(const io::Pslg& g, const ConstrainedTriang
   return out;
 }
 
+// The markers of every vertex, then of the middles of the edges (-o2), by the vertices' rule: a
+// marked segment edge's marker; else 1 on the boundary, 0 inside.
+std::vector<std::int64_t> with_middles(const std::vector<std::int64_t>& points, const std::vector<std::int64_t>& edges,
+                                       const ConstrainedTriangulation& t, const SecondOrder& s) {
+  std::vector<std::int64_t> out(points);
+  out.resize(points.size() + s.nodes.size(), 0);
+  for (std::size_t k = 0; k < t.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      if (t.neighbors[3 * k + i] < 0) out[s.triangles[6 * k + 3 + i]] = 1;
+  const SegmentEdges segment(t.edges, points.size());
+  for (std::size_t q = 0; q < s.nodes.size(); ++q)
+    if (const std::size_t e = segment.index(s.ends[2 * q], s.ends[2 * q + 1]); e < edges.size() && edges[e] != 0)
+      out[points.size() + q] = edges[e];
+  return out;
+}
+
+// The attributes of every vertex (`count` each, row by row), then of the middles of the edges
+// (-o2): the mean of their ends', as linear interpolation along the edge gives them.
+std::vector<double> with_middles(const std::vector<double>& attributes, std::size_t count, const SecondOrder& s) {
+  std::vector<double> out(attributes);
+  for (std::size_t q = 0; q < s.nodes.size() && count > 0; ++q)
+    for (std::size_t j = 0; j < count; ++j)
+      out.push_back(std::midpoint(attributes[s.ends[2 * q] * count + j], attributes[s.ends[2 * q + 1] * count + j]));
+  return out;
+}
+
 // OUT.ele, OUT.node, OUT.edge (and OUT.neigh): all or, on an error, none; or a drawing,
 // OUT.svg, its segments apart.
 void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t) {
@@ -235,6 +267,16 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   m.point_attribute_count = g.vertex_attributes;
   if (a.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
   m.first_index = a.zero_based ? 0 : g.first_index;
+  if (!a.second_order) return io::write_mesh_files(a.output, m, thread_count(a.threads));
+  const SecondOrder s = second_order(all, t);
+  const std::vector<std::int64_t> point_markers = with_middles(markers.points, markers.edges, t, s);
+  const std::vector<double> point_attributes = with_middles(attributes, g.vertex_attributes, s);
+  all.insert(all.end(), s.nodes.begin(), s.nodes.end());
+  m.points = all;
+  m.triangles = s.triangles;
+  m.nodes = 6;
+  m.point_markers = point_markers;
+  m.point_attributes = point_attributes;
   io::write_mesh_files(a.output, m, thread_count(a.threads));
 }
 
@@ -245,6 +287,7 @@ int run(Args a) {
     refuse_ignored(a.neighbours, "--neighbours (n)", why);
     refuse_ignored(a.attributes, "--attributes (A)", why);
     refuse_ignored(a.zero_based, "numbering from 0 (z)", why);
+    refuse_ignored(a.second_order, "--second-order (o2)", why);
   }
   const std::vector<std::string> out = outputs(a);
   refuse_overwriting({a.input}, out);
@@ -298,7 +341,11 @@ Command add_mesh(CLI::App& app) {
   mesh->add_flag("--conforming", a->conforming, "conforming Delaunay: every edge Delaunay (Triangle's -D)");
   mesh->add_option("--max-steiner", a->max_steiner,
                    "stop refining after adding N points, with a warning (Triangle's -S; 0, the default: no limit)");
-  mesh->add_option("--switches", a->switches, "Triangle's switches: p, q, a, A, c, D, Y, S, n, z, Q and V are taken");
+  mesh->add_flag("--second-order", a->second_order,
+                 "six-node triangles for quadratic elements: a node at the middle of every edge, in OUT.node after "
+                 "the vertices (Triangle's -o2)");
+  mesh->add_option("--switches", a->switches,
+                   "Triangle's switches: p, q, a, A, c, D, Y, S, n, z, o2, Q and V are taken");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
                    "threads of the triangulation and of the output's text (0, the default: all hardware threads)");

@@ -100,7 +100,8 @@ void write_edges(const std::string& path, std::span<const VertexId> edges, int f
 /// A mesh as Triangle writes it (ridt mesh).
 struct MeshFiles {
   std::span<const Point> points;  ///< every vertex: OUT.node
-  std::span<const VertexId> triangles;  ///< OUT.ele
+  std::span<const VertexId> triangles;  ///< OUT.ele: `nodes` a triangle
+  int nodes = 3;  ///< 3, or 6 (Triangle's -o2: second_order's triangles)
   std::span<const double> attributes;  ///< one a triangle (Triangle's -A), or none
   std::span<const VertexId> edges;  ///< the segments' edges, pairs of indices: OUT.edge
   std::span<const std::int64_t> edge_markers;  ///< one an edge (none: 1 each)

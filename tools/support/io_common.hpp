@@ -419,10 +419,11 @@ struct NodeAttributes {
 /// The same with a boundary marker column (`markers` one a point, or none) and attributes.
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads,
                 std::span<const std::int64_t> markers, NodeAttributes attributes = {});
-/// With `attributes` (one a triangle), Triangle's one attribute column (-A). The lines are
+/// With `attributes` (one a triangle), Triangle's one attribute column (-A); `nodes` a triangle:
+/// 3, or 6 (-o2: the corners, then the middles of the edges across from them). The lines are
 /// formatted on `threads` threads.
 void write_ele(Writer& out, std::span<const VertexId> triangles, int first_index,
-               std::span<const double> attributes = {}, unsigned threads = 1);
+               std::span<const double> attributes = {}, unsigned threads = 1, int nodes = 3);
 void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first_index, unsigned threads = 1);
 
 // Raw little-endian binary (io_binary.cpp): float64 pairs, uint32 triples.

@@ -210,16 +210,16 @@ std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors)
 }
 
 void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threads) {
-  if (!m.neighbors.empty() && m.neighbors.size() != m.triangles.size())
+  if (!m.neighbors.empty() && m.neighbors.size() / 3 != m.triangles.size() / static_cast<std::size_t>(m.nodes))
     detail::fail_file(ele,
                       std::to_string(m.neighbors.size()) + " neighbour entries for " +
-                          std::to_string(m.triangles.size() / 3) + " triangles");
+                          std::to_string(m.triangles.size() / static_cast<std::size_t>(m.nodes)) + " triangles");
   // Every file opened first (a directory in the way is refused before any is written), all
   // written and closed, then renamed together.
   std::vector<std::unique_ptr<detail::Writer>> out;
   for (const std::string& path : mesh_file_paths(ele, !m.neighbors.empty()))
     out.push_back(std::make_unique<detail::Writer>(path));
-  detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads);
+  detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads, m.nodes);
   detail::write_node(*out[1], m.points, m.first_index, threads, m.point_markers,
                      {m.point_attributes, m.point_attribute_count});
   put_edges(*out[2], m.edges, m.first_index, threads, m.edge_markers);

@@ -80,7 +80,10 @@ EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_v
   const std::int64_t nodes = integer(path, line_no, v[1], "nodes per triangle");
   if (k > 2) h.attrs = integer(path, line_no, v[2], "number of attributes");
   if (h.n < 0) fail_line(path, line_no, "negative number of triangles " + std::to_string(h.n));
-  if (nodes != 3) fail_line(path, line_no, "nodes per triangle is " + std::to_string(nodes) + ", must be 3");
+  if (nodes != 3)
+    fail_line(path, line_no,
+              "nodes per triangle is " + std::to_string(nodes) + ", must be 3" +
+                  (nodes == 6 ? " (six-node triangles, -o2, are written, not read)" : ""));
   if (h.attrs < 0 || h.attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(h.attrs));
   h.fields = 4 + static_cast<std::size_t>(h.attrs);
   return h;
@@ -212,16 +215,17 @@ void write_node(Writer& out, std::span<const Point> points, int first_index, uns
 }
 
 void write_ele(Writer& out, std::span<const VertexId> tris, int first_index, std::span<const double> attributes,
-               unsigned threads) {
-  const std::size_t nt = tris.size() / 3;
+               unsigned threads, int nodes) {
+  const std::size_t nt = tris.size() / static_cast<std::size_t>(nodes);
   const std::int64_t fi = first_index;
   out.put_int(static_cast<std::int64_t>(nt));
-  out.put(attributes.empty() ? " 3 0\n" : " 3 1\n");
+  out.put(nodes == 6 ? " 6" : " 3");
+  out.put(attributes.empty() ? " 0\n" : " 1\n");
   out.put_lines(nt, threads, [&](std::size_t k, TextPart& line) {
     line.put_int(static_cast<std::int64_t>(k) + fi);
-    for (int i = 0; i < 3; ++i) {
+    for (std::size_t i = 0; i < static_cast<std::size_t>(nodes); ++i) {
       line.put(' ');
-      line.put_int(static_cast<std::int64_t>(tris[3 * k + i]) + fi);
+      line.put_int(static_cast<std::int64_t>(tris[nodes * k + i]) + fi);
     }
     if (!attributes.empty()) line.put(' '), line.put_double(attributes[k]);
     line.put('\n');

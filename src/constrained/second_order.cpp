@@ -1,0 +1,51 @@
+// Six-node triangles (ridt/constrained.hpp, second_order): a node at the middle of each edge,
+// shared by the two triangles of the edge through their neighbour links.
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "ridt/constrained.hpp"
+
+namespace ridt {
+
+SecondOrder second_order(std::span<const Point> vertices, const Triangulation& t) {
+  const std::size_t count = t.triangles.size() / 3;
+  if (t.neighbors.size() != t.triangles.size())
+    throw InputError("six-node triangles need the triangulation's neighbours (Options::neighbors)");
+  if (vertices.size() + t.triangles.size() > std::numeric_limits<VertexId>::max())  // a node an edge slot at most
+    throw InputError("six-node triangles: " + std::to_string(vertices.size()) + " vertices and the middles of " +
+                     std::to_string(count) + " triangles' edges are too many to number");
+  for (const VertexId v : t.triangles)
+    if (v >= vertices.size())
+      throw InputError("six-node triangles: vertex " + std::to_string(v) + " is not one of the " +
+                       std::to_string(vertices.size()) + " given");
+  SecondOrder out;
+  out.triangles.resize(6 * count);
+  for (std::size_t k = 0; k < count; ++k) {
+    for (int i = 0; i < 3; ++i) out.triangles[6 * k + i] = t.triangles[3 * k + i];
+    for (int i = 0; i < 3; ++i) {
+      const std::int32_t n = t.neighbors[3 * k + i];
+      if (n >= 0 && static_cast<std::size_t>(n) < k) {  // the triangle across has its node
+        const auto m = static_cast<std::size_t>(n);
+        int j = 0;
+        while (j < 3 && t.neighbors[3 * m + j] != static_cast<std::int32_t>(k)) ++j;
+        if (j == 3)
+          throw InputError("six-node triangles: triangle " + std::to_string(k) + "'s neighbour " + std::to_string(m) +
+                           " does not have it as a neighbour");
+        out.triangles[6 * k + 3 + i] = out.triangles[6 * m + 3 + j];
+        continue;
+      }
+      if (n >= 0 && static_cast<std::size_t>(n) >= count)
+        throw InputError("six-node triangles: triangle " + std::to_string(k) + "'s neighbour " + std::to_string(n) +
+                         " is not one of the " + std::to_string(count));
+      const VertexId a = t.triangles[3 * k + (i + 1) % 3], b = t.triangles[3 * k + (i + 2) % 3];
+      out.triangles[6 * k + 3 + i] = static_cast<VertexId>(vertices.size() + out.nodes.size());
+      // std::midpoint: the exact mean rounded once, with no overflow near the largest doubles.
+      out.nodes.push_back({std::midpoint(vertices[a].x, vertices[b].x), std::midpoint(vertices[a].y, vertices[b].y)});
+      out.ends.push_back(a), out.ends.push_back(b);
+    }
+  }
+  return out;
+}
+
+}  // namespace ridt

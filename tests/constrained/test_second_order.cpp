@@ -1,0 +1,103 @@
+// second_order: six-node triangles. Every edge has one node, shared by its two triangles, at the
+// exact middle of its ends rounded once; the corners are the triangulation's; bad input refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "ridt/constrained.hpp"
+#include "ridt/generate.hpp"
+
+namespace ridt::test {
+namespace {
+
+// The exact mean of a and b rounded once, without std::midpoint: a + b rounds once (or is exact,
+// among the subnormals) and halving it is exact or that one rounding; where a + b overflows,
+// the halves, exact at that size, are added instead.
+double mean(double a, double b) {
+  const double sum = a + b;
+  return std::isfinite(sum) ? sum / 2 : a / 2 + b / 2;
+}
+
+// Checks `s` against `t` (of `vertices`) edge by edge; returns the number of edges.
+std::size_t expect_six_nodes(const std::vector<Point>& vertices, const Triangulation& t, const SecondOrder& s) {
+  const std::size_t n = vertices.size(), count = t.triangles.size() / 3;
+  EXPECT_EQ(s.triangles.size(), 6 * count);
+  EXPECT_EQ(s.ends.size(), 2 * s.nodes.size());
+  std::map<std::pair<VertexId, VertexId>, VertexId> node_of;  // each edge's node, from either side
+  std::size_t boundary = 0;
+  for (std::size_t k = 0; k < count; ++k)
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(s.triangles[6 * k + i], t.triangles[3 * k + i]);
+      const VertexId a = t.triangles[3 * k + (i + 1) % 3], b = t.triangles[3 * k + (i + 2) % 3];
+      const VertexId node = s.triangles[6 * k + 3 + i];
+      EXPECT_GE(node, n);
+      const auto [it, fresh] = node_of.insert({{std::min(a, b), std::max(a, b)}, node});
+      EXPECT_EQ(it->second, node) << "an edge with two nodes";
+      boundary += t.neighbors[3 * k + i] < 0;
+      const std::size_t q = node - n;
+      EXPECT_EQ(std::minmax(s.ends[2 * q], s.ends[2 * q + 1]), std::minmax(a, b));
+      EXPECT_EQ(s.nodes[q].x, mean(vertices[a].x, vertices[b].x));
+      EXPECT_EQ(s.nodes[q].y, mean(vertices[a].y, vertices[b].y));
+    }
+  // Euler: every edge has a node, and no two edges share one.
+  EXPECT_EQ(node_of.size(), (3 * count + boundary) / 2);
+  EXPECT_EQ(s.nodes.size(), node_of.size());
+  return node_of.size();
+}
+
+TEST(SecondOrder, TwoTrianglesShareTheNodeOfTheirDiagonal) {
+  const std::vector<Point> square = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  const ConstrainedTriangulation t = triangulate_constrained(square, {});
+  const SecondOrder s = second_order(square, t);
+  EXPECT_EQ(expect_six_nodes(square, t, s), 5u);
+  std::vector<Point> nodes = s.nodes;
+  std::sort(nodes.begin(), nodes.end(),
+            [](const Point& p, const Point& q) { return p.x != q.x ? p.x < q.x : p.y < q.y; });
+  const std::vector<Point> want = {{0, 1}, {1, 0}, {1, 1}, {1, 2}, {2, 1}};
+  for (std::size_t k = 0; k < want.size(); ++k) EXPECT_TRUE(nodes[k].x == want[k].x && nodes[k].y == want[k].y);
+}
+
+TEST(SecondOrder, EveryEdgeOfAQualityMeshWithHolesOnce) {
+  const Pslg g = generate_coastline(3000, 4, 5);
+  Domain d;
+  d.convex_hull = false;
+  d.holes = g.holes;
+  Quality q;
+  q.min_angle = 30;
+  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, {}, d, q);
+  std::vector<Point> all = g.points;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  const SecondOrder s = second_order(all, t);
+  EXPECT_GT(expect_six_nodes(all, t, s), 3 * t.size() / 2);
+  // Numbered as the triangles first meet their edges: the first triangle's three come first.
+  EXPECT_EQ(s.triangles[3], all.size());
+}
+
+TEST(SecondOrder, MiddlesOfTheLargestAndSmallestDoublesAreExact) {
+  // (a + b) / 2 overflows at the largest doubles and rounds twice among the subnormals.
+  const double big = 1.7e308, tiny = 4.9e-324;
+  const std::vector<Point> pts = {{-big, -big}, {big, -big}, {big, big}, {0, 3 * tiny}, {tiny, 0}, {-big, 2 * tiny}};
+  const ConstrainedTriangulation t = triangulate_constrained(pts, {});
+  const SecondOrder s = second_order(pts, t);
+  expect_six_nodes(pts, t, s);
+  for (const Point& p : s.nodes) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+}
+
+TEST(SecondOrder, RefusesWhatItCannotNumber) {
+  const std::vector<Point> square = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+  Options o;
+  o.neighbors = false;
+  EXPECT_THROW(second_order(square, triangulate_constrained(square, {}, o)), InputError);
+  const ConstrainedTriangulation t = triangulate_constrained(square, {});
+  EXPECT_THROW(second_order(std::vector<Point>(square.begin(), square.begin() + 3), t), InputError);
+  Triangulation wrong = t;
+  wrong.neighbors[wrong.neighbors[0] >= 0 ? 0 : wrong.neighbors[1] >= 0 ? 1 : 2] = 7;  // a triangle that is not there
+  EXPECT_THROW(second_order(square, wrong), InputError);
+}
+
+}  // namespace
+}  // namespace ridt::test
