@@ -15,8 +15,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <numeric>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io.hpp"
@@ -93,7 +95,26 @@ void triangles(std::string_view data, const char* name, int first_index) {
     finding("the validator's verdict does not add up: " + verdict.message);
 }
 
-// A constrained triangulation or mesh through the exact validator of meshes.
+// Its six-node triangles: a node an edge (Euler's count), each the rounded middle of its ends,
+// each triangle's the middles of the edges across from its corners.
+void six_nodes(const std::vector<Point>& all, const ridt::Triangulation& t) {
+  const ridt::SecondOrder s = ridt::second_order(all, t);
+  std::size_t boundary = 0;
+  for (const std::int32_t n : t.neighbors) boundary += n < 0;
+  if (s.nodes.size() != (t.triangles.size() + boundary) / 2) finding("six-node triangles: not a node an edge");
+  for (std::size_t k = 0; k < t.triangles.size() / 3; ++k)
+    for (int i = 0; i < 3; ++i) {
+      const VertexId a = t.triangles[3 * k + (i + 1) % 3], b = t.triangles[3 * k + (i + 2) % 3];
+      const std::size_t q = s.triangles[6 * k + 3 + i] - all.size();
+      const Point want{std::midpoint(all[a].x, all[b].x), std::midpoint(all[a].y, all[b].y)};
+      if (q >= s.nodes.size() || s.nodes[q].x != want.x || s.nodes[q].y != want.y ||
+          std::minmax(s.ends[2 * q], s.ends[2 * q + 1]) != std::minmax(a, b))
+        finding("six-node triangles: a node is not the middle of the edge across from its corner");
+    }
+}
+
+// A constrained triangulation or mesh through the exact validator of meshes, and its six-node
+// triangles.
 void validate(const io::Pslg& g, const ridt::ConstrainedTriangulation& t, const ridt::Domain& d,
               const ridt::Quality& q) {
   std::vector<Point> all = g.points;
@@ -107,6 +128,7 @@ void validate(const io::Pslg& g, const ridt::ConstrainedTriangulation& t, const 
   spec.max_area = q.max_area;
   const ridt::CheckResult verdict = ridt::check_mesh(all, t.triangles, spec);
   if (!verdict.valid) finding("a mesh the validator rejects: " + verdict.message);
+  six_nodes(all, t);
 }
 
 // The quality a .poly is meshed to, picked by a hash of its bytes (the same file, the same
