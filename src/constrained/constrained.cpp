@@ -60,6 +60,27 @@ void check_refinable(const detail::Extent& e) {
                      ", and coordinates as small as " + g(e.smallest) + " keep it from being scaled exactly)");
 }
 
+// triangulate checks its own need against the memory limit (Options::memory_limit, else what
+// the system can give); the steps here hold more beside its result (the points' copy, a flag an
+// edge slot, a corner and a kept index a vertex, the carving's marks, the edges' lists). 24 bytes
+// a point and 8 a segment cover it: the CDT of generate_coastline's 4 * 10^6 and 10^7 vertices
+// peaked 10 and 8 bytes a point above triangulate's estimate. Refinement keeps within what is
+// left (detail::refine). Throws MemoryError before anything large is allocated.
+void check_memory(std::size_t n, std::size_t segments, const Options& plain) {
+  const std::size_t limit = plain.memory_limit != 0 ? plain.memory_limit : available_memory();
+  const std::size_t needed = estimate_memory(n, plain) + 24 * n + 8 * segments;
+  if (limit == 0 || needed <= limit) return;
+  auto gb = [](std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    return std::string(text);
+  };
+  throw MemoryError("the constrained triangulation of " + std::to_string(n) + " points and " +
+                        std::to_string(segments) + " segments needs about " + gb(needed) + "; " + gb(limit) +
+                        " is available",
+                    needed, limit);
+}
+
 // The fixed edges, pairs (a, b) with a < b, sorted. Each is taken once (from the side where it
 // runs a -> b, or the only side), counted, then collected in a pass that appends without a
 // branch: a third of the slots are fixed, at random, and a branch on each mispredicted often.
@@ -156,6 +177,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   plain.canonical_order = refined;
   plain.neighbors = true;
   plain.on_sorted = {};
+  check_memory(points.size(), segments.size() / 2, plain);
   ConstrainedTriangulation out;
   static_cast<Triangulation&>(out) = triangulate(points, plain);
   if (out.size() == 0) return out;

@@ -79,6 +79,28 @@ TEST(Constrained, LongSegmentsInEveryDistribution) {
   }
 }
 
+TEST(Constrained, MemoryIsPlannedBeforeTheRun) {
+  // Where the triangulation alone would fit but not the constrained steps beside it, the call is
+  // refused up front with both numbers; with room for both it runs.
+  const Pslg g = generate_coastline(20000, 4, 3);
+  const std::size_t n = g.points.size(), segments = g.segments.size() / 2;
+  Options o;
+  o.threads = 1;
+  const std::size_t plain = estimate_memory(n, o);
+  o.memory_limit = plain;
+  try {
+    triangulate_constrained(g.points, g.segments, o);
+    ADD_FAILURE() << "a constrained triangulation past the memory limit ran";
+  } catch (const MemoryError& e) {
+    EXPECT_EQ(e.available, plain);
+    EXPECT_GT(e.needed, plain);
+    EXPECT_NE(std::string(e.what()).find("constrained triangulation of 20000 points"), std::string::npos) << e.what();
+  }
+  o.memory_limit = plain + 24 * n + 8 * segments;
+  EXPECT_EQ(triangulate_constrained(g.points, g.segments, o).size(),
+            triangulate_constrained(g.points, g.segments).size());
+}
+
 TEST(Constrained, DuplicateEndsStandForTheirPoint) {
   std::vector<Point> pts = {{0, 0}, {4, -1}, {8, 0}, {4, 1}, {8, 0}};
   const ConstrainedTriangulation t = checked(pts, {0, 4, 2, 4});
