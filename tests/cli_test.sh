@@ -425,6 +425,18 @@ expect 2 "check of six-node triangles" -- "$ridt" check "$dir/marked6.node" "$di
 stderr_has "six-node triangles"
 expect 2 "mesh o3 refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches po3
 expect 2 "six-node triangles are not drawn" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m6.svg" --second-order
+# Points alone (.node, Triangle's input without -p): their convex hull, Delaunay, and meshed to
+# the bounds asked; the output's .node is never the input's.
+printf '5 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 3 4\n' >"$dir/pts5.node"
+expect 0 "mesh of a .node" -- "$ridt" mesh "$dir/pts5.node" -o "$dir/pts5m.ele"
+expect 0 "triangulate the .node" -- "$ridt" triangulate "$dir/pts5.node" -o "$dir/pts5t.ele"
+cmp -s "$dir/pts5m.ele" "$dir/pts5t.ele" && pass || fail "the mesh of points alone is not their Delaunay triangulation"
+expect 0 "quality mesh of a .node" -- "$ridt" mesh "$dir/pts5.node" -o "$dir/pts5q.ele" --switches q30a5
+expect 0 "check it" -- "$ridt" check "$dir/pts5q.node" "$dir/pts5q.ele" --min-angle 30 --max-area 5
+expect 2 "mesh over its input .node" -- "$ridt" mesh "$dir/pts5.node" -o "$dir/pts5.ele"
+printf '0 2 0 0\n' >"$dir/none.node"
+expect 2 "mesh of no points" -- "$ridt" mesh "$dir/none.node" -o "$dir/none_m.ele"
+stderr_has "no points"
 expect 2 "mesh angle out of range" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq40
 stderr_has "34"; absent "$dir/q3.ele"; absent "$dir/q3.node"
 expect 2 "mesh unknown switch" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pu

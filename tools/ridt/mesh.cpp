@@ -1,5 +1,6 @@
 // ridt mesh INPUT.poly -o OUT.ele [--quality DEG] [--max-area A] [--convex-hull] [--switches pq30a0.1]
-// ...: the constrained Delaunay triangulation or quality mesh of a planar straight-line graph,
+// ...: the constrained Delaunay triangulation or quality mesh of a planar straight-line graph
+// (or of the convex hull of points alone, from a .node),
 // written as Triangle writes it: OUT.ele, OUT.node (every vertex: the input's in its numbering,
 // then the points added) and OUT.edge (the segments' edges), OUT.neigh with -n.
 #include <algorithm>
@@ -298,7 +299,7 @@ int run(Args a) {
   o.threads = a.threads;
   o.canonical_order = true;
   Domain domain;
-  domain.convex_hull = a.convex_hull;
+  domain.convex_hull = a.convex_hull || io::extension(a.input) == ".node";  // points alone: their hull
   domain.holes = g.holes;
   for (const auto& r : g.regions) domain.regions.push_back({{r[0], r[1]}, r[2], a.region_areas ? r[3] : 0});
   Quality q;
@@ -326,7 +327,10 @@ Command add_mesh(CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* mesh = app.add_subcommand(
       "mesh", "the constrained Delaunay triangulation or quality mesh of a .poly file (Triangle's -p, -q, -a)");
-  mesh->add_option("input", a->input, "a planar straight-line graph: .poly (Triangle's)")->required();
+  mesh->add_option("input", a->input,
+                   "a planar straight-line graph: .poly (Triangle's); or points alone, .node, their convex hull meshed "
+                   "(Triangle's input without -p)")
+      ->required();
   mesh->add_option("-o,--output", a->output, "OUT.ele (OUT.node and OUT.edge are written beside it), or OUT.svg")
       ->required();
   CLI::Option* quality =

@@ -8,6 +8,7 @@ void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.c
 void write_ply_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
 Pslg read_poly(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
 PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads);
+Pslg read_node_graph(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
 
 namespace {
 
@@ -59,7 +60,7 @@ void bin_out(const std::string& path, const TriangulationOut& o) {
 // written as they are sorted, how)
 constexpr Format kFormats[] = {
     {".poly", "Triangle's planar straight-line graph", read_poly_points, nullptr, nullptr, nullptr, nullptr, nullptr, read_poly},
-    {".node", "Triangle's nodes",           read_node,        nullptr,             write_node,        nullptr,   nullptr,            nullptr, nullptr},
+    {".node", "Triangle's nodes",           read_node,        nullptr,             write_node,        nullptr,   nullptr,            nullptr, read_node_graph},
     {".ele", "Triangle's elements",         nullptr,          read_ele,            nullptr,           ele_out,   nullptr,            nullptr, nullptr},
     {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr, nullptr, true},
     {".off", "OFF mesh",                    nullptr,          nullptr,             nullptr,           off_out,   write_voronoi_off,  nullptr, nullptr},

@@ -148,6 +148,19 @@ Pslg read_poly(const std::string& path, std::string_view text, unsigned threads)
   return g;
 }
 
+// A .node file as a graph of its points alone (Triangle's input without -p), their attributes
+// and markers with them.
+Pslg read_node_graph(const std::string& path, std::string_view text, unsigned threads) {
+  const std::vector<Line> lines = split_lines(text, threads);
+  if (lines.empty()) fail_file(path, "no header line \"points 2 [attributes [markers]]\"");
+  const auto h = fields(path, lines[0], 2, 4, "a header \"points 2 [attributes [markers]]\"");
+  if (integer(path, lines[0].number, h[0], "number of points") == 0) fail_line(path, lines[0].number, "no points");
+  Pslg g;
+  if (const std::size_t at = read_vertices(path, lines, threads, g); at != lines.size())
+    fail_line(path, lines[at].number, "unexpected line " + quoted(lines[at].text));
+  return g;
+}
+
 PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads) {
   Pslg g = read_poly(path, text, threads);
   return PointFile(std::move(g.points), g.first_index);
