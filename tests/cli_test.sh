@@ -308,6 +308,12 @@ expect 0 "mesh" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sq.ele"
 [ "$(head -1 "$dir/sq.edge")" = "8 1" ] && pass || fail "sq.edge"
 grep -q '^1 ' "$dir/sq.ele" && pass || fail ".ele not numbered from 1 as its .poly"
 expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
+# O: the holes ignored (the inner square then meshed too: 10 triangles); i, F, l, X and I pick
+# Triangle's algorithms and file names: ignored, the same mesh.
+expect 0 "mesh -pO" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sqO.ele" --switches pO
+[ "$(head -1 "$dir/sqO.ele")" = "10 3 0" ] && pass || fail "O did not keep the hole's triangles"
+expect 0 "mesh -piFlXI" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sqi.ele" --switches piFlXIQ
+cmp -s "$dir/sqi.ele" "$dir/sq.ele" && cmp -s "$dir/sqi.node" "$dir/sq.node" && pass || fail "i, F, l, X, I changed the mesh"
 # A SIGBUS (an input file cut short while it is mapped) ends the tool with a message and status
 # 2, and no output: here sent while the tool waits to open a FIFO no one writes.
 mkfifo "$dir/wait.fifo"

@@ -13,9 +13,10 @@ boundary; ``YY``, none on the segments inside it either, is refused), ``S[N]`` (
 points added by refinement, then a ``ridt.RefinementWarning``; ``S0``, none), ``e`` (also return
 every edge), ``n`` (also return the neighbours), ``o2`` (six-node triangles: a node at the middle
 of every edge, after the vertices; each triangle its corners, then the nodes of the edges
-across from them), ``z`` (indices from 0: always so here) and
-``Q``/``V`` (quiet, verbose: ignored). The others (``r``, ``o2``, ...) are refused with
-ValueError.
+across from them), ``O`` (the holes ignored), ``z`` (indices from 0: always so here),
+``Q``/``V`` (quiet, verbose) and ``i``, ``F``, ``l``, ``X``, ``I`` (Triangle's choice of
+algorithm, its exact arithmetic off, its file names: the exact result does not depend on them),
+these last ignored. The others (``r``, ``v``, ...) are refused with ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
 ``a`` ask). Every triangle is counter-clockwise; indices are 0-based; the points added follow the
 input's in 'vertices'.
@@ -37,7 +38,7 @@ from ._constrained import ConstrainedDelaunay
 from ._delaunay import DegenerateInputWarning, hull_edges
 from ._voronoi import ray_directions
 
-_TAKEN = set("pqaAcDYSenozQV")
+_TAKEN = set("pqaAcDYSenozOQViFlXI")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
@@ -95,7 +96,7 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     pts = _api.as_points(tri["vertices"], "vertices", "ridt.triangle")
     pslg = "p" in flags
     segments = np.asarray(tri.get("segments", np.zeros((0, 2), dtype=np.intc))) if pslg else np.zeros((0, 2))
-    holes = tri.get("holes") if pslg else None
+    holes = tri.get("holes") if pslg and "O" not in flags else None
     regions = np.asarray(tri.get("regions", np.zeros((0, 4))), dtype=float).reshape(-1, 4)
     if not regional:
         regions = np.concatenate([regions[:, :3], np.zeros((len(regions), 1))], axis=1)

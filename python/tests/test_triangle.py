@@ -42,6 +42,14 @@ def test_a_square_with_a_hole():
     assert t["neighbors"].shape == (8, 3) and (t["neighbors"] == -1).sum() == 8
 
 
+def test_holes_ignored_and_switches_that_change_nothing():
+    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4)),
+           "holes": [[5, 5]]}
+    assert len(triangle.triangulate(tri, "pO")["triangles"]) == 10  # the hole meshed too
+    same = triangle.triangulate(tri, "piFlXIQ")
+    np.testing.assert_array_equal(same["triangles"], triangle.triangulate(tri, "p")["triangles"])
+
+
 def test_the_convex_hull_switch():
     ell = np.array([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)], dtype=float)
     tri = {"vertices": ell, "segments": loop(0, 6)}

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <limits>
 #include <numeric>
+#include <string_view>
 
 #include "command.hpp"
 #include "ridt/constrained.hpp"
@@ -28,7 +29,7 @@ struct Args {
   bool no_steiner = false;  // S0: no refinement at all (crossings are still added)
   bool quality_given = false;  // --quality or q: the library judges the angle, NaN included
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
-       neighbours = false, conforming = false, second_order = false;
+       neighbours = false, conforming = false, second_order = false, no_holes = false;
 };
 
 // The number that follows switch `at` in Triangle's switch string (digits, '.', 'e' and a sign
@@ -60,8 +61,10 @@ double parse_number(const std::string& text, char sw) {
 // Triangle's switches that ridt takes: p (a .poly: always), q[DEG] (quality, 20 degrees where no
 // number follows), a[AREA] (an area bound; with no number, the regions' own), A (regional
 // attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added on the boundary), n (.neigh),
-// z (number from 0), S[N] (at most N points added by refinement), o2 (six-node triangles), Q and V
-// (quiet, verbose: ignored); the others are refused by name.
+// z (number from 0), S[N] (at most N points added by refinement), o2 (six-node triangles), O (the
+// .poly's holes ignored), Q and V (quiet, verbose), and i, F, l, X and I (Triangle's choice of
+// algorithm, its exact arithmetic off, its iteration numbers in file names: the exact result
+// does not depend on them): ignored; the others are refused by name.
 void apply_switches(Args& a) {
   const std::string& s = a.switches;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -92,15 +95,16 @@ void apply_switches(Args& a) {
       ++i;
     } else if (c == 'Y' && i + 1 < s.size() && s[i + 1] == 'Y') {
       throw InputError("switch 'YY' (no points on any segment) is not supported: 'Y' keeps them off the boundary");
-    } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z') {
+    } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z' || c == 'O') {
       (c == 'A'       ? a.attributes
            : c == 'c' ? a.convex_hull
            : c == 'Y' ? a.no_boundary
            : c == 'n' ? a.neighbours
+           : c == 'O' ? a.no_holes
                       : a.zero_based) = true;
-    } else if (c != 'p' && c != 'Q' && c != 'V') {
+    } else if (std::string_view("pQViFlXI").find(c) == std::string_view::npos) {
       throw InputError(std::string("unknown or unsupported switch '") + c +
-                       "' (ridt takes p, q, a, A, c, D, Y, S, n, z, o2, Q, V)");
+                       "' (ridt takes p, q, a, A, c, D, Y, S, n, z, o2, O, Q, V, i, F, l, X, I)");
     }
   }
 }
@@ -300,7 +304,7 @@ int run(Args a) {
   o.canonical_order = true;
   Domain domain;
   domain.convex_hull = a.convex_hull || io::extension(a.input) == ".node";  // points alone: their hull
-  domain.holes = g.holes;
+  if (!a.no_holes) domain.holes = g.holes;
   for (const auto& r : g.regions) domain.regions.push_back({{r[0], r[1]}, r[2], a.region_areas ? r[3] : 0});
   Quality q;
   q.min_angle = a.quality_given ? a.quality : 0;
@@ -349,7 +353,8 @@ Command add_mesh(CLI::App& app) {
                  "six-node triangles for quadratic elements: a node at the middle of every edge, in OUT.node after "
                  "the vertices (Triangle's -o2)");
   mesh->add_option("--switches", a->switches,
-                   "Triangle's switches: p, q, a, A, c, D, Y, S, n, z, o2, Q and V are taken");
+                   "Triangle's switches: p, q, a, A, c, D, Y, S, n, z, o2, O, Q, V; i, F, l, X and I are "
+                   "ignored (the exact result does not depend on them)");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
                    "threads of the triangulation and of the output's text (0, the default: all hardware threads)");
