@@ -98,7 +98,12 @@ void triangles(std::string_view data, const char* name, int first_index) {
 // Its six-node triangles: a node an edge (Euler's count), each the rounded middle of its ends,
 // each triangle's the middles of the edges across from its corners.
 void six_nodes(const std::vector<Point>& all, const ridt::Triangulation& t) {
-  const ridt::SecondOrder s = ridt::second_order(all, t);
+  ridt::SecondOrder s;
+  try {
+    s = ridt::second_order(all, t);
+  } catch (const ridt::InputError& e) {  // a mesh whose links it cannot follow: not the caller's input
+    finding(std::string("six-node triangles of a mesh refused: ") + e.what());
+  }
   std::size_t boundary = 0;
   for (const std::int32_t n : t.neighbors) boundary += n < 0;
   if (s.nodes.size() != (t.triangles.size() + boundary) / 2) finding("six-node triangles: not a node an edge");

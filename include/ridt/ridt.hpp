@@ -370,7 +370,8 @@ Triangulation triangulate(std::span<const double> xy, const Options& options = {
 /// triangulate keeps the large blocks of its work space (the triangle records, some 250 bytes
 /// a point, and its copy of the points) for the next call in the process instead of giving
 /// them back to the system, up to this many bytes in all: 512 MiB by default (enough for some
-/// two million points), none in builds with AddressSanitizer or ThreadSanitizer. A block the
+/// two million points), none in builds with AddressSanitizer or ThreadSanitizer nor under a
+/// limit on address space (ulimit -v), which what is kept would count against. A block the
 /// system hands out anew has its pages faulted in and zeroed on first touch, which can take a
 /// third of a call's time. Set 0 when one call is all a process makes, or to give back at
 /// once what is kept: kept blocks also raise the call's peak memory, since the records are

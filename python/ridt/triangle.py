@@ -50,7 +50,8 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
     while i < len(opts):
         c = opts[i]
         if c not in _TAKEN:
-            raise ValueError(f"switch '{c}' is not supported (ridt takes {''.join(sorted(_TAKEN))})")
+            raise ValueError(f"switch '{c}' is not supported (ridt takes p, q, a, A, c, D, Y, S, e, n, o2, O, z, Q, V; "
+                             "i, F, l, X, I are ignored)")
         if c == "o" and opts[i + 1:i + 2] != "2":
             raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
         if c == "Y" and "Y" in flags:
@@ -143,9 +144,9 @@ def _six_nodes(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, boundary: n
     nodes, ends, six = _core.second_order(cdt.points, cdt.triangulation)
     keys = _key(np.sort(ends, axis=1))
     markers = np.isin(keys, _key(boundary)).astype(np.intc)
-    if len(cdt.edges):
-        pieces_by_key = dict(zip(_key(cdt.edges).tolist(), pieces.tolist()))
-        given = np.array([pieces_by_key.get(k, 0) for k in keys.tolist()], dtype=np.intc)
+    if len(cdt.edges):  # a segment edge's node: its marker where nonzero (cdt.edges are sorted)
+        at = np.minimum(np.searchsorted(_key(cdt.edges), keys), len(cdt.edges) - 1)
+        given = np.where(_key(cdt.edges)[at] == keys, pieces[at], 0)
         markers = np.where(given != 0, given, markers).astype(np.intc)
     out["vertices"] = np.concatenate([out["vertices"], nodes])
     out["triangles"] = six.astype(np.intc)

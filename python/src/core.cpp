@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -404,6 +405,9 @@ void bind_voronoi(py::module_& m) {
           py::gil_scoped_release nogil;
           s = ridt::second_order(pts, t);
         }
+        if (pts.size() + s.nodes.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+          throw ridt::InputError("six-node triangles: " + std::to_string(pts.size() + s.nodes.size()) +
+                                 " nodes are more than Python's int32 indices hold");
         const auto nodes = static_cast<py::ssize_t>(s.nodes.size());
         const auto triangles = static_cast<py::ssize_t>(s.triangles.size() / 6);
         return py::make_tuple(adopt<ridt::Point, double>(std::move(s.nodes), {nodes, 2}),

@@ -130,9 +130,10 @@ def test_the_process_limits_on_memory_are_room_too():
     code = textwrap.dedent("""
         import resource, warnings, numpy as np, ridt
         pts = np.random.default_rng(0).random((4_000_000, 2))
+        before = ridt.available_memory() >> 20
         size = int(open("/proc/self/statm").read().split()[0]) * resource.getpagesize()
-        resource.setrlimit(resource.RLIMIT_AS, (size + (200 << 20), resource.RLIM_INFINITY))
-        print("room", ridt.available_memory() >> 20, flush=True)
+        resource.setrlimit(resource.RLIMIT_AS, (size + (200 << 20), resource.getrlimit(resource.RLIMIT_AS)[1]))
+        print("room", ridt.available_memory() >> 20, before, flush=True)
         try:
             ridt.triangulate(pts)
             print("ran", flush=True)
@@ -148,7 +149,8 @@ def test_the_process_limits_on_memory_are_room_too():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=300)
     lines = out.stdout.splitlines()
     assert out.returncode == 0, out.stderr
-    assert 150 <= int(lines[0].split()[1]) <= 200, lines
+    room, before = map(int, lines[0].split()[1:])
+    assert room <= 200 and (room >= 150 or before < 300), lines  # the limit's room, or less where less is free
     assert lines[1] == "refused True", lines
     assert lines[2].startswith("mesh True") and "the memory left holds no more" in lines[2], lines
 

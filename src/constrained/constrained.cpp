@@ -81,6 +81,17 @@ void check_memory(std::size_t n, std::size_t segments, const Options& plain) {
                     needed, limit);
 }
 
+// What refinement may take under Options::memory_limit: the limit less what is held now (the
+// mutable triangulation's arrays, and the blocks the triangulation's work space left in the
+// memory cache); 0 (what the process has left) without a limit.
+std::size_t room_left(const Options& options, const detail::Cdt& m) {
+  if (options.memory_limit == 0) return 0;
+  const std::size_t held = m.tris.capacity() * sizeof(VertexId) + m.nbrs.capacity() * sizeof(std::int32_t) +
+      m.fixed.capacity() + m.pts.capacity() * sizeof(Point) + m.corner.capacity() * sizeof(std::uint32_t) +
+      cached_memory();
+  return options.memory_limit > held ? options.memory_limit - held : 1;
+}
+
 // The fixed edges, pairs (a, b) with a < b, sorted. Each is taken once (from the side where it
 // runs a -> b, or the only side), counted, then collected in a pass that appends without a
 // branch: a third of the slots are fixed, at random, and a branch on each mispredicted often.
@@ -206,7 +217,8 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
                          quality.split_boundary,
                          quality.conforming,
                          quality.max_steiner,
-                         static_cast<VertexId>(points.size() + out.crossings + pinched.size())};
+                         static_cast<VertexId>(points.size() + out.crossings + pinched.size()),
+                         room_left(options, m)};
     for (const Region& g : domain.regions)
       r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
     if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;

@@ -18,6 +18,7 @@ struct Refinement {
   bool conforming = false;  ///< a point on one subsegment splits another whose circle holds it
   std::size_t max_steiner = 0;
   VertexId corners = 0;  ///< vertices below this id are corners (input points and crossings)
+  std::size_t memory = 0;  ///< the bytes refinement may take; 0: what the process has left
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's

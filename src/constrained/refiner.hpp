@@ -63,7 +63,7 @@ class Refiner {
     // point, its corner, queue entries), twice that in arrays that grow by doubling, and the
     // result's arrays come on top: a whole run peaks at 215 to 265 bytes a point added (ridt
     // mesh and Python's ConstrainedDelaunay, 10^6 and 4 * 10^6 points), so 320 of 3/4 of it.
-    const std::size_t room = available_memory() / 320 * 3 / 4;
+    const std::size_t room = (r_.memory != 0 ? r_.memory : available_memory()) / 320 * 3 / 4;
     while (true) {
       if (r_.max_steiner > 0 && m_.pts.size() - first >= r_.max_steiner)
         return "quality refinement stopped after " + std::to_string(r_.max_steiner) + " points (the limit asked)";

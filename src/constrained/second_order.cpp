@@ -7,6 +7,16 @@
 #include "ridt/constrained.hpp"
 
 namespace ridt {
+namespace {
+
+// Whether triangle m has k among its neighbours.
+bool names(std::span<const std::int32_t> neighbors, std::size_t m, std::size_t k) {
+  for (int j = 0; j < 3; ++j)
+    if (neighbors[3 * m + j] == static_cast<std::int32_t>(k)) return true;
+  return false;
+}
+
+}  // namespace
 
 SecondOrder second_order(std::span<const Point> vertices, const Triangulation& t) {
   const std::size_t count = t.triangles.size() / 3;
@@ -25,20 +35,20 @@ SecondOrder second_order(std::span<const Point> vertices, const Triangulation& t
     for (int i = 0; i < 3; ++i) out.triangles[6 * k + i] = t.triangles[3 * k + i];
     for (int i = 0; i < 3; ++i) {
       const std::int32_t n = t.neighbors[3 * k + i];
-      if (n >= 0 && static_cast<std::size_t>(n) < k) {  // the triangle across has its node
-        const auto m = static_cast<std::size_t>(n);
+      const auto m = static_cast<std::size_t>(n);
+      if (n >= 0 && (m >= count || m == k || !names(t.neighbors, m, k)))
+        throw InputError("six-node triangles: triangle " + std::to_string(k) + "'s neighbour " + std::to_string(n) +
+                         " is not another of the " + std::to_string(count) + " triangles with it as a neighbour");
+      const VertexId a = t.triangles[3 * k + (i + 1) % 3], b = t.triangles[3 * k + (i + 2) % 3];
+      if (n >= 0 && m < k) {  // the triangle across met this edge first: its node
         int j = 0;
-        while (j < 3 && t.neighbors[3 * m + j] != static_cast<std::int32_t>(k)) ++j;
-        if (j == 3)
-          throw InputError("six-node triangles: triangle " + std::to_string(k) + "'s neighbour " + std::to_string(m) +
-                           " does not have it as a neighbour");
+        while (t.neighbors[3 * m + j] != static_cast<std::int32_t>(k)) ++j;
+        if (t.triangles[3 * m + (j + 1) % 3] != b || t.triangles[3 * m + (j + 2) % 3] != a)
+          throw InputError("six-node triangles: triangles " + std::to_string(m) + " and " + std::to_string(k) +
+                           " are neighbours across edges that differ");
         out.triangles[6 * k + 3 + i] = out.triangles[6 * m + 3 + j];
         continue;
       }
-      if (n >= 0 && static_cast<std::size_t>(n) >= count)
-        throw InputError("six-node triangles: triangle " + std::to_string(k) + "'s neighbour " + std::to_string(n) +
-                         " is not one of the " + std::to_string(count));
-      const VertexId a = t.triangles[3 * k + (i + 1) % 3], b = t.triangles[3 * k + (i + 2) % 3];
       out.triangles[6 * k + 3 + i] = static_cast<VertexId>(vertices.size() + out.nodes.size());
       // std::midpoint: the exact mean rounded once, with no overflow near the largest doubles.
       out.nodes.push_back({std::midpoint(vertices[a].x, vertices[b].x), std::midpoint(vertices[a].y, vertices[b].y)});

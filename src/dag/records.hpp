@@ -95,7 +95,8 @@ class TriangleStore {
   explicit TriangleStore(std::uint64_t expected = kStep)
       // Room for every id; a small run touches a few 4 KiB pages, where huge pages would
       // zero 2 MiB.
-      : range_(std::size_t{kIdMask + 1ull} * sizeof(Triangle), expected >= kStep / 4),
+      : range_(std::size_t{kIdMask + 1ull} * sizeof(Triangle), expected >= kStep / 4,
+               expected / 4 * 5 * sizeof(Triangle)),
         base_(reinterpret_cast<Triangle*>(range_.data())) {
     // What a run will need, at once and from the calling thread: worker threads then rarely
     // take the growth lock. Pages not touched cost nothing.

@@ -35,6 +35,13 @@ constexpr std::size_t kDefaultLimit = std::size_t{512} << 20;
 constexpr std::size_t kDefaultLimit = std::size_t{512} << 20;
 #endif
 
+// Whether the process has a limit on its address space (ulimit -v): what the cache keeps, the
+// reserved ranges' address space above all, would then count against it.
+bool address_space_limited() {
+  rlimit r{};
+  return getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY;
+}
+
 struct Cache {
   // A kept block (from allocate_huge) or range (from a Reservation, when `block` is null),
   // counted as `bytes`: a range's committed bytes.
@@ -49,7 +56,7 @@ struct Cache {
   std::size_t limit = kDefaultLimit;
   std::size_t lent = 0;  // more room while MemoryReuse objects live (their bytes)
 
-  std::size_t room() const { return limit + lent > held ? limit + lent - held : 0; }
+  std::size_t room() const { return limit + lent > held && !address_space_limited() ? limit + lent - held : 0; }
   // What of a range with `committed` bytes would be kept now: its start, in whole huge pages.
   std::size_t keepable(std::size_t committed) const { return std::min(committed, room() / kHugePage * kHugePage); }
   // Removes and returns the most recently kept entry that `match` accepts (its pages are the
@@ -116,18 +123,22 @@ void release_block(void* p, std::size_t bytes) {
   std::free(p);
 }
 
-Reservation::Reservation(std::size_t bytes, bool huge) {
+Reservation::Reservation(std::size_t bytes, bool huge, std::size_t likely) {
   Cache& c = cache();
   {
     const std::lock_guard<std::mutex> guard(c.mutex);
     Cache::Entry e;
-    if (c.take([&](const Cache::Entry& k) { return k.block == nullptr && k.range.reserved >= bytes; }, e)) m_ = e.range;
+    const std::size_t enough = likely > 0 ? std::min(bytes, likely) : bytes;
+    if (c.take([&](const Cache::Entry& k) { return k.block == nullptr && k.range.reserved >= enough; }, e))
+      m_ = e.range;
   }
   if (m_.map == nullptr) {
     // Address space only: PROT_NONE is neither usable nor charged to the commit limit, and
-    // most systems grant tens of GiB. Where a limit on address space refuses, ask for less.
+    // most systems grant tens of GiB. Where a limit on address space refuses, ask for less:
+    // half as much each time, but what is likely needed before anything below it.
     const std::size_t align = huge ? kHugePage : 4096;
-    for (bytes = round_up(std::max<std::size_t>(bytes, 1), align);; bytes = round_up(bytes / 2, align)) {
+    const std::size_t need = round_up(std::max<std::size_t>(likely, 1), align);
+    for (bytes = round_up(std::max<std::size_t>(bytes, 1), align);;) {
       void* p = mmap(nullptr, bytes + align, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
       if (p != MAP_FAILED) {
         const auto at = reinterpret_cast<std::uintptr_t>(p);
@@ -135,6 +146,8 @@ Reservation::Reservation(std::size_t bytes, bool huge) {
         break;
       }
       if (bytes <= kHugePage) throw std::bad_alloc();
+      const std::size_t half = round_up(bytes / 2, align);
+      bytes = likely > 0 && half < need && need < bytes ? need : half;
     }
   }
 #ifdef MADV_HUGEPAGE
@@ -328,8 +341,9 @@ std::size_t available_memory() {
     std::fclose(f);
     bytes = static_cast<std::size_t>(kib) * 1024;
   }
+  // A limit that leaves no room gives 1, not 0: 0 says that nothing could be read.
   for (const std::optional<std::size_t> room : {cgroup_room(), rlimit_room()})
-    if (room) bytes = bytes == 0 ? *room : std::min(bytes, *room);
+    if (room) bytes = std::max<std::size_t>(bytes == 0 ? *room : std::min(bytes, *room), 1);
   return bytes;
 }
 

@@ -50,8 +50,11 @@ class Reservation {
   Reservation() = default;
   /// At most `bytes` of address space, fewer when the system refuses that much (commit then
   /// fails past what was granted); a kept range when the cache has one. With `huge`, the range is aligned
-  /// to a huge page and marked for transparent huge pages.
-  Reservation(std::size_t bytes, bool huge);
+  /// to a huge page and marked for transparent huge pages. `likely`: what the caller expects to
+  /// use; under a limit on address space (ulimit -v) that refuses `bytes`, that much is asked
+  /// for before less, rather than the largest halving of `bytes` that fits (which can take the
+  /// whole room, or fall short of the need), and a kept range that holds it will do.
+  Reservation(std::size_t bytes, bool huge, std::size_t likely = 0);
   Reservation(Reservation&& other) noexcept { *this = std::move(other); }
   Reservation& operator=(Reservation&& other) noexcept;
   ~Reservation();

@@ -101,6 +101,26 @@ TEST(Constrained, MemoryIsPlannedBeforeTheRun) {
             triangulate_constrained(g.points, g.segments).size());
 }
 
+TEST(Constrained, RefinementStopsWithinTheMemoryLimit) {
+  // An area bound far below what the limit holds: refinement stops with its warning once what it
+  // adds would pass Options::memory_limit (at 320 bytes a point added, 3/4 of what is left).
+  const std::size_t cache = set_memory_cache_limit(0);  // nothing held from earlier calls
+  const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  Options o;
+  o.threads = 1;
+  const std::size_t room = std::size_t{64} << 20;
+  o.memory_limit = estimate_memory(square.size(), o) + room;
+  Quality q;
+  q.max_area = 1e-12;
+  q.max_steiner = 2000000;  // were the limit not kept, the test still ends
+  const std::vector<VertexId> sides = {0, 1, 1, 2, 2, 3, 3, 0};
+  const ConstrainedTriangulation t = triangulate_constrained(square, sides, o, {}, q);
+  set_memory_cache_limit(cache);
+  EXPECT_NE(t.warning.find("the memory left holds no more"), std::string::npos) << t.warning;
+  EXPECT_LE(t.steiner.size(), o.memory_limit / 320 * 3 / 4);
+  EXPECT_GT(t.steiner.size(), room / 320 / 2);
+}
+
 TEST(Constrained, DuplicateEndsStandForTheirPoint) {
   std::vector<Point> pts = {{0, 0}, {4, -1}, {8, 0}, {4, 1}, {8, 0}};
   const ConstrainedTriangulation t = checked(pts, {0, 4, 2, 4});

@@ -94,8 +94,16 @@ TEST(SecondOrder, RefusesWhatItCannotNumber) {
   EXPECT_THROW(second_order(square, triangulate_constrained(square, {}, o)), InputError);
   const ConstrainedTriangulation t = triangulate_constrained(square, {});
   EXPECT_THROW(second_order(std::vector<Point>(square.begin(), square.begin() + 3), t), InputError);
+  const int s = t.neighbors[0] >= 0 ? 0 : t.neighbors[1] >= 0 ? 1 : 2;  // triangle 0's link to triangle 1
   Triangulation wrong = t;
-  wrong.neighbors[wrong.neighbors[0] >= 0 ? 0 : wrong.neighbors[1] >= 0 ? 1 : 2] = 7;  // a triangle that is not there
+  wrong.neighbors[s] = 7;  // a triangle that is not there
+  EXPECT_THROW(second_order(square, wrong), InputError);
+  wrong = t;
+  for (int j = 3; j < 6; ++j)  // triangle 1 no longer has 0 as a neighbour: found from 0's side
+    if (wrong.neighbors[j] == 0) wrong.neighbors[j] = -1;
+  EXPECT_THROW(second_order(square, wrong), InputError);
+  wrong = t;
+  std::rotate(wrong.neighbors.begin() + 3, wrong.neighbors.begin() + 4, wrong.neighbors.begin() + 6);  // edges differ
   EXPECT_THROW(second_order(square, wrong), InputError);
 }
 

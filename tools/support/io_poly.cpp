@@ -223,7 +223,7 @@ std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors)
 }
 
 void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threads) {
-  if (!m.neighbors.empty() && m.neighbors.size() / 3 != m.triangles.size() / static_cast<std::size_t>(m.nodes))
+  if (!m.neighbors.empty() && 3 * m.triangles.size() != m.neighbors.size() * static_cast<std::size_t>(m.nodes))
     detail::fail_file(ele,
                       std::to_string(m.neighbors.size()) + " neighbour entries for " +
                           std::to_string(m.triangles.size() / static_cast<std::size_t>(m.nodes)) + " triangles");
