@@ -14,7 +14,11 @@ namespace ridt::detail {
 // it, last in first out within one: the order refinement needs within a few per cent, without a
 // heap's misses. A bucket is put in order along the Hilbert curve (by `where`, in 1024 stretches)
 // when the queue comes to it and more than a few of its items came since: then one pop's triangle
-// lies near the last one's in the plane, and the slots they free and take, near in memory.
+// lies near the last one's in the plane, and the slots they free and take, near in memory. The
+// whole bucket where its new items are at least as many as those in order, else its new items
+// alone: each sort then costs at most twice the items that came since the last, where sorting
+// every item each time took time quadratic in a bucket the queue kept leaving and coming back to
+// (a bucket of 350,000 sorted 503 times: 3 s for a mesh of 5000 points added).
 template <class Item>
 class Buckets {
  public:
@@ -37,6 +41,8 @@ class Buckets {
     --size_;
     return item;
   }
+  /// The items put in curve order so far, counted once each time a sort moves them.
+  std::size_t sorted() const { return sorted_; }
   // The item that would come k pops after the next, in the lowest bucket, or null.
   const Item* ahead(std::size_t k) const {
     if (size_ == 0 || lowest_ >= lists_.size()) return nullptr;
@@ -55,22 +61,29 @@ class Buckets {
     return static_cast<std::size_t>(key < 0 ? kSpan - 1 - q : kSpan + q);
   }
 
-  // Bucket b's items sorted by the first bits of `where` (a counting sort: stable, linear).
+  // Bucket b's items, or its items since those in order, sorted by the first bits of `where`
+  // (a counting sort: stable, linear).
   void along_curve(std::size_t b) {
     std::vector<Item>& l = lists_[b];
+    const std::size_t first = l.size() - ordered_[b] >= ordered_[b] ? 0 : ordered_[b];
     constexpr int kBits = 10;
     std::vector<std::uint32_t> at((1u << kBits) + 1, 0);
-    for (const Item& i : l) ++at[(i.where >> (32 - kBits)) + 1];
+    for (std::size_t k = first; k < l.size(); ++k) ++at[(l[k].where >> (32 - kBits)) + 1];
     std::partial_sum(at.begin(), at.end(), at.begin());
-    std::vector<Item> sorted(l.size());
-    for (const Item& i : l) sorted[at[i.where >> (32 - kBits)]++] = i;
-    l.swap(sorted);
+    sorted_ += l.size() - first;
+    std::vector<Item> sorted(l.size() - first);
+    for (std::size_t k = first; k < l.size(); ++k) sorted[at[l[k].where >> (32 - kBits)]++] = l[k];
+    if (first == 0)
+      l.swap(sorted);  // the old array freed, none of its spare room kept
+    else
+      std::copy(sorted.begin(), sorted.end(), l.begin() + static_cast<std::ptrdiff_t>(first));
     ordered_[b] = l.size();
   }
 
   std::vector<std::vector<Item>> lists_;
-  std::vector<std::size_t> ordered_;  // per bucket: how many of its first items are in curve order
+  std::vector<std::size_t> ordered_;  // per bucket: how many of its first items were put in curve order
   std::size_t lowest_ = std::numeric_limits<std::size_t>::max(), current_ = lowest_, size_ = 0;
+  std::size_t sorted_ = 0;
 };
 
 }  // namespace ridt::detail
