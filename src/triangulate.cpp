@@ -16,6 +16,7 @@
 #include "order/order.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/ridt.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "walk/mesh.hpp"
 
@@ -130,26 +131,20 @@ std::size_t estimate(const Plan& p, std::size_t n) {
   return static_cast<std::size_t>(per_point * static_cast<double>(n)) + kFixedBytes + p.threads * kBytesPerThread;
 }
 
-std::string gigabytes(std::size_t bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
-  return text;
-}
-
 // Throws MemoryError, before anything large is allocated, when the plan needs more than the
 // limit (the options' or what the system can give); names what would fit where walking would.
 void check_memory(const Plan& p, std::size_t n, const Options& options) {
-  const std::size_t limit = options.memory_limit != 0 ? options.memory_limit : available_memory();
+  const std::size_t limit = detail::memory_room(options.memory_limit);
   const std::size_t needed = estimate(p, n);
   if (limit == 0 || needed <= limit) return;
   std::string what = "triangulating " + std::to_string(n) + " points with the " +
       std::string(to_string(p.method->method)) + " method (" + (p.walk ? "walking" : "the history DAG") +
-      ") needs about " + gigabytes(needed) + "; " + gigabytes(limit) + " is available";
+      ") needs about " + detail::gigabytes(needed) + "; " + detail::gigabytes(limit) + " is available";
   Plan walking = p;
   walking.walk = true;
   if (!p.walk && estimate(walking, n) <= limit)
     what += " (the walking methods, serial or partition with the BRIO order, need about " +
-        gigabytes(estimate(walking, n)) + ")";
+        detail::gigabytes(estimate(walking, n)) + ")";
   throw MemoryError(what, needed, limit);
 }
 

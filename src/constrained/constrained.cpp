@@ -16,6 +16,7 @@
 #include "finish/finish.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/constrained.hpp"
+#include "runtime/memory.hpp"
 
 namespace ridt {
 namespace {
@@ -67,17 +68,12 @@ void check_refinable(const detail::Extent& e) {
 // peaked 10 and 8 bytes a point above triangulate's estimate. Refinement keeps within what is
 // left (detail::refine). Throws MemoryError before anything large is allocated.
 void check_memory(std::size_t n, std::size_t segments, const Options& plain) {
-  const std::size_t limit = plain.memory_limit != 0 ? plain.memory_limit : available_memory();
+  const std::size_t limit = detail::memory_room(plain.memory_limit);
   const std::size_t needed = estimate_memory(n, plain) + 24 * n + 8 * segments;
   if (limit == 0 || needed <= limit) return;
-  auto gb = [](std::size_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
-    return std::string(text);
-  };
   throw MemoryError("the constrained triangulation of " + std::to_string(n) + " points and " +
-                        std::to_string(segments) + " segments needs about " + gb(needed) + "; " + gb(limit) +
-                        " is available",
+                        std::to_string(segments) + " segments needs about " + detail::gigabytes(needed) + "; " +
+                        detail::gigabytes(limit) + " is available",
                     needed, limit);
 }
 

@@ -9,11 +9,11 @@
 namespace ridt {
 namespace {
 
-// Whether triangle m has k among its neighbours.
-bool names(std::span<const std::int32_t> neighbors, std::size_t m, std::size_t k) {
-  for (int j = 0; j < 3; ++j)
-    if (neighbors[3 * m + j] == static_cast<std::int32_t>(k)) return true;
-  return false;
+// The slot of triangle m whose neighbour is k, or 3 where none is.
+int slot_of(std::span<const std::int32_t> neighbors, std::size_t m, std::size_t k) {
+  int j = 0;
+  while (j < 3 && neighbors[3 * m + j] != static_cast<std::int32_t>(k)) ++j;
+  return j;
 }
 
 }  // namespace
@@ -36,13 +36,12 @@ SecondOrder second_order(std::span<const Point> vertices, const Triangulation& t
     for (int i = 0; i < 3; ++i) {
       const std::int32_t n = t.neighbors[3 * k + i];
       const auto m = static_cast<std::size_t>(n);
-      if (n >= 0 && (m >= count || m == k || !names(t.neighbors, m, k)))
+      const int j = n >= 0 && m < count && m != k ? slot_of(t.neighbors, m, k) : 3;
+      if (n >= 0 && j == 3)
         throw InputError("six-node triangles: triangle " + std::to_string(k) + "'s neighbour " + std::to_string(n) +
                          " is not another of the " + std::to_string(count) + " triangles with it as a neighbour");
       const VertexId a = t.triangles[3 * k + (i + 1) % 3], b = t.triangles[3 * k + (i + 2) % 3];
       if (n >= 0 && m < k) {  // the triangle across met this edge first: its node
-        int j = 0;
-        while (t.neighbors[3 * m + j] != static_cast<std::int32_t>(k)) ++j;
         if (t.triangles[3 * m + (j + 1) % 3] != b || t.triangles[3 * m + (j + 2) % 3] != a)
           throw InputError("six-node triangles: triangles " + std::to_string(m) + " and " + std::to_string(k) +
                            " are neighbours across edges that differ");

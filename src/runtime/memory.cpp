@@ -331,6 +331,16 @@ std::optional<std::size_t> rlimit_room() {
 
 }  // namespace
 
+namespace detail {
+
+std::string gigabytes(std::size_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+  return text;
+}
+
+}  // namespace detail
+
 std::size_t available_memory() {
   std::size_t bytes = 0;
   if (std::FILE* f = std::fopen("/proc/meminfo", "r")) {

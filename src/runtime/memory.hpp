@@ -15,9 +15,12 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include "ridt/ridt.hpp"
 
 namespace ridt::detail {
 
@@ -97,6 +100,15 @@ class Reservation {
 /// The whole huge pages within the range are marked for transparent huge pages. Below 1 MiB it
 /// does nothing.
 void make_present(void* data, std::size_t bytes, unsigned threads);
+
+/// The most a call may take: `memory_limit` (Options::memory_limit) where it is not 0, else
+/// what the process can take now (available_memory(); 0 where that cannot be read).
+inline std::size_t memory_room(std::size_t memory_limit) {
+  return memory_limit != 0 ? memory_limit : available_memory();
+}
+
+/// Bytes as "1.2 GB", for the messages that say what a run needs and what there is.
+std::string gigabytes(std::size_t bytes);
 
 /// `a` resized to n (new elements zero), the storage of the new elements made present by up
 /// to `threads` threads first.
