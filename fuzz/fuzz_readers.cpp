@@ -93,6 +93,11 @@ void triangles(std::string_view data, const char* name, int first_index) {
   const ridt::CheckResult verdict = ridt::check(points, tris);
   if (verdict.valid != (verdict.problems == 0) || verdict.message.empty())
     finding("the validator's verdict does not add up: " + verdict.message);
+  // refine_mesh takes them as a mesh (flipped to constrained Delaunay) or refuses them by name.
+  try {
+    const ridt::ConstrainedTriangulation r = ridt::refine_mesh(points, tris, {}, {});
+    if (r.size() != tris.size() / 3 || !r.steiner.empty()) finding("refine_mesh with no bound changed the count");
+  } catch (const ridt::InputError&) {}
 }
 
 // Its six-node triangles: a node an edge (Euler's count), each the rounded middle of its ends,
@@ -157,6 +162,25 @@ ridt::Quality quality_for(std::string_view data, const io::Pslg& g) {
   return q;
 }
 
+// The carved triangulation refined afterwards (refine_mesh, Triangle's -r) to the same quality,
+// its triangles alternately bounded to half the area: the validator accepts it, its segments as
+// the chains of the carved one's edges.
+void refine_again(const io::Pslg& g, const ridt::ConstrainedTriangulation& carved, const ridt::Quality& q) {
+  if (carved.size() == 0) return;
+  std::vector<Point> all = g.points;
+  all.insert(all.end(), carved.steiner.begin(), carved.steiner.end());
+  std::vector<double> bounds(carved.size(), 0.0);
+  for (std::size_t k = 0; k < bounds.size() && q.max_area > 0; k += 2) bounds[k] = q.max_area / 2;
+  const ridt::ConstrainedTriangulation r = ridt::refine_mesh(all, carved.triangles, carved.edges, q, bounds);
+  if (!r.warning.empty() || r.steiner.size() >= 5000) return;
+  io::Pslg as_given;
+  as_given.points = all;
+  as_given.segments = carved.edges;
+  ridt::Quality asked = q;
+  if (!q.split_boundary) asked.min_angle = asked.max_area = 0;
+  validate(as_given, r, {}, asked);
+}
+
 // A .poly: either IoError, or finite points and holes, segments between them, and then a
 // constrained triangulation (crossings split) and a quality mesh (quality_for: at most 5000
 // points added, its regions too) that the exact validator accepts, with the bounds asked where
@@ -191,6 +215,7 @@ void graph(std::string_view data) {
     ridt::Quality asked = q;
     if (!q.split_boundary) asked.min_angle = asked.max_area = 0;  // -Y: a bad triangle may have to stay
     if (meshed.steiner.size() < 5000 + meshed.crossings && meshed.warning.empty()) validate(g, meshed, domain, asked);
+    refine_again(g, carved, q);
   } catch (const ridt::InputError&) {}
 }
 

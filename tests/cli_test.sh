@@ -462,6 +462,27 @@ expect 2 "mesh YY refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --swi
 stderr_has "'YY'"; absent "$dir/q3.ele"
 expect 0 "mesh conforming" -- "$ridt" mesh "$dir/l.poly" -o "$dir/d.ele" --switches pcD
 expect 0 "the conforming mesh is Delaunay" -- "$ridt" check "$dir/d.node" "$dir/d.ele"
+# Triangle's -r: a mesh refined, from its .ele and .node, its .edge's segments kept (OUT.edge: the
+# holed square's inner segments too), each triangle to its own bound from its .area (-a, no
+# number): the first triangle's, tight, the rest none. ridt check validates it against the
+# first mesh's segments and the global bound asked.
+expect 0 "refine a mesh (-r)" -- "$ridt" mesh "$dir/q.ele" -o "$dir/r.ele" --switches rq30a1
+[ "$(head -1 "$dir/r.node" | cut -d' ' -f1)" -gt "$(head -1 "$dir/q.node" | cut -d' ' -f1)" ] && pass || fail "-r added no points"
+expect 0 "check the refined mesh" -- "$ridt" check "$dir/r.node" "$dir/r.ele" --poly "$dir/sq.poly" --edges "$dir/r.edge" --min-angle 30 --max-area 1
+qn=$(head -1 "$dir/q.ele" | cut -d' ' -f1)
+{ echo "$qn"; echo "1 0.01"; for i in $(seq 2 "$qn"); do echo "$i -1"; done; } >"$dir/q.area"
+expect 0 "refine with an .area file" -- "$ridt" mesh "$dir/q.ele" -o "$dir/ra.ele" --switches rq30a
+[ "$(head -1 "$dir/ra.ele" | cut -d' ' -f1)" -gt "$(head -1 "$dir/r.ele" | cut -d' ' -f1)" ] && pass || fail "the .area's bound refined nothing"
+expect 0 "check it" -- "$ridt" check "$dir/ra.node" "$dir/ra.ele" --poly "$dir/sq.poly" --edges "$dir/ra.edge" --min-angle 30
+printf '2\n1 0.01\n' >"$dir/q.area"
+expect 2 "an .area of the wrong size" -- "$ridt" mesh "$dir/q.ele" -o "$dir/rb.ele" --switches rqa
+stderr_has "the mesh has"; absent "$dir/rb.ele"
+printf '2 2 0 0\n1 0 0\n2 1 0\n' >"$dir/cw.node"
+printf '1 3 0\n1 1 2 1\n' >"$dir/cw.ele"
+expect 2 "refine a folded mesh" -- "$ridt" mesh "$dir/cw.ele" -o "$dir/rc.ele"
+stderr_has "clockwise"; absent "$dir/rc.ele"
+expect 2 "-r of a .poly" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/rd.ele" --switches rq
+stderr_has "give its .ele"
 expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30
 [ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"

@@ -17,6 +17,11 @@ class RefinementWarning(RuntimeWarning):
     the mesh is a valid constrained triangulation, and ``check()`` then tests no bounds."""
 
 
+def _check_steiner(max_steiner: Any) -> None:
+    if isinstance(max_steiner, bool) or int(max_steiner) != max_steiner or max_steiner < 0:
+        raise ValueError(f"max_steiner must be a whole number >= 0 (0: no limit), got {max_steiner!r}")
+
+
 class ConstrainedDelaunay:
     """The constrained Delaunay triangulation of `points` with `segments`, or a quality mesh of
     it, in scipy's style.
@@ -95,18 +100,78 @@ class ConstrainedDelaunay:
         zones = np.zeros((0, 4)) if regions is None or np.size(regions) == 0 else np.asarray(regions, dtype=float)
         if zones.ndim != 2 or zones.shape[1] != 4:
             raise ValueError(f"regions must have shape (nregions, 4): x, y, attribute, max_area; got {zones.shape}")
-        if isinstance(max_steiner, bool) or int(max_steiner) != max_steiner or max_steiner < 0:
-            raise ValueError(f"max_steiner must be a whole number >= 0 (0: no limit), got {max_steiner!r}")
+        _check_steiner(max_steiner)
         method = _api._choice(method, "method", _api.METHODS)
-        tri, edges, added, crossings, attributes = _core.triangulate_constrained(
+        result = _core.triangulate_constrained(
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
             bool(conforming), int(max_steiner))
+        self._take(pts, segs, seeds, result, min_angle, max_area)
+
+    @classmethod
+    def from_mesh(cls, points: Any, simplices: Any, segments: Any = None, *, min_angle: float = 0.0,
+                  max_area: float = 0.0, triangle_max_area: Any = None, triangle_attributes: Any = None,
+                  split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
+                  threads: int = 1) -> "ConstrainedDelaunay":
+        """A mesh already made, refined (Triangle's ``-r``; ridt.refine_mesh): `simplices`
+        (counter-clockwise rows of three point indices) cover the domain, whose boundary and
+        `segments` (each an edge of the mesh) stay fixed. The mesh is first made constrained
+        Delaunay by edge flips (one that is, as this class and Triangle make, has none to make),
+        then refined to `min_angle` and `max_area` and, where `triangle_max_area` is given (one
+        a triangle, <= 0 none; Triangle's ``.area``), each triangle to the bound of the given
+        triangle that holds its centroid; ``attributes`` are `triangle_attributes` (one a given
+        triangle) by the same rule. Every point keeps its index; ``added`` are the points
+        refinement added. ValueError for a triangle clockwise or without area, triangles that
+        overlap, a segment that is no edge, or per-triangle values not one a triangle."""
+        pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay.from_mesh")
+        tris = np.asarray(simplices)
+        if tris.ndim != 2 or tris.shape[1] != 3 or (tris.size and not np.issubdtype(tris.dtype, np.integer)):
+            raise ValueError(f"simplices must be an (nsimplex, 3) array of point indices, got shape {tris.shape}")
+        if tris.size and (tris.min() < 0 or tris.max() >= len(pts)):
+            raise ValueError(f"simplices refer to points outside 0..{len(pts) - 1}")
+        segs = _api.as_segments(np.zeros((0, 2), dtype=np.intc) if segments is None else segments)
+        if segs.size and segs.max() >= len(pts):
+            raise ValueError(f"segments refer to points outside 0..{len(pts) - 1}")
+        _check_steiner(max_steiner)
+
+        def per_triangle(values: Any, what: str) -> np.ndarray:
+            if values is None:
+                return np.zeros(0)
+            v = np.asarray(values, dtype=float).reshape(-1)
+            if len(v) != len(tris):
+                raise ValueError(f"{what} has {len(v)} values for {len(tris)} triangles")
+            return np.ascontiguousarray(v)
+
+        result = _core.refine_mesh(
+            pts, np.ascontiguousarray(tris, dtype=np.uint32), segs,
+            per_triangle(triangle_max_area, "triangle_max_area"), per_triangle(triangle_attributes,
+                                                                               "triangle_attributes"),
+            _api.thread_count(threads), float(min_angle), float(max_area), bool(split_boundary), bool(conforming),
+            int(max_steiner))
+        self = cls.__new__(cls)
+        self._take(pts, segs, np.zeros((0, 2)), result, min_angle, max_area if triangle_max_area is None else 0.0)
+        return self
+
+    def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,
+               split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
+               threads: int = 1) -> "ConstrainedDelaunay":
+        """This mesh refined further (``from_mesh`` on its points, simplices and edges; its
+        attributes carried): a new ConstrainedDelaunay. `triangle_max_area`: one bound a triangle
+        of this mesh, for adaptive refinement."""
+        return ConstrainedDelaunay.from_mesh(
+            self._points, self.simplices, self.edges, min_angle=min_angle, max_area=max_area,
+            triangle_max_area=triangle_max_area, triangle_attributes=self.attributes if len(self.attributes) else None,
+            split_boundary=split_boundary, conforming=conforming, max_steiner=max_steiner, threads=threads)
+
+    def _take(self, pts: np.ndarray, segs: np.ndarray, seeds: np.ndarray, result: tuple, min_angle: float,
+              max_area: float) -> None:
+        """The fields from the library's result; its warning as a Python warning."""
+        tri, edges, added, crossings, attributes = result
         self._tri = tri
         if tri.warning and len(tri.triangles) == 0:  # too few distinct points, or all collinear
-            warnings.warn(f"ridt: {tri.warning}: the triangulation is empty", DegenerateInputWarning, stacklevel=2)
+            warnings.warn(f"ridt: {tri.warning}: the triangulation is empty", DegenerateInputWarning, stacklevel=3)
         elif tri.warning:  # refinement stopped early (max_steiner, or the memory left): the bounds are not kept
-            warnings.warn(f"ridt: {tri.warning}", RefinementWarning, stacklevel=2)
+            warnings.warn(f"ridt: {tri.warning}", RefinementWarning, stacklevel=3)
             min_angle, max_area = 0.0, 0.0
         self.ninput = int(pts.shape[0])
         self._points = np.concatenate([pts, added]) if len(added) else pts

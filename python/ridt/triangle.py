@@ -16,7 +16,10 @@ of every edge, after the vertices; each triangle its corners, then the nodes of 
 across from them), ``O`` (the holes ignored), ``z`` (indices from 0: always so here),
 ``Q``/``V`` (quiet, verbose) and ``i``, ``F``, ``l``, ``X``, ``I`` (Triangle's choice of
 algorithm, its exact arithmetic off, its file names: the exact result does not depend on them),
-these last ignored. The others (``r``, ``v``, ...) are refused with ValueError.
+these last ignored; ``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
+with ``p`` its 'segments', kept; with ``a`` and no number each triangle to its
+'triangle_max_area'; its 'triangle_attributes' carried). The others (``v``, ...) are refused
+with ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
 ``a`` ask). Every triangle is counter-clockwise; indices are 0-based; the points added follow the
 input's in 'vertices'.
@@ -38,7 +41,7 @@ from ._constrained import ConstrainedDelaunay
 from ._delaunay import DegenerateInputWarning, hull_edges
 from ._voronoi import ray_directions
 
-_TAKEN = set("pqaAcDYSenozOQViFlXI")
+_TAKEN = set("prqaAcDYSenozOQViFlXI")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
@@ -50,7 +53,7 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
     while i < len(opts):
         c = opts[i]
         if c not in _TAKEN:
-            raise ValueError(f"switch '{c}' is not supported (ridt takes p, q, a, A, c, D, Y, S, e, n, o2, O, z, Q, V; "
+            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, S, e, n, o2, O, z, Q, V; "
                              "i, F, l, X, I are ignored)")
         if c == "o" and opts[i + 1:i + 2] != "2":
             raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
@@ -98,13 +101,14 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     pslg = "p" in flags
     segments = np.asarray(tri.get("segments", np.zeros((0, 2), dtype=np.intc))) if pslg else np.zeros((0, 2))
     holes = tri.get("holes") if pslg and "O" not in flags else None
-    regions = np.asarray(tri.get("regions", np.zeros((0, 4))), dtype=float).reshape(-1, 4)
-    if not regional:
-        regions = np.concatenate([regions[:, :3], np.zeros((len(regions), 1))], axis=1)
-    cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
-                              holes=holes, convex_hull="c" in flags or not pslg, regions=regions,
-                              min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
-                              conforming="D" in flags, max_steiner=max(steiner, 0))
+    if "r" in flags:
+        cdt = _refined(tri, pts, segments, flags, angle, area, regional, steiner)
+        holes = None
+    else:
+        cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
+                                  holes=holes, convex_hull="c" in flags or not pslg, regions=_regions(tri, regional),
+                                  min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
+                                  conforming="D" in flags, max_steiner=max(steiner, 0))
     out: Dict[str, np.ndarray] = {"vertices": cdt.points.copy(), "triangles": cdt.simplices.copy()}
     if "vertex_attributes" in tri:
         out["vertex_attributes"] = _vertex_attributes(tri["vertex_attributes"], pts, cdt)
@@ -124,7 +128,7 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
         out["segment_markers"] = np.where(pieces != 0, pieces, on_boundary).astype(np.intc).reshape(-1, 1)
         if holes is not None:
             out["holes"] = np.asarray(holes, dtype=float).reshape(-1, 2)
-    if "A" in flags and len(cdt.attributes):
+    if ("A" in flags or "r" in flags) and len(cdt.attributes):
         out["triangle_attributes"] = cdt.attributes.reshape(-1, 1).copy()
     if "e" in flags:
         out["edges"], out["edge_markers"] = _edges(cdt, boundary, pieces)
@@ -133,6 +137,36 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     if "o" in flags:
         _six_nodes(out, cdt, boundary, pieces)
     return out
+
+
+def _regions(tri: Dict[str, Any], regional: bool) -> np.ndarray:
+    """tri's 'regions' (x, y, attribute, max_area), their bounds dropped unless 'a' asks for them."""
+    regions = np.asarray(tri.get("regions", np.zeros((0, 4))), dtype=float).reshape(-1, 4)
+    return regions if regional else np.concatenate([regions[:, :3], np.zeros((len(regions), 1))], axis=1)
+
+
+def _refined(tri: Dict[str, Any], pts: np.ndarray, segments: np.ndarray, flags: set, angle: float, area: float,
+             regional: bool, steiner: int) -> ConstrainedDelaunay:
+    """'r': the mesh in tri's 'triangles' refined (ConstrainedDelaunay.from_mesh), its boundary
+    and, with 'p', tri's 'segments' kept; with 'a' and no number, each triangle to its
+    'triangle_max_area'; its 'triangle_attributes' (the first column) carried."""
+    if "triangles" not in tri:
+        raise ValueError("switch 'r' refines a mesh: tri needs 'triangles'")
+    if "c" in flags:
+        raise ValueError("switch 'c' does not apply with 'r': a mesh refined keeps its own triangles' domain")
+    bounds = None
+    if regional:
+        if "triangle_max_area" not in tri:
+            raise ValueError("switches 'r' and 'a' with no number bound each triangle: tri needs 'triangle_max_area'")
+        bounds = np.asarray(tri["triangle_max_area"], dtype=float).reshape(-1)
+    attributes = tri.get("triangle_attributes")
+    if attributes is not None:
+        attributes = np.asarray(attributes, dtype=float)
+        attributes = attributes.reshape(len(attributes), -1)[:, 0] if attributes.size else None
+    return ConstrainedDelaunay.from_mesh(
+        pts, np.asarray(tri["triangles"]).reshape(-1, 3), segments.reshape(-1, 2) if segments.size else None,
+        min_angle=max(angle, 0.0), max_area=area, triangle_max_area=bounds, triangle_attributes=attributes,
+        split_boundary="Y" not in flags, conforming="D" in flags, max_steiner=max(steiner, 0))
 
 
 def _six_nodes(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, boundary: np.ndarray, pieces: np.ndarray) -> None:

@@ -213,8 +213,30 @@ void bind_incremental(py::module_& m) {
         py::arg("progress"), py::arg("furthest_site") = false, py::arg("memory_limit") = 0);
 }
 
-// The constrained Delaunay triangulation or quality mesh: (its triangulation, its segments'
-// edges, the points it added, how many of them are crossings, each triangle's attribute).
+ridt::Quality quality(double min_angle, double max_area, bool split_boundary, bool conforming,
+                      std::size_t max_steiner) {
+  return {.min_angle = min_angle,
+          .max_area = max_area,
+          .split_boundary = split_boundary,
+          .max_steiner = max_steiner,
+          .conforming = conforming};
+}
+
+// A constrained triangulation as Python takes it: (its triangulation, its segments' edges, the
+// points it added, how many of them are crossings, each triangle's attribute).
+py::tuple constrained_tuple(ridt::ConstrainedTriangulation c) {
+  const auto pieces = static_cast<py::ssize_t>(c.edges.size() / 2);
+  auto edges = adopt(std::move(c.edges), {pieces, py::ssize_t{2}});
+  py::array_t<double> added({static_cast<py::ssize_t>(c.steiner.size()), py::ssize_t{2}});
+  std::copy_n(&c.steiner.data()->x, 2 * c.steiner.size(), added.mutable_data());
+  py::array_t<double> attributes(static_cast<py::ssize_t>(c.attributes.size()));
+  std::copy(c.attributes.begin(), c.attributes.end(), attributes.mutable_data());
+  const std::size_t crossings = c.crossings;
+  return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges, added, crossings,
+                        attributes);
+}
+
+// The constrained Delaunay triangulation or quality mesh.
 void bind_constrained(py::module_& m) {
   m.def(
       "triangulate_constrained",
@@ -238,30 +260,45 @@ void bind_constrained(py::module_& m) {
           const double* v = regions.data() + r;
           domain.regions.push_back({{v[0], v[1]}, v[2], v[3]});
         }
-        ridt::Quality q;
-        q.min_angle = min_angle;
-        q.max_area = max_area;
-        q.split_boundary = split_boundary;
-        q.conforming = conforming;
-        q.max_steiner = max_steiner;
+        const ridt::Quality q = quality(min_angle, max_area, split_boundary, conforming, max_steiner);
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
           c = ridt::triangulate_constrained(pts, segs, o, domain, q);
         }
-        const auto pieces = static_cast<py::ssize_t>(c.edges.size() / 2);
-        auto edges = adopt(std::move(c.edges), {pieces, py::ssize_t{2}});
-        py::array_t<double> added({static_cast<py::ssize_t>(c.steiner.size()), py::ssize_t{2}});
-        std::copy_n(&c.steiner.data()->x, 2 * c.steiner.size(), added.mutable_data());
-        py::array_t<double> attributes(static_cast<py::ssize_t>(c.attributes.size()));
-        std::copy(c.attributes.begin(), c.attributes.end(), attributes.mutable_data());
-        const std::size_t crossings = c.crossings;
-        return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges, added,
-                              crossings, attributes);
+        return constrained_tuple(std::move(c));
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
       py::arg("threads"), py::arg("seed"), py::arg("canonical"), py::arg("regions"), py::arg("min_angle"),
       py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"), py::arg("max_steiner"));
+}
+
+// A mesh already made, refined (ridt::refine_mesh), as triangulate_constrained's tuple.
+void bind_refine_mesh(py::module_& m) {
+  m.def(
+      "refine_mesh",
+      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
+         const py::array_t<std::uint32_t, py::array::c_style>& segments,
+         const py::array_t<double, py::array::c_style>& max_areas,
+         const py::array_t<double, py::array::c_style>& attributes, unsigned threads, double min_angle, double max_area,
+         bool split_boundary, bool conforming, std::size_t max_steiner) {
+        ridt::Options o;
+        o.threads = threads;
+        o.canonical_order = true;
+        const auto pts = as_points(points, "points");
+        auto span_of = [](const auto& a) { return std::span(a.data(), static_cast<std::size_t>(a.size())); };
+        const ridt::Quality q = quality(min_angle, max_area, split_boundary, conforming, max_steiner);
+        ridt::ConstrainedTriangulation c;
+        {
+          py::gil_scoped_release nogil;
+          c = ridt::refine_mesh(pts, span_of(triangles), span_of(segments), q, span_of(max_areas), span_of(attributes),
+                                o);
+        }
+        return constrained_tuple(std::move(c));
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("segments"), py::arg("max_areas"), py::arg("attributes"),
+      py::arg("threads"), py::arg("min_angle"), py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"),
+      py::arg("max_steiner"));
 }
 
 // The validator of constrained triangulations and meshes.
@@ -441,6 +478,7 @@ PYBIND11_MODULE(_core, m) {
   bind_triangulation(m);
   bind_incremental(m);
   bind_constrained(m);
+  bind_refine_mesh(m);
   bind_terrain(m);
   bind_check_mesh(m);
   bind_queries(m);

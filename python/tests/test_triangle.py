@@ -110,9 +110,92 @@ def test_a_steiner_limit():
     assert len(triangle.triangulate(tri, "pq30a0.01S100000")["vertices"]) > len(SQUARE) + 10
 
 
+def areas(t):
+    p = t["vertices"][t["triangles"]]
+    return 0.5 * ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+
+
+def holder(points, triangles, queries):
+    """For each query, a triangle of the mesh whose closure holds it (by signs; the meshes here
+    are small), or -1."""
+    p = points[triangles]
+    out = np.full(len(queries), -1)
+    for k in range(len(triangles)):
+        a, b, c = p[k]
+        sides = [(v[0] - u[0]) * (queries[:, 1] - u[1]) - (v[1] - u[1]) * (queries[:, 0] - u[0])
+                 for u, v in ((a, b), (b, c), (c, a))]
+        inside = (sides[0] >= 0) & (sides[1] >= 0) & (sides[2] >= 0) & (out < 0)
+        out[inside] = k
+    return out
+
+
+def test_refining_a_mesh_each_triangle_to_its_own_bound():
+    # Triangle's -r with -a and no number: the mesh's 'triangle_max_area', one a triangle. A
+    # triangle of the result takes the bound of the given one that holds its centroid.
+    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4)),
+           "holes": [[5, 5]], "regions": [[1, 1, 3.5, 0]]}
+    first = triangle.triangulate(tri, "pq30a4A")
+    bounds = np.where(np.arange(len(first["triangles"])) % 3 == 0, 0.05, -1.0)
+    first["triangle_max_area"] = bounds
+    t = triangle.triangulate(first, "rpq30a")
+    assert t["vertices"][:len(first["vertices"])].tolist() == first["vertices"].tolist()
+    assert abs(areas(t).sum() - 96) < 1e-9 and (areas(t) > 0).all()
+    assert smallest_angle(t) >= 30 - 1e-9
+    assert (t["triangle_attributes"] == 3.5).all()  # carried from the mesh's, with no 'A'
+    centroids = t["vertices"][t["triangles"]].mean(axis=1)
+    given = holder(first["vertices"], first["triangles"], centroids)
+    assert (given >= 0).all()
+    tight = bounds[given] > 0
+    assert tight.sum() > 100 and (areas(t)[tight] <= 0.05).all()
+    assert areas(t)[~tight].max() > 0.05  # the others left coarser
+    # The inner segments stay, as chains of edges; without 'p' only the boundary is kept (here
+    # the same: every segment is on it).
+    cdt = ridt.ConstrainedDelaunay.from_mesh(first["vertices"], first["triangles"], first["segments"],
+                                             min_angle=30, triangle_max_area=bounds)
+    assert cdt.check()[0] and triangle_set(cdt.simplices) == triangle_set(t["triangles"])
+    with pytest.raises(ValueError, match="'triangle_max_area'"):
+        triangle.triangulate({k: v for k, v in first.items() if k != "triangle_max_area"}, "rpa")
+    with pytest.raises(ValueError, match="needs 'triangles'"):
+        triangle.triangulate(tri, "rp")
+
+
+def test_refining_a_mesh_that_is_not_delaunay_flips_it_to_delaunay():
+    # Points in convex position, triangulated as a fan from one of them: flipped to Delaunay.
+    rng = np.random.default_rng(5)
+    angles = np.sort(rng.uniform(0, 2 * np.pi, 40))
+    pts = np.c_[np.cos(angles), 0.5 * np.sin(angles)]
+    fan = np.array([[0, k, k + 1] for k in range(1, 39)])
+    t = triangle.triangulate({"vertices": pts, "triangles": fan}, "r")
+    assert triangle_set(t["triangles"]) == triangle_set(scipy.spatial.Delaunay(pts).simplices)
+    assert ridt.check(t["vertices"], t["triangles"])[0]
+
+
+def test_refining_bad_meshes_is_refused():
+    square = np.array(SQUARE, dtype=float)
+    with pytest.raises(ValueError, match="clockwise"):
+        triangle.triangulate({"vertices": square, "triangles": [[0, 2, 1]]}, "r")
+    with pytest.raises(ValueError, match="overlap"):
+        triangle.triangulate({"vertices": square, "triangles": [[0, 1, 2], [0, 1, 3]]}, "r")
+    with pytest.raises(ValueError, match="not an edge"):
+        triangle.triangulate({"vertices": square, "triangles": [[0, 1, 2]], "segments": [[0, 3]]}, "rp")
+    with pytest.raises(ValueError, match="'c' does not apply"):
+        triangle.triangulate({"vertices": square, "triangles": [[0, 1, 2]]}, "rc")
+    with pytest.raises(ValueError, match="3 values for 1 triangles"):
+        ridt.ConstrainedDelaunay.from_mesh(square, [[0, 1, 2]], triangle_max_area=[1, 2, 3])
+    with pytest.raises(ValueError, match="outside"):
+        ridt.ConstrainedDelaunay.from_mesh(square, [[0, 1, 7]])
+
+
+def test_a_mesh_refined_again_from_the_class():
+    cdt = ridt.ConstrainedDelaunay(np.array(SQUARE + HOLE, dtype=float), np.array(loop(0) + loop(4)), holes=[[5, 5]],
+                                   min_angle=30, max_area=4)
+    finer = cdt.refine(min_angle=30, max_area=0.5)
+    assert finer.check()[0] and finer.nsimplex > cdt.nsimplex
+    assert finer.points[:cdt.npoints].tolist() == cdt.points.tolist()
+    assert finer.ninput == cdt.npoints and len(finer.added) == finer.npoints - cdt.npoints
+
+
 def test_refused():
-    with pytest.raises(ValueError, match="'r' is not supported"):
-        triangle.triangulate({"vertices": SQUARE}, "pr")
     with pytest.raises(ValueError, match="'S' needs"):
         triangle.triangulate({"vertices": SQUARE}, "pS")
     with pytest.raises(ValueError, match="'u' is not supported"):

@@ -11,9 +11,11 @@
 
 #include "constrained/cdt.hpp"
 #include "constrained/domain.hpp"
+#include "constrained/given_mesh.hpp"
 #include "constrained/refine.hpp"
 #include "constrained/segments.hpp"
 #include "finish/finish.hpp"
+#include "order/order.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/constrained.hpp"
 #include "runtime/memory.hpp"
@@ -165,6 +167,78 @@ void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain
   }
 }
 
+// Refines m as `quality` and the domain's regions ask, from the triangulation made: vertices
+// below `corners` are the input's and the crossings.
+void refine(detail::Cdt& m, ConstrainedTriangulation& out, const Options& options, const Quality& quality,
+            const Domain& domain, VertexId corners, int scale, const detail::GivenMesh* given = nullptr) {
+  const auto first = static_cast<VertexId>(m.pts.size());
+  const std::vector<VertexId> pinched = detail::split_pinches(m);  // walks round a vertex see all
+  detail::Refinement r{quality.min_angle,
+                       std::ldexp(quality.max_area, 2 * scale),
+                       {},
+                       quality.split_boundary,
+                       quality.conforming,
+                       quality.max_steiner,
+                       static_cast<VertexId>(corners + pinched.size()),
+                       room_left(options, m),
+                       given};
+  for (const Region& g : domain.regions)
+    r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
+  if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
+  detail::merge_pinches(m, first, pinched);
+}
+
+void check_mesh_input(std::span<const Point> points, std::span<const VertexId> triangles,
+                      std::span<const double> max_areas, std::span<const double> attributes) {
+  if (triangles.size() % 3 != 0)
+    throw InputError("a triangle list needs a size that is a multiple of 3 (got " + std::to_string(triangles.size()) +
+                     ")");
+  if (triangles.empty()) throw InputError("a mesh to refine needs at least one triangle");
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    if (triangles[k] >= points.size())
+      throw InputError("triangle " + std::to_string(k / 3) + " refers to point " + std::to_string(triangles[k]) +
+                       " of " + std::to_string(points.size()));
+  const std::size_t count = triangles.size() / 3;
+  for (const auto& [values, what] : {std::pair{max_areas, "area bound"}, std::pair{attributes, "attribute"}}) {
+    if (!values.empty() && values.size() != count)
+      throw InputError(std::string("a mesh of ") + std::to_string(count) + " triangles needs as many of each " + what +
+                       " (got " + std::to_string(values.size()) + ")");
+    for (std::size_t t = 0; t < values.size(); ++t)
+      if (!std::isfinite(values[t]))
+        throw InputError(std::string("triangle ") + std::to_string(t) + "'s " + what + " is not finite");
+  }
+}
+
+// A given mesh's domain: its segments and its boundary fixed, the mesh made constrained
+// Delaunay by Lawson's flips (refinement needs it), and, with bounds or attributes, a region a
+// given triangle (m.region numbers them, each triangle's found again by its centroid).
+Domain mark_mesh(detail::Cdt& m, std::span<const VertexId> segments, std::span<const double> max_areas,
+                 std::span<const double> attributes) {
+  for (std::size_t k = 0; k < segments.size(); k += 2) {
+    if (segments[k] == segments[k + 1]) continue;
+    const std::uint32_t s = m.find_edge(segments[k], segments[k + 1]);
+    if (s == detail::Cdt::kNone)
+      throw InputError("segment " + std::to_string(k / 2) + " (" + std::to_string(segments[k]) + ", " +
+                       std::to_string(segments[k + 1]) + ") is not an edge of the mesh");
+    m.set_fixed(s / 3, static_cast<int>(s % 3), true);
+  }
+  for (std::size_t s = 0; s < m.nbrs.size(); ++s)
+    if (m.nbrs[s] < 0) m.fixed[s] = 1;
+  Domain domain;
+  domain.convex_hull = false;
+  if (!max_areas.empty() || !attributes.empty()) {
+    m.region.resize(m.size());
+    for (std::size_t t = 0; t < m.size(); ++t) {
+      m.region[t] = static_cast<std::int32_t>(t);
+      domain.regions.push_back({{}, attributes.empty() ? 0.0 : attributes[t], max_areas.empty() ? 0.0 : max_areas[t]});
+    }
+  }
+  std::vector<std::uint32_t> all(m.tris.size());
+  for (std::uint32_t s = 0; s < all.size(); ++s) all[s] = s;
+  m.restore(std::move(all));
+  return domain;
+}
+
 }  // namespace
 
 ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, std::span<const VertexId> segments,
@@ -204,23 +278,40 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   for (Point& h : holes) h = scaled(h, scale);
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
   const bool carved = detail::carve(m, holes, regions, domain.convex_hull, refined);
-  if (refined) {
-    const auto first = static_cast<VertexId>(m.pts.size());
-    const std::vector<VertexId> pinched = detail::split_pinches(m);  // walks round a vertex see all
-    detail::Refinement r{quality.min_angle,
-                         std::ldexp(quality.max_area, 2 * scale),
-                         {},
-                         quality.split_boundary,
-                         quality.conforming,
-                         quality.max_steiner,
-                         static_cast<VertexId>(points.size() + out.crossings + pinched.size()),
-                         room_left(options, m)};
-    for (const Region& g : domain.regions)
-      r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
-    if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
-    detail::merge_pinches(m, first, pinched);
-  }
+  if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size() + out.crossings), scale);
   collect(m, out, domain, points.size(), scale, carved || refined);
+  if (options.canonical_order) canonical(out, options);
+  if (!options.neighbors) out.neighbors = {};
+  return out;
+}
+
+ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<const VertexId> triangles,
+                                     std::span<const VertexId> segments, const Quality& quality,
+                                     std::span<const double> max_areas, std::span<const double> attributes,
+                                     const Options& options) {
+  check_input(points, segments, {}, quality);
+  check_mesh_input(points, triangles, max_areas, attributes);
+  const detail::Extent extent = detail::checked_extent(points, 1);
+  check_refinable(extent);
+  check_memory(points.size(), segments.size() / 2, options);
+  const int scale = detail::exact_scale_exponent(extent);
+  std::vector<Point> pts(points.begin(), points.end());
+  if (scale != 0)
+    for (Point& p : pts) p = scaled(p, scale);
+  ConstrainedTriangulation out;
+  out.triangles.assign(triangles.begin(), triangles.end());
+  out.neighbors = detail::neighbours_of(pts, out.triangles);
+  out.stats.points = out.stats.distinct = points.size();
+  detail::Cdt m(std::move(pts), out);
+  detail::check_fans(m);
+  const detail::GivenMesh given(m.pts, m.tris, m.nbrs);
+  const Domain domain = mark_mesh(m, segments, max_areas, attributes);
+  if (quality.enabled() || std::any_of(max_areas.begin(), max_areas.end(), [](double a) { return a > 0; }))
+    refine(m, out, options, quality, domain, static_cast<VertexId>(points.size()), scale, &given);
+  if (!m.region.empty())
+    for (std::uint32_t t = 0; t < m.size(); ++t) m.region[t] = given.region_of(m, t);
+  collect(m, out, domain, points.size(), scale, true);
+  if (attributes.empty()) out.attributes.clear();
   if (options.canonical_order) canonical(out, options);
   if (!options.neighbors) out.neighbors = {};
   return out;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "constrained/cdt.hpp"
+#include "constrained/given_mesh.hpp"
 #include "ridt/constrained.hpp"
 
 namespace ridt::detail {
@@ -19,6 +20,9 @@ struct Refinement {
   std::size_t max_steiner = 0;
   VertexId corners = 0;  ///< vertices below this id are corners (input points and crossings)
   std::size_t memory = 0;  ///< the bytes refinement may take; 0: what the process has left
+  /// refine_mesh's given mesh: where set, m.region numbers its triangles, and each triangle's
+  /// region is located again (by its centroid) before its area bound is read.
+  const GivenMesh* given = nullptr;
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's

@@ -220,6 +220,7 @@ class Refiner {
 
   double area_bound(std::uint32_t t) const {
     double bound = r_.max_area;
+    if (r_.given != nullptr && !m_.region.empty()) m_.region[t] = r_.given->region_of(m_, t);
     if (!m_.region.empty() && m_.region[t] >= 0) {
       const double own = r_.region_area[static_cast<std::size_t>(m_.region[t])];
       if (own > 0) bound = bound > 0 ? std::min(bound, own) : own;

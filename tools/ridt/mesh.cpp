@@ -1,6 +1,7 @@
 // ridt mesh INPUT.poly -o OUT.ele [--quality DEG] [--max-area A] [--convex-hull] [--switches pq30a0.1]
 // ...: the constrained Delaunay triangulation or quality mesh of a planar straight-line graph
-// (or of the convex hull of points alone, from a .node),
+// (or of the convex hull of points alone, from a .node; or a mesh already made refined, from a
+// .ele),
 // written as Triangle writes it: OUT.ele, OUT.node (every vertex: the input's in its numbering,
 // then the points added) and OUT.edge (the segments' edges), OUT.neigh with -n.
 #include <algorithm>
@@ -29,7 +30,7 @@ struct Args {
   bool no_steiner = false;  // S0: no refinement at all (crossings are still added)
   bool quality_given = false;  // --quality or q: the library judges the angle, NaN included
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
-       neighbours = false, conforming = false, second_order = false, no_holes = false;
+       neighbours = false, conforming = false, second_order = false, no_holes = false, refine = false;
 };
 
 // The number that follows switch `at` in Triangle's switch string (digits, '.', 'e' and a sign
@@ -58,7 +59,7 @@ double parse_number(const std::string& text, char sw) {
   return v;
 }
 
-// Triangle's switches that ridt takes: p (a .poly: always), q[DEG] (quality, 20 degrees where no
+// Triangle's switches that ridt takes: p (a .poly: always), r (refine the mesh of a .ele), q[DEG] (quality, 20 degrees where no
 // number follows), a[AREA] (an area bound; with no number, the regions' own), A (regional
 // attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added on the boundary), n (.neigh),
 // z (number from 0), S[N] (at most N points added by refinement), o2 (six-node triangles), O (the
@@ -95,8 +96,9 @@ void apply_switches(Args& a) {
       ++i;
     } else if (c == 'Y' && i + 1 < s.size() && s[i + 1] == 'Y') {
       throw InputError("switch 'YY' (no points on any segment) is not supported: 'Y' keeps them off the boundary");
-    } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z' || c == 'O') {
+    } else if (c == 'A' || c == 'c' || c == 'Y' || c == 'n' || c == 'z' || c == 'O' || c == 'r') {
       (c == 'A'       ? a.attributes
+           : c == 'r' ? a.refine
            : c == 'c' ? a.convex_hull
            : c == 'Y' ? a.no_boundary
            : c == 'n' ? a.neighbours
@@ -104,7 +106,7 @@ void apply_switches(Args& a) {
                       : a.zero_based) = true;
     } else if (std::string_view("pQViFlXI").find(c) == std::string_view::npos) {
       throw InputError(std::string("unknown or unsupported switch '") + c +
-                       "' (ridt takes p, q, a, A, c, D, Y, S, n, z, o2, O, Q, V, i, F, l, X, I)");
+                       "' (ridt takes p, r, q, a, A, c, D, Y, S, n, z, o2, O, Q, V, i, F, l, X, I)");
     }
   }
 }
@@ -285,8 +287,54 @@ void write_mesh(const Args& a, const io::Pslg& g, const ConstrainedTriangulation
   io::write_mesh_files(a.output, m, thread_count(a.threads));
 }
 
+// The quality a asks for (none at all with -S0: the crossings, which the graph needs, stay).
+Quality quality_of(const Args& a) {
+  Quality q;
+  q.min_angle = a.quality_given ? a.quality : 0;
+  q.max_area = a.max_area;
+  q.split_boundary = !a.no_boundary;
+  q.conforming = a.conforming;
+  q.max_steiner = a.max_steiner;
+  return a.no_steiner ? Quality{} : q;
+}
+
+// Triangle's -r: IN.ele and IN.node refined, with IN.poly's segments (else IN.edge's, where
+// either is there) kept, and IN.area's bounds with -a and no number.
+int run_refine(const Args& a, const std::vector<std::string>& out, const Options& o) {
+  if (io::extension(a.input) != ".ele")
+    throw InputError("switch 'r' refines a mesh: give its .ele (its .node is read beside it)");
+  refuse_ignored(a.convex_hull, "--convex-hull (c)", "does not apply: a mesh refined keeps its own triangles' domain");
+  const std::string base = a.input.substr(0, a.input.size() - 4);
+  io::Pslg g = io::read_pslg(base + ".node", thread_count(a.threads));
+  std::vector<double> attributes;
+  const std::vector<VertexId> triangles = io::read_elements(a.input, g.first_index, attributes, o.threads);
+  std::vector<std::string> read = {a.input, base + ".node"};
+  if (std::filesystem::exists(base + ".poly")) {
+    const io::Pslg p = io::read_pslg(base + ".poly", thread_count(a.threads));
+    if (p.points.size() != g.points.size())
+      throw InputError(base + ".poly has " + std::to_string(p.points.size()) + " vertices; the mesh has " +
+                       std::to_string(g.points.size()));
+    g.segments = p.segments, g.segment_markers = p.segment_markers;
+    read.push_back(base + ".poly");
+  } else if (std::filesystem::exists(base + ".edge")) {
+    g.segments = io::read_edge_file(base + ".edge", g.points.size(), g.first_index);
+    read.push_back(base + ".edge");
+  }
+  std::vector<double> areas;
+  if (a.region_areas && !a.no_steiner) {
+    areas = io::read_area_file(base + ".area", triangles.size() / 3, g.first_index);
+    read.push_back(base + ".area");
+  }
+  refuse_overwriting(read, out);
+  const ConstrainedTriangulation t = refine_mesh(g.points, triangles, g.segments, quality_of(a), areas, attributes, o);
+  if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
+  write_mesh(a, g, t);
+  return 0;
+}
+
 int run(Args a) {
   apply_switches(a);
+  a.refine = a.refine || io::extension(a.input) == ".ele";
   if (io::extension(a.output) == ".svg") {
     const char* why = "is not drawn: a drawing (.svg) has no neighbours, attributes or numbering; give -o OUT.ele";
     refuse_ignored(a.neighbours, "--neighbours (n)", why);
@@ -295,28 +343,21 @@ int run(Args a) {
     refuse_ignored(a.second_order, "--second-order (o2)", why);
   }
   const std::vector<std::string> out = outputs(a);
-  refuse_overwriting({a.input}, out);
-  const io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
-  refuse_overwriting({g.node_file}, out);
   Options o;
   o.method = parse<Method>(a.method);
   o.threads = a.threads;
   o.canonical_order = true;
+  if (a.refine) return run_refine(a, out, o);
+  refuse_overwriting({a.input}, out);
+  const io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
+  refuse_overwriting({g.node_file}, out);
   Domain domain;
   domain.convex_hull = a.convex_hull || io::extension(a.input) == ".node";  // points alone: their hull
   if (!a.no_holes) domain.holes = g.holes;
   for (const auto& r : g.regions) domain.regions.push_back({{r[0], r[1]}, r[2], a.region_areas ? r[3] : 0});
-  Quality q;
-  q.min_angle = a.quality_given ? a.quality : 0;
-  q.max_area = a.max_area;
-  q.split_boundary = !a.no_boundary;
-  q.conforming = a.conforming;
-  q.max_steiner = a.max_steiner;
-  if (a.no_steiner) {  // Triangle's -S0: nothing refined (the crossings, which the graph needs, stay)
-    q = Quality{};
+  if (a.no_steiner)  // Triangle's -S0: nothing refined
     for (Region& r : domain.regions) r.max_area = 0;
-  }
-  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, q);
+  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, o, domain, quality_of(a));
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
   if (t.crossings > 0)
     std::fprintf(stderr, "ridt: %zu points added where segments cross (the first %zu added points)\n", t.crossings,
@@ -331,16 +372,20 @@ Command add_mesh(CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* mesh = app.add_subcommand(
       "mesh", "the constrained Delaunay triangulation or quality mesh of a .poly file (Triangle's -p, -q, -a)");
-  mesh->add_option("input", a->input,
-                   "a planar straight-line graph: .poly (Triangle's); or points alone, .node, their convex hull meshed "
-                   "(Triangle's input without -p)")
+  mesh->add_option(
+          "input", a->input,
+          "a planar straight-line graph: .poly (Triangle's); or points alone, .node, their convex hull meshed "
+          "(Triangle's input without -p); or a mesh to refine, .ele, with its .node beside it, and its .poly's "
+          "segments (else its .edge's) where there (Triangle's -r)")
       ->required();
   mesh->add_option("-o,--output", a->output, "OUT.ele (OUT.node and OUT.edge are written beside it), or OUT.svg")
       ->required();
   CLI::Option* quality =
       mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
   mesh->add_option("--max-area", a->max_area, "no triangle larger than A (Triangle's -a)");
-  mesh->add_flag("--region-areas", a->region_areas, "the regions' own area bounds (Triangle's -a with no number)");
+  mesh->add_flag("--region-areas", a->region_areas,
+                 "the regions' own area bounds; refining a .ele, each triangle's from its .area file (Triangle's -a "
+                 "with no number)");
   mesh->add_flag("--attributes", a->attributes, "each triangle's regional attribute in OUT.ele (Triangle's -A)");
   mesh->add_flag("--no-boundary-steiner", a->no_boundary, "no points added on the boundary (Triangle's -Y)");
   mesh->add_flag("--convex-hull", a->convex_hull,
@@ -353,7 +398,7 @@ Command add_mesh(CLI::App& app) {
                  "six-node triangles for quadratic elements: a node at the middle of every edge, in OUT.node after "
                  "the vertices (Triangle's -o2)");
   mesh->add_option("--switches", a->switches,
-                   "Triangle's switches: p, q, a, A, c, D, Y, S, n, z, o2, O, Q, V; i, F, l, X and I are "
+                   "Triangle's switches: p, r, q, a, A, c, D, Y, S, n, z, o2, O, Q, V; i, F, l, X and I are "
                    "ignored (the exact result does not depend on them)");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,

@@ -93,6 +93,15 @@ void write_mesh_svg(const std::string& path, std::span<const Point> points, cons
 /// `first_index`, each end one of `points`) as pairs of 0-based indices; throws IoError.
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index);
 
+/// Reads Triangle's .area file ("triangles", then "i max_area" numbered from `first_index`, a
+/// bound of 0 or below meaning none) for a mesh of `triangles`; throws IoError.
+std::vector<double> read_area_file(const std::string& path, std::size_t triangles, int first_index);
+
+/// Reads Triangle's .ele file as read_triangles does, and each triangle's first attribute into
+/// `attributes` (left empty where the file has none).
+std::vector<VertexId> read_elements(const std::string& path, int first_index, std::vector<double>& attributes,
+                                    unsigned threads = 1);
+
 /// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
 /// `first_index`, each with boundary marker 1 (they are segments); formatted on `threads` threads.
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads = 1);

@@ -409,7 +409,11 @@ void write_csv_points(Writer& out, std::span<const Point> points, int first_inde
 
 // Triangle's formats (io_triangle.cpp): .node, .ele, .neigh.
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);
-std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads = 1);
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads);
+/// The same; `attributes`, where not null, takes each triangle's first attribute (none where the
+/// file has none).
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads,
+                               std::vector<double>* attributes);
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 /// Attributes to write beside points: `count` a point, row by row.
 struct NodeAttributes {

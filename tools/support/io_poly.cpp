@@ -253,6 +253,37 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
   return std::move(g.segments);
 }
 
+std::vector<double> read_area_file(const std::string& path, std::size_t triangles, int first_index) {
+  const detail::FileText text(path);
+  const std::vector<detail::Line> lines = detail::split_lines(text.view(), 1);
+  if (lines.empty()) detail::fail_file(path, "no header line \"triangles\"");
+  const std::int64_t count = detail::integer(
+      path, lines[0].number, detail::fields(path, lines[0], 1, 1, "a header \"triangles\"")[0], "number of triangles");
+  if (count != static_cast<std::int64_t>(triangles))
+    detail::fail_line(
+        path, lines[0].number,
+        "the file bounds " + std::to_string(count) + " triangles; the mesh has " + std::to_string(triangles));
+  if (lines.size() != triangles + 1)
+    detail::fail_file(
+        path,
+        "header says " + std::to_string(count) + " triangles but the file has " + std::to_string(lines.size() - 1));
+  std::vector<double> out(triangles);
+  for (std::size_t k = 0; k < triangles; ++k) {
+    const detail::Line& l = lines[k + 1];
+    const auto f = detail::fields(path, l, 2, 2, "\"index max_area\"");
+    if (detail::integer(path, l.number, f[0], "triangle index") != first_index + static_cast<std::int64_t>(k))
+      detail::fail_line(path, l.number, "expected triangle index " + std::to_string(first_index + k));
+    out[k] = detail::coordinate(path, l.number, f[1], [&] { return detail::not_a_number(f[1]); });
+  }
+  return out;
+}
+
+std::vector<VertexId> read_elements(const std::string& path, int first_index, std::vector<double>& attributes,
+                                    unsigned threads) {
+  const detail::FileText text(path);
+  return detail::read_ele(path, text.view(), first_index, threads, &attributes);
+}
+
 void write_mesh_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,
                     std::span<const VertexId> edges) {
   detail::write_svg(path, points, t, edges);

@@ -110,16 +110,23 @@ Point node_point(const std::string& path, const NodeHeader& h, std::size_t k, st
 }
 
 // Triangle k of an .ele file, as node_point reads a point.
+// `attribute`, where not null, takes the triangle's first attribute (0 where it has none).
 void ele_triangle(const std::string& path, const EleHeader& h, std::size_t k, std::size_t line_no,
-                  std::string_view line, std::int64_t& first, int first_index, VertexId* out) {
+                  std::string_view line, std::int64_t& first, int first_index, VertexId* out, double* attribute) {
   Fields f{line, false};
-  std::string_view idx, a, b, c;
+  std::string_view idx, a, b, c, value;
   const auto count_error = [&] {
     return "expected " + std::to_string(h.fields) + " fields \"index a b c" + (h.attrs > 0 ? " attributes" : "") +
         "\", got " + quoted(line);
   };
   if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
-  check_rest(f, 4, h.fields, h.fields, path, line_no, count_error);
+  if (attribute != nullptr && h.attrs > 0) {
+    if (!f.next(value)) fail_line(path, line_no, count_error());
+    *attribute = coordinate(path, line_no, value, [&] { return "attribute " + quoted(value) + " is not a number"; });
+    check_rest(f, 5, h.fields, h.fields, path, line_no, count_error);
+  } else {
+    check_rest(f, 4, h.fields, h.fields, path, line_no, count_error);
+  }
   check_index(path, line_no, integer(path, line_no, idx, "triangle index"), k, first, "triangle");
   out[0] = vertex(path, line_no, a, first_index);
   out[1] = vertex(path, line_no, b, first_index);
@@ -173,15 +180,22 @@ PointFile read_node(const std::string& path, std::string_view text, unsigned thr
 }
 
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads) {
+  return read_ele(path, text, first_index, threads, nullptr);
+}
+
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads,
+                               std::vector<double>* attributes) {
   const std::optional<Head> head = head_line(text);
   if (!head) fail_file(path, "no header line \"triangles 3 [attributes]\"");
   const EleHeader h = ele_header(path, head->line.number, head->line.text);
   const LinePieces lines(head->rest, threads, head->line.number);
   std::vector<VertexId> out(3 * lines.size());
+  if (attributes != nullptr) attributes->assign(h.attrs > 0 ? lines.size() : 0, 0.0);
   std::int64_t first = 0;
   read_records(lines, head->rest, head->line.number, first,
                [&](std::size_t k, std::size_t line_no, std::string_view line, std::int64_t& from) {
-                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k]);
+                 double* attribute = attributes != nullptr && h.attrs > 0 ? &(*attributes)[k] : nullptr;
+                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k], attribute);
                });
   if (lines.size() != static_cast<std::size_t>(h.n))
     fail_file(path,

@@ -1,0 +1,186 @@
+// refine_mesh (Triangle's -r): a mesh already made, refined further. Every result through
+// check_mesh with its fixed edges as the segments; per-triangle area bounds kept by every
+// triangle overlapping theirs; a mesh not Delaunay made so by flips; bad meshes refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ridt/check.hpp"
+#include "ridt/constrained.hpp"
+#include "ridt/generate.hpp"
+
+namespace ridt::test {
+namespace {
+
+std::vector<Point> all_points(const std::vector<Point>& input, const ConstrainedTriangulation& t) {
+  std::vector<Point> all = input;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  return all;
+}
+
+// check_mesh on the refined mesh: its fixed edges are its segments, with the bounds asked.
+void expect_valid(const std::vector<Point>& all, const ConstrainedTriangulation& t, const std::vector<VertexId>& segs,
+                  std::size_t input, double min_angle, double max_area) {
+  MeshSpec spec;
+  spec.edges = t.edges;
+  spec.segments = segs;
+  spec.input_points = input;
+  spec.min_angle = min_angle;
+  spec.max_area = max_area;
+  const CheckResult r = check_mesh(all, t.triangles, spec);
+  EXPECT_TRUE(r.valid) << r.message;
+}
+
+double twice_area(const std::vector<Point>& p, const std::vector<VertexId>& tris, std::size_t k) {
+  const Point &a = p[tris[3 * k]], &b = p[tris[3 * k + 1]], &c = p[tris[3 * k + 2]];
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+double total_area(const std::vector<Point>& p, const std::vector<VertexId>& tris) {
+  double sum = 0;
+  for (std::size_t k = 0; k < tris.size() / 3; ++k) sum += twice_area(p, tris, k) / 2;
+  return sum;
+}
+
+std::set<std::vector<VertexId>> triangle_set(const std::vector<VertexId>& tris) {
+  std::set<std::vector<VertexId>> out;
+  for (std::size_t k = 0; k < tris.size(); k += 3) {
+    std::vector<VertexId> v(tris.begin() + static_cast<std::ptrdiff_t>(k),
+                            tris.begin() + static_cast<std::ptrdiff_t>(k) + 3);
+    std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+    out.insert(v);
+  }
+  return out;
+}
+
+// The coastline meshed coarsely, then refined to 30 degrees and an area: the same bounds as
+// meshing it at once would meet, every input vertex and added one kept.
+TEST(RefineMesh, ACoarseCoastlineMeshRefinedToQuality) {
+  const Pslg g = generate_coastline(2000, 5, 3);
+  Domain d;
+  d.convex_hull = false;
+  d.holes = g.holes;
+  Quality coarse;
+  coarse.min_angle = 20;
+  const ConstrainedTriangulation first = triangulate_constrained(g.points, g.segments, {}, d, coarse);
+  ASSERT_TRUE(first.warning.empty()) << first.warning;
+  const std::vector<Point> pts = all_points(g.points, first);
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = total_area(pts, first.triangles) / 5000;
+  const ConstrainedTriangulation second = refine_mesh(pts, first.triangles, first.edges, q);
+  ASSERT_TRUE(second.warning.empty()) << second.warning;
+  const std::vector<Point> all = all_points(pts, second);
+  expect_valid(all, second, first.edges, pts.size(), 30, q.max_area);
+  EXPECT_GT(second.size(), 5000u);
+  EXPECT_NEAR(total_area(all, second.triangles), total_area(pts, first.triangles),
+              1e-9 * total_area(pts, first.triangles));
+  EXPECT_TRUE(second.attributes.empty());
+  EXPECT_TRUE(second.hull.empty());
+}
+
+// Without bounds a constrained Delaunay mesh comes back as it was (its triangles as a set).
+TEST(RefineMesh, NothingAskedChangesNothing) {
+  const Pslg g = generate_coastline(500, 3, 7);
+  Domain d;
+  d.convex_hull = false;
+  d.holes = g.holes;
+  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, {}, d);
+  const ConstrainedTriangulation again = refine_mesh(g.points, t.triangles, t.edges, {});
+  EXPECT_TRUE(again.steiner.empty());
+  EXPECT_EQ(triangle_set(again.triangles), triangle_set(t.triangles));
+  EXPECT_EQ(again.edges, t.edges);
+}
+
+// A square split along the diagonal that is not Delaunay (the points make a kite): flipped.
+TEST(RefineMesh, AMeshThatIsNotDelaunayIsFlippedToIt) {
+  const std::vector<Point> kite = {{0, 0}, {4, -1}, {8, 0}, {4, 1}};
+  const std::vector<VertexId> long_diagonal = {0, 1, 2, 0, 2, 3};
+  const ConstrainedTriangulation t = refine_mesh(kite, long_diagonal, {}, {});
+  EXPECT_EQ(triangle_set(t.triangles), triangle_set({0, 1, 3, 1, 2, 3}));
+  expect_valid(kite, t, {}, kite.size(), 0, 0);
+  // A segment along the long diagonal keeps it.
+  const std::vector<VertexId> diagonal = {0, 2};
+  const ConstrainedTriangulation kept = refine_mesh(kite, long_diagonal, diagonal, {});
+  EXPECT_EQ(triangle_set(kept.triangles), triangle_set(long_diagonal));
+  expect_valid(kite, kept, diagonal, kite.size(), 0, 0);
+}
+
+// Two triangles of a square, one bound tight, one none: a triangle takes the bound and the
+// attribute of the given triangle that holds its centroid; the tight half is refined to it, the
+// other graded out from the diagonal alone.
+TEST(RefineMesh, EachTriangleToItsOwnAreaBound) {
+  const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<VertexId> tris = {0, 1, 2, 0, 2, 3};  // below the diagonal y = x, then above
+  const std::vector<double> bounds = {0.001, 0}, attributes = {1, 2};
+  const ConstrainedTriangulation t = refine_mesh(square, tris, {}, {}, bounds, attributes);
+  const std::vector<Point> all = all_points(square, t);
+  expect_valid(all, t, {}, square.size(), 0, 0);
+  ASSERT_EQ(t.attributes.size(), t.size());
+  std::size_t below = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point &a = all[t.triangles[3 * k]], &b = all[t.triangles[3 * k + 1]], &c = all[t.triangles[3 * k + 2]];
+    const double x = (a.x + b.x + c.x) / 3, y = (a.y + b.y + c.y) / 3;
+    if (y == x) continue;  // on the diagonal: either
+    EXPECT_EQ(t.attributes[k], y < x ? 1 : 2);
+    if (y < x) {
+      ++below;
+      EXPECT_LE(twice_area(all, t.triangles, k) / 2, 0.001);
+    }
+  }
+  EXPECT_GE(below, 500u);
+  EXPECT_LT(t.size() - below, below / 2);
+}
+
+// Bad meshes: refused by name, before anything is done.
+TEST(RefineMesh, BadMeshesAreRefused) {
+  const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  auto message = [&](const std::vector<VertexId>& tris, const std::vector<VertexId>& segs = {},
+                     const std::vector<double>& bounds = {}) {
+    try {
+      refine_mesh(square, tris, segs, {}, bounds);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message({0, 2, 1}).find("clockwise"), std::string::npos);
+  EXPECT_NE(message({0, 1, 2, 0, 1, 3}).find("overlap"), std::string::npos);
+  EXPECT_NE(message({0, 1, 7}).find("refers to point 7"), std::string::npos);
+  EXPECT_NE(message({0, 1}).find("multiple of 3"), std::string::npos);
+  EXPECT_NE(message({}).find("at least one triangle"), std::string::npos);
+  EXPECT_NE(message({0, 1, 2}, {0, 3}).find("not an edge"), std::string::npos);
+  EXPECT_NE(message({0, 1, 2}, {}, {1, 2}).find("needs as many"), std::string::npos);
+  EXPECT_NE(message({0, 1, 2}, {}, {NAN}).find("not finite"), std::string::npos);
+}
+
+// Seven triangles round a vertex whose outer corners go twice round it: every directed edge
+// once, every triangle counter-clockwise, and yet they cover the plane about it twice.
+TEST(RefineMesh, TrianglesTurningTwiceRoundAVertexAreRefused) {
+  std::vector<Point> p = {{0, 0}};
+  for (int k = 0; k < 7; ++k) {
+    const double a = 4 * 3.14159265358979323846 * k / 7;
+    p.push_back({std::cos(a), std::sin(a)});
+  }
+  std::vector<VertexId> tris;
+  for (VertexId k = 0; k < 7; ++k) tris.insert(tris.end(), {0, 1 + k, 1 + (k + 1) % 7});
+  try {
+    refine_mesh(p, tris, {}, {});
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("turn round it 2 times"), std::string::npos) << e.what();
+  }
+  // Open: five of them, from 0 to 20 pi / 7, more than a turn.
+  tris.resize(15);
+  EXPECT_THROW(refine_mesh(p, tris, {}, {}), InputError);
+  // Three of them, 12 pi / 7 in all, less than a turn: a mesh.
+  tris.resize(9);
+  EXPECT_NO_THROW(refine_mesh(p, tris, {}, {}));
+}
+
+}  // namespace
+}  // namespace ridt::test
