@@ -171,7 +171,12 @@ void refine_again(const io::Pslg& g, const ridt::ConstrainedTriangulation& carve
   all.insert(all.end(), carved.steiner.begin(), carved.steiner.end());
   std::vector<double> bounds(carved.size(), 0.0);
   for (std::size_t k = 0; k < bounds.size() && q.max_area > 0; k += 2) bounds[k] = q.max_area / 2;
-  const ridt::ConstrainedTriangulation r = ridt::refine_mesh(all, carved.triangles, carved.edges, q, bounds);
+  ridt::ConstrainedTriangulation r;
+  try {
+    r = ridt::refine_mesh(all, carved.triangles, carved.edges, q, bounds);
+  } catch (const ridt::InputError& e) {  // the library's own mesh: nothing in it to refuse
+    finding(std::string("refine_mesh refused a constrained triangulation: ") + e.what());
+  }
   if (!r.warning.empty() || r.steiner.size() >= 5000) return;
   io::Pslg as_given;
   as_given.points = all;

@@ -470,17 +470,32 @@ expect 0 "refine a mesh (-r)" -- "$ridt" mesh "$dir/q.ele" -o "$dir/r.ele" --swi
 [ "$(head -1 "$dir/r.node" | cut -d' ' -f1)" -gt "$(head -1 "$dir/q.node" | cut -d' ' -f1)" ] && pass || fail "-r added no points"
 expect 0 "check the refined mesh" -- "$ridt" check "$dir/r.node" "$dir/r.ele" --poly "$dir/sq.poly" --edges "$dir/r.edge" --min-angle 30 --max-area 1
 qn=$(head -1 "$dir/q.ele" | cut -d' ' -f1)
-{ echo "$qn"; echo "1 0.01"; for i in $(seq 2 "$qn"); do echo "$i -1"; done; } >"$dir/q.area"
+{ echo "$qn"; for i in $(seq 1 "$qn"); do echo "$i 0.01"; done; } >"$dir/q.area"
 expect 0 "refine with an .area file" -- "$ridt" mesh "$dir/q.ele" -o "$dir/ra.ele" --switches rq30a
-[ "$(head -1 "$dir/ra.ele" | cut -d' ' -f1)" -gt "$(head -1 "$dir/r.ele" | cut -d' ' -f1)" ] && pass || fail "the .area's bound refined nothing"
-expect 0 "check it" -- "$ridt" check "$dir/ra.node" "$dir/ra.ele" --poly "$dir/sq.poly" --edges "$dir/ra.edge" --min-angle 30
+expect 0 "every triangle to its bound" -- "$ridt" check "$dir/ra.node" "$dir/ra.ele" --poly "$dir/sq.poly" --edges "$dir/ra.edge" --min-angle 30 --max-area 0.01
+{ echo "$qn"; echo "1 0.01"; for i in $(seq 2 "$qn"); do echo "$i -1"; done; } >"$dir/q.area"
+expect 0 "refine one triangle of the .area" -- "$ridt" mesh "$dir/q.ele" -o "$dir/rb.ele" --switches rq30a
+rb=$(head -1 "$dir/rb.ele" | cut -d' ' -f1); ra=$(head -1 "$dir/ra.ele" | cut -d' ' -f1)
+[ "$rb" -gt "$qn" ] && [ "$rb" -lt "$ra" ] && pass || fail "one triangle's bound: $rb triangles (from $qn; all bounded: $ra)"
+expect 0 "check it" -- "$ridt" check "$dir/rb.node" "$dir/rb.ele" --poly "$dir/sq.poly" --edges "$dir/rb.edge" --min-angle 30
+{ cat "$dir/sq.poly"; printf '1\n1 1 1 3.5 0\n'; } >"$dir/sqr.poly"
+expect 0 "a mesh with attributes" -- "$ridt" mesh "$dir/sqr.poly" -o "$dir/qa.ele" --switches pq30a2A
+expect 0 "refined, its attributes carried" -- "$ridt" mesh "$dir/qa.ele" -o "$dir/rqa.ele" --switches rq30a1
+[ "$(head -1 "$dir/rqa.ele" | cut -d' ' -f3)" = 1 ] && pass || fail "-r dropped the .ele's attributes"
+cp "$dir/sq.poly" "$dir/q.poly"
+expect 2 "-rp reads the .poly beside the mesh" -- "$ridt" mesh "$dir/q.ele" -o "$dir/rc.ele" --switches rpq30
+stderr_has "vertices; the mesh has"; absent "$dir/rc.ele"
 printf '2\n1 0.01\n' >"$dir/q.area"
-expect 2 "an .area of the wrong size" -- "$ridt" mesh "$dir/q.ele" -o "$dir/rb.ele" --switches rqa
-stderr_has "the mesh has"; absent "$dir/rb.ele"
-printf '2 2 0 0\n1 0 0\n2 1 0\n' >"$dir/cw.node"
-printf '1 3 0\n1 1 2 1\n' >"$dir/cw.ele"
-expect 2 "refine a folded mesh" -- "$ridt" mesh "$dir/cw.ele" -o "$dir/rc.ele"
+expect 2 "an .area of the wrong size" -- "$ridt" mesh "$dir/q.ele" -o "$dir/rbad.ele" --switches rqa
+stderr_has "the mesh has"; absent "$dir/rbad.ele"
+printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n' >"$dir/cw.node"
+printf '1 3 0\n1 1 3 2\n' >"$dir/cw.ele"
+expect 2 "refine a clockwise triangle" -- "$ridt" mesh "$dir/cw.ele" -o "$dir/rc.ele"
 stderr_has "clockwise"; absent "$dir/rc.ele"
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n' >"$dir/fold.node"
+printf '2 3 0\n1 1 2 3\n2 1 2 4\n' >"$dir/fold.ele"
+expect 2 "refine a folded mesh" -- "$ridt" mesh "$dir/fold.ele" -o "$dir/rc.ele"
+stderr_has "overlap"; absent "$dir/rc.ele"
 expect 2 "-r of a .poly" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/rd.ele" --switches rq
 stderr_has "give its .ele"
 expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30

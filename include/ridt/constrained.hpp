@@ -85,18 +85,18 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
 
 /// Refines a mesh already made (Triangle's -r): `triangles` (counter-clockwise, 3 indices into
 /// `points` a triangle) cover the domain, whose boundary and `segments` (pairs, each an edge of
-/// the mesh) stay fixed. The mesh is first made constrained Delaunay by Lawson's flips (a
-/// constrained Delaunay mesh, as triangulate_constrained and Triangle make, has none), then
-/// refined as `quality` asks, and, where `max_areas` is given (one a triangle, <= 0: none;
-/// Triangle's .area file), each triangle to its own bound: a triangle made from several (a flip
-/// or a point's cavity) keeps the smallest of their bounds, so that no triangle of the result
-/// is larger than the bound of any input triangle it overlaps. `attributes` (one a triangle,
-/// optional) follow the bounds. Every point keeps its index, those unused too; the result's
-/// steiner points are the ones added, its `edges` the fixed edges (the segments and the
-/// boundary). `options`: canonical_order, neighbors, threads (the sort) and memory_limit.
-/// Throws InputError for an index out of range, a triangle clockwise or without area, triangles
-/// that overlap (two running along one edge the same way, or turning round a vertex more than
-/// once), a segment that is no edge, or per-triangle values not one a triangle or not finite.
+/// the mesh, either way) stay fixed. The mesh is first made constrained Delaunay by Lawson's
+/// flips (a constrained Delaunay mesh, as triangulate_constrained and Triangle make, has none),
+/// then refined as `quality` asks and, where `max_areas` is given (one a triangle, <= 0: none;
+/// Triangle's .area file), each triangle of the result to the bound of the given triangle that
+/// holds its centroid; `attributes` (one a triangle, optional) go by the same rule. Every point
+/// keeps its index, those unused too; the result's steiner points are the ones added, its
+/// `edges` the fixed edges (the segments and the boundary). `options`: canonical_order,
+/// neighbors, threads (the sort) and memory_limit. Throws InputError for an index out of range,
+/// a triangle clockwise or without area, two triangles running along an edge the same way,
+/// triangles about a vertex that turn round it more than once or overlap there (pieces that
+/// overlap without sharing a vertex are not found), a segment that is no edge, or per-triangle
+/// values not one a triangle or not finite.
 ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<const VertexId> triangles,
                                      std::span<const VertexId> segments, const Quality& quality,
                                      std::span<const double> max_areas = {}, std::span<const double> attributes = {},

@@ -149,7 +149,7 @@ class ConstrainedDelaunay:
             _api.thread_count(threads), float(min_angle), float(max_area), bool(split_boundary), bool(conforming),
             int(max_steiner))
         self = cls.__new__(cls)
-        self._take(pts, segs, np.zeros((0, 2)), result, min_angle, max_area if triangle_max_area is None else 0.0)
+        self._take(pts, segs, np.zeros((0, 2)), result, min_angle, max_area)
         return self
 
     def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,

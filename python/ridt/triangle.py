@@ -163,8 +163,11 @@ def _refined(tri: Dict[str, Any], pts: np.ndarray, segments: np.ndarray, flags: 
     if attributes is not None:
         attributes = np.asarray(attributes, dtype=float)
         attributes = attributes.reshape(len(attributes), -1)[:, 0] if attributes.size else None
+    triangles = np.asarray(tri["triangles"])
+    if triangles.ndim == 2 and triangles.shape[1] == 6:  # six-node triangles ('o2'): their corners
+        triangles = triangles[:, :3]
     return ConstrainedDelaunay.from_mesh(
-        pts, np.asarray(tri["triangles"]).reshape(-1, 3), segments.reshape(-1, 2) if segments.size else None,
+        pts, triangles.reshape(-1, 3), segments.reshape(-1, 2) if segments.size else None,
         min_angle=max(angle, 0.0), max_area=area, triangle_max_area=bounds, triangle_attributes=attributes,
         split_boundary="Y" not in flags, conforming="D" in flags, max_steiner=max(steiner, 0))
 

@@ -148,8 +148,6 @@ def test_refining_a_mesh_each_triangle_to_its_own_bound():
     tight = bounds[given] > 0
     assert tight.sum() > 100 and (areas(t)[tight] <= 0.05).all()
     assert areas(t)[~tight].max() > 0.05  # the others left coarser
-    # The inner segments stay, as chains of edges; without 'p' only the boundary is kept (here
-    # the same: every segment is on it).
     cdt = ridt.ConstrainedDelaunay.from_mesh(first["vertices"], first["triangles"], first["segments"],
                                              min_angle=30, triangle_max_area=bounds)
     assert cdt.check()[0] and triangle_set(cdt.simplices) == triangle_set(t["triangles"])
@@ -168,6 +166,20 @@ def test_refining_a_mesh_that_is_not_delaunay_flips_it_to_delaunay():
     t = triangle.triangulate({"vertices": pts, "triangles": fan}, "r")
     assert triangle_set(t["triangles"]) == triangle_set(scipy.spatial.Delaunay(pts).simplices)
     assert ridt.check(t["vertices"], t["triangles"])[0]
+
+
+def test_refining_keeps_the_segments_with_p_and_takes_six_node_triangles_by_their_corners():
+    # A kite split along its long diagonal, not Delaunay: with 'p' the diagonal, a segment, stays;
+    # without, only the boundary does, and the diagonal is flipped away.
+    kite = np.array([[0, 0], [4, -1], [8, 0], [4, 1]], dtype=float)
+    tri = {"vertices": kite, "triangles": np.array([[0, 1, 2], [0, 2, 3]]), "segments": np.array([[0, 2]])}
+    assert triangle_set(triangle.triangulate(tri, "rp")["triangles"]) == triangle_set(tri["triangles"])
+    assert triangle_set(triangle.triangulate(tri, "r")["triangles"]) == triangle_set([[0, 1, 3], [1, 2, 3]])
+    # An o2 result refined: its six-node rows read as their corners.
+    six = triangle.triangulate({"vertices": SQUARE, "segments": np.array(loop(0))}, "pq30a20o2")
+    corners = {"vertices": six["vertices"], "triangles": six["triangles"], "segments": six["segments"]}
+    t = triangle.triangulate(corners, "rpq30a5")
+    assert (areas(t) > 0).all() and abs(areas(t).sum() - 100) < 1e-9 and areas(t).max() <= 5
 
 
 def test_refining_bad_meshes_is_refused():

@@ -209,19 +209,29 @@ void check_mesh_input(std::span<const Point> points, std::span<const VertexId> t
   }
 }
 
-// A given mesh's domain: its segments and its boundary fixed, the mesh made constrained
-// Delaunay by Lawson's flips (refinement needs it), and, with bounds or attributes, a region a
-// given triangle (m.region numbers them, each triangle's found again by its centroid).
-Domain mark_mesh(detail::Cdt& m, std::span<const VertexId> segments, std::span<const double> max_areas,
-                 std::span<const double> attributes) {
+// A given mesh's neighbours (checked: mesh_edges), and each segment's edge slot (either way
+// along it) into `slots`; InputError for a segment that is no edge.
+std::vector<std::int32_t> mesh_links(std::span<const Point> pts, std::span<const VertexId> triangles,
+                                     std::span<const VertexId> segments, std::vector<std::uint32_t>& slots) {
+  const detail::MeshEdges edges(pts, triangles);
   for (std::size_t k = 0; k < segments.size(); k += 2) {
-    if (segments[k] == segments[k + 1]) continue;
-    const std::uint32_t s = m.find_edge(segments[k], segments[k + 1]);
+    const VertexId a = segments[k], b = segments[k + 1];
+    if (a == b) continue;
+    const std::uint32_t s = edges.slot(a, b) != detail::Cdt::kNone ? edges.slot(a, b) : edges.slot(b, a);
     if (s == detail::Cdt::kNone)
-      throw InputError("segment " + std::to_string(k / 2) + " (" + std::to_string(segments[k]) + ", " +
-                       std::to_string(segments[k + 1]) + ") is not an edge of the mesh");
-    m.set_fixed(s / 3, static_cast<int>(s % 3), true);
+      throw InputError("segment " + std::to_string(k / 2) + " (" + std::to_string(a) + ", " + std::to_string(b) +
+                       ") is not an edge of the mesh");
+    slots.push_back(s);
   }
+  return edges.neighbours();
+}
+
+// A given mesh's domain: its segments (their slots) and its boundary fixed, the mesh made
+// constrained Delaunay by Lawson's flips (refinement needs it), and, with bounds or attributes, a
+// region a given triangle (m.region numbers them, each triangle's found again by its centroid).
+Domain mark_mesh(detail::Cdt& m, const std::vector<std::uint32_t>& segment_slots, std::span<const double> max_areas,
+                 std::span<const double> attributes) {
+  for (const std::uint32_t s : segment_slots) m.set_fixed(s / 3, static_cast<int>(s % 3), true);
   for (std::size_t s = 0; s < m.nbrs.size(); ++s)
     if (m.nbrs[s] < 0) m.fixed[s] = 1;
   Domain domain;
@@ -292,7 +302,9 @@ ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<co
   check_input(points, segments, {}, quality);
   check_mesh_input(points, triangles, max_areas, attributes);
   const detail::Extent extent = detail::checked_extent(points, 1);
-  check_refinable(extent);
+  const bool refined =
+      quality.enabled() || std::any_of(max_areas.begin(), max_areas.end(), [](double a) { return a > 0; });
+  if (refined) check_refinable(extent);
   check_memory(points.size(), segments.size() / 2, options);
   const int scale = detail::exact_scale_exponent(extent);
   std::vector<Point> pts(points.begin(), points.end());
@@ -300,14 +312,14 @@ ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<co
     for (Point& p : pts) p = scaled(p, scale);
   ConstrainedTriangulation out;
   out.triangles.assign(triangles.begin(), triangles.end());
-  out.neighbors = detail::neighbours_of(pts, out.triangles);
+  std::vector<std::uint32_t> segment_slots;
+  out.neighbors = mesh_links(pts, out.triangles, segments, segment_slots);
   out.stats.points = out.stats.distinct = points.size();
   detail::Cdt m(std::move(pts), out);
   detail::check_fans(m);
   const detail::GivenMesh given(m.pts, m.tris, m.nbrs);
-  const Domain domain = mark_mesh(m, segments, max_areas, attributes);
-  if (quality.enabled() || std::any_of(max_areas.begin(), max_areas.end(), [](double a) { return a > 0; }))
-    refine(m, out, options, quality, domain, static_cast<VertexId>(points.size()), scale, &given);
+  const Domain domain = mark_mesh(m, segment_slots, max_areas, attributes);
+  if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size()), scale, &given);
   if (!m.region.empty())
     for (std::uint32_t t = 0; t < m.size(); ++t) m.region[t] = given.region_of(m, t);
   collect(m, out, domain, points.size(), scale, true);

@@ -9,63 +9,87 @@
 
 namespace ridt::detail {
 
-std::vector<std::int32_t> neighbours_of(std::span<const Point> points, std::span<const VertexId> triangles) {
+MeshEdges::MeshEdges(std::span<const Point> points, std::span<const VertexId> triangles)
+    : tris_(triangles), start_(points.size() + 1, 0), slots_(triangles.size()) {
   const std::size_t count = triangles.size() / 3;
   for (std::size_t t = 0; t < count; ++t)
     if (orient2d(points[triangles[3 * t]], points[triangles[3 * t + 1]], points[triangles[3 * t + 2]]) <= 0)
       throw InputError("triangle " + std::to_string(t) + " (" + std::to_string(triangles[3 * t]) + ", " +
                        std::to_string(triangles[3 * t + 1]) + ", " + std::to_string(triangles[3 * t + 2]) +
                        ") is clockwise or has no area: a mesh's triangles go counter-clockwise");
-  // Edge k of triangle t runs from its corner k + 1 to corner k + 2. The edge slots listed by
-  // their first end (counted, then placed), each end's by their second: two running the same
-  // way are then side by side, and the one running back along an edge is found in its second
-  // end's list.
-  auto from = [&](std::size_t s) { return triangles[s - s % 3 + (s + 1) % 3]; };
-  auto to = [&](std::size_t s) { return triangles[s - s % 3 + (s + 2) % 3]; };
-  std::vector<std::uint32_t> start(points.size() + 1, 0);
-  for (std::size_t s = 0; s < triangles.size(); ++s) ++start[from(s) + 1];
-  for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<std::uint32_t> slots(triangles.size()), at(start.begin(), start.end() - 1);
-  for (std::size_t s = 0; s < triangles.size(); ++s) slots[at[from(s)]++] = static_cast<std::uint32_t>(s);
-  const auto by_end = [&](std::uint32_t s, std::uint32_t u) { return to(s) < to(u); };
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto first = slots.begin() + start[v], last = slots.begin() + start[v + 1];
-    std::sort(first, last, by_end);
+  // Counted by first end, placed, then each end's sorted by second end: two slots running the
+  // same way are then side by side.
+  for (std::size_t s = 0; s < triangles.size(); ++s) ++start_[from(s) + 1];
+  for (std::size_t v = 1; v < start_.size(); ++v) start_[v] += start_[v - 1];
+  std::vector<std::uint32_t> at(start_.begin(), start_.end() - 1);
+  for (std::size_t s = 0; s < triangles.size(); ++s) slots_[at[from(s)]++] = static_cast<std::uint32_t>(s);
+  for (std::size_t v = 0; v + 1 < start_.size(); ++v) {
+    const auto first = slots_.begin() + start_[v], last = slots_.begin() + start_[v + 1];
+    std::sort(first, last, [&](std::uint32_t s, std::uint32_t u) { return to(s) < to(u); });
     if (const auto twice = std::adjacent_find(first, last, [&](auto s, auto u) { return to(s) == to(u); });
         twice != last)
       throw InputError("triangles " + std::to_string(*twice / 3) + " and " + std::to_string(twice[1] / 3) +
                        " both run from vertex " + std::to_string(v) + " to " + std::to_string(to(*twice)) +
                        ": they overlap");
   }
-  std::vector<std::int32_t> out(triangles.size(), -1);
-  for (std::size_t s = 0; s < triangles.size(); ++s) {
-    const VertexId a = from(s), b = to(s);
-    const auto last = slots.begin() + start[b + 1];
-    const auto back = std::partition_point(slots.begin() + start[b], last, [&](std::uint32_t u) { return to(u) < a; });
-    if (back != last && to(*back) == a) out[s] = static_cast<std::int32_t>(*back / 3);
-  }
+}
+
+std::uint32_t MeshEdges::slot(VertexId a, VertexId b) const {
+  if (a + 1 >= start_.size()) return Cdt::kNone;
+  const auto last = slots_.begin() + start_[a + 1];
+  const auto it = std::partition_point(slots_.begin() + start_[a], last, [&](std::uint32_t s) { return to(s) < b; });
+  return it != last && to(*it) == b ? *it : Cdt::kNone;
+}
+
+std::vector<std::int32_t> MeshEdges::neighbours() const {
+  std::vector<std::int32_t> out(tris_.size(), -1);
+  for (std::size_t s = 0; s < tris_.size(); ++s)
+    if (const std::uint32_t back = slot(to(s), from(s)); back != Cdt::kNone)
+      out[s] = static_cast<std::int32_t>(back / 3);
   return out;
+}
+
+bool GivenMesh::holds(std::uint32_t t, const Point& p) const {
+  for (int k = 0; k < 3; ++k)
+    if (orient2d(pts_[tris_[3 * t + (k + 1) % 3]], pts_[tris_[3 * t + (k + 2) % 3]], p) < 0) return false;
+  return true;
 }
 
 std::uint32_t GivenMesh::locate(const Point& p, std::uint32_t hint) const {
   const std::size_t count = tris_.size() / 3;
-  auto outside = [&](std::uint32_t t, int k) {
-    return orient2d(pts_[tris_[3 * t + (k + 1) % 3]], pts_[tris_[3 * t + (k + 2) % 3]], p) < 0;
-  };
   std::uint32_t t = hint < count ? hint : 0;
-  for (std::size_t steps = 0, turn = 0; steps < 64 + count / 8; ++steps, turn += 7) {
+  for (std::size_t steps = 0, turn = 0; steps < 64; ++steps, turn += 7) {
     int out = -1;
-    for (int r = 0; r < 3 && out < 0; ++r)
-      if (const int k = static_cast<int>((r + turn) % 3); outside(t, k) && nbrs_[3 * t + k] >= 0) out = k;
-    if (out < 0) {
-      if (!outside(t, 0) && !outside(t, 1) && !outside(t, 2)) return t;
-      break;  // beyond the boundary from here
+    bool beyond = false;  // p lies beyond some edge of t
+    for (int r = 0; r < 3 && out < 0; ++r) {
+      const int k = static_cast<int>((r + turn) % 3);
+      if (orient2d(pts_[tris_[3 * t + (k + 1) % 3]], pts_[tris_[3 * t + (k + 2) % 3]], p) >= 0) continue;
+      beyond = true;
+      if (nbrs_[3 * t + k] >= 0) out = k;
     }
+    if (!beyond) return t;
+    if (out < 0) break;  // only the boundary lies that way from here
     t = static_cast<std::uint32_t>(nbrs_[3 * t + out]);
   }
-  for (std::uint32_t u = 0; u < count; ++u)
-    if (!outside(u, 0) && !outside(u, 1) && !outside(u, 2)) return u;
-  return hint;
+  const std::uint32_t found = search(p, t);
+  return found != Cdt::kNone ? found : hint;
+}
+
+// Breadth first from `from` across the given mesh's edges, nearest triangles first.
+std::uint32_t GivenMesh::search(const Point& p, std::uint32_t from) const {
+  const std::uint32_t mark = ++searches_;
+  std::vector<std::uint32_t> queue{from};
+  seen_[from] = mark;
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const std::uint32_t t = queue[next];
+    if (holds(t, p)) return t;
+    for (int k = 0; k < 3; ++k)
+      if (const std::int32_t n = nbrs_[3 * t + k]; n >= 0 && seen_[static_cast<std::uint32_t>(n)] != mark) {
+        seen_[static_cast<std::uint32_t>(n)] = mark;
+        queue.push_back(static_cast<std::uint32_t>(n));
+      }
+  }
+  return Cdt::kNone;
 }
 
 std::int32_t GivenMesh::region_of(const Cdt& m, std::uint32_t t) const {
@@ -76,59 +100,100 @@ std::int32_t GivenMesh::region_of(const Cdt& m, std::uint32_t t) const {
 
 namespace {
 
-// Whether direction v -> u comes before v -> w counter-clockwise from the direction of +x
-// (which comes first of all): by half-plane, then by orientation, exactly.
+// Whether the angle counter-clockwise from direction v -> ref to v -> u is smaller than that
+// to v -> w (ref itself at angle 0, the smallest): by the half-plane left of v -> ref (with
+// ref's own direction), then by orientation, exactly.
+bool turns_less(const Point& v, const Point& ref, const Point& u, const Point& w) {
+  auto sign = [](double a, double b) { return (a > b) - (a < b); };
+  auto upper = [&](const Point& d) {
+    const int o = orient2d(v, ref, d);
+    return o > 0 || (o == 0 && (sign(d.x, v.x) * sign(ref.x, v.x) > 0 || sign(d.y, v.y) * sign(ref.y, v.y) > 0));
+  };
+  if (upper(u) != upper(w)) return upper(u);
+  return orient2d(v, u, w) > 0;
+}
+
+// The same from the direction of +x.
 bool before(const Point& v, const Point& u, const Point& w) {
   auto lower = [&v](const Point& p) { return !(p.y > v.y || (p.y == v.y && p.x > v.x)); };
   if (lower(u) != lower(w)) return lower(w);
   return orient2d(v, u, w) > 0;
 }
 
+// A fan of triangles about v, from direction v -> first counter-clockwise to v -> last.
+struct Fan {
+  VertexId v, first, last;
+  bool closed;
+};
+
+// The fan about v that holds slot s (a corner of v), its corners marked seen; throws where it
+// turns round v more than once. A wedge (each triangle's, from its next corner to its last)
+// that ends before it starts, counted from +x, passes +x.
+Fan fan_at(const Cdt& m, std::size_t s, std::vector<std::uint8_t>& seen) {
+  const VertexId v = m.tris[s];
+  const Point& pv = m.pts[v];
+  const auto t0 = static_cast<std::uint32_t>(s / 3);
+  int wraps = 0;
+  auto wedge = [&](std::uint32_t t) {
+    const int i = m.corner_of(t, v);
+    seen[3 * t + i] = 1;
+    wraps += before(pv, m.pts[m.at(t, i + 2)], m.pts[m.at(t, i + 1)]);
+    return i;
+  };
+  // Counter-clockwise from t0 (across the edge from its last corner to v) to the boundary or
+  // round to t0; then clockwise from t0 where the fan is open.
+  Fan f{v, m.at(t0, m.corner_of(t0, v) + 1), Cdt::kNone, false};
+  for (std::uint32_t t = t0;;) {
+    const int i = wedge(t);
+    const std::int32_t n = m.nbrs[3 * t + (i + 1) % 3];
+    if (n < 0) {
+      f.last = m.at(t, i + 2);
+      break;
+    }
+    t = static_cast<std::uint32_t>(n);
+    if (t == t0) {
+      f.closed = true;
+      f.last = f.first;
+      break;
+    }
+  }
+  for (std::uint32_t t = t0; !f.closed;) {
+    const std::int32_t n = m.nbrs[3 * t + (m.corner_of(t, v) + 2) % 3];
+    if (n < 0) break;
+    t = static_cast<std::uint32_t>(n);
+    f.first = m.at(t, wedge(t) + 1);
+  }
+  const bool once = f.closed ? wraps == 1 : wraps == 0 || (wraps == 1 && before(pv, m.pts[f.last], m.pts[f.first]));
+  if (!once)
+    throw InputError("the triangles about vertex " + std::to_string(v) + " turn round it " +
+                     (f.closed ? std::to_string(wraps) + " times" : "more than once") + ": they overlap");
+  return f;
+}
+
 }  // namespace
 
 void check_fans(const Cdt& m) {
   std::vector<std::uint8_t> seen(m.tris.size(), 0);
-  for (std::size_t s = 0; s < m.tris.size(); ++s) {
-    if (seen[s]) continue;
-    const VertexId v = m.tris[s];
-    const Point& pv = m.pts[v];
-    const auto t0 = static_cast<std::uint32_t>(s / 3);
-    // Each triangle a wedge at v from its next corner to its last; one that ends before it
-    // starts (from +x, counter-clockwise) passes +x. Counter-clockwise from t0 (across the edge
-    // from the last corner to v) to the boundary or round to t0, then clockwise from t0 where
-    // the fan is open.
-    int wraps = 0;
-    auto wedge = [&](std::uint32_t t) {
-      const int i = m.corner_of(t, v);
-      seen[3 * t + i] = 1;
-      wraps += before(pv, m.pts[m.at(t, i + 2)], m.pts[m.at(t, i + 1)]);
-      return i;
-    };
-    bool closed = false;
-    VertexId first = m.at(t0, m.corner_of(t0, v) + 1), last = Cdt::kNone;
-    for (std::uint32_t t = t0;;) {
-      const int i = wedge(t);
-      const std::int32_t n = m.nbrs[3 * t + (i + 1) % 3];
-      if (n < 0) {
-        last = m.at(t, i + 2);
-        break;
-      }
-      t = static_cast<std::uint32_t>(n);
-      if (t == t0) {
-        closed = true;
-        break;
-      }
+  std::vector<Fan> fans;
+  for (std::size_t s = 0; s < m.tris.size(); ++s)
+    if (!seen[s]) fans.push_back(fan_at(m, s, seen));
+  // Fans sharing a vertex (where the domain touches itself there), in order round it from +x:
+  // none may close, and each must end before the next begins.
+  std::sort(fans.begin(), fans.end(), [&](const Fan& a, const Fan& b) {
+    return a.v != b.v ? a.v < b.v : before(m.pts[a.v], m.pts[a.first], m.pts[b.first]);
+  });
+  for (std::size_t i = 0; i < fans.size();) {
+    std::size_t j = i + 1;
+    while (j < fans.size() && fans[j].v == fans[i].v) ++j;
+    for (std::size_t k = i; k < j && j - i > 1; ++k) {
+      const Fan& f = fans[k];
+      const Point& pv = m.pts[f.v];
+      const VertexId next = fans[k + 1 < j ? k + 1 : i].first;
+      if (f.closed || turns_less(pv, m.pts[f.first], m.pts[next], m.pts[f.last]))
+        throw InputError("the triangles about vertex " + std::to_string(f.v) + " overlap: " + std::to_string(j - i) +
+                         " fans of them meet there, and they cover some of one angle twice");
     }
-    for (std::uint32_t t = t0; !closed;) {
-      const std::int32_t n = m.nbrs[3 * t + (m.corner_of(t, v) + 2) % 3];
-      if (n < 0) break;
-      t = static_cast<std::uint32_t>(n);
-      first = m.at(t, wedge(t) + 1);
-    }
-    const bool once = closed ? wraps == 1 : wraps == 0 || (wraps == 1 && before(pv, m.pts[last], m.pts[first]));
-    if (!once)
-      throw InputError("the triangles about vertex " + std::to_string(v) + " turn round it " +
-                       (closed ? std::to_string(wraps) + " times" : "more than once") + ": they overlap");
+    i = j;
   }
 }
 

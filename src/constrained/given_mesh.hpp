@@ -1,5 +1,5 @@
-// A mesh given to be refined (refine_mesh, Triangle's -r): its neighbours found from its
-// triangles, and the checks that it is one.
+// A mesh given to be refined (refine_mesh, Triangle's -r): its edges and neighbours found from
+// its triangles, the checks that it is one, and the given triangles kept to locate points in.
 #pragma once
 
 #include <cstdint>
@@ -12,10 +12,25 @@
 
 namespace ridt::detail {
 
-/// The neighbours of `triangles` (3 a triangle, as Triangulation::neighbors has them: -1 on
-/// the boundary). Throws InputError where a triangle is clockwise or has no area, or where two
-/// triangles run along an edge the same way (they overlap, or one is the other turned over).
-std::vector<std::int32_t> neighbours_of(std::span<const Point> points, std::span<const VertexId> triangles);
+/// The edge slots of `triangles` (slot 3t + k: triangle t's edge from its corner k + 1 to its
+/// corner k + 2), listed by their first end, each end's by their second. Throws InputError
+/// where a triangle is clockwise or has no area, or where two triangles run along an edge the
+/// same way (they overlap, or one is the other turned over). `triangles` must outlive it.
+class MeshEdges {
+ public:
+  MeshEdges(std::span<const Point> points, std::span<const VertexId> triangles);
+  /// The slot that runs from a to b, or Cdt::kNone.
+  std::uint32_t slot(VertexId a, VertexId b) const;
+  /// The neighbours (3 a triangle, as Triangulation::neighbors has them: -1 on the boundary).
+  std::vector<std::int32_t> neighbours() const;
+
+ private:
+  VertexId from(std::size_t s) const { return tris_[s - s % 3 + (s + 1) % 3]; }
+  VertexId to(std::size_t s) const { return tris_[s - s % 3 + (s + 2) % 3]; }
+
+  std::span<const VertexId> tris_;
+  std::vector<std::uint32_t> start_, slots_;
+};
 
 /// The mesh as given, kept beside the one refined: each triangle of that one takes the region
 /// (bound and attribute) of the given triangle that holds its centroid.
@@ -23,24 +38,31 @@ class GivenMesh {
  public:
   /// `pts` (whose first points are the given mesh's, as the mesh refined has them) must outlive this.
   GivenMesh(const std::vector<Point>& pts, std::vector<VertexId> tris, std::vector<std::int32_t> nbrs)
-      : pts_(pts), tris_(std::move(tris)), nbrs_(std::move(nbrs)) {}
+      : pts_(pts), tris_(std::move(tris)), nbrs_(std::move(nbrs)), seen_(tris_.size() / 3, 0) {}
 
   /// The given triangle whose closure holds p, found by a walk from `hint` (a triangle near
-  /// it), else, where the walk leaves the mesh or circles (the given mesh need not be
-  /// Delaunay), by every triangle in turn; `hint` where none holds it.
+  /// it), else, where the walk meets the boundary or circles (the given mesh need not be
+  /// Delaunay), by a search outward from where it stopped, neighbour by neighbour; `hint` where
+  /// none holds it.
   std::uint32_t locate(const Point& p, std::uint32_t hint) const;
   /// The region of m's triangle t, its centroid located from its region now.
   std::int32_t region_of(const Cdt& m, std::uint32_t t) const;
 
  private:
+  bool holds(std::uint32_t t, const Point& p) const;
+  std::uint32_t search(const Point& p, std::uint32_t from) const;
+
   const std::vector<Point>& pts_;
   std::vector<VertexId> tris_;
   std::vector<std::int32_t> nbrs_;
+  mutable std::vector<std::uint32_t> seen_;  // search's marks: the search's number, so none is cleared
+  mutable std::uint32_t searches_ = 0;
 };
 
 /// Throws InputError where the triangles about a vertex of m, taken in turn across their
-/// shared edges, turn round it more than once (or, closing round it, other than once): they
-/// overlap there. Exact: directions compared by half-plane, then by orientation.
+/// shared edges, turn round it more than once, or where two such fans at one vertex overlap
+/// (one that closes round it must be its only one). Exact: directions compared by half-plane,
+/// then by orientation. Pieces of the mesh that overlap without sharing a vertex pass.
 void check_fans(const Cdt& m);
 
 }  // namespace ridt::detail

@@ -1,6 +1,7 @@
 // refine_mesh (Triangle's -r): a mesh already made, refined further. Every result through
 // check_mesh with its fixed edges as the segments; per-triangle area bounds kept by every
-// triangle overlapping theirs; a mesh not Delaunay made so by flips; bad meshes refused.
+// triangle whose centroid lies in theirs; a mesh not Delaunay made so by flips; pinched
+// vertices, huge coordinates; bad meshes refused.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
+#include "ridt/ridt.hpp"
 
 namespace ridt::test {
 namespace {
@@ -136,6 +138,68 @@ TEST(RefineMesh, EachTriangleToItsOwnAreaBound) {
   EXPECT_LT(t.size() - below, below / 2);
 }
 
+// The same with the triangles in canonical order: the attributes follow their triangles.
+TEST(RefineMesh, AttributesFollowTheTrianglesInCanonicalOrder) {
+  const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<VertexId> tris = {0, 1, 2, 0, 2, 3};
+  Options o;
+  o.canonical_order = true;
+  const std::vector<double> bounds = {0.001, 0.01}, attributes = {1, 2};
+  const ConstrainedTriangulation t = refine_mesh(square, tris, {}, {}, bounds, attributes, o);
+  const std::vector<Point> all = all_points(square, t);
+  ASSERT_EQ(t.attributes.size(), t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point &a = all[t.triangles[3 * k]], &b = all[t.triangles[3 * k + 1]], &c = all[t.triangles[3 * k + 2]];
+    const double x = (a.x + b.x + c.x) / 3, y = (a.y + b.y + c.y) / 3;
+    if (y != x) {
+      EXPECT_EQ(t.attributes[k], y < x ? 1 : 2);
+    }
+    EXPECT_LE(twice_area(all, t.triangles, k) / 2, y < x ? 0.001 : 0.01);
+  }
+}
+
+// A square with a triangular hole that touches its corner: the mesh's boundary passes through
+// that vertex twice, and its segments there are found either way along them.
+TEST(RefineMesh, AHoleTouchingTheBoundaryAtAVertex) {
+  Pslg g;
+  g.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 1}, {1, 2}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 0, 4, 4, 5, 5, 0};
+  Domain d;
+  d.convex_hull = false;
+  d.holes = {{1, 1}};
+  const ConstrainedTriangulation first = triangulate_constrained(g.points, g.segments, {}, d);
+  Quality q;
+  q.min_angle = 25;
+  q.max_area = 0.05;
+  const ConstrainedTriangulation t = refine_mesh(g.points, first.triangles, first.edges, q);
+  ASSERT_TRUE(t.warning.empty()) << t.warning;
+  const std::vector<Point> all = all_points(g.points, t);
+  expect_valid(all, t, first.edges, g.points.size(), 25, 0.05);
+  EXPECT_NEAR(total_area(all, t.triangles), 16 - 1.5, 1e-12);
+}
+
+// Coordinates near 2^500 (and their areas near 2^1000) give the same mesh, scaled: the
+// predicates and the refinement work on an exactly scaled copy.
+TEST(RefineMesh, HugeCoordinatesGiveTheSameMeshScaled) {
+  const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::vector<Point> huge;
+  for (const Point& p : square) huge.push_back({std::ldexp(p.x, 500), std::ldexp(p.y, 500)});
+  const std::vector<VertexId> tris = {0, 1, 2, 0, 2, 3};
+  Quality q;
+  q.min_angle = 30;
+  q.max_area = 0.01;
+  Quality big = q;
+  big.max_area = std::ldexp(0.01, 1000);
+  const ConstrainedTriangulation t = refine_mesh(square, tris, {}, q);
+  const ConstrainedTriangulation u = refine_mesh(huge, tris, {}, big);
+  ASSERT_EQ(t.triangles, u.triangles);
+  ASSERT_EQ(t.steiner.size(), u.steiner.size());
+  for (std::size_t k = 0; k < t.steiner.size(); ++k) {
+    EXPECT_EQ(std::ldexp(t.steiner[k].x, 500), u.steiner[k].x);
+    EXPECT_EQ(std::ldexp(t.steiner[k].y, 500), u.steiner[k].y);
+  }
+}
+
 // Bad meshes: refused by name, before anything is done.
 TEST(RefineMesh, BadMeshesAreRefused) {
   const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -156,6 +220,27 @@ TEST(RefineMesh, BadMeshesAreRefused) {
   EXPECT_NE(message({0, 1, 2}, {0, 3}).find("not an edge"), std::string::npos);
   EXPECT_NE(message({0, 1, 2}, {}, {1, 2}).find("needs as many"), std::string::npos);
   EXPECT_NE(message({0, 1, 2}, {}, {NAN}).find("not finite"), std::string::npos);
+  EXPECT_NE(message({0, 1, 2}, {3, 0}).find("not an edge"), std::string::npos);  // from a point in no triangle
+}
+
+// Fans of triangles meeting at one vertex: two that close round it (each once), or two open
+// ones covering some angle twice, overlap; two open ones side by side are a mesh whose domain
+// touches itself there.
+TEST(RefineMesh, FansThatOverlapAtAVertexAreRefused) {
+  const std::vector<Point> p = {{0, 0},  {1, 0},  {0, 1}, {-1, 0}, {0, -1}, {2, 1},
+                                {-2, 1}, {0, -2}, {1, 1}, {-1, 1}, {-1, -1}};
+  auto refused = [&](const std::vector<VertexId>& tris) {
+    try {
+      refine_mesh(p, tris, {}, {});
+    } catch (const InputError& e) {
+      return std::string(e.what()).find("overlap") != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused({0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1, 0, 5, 6, 0, 6, 7, 0, 7, 5}));  // two closed fans
+  EXPECT_TRUE(refused({0, 1, 2, 0, 8, 9}));  // 0 to 90 degrees, and 45 to 135
+  EXPECT_FALSE(refused({0, 1, 8, 0, 9, 10}));  // 0 to 45, and 135 to 225
+  EXPECT_NO_THROW(refine_mesh(p, std::vector<VertexId>{0, 1, 8, 0, 9, 10}, std::vector<VertexId>{0, 1, 0, 9}, {}));
 }
 
 // Seven triangles round a vertex whose outer corners go twice round it: every directed edge

@@ -298,8 +298,9 @@ Quality quality_of(const Args& a) {
   return a.no_steiner ? Quality{} : q;
 }
 
-// Triangle's -r: IN.ele and IN.node refined, with IN.poly's segments (else IN.edge's, where
-// either is there) kept, and IN.area's bounds with -a and no number.
+// Triangle's -r: IN.ele and IN.node refined, with the segments of IN.poly (with switch p, as
+// Triangle's -rp) or else of IN.edge (ridt mesh's OUT.edge: the segments' edges), where there,
+// kept; IN.area's bounds with -a and no number; the .ele's first attribute carried.
 int run_refine(const Args& a, const std::vector<std::string>& out, const Options& o) {
   if (io::extension(a.input) != ".ele")
     throw InputError("switch 'r' refines a mesh: give its .ele (its .node is read beside it)");
@@ -309,7 +310,7 @@ int run_refine(const Args& a, const std::vector<std::string>& out, const Options
   std::vector<double> attributes;
   const std::vector<VertexId> triangles = io::read_elements(a.input, g.first_index, attributes, o.threads);
   std::vector<std::string> read = {a.input, base + ".node"};
-  if (std::filesystem::exists(base + ".poly")) {
+  if (a.switches.find('p') != std::string::npos) {
     const io::Pslg p = io::read_pslg(base + ".poly", thread_count(a.threads));
     if (p.points.size() != g.points.size())
       throw InputError(base + ".poly has " + std::to_string(p.points.size()) + " vertices; the mesh has " +
@@ -328,7 +329,9 @@ int run_refine(const Args& a, const std::vector<std::string>& out, const Options
   refuse_overwriting(read, out);
   const ConstrainedTriangulation t = refine_mesh(g.points, triangles, g.segments, quality_of(a), areas, attributes, o);
   if (!t.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", t.warning.c_str());
-  write_mesh(a, g, t);
+  Args carry = a;
+  carry.attributes = a.attributes || !attributes.empty();
+  write_mesh(carry, g, t);
   return 0;
 }
 
