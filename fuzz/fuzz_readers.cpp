@@ -162,11 +162,12 @@ ridt::Quality quality_for(std::string_view data, const io::Pslg& g) {
   return q;
 }
 
-// The carved triangulation refined afterwards (refine_mesh, Triangle's -r) to the same quality,
-// its triangles alternately bounded to half the area: the validator accepts it, its segments as
-// the chains of the carved one's edges.
-void refine_again(const io::Pslg& g, const ridt::ConstrainedTriangulation& carved, const ridt::Quality& q) {
+// The carved triangulation refined afterwards (refine_mesh, Triangle's -r) to the same quality
+// (at most 1000 points added), its triangles alternately bounded to half the area: the
+// validator accepts it, its segments as the chains of the carved one's edges.
+void refine_again(const io::Pslg& g, const ridt::ConstrainedTriangulation& carved, ridt::Quality q) {
   if (carved.size() == 0) return;
+  q.max_steiner = 1000;  // a third refinement of the input: kept shorter, lest it time out
   std::vector<Point> all = g.points;
   all.insert(all.end(), carved.steiner.begin(), carved.steiner.end());
   std::vector<double> bounds(carved.size(), 0.0);
@@ -177,7 +178,7 @@ void refine_again(const io::Pslg& g, const ridt::ConstrainedTriangulation& carve
   } catch (const ridt::InputError& e) {  // the library's own mesh: nothing in it to refuse
     finding(std::string("refine_mesh refused a constrained triangulation: ") + e.what());
   }
-  if (!r.warning.empty() || r.steiner.size() >= 5000) return;
+  if (!r.warning.empty() || r.steiner.size() >= q.max_steiner) return;
   io::Pslg as_given;
   as_given.points = all;
   as_given.segments = carved.edges;

@@ -498,6 +498,24 @@ expect 2 "refine a folded mesh" -- "$ridt" mesh "$dir/fold.ele" -o "$dir/rc.ele"
 stderr_has "overlap"; absent "$dir/rc.ele"
 expect 2 "-r of a .poly" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/rd.ele" --switches rq
 stderr_has "give its .ele"
+# Triangle's switches for the files: e (every edge in .edge: 16 for the holed square's 8
+# triangles), B (no marker columns), j (a vertex of no triangle left out: the one in the hole),
+# N and E (no .node, no .ele), P (no .poly: none is written anyway), C (the mesh checked, the
+# verdict on stderr).
+printf '9 2 0 1\n1 0 0 1\n2 10 0 1\n3 10 10 1\n4 0 10 1\n5 4 4 1\n6 6 4 1\n7 6 6 1\n8 4 6 1\n9 5 5 0\n8 1\n1 1 2 1\n2 2 3 1\n3 3 4 1\n4 4 1 1\n5 5 6 2\n6 6 7 2\n7 7 8 2\n8 8 5 2\n1\n1 5.5 5.5\n' >"$dir/hp.poly"
+expect 0 "mesh -pe" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/he.ele" --switches pe
+[ "$(head -1 "$dir/he.edge")" = "16 1" ] && pass || fail "e: not every edge in .edge"
+[ "$(awk 'NR > 1 && $4 == 0' "$dir/he.edge" | wc -l)" = 8 ] && pass || fail "e: the 8 edges inside not marked 0"
+[ "$(head -1 "$dir/he.node")" = "9 2 0 1" ] && pass || fail "without j the vertex in the hole is kept"
+expect 0 "mesh -pBjPC" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hb.ele" --switches pBjPC
+stderr_has "consistency check: valid"
+[ "$(head -1 "$dir/hb.node")" = "8 2 0 0" ] && pass || fail "B, j: .node not 8 vertices without markers"
+[ "$(head -1 "$dir/hb.edge")" = "8 0" ] && pass || fail "B: .edge has markers"
+[ "$(awk 'NR > 1 {print NF}' "$dir/hb.edge" | sort -u)" = 3 ] && pass || fail "B: .edge lines have markers"
+expect 0 "check the mesh without the jettisoned vertex" -- "$ridt" check "$dir/hb.node" "$dir/hb.ele" --edges "$dir/hb.edge"
+expect 0 "mesh -pNE" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hn.ele" --switches pNEq30
+absent "$dir/hn.ele"; absent "$dir/hn.node"
+[ -s "$dir/hn.edge" ] && pass || fail "N, E: no .edge either"
 expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30
 [ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"

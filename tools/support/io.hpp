@@ -119,11 +119,14 @@ struct MeshFiles {
   std::size_t point_attribute_count = 0;
   std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh, where not empty
   int first_index = 0;  ///< the numbering of every file
+  bool markers = true;  ///< boundary markers in OUT.node and OUT.edge (Triangle's -B: none)
+  bool write_node = true, write_ele = true;  ///< OUT.node, OUT.ele (Triangle's -N, -E: neither)
 };
 
-/// The files write_mesh_files writes for OUT.ele `ele`: it, then OUT.node, OUT.edge and, with
-/// `neighbors`, OUT.neigh.
-std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors);
+/// The files write_mesh_files writes for OUT.ele `ele`: it (unless not `elements`), then
+/// OUT.node (unless not `node`), OUT.edge and, with `neighbors`, OUT.neigh.
+std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors, bool node = true,
+                                         bool elements = true);
 
 /// Writes the mesh's files (mesh_file_paths), all or none: each is written under a temporary
 /// name and all are renamed once all are written; IoError where one cannot be (a directory in

@@ -172,14 +172,16 @@ namespace ridt::io {
 
 namespace {
 
+// `markers` one an edge (none: 1 each); without `column`, no marker column at all.
 void put_edges(detail::Writer& out, std::span<const VertexId> edges, int first_index, unsigned threads,
-               std::span<const std::int64_t> markers = {}) {
+               std::span<const std::int64_t> markers = {}, bool column = true) {
   out.put_int(static_cast<std::int64_t>(edges.size() / 2));
-  out.put(" 1\n");
+  out.put(column ? " 1\n" : " 0\n");
   out.put_lines(edges.size() / 2, threads, [&](std::size_t k, TextPart& line) {
     line.put_int(static_cast<std::int64_t>(k) + first_index);
     for (int e = 0; e < 2; ++e) line.put(' '), line.put_int(static_cast<std::int64_t>(edges[2 * k + e]) + first_index);
-    line.put(' '), line.put_int(markers.empty() ? 1 : markers[k]), line.put('\n');
+    if (column) line.put(' '), line.put_int(markers.empty() ? 1 : markers[k]);
+    line.put('\n');
   });
 }
 
@@ -215,9 +217,12 @@ void write_elements(const std::string& path, std::span<const VertexId> triangles
   out.commit();
 }
 
-std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors) {
+std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors, bool node, bool elements) {
   const std::string base = detail::fs::path(ele).replace_extension().string();
-  std::vector<std::string> paths = {ele, base + ".node", base + ".edge"};
+  std::vector<std::string> paths;
+  if (elements) paths.push_back(ele);
+  if (node) paths.push_back(base + ".node");
+  paths.push_back(base + ".edge");
   if (neighbors) paths.push_back(base + ".neigh");
   return paths;
 }
@@ -230,13 +235,16 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
   // Every file opened first (a directory in the way is refused before any is written), all
   // written and closed, then renamed together.
   std::vector<std::unique_ptr<detail::Writer>> out;
-  for (const std::string& path : mesh_file_paths(ele, !m.neighbors.empty()))
+  for (const std::string& path : mesh_file_paths(ele, !m.neighbors.empty(), m.write_node, m.write_ele))
     out.push_back(std::make_unique<detail::Writer>(path));
-  detail::write_ele(*out[0], m.triangles, m.first_index, m.attributes, threads, m.nodes);
-  detail::write_node(*out[1], m.points, m.first_index, threads, m.point_markers,
-                     {m.point_attributes, m.point_attribute_count});
-  put_edges(*out[2], m.edges, m.first_index, threads, m.edge_markers);
-  if (out.size() > 3) detail::write_neigh(*out[3], m.neighbors, m.first_index, threads);
+  std::size_t next = 0;
+  if (m.write_ele) detail::write_ele(*out[next++], m.triangles, m.first_index, m.attributes, threads, m.nodes);
+  if (m.write_node)
+    detail::write_node(*out[next++], m.points, m.first_index, threads,
+                       m.markers ? m.point_markers : std::span<const std::int64_t>{},
+                       {m.point_attributes, m.point_attribute_count});
+  put_edges(*out[next++], m.edges, m.first_index, threads, m.edge_markers, m.markers);
+  if (next < out.size()) detail::write_neigh(*out[next], m.neighbors, m.first_index, threads);
   for (const auto& w : out) w->close();
   commit_all(out);
 }
