@@ -16,7 +16,9 @@ of every edge, after the vertices; each triangle its corners, then the nodes of 
 across from them), ``O`` (the holes ignored), ``z`` (indices from 0: always so here),
 ``Q``/``V`` (quiet, verbose) and ``i``, ``F``, ``l``, ``X``, ``I`` (Triangle's choice of
 algorithm, its exact arithmetic off, its file names: the exact result does not depend on them),
-these last ignored; ``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
+these last ignored; ``B`` (no markers in the result), ``j`` (the vertices of no triangle left out,
+the rest numbered in order), ``C`` (the result checked exactly: RuntimeError where it fails);
+``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
 with ``p`` its 'segments', kept; with ``a`` and no number each triangle to its
 'triangle_max_area'; its 'triangle_attributes' carried). The others (``v``, ...) are refused
 with ValueError.
@@ -41,7 +43,7 @@ from ._constrained import ConstrainedDelaunay
 from ._delaunay import DegenerateInputWarning, hull_edges
 from ._voronoi import ray_directions
 
-_TAKEN = set("prqaAcDYSenozOQViFlXI")
+_TAKEN = set("prqaAcDYSenozOBjCQViFlXI")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
@@ -53,8 +55,8 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
     while i < len(opts):
         c = opts[i]
         if c not in _TAKEN:
-            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, S, e, n, o2, O, z, Q, V; "
-                             "i, F, l, X, I are ignored)")
+            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, S, e, n, o2, O, z, B, j, "
+                             "C, Q, V; i, F, l, X, I are ignored)")
         if c == "o" and opts[i + 1:i + 2] != "2":
             raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
         if c == "Y" and "Y" in flags:
@@ -136,6 +138,30 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
         out["neighbors"] = cdt.neighbors.copy()
     if "o" in flags:
         _six_nodes(out, cdt, boundary, pieces)
+    return _as_asked(out, cdt, flags)
+
+
+def _as_asked(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, flags: set) -> Dict[str, np.ndarray]:
+    """'C': the exact check (RuntimeError where it fails); 'B': no markers; 'j': the vertices of
+    no triangle left out, the rest numbered in order (the triangles, segments and edges with
+    them)."""
+    if "C" in flags:
+        valid, message = cdt.check()
+        if not valid:
+            raise RuntimeError(f"ridt.triangle: the mesh fails its consistency check: {message}")
+    if "B" in flags:
+        for key in ("vertex_markers", "segment_markers", "edge_markers"):
+            out.pop(key, None)
+    if "j" in flags:
+        used = np.zeros(len(out["vertices"]), dtype=bool)
+        used[out["triangles"].ravel()] = True
+        new = np.cumsum(used) - 1
+        for key in ("vertices", "vertex_markers", "vertex_attributes"):
+            if key in out:
+                out[key] = out[key][used]
+        for key in ("triangles", "segments", "edges"):
+            if key in out:
+                out[key] = new[out[key]].astype(np.intc)
     return out
 
 

@@ -207,6 +207,23 @@ def test_a_mesh_refined_again_from_the_class():
     assert finer.ninput == cdt.npoints and len(finer.added) == finer.npoints - cdt.npoints
 
 
+def test_switches_for_the_result():
+    # B: no markers; j: the vertex in the hole left out, the rest renumbered; C: checked.
+    pts = np.array(SQUARE + HOLE + [(5, 5)], dtype=float)
+    tri = {"vertices": pts, "segments": np.array(loop(0) + loop(4)), "holes": [[5.5, 5.5]]}
+    full = triangle.triangulate(tri, "pe")
+    t = triangle.triangulate(tri, "pBjCe")
+    assert not {"vertex_markers", "segment_markers", "edge_markers"} & set(t)
+    assert len(full["vertices"]) == 9 and len(t["vertices"]) == 8
+    assert t["vertices"].tolist() == full["vertices"][:8].tolist()  # the unused one was last
+    assert triangle_set(t["triangles"]) == triangle_set(full["triangles"])
+    assert sorted(map(tuple, t["edges"])) == sorted(map(tuple, full["edges"]))
+    moved = triangle.triangulate({**tri, "vertices": np.concatenate([pts[8:], pts[:8]]),
+                                  "segments": np.array(loop(0) + loop(4)) + 1}, "pj")
+    assert moved["vertices"].tolist() == full["vertices"][:8].tolist()
+    assert triangle_set(moved["triangles"]) == triangle_set(full["triangles"])
+
+
 def test_refused():
     with pytest.raises(ValueError, match="'S' needs"):
         triangle.triangulate({"vertices": SQUARE}, "pS")
