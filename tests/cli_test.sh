@@ -513,6 +513,24 @@ stderr_has "consistency check: valid"
 [ "$(head -1 "$dir/hb.edge")" = "8 0" ] && pass || fail "B: .edge has markers"
 [ "$(awk 'NR > 1 {print NF}' "$dir/hb.edge" | sort -u)" = 3 ] && pass || fail "B: .edge lines have markers"
 expect 0 "check the mesh without the jettisoned vertex" -- "$ridt" check "$dir/hb.node" "$dir/hb.ele" --edges "$dir/hb.edge"
+# 'e' after a number is the next switch (Triangle's numbers have no exponent but one with digits).
+expect 0 "mesh -pq30e" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hq.ele" --switches pq30e
+expect 0 "mesh -pqa2e" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hq2.ele" --switches pqa2e
+expect 0 "mesh -pq30a1e-1" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hq3.ele" --switches pq30a1e-1
+expect 0 "check the area read with its exponent" -- "$ridt" check "$dir/hq3.node" "$dir/hq3.ele" --edges "$dir/hq3.edge" --max-area 0.1
+expect 1 "and not a larger one" -- "$ridt" check "$dir/hq3.node" "$dir/hq3.ele" --edges "$dir/hq3.edge" --max-area 0.05
+[ "$(head -1 "$dir/hq.edge" | cut -d' ' -f1)" -gt "$(grep -c . "$dir/hq.ele")" ] && pass || fail "q30e: not every edge"
+# A mesh written with e refined again: its .edge lists every edge, and only those with a
+# nonzero marker (here the boundary) are kept, so the rest can flip and refine freely.
+expect 0 "refine a mesh whose .edge lists every edge" -- "$ridt" mesh "$dir/hq.ele" -o "$dir/hqr.ele" --switches rq30a1
+expect 0 "check it" -- "$ridt" check "$dir/hqr.node" "$dir/hqr.ele" --edges "$dir/hqr.edge" --min-angle 30 --max-area 1
+[ "$(head -1 "$dir/hqr.edge" | cut -d' ' -f1)" -lt "$(head -1 "$dir/hq.edge" | cut -d' ' -f1)" ] && pass || fail "every edge of the .edge kept as a segment"
+expect 2 "file switches with a drawing" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hd.svg" --switches pj
+stderr_has "not drawn"
+# j with six-node triangles and numbering from 0: every node kept (all are used), indices from 0.
+expect 0 "mesh -pjzo2" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hj6.ele" --switches pjzo2
+[ "$(head -1 "$dir/hj6.ele")" = "8 6 0" ] && [ "$(sed -n 2p "$dir/hj6.node" | cut -d' ' -f1)" = 0 ] && pass || fail "j, z, o2"
+[ "$(head -1 "$dir/hj6.node" | cut -d' ' -f1)" = 24 ] && pass || fail "j, o2: not 8 corners and 16 middles"
 expect 0 "mesh -pNE" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hn.ele" --switches pNEq30
 absent "$dir/hn.ele"; absent "$dir/hn.node"
 [ -s "$dir/hn.edge" ] && pass || fail "N, E: no .edge either"

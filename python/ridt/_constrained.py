@@ -56,7 +56,9 @@ class ConstrainedDelaunay:
     min_angle, max_area : float
         Quality bounds (0: none).
     split_boundary : bool
-        False adds no point on the boundary's segments (Triangle's ``-Y``).
+        False adds no point on the boundary's segments (Triangle's ``-Y``): a triangle with an
+        angle below `min_angle` may then stay where its point would fall on the boundary, and
+        ``check()`` tests the area bound alone.
     conforming : bool
         Split segments until every edge, theirs too, is Delaunay (Triangle's ``-D``).
     method, threads, seed
@@ -106,7 +108,7 @@ class ConstrainedDelaunay:
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
             bool(conforming), int(max_steiner))
-        self._take(pts, segs, seeds, result, min_angle, max_area)
+        self._take(pts, segs, seeds, result, min_angle if split_boundary else 0.0, max_area)
 
     @classmethod
     def from_mesh(cls, points: Any, simplices: Any, segments: Any = None, *, min_angle: float = 0.0,
@@ -122,7 +124,9 @@ class ConstrainedDelaunay:
         triangle that holds its centroid; ``attributes`` are `triangle_attributes` (one a given
         triangle) by the same rule. Every point keeps its index; ``added`` are the points
         refinement added. ValueError for a triangle clockwise or without area, triangles that
-        overlap, a segment that is no edge, or per-triangle values not one a triangle."""
+        overlap about a vertex or along an edge (pieces that overlap without sharing a vertex
+        are not found), a segment that is no edge, or per-triangle values not one a triangle.
+        Six-column simplices are not taken: pass an ``o2`` mesh's first three columns."""
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay.from_mesh")
         tris = np.asarray(simplices)
         if tris.ndim != 2 or tris.shape[1] != 3 or (tris.size and not np.issubdtype(tris.dtype, np.integer)):
@@ -149,7 +153,7 @@ class ConstrainedDelaunay:
             _api.thread_count(threads), float(min_angle), float(max_area), bool(split_boundary), bool(conforming),
             int(max_steiner))
         self = cls.__new__(cls)
-        self._take(pts, segs, np.zeros((0, 2)), result, min_angle, max_area)
+        self._take(pts, segs, np.zeros((0, 2)), result, min_angle if split_boundary else 0.0, max_area)
         return self
 
     def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,

@@ -222,6 +222,11 @@ def test_switches_for_the_result():
                                   "segments": np.array(loop(0) + loop(4)) + 1}, "pj")
     assert moved["vertices"].tolist() == full["vertices"][:8].tolist()
     assert triangle_set(moved["triangles"]) == triangle_set(full["triangles"])
+    assert sorted(map(tuple, np.sort(moved["segments"], axis=1))) == sorted(map(tuple, np.sort(full["segments"], axis=1)))
+    assert moved["segments"].dtype == np.intc
+    six = triangle.triangulate({**tri, "vertex_attributes": np.arange(9.0)}, "pjo2")
+    assert six["triangles"].shape[1] == 6 and six["triangles"].max() == len(six["vertices"]) - 1
+    assert len(six["vertex_attributes"]) == len(six["vertices"]) == len(six["vertex_markers"])
 
 
 def test_refused():

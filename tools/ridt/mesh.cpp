@@ -34,14 +34,20 @@ struct Args {
        no_markers = false, no_node = false, no_ele = false, all_edges = false, jettison = false, consistency = false;
 };
 
-// The number that follows switch `at` in Triangle's switch string (digits, '.', 'e' and a sign
-// after 'e'), or "" where none does; `at` moves past it.
+// The number that follows switch `at` in Triangle's switch string (digits and '.', then an
+// exponent: 'e', an optional sign and digits; an 'e' not followed so is the next switch, as in
+// "q30e"), or "" where none does; `at` moves past it.
 std::string number_after(const std::string& s, std::size_t& at) {
+  auto digit = [&s](std::size_t i) { return i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])); };
   std::size_t end = at + 1;
-  while (end < s.size() &&
-         (std::isdigit(static_cast<unsigned char>(s[end])) || s[end] == '.' || s[end] == 'e' ||
-          ((s[end] == '-' || s[end] == '+') && s[end - 1] == 'e')))
-    ++end;
+  while (digit(end) || (end < s.size() && s[end] == '.')) ++end;
+  if (end > at + 1 && end < s.size() && s[end] == 'e') {
+    const std::size_t sign = end + 1 < s.size() && (s[end + 1] == '-' || s[end + 1] == '+') ? 1 : 0;
+    if (digit(end + 1 + sign)) {
+      end += 1 + sign;
+      while (digit(end)) ++end;
+    }
+  }
   std::string n = s.substr(at + 1, end - at - 1);
   at = end - 1;
   return n;
@@ -158,9 +164,10 @@ int finish(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t, 
     spec.input_points = g.points.size();
     spec.holes = holes;
     const Quality q = quality_of(a);
-    const bool bounds = t.warning.empty() && q.split_boundary;  // with -Y a bad triangle may have to stay
-    spec.min_angle = bounds ? q.min_angle : 0;
-    spec.max_area = bounds ? q.max_area : 0;
+    // Where refinement stopped early no bound holds; with -Y a triangle with a small angle may
+    // have to stay (its point would fall on the boundary), though none too large does.
+    spec.min_angle = t.warning.empty() && q.split_boundary ? q.min_angle : 0;
+    spec.max_area = t.warning.empty() ? q.max_area : 0;
     const CheckResult r = check_mesh(all, t.triangles, spec);
     std::fprintf(stderr, "ridt: consistency check: %s\n", r.message.c_str());
     valid = r.valid;
@@ -173,9 +180,22 @@ int finish(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t, 
   return valid ? 0 : kExitInvalid;
 }
 
+// The segments that a mesh's .edge file gives: all its edges where it lists fewer than there
+// are (ridt mesh's OUT.edge: the segments' edges); where it lists as many as a mesh of
+// `triangles` has at least (3 a triangle, each inside edge shared: Triangle's -e, ridt's e),
+// those with a nonzero marker (a segment's own, or 1 on the boundary).
+std::vector<VertexId> segments_of_edges(const std::string& path, const io::Pslg& g, std::size_t triangles) {
+  std::vector<std::int64_t> markers;
+  std::vector<VertexId> edges = io::read_edge_file(path, g.points.size(), g.first_index, &markers);
+  if (edges.size() < 3 * triangles || markers.empty()) return edges;  // 2 numbers an edge, 3/2 edges a triangle
+  std::vector<VertexId> marked;
+  for (std::size_t k = 0; k < markers.size(); ++k)
+    if (markers[k] != 0) marked.push_back(edges[2 * k]), marked.push_back(edges[2 * k + 1]);
+  return marked;
+}
+
 // Triangle's -r: IN.ele and IN.node refined, with the segments of IN.poly (with switch p, as
-// Triangle's -rp) or else of IN.edge (ridt mesh's OUT.edge: the segments' edges), where there,
-// kept; IN.area's bounds with -a and no number; the .ele's first attribute carried.
+// Triangle's -rp) or else of IN.edge (segments_of_edges), where there, kept; IN.area's bounds with -a and no number; the .ele's first attribute carried.
 int run_refine(const Args& a, const std::vector<std::string>& out, const Options& o) {
   if (io::extension(a.input) != ".ele")
     throw InputError("switch 'r' refines a mesh: give its .ele (its .node is read beside it)");
@@ -193,7 +213,7 @@ int run_refine(const Args& a, const std::vector<std::string>& out, const Options
     g.segments = p.segments, g.segment_markers = p.segment_markers;
     read.push_back(base + ".poly");
   } else if (std::filesystem::exists(base + ".edge")) {
-    g.segments = io::read_edge_file(base + ".edge", g.points.size(), g.first_index);
+    g.segments = segments_of_edges(base + ".edge", g, triangles.size() / 3);
     read.push_back(base + ".edge");
   }
   std::vector<double> areas;
@@ -216,6 +236,8 @@ int run(Args a) {
     refuse_ignored(a.attributes, "--attributes (A)", why);
     refuse_ignored(a.zero_based, "numbering from 0 (z)", why);
     refuse_ignored(a.second_order, "--second-order (o2)", why);
+    refuse_ignored(a.all_edges || a.no_markers || a.jettison || a.no_node || a.no_ele, "switches e, B, j, N and E",
+                   why);
   }
   const std::vector<std::string> out = outputs(a);
   Options o;

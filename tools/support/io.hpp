@@ -90,8 +90,10 @@ void write_mesh_svg(const std::string& path, std::span<const Point> points, cons
                     std::span<const VertexId> edges);
 
 /// Reads Triangle's .edge file ("edges [markers]", then "i a b [marker]" numbered from
-/// `first_index`, each end one of `points`) as pairs of 0-based indices; throws IoError.
-std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index);
+/// `first_index`, each end one of `points`) as pairs of 0-based indices, and where `markers`
+/// is not null each edge's marker into it (none where the file has no markers); throws IoError.
+std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index,
+                                     std::vector<std::int64_t>* markers = nullptr);
 
 /// Reads Triangle's .area file ("triangles", then "i max_area" numbered from `first_index`, a
 /// bound of 0 or below meaning none) for a mesh of `triangles`; throws IoError.

@@ -249,7 +249,8 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
   commit_all(out);
 }
 
-std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index) {
+std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index,
+                                     std::vector<std::int64_t>* markers) {
   const detail::FileText text(path);
   const std::vector<detail::Line> lines = detail::split_lines(text.view(), 1);
   Pslg g;
@@ -258,6 +259,7 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
   const std::size_t at = detail::read_segments(path, lines, 0, 1, g);
   if (at != lines.size())
     detail::fail_line(path, lines[at].number, "unexpected line " + detail::quoted(lines[at].text));
+  if (markers != nullptr) *markers = std::move(g.segment_markers);
   return std::move(g.segments);
 }
 
