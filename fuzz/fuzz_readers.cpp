@@ -121,6 +121,15 @@ void six_nodes(const std::vector<Point>& all, const ridt::Triangulation& t) {
           std::minmax(s.ends[2 * q], s.ends[2 * q + 1]) != std::minmax(a, b))
         finding("six-node triangles: a node is not the middle of the edge across from its corner");
     }
+  std::vector<Point> nodes = all;
+  nodes.insert(nodes.end(), s.nodes.begin(), s.nodes.end());
+  std::vector<VertexId> corners, middles;
+  for (auto six = s.triangles.begin(); six != s.triangles.end(); six += 6) {
+    corners.insert(corners.end(), six, six + 3);
+    middles.insert(middles.end(), six + 3, six + 6);
+  }
+  if (const ridt::CheckResult r = ridt::check_second_order(nodes, corners, middles); !r.valid)
+    finding("check_second_order rejects second_order's nodes: " + r.message);
 }
 
 // A constrained triangulation or mesh through the exact validator of meshes, and its six-node

@@ -427,8 +427,16 @@ for _, x, y, a1, a2, m in nodes[1 + first:]:
 PY
 expect 0 "mesh --second-order" -- "$ridt" mesh "$dir/marked.poly" -o "$dir/marked6b.ele" --quality 30 --max-area 5 --second-order
 cmp -s "$dir/marked6.ele" "$dir/marked6b.ele" && cmp -s "$dir/marked6.node" "$dir/marked6b.node" && pass || fail "--second-order is not o2"
-expect 2 "check of six-node triangles" -- "$ridt" check "$dir/marked6.node" "$dir/marked6.ele"
-stderr_has "six-node triangles"
+# ridt check takes six-node triangles: their corners as a mesh, then each middle node the rounded
+# mean of its edge's ends, one an edge, shared by the edge's triangles; a node moved is found.
+expect 0 "check of six-node triangles" -- "$ridt" check "$dir/marked6.node" "$dir/marked6.ele" --poly "$dir/marked.poly" --edges "$dir/marked6.edge" --min-angle 30 --max-area 5
+stdout_has "six-node triangles"
+awk 'NR == 2 {$7 = $6} {print}' "$dir/marked6.ele" >"$dir/bad6.ele"
+expect 1 "check of a six-node triangle with a wrong middle" -- "$ridt" check "$dir/marked6.node" "$dir/bad6.ele" --poly "$dir/marked.poly" --edges "$dir/marked6.edge"
+stdout_has "not the middle of its edge"
+# A six-node mesh refined: its corners, the middles left unused.
+expect 0 "refine a six-node mesh" -- "$ridt" mesh "$dir/marked6.ele" -o "$dir/marked6r.ele" --switches rq30a2o2
+expect 0 "check it" -- "$ridt" check "$dir/marked6r.node" "$dir/marked6r.ele" --edges "$dir/marked6r.edge" --min-angle 30 --max-area 2
 expect 2 "mesh o3 refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches po3
 expect 2 "six-node triangles are not drawn" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m6.svg" --second-order
 # Points alone (.node, Triangle's input without -p): their convex hull, Delaunay, and meshed to

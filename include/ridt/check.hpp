@@ -90,6 +90,14 @@ struct MeshSpec {
 /// the input's, then those added.
 CheckResult check_mesh(std::span<const Point> points, std::span<const VertexId> triangles, const MeshSpec& spec);
 
+/// Checks six-node triangles (second_order's, Triangle's -o2) beside their corners, which check()
+/// or check_mesh() validate: `middles` (3 a triangle of `triangles`) are, for each corner i, the
+/// node of the edge across from it, each exactly the mean of the edge's ends rounded once
+/// (std::midpoint, coordinate by coordinate), the same node from the edge's two triangles, no
+/// node the middle of two edges, and none a corner of any triangle.
+CheckResult check_second_order(std::span<const Point> points, std::span<const VertexId> triangles,
+                               std::span<const VertexId> middles);
+
 /// Checks with exact arithmetic that `triangles` is the farthest-point Delaunay triangulation
 /// of `points` (triangulate_furthest_site's, counter-clockwise): every triangle
 /// counter-clockwise and not degenerate; each directed edge used at most once; across each

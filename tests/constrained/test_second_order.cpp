@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
 
@@ -75,6 +76,50 @@ TEST(SecondOrder, EveryEdgeOfAQualityMeshWithHolesOnce) {
   EXPECT_GT(expect_six_nodes(all, t, s), 3 * t.size() / 2);
   // Numbered as the triangles first meet their edges: the first triangle's three come first.
   EXPECT_EQ(s.triangles[3], all.size());
+}
+
+// check_second_order accepts second_order's nodes and names each way of getting them wrong.
+TEST(SecondOrder, TheValidatorTakesItsNodesAndFindsWrongOnes) {
+  const Pslg g = generate_coastline(400, 2, 7);
+  Domain d;
+  d.convex_hull = false;
+  d.holes = g.holes;
+  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, {}, d);
+  std::vector<Point> all = g.points;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  const SecondOrder s = second_order(all, t);
+  std::vector<Point> nodes = all;
+  nodes.insert(nodes.end(), s.nodes.begin(), s.nodes.end());
+  std::vector<VertexId> corners, middles;
+  for (std::size_t k = 0; k < t.size(); ++k)
+    for (int i = 0; i < 3; ++i)
+      corners.push_back(s.triangles[6 * k + i]), middles.push_back(s.triangles[6 * k + 3 + i]);
+  const CheckResult ok = check_second_order(nodes, corners, middles);
+  EXPECT_TRUE(ok.valid) << ok.message;
+  auto verdict = [&](std::vector<Point> p, std::vector<VertexId> m) {
+    const CheckResult r = check_second_order(p, corners, m);
+    EXPECT_FALSE(r.valid);
+    return r.message;
+  };
+  std::vector<Point> moved = nodes;
+  moved[middles[0]].x = std::nextafter(moved[middles[0]].x, 1e300);  // an ulp off the middle
+  EXPECT_NE(verdict(moved, middles).find("not the middle"), std::string::npos);
+  std::vector<VertexId> corner = middles;
+  corner[0] = corners[0];  // a corner for a middle
+  EXPECT_NE(verdict(nodes, corner).find("is a corner"), std::string::npos);
+  // Two nodes for one edge: the first triangle's middle of an inner edge swapped for a fresh one.
+  std::size_t slot = 0;
+  while (t.neighbors[slot] < 0) ++slot;
+  std::vector<Point> more = nodes;
+  more.push_back(nodes[middles[slot]]);
+  std::vector<VertexId> twice = middles;
+  twice[slot] = static_cast<VertexId>(more.size() - 1);
+  EXPECT_NE(verdict(more, twice).find("two nodes"), std::string::npos);
+  std::vector<VertexId> shared = middles;  // one node for two edges of a triangle
+  shared[1] = shared[0];
+  EXPECT_NE(verdict(nodes, shared).find("not the middle"), std::string::npos);
+  EXPECT_NE(verdict(nodes, std::vector<VertexId>(middles.begin(), middles.end() - 1)).find("3 middle nodes"),
+            std::string::npos);
 }
 
 TEST(SecondOrder, MiddlesOfTheLargestAndSmallestDoublesAreExact) {

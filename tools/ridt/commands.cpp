@@ -33,57 +33,96 @@ Command add_generate(CLI::App& app) {
           }};
 }
 
+namespace {
+
+struct CheckArgs {
+  std::string points, triangles, poly, edges;
+  double min_angle = 0, max_area = 0;
+  bool mesh() const { return !poly.empty() || !edges.empty() || min_angle != 0 || max_area != 0; }
+};
+
+// Triangles (corners) as a Delaunay triangulation of `points`, or as a mesh where a mesh's
+// options are given.
+CheckResult check_corners(const CheckArgs& a, std::span<const Point> points, int first_index,
+                          std::span<const VertexId> t, unsigned threads) {
+  if (!a.mesh()) return check(points, t);
+  const io::Pslg g = a.poly.empty() ? io::Pslg{} : io::read_pslg(a.poly, threads);
+  std::vector<VertexId> edges;
+  if (!a.edges.empty()) edges = io::read_edge_file(a.edges, points.size(), first_index);
+  MeshSpec spec;
+  spec.edges = edges;
+  spec.segments = g.segments;
+  spec.input_points = a.poly.empty() ? 0 : g.points.size();
+  spec.holes = g.holes;
+  spec.min_angle = a.min_angle;
+  spec.max_area = a.max_area;
+  return check_mesh(points, t, spec);
+}
+
+// Six-node triangles (-o2): their middles, then their corners. A Delaunay triangulation is of
+// every point, so for one the middles (no corner, as checked) leave the point list, the rest
+// renumbered in order.
+CheckResult check_six(const CheckArgs& a, const io::PointFile& p, std::span<const VertexId> t,
+                      std::span<const VertexId> middles, unsigned threads) {
+  const CheckResult six = check_second_order(p.points, t, middles);
+  if (!six.valid) return six;
+  std::vector<Point> kept;
+  std::vector<VertexId> id(p.points.size(), 0), renumbered;
+  for (const VertexId m : middles) id[m] = 1;
+  for (std::size_t v = 0; v < id.size(); ++v)
+    if (id[v] == 0) id[v] = static_cast<VertexId>(kept.size()), kept.push_back(p.points[v]);
+  for (const VertexId v : t) renumbered.push_back(id[v]);
+  CheckResult corners = a.mesh() ? check_corners(a, p.points, p.first_index, t, threads) : check(kept, renumbered);
+  if (corners.valid) corners.message += "; " + six.message.substr(7);  // after "valid: "
+  return corners;
+}
+
+int run_check(const CheckArgs& a) {
+  // NaN compared false with every bound, and a negative one checked nothing: "valid".
+  if (!(a.min_angle >= 0 && a.min_angle < 60))
+    throw InputError("--min-angle: an angle in degrees from 0 to below 60, got " + std::to_string(a.min_angle));
+  if (!(a.max_area >= 0) || !std::isfinite(a.max_area))
+    throw InputError("--max-area: a positive finite area, got " + std::to_string(a.max_area));
+  const unsigned threads = thread_count(0);  // as check() takes
+  const io::PointFile p = io::read_points(a.points, threads);
+  const CheckResult r = [&] {
+    if (!a.mesh() && io::is_parts_index(a.triangles)) {
+      // Parts may hold more triangles than memory with their edge table: read in passes, a
+      // part at a time.
+      const std::vector<std::string> parts = io::part_files(a.triangles);
+      return check_in_passes(p.points, [&](const TriangleSink& sink) {
+        for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
+      });
+    }
+    // A .ele may be of six-node triangles (-o2).
+    std::vector<double> attributes;
+    std::vector<VertexId> middles;
+    const std::vector<VertexId> t = io::extension(a.triangles) == ".ele"
+        ? io::read_elements(a.triangles, p.first_index, attributes, middles, threads)
+        : io::read_triangles(a.triangles, p.first_index, threads);
+    return middles.empty() ? check_corners(a, p.points, p.first_index, t, threads)
+                           : check_six(a, p, t, middles, threads);
+  }();
+  std::printf("%s\n", r.message.c_str());
+  return r.valid ? 0 : kExitInvalid;
+}
+
+}  // namespace
+
 Command add_check(CLI::App& app) {
-  struct Args {
-    std::string points, triangles, poly, edges;
-    double min_angle = 0, max_area = 0;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<CheckArgs>();
   CLI::App* chk = app.add_subcommand("check", "validate a triangulation or mesh exactly");
   chk->add_option("points", a->points, "the points (for a mesh, every vertex: ridt mesh's OUT.node)")->required();
   chk->add_option("triangles", a->triangles,
-                  "the triangles: " + io::triangle_formats() + ", or the .parts index of ridt-mpi's parts")
+                  "the triangles: " + io::triangle_formats() +
+                      " (a .ele of six-node triangles, -o2: their middles checked too), or the .parts index of "
+                      "ridt-mpi's parts")
       ->required();
   chk->add_option("--poly", a->poly, "a mesh's input .poly: its segments must be chains of edges, its holes empty");
   chk->add_option("--edges", a->edges, "a mesh's .edge file (ridt mesh's OUT.edge): its segment edges");
   chk->add_option("--min-angle", a->min_angle, "no angle below DEG degrees (but beside small input angles)");
   chk->add_option("--max-area", a->max_area, "no triangle larger than A");
-  return {
-      chk, [a] {
-        // NaN compared false with every bound, and a negative one checked nothing: "valid".
-        if (!(a->min_angle >= 0 && a->min_angle < 60))
-          throw InputError("--min-angle: an angle in degrees from 0 to below 60, got " + std::to_string(a->min_angle));
-        if (!(a->max_area >= 0) || !std::isfinite(a->max_area))
-          throw InputError("--max-area: a positive finite area, got " + std::to_string(a->max_area));
-        const unsigned threads = thread_count(0);  // as check() takes
-        const io::PointFile p = io::read_points(a->points, threads);
-        const bool mesh = !a->poly.empty() || !a->edges.empty() || a->min_angle != 0 || a->max_area != 0;
-        const CheckResult r = [&] {
-          if (!mesh && io::is_parts_index(a->triangles)) {
-            // Parts may hold more triangles than memory with their edge table: read in
-            // passes, a part at a time.
-            const std::vector<std::string> parts = io::part_files(a->triangles);
-            return check_in_passes(p.points, [&](const TriangleSink& sink) {
-              for (const std::string& part : parts) sink(io::read_triangles(part, 0, threads));
-            });
-          }
-          const std::vector<VertexId> t = io::read_triangles(a->triangles, p.first_index, threads);
-          if (!mesh) return check(p.points, t);
-          const io::Pslg g = a->poly.empty() ? io::Pslg{} : io::read_pslg(a->poly, threads);
-          std::vector<VertexId> edges;
-          if (!a->edges.empty()) edges = io::read_edge_file(a->edges, p.points.size(), p.first_index);
-          MeshSpec spec;
-          spec.edges = edges;
-          spec.segments = g.segments;
-          spec.input_points = a->poly.empty() ? 0 : g.points.size();
-          spec.holes = g.holes;
-          spec.min_angle = a->min_angle;
-          spec.max_area = a->max_area;
-          return check_mesh(p.points, t, spec);
-        }();
-        std::printf("%s\n", r.message.c_str());
-        return r.valid ? 0 : kExitInvalid;
-      }};
+  return {chk, [a] { return run_check(*a); }};
 }
 
 Command add_voronoi(CLI::App& app) {

@@ -203,7 +203,8 @@ int run_refine(const Args& a, const std::vector<std::string>& out, const Options
   const std::string base = a.input.substr(0, a.input.size() - 4);
   io::Pslg g = io::read_pslg(base + ".node", thread_count(a.threads));
   std::vector<double> attributes;
-  const std::vector<VertexId> triangles = io::read_elements(a.input, g.first_index, attributes, o.threads);
+  std::vector<VertexId> middles;  // of a six-node mesh: left unused, its corners refined
+  const std::vector<VertexId> triangles = io::read_elements(a.input, g.first_index, attributes, middles, o.threads);
   std::vector<std::string> read = {a.input, base + ".node"};
   if (a.switches.find('p') != std::string::npos) {
     const io::Pslg p = io::read_pslg(base + ".poly", thread_count(a.threads));

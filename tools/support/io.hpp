@@ -99,10 +99,12 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
 /// bound of 0 or below meaning none) for a mesh of `triangles`; throws IoError.
 std::vector<double> read_area_file(const std::string& path, std::size_t triangles, int first_index);
 
-/// Reads Triangle's .ele file as read_triangles does, and each triangle's first attribute into
-/// `attributes` (left empty where the file has none).
+/// Reads Triangle's .ele file as read_triangles does, each triangle's first attribute into
+/// `attributes` (left empty where the file has none), and, from a six-node file (-o2), each
+/// triangle's corners returned and its other three nodes (the middles of the edges across from
+/// its corners) into `middles` (left empty for a three-node file).
 std::vector<VertexId> read_elements(const std::string& path, int first_index, std::vector<double>& attributes,
-                                    unsigned threads = 1);
+                                    std::vector<VertexId>& middles, unsigned threads = 1);
 
 /// Writes edges (pairs of 0-based indices) as Triangle's .edge file, numbered from
 /// `first_index`, each with boundary marker 1 (they are segments); formatted on `threads` threads.

@@ -411,9 +411,10 @@ void write_csv_points(Writer& out, std::span<const Point> points, int first_inde
 PointFile read_node(const std::string& path, std::string_view text, unsigned threads = 1);
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads);
 /// The same; `attributes`, where not null, takes each triangle's first attribute (none where the
-/// file has none).
+/// file has none); `middles`, where not null, lets a six-node file (-o2) be read: the corners
+/// returned, the other three nodes of each triangle into it (none for a three-node file).
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads,
-                               std::vector<double>* attributes);
+                               std::vector<double>* attributes, std::vector<VertexId>* middles = nullptr);
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads = 1);
 /// Attributes to write beside points: `count` a point, row by row.
 struct NodeAttributes {

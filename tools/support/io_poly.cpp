@@ -289,9 +289,9 @@ std::vector<double> read_area_file(const std::string& path, std::size_t triangle
 }
 
 std::vector<VertexId> read_elements(const std::string& path, int first_index, std::vector<double>& attributes,
-                                    unsigned threads) {
+                                    std::vector<VertexId>& middles, unsigned threads) {
   const detail::FileText text(path);
-  return detail::read_ele(path, text.view(), first_index, threads, &attributes);
+  return detail::read_ele(path, text.view(), first_index, threads, &attributes, &middles);
 }
 
 void write_mesh_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,

@@ -66,13 +66,14 @@ NodeHeader node_header(const std::string& path, std::size_t line_no, std::string
   return h;
 }
 
-// A .ele file's header: "triangles 3 [attributes]".
+// A .ele file's header: "triangles 3 [attributes]" (or 6 nodes a triangle, where `six`).
 struct EleHeader {
   std::int64_t n = 0, attrs = 0;
+  int nodes = 3;
   std::size_t fields = 4;
 };
 
-EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_view line) {
+EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_view line, bool six) {
   const auto v = fields_of(path, line_no, line, 2, 3, "a header \"triangles 3 [attributes]\"");
   const std::size_t k = v.size();
   EleHeader h;
@@ -80,12 +81,13 @@ EleHeader ele_header(const std::string& path, std::size_t line_no, std::string_v
   const std::int64_t nodes = integer(path, line_no, v[1], "nodes per triangle");
   if (k > 2) h.attrs = integer(path, line_no, v[2], "number of attributes");
   if (h.n < 0) fail_line(path, line_no, "negative number of triangles " + std::to_string(h.n));
-  if (nodes != 3)
+  if (nodes != 3 && !(six && nodes == 6))
     fail_line(path, line_no,
               "nodes per triangle is " + std::to_string(nodes) + ", must be 3" +
-                  (nodes == 6 ? " (six-node triangles, -o2, are written, not read)" : ""));
+                  (nodes == 6 ? " (six-node triangles, -o2, are read by ridt check and ridt mesh -r only)" : ""));
   if (h.attrs < 0 || h.attrs > 1000000) fail_line(path, line_no, "bad number of attributes " + std::to_string(h.attrs));
-  h.fields = 4 + static_cast<std::size_t>(h.attrs);
+  h.nodes = static_cast<int>(nodes);
+  h.fields = 1 + static_cast<std::size_t>(nodes) + static_cast<std::size_t>(h.attrs);
   return h;
 }
 
@@ -109,28 +111,32 @@ Point node_point(const std::string& path, const NodeHeader& h, std::size_t k, st
           coordinate(path, line_no, ys, [&] { return not_a_number(ys); })};
 }
 
-// Triangle k of an .ele file, as node_point reads a point.
-// `attribute`, where not null, takes the triangle's first attribute (0 where it has none).
+// Triangle k of an .ele file, as node_point reads a point: its corners into `out`, its other
+// three nodes (six-node files) into `middles`. `attribute`, where not null, takes the
+// triangle's first attribute.
 void ele_triangle(const std::string& path, const EleHeader& h, std::size_t k, std::size_t line_no,
-                  std::string_view line, std::int64_t& first, int first_index, VertexId* out, double* attribute) {
+                  std::string_view line, std::int64_t& first, int first_index, VertexId* out, VertexId* middles,
+                  double* attribute) {
   Fields f{line, false};
-  std::string_view idx, a, b, c, value;
+  std::string_view idx, node[6], value;
   const auto count_error = [&] {
-    return "expected " + std::to_string(h.fields) + " fields \"index a b c" + (h.attrs > 0 ? " attributes" : "") +
-        "\", got " + quoted(line);
+    return "expected " + std::to_string(h.fields) + " fields \"index " + (h.nodes == 6 ? "a b c ab bc ca" : "a b c") +
+        (h.attrs > 0 ? " attributes" : "") + "\", got " + quoted(line);
   };
-  if (!(f.next(idx) && f.next(a) && f.next(b) && f.next(c))) fail_line(path, line_no, count_error());
+  bool whole = f.next(idx);
+  for (int i = 0; i < h.nodes && whole; ++i) whole = f.next(node[i]);
+  if (!whole) fail_line(path, line_no, count_error());
+  const std::size_t read = 1 + static_cast<std::size_t>(h.nodes);
   if (attribute != nullptr && h.attrs > 0) {
     if (!f.next(value)) fail_line(path, line_no, count_error());
     *attribute = coordinate(path, line_no, value, [&] { return "attribute " + quoted(value) + " is not a number"; });
-    check_rest(f, 5, h.fields, h.fields, path, line_no, count_error);
+    check_rest(f, read + 1, h.fields, h.fields, path, line_no, count_error);
   } else {
-    check_rest(f, 4, h.fields, h.fields, path, line_no, count_error);
+    check_rest(f, read, h.fields, h.fields, path, line_no, count_error);
   }
   check_index(path, line_no, integer(path, line_no, idx, "triangle index"), k, first, "triangle");
-  out[0] = vertex(path, line_no, a, first_index);
-  out[1] = vertex(path, line_no, b, first_index);
-  out[2] = vertex(path, line_no, c, first_index);
+  for (int i = 0; i < 3; ++i) out[i] = vertex(path, line_no, node[i], first_index);
+  for (int i = 3; i < h.nodes; ++i) middles[i - 3] = vertex(path, line_no, node[i], first_index);
 }
 
 // The records after a header (`rest`, `lines` its pieces, `before` the lines before it), each
@@ -184,18 +190,20 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
 }
 
 std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads,
-                               std::vector<double>* attributes) {
+                               std::vector<double>* attributes, std::vector<VertexId>* middles) {
   const std::optional<Head> head = head_line(text);
   if (!head) fail_file(path, "no header line \"triangles 3 [attributes]\"");
-  const EleHeader h = ele_header(path, head->line.number, head->line.text);
+  const EleHeader h = ele_header(path, head->line.number, head->line.text, middles != nullptr);
   const LinePieces lines(head->rest, threads, head->line.number);
   std::vector<VertexId> out(3 * lines.size());
   if (attributes != nullptr) attributes->assign(h.attrs > 0 ? lines.size() : 0, 0.0);
+  if (middles != nullptr) middles->assign(h.nodes == 6 ? 3 * lines.size() : 0, 0);
   std::int64_t first = 0;
   read_records(lines, head->rest, head->line.number, first,
                [&](std::size_t k, std::size_t line_no, std::string_view line, std::int64_t& from) {
                  double* attribute = attributes != nullptr && h.attrs > 0 ? &(*attributes)[k] : nullptr;
-                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k], attribute);
+                 VertexId* middle = h.nodes == 6 ? &(*middles)[3 * k] : nullptr;
+                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k], middle, attribute);
                });
   if (lines.size() != static_cast<std::size_t>(h.n))
     fail_file(path,
