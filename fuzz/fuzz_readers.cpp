@@ -78,7 +78,39 @@ void points(std::string_view data, const char* name) {
   }
 }
 
+// The same .ele read as ridt check and ridt mesh -r read it: refused where read_triangles
+// refuses it but for six nodes a triangle, else the same corners, three middles a triangle or
+// none, one attribute a triangle or none.
+void elements(std::string_view data, int first_index) {
+  const std::string path = (scratch_dir() / "in.ele").string();
+  if (std::FILE* f = std::fopen(path.c_str(), "wb")) {
+    std::fwrite(data.data(), 1, data.size(), f);
+    std::fclose(f);
+  }
+  std::vector<VertexId> corners, tris, middles;
+  std::vector<double> attributes;
+  bool plain = true, read = true;
+  try {
+    corners = io::parse_triangles(data, "in.ele", first_index);
+  } catch (const io::IoError&) {
+    plain = false;
+  }
+  try {
+    tris = io::read_elements(path, first_index, attributes, middles);
+  } catch (const io::IoError&) {
+    read = false;
+  }
+  if (plain && !read) finding("read_elements refused a .ele that read_triangles took");
+  if (!read) return;
+  if (!plain && middles.empty()) finding("read_elements took a three-node .ele that read_triangles refused");
+  if (plain && tris != corners) finding("read_elements read other corners than read_triangles");
+  if (!attributes.empty() && attributes.size() != tris.size() / 3)
+    finding("read_elements: not an attribute a triangle");
+  if (!middles.empty() && middles.size() != tris.size()) finding("read_elements: not three middles a triangle");
+}
+
 void triangles(std::string_view data, const char* name, int first_index) {
+  if (std::string_view(name).ends_with(".ele")) elements(data, first_index);
   std::vector<VertexId> tris;
   try {
     tris = io::parse_triangles(data, name, first_index);
