@@ -261,7 +261,8 @@ void graph(std::string_view data) {
     const ridt::ConstrainedTriangulation meshed = ridt::triangulate_constrained(g.points, g.segments, {}, domain, q);
     ridt::Quality asked = q;
     if (!q.split_boundary) asked.min_angle = asked.max_area = 0;  // -Y: a bad triangle may have to stay
-    if (meshed.steiner.size() < 5000 + meshed.crossings && meshed.warning.empty()) validate(g, meshed, domain, asked);
+    if (meshed.steiner.size() < q.max_steiner + meshed.crossings && meshed.warning.empty())
+      validate(g, meshed, domain, asked);
     refine_again(g, carved, q);
   } catch (const ridt::InputError&) {}
 }

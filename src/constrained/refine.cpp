@@ -20,6 +20,8 @@ namespace refining {
 // end instead; left whole where none can.
 void Refiner::split(std::uint32_t s) {
   if (!splittable(s)) return;
+  const Unsplit key = unsplit_key(s);
+  if (unsplit_.count(key) != 0) return;
   const std::uint32_t t = s / 3;
   const int k = static_cast<int>(s % 3);
   const VertexId x = m_.at(t, k + 1), y = m_.at(t, k + 2);
@@ -34,6 +36,7 @@ void Refiner::split(std::uint32_t s) {
       added(v);
       return;
     }
+  unsplit_.insert(key);
 }
 
 // p added on subsegment s as though it lay on it (it does, up to rounding; on the boundary never

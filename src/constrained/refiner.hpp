@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -397,6 +398,31 @@ class Refiner {
   std::vector<Bad> given_up_;  // triangles left bad: for their shape after 64 tries, too large with no point inside
   Buckets<Bad> bad_;
   std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
+  // Subsegments split could not split, each by its ends and the apexes on either side (kNone
+  // beyond the boundary): the outcome depends on those four alone, so a subsegment asked again
+  // with the same neighbours is not tried again (where coordinates span the doubles' range, a
+  // wedge's bad triangles asked for the same unsplittable subsegments 600,000 times, each try
+  // exact at some thousand bits).
+  struct Unsplit {
+    VertexId v[4];
+    bool operator==(const Unsplit& o) const { return std::equal(v, v + 4, o.v); }
+  };
+  struct UnsplitHash {
+    std::size_t operator()(const Unsplit& u) const {
+      std::uint64_t h = 0;
+      for (const VertexId v : u.v) h = (h ^ v) * 0x9e3779b97f4a7c15u;
+      return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+  };
+  std::unordered_set<Unsplit, UnsplitHash> unsplit_;
+  Unsplit unsplit_key(std::uint32_t s) const {
+    const std::uint32_t t = s / 3;
+    const int k = static_cast<int>(s % 3);
+    const std::int32_t n = m_.nbrs[s];
+    const VertexId across =
+        n < 0 ? Cdt::kNone : m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t));
+    return {{m_.at(t, k + 1), m_.at(t, k + 2), m_.at(t, k), across}};
+  }
 };
 
 }  // namespace ridt::detail::refining
