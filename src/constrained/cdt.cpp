@@ -194,9 +194,25 @@ Point Cdt::not_beyond(std::uint32_t t, int k, Point p) const {
   return p;
 }
 
+std::uint32_t Cdt::new_mark() {
+  if (++marks_ == 0) std::fill(mark_.begin(), mark_.end(), 0), marks_ = 1;
+  mark_.resize(size(), 0);
+  return marks_;
+}
+
 VertexId Cdt::insert_cavity(const Point& p, const std::vector<std::uint32_t>& cavity) {
+  // A cavity's triangles, and below the rim edges by their ends, searched for where they are
+  // few, marked and sorted where they are many (searches through m are m^2 steps, and m can
+  // be thousands where coordinates span the doubles' range; for the few of a typical cavity
+  // the searches are faster).
+  const bool many = cavity.size() > kSearched;
+  const std::uint32_t mark = many ? new_mark() : 0;
+  for (const std::uint32_t t : cavity)
+    if (many) mark_[t] = mark;
   auto inside = [&](std::int32_t n) {
-    return n >= 0 && std::find(cavity.begin(), cavity.end(), static_cast<std::uint32_t>(n)) != cavity.end();
+    if (n < 0) return false;
+    const auto u = static_cast<std::uint32_t>(n);
+    return many ? mark_[u] == mark : std::find(cavity.begin(), cavity.end(), u) != cavity.end();
   };
   rim_.clear();
   for (const std::uint32_t t : cavity)
@@ -216,17 +232,23 @@ VertexId Cdt::insert_cavity(const Point& p, const std::vector<std::uint32_t>& ca
   fan.push_back(add_triangle(cavity[0]));
   fan.push_back(add_triangle(cavity[0]));
   // The fan triangle (x, y, p) of each rim edge; its neighbours across (y, p) and (p, x) are
-  // the fan triangles that start at y and end at x.
-  auto starting = [&](VertexId x) {
-    for (std::size_t i = 0; i < rim_.size(); ++i)
-      if (rim_[i].x == x) return static_cast<std::int32_t>(fan[i]);
-    return std::int32_t{-1};
+  // the fan triangles that start at y and end at x (the first rim edge that does), found in
+  // the rim edges sorted by their ends.
+  from_.clear(), to_.clear();
+  for (std::uint32_t i = 0; i < rim_.size() && many; ++i)
+    from_.push_back({rim_[i].x, i}), to_.push_back({rim_[i].y, i});
+  std::sort(from_.begin(), from_.end()), std::sort(to_.begin(), to_.end());
+  auto first_of = [&](const std::vector<std::pair<VertexId, std::uint32_t>>& sorted, VertexId v, bool at_x) {
+    if (!many) {
+      for (std::size_t i = 0; i < rim_.size(); ++i)
+        if ((at_x ? rim_[i].x : rim_[i].y) == v) return static_cast<std::int32_t>(fan[i]);
+      return std::int32_t{-1};
+    }
+    const auto it = std::lower_bound(sorted.begin(), sorted.end(), std::pair{v, std::uint32_t{0}});
+    return it != sorted.end() && it->first == v ? static_cast<std::int32_t>(fan[it->second]) : std::int32_t{-1};
   };
-  auto ending = [&](VertexId y) {
-    for (std::size_t i = 0; i < rim_.size(); ++i)
-      if (rim_[i].y == y) return static_cast<std::int32_t>(fan[i]);
-    return std::int32_t{-1};
-  };
+  auto starting = [&](VertexId x) { return first_of(from_, x, true); };
+  auto ending = [&](VertexId y) { return first_of(to_, y, false); };
   for (std::size_t i = 0; i < rim_.size(); ++i) {
     const Rim& r = rim_[i];
     set(fan[i], {r.x, r.y, v}, {starting(r.y), ending(r.x), r.out}, {0, 0, r.fixed});

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "ridt/ridt.hpp"
@@ -120,6 +121,19 @@ class Cdt {
   };
   std::vector<Rim> rim_;
   std::vector<std::uint32_t> fan_;  // insert_cavity's triangles, a rim edge each
+  std::vector<std::pair<VertexId, std::uint32_t>> from_, to_;  // insert_cavity's rim edges by their ends
+
+ public:
+  /// Sets of triangles up to this size are searched, not marked (insert_cavity).
+  static constexpr std::size_t kSearched = 32;
+  /// A number no triangle's mark holds yet, the marks grown to every triangle: a set of
+  /// triangles is marked with it, and its members are known at a glance (new_mark() again
+  /// forgets them all).
+  std::uint32_t new_mark();
+  std::vector<std::uint32_t> mark_;  ///< per triangle: the last mark it was given
+
+ private:
+  std::uint32_t marks_ = 0;
 };
 
 }  // namespace ridt::detail

@@ -268,9 +268,25 @@ class Refiner {
   // fixed edge.
   std::vector<std::uint32_t>& would_encroach(const Point& p, const Cdt::Place& at) {
     std::vector<std::uint32_t>&todo = todo_, &seen = seen_, &out = hit_;
+    // The triangles seen: searched for while they are few, marked once they are many (a search
+    // through each of m is m^2 steps, and where coordinates span the doubles' range m can be
+    // thousands; a mark is a miss in memory, slower for the few of a typical cavity).
+    std::uint32_t mark = 0;
+    auto is_seen = [&](std::uint32_t n) {
+      return mark != 0 ? m_.mark_[n] == mark : std::find(seen.begin(), seen.end(), n) != seen.end();
+    };
+    auto see = [&](std::uint32_t n) {
+      seen.push_back(n);
+      if (mark != 0) {
+        m_.mark_[n] = mark;
+      } else if (seen.size() > Cdt::kSearched) {
+        mark = m_.new_mark();
+        for (const std::uint32_t t : seen) m_.mark_[t] = mark;
+      }
+    };
     todo.assign(1, at.t), seen.assign(1, at.t), out.clear();
     if (at.kind == Cdt::Place::Edge && !m_.fixed[3 * at.t + at.k] && m_.nbrs[3 * at.t + at.k] >= 0)
-      todo.push_back(static_cast<std::uint32_t>(m_.nbrs[3 * at.t + at.k])), seen.push_back(todo.back());
+      todo.push_back(static_cast<std::uint32_t>(m_.nbrs[3 * at.t + at.k])), see(todo.back());
     while (!todo.empty()) {
       const std::uint32_t t = todo.back();
       todo.pop_back();
@@ -281,13 +297,13 @@ class Refiner {
           continue;
         }
         const auto n = static_cast<std::uint32_t>(m_.nbrs[s]);
-        if (std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
+        if (is_seen(n)) continue;
         const VertexId* v = &m_.tris[3 * n];
         if (incircle(m_.pts[v[0]], m_.pts[v[1]], m_.pts[v[2]], p) <= 0) {
           __builtin_prefetch(&m_.nbrs[3 * std::size_t{n}]);  // on the rim: the fan links back to it
           continue;
         }
-        seen.push_back(n), todo.push_back(n);
+        todo.push_back(n), see(n);
       }
     }
     return out;
