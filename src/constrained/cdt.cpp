@@ -195,8 +195,8 @@ Point Cdt::not_beyond(std::uint32_t t, int k, Point p) const {
 }
 
 std::uint32_t Cdt::new_mark() {
-  if (++marks_ == 0) std::fill(mark_.begin(), mark_.end(), 0), marks_ = 1;
-  mark_.resize(size(), 0);
+  if (++marks_ == 0) std::fill(mark.begin(), mark.end(), 0), marks_ = 1;
+  mark.resize(size(), 0);
   return marks_;
 }
 
@@ -206,13 +206,13 @@ VertexId Cdt::insert_cavity(const Point& p, const std::vector<std::uint32_t>& ca
   // be thousands where coordinates span the doubles' range; for the few of a typical cavity
   // the searches are faster).
   const bool many = cavity.size() > kSearched;
-  const std::uint32_t mark = many ? new_mark() : 0;
+  const std::uint32_t stamp = many ? new_mark() : 0;
   for (const std::uint32_t t : cavity)
-    if (many) mark_[t] = mark;
+    if (many) mark[t] = stamp;
   auto inside = [&](std::int32_t n) {
     if (n < 0) return false;
     const auto u = static_cast<std::uint32_t>(n);
-    return many ? mark_[u] == mark : std::find(cavity.begin(), cavity.end(), u) != cavity.end();
+    return many ? mark[u] == stamp : std::find(cavity.begin(), cavity.end(), u) != cavity.end();
   };
   rim_.clear();
   for (const std::uint32_t t : cavity)

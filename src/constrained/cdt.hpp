@@ -106,6 +106,14 @@ class Cdt {
   std::vector<std::int32_t> region;  ///< per triangle: its region's index, -1 none (empty: none kept)
   std::vector<std::uint32_t> corner;  ///< per vertex: a slot that holds it, kNone when none
 
+  /// Sets of triangles up to this size are searched, not marked (insert_cavity).
+  static constexpr std::size_t kSearched = 32;
+  /// A number no triangle's mark holds yet, the marks grown to every triangle: a set of
+  /// triangles is marked with it, and its members are known at a glance (new_mark() again
+  /// forgets them all).
+  std::uint32_t new_mark();
+  std::vector<std::uint32_t> mark;  ///< per triangle: the last mark it was given
+
  private:
   void set(std::uint32_t t, const VertexId (&v)[3], const std::int32_t (&n)[3], const std::uint8_t (&f)[3]);
   void relink(std::int32_t n, std::uint32_t from, std::uint32_t to);
@@ -122,18 +130,7 @@ class Cdt {
   std::vector<Rim> rim_;
   std::vector<std::uint32_t> fan_;  // insert_cavity's triangles, a rim edge each
   std::vector<std::pair<VertexId, std::uint32_t>> from_, to_;  // insert_cavity's rim edges by their ends
-
- public:
-  /// Sets of triangles up to this size are searched, not marked (insert_cavity).
-  static constexpr std::size_t kSearched = 32;
-  /// A number no triangle's mark holds yet, the marks grown to every triangle: a set of
-  /// triangles is marked with it, and its members are known at a glance (new_mark() again
-  /// forgets them all).
-  std::uint32_t new_mark();
-  std::vector<std::uint32_t> mark_;  ///< per triangle: the last mark it was given
-
- private:
-  std::uint32_t marks_ = 0;
+  std::uint32_t marks_ = 0;  // new_mark's last
 };
 
 }  // namespace ridt::detail

@@ -273,15 +273,15 @@ class Refiner {
     // thousands; a mark is a miss in memory, slower for the few of a typical cavity).
     std::uint32_t mark = 0;
     auto is_seen = [&](std::uint32_t n) {
-      return mark != 0 ? m_.mark_[n] == mark : std::find(seen.begin(), seen.end(), n) != seen.end();
+      return mark != 0 ? m_.mark[n] == mark : std::find(seen.begin(), seen.end(), n) != seen.end();
     };
     auto see = [&](std::uint32_t n) {
       seen.push_back(n);
       if (mark != 0) {
-        m_.mark_[n] = mark;
+        m_.mark[n] = mark;
       } else if (seen.size() > Cdt::kSearched) {
         mark = m_.new_mark();
-        for (const std::uint32_t t : seen) m_.mark_[t] = mark;
+        for (const std::uint32_t t : seen) m_.mark[t] = mark;
       }
     };
     todo.assign(1, at.t), seen.assign(1, at.t), out.clear();
