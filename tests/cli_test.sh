@@ -535,6 +535,8 @@ expect 0 "check it" -- "$ridt" check "$dir/hqr.node" "$dir/hqr.ele" --edges "$di
 [ "$(head -1 "$dir/hqr.edge" | cut -d' ' -f1)" -lt "$(head -1 "$dir/hq.edge" | cut -d' ' -f1)" ] && pass || fail "every edge of the .edge kept as a segment"
 expect 2 "file switches with a drawing" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hd.svg" --switches pj
 stderr_has "not drawn"
+expect 2 "v with a drawing" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hd.svg" --switches pv
+stderr_has "not drawn"
 # j with six-node triangles and numbering from 0: every node kept (all are used), indices from 0.
 expect 0 "mesh -pjzo2" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hj6.ele" --switches pjzo2
 [ "$(head -1 "$dir/hj6.ele")" = "8 6 0" ] && [ "$(sed -n 2p "$dir/hj6.node" | cut -d' ' -f1)" = 0 ] && pass || fail "j, z, o2"
@@ -542,6 +544,24 @@ expect 0 "mesh -pjzo2" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hj6.ele" --switch
 expect 0 "mesh -pNE" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hn.ele" --switches pNEq30
 absent "$dir/hn.ele"; absent "$dir/hn.node"
 [ -s "$dir/hn.edge" ] && pass || fail "N, E: no .edge either"
+# g (.off for a viewer, 0-based, its header counting the edges) and v (the dual: a vertex at each
+# triangle's circumcentre, an edge across each inner edge, a ray across each boundary edge).
+printf '4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n' >"$dir/sq4.node"
+expect 0 "mesh -vg" -- "$ridt" mesh "$dir/sq4.node" -o "$dir/sv.ele" --switches vg
+[ "$(cat "$dir/sv.v.node")" = "$(printf '2 2 0 0\n1 0.5 0.5\n2 0.5 0.5')" ] && pass || fail "v: .v.node not the two circumcentres"
+[ "$(head -1 "$dir/sv.v.edge")" = "5 0" ] && [ "$(awk 'NR > 1 && $3 == -1' "$dir/sv.v.edge" | wc -l)" = 4 ] && pass || fail "v: not 1 edge and 4 rays"
+[ "$(awk 'NR > 1 && $3 == -1 {print $4, $5}' "$dir/sv.v.edge" | sort | tr '\n' ,)" = "-1 0,0 -1,0 1,1 0," ] && pass || fail "v: the rays are not the sides' outward normals"
+[ "$(head -2 "$dir/sv.off" | tr '\n' ,)" = "OFF,4 2 5," ] && [ "$(tail -1 "$dir/sv.off" | cut -d' ' -f1)" = 3 ] && pass || fail "g: .off header or faces"
+expect 0 "mesh -pjgvz" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hg.ele" --switches pjgvz
+[ "$(sed -n 2p "$dir/hg.off" | cut -d' ' -f1,2)" = "$(head -1 "$dir/hg.node" | cut -d' ' -f1) $(head -1 "$dir/hg.ele" | cut -d' ' -f1)" ] && pass || fail "g with j: .off not the mesh's vertices and triangles"
+[ "$(head -1 "$dir/hg.v.node" | cut -d' ' -f1)" = "$(head -1 "$dir/hg.ele" | cut -d' ' -f1)" ] && pass || fail "v: not a vertex a triangle"
+[ "$(awk 'NR > 1 && $3 == -1' "$dir/hg.v.edge" | wc -l)" = 8 ] && pass || fail "v: not a ray across each of the 8 boundary edges (outer and hole)"
+[ "$(sed -n 2p "$dir/hg.v.edge" | cut -d' ' -f1)" = 0 ] && pass || fail "v with z: not numbered from 0"
+mkdir "$dir/hx.v.edge"  # a directory where the dual's edges go: nothing at all is written
+expect 2 "mesh -pv over a directory" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hx.ele" --switches pv
+absent "$dir/hx.ele"; absent "$dir/hx.node"; absent "$dir/hx.v.node"
+expect 2 "switch s" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hs.ele" --switches ps
+stderr_has "unsupported switch 's'"; absent "$dir/hs.ele"
 expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30
 [ "$(grep -c 'stroke="#c22"' "$dir/m.svg")" -ge 1 ] && pass || fail "the drawing has no segments apart"
 expect 2 "mesh to .off" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.off"

@@ -17,11 +17,15 @@ across from them), ``O`` (the holes ignored), ``z`` (indices from 0: always so h
 ``Q``/``V`` (quiet, verbose) and ``i``, ``F``, ``l``, ``X``, ``I`` (Triangle's choice of
 algorithm, its exact arithmetic off, its file names: the exact result does not depend on them),
 these last ignored; ``B`` (no markers in the result), ``j`` (the vertices of no triangle left out,
-the rest numbered in order), ``C`` (the result checked exactly: RuntimeError where it fails);
-``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
+the rest numbered in order), ``C`` (the result checked exactly: RuntimeError where it fails),
+``v`` (also return the mesh's dual, as Triangle's ``-v`` writes it: 'voronoi_vertices', row t
+the circumcentre of triangle t; 'voronoi_edges', pairs of them across the mesh's inner edges;
+'voronoi_ray_origins' and 'voronoi_ray_directions', a ray from a vertex across each boundary
+edge, along its outward normal; the Voronoi diagram of the vertices where the mesh is Delaunay
+and fills their hull); ``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
 with ``p`` its 'segments', kept; with ``a`` and no number each triangle to its
-'triangle_max_area'; its 'triangle_attributes' carried). The others (``v``, ...) are refused
-with ValueError.
+'triangle_max_area'; its 'triangle_attributes' carried). The others (``u``, ``s``, ``g``,
+``N``, ``E``, ``P``, ...) are refused with ValueError.
 Without ``p`` the result is the Delaunay triangulation of the vertices (refined where ``q`` or
 ``a`` ask). Every triangle is counter-clockwise; indices are 0-based; the points added follow the
 input's in 'vertices'.
@@ -43,7 +47,7 @@ from ._constrained import ConstrainedDelaunay
 from ._delaunay import DegenerateInputWarning, hull_edges
 from ._voronoi import ray_directions
 
-_TAKEN = set("prqaAcDYSenozOBjCQViFlXI")
+_TAKEN = set("prqaAcDYSenozOBjCvQViFlXI")
 _NUMBER = re.compile(r"[0-9.]+(?:e[-+]?[0-9]+)?")
 
 
@@ -56,7 +60,7 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
         c = opts[i]
         if c not in _TAKEN:
             raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, S, e, n, o2, O, z, B, j, "
-                             "C, Q, V; i, F, l, X, I are ignored)")
+                             "C, v, Q, V; i, F, l, X, I are ignored)")
         if c == "o" and opts[i + 1:i + 2] != "2":
             raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
         if c == "Y" and "Y" in flags:
@@ -141,10 +145,28 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     return _as_asked(out, cdt, flags)
 
 
+def _dual(cdt: ConstrainedDelaunay) -> Dict[str, np.ndarray]:
+    """'v': the mesh's dual, a vertex a triangle (cocircular neighbours not merged, so that
+    vertex t stays triangle t's circumcentre, as in Triangle's .v.node)."""
+    points = cdt.points
+    if len(cdt.simplices) == 0:
+        vertices, ridge_points = np.empty((0, 2)), np.empty((0, 2), dtype=np.intc)
+        ridge_vertices = np.empty((0, 2), dtype=np.intc)
+    else:
+        vertices, _, _, _, ridge_points, ridge_vertices = _core.voronoi(points, cdt._tri, 1, False)
+        ridge_points, ridge_vertices = ridge_points.view(np.intc), ridge_vertices.view(np.intc)
+    ray = ridge_vertices[:, 1] < 0
+    return {"voronoi_vertices": vertices, "voronoi_edges": ridge_vertices[~ray].copy(),
+            "voronoi_ray_origins": ridge_vertices[ray, 0].copy(),
+            "voronoi_ray_directions": ray_directions(points, ridge_points[ray])}
+
+
 def _as_asked(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, flags: set) -> Dict[str, np.ndarray]:
-    """'C': the exact check (RuntimeError where it fails); 'B': no markers; 'j': the vertices of
-    no triangle left out, the rest numbered in order (the triangles, segments and edges with
-    them)."""
+    """'v': the mesh's dual; 'C': the exact check (RuntimeError where it fails); 'B': no markers;
+    'j': the vertices of no triangle left out, the rest numbered in order (the triangles,
+    segments and edges with them)."""
+    if "v" in flags:
+        out.update(_dual(cdt))
     if "C" in flags:
         valid, message = cdt.check()
         if not valid:

@@ -405,12 +405,12 @@ void bind_nearest(py::module_& m) {
 void bind_voronoi(py::module_& m) {
   m.def(
       "voronoi",
-      [](const Points& points, const ridt::Triangulation& t, unsigned threads) {
+      [](const Points& points, const ridt::Triangulation& t, unsigned threads, bool merge) {
         const auto pts = as_points(points, "points");
         ridt::Voronoi v;
         {
           py::gil_scoped_release nogil;
-          v = ridt::voronoi(pts, t, threads, true);
+          v = ridt::voronoi(pts, t, threads, merge);
         }
         const auto r = static_cast<py::ssize_t>(v.ridges.size());
         py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});
@@ -431,7 +431,7 @@ void bind_voronoi(py::module_& m) {
                               adopt(std::move(v.cell_vertices), {cell_vertices}),
                               adopt(std::move(v.point_cell), {sites}), ridge_points, ridge_vertices);
       },
-      py::arg("points"), py::arg("triangulation"), py::arg("threads"));
+      py::arg("points"), py::arg("triangulation"), py::arg("threads"), py::arg("merge") = true);
 
   m.def(
       "second_order",

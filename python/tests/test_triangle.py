@@ -232,8 +232,9 @@ def test_switches_for_the_result():
 def test_refused():
     with pytest.raises(ValueError, match="'S' needs"):
         triangle.triangulate({"vertices": SQUARE}, "pS")
-    with pytest.raises(ValueError, match="'u' is not supported"):
-        triangle.triangulate({"vertices": SQUARE}, "pu")
+    for switch in "usgNEP":
+        with pytest.raises(ValueError, match=f"'{switch}' is not supported"):
+            triangle.triangulate({"vertices": SQUARE}, "p" + switch)
     with pytest.raises(ValueError, match="needs 'vertices'"):
         triangle.triangulate({}, "")
     with pytest.raises(TypeError):
@@ -374,6 +375,48 @@ def test_voronoi_matches_scipy():
             near = np.sort(np.hypot(*(pts[side] - vertices[o]).T))
             assert len(side) >= 2 and near[0] == pytest.approx(near[1], abs=1e-12)
             assert near[0] <= np.hypot(*(pts - vertices[o]).T).min() + 1e-12
+
+
+def test_the_dual_with_v_is_scipys_voronoi_diagram_of_random_points():
+    pts = np.random.default_rng(5).random((400, 2))
+    t = triangle.triangulate({"vertices": pts}, "v")
+    theirs = scipy.spatial.Voronoi(pts)
+    vertices, edges = t["voronoi_vertices"], t["voronoi_edges"]
+    assert len(vertices) == len(t["triangles"])  # one a triangle, in its order
+    np.testing.assert_allclose(np.sort(vertices.view("f8,f8"), axis=0).view(float),
+                               np.sort(theirs.vertices.view("f8,f8"), axis=0).view(float), rtol=0, atol=1e-12)
+    # The same edges, by their ends' coordinates; a ray for each of scipy's ridges to infinity.
+    ours = {tuple(sorted(map(tuple, np.round(vertices[e], 9).tolist()))) for e in edges}
+    ridges = np.array(theirs.ridge_vertices)
+    finite = ridges[(ridges >= 0).all(axis=1)]
+    assert ours == {tuple(sorted(map(tuple, np.round(theirs.vertices[e], 9).tolist()))) for e in finite}
+    assert len(t["voronoi_ray_origins"]) == (ridges < 0).any(axis=1).sum() == len(triangle.convex_hull(pts))
+
+
+def test_the_dual_of_a_mesh_with_a_hole():
+    holed = {"vertices": SQUARE + HOLE, "segments": loop(0) + loop(4), "holes": [(5, 5)]}
+    t = triangle.triangulate(holed, "pq30a4v")
+    pts, tris = t["vertices"], t["triangles"]
+    centres = t["voronoi_vertices"]
+    assert centres.shape == (len(tris), 2)
+    for tri, c in zip(tris, centres):  # each the circumcentre of its triangle
+        r = np.hypot(*(pts[tri] - c).T)
+        assert np.ptp(r) <= 1e-12 * r.max()
+    # An edge between two triangles for each side they share, a ray for each side of one alone
+    # (the outer boundary and the hole's), along the side's outward normal.
+    sides = {}
+    for k, tri in enumerate(tris):
+        for i in range(3):
+            sides.setdefault(tuple(sorted((tri[i], tri[(i + 1) % 3]))), []).append(k)
+    shared = {tuple(sorted(ks)) for ks in sides.values() if len(ks) == 2}
+    assert {tuple(sorted(e)) for e in t["voronoi_edges"].tolist()} == shared
+    alone = [ks[0] for ks in sides.values() if len(ks) == 1]
+    assert sorted(t["voronoi_ray_origins"].tolist()) == sorted(alone)
+    for o, d in zip(t["voronoi_ray_origins"], t["voronoi_ray_directions"]):
+        along = pts[tris[o]] @ d  # the side's two ends lie farthest along its outward normal
+        far = np.argsort(along)[1:]
+        assert along[far[0]] == pytest.approx(along[far[1]], abs=1e-12 * np.abs(along).max())
+        assert along[np.argsort(along)[0]] < along[far[0]]
 
 
 def test_the_package_calls_on_degenerate_input_warn_and_return_nothing():

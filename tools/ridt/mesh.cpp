@@ -31,7 +31,8 @@ struct Args {
   bool quality_given = false;  // --quality or q: the library judges the angle, NaN included
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
        neighbours = false, conforming = false, second_order = false, no_holes = false, refine = false,
-       no_markers = false, no_node = false, no_ele = false, all_edges = false, jettison = false, consistency = false;
+       no_markers = false, no_node = false, no_ele = false, all_edges = false, jettison = false, consistency = false,
+       off = false, voronoi = false;
 };
 
 // The number that follows switch `at` in Triangle's switch string (digits and '.', then an
@@ -68,10 +69,10 @@ double parse_number(const std::string& text, char sw) {
 
 // The switches that only set a flag.
 constexpr std::pair<char, bool Args::*> kFlags[] = {
-    {'A', &Args::attributes}, {'c', &Args::convex_hull}, {'Y', &Args::no_boundary}, {'n', &Args::neighbours},
-    {'O', &Args::no_holes},   {'z', &Args::zero_based},  {'r', &Args::refine},      {'B', &Args::no_markers},
-    {'N', &Args::no_node},    {'E', &Args::no_ele},      {'e', &Args::all_edges},   {'j', &Args::jettison},
-    {'C', &Args::consistency}};
+    {'A', &Args::attributes},  {'c', &Args::convex_hull}, {'Y', &Args::no_boundary}, {'n', &Args::neighbours},
+    {'O', &Args::no_holes},    {'z', &Args::zero_based},  {'r', &Args::refine},      {'B', &Args::no_markers},
+    {'N', &Args::no_node},     {'E', &Args::no_ele},      {'e', &Args::all_edges},   {'j', &Args::jettison},
+    {'C', &Args::consistency}, {'g', &Args::off},         {'v', &Args::voronoi}};
 
 // Triangle's switches that ridt takes: p (a .poly: always; with r, read the .poly beside the
 // mesh), r (refine the mesh of a .ele), q[DEG] (quality, 20 degrees where no number follows),
@@ -80,7 +81,8 @@ constexpr std::pair<char, bool Args::*> kFlags[] = {
 // on the boundary), S[N] (at most N points added by refinement), o2 (six-node triangles), O
 // (the .poly's holes ignored); for the files written, e (every edge in .edge), n (.neigh), j
 // (no vertex of no triangle), z (number from 0), B (no boundary markers), N and E (no .node, no
-// .ele), P (no .poly: ridt writes none), C (the mesh checked, the verdict on stderr); Q and V
+// .ele), P (no .poly: ridt writes none), g (.off), v (the dual: .v.node, .v.edge), C (the mesh
+// checked, the verdict on stderr); Q and V
 // (quiet, verbose), and i, F, l, X and I (Triangle's choice of algorithm, its exact arithmetic
 // off, its iteration numbers in file names: the exact result does not depend on them):
 // ignored; the others are refused by name.
@@ -121,7 +123,7 @@ void apply_switches(Args& a) {
     } else if (std::string_view("pPQViFlXI").find(c) == std::string_view::npos) {
       throw InputError(
           std::string("unknown or unsupported switch '") + c +
-          "' (ridt takes p, r, q, a, A, c, D, Y, S, e, n, j, z, o2, O, B, N, E, P, C, Q, V, i, F, l, X, I)");
+          "' (ridt takes p, r, q, a, A, c, D, Y, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V, i, F, l, X, I)");
     }
   }
 }
@@ -134,7 +136,7 @@ std::vector<std::string> outputs(const Args& a) {
     throw InputError(
         "mesh writes Triangle's files or a drawing: give -o OUT.ele (OUT.node and OUT.edge are "
         "written beside it) or OUT.svg");
-  return io::mesh_file_paths(a.output, a.neighbours, !a.no_node, !a.no_ele);
+  return io::mesh_file_paths(a.output, {!a.no_ele, !a.no_node, a.neighbours, a.off, a.voronoi});
 }
 
 // The quality a asks for (none at all with -S0: the crossings, which the graph needs, stay).
@@ -172,10 +174,11 @@ int finish(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t, 
     std::fprintf(stderr, "ridt: consistency check: %s\n", r.message.c_str());
     valid = r.valid;
   }
-  MeshOutput o{a.output,      a.threads,    a.attributes || attributes,
-               a.neighbours,  a.zero_based, a.second_order,
-               !a.no_markers, !a.no_node,   !a.no_ele,
-               a.all_edges,   a.jettison};
+  MeshOutput o;
+  o.path = a.output, o.threads = a.threads, o.attributes = a.attributes || attributes;
+  o.files = {!a.no_ele, !a.no_node, a.neighbours, a.off, a.voronoi};
+  o.zero_based = a.zero_based, o.second_order = a.second_order, o.markers = !a.no_markers;
+  o.all_edges = a.all_edges, o.jettison = a.jettison;
   write_mesh(o, g, t);
   return valid ? 0 : kExitInvalid;
 }
@@ -237,8 +240,8 @@ int run(Args a) {
     refuse_ignored(a.attributes, "--attributes (A)", why);
     refuse_ignored(a.zero_based, "numbering from 0 (z)", why);
     refuse_ignored(a.second_order, "--second-order (o2)", why);
-    refuse_ignored(a.all_edges || a.no_markers || a.jettison || a.no_node || a.no_ele, "switches e, B, j, N and E",
-                   why);
+    refuse_ignored(a.all_edges || a.no_markers || a.jettison || a.no_node || a.no_ele || a.off || a.voronoi,
+                   "switches e, B, j, N, E, g and v", why);
   }
   const std::vector<std::string> out = outputs(a);
   Options o;
@@ -294,10 +297,12 @@ Command add_mesh(CLI::App& app) {
   mesh->add_flag("--second-order", a->second_order,
                  "six-node triangles for quadratic elements: a node at the middle of every edge, in OUT.node after "
                  "the vertices (Triangle's -o2)");
-  mesh->add_option("--switches", a->switches,
-                   "Triangle's switches: p, r, q, a, A, c, D, Y, S, e, n, j, z, o2, O, B, N, E, P, C, Q, V; i, F, l, X "
-                   "and I are "
-                   "ignored (the exact result does not depend on them)");
+  mesh->add_option(
+      "--switches", a->switches,
+      "Triangle's switches: p, r, q, a, A, c, D, Y, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V; i, F, l, "
+      "X "
+      "and I are "
+      "ignored (the exact result does not depend on them)");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
                    "threads of the triangulation and of the output's text (0, the default: all hardware threads)");

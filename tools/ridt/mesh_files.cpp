@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/predicates.hpp"
+#include "ridt/voronoi.hpp"
 
 namespace ridt::tool {
 namespace {
@@ -197,6 +198,32 @@ void jettison(io::MeshFiles& m, Jettisoned& kept) {
   m.point_attributes = kept.attributes;
 }
 
+// The mesh's dual, as Triangle's -v writes it: a vertex at each triangle's circumcentre (within
+// the bound of ridt::voronoi), an edge across each edge of the mesh between the circumcentres of
+// the triangles on its two sides, and a ray across each boundary edge, along its outward normal.
+// It is the Voronoi diagram of the vertices where the mesh is Delaunay and fills their convex
+// hull; else, across a segment or a hole, circumcentres need not lie in their triangles.
+struct Dual {
+  std::vector<Point> vertices;
+  std::vector<std::int32_t> edges;
+  std::vector<Point> directions;
+};
+
+Dual dual_of(std::span<const Point> all, const ConstrainedTriangulation& t, unsigned threads) {
+  Triangulation mesh;
+  mesh.triangles.assign(t.triangles.begin(), t.triangles.begin() + static_cast<std::ptrdiff_t>(3 * t.size()));
+  mesh.neighbors.assign(t.neighbors.begin(), t.neighbors.begin() + static_cast<std::ptrdiff_t>(3 * t.size()));
+  Voronoi v = voronoi(all, mesh, threads);
+  Dual d{std::move(v.vertices), {}, {}};
+  d.edges.reserve(2 * v.ridges.size());
+  d.directions.reserve(v.ridges.size());
+  for (const Ridge& r : v.ridges) {
+    d.edges.push_back(r.u), d.edges.push_back(r.v);
+    d.directions.push_back(ray_direction(all, r));
+  }
+  return d;
+}
+
 }  // namespace
 
 void write_mesh(const MeshOutput& o, const io::Pslg& g, const ConstrainedTriangulation& t) {
@@ -222,9 +249,17 @@ void write_mesh(const MeshOutput& o, const io::Pslg& g, const ConstrainedTriangu
       g.vertex_attributes > 0 ? vertex_attributes(g, t, threads) : std::vector<double>{};
   m.point_attributes = attributes;
   m.point_attribute_count = g.vertex_attributes;
-  if (o.neighbours) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
+  m.files = o.files;
+  if (o.files.neighbors) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
   m.first_index = o.zero_based ? 0 : g.first_index;
-  m.markers = o.markers, m.write_node = o.node, m.write_ele = o.ele;
+  m.markers = o.markers;
+  Dual dual;
+  if (o.files.voronoi) dual = dual_of(all, t, threads);
+  m.voronoi_vertices = dual.vertices, m.voronoi_edges = dual.edges, m.voronoi_directions = dual.directions;
+  // Each edge inside is two triangles' side, each on the boundary one's.
+  const auto sides = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
+  const auto boundary = static_cast<std::size_t>(std::count(sides.begin(), sides.end(), -1));
+  m.edge_count = boundary + (3 * t.size() - boundary) / 2;
   SecondOrder s;
   std::vector<std::int64_t> point_markers;
   std::vector<double> point_attributes;

@@ -110,8 +110,17 @@ std::vector<VertexId> read_elements(const std::string& path, int first_index, st
 /// `first_index`, each with boundary marker 1 (they are segments); formatted on `threads` threads.
 void write_edges(const std::string& path, std::span<const VertexId> edges, int first_index, unsigned threads = 1);
 
+/// Which of a mesh's files ridt mesh writes beside OUT.ele (Triangle's switches in brackets).
+struct MeshFileSet {
+  bool ele = true, node = true;  ///< OUT.ele, OUT.node (-E, -N: not written)
+  bool neighbors = false;  ///< OUT.neigh (-n)
+  bool off = false;  ///< OUT.off, the triangles for a viewer (-g)
+  bool voronoi = false;  ///< OUT.v.node and OUT.v.edge, the mesh's dual (-v)
+};
+
 /// A mesh as Triangle writes it (ridt mesh).
 struct MeshFiles {
+  MeshFileSet files;
   std::span<const Point> points;  ///< every vertex: OUT.node
   std::span<const VertexId> triangles;  ///< OUT.ele: `nodes` a triangle
   int nodes = 3;  ///< 3, or 6 (Triangle's -o2: second_order's triangles)
@@ -121,16 +130,21 @@ struct MeshFiles {
   std::span<const std::int64_t> point_markers;  ///< one a point, or none (no marker column)
   std::span<const double> point_attributes;  ///< `point_attribute_count` a point, row by row
   std::size_t point_attribute_count = 0;
-  std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh, where not empty
-  int first_index = 0;  ///< the numbering of every file
+  std::span<const std::int32_t> neighbors;  ///< three a triangle: OUT.neigh (files.neighbors)
+  /// OUT.v.node and OUT.v.edge (files.voronoi): vertex t the circumcentre of triangle t; an edge
+  /// (u, v) joins two of them, or where v is -1 is a ray from u along its direction.
+  std::span<const Point> voronoi_vertices;
+  std::span<const std::int32_t> voronoi_edges;  ///< pairs
+  std::span<const Point> voronoi_directions;  ///< one an edge ((0, 0) for a segment)
+  std::size_t edge_count = 0;  ///< the mesh's edges, for OUT.off's header
+  int first_index = 0;  ///< the numbering of every file but OUT.off (which counts from 0)
   bool markers = true;  ///< boundary markers in OUT.node and OUT.edge (Triangle's -B: none)
-  bool write_node = true, write_ele = true;  ///< OUT.node, OUT.ele (Triangle's -N, -E: neither)
 };
 
-/// The files write_mesh_files writes for OUT.ele `ele`: it (unless not `elements`), then
-/// OUT.node (unless not `node`), OUT.edge and, with `neighbors`, OUT.neigh.
-std::vector<std::string> mesh_file_paths(const std::string& ele, bool neighbors, bool node = true,
-                                         bool elements = true);
+/// The files write_mesh_files writes for OUT.ele `ele`: it (unless not `set.ele`), then
+/// OUT.node (unless not `set.node`), OUT.edge, and as `set` asks OUT.neigh, OUT.off, OUT.v.node
+/// and OUT.v.edge.
+std::vector<std::string> mesh_file_paths(const std::string& ele, const MeshFileSet& set);
 
 /// Writes the mesh's files (mesh_file_paths), all or none: each is written under a temporary
 /// name and all are renamed once all are written; IoError where one cannot be (a directory in

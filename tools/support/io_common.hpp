@@ -443,7 +443,7 @@ void write_bin_triangles(Writer& out, std::span<const VertexId> triangles);
 void put_bin_sorted(Writer& out, std::size_t first, std::span<const VertexId> triangles);
 
 // Surface meshes for viewers (io_mesh.cpp): .off (0-based), .obj (1-based), z = 0.
-void write_off(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles);
+void write_off(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles, std::size_t edges = 0);
 void write_obj(Writer& out, std::span<const Point> points, std::span<const VertexId> triangles);
 
 // A drawing (io_svg.cpp), of at most kSvgMaxTriangles triangles.
