@@ -1,6 +1,7 @@
 // Constrained Delaunay triangulations and quality meshes: points and segments between them.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -60,7 +61,16 @@ struct Quality {
   /// Conforming Delaunay (-D): segments split until no vertex lies in a subsegment's diametral
   /// circle, so that every edge, the segments' too, is Delaunay (with `split_boundary`).
   bool conforming = false;
-  bool enabled() const { return min_angle > 0 || max_area > 0 || conforming; }
+  /// A test of the caller's own (Triangle's -u, its triunsuitable): a triangle for which it
+  /// returns true is refined as one above the area bound is, at its off-centre. It is given the
+  /// triangle's corners, counter-clockwise, and its area (in floating point; infinite or 0 where
+  /// that overflows or underflows a double, with coordinates beyond about 10^154 or below
+  /// 10^-154), and is called once for each triangle refinement makes or first sees, on the calling
+  /// thread; what it throws comes out of the call. It must hold for no triangle small enough (as
+  /// an area bound that depends on the position: `area > size(centroid)`), or refinement goes on
+  /// until `max_steiner` or the memory left stops it.
+  std::function<bool(const Point& a, const Point& b, const Point& c, double area)> unsuitable;
+  bool enabled() const { return min_angle > 0 || max_area > 0 || conforming || unsuitable; }
 };
 
 /// The constrained Delaunay triangulation of `points` with `segments` (pairs of indices into

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import warnings
 from functools import cached_property
-from typing import Any, Tuple
+from typing import Any, Callable, Optional, Tuple
 
 import numpy as np
 
@@ -15,6 +15,12 @@ from ._delaunay import DegenerateInputWarning, hull_edges
 class RefinementWarning(RuntimeWarning):
     """Quality refinement stopped before the bounds were met (``max_steiner``, or the memory left):
     the mesh is a valid constrained triangulation, and ``check()`` then tests no bounds."""
+
+
+def _callable(unsuitable: Any) -> Any:
+    if unsuitable is not None and not callable(unsuitable):
+        raise TypeError(f"unsuitable must be callable or None, got {type(unsuitable).__name__}")
+    return unsuitable
 
 
 def _check_steiner(max_steiner: Any) -> None:
@@ -61,6 +67,14 @@ class ConstrainedDelaunay:
         ``check()`` tests the area bound alone.
     conforming : bool
         Split segments until every edge, theirs too, is Delaunay (Triangle's ``-D``).
+    unsuitable : callable, optional
+        A test of your own (Triangle's ``-u``): ``unsuitable(a, b, c, area)``, with a triangle's
+        corners as (x, y) tuples, counter-clockwise, and its area, returns True for a triangle to
+        refine (at its off-centre, as one above `max_area` is); for a size that depends on the
+        position, ``lambda a, b, c, area: area > size((a[0] + b[0] + c[0]) / 3, (a[1] + b[1] +
+        c[1]) / 3)``. Called once for each triangle refinement makes or first sees; what it
+        raises comes out of the call. It must hold for no triangle small enough, else refinement
+        goes on until `max_steiner` (or the memory left) stops it.
     method, threads, seed
         As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
 
@@ -90,8 +104,8 @@ class ConstrainedDelaunay:
 
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
-                 split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0, method: str = "auto",
-                 threads: int = 1, seed: int = 1):
+                 split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
+                 unsuitable: Optional[Callable[..., Any]] = None, method: str = "auto", threads: int = 1, seed: int = 1):
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
         if segs.size and segs.max() >= pts.shape[0]:
@@ -107,14 +121,14 @@ class ConstrainedDelaunay:
         result = _core.triangulate_constrained(
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
-            bool(conforming), int(max_steiner))
+            bool(conforming), int(max_steiner), _callable(unsuitable))
         self._take(pts, segs, seeds, result, min_angle if split_boundary else 0.0, max_area)
 
     @classmethod
     def from_mesh(cls, points: Any, simplices: Any, segments: Any = None, *, min_angle: float = 0.0,
                   max_area: float = 0.0, triangle_max_area: Any = None, triangle_attributes: Any = None,
                   split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
-                  threads: int = 1) -> "ConstrainedDelaunay":
+                  unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
         """A mesh already made, refined (Triangle's ``-r``; ridt.refine_mesh): `simplices`
         (counter-clockwise rows of three point indices) cover the domain, whose boundary and
         `segments` (each an edge of the mesh) stay fixed. The mesh is first made constrained
@@ -126,7 +140,8 @@ class ConstrainedDelaunay:
         refinement added. ValueError for a triangle clockwise or without area, triangles that
         overlap about a vertex or along an edge (pieces that overlap without sharing a vertex
         are not found), a segment that is no edge, or per-triangle values not one a triangle.
-        Six-column simplices are not taken: pass an ``o2`` mesh's first three columns."""
+        Six-column simplices are not taken: pass an ``o2`` mesh's first three columns.
+        `unsuitable`: as for the class."""
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay.from_mesh")
         tris = np.asarray(simplices)
         if tris.ndim != 2 or tris.shape[1] != 3 or (tris.size and not np.issubdtype(tris.dtype, np.integer)):
@@ -151,21 +166,22 @@ class ConstrainedDelaunay:
             per_triangle(triangle_max_area, "triangle_max_area"), per_triangle(triangle_attributes,
                                                                                "triangle_attributes"),
             _api.thread_count(threads), float(min_angle), float(max_area), bool(split_boundary), bool(conforming),
-            int(max_steiner))
+            int(max_steiner), _callable(unsuitable))
         self = cls.__new__(cls)
         self._take(pts, segs, np.zeros((0, 2)), result, min_angle if split_boundary else 0.0, max_area)
         return self
 
     def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,
                split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
-               threads: int = 1) -> "ConstrainedDelaunay":
+               unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
         """This mesh refined further (``from_mesh`` on its points, simplices and edges; its
         attributes carried): a new ConstrainedDelaunay. `triangle_max_area`: one bound a triangle
         of this mesh, for adaptive refinement."""
         return ConstrainedDelaunay.from_mesh(
             self._points, self.simplices, self.edges, min_angle=min_angle, max_area=max_area,
             triangle_max_area=triangle_max_area, triangle_attributes=self.attributes if len(self.attributes) else None,
-            split_boundary=split_boundary, conforming=conforming, max_steiner=max_steiner, threads=threads)
+            split_boundary=split_boundary, conforming=conforming, max_steiner=max_steiner, unsuitable=unsuitable,
+            threads=threads)
 
     def _take(self, pts: np.ndarray, segs: np.ndarray, seeds: np.ndarray, result: tuple, min_angle: float,
               max_area: float) -> None:

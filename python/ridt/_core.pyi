@@ -30,12 +30,14 @@ class Triangulation:
 def triangulate_constrained(points: npt.NDArray[np.float64], segments: npt.NDArray[np.uint32],
                             holes: npt.NDArray[np.float64], convex_hull: bool, method: str, threads: int, seed: int,
                             canonical: bool, regions: npt.NDArray[np.float64], min_angle: float, max_area: float,
-                            split_boundary: bool, conforming: bool, max_steiner: int
+                            split_boundary: bool, conforming: bool, max_steiner: int,
+                            unsuitable: Optional[Callable[..., Any]] = ...
                             ) -> Tuple[Triangulation, npt.NDArray[np.uint32], npt.NDArray[np.float64], int,
                                        npt.NDArray[np.float64]]: ...
 def refine_mesh(points: npt.NDArray[np.float64], triangles: npt.NDArray[np.uint32], segments: npt.NDArray[np.uint32],
                 max_areas: npt.NDArray[np.float64], attributes: npt.NDArray[np.float64], threads: int,
-                min_angle: float, max_area: float, split_boundary: bool, conforming: bool, max_steiner: int
+                min_angle: float, max_area: float, split_boundary: bool, conforming: bool, max_steiner: int,
+                unsuitable: Optional[Callable[..., Any]] = ...
                 ) -> Tuple[Triangulation, npt.NDArray[np.uint32], npt.NDArray[np.float64], int,
                            npt.NDArray[np.float64]]: ...
 def triangulate(points: npt.NDArray[np.float64], method: str, threads: int, order: str, locate: str, seed: int,

@@ -27,11 +27,13 @@
 
 namespace py = pybind11;
 
-// terrain.cpp, memory.cpp, interpolate.cpp
-void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m);
+// terrain.cpp, memory.cpp, interpolate.cpp, constrained.cpp
+void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m),
+    bind_constrained(py::module_&m);
 
 namespace {
 
+using ridt_python::adopt;
 using ridt_python::as_points;
 using ridt_python::Points;
 
@@ -102,15 +104,6 @@ ridt::Triangulation run(const Points& points, const std::string& method, unsigne
   const std::span<const ridt::Point> pts = as_points(points, "points");
   py::gil_scoped_release nogil;
   return furthest_site ? ridt::triangulate_furthest_site(pts, o) : ridt::triangulate(pts, o);
-}
-
-// A vector's memory handed to numpy without a copy: the array owns the vector through a
-// capsule. `shape` must cover the vector's elements (as T, or as doubles for Points).
-template <class T, class Elem = T>
-py::array_t<Elem> adopt(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
-  auto* owned = new std::vector<T>(std::move(v));
-  py::capsule free_it(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
-  return py::array_t<Elem>(shape, reinterpret_cast<const Elem*>(owned->data()), free_it);
 }
 
 // Rows of a flat int32 array as a list of Python lists, as scipy.spatial.Voronoi's regions and
@@ -211,123 +204,6 @@ void bind_incremental(py::module_& m) {
   m.def("triangulate", &run, py::arg("points"), py::arg("method"), py::arg("threads"), py::arg("order"),
         py::arg("locate"), py::arg("seed"), py::arg("bounding"), py::arg("k"), py::arg("canonical"),
         py::arg("progress"), py::arg("furthest_site") = false, py::arg("memory_limit") = 0);
-}
-
-ridt::Quality quality(double min_angle, double max_area, bool split_boundary, bool conforming,
-                      std::size_t max_steiner) {
-  return {.min_angle = min_angle,
-          .max_area = max_area,
-          .split_boundary = split_boundary,
-          .max_steiner = max_steiner,
-          .conforming = conforming};
-}
-
-// A constrained triangulation as Python takes it: (its triangulation, its segments' edges, the
-// points it added, how many of them are crossings, each triangle's attribute).
-py::tuple constrained_tuple(ridt::ConstrainedTriangulation c) {
-  const auto pieces = static_cast<py::ssize_t>(c.edges.size() / 2);
-  auto edges = adopt(std::move(c.edges), {pieces, py::ssize_t{2}});
-  py::array_t<double> added({static_cast<py::ssize_t>(c.steiner.size()), py::ssize_t{2}});
-  std::copy_n(&c.steiner.data()->x, 2 * c.steiner.size(), added.mutable_data());
-  py::array_t<double> attributes(static_cast<py::ssize_t>(c.attributes.size()));
-  std::copy(c.attributes.begin(), c.attributes.end(), attributes.mutable_data());
-  const std::size_t crossings = c.crossings;
-  return py::make_tuple(ridt::Triangulation(std::move(static_cast<ridt::Triangulation&>(c))), edges, added, crossings,
-                        attributes);
-}
-
-// The constrained Delaunay triangulation or quality mesh.
-void bind_constrained(py::module_& m) {
-  m.def(
-      "triangulate_constrained",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments, const Points& holes,
-         bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical,
-         const py::array_t<double, py::array::c_style>& regions, double min_angle, double max_area, bool split_boundary,
-         bool conforming, std::size_t max_steiner) {
-        ridt::Options o;
-        o.method = ridt::parse<ridt::Method>(method);
-        o.threads = threads;
-        o.seed = seed;
-        o.canonical_order = canonical;
-        o.experiment.time_threads = false;
-        const auto pts = as_points(points, "points");
-        const std::span<const ridt::VertexId> segs(segments.data(), static_cast<std::size_t>(segments.size()));
-        ridt::Domain domain;
-        domain.convex_hull = convex_hull;
-        const auto h = as_points(holes, "holes");
-        domain.holes.assign(h.begin(), h.end());
-        for (py::ssize_t r = 0; r + 3 < regions.size(); r += 4) {
-          const double* v = regions.data() + r;
-          domain.regions.push_back({{v[0], v[1]}, v[2], v[3]});
-        }
-        const ridt::Quality q = quality(min_angle, max_area, split_boundary, conforming, max_steiner);
-        ridt::ConstrainedTriangulation c;
-        {
-          py::gil_scoped_release nogil;
-          c = ridt::triangulate_constrained(pts, segs, o, domain, q);
-        }
-        return constrained_tuple(std::move(c));
-      },
-      py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
-      py::arg("threads"), py::arg("seed"), py::arg("canonical"), py::arg("regions"), py::arg("min_angle"),
-      py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"), py::arg("max_steiner"));
-}
-
-// A mesh already made, refined (ridt::refine_mesh), as triangulate_constrained's tuple.
-void bind_refine_mesh(py::module_& m) {
-  m.def(
-      "refine_mesh",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
-         const py::array_t<std::uint32_t, py::array::c_style>& segments,
-         const py::array_t<double, py::array::c_style>& max_areas,
-         const py::array_t<double, py::array::c_style>& attributes, unsigned threads, double min_angle, double max_area,
-         bool split_boundary, bool conforming, std::size_t max_steiner) {
-        ridt::Options o;
-        o.threads = threads;
-        o.canonical_order = true;
-        const auto pts = as_points(points, "points");
-        auto span_of = [](const auto& a) { return std::span(a.data(), static_cast<std::size_t>(a.size())); };
-        const ridt::Quality q = quality(min_angle, max_area, split_boundary, conforming, max_steiner);
-        ridt::ConstrainedTriangulation c;
-        {
-          py::gil_scoped_release nogil;
-          c = ridt::refine_mesh(pts, span_of(triangles), span_of(segments), q, span_of(max_areas), span_of(attributes),
-                                o);
-        }
-        return constrained_tuple(std::move(c));
-      },
-      py::arg("points"), py::arg("triangles"), py::arg("segments"), py::arg("max_areas"), py::arg("attributes"),
-      py::arg("threads"), py::arg("min_angle"), py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"),
-      py::arg("max_steiner"));
-}
-
-// The validator of constrained triangulations and meshes.
-void bind_check_mesh(py::module_& m) {
-  m.def(
-      "check_mesh",
-      [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& triangles,
-         const py::array_t<std::uint32_t, py::array::c_style>& edges,
-         const py::array_t<std::uint32_t, py::array::c_style>& segments, std::size_t input_points, const Points& holes,
-         double min_angle, double max_area) {
-        const auto pts = as_points(points, "points");
-        const auto h = as_points(holes, "holes");
-        ridt::MeshSpec spec;
-        spec.edges = {edges.data(), static_cast<std::size_t>(edges.size())};
-        spec.segments = {segments.data(), static_cast<std::size_t>(segments.size())};
-        spec.input_points = input_points;
-        spec.holes = h;
-        spec.min_angle = min_angle;
-        spec.max_area = max_area;
-        const std::span<const ridt::VertexId> t(triangles.data(), static_cast<std::size_t>(triangles.size()));
-        ridt::CheckResult r;
-        {
-          py::gil_scoped_release nogil;
-          r = ridt::check_mesh(pts, t, spec);
-        }
-        return py::make_tuple(r.valid, r.message, r.problems);
-      },
-      py::arg("points"), py::arg("triangles"), py::arg("edges"), py::arg("segments"), py::arg("input_points"),
-      py::arg("holes"), py::arg("min_angle"), py::arg("max_area"));
 }
 
 // Location in a finished triangulation, and the validator.
@@ -478,9 +354,7 @@ PYBIND11_MODULE(_core, m) {
   bind_triangulation(m);
   bind_incremental(m);
   bind_constrained(m);
-  bind_refine_mesh(m);
   bind_terrain(m);
-  bind_check_mesh(m);
   bind_queries(m);
   bind_nearest(m);
   bind_voronoi(m);

@@ -156,3 +156,56 @@ def test_quality_bounds_are_checked():
         ridt.ConstrainedDelaunay(KITE, [(0, 2)], max_area=-1)
     with pytest.raises(ValueError, match="regions"):
         ridt.ConstrainedDelaunay(KITE, [(0, 2)], regions=[(1, 2)])
+
+
+def _centroid_size(a, b, c, area):
+    """Unsuitable above an area that grows with the centroid's distance from the origin."""
+    x, y = (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3
+    return area > 0.0005 + 0.02 * (x * x + y * y)
+
+
+def _areas(m):
+    p = m.points[m.simplices]
+    return ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
+            - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0])) / 2
+
+
+def test_a_test_of_ones_own_grades_the_mesh():
+    square = [(0, 0), (1, 0), (1, 1), (0, 1), (0.4, 0.4), (0.6, 0.4), (0.6, 0.6), (0.4, 0.6)]
+    loops = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4)]
+    seen = []
+
+    def size(a, b, c, area):
+        seen.append(area)
+        return np.bool_(_centroid_size(a, b, c, area))  # numpy's bool is taken as Python's
+
+    m = ridt.ConstrainedDelaunay(square, loops, holes=[(0.5, 0.5)], convex_hull=False, min_angle=25,
+                                 unsuitable=size)
+    assert m.check()[0], m.check()[1]
+    assert len(seen) >= len(m.simplices)
+    p = m.points[m.simplices]
+    for tri, area in zip(p, _areas(m)):
+        assert not _centroid_size(*tri, area)
+    centroids = p.mean(axis=1)
+    near = ((centroids[:, 0] < 0.5) & (centroids[:, 1] < 0.5)).sum()
+    far = ((centroids[:, 0] > 0.5) & (centroids[:, 1] > 0.5)).sum()
+    assert near > 3 * far
+    finer = m.refine(unsuitable=lambda a, b, c, area: area > 0.001)
+    assert len(finer.simplices) > len(m.simplices) and _areas(finer).max() <= 0.001
+    again = ridt.ConstrainedDelaunay.from_mesh(m.points, m.simplices, m.edges, unsuitable=_centroid_size)
+    assert len(again.added) == 0  # every triangle already suitable
+
+
+def test_what_ones_test_raises_comes_out_and_a_bad_test_is_refused():
+    square, loop = [(0, 0), (1, 0), (1, 1), (0, 1)], [(0, 1), (1, 2), (2, 3), (3, 0)]
+
+    def broken(a, b, c, area):
+        raise KeyError("the caller's own")
+
+    with pytest.raises(KeyError, match="the caller's own"):
+        ridt.ConstrainedDelaunay(square, loop, unsuitable=broken)
+    with pytest.raises(TypeError, match="callable"):
+        ridt.ConstrainedDelaunay(square, loop, unsuitable=0.01)
+    with pytest.warns(ridt.RefinementWarning, match="stopped after 300"):
+        m = ridt.ConstrainedDelaunay(square, loop, unsuitable=lambda a, b, c, area: True, max_steiner=300)
+    assert len(m.added) == 300

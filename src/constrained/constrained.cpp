@@ -184,6 +184,11 @@ void refine(detail::Cdt& m, ConstrainedTriangulation& out, const Options& option
                        given};
   for (const Region& g : domain.regions)
     r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
+  if (quality.unsuitable)  // the caller's coordinates, not the scaled ones (exactly: powers of two)
+    r.unsuitable = [&quality, scale](const Point& a, const Point& b, const Point& c, double twice) {
+      return quality.unsuitable(scaled(a, -scale), scaled(b, -scale), scaled(c, -scale),
+                                std::ldexp(twice, -2 * scale - 1));
+    };
   if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
   detail::merge_pinches(m, first, pinched);
 }

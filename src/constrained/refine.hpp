@@ -1,6 +1,7 @@
 // Delaunay refinement of a constrained triangulation to a minimum angle and maximum areas.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct Refinement {
   /// refine_mesh's given mesh: where set, m.region numbers its triangles, and each triangle's
   /// region is located again (by its centroid) before its area bound is read.
   const GivenMesh* given = nullptr;
+  /// Quality::unsuitable, given m's (scaled) corners and twice the area; empty: none.
+  std::function<bool(const Point&, const Point&, const Point&, double)> unsuitable;
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's

@@ -46,7 +46,8 @@ class Refiner {
     // bound exactly: then it is not bad again by a rounding (23 % fewer points on a coastline of 10^4 vertices).
     offset_ = r.min_angle > 0 ? 0.475 / std::tan(r.min_angle * 3.14159265358979323846 / 360) : 0;
     box_ = extent_of(m.pts);
-    tiny2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1}) * 0x1p-80;  // edges below 2^-40 of the diagonal stay
+    diag2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1});
+    tiny2_ = diag2_ * 0x1p-80;  // edges below 2^-40 of the diagonal stay
     cells_ = 65535 / std::max(box_.x1 - box_.x0, box_.y1 - box_.y0);  // infinite for one point: see curve()
     ends_.assign(m.pts.size(), {Cdt::kNone, Cdt::kNone});
   }
@@ -131,19 +132,22 @@ class Refiner {
   // cannot reach it before the subsegments are too short to split), or too large where its
   // centroid could not go in.
   std::string left_bad() const {
-    std::vector<std::uint32_t> shape, area;  // still bad: for the angle, for the area
+    std::vector<std::uint32_t> shape, area, unsuitable;  // still bad: for the angle, the area, the caller's test
     for (const Bad& b : given_up_)
-      if (const double key = alive(b) ? badness(b.t) : kGood; key != kGood) (key >= 0 ? shape : area).push_back(b.t);
+      if (const double key = alive(b) ? badness(b.t) : kGood; key != kGood)
+        (key >= 0 ? shape : key <= -1 ? area : unsuitable).push_back(b.t);
     auto count = [](std::vector<std::uint32_t>& v) {
       std::sort(v.begin(), v.end());
       return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
     };
-    const std::size_t below = count(shape), above = count(area);
-    if (below + above == 0) return "";
+    const std::size_t below = count(shape), above = count(area), failed = count(unsuitable);
+    if (below + above + failed == 0) return "";
     auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
     std::string w = "quality refinement left ";
     if (below > 0) w += triangles(below) + " below the minimum angle";
     if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area";
+    if (failed > 0)
+      w += std::string(below + above > 0 ? " and " : "") + triangles(failed) + " unsuitable by the test given";
     return w + ": the subsegments near them could not be split far enough";
   }
 
@@ -230,7 +234,9 @@ class Refiner {
   }
 
   // Where triangle t stands in the queue of bad triangles, kGood where it is good: one too large
-  // (whatever its angles) by minus its area over its bound (the largest first), one with a small
+  // (whatever its angles) by minus its area over its bound (the largest first: -1 or below),
+  // then one the caller's test finds unsuitable, refined as one too large is (the largest first,
+  // from -1/2 to 0), one with a small
   // angle by its shortest edge's squared length (the smallest first: the sizes then grade out
   // from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex coastline).
   double badness(std::uint32_t t) const {
@@ -239,6 +245,8 @@ class Refiner {
     const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     // First: the terminator (improve) may leave a small angle, never an area above its bound.
     if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) return -twice / (2 * bound);
+    // Within the box a triangle's doubled area is at most diag2_, so this is in [-1/2, 0).
+    if (r_.unsuitable && r_.unsuitable(a, b, c, twice)) return std::min(-twice / (twice + diag2_), -0x1p-1000);
     if (sin2_ > 0) {
       const double l[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};  // across from corner 0, 1, 2
       const int s = shortest(l);
@@ -406,7 +414,7 @@ class Refiner {
     return hilbert_key(cell(p.x, box_.x0), cell(p.y, box_.y0));
   }
 
-  double sin2_ = 0, half_bound_ = 0, offset_ = 0, tiny2_ = 0, cells_ = 0;
+  double sin2_ = 0, half_bound_ = 0, offset_ = 0, diag2_ = 0, tiny2_ = 0, cells_ = 0;
   Extent box_;
   std::vector<std::pair<VertexId, VertexId>> ends_;  // per vertex on a chain: its corners
   std::vector<std::uint8_t> small_;  // per corner: two of its segments meet at less than 60 degrees
