@@ -466,8 +466,18 @@ expect 0 "mesh S0" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/s0.ele" --switches pq
 [ "$(head -1 "$dir/s0.node")" = "8 2 0 1" ] && pass || fail "S0 added points"
 expect 2 "mesh S with no number" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq30S
 stderr_has "whole number"; absent "$dir/q3.ele"
-expect 2 "mesh YY refused" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q3.ele" --switches pq30YY
-stderr_has "'YY'"; absent "$dir/q3.ele"
+# YY: no point on any segment, the one inside the square too (Y keeps only the boundary whole).
+printf '6 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 2 3\n6 8 6\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n0\n' >"$dir/cut.poly"
+expect 0 "mesh YY" -- "$ridt" mesh "$dir/cut.poly" -o "$dir/yy.ele" --switches pq25a1YYC
+stderr_has "consistency check: valid"
+[ "$(head -1 "$dir/yy.edge")" = "5 1" ] && pass || fail "YY: a segment split"
+[ "$(head -1 "$dir/yy.node" | cut -d' ' -f1)" -gt 50 ] && pass || fail "YY: nothing refined"
+expect 0 "mesh --no-segment-steiner" -- "$ridt" mesh "$dir/cut.poly" -o "$dir/yy2.ele" --quality 25 --max-area 1 --no-segment-steiner
+cmp -s "$dir/yy.ele" "$dir/yy2.ele" && pass || fail "--no-segment-steiner is not YY"
+expect 0 "mesh Y" -- "$ridt" mesh "$dir/cut.poly" -o "$dir/y1.ele" --switches pq25a1Y
+[ "$(head -1 "$dir/y1.edge" | cut -d' ' -f1)" -gt 5 ] && pass || fail "Y: the inner segment kept whole"
+expect 2 "mesh YYD" -- "$ridt" mesh "$dir/cut.poly" -o "$dir/q3.ele" --switches pq30YYD
+stderr_has "conforming"; absent "$dir/q3.ele"
 expect 0 "mesh conforming" -- "$ridt" mesh "$dir/l.poly" -o "$dir/d.ele" --switches pcD
 expect 0 "the conforming mesh is Delaunay" -- "$ridt" check "$dir/d.node" "$dir/d.ele"
 # Triangle's -r: a mesh refined, from its .ele and .node, its .edge's segments kept (OUT.edge: the

@@ -57,6 +57,10 @@ struct Quality {
   double min_angle = 0;  ///< degrees, in [0, 34]; 0: no angle bound
   double max_area = 0;  ///< 0: no bound of all triangles (regions may still have their own)
   bool split_boundary = true;  ///< false: no point added on the boundary's segments (-Y)
+  /// false: no point added on any segment, those inside the domain too, nor on the boundary
+  /// (-YY); the segments stay whole (but where they cross), and a triangle whose point would
+  /// fall on one may keep an angle below min_angle. Not with `conforming`.
+  bool split_segments = true;
   std::size_t max_steiner = 0;  ///< stop after adding this many points (0: no limit)
   /// Conforming Delaunay (-D): segments split until no vertex lies in a subsegment's diametral
   /// circle, so that every edge, the segments' too, is Delaunay (with `split_boundary`).

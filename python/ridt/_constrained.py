@@ -65,6 +65,10 @@ class ConstrainedDelaunay:
         False adds no point on the boundary's segments (Triangle's ``-Y``): a triangle with an
         angle below `min_angle` may then stay where its point would fall on the boundary, and
         ``check()`` tests the area bound alone.
+    split_segments : bool
+        False adds no point on any segment, those inside the domain too, nor on the boundary
+        (Triangle's ``-YY``): the segments stay whole (but where they cross), with the same
+        consequence for the angle; not with `conforming`.
     conforming : bool
         Split segments until every edge, theirs too, is Delaunay (Triangle's ``-D``).
     unsuitable : callable, optional
@@ -104,8 +108,8 @@ class ConstrainedDelaunay:
 
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
-                 split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
-                 unsuitable: Optional[Callable[..., Any]] = None, method: str = "auto", threads: int = 1, seed: int = 1):
+                 split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
+                 max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, method: str = "auto", threads: int = 1, seed: int = 1):
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
         if segs.size and segs.max() >= pts.shape[0]:
@@ -121,14 +125,14 @@ class ConstrainedDelaunay:
         result = _core.triangulate_constrained(
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
-            bool(conforming), int(max_steiner), _callable(unsuitable))
-        self._take(pts, segs, seeds, result, min_angle if split_boundary else 0.0, max_area)
+            bool(conforming), int(max_steiner), _callable(unsuitable), bool(split_segments))
+        self._take(pts, segs, seeds, result, min_angle if split_boundary and split_segments else 0.0, max_area)
 
     @classmethod
     def from_mesh(cls, points: Any, simplices: Any, segments: Any = None, *, min_angle: float = 0.0,
                   max_area: float = 0.0, triangle_max_area: Any = None, triangle_attributes: Any = None,
-                  split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
-                  unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
+                  split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
+                  max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
         """A mesh already made, refined (Triangle's ``-r``; ridt.refine_mesh): `simplices`
         (counter-clockwise rows of three point indices) cover the domain, whose boundary and
         `segments` (each an edge of the mesh) stay fixed. The mesh is first made constrained
@@ -166,22 +170,23 @@ class ConstrainedDelaunay:
             per_triangle(triangle_max_area, "triangle_max_area"), per_triangle(triangle_attributes,
                                                                                "triangle_attributes"),
             _api.thread_count(threads), float(min_angle), float(max_area), bool(split_boundary), bool(conforming),
-            int(max_steiner), _callable(unsuitable))
+            int(max_steiner), _callable(unsuitable), bool(split_segments))
         self = cls.__new__(cls)
-        self._take(pts, segs, np.zeros((0, 2)), result, min_angle if split_boundary else 0.0, max_area)
+        self._take(pts, segs, np.zeros((0, 2)), result, min_angle if split_boundary and split_segments else 0.0,
+                   max_area)
         return self
 
     def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,
-               split_boundary: bool = True, conforming: bool = False, max_steiner: int = 0,
-               unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
+               split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
+               max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
         """This mesh refined further (``from_mesh`` on its points, simplices and edges; its
         attributes carried): a new ConstrainedDelaunay. `triangle_max_area`: one bound a triangle
         of this mesh, for adaptive refinement."""
         return ConstrainedDelaunay.from_mesh(
             self._points, self.simplices, self.edges, min_angle=min_angle, max_area=max_area,
             triangle_max_area=triangle_max_area, triangle_attributes=self.attributes if len(self.attributes) else None,
-            split_boundary=split_boundary, conforming=conforming, max_steiner=max_steiner, unsuitable=unsuitable,
-            threads=threads)
+            split_boundary=split_boundary, split_segments=split_segments, conforming=conforming,
+            max_steiner=max_steiner, unsuitable=unsuitable, threads=threads)
 
     def _take(self, pts: np.ndarray, segs: np.ndarray, seeds: np.ndarray, result: tuple, min_angle: float,
               max_area: float) -> None:

@@ -9,7 +9,7 @@ and the exterior are removed), ``q[DEG]`` (a quality mesh: no angle below DEG de
 no number follows), ``a[AREA]`` (no triangle larger than AREA; with no number, each region's own
 bound), ``A`` (each triangle's regional attribute, as 'triangle_attributes'), ``c`` (keep the
 convex hull), ``D`` (conforming Delaunay: every edge Delaunay), ``Y`` (no points added on the
-boundary; ``YY``, none on the segments inside it either, is refused), ``S[N]`` (at most N
+boundary; ``YY``, none on the segments inside it either), ``S[N]`` (at most N
 points added by refinement, then a ``ridt.RefinementWarning``; ``S0``, none), ``e`` (also return
 every edge), ``n`` (also return the neighbours), ``o2`` (six-node triangles: a node at the middle
 of every edge, after the vertices; each triangle its corners, then the nodes of the edges
@@ -59,13 +59,14 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
     while i < len(opts):
         c = opts[i]
         if c not in _TAKEN:
-            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, S, e, n, o2, O, z, B, j, "
-                             "C, v, Q, V; i, F, l, X, I are ignored)")
+            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, YY, S, e, n, o2, O, z, "
+                             "B, j, C, v, Q, V; i, F, l, X, I are ignored)")
         if c == "o" and opts[i + 1:i + 2] != "2":
             raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
-        if c == "Y" and "Y" in flags:
-            raise ValueError("switch 'YY' is not supported: ridt keeps added points off the boundary ('Y') but "
-                             "cannot keep them off the segments inside it")
+        if c == "Y" and opts[i + 1:i + 2] == "Y":  # 'YY': no point on any segment
+            flags.update(("Y", "YY"))
+            i += 2
+            continue
         flags.add(c)
         number = _NUMBER.match(opts, i + 1) if c in "qaS" else None
         if c == "q":
@@ -114,7 +115,7 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
         cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
                                   holes=holes, convex_hull="c" in flags or not pslg, regions=_regions(tri, regional),
                                   min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
-                                  conforming="D" in flags, max_steiner=max(steiner, 0))
+                                  split_segments="YY" not in flags, conforming="D" in flags, max_steiner=max(steiner, 0))
     out: Dict[str, np.ndarray] = {"vertices": cdt.points.copy(), "triangles": cdt.simplices.copy()}
     if "vertex_attributes" in tri:
         out["vertex_attributes"] = _vertex_attributes(tri["vertex_attributes"], pts, cdt)
@@ -217,7 +218,8 @@ def _refined(tri: Dict[str, Any], pts: np.ndarray, segments: np.ndarray, flags: 
     return ConstrainedDelaunay.from_mesh(
         pts, triangles.reshape(-1, 3), segments.reshape(-1, 2) if segments.size else None,
         min_angle=max(angle, 0.0), max_area=area, triangle_max_area=bounds, triangle_attributes=attributes,
-        split_boundary="Y" not in flags, conforming="D" in flags, max_steiner=max(steiner, 0))
+        split_boundary="Y" not in flags, split_segments="YY" not in flags, conforming="D" in flags,
+        max_steiner=max(steiner, 0))
 
 
 def _six_nodes(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, boundary: np.ndarray, pieces: np.ndarray) -> None:

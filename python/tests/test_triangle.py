@@ -306,11 +306,20 @@ def test_vertex_attributes_are_carried_and_interpolated():
         triangle.triangulate(dict(tri, vertex_attributes=np.ones((4, 2))), "p")
 
 
-def test_yy_is_refused_not_taken_for_y():
-    tri = {"vertices": np.array(SQUARE + HOLE, dtype=float), "segments": np.array(loop(0) + loop(4))}
-    assert len(triangle.triangulate(tri, "pq30Y")["segments"]) == 8
-    with pytest.raises(ValueError, match="'YY' is not supported"):
-        triangle.triangulate(tri, "pq30YY")
+def test_yy_keeps_every_segment_whole_and_y_the_boundary_alone():
+    tri = {"vertices": np.array(SQUARE + [(2, 3), (8, 6)], dtype=float), "segments": np.array(loop(0) + [(4, 5)])}
+    y = triangle.triangulate(tri, "pq25a1Y")
+    yy = triangle.triangulate(tri, "pq25a1YY")
+    assert len(y["segments"]) > 5  # the inner segment split, the boundary whole
+    assert len(yy["segments"]) == 5 and yy["segments"].max() < 6
+    assert len(yy["vertices"]) > 50
+    p = yy["vertices"][yy["triangles"]]
+    areas = ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1]) - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
+    assert areas.max() / 2 <= 1
+    m = ridt.ConstrainedDelaunay(tri["vertices"], tri["segments"], min_angle=25, max_area=1, split_segments=False)
+    assert np.array_equal(m.simplices, yy["triangles"]) and m.check()[0]
+    with pytest.raises(ValueError, match="conforming"):
+        triangle.triangulate(tri, "pq30YYD")
 
 
 FIVE = [[0, 0], [0, 1], [0.5, 0.5], [1, 1], [1, 0]]  # a square and its centre

@@ -36,6 +36,10 @@ void check_input(std::span<const Point> points, std::span<const VertexId> segmen
                      "); above about 34 degrees refinement need not end");
   if (!(quality.max_area >= 0) || !std::isfinite(quality.max_area))
     throw InputError("the maximum area must be finite and >= 0 (got " + std::to_string(quality.max_area) + ")");
+  if (quality.conforming && !quality.split_segments)
+    throw InputError(
+        "a conforming Delaunay mesh splits segments until every edge is Delaunay: it cannot keep them whole "
+        "(conforming with split_segments off; Triangle's -D with -YY)");
   if (segments.size() % 2 != 0)
     throw InputError("a segment list needs an even size (got " + std::to_string(segments.size()) + ")");
   for (std::size_t k = 0; k < segments.size(); ++k)
@@ -177,6 +181,7 @@ void refine(detail::Cdt& m, ConstrainedTriangulation& out, const Options& option
                        std::ldexp(quality.max_area, 2 * scale),
                        {},
                        quality.split_boundary,
+                       quality.split_segments,
                        quality.conforming,
                        quality.max_steiner,
                        static_cast<VertexId>(corners + pinched.size()),

@@ -17,6 +17,7 @@ struct Refinement {
   double max_area = 0;  ///< 0: none
   std::vector<double> region_area;  ///< per region of m.region, 0: none
   bool split_boundary = true;
+  bool split_segments = true;  ///< false: no subsegment split (-YY)
   bool conforming = false;  ///< a point on one subsegment splits another whose circle holds it
   std::size_t max_steiner = 0;
   VertexId corners = 0;  ///< vertices below this id are corners (input points and crossings)

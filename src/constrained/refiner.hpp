@@ -318,7 +318,7 @@ class Refiner {
   }
 
   bool splittable(std::uint32_t s) const {
-    if (!r_.split_boundary && boundary(s)) return false;
+    if (!r_.split_segments || (!r_.split_boundary && boundary(s))) return false;
     const std::uint32_t t = s / 3;
     const int k = static_cast<int>(s % 3);
     return dist2(m_.pts[m_.at(t, k + 1)], m_.pts[m_.at(t, k + 2)]) >= 4 * tiny2_;

@@ -227,6 +227,46 @@ TEST(Refine, NoPointOnTheBoundaryWhenAskedNone) {
   }
 }
 
+// With split_segments off (Triangle's -YY) the segments inside the domain stay whole too: a
+// square cut by two crossing segments and one that ends inside, meshed to 20 degrees and an area
+// bound, keeps every segment as the input's pieces (split only where they cross), and every
+// triangle meets the area bound; with split_boundary off alone, the inner segments are split.
+TEST(Refine, NoPointOnAnySegmentWhenAskedNone) {
+  Pslg g;
+  g.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.2, 0.5}, {0.8, 0.5}, {0.5, 0.2}, {0.5, 0.8}, {0.1, 0.1}, {0.3, 0.25}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 6, 7, 8, 9};
+  Quality q;
+  q.min_angle = 20;
+  q.max_area = 0.002;
+  q.split_segments = false;
+  const ConstrainedTriangulation t = triangulate_constrained(g.points, g.segments, {}, {}, q);
+  EXPECT_EQ(t.crossings, 1u);
+  EXPECT_GT(t.steiner.size(), 200u);
+  // The segments' edges: the seven, the crossing one split in four at the point added first.
+  EXPECT_EQ(t.edges.size() / 2, 9u);
+  for (const VertexId v : t.edges) EXPECT_LE(v, g.points.size()) << "an edge ends at a point refinement added";
+  std::vector<Point> all = g.points;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point &a = all[t.triangles[3 * k]], &b = all[t.triangles[3 * k + 1]], &c = all[t.triangles[3 * k + 2]];
+    EXPECT_LE(((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2, 0.002) << "triangle " << k;
+  }
+  MeshSpec spec;
+  spec.edges = t.edges;
+  spec.segments = g.segments;
+  spec.input_points = g.points.size();
+  spec.max_area = 0.002;
+  const CheckResult r = check_mesh(all, t.triangles, spec);
+  EXPECT_TRUE(r.valid) << r.message;
+  q.split_segments = true;
+  q.split_boundary = false;
+  const ConstrainedTriangulation inner = triangulate_constrained(g.points, g.segments, {}, {}, q);
+  EXPECT_GT(inner.edges.size() / 2, 9u);  // the inner segments split, the boundary whole
+  q.conforming = true;
+  q.split_segments = false;
+  EXPECT_THROW(triangulate_constrained(g.points, g.segments, {}, {}, q), InputError);
+}
+
 TEST(Refine, RegionsCarryAttributesAndAreaBounds) {
   Pslg g;
   g.points = {{0, 0}, {2, 0}, {2, 1}, {0, 1}, {1, 0}, {1, 1}};

@@ -32,7 +32,7 @@ struct Args {
   bool convex_hull = false, zero_based = false, region_areas = false, attributes = false, no_boundary = false,
        neighbours = false, conforming = false, second_order = false, no_holes = false, refine = false,
        no_markers = false, no_node = false, no_ele = false, all_edges = false, jettison = false, consistency = false,
-       off = false, voronoi = false;
+       off = false, voronoi = false, no_segments = false;
 };
 
 // The number that follows switch `at` in Triangle's switch string (digits and '.', then an
@@ -78,7 +78,7 @@ constexpr std::pair<char, bool Args::*> kFlags[] = {
 // mesh), r (refine the mesh of a .ele), q[DEG] (quality, 20 degrees where no number follows),
 // a[AREA] (an area bound; with no number, the regions' own, or with r the .area file's), A
 // (regional attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added
-// on the boundary), S[N] (at most N points added by refinement), o2 (six-node triangles), O
+// on the boundary; YY, on no segment either), S[N] (at most N points added by refinement), o2 (six-node triangles), O
 // (the .poly's holes ignored); for the files written, e (every edge in .edge), n (.neigh), j
 // (no vertex of no triangle), z (number from 0), B (no boundary markers), N and E (no .node, no
 // .ele), P (no .poly: ridt writes none), g (.off), v (the dual: .v.node, .v.edge), C (the mesh
@@ -115,7 +115,8 @@ void apply_switches(Args& a) {
       a.second_order = true;
       ++i;
     } else if (c == 'Y' && i + 1 < s.size() && s[i + 1] == 'Y') {
-      throw InputError("switch 'YY' (no points on any segment) is not supported: 'Y' keeps them off the boundary");
+      a.no_boundary = a.no_segments = true;
+      ++i;
     } else if (const auto flag =
                    std::find_if(std::begin(kFlags), std::end(kFlags), [c](auto f) { return f.first == c; });
                flag != std::end(kFlags)) {
@@ -123,7 +124,7 @@ void apply_switches(Args& a) {
     } else if (std::string_view("pPQViFlXI").find(c) == std::string_view::npos) {
       throw InputError(
           std::string("unknown or unsupported switch '") + c +
-          "' (ridt takes p, r, q, a, A, c, D, Y, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V, i, F, l, X, I)");
+          "' (ridt takes p, r, q, a, A, c, D, Y, YY, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V, i, F, l, X, I)");
     }
   }
 }
@@ -145,6 +146,7 @@ Quality quality_of(const Args& a) {
   q.min_angle = a.quality_given ? a.quality : 0;
   q.max_area = a.max_area;
   q.split_boundary = !a.no_boundary;
+  q.split_segments = !a.no_segments;
   q.conforming = a.conforming;
   q.max_steiner = a.max_steiner;
   return a.no_steiner ? Quality{} : q;
@@ -168,7 +170,7 @@ int finish(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t, 
     const Quality q = quality_of(a);
     // Where refinement stopped early no bound holds; with -Y a triangle with a small angle may
     // have to stay (its point would fall on the boundary), though none too large does.
-    spec.min_angle = t.warning.empty() && q.split_boundary ? q.min_angle : 0;
+    spec.min_angle = t.warning.empty() && q.split_boundary && q.split_segments ? q.min_angle : 0;
     spec.max_area = t.warning.empty() ? q.max_area : 0;
     const CheckResult r = check_mesh(all, t.triangles, spec);
     std::fprintf(stderr, "ridt: consistency check: %s\n", r.message.c_str());
@@ -288,6 +290,8 @@ Command add_mesh(CLI::App& app) {
                  "with no number)");
   mesh->add_flag("--attributes", a->attributes, "each triangle's regional attribute in OUT.ele (Triangle's -A)");
   mesh->add_flag("--no-boundary-steiner", a->no_boundary, "no points added on the boundary (Triangle's -Y)");
+  mesh->add_flag("--no-segment-steiner", a->no_segments,
+                 "no points added on any segment, inside ones too, nor on the boundary (Triangle's -YY)");
   mesh->add_flag("--convex-hull", a->convex_hull,
                  "keep every triangle of the convex hull (Triangle's -c); else what the segments enclose");
   mesh->add_flag("--neighbours", a->neighbours, "write OUT.neigh too (Triangle's -n)");
@@ -299,7 +303,7 @@ Command add_mesh(CLI::App& app) {
                  "the vertices (Triangle's -o2)");
   mesh->add_option(
       "--switches", a->switches,
-      "Triangle's switches: p, r, q, a, A, c, D, Y, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V; i, F, l, "
+      "Triangle's switches: p, r, q, a, A, c, D, Y, YY, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V; i, F, l, "
       "X "
       "and I are "
       "ignored (the exact result does not depend on them)");
