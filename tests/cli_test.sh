@@ -570,6 +570,8 @@ expect 0 "mesh -pjgvz" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hg.ele" --switche
 mkdir "$dir/hx.v.edge"  # a directory where the dual's edges go: nothing at all is written
 expect 2 "mesh -pv over a directory" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hx.ele" --switches pv
 absent "$dir/hx.ele"; absent "$dir/hx.node"; absent "$dir/hx.v.node"
+expect 2 "switch u" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hs.ele" --switches pu
+stderr_has "Quality::unsuitable"; absent "$dir/hs.ele"
 expect 2 "switch s" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hs.ele" --switches ps
 stderr_has "unsupported switch 's'"; absent "$dir/hs.ele"
 expect 0 "mesh to .svg" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/m.svg" --switches pq30

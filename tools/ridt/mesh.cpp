@@ -121,6 +121,10 @@ void apply_switches(Args& a) {
                    std::find_if(std::begin(kFlags), std::end(kFlags), [c](auto f) { return f.first == c; });
                flag != std::end(kFlags)) {
       a.*(flag->second) = true;
+    } else if (c == 'u') {
+      throw InputError(
+          "switch 'u' (a test compiled into Triangle) is not taken here: give it to the library "
+          "(Quality::unsuitable) or to Python (unsuitable=)");
     } else if (std::string_view("pPQViFlXI").find(c) == std::string_view::npos) {
       throw InputError(
           std::string("unknown or unsupported switch '") + c +
