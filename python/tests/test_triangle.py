@@ -415,17 +415,17 @@ def test_the_dual_of_a_mesh_with_a_hole():
     # (the outer boundary and the hole's), along the side's outward normal.
     sides = {}
     for k, tri in enumerate(tris):
-        for i in range(3):
-            sides.setdefault(tuple(sorted((tri[i], tri[(i + 1) % 3]))), []).append(k)
-    shared = {tuple(sorted(ks)) for ks in sides.values() if len(ks) == 2}
+        for i in range(3):  # side a -> b, counter-clockwise: the triangle on its left
+            a, b = tri[i], tri[(i + 1) % 3]
+            sides.setdefault(tuple(sorted((a, b))), []).append((k, a, b))
+    shared = {tuple(sorted(s[0] for s in ks)) for ks in sides.values() if len(ks) == 2}
     assert {tuple(sorted(e)) for e in t["voronoi_edges"].tolist()} == shared
-    alone = [ks[0] for ks in sides.values() if len(ks) == 1]
-    assert sorted(t["voronoi_ray_origins"].tolist()) == sorted(alone)
-    for o, d in zip(t["voronoi_ray_origins"], t["voronoi_ray_directions"]):
-        along = pts[tris[o]] @ d  # the side's two ends lie farthest along its outward normal
-        far = np.argsort(along)[1:]
-        assert along[far[0]] == pytest.approx(along[far[1]], abs=1e-12 * np.abs(along).max())
-        assert along[np.argsort(along)[0]] < along[far[0]]
+    # Each boundary side (a, b) of triangle k: a ray from k along the side turned a quarter
+    # clockwise, (b.y - a.y, a.x - b.x), outward and as long as the side.
+    alone = sorted((k, pts[b][1] - pts[a][1], pts[a][0] - pts[b][0]) for ks in sides.values() if len(ks) == 1
+                   for k, a, b in ks)
+    rays = sorted(zip(t["voronoi_ray_origins"].tolist(), *t["voronoi_ray_directions"].T.tolist()))
+    assert len(alone) >= 8 and rays == alone
 
 
 def test_the_package_calls_on_degenerate_input_warn_and_return_nothing():

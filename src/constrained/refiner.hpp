@@ -134,7 +134,7 @@ class Refiner {
   std::string left_bad() const {
     std::vector<std::uint32_t> shape, area, unsuitable;  // still bad: for the angle, the area, the caller's test
     for (const Bad& b : given_up_)
-      if (const double key = alive(b) ? badness(b.t) : kGood; key != kGood)
+      if (const double key = alive(b) ? b.key : kGood; key != kGood)  // the same vertices, the same badness
         (key >= 0 ? shape : key <= -1 ? area : unsuitable).push_back(b.t);
     auto count = [](std::vector<std::uint32_t>& v) {
       std::sort(v.begin(), v.end());
@@ -236,7 +236,7 @@ class Refiner {
   // Where triangle t stands in the queue of bad triangles, kGood where it is good: one too large
   // (whatever its angles) by minus its area over its bound (the largest first: -1 or below),
   // then one the caller's test finds unsuitable, refined as one too large is (the largest first,
-  // from -1/2 to 0), one with a small
+  // from -1/3 to 0), one with a small
   // angle by its shortest edge's squared length (the smallest first: the sizes then grade out
   // from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex coastline).
   double badness(std::uint32_t t) const {
@@ -245,8 +245,12 @@ class Refiner {
     const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     // First: the terminator (improve) may leave a small angle, never an area above its bound.
     if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) return -twice / (2 * bound);
-    // Within the box a triangle's doubled area is at most diag2_, so this is in [-1/2, 0).
-    if (r_.unsuitable && r_.unsuitable(a, b, c, twice)) return std::min(-twice / (twice + diag2_), -0x1p-1000);
+    // Within the box a triangle's doubled area is at most diag2_ / 2, so this is in [-1/3, 0)
+    // (divided first: diag2_ may be near the largest double).
+    if (r_.unsuitable && r_.unsuitable(a, b, c, twice)) {
+      const double r = twice / diag2_;
+      return std::min(-r / (1 + r), -0x1p-1000);
+    }
     if (sin2_ > 0) {
       const double l[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};  // across from corner 0, 1, 2
       const int s = shortest(l);

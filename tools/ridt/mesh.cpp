@@ -140,7 +140,7 @@ std::vector<std::string> outputs(const Args& a) {
   if (extension != ".ele")
     throw InputError(
         "mesh writes Triangle's files or a drawing: give -o OUT.ele (OUT.node and OUT.edge are "
-        "written beside it) or OUT.svg");
+        "written beside it; switch g adds OUT.off, v OUT.v.node and OUT.v.edge) or OUT.svg");
   return io::mesh_file_paths(a.output, {!a.no_ele, !a.no_node, a.neighbours, a.off, a.voronoi});
 }
 
@@ -284,7 +284,9 @@ Command add_mesh(CLI::App& app) {
           "(Triangle's input without -p); or a mesh to refine, .ele, with its .node beside it, and its .poly's "
           "segments (else its .edge's) where there (Triangle's -r)")
       ->required();
-  mesh->add_option("-o,--output", a->output, "OUT.ele (OUT.node and OUT.edge are written beside it), or OUT.svg")
+  mesh->add_option("-o,--output", a->output,
+                   "OUT.ele (OUT.node and OUT.edge are written beside it, and as the switches ask OUT.neigh, OUT.off, "
+                   "OUT.v.node and OUT.v.edge), or OUT.svg")
       ->required();
   CLI::Option* quality =
       mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
