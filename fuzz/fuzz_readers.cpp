@@ -184,7 +184,9 @@ void validate(const io::Pslg& g, const ridt::ConstrainedTriangulation& t, const 
 
 // The quality a .poly is meshed to, picked by a hash of its bytes (the same file, the same
 // mesh): no angle or 20 to 33 degrees, no area bound or a fiftieth or a five-hundredth of its
-// box's, points on the boundary or not (-Y), conforming or not (-D); its regions' own bounds.
+// box's, points on the boundary or not (-Y), on any segment or not (-YY), conforming or not
+// (-D), a size of the caller's that grows away from the box's corner or none (-u); its regions'
+// own bounds.
 ridt::Quality quality_for(std::string_view data, const io::Pslg& g) {
   std::uint64_t h = 1469598103934665603u;
   for (const char c : data) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211u;
@@ -198,6 +200,12 @@ ridt::Quality quality_for(std::string_view data, const io::Pslg& g) {
   if (share > 0 && std::isfinite(box) && box > 0) q.max_area = box / share;
   q.split_boundary = ((h >> 5) & 3) != 0;
   q.conforming = ((h >> 7) & 3) == 0;
+  q.split_segments = q.conforming || ((h >> 9) & 7) != 0;
+  if (((h >> 12) & 3) == 0 && std::isfinite(box) && box > 0)
+    q.unsuitable = [x0, y0, box](const Point& a, const Point& b, const Point& c, double area) {
+      const double x = (a.x + b.x + c.x) / 3 - x0, y = (a.y + b.y + c.y) / 3 - y0;
+      return area > box / 400 + (x * x + y * y) / 20;
+    };
   if (!q.enabled()) q.min_angle = 25;
   q.max_steiner = 5000;
   return q;
@@ -224,8 +232,15 @@ void refine_again(const io::Pslg& g, const ridt::ConstrainedTriangulation& carve
   as_given.points = all;
   as_given.segments = carved.edges;
   ridt::Quality asked = q;
-  if (!q.split_boundary) asked.min_angle = asked.max_area = 0;
+  if (!q.split_boundary || !q.split_segments) asked.min_angle = asked.max_area = 0;
   validate(as_given, r, {}, asked);
+}
+
+// With -YY no segment is split but where segments cross: each segment edge ends at an input
+// point or a crossing. A finding where one does not.
+void segments_whole(const io::Pslg& g, const ridt::ConstrainedTriangulation& t) {
+  for (const VertexId v : t.edges)
+    if (v >= g.points.size() + t.crossings) finding("-YY: a segment edge ends at a point refinement added");
 }
 
 // A .poly: either IoError, or finite points and holes, segments between them, and then a
@@ -260,9 +275,11 @@ void graph(std::string_view data) {
     for (const auto& [x, y, attribute, max_area] : g.regions) domain.regions.push_back({{x, y}, attribute, max_area});
     const ridt::ConstrainedTriangulation meshed = ridt::triangulate_constrained(g.points, g.segments, {}, domain, q);
     ridt::Quality asked = q;
-    if (!q.split_boundary) asked.min_angle = asked.max_area = 0;  // -Y: a bad triangle may have to stay
+    // -Y, -YY: a bad triangle may have to stay
+    if (!q.split_boundary || !q.split_segments) asked.min_angle = asked.max_area = 0;
     if (meshed.steiner.size() < q.max_steiner + meshed.crossings && meshed.warning.empty())
       validate(g, meshed, domain, asked);
+    if (!q.split_segments) segments_whole(g, meshed);
     refine_again(g, carved, q);
   } catch (const ridt::InputError&) {}
 }
