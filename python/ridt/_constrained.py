@@ -109,7 +109,8 @@ class ConstrainedDelaunay:
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
                  split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
-                 max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, method: str = "auto", threads: int = 1, seed: int = 1):
+                 max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, method: str = "auto",
+                 threads: int = 1, seed: int = 1):
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
         if segs.size and segs.max() >= pts.shape[0]:
@@ -132,7 +133,8 @@ class ConstrainedDelaunay:
     def from_mesh(cls, points: Any, simplices: Any, segments: Any = None, *, min_angle: float = 0.0,
                   max_area: float = 0.0, triangle_max_area: Any = None, triangle_attributes: Any = None,
                   split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
-                  max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
+                  max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None,
+                  threads: int = 1) -> "ConstrainedDelaunay":
         """A mesh already made, refined (Triangle's ``-r``; ridt.refine_mesh): `simplices`
         (counter-clockwise rows of three point indices) cover the domain, whose boundary and
         `segments` (each an edge of the mesh) stay fixed. The mesh is first made constrained
@@ -178,7 +180,8 @@ class ConstrainedDelaunay:
 
     def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,
                split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
-               max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, threads: int = 1) -> "ConstrainedDelaunay":
+               max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None,
+               threads: int = 1) -> "ConstrainedDelaunay":
         """This mesh refined further (``from_mesh`` on its points, simplices and edges; its
         attributes carried): a new ConstrainedDelaunay. `triangle_max_area`: one bound a triangle
         of this mesh, for adaptive refinement."""

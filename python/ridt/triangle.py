@@ -59,8 +59,8 @@ def _switches(opts: str) -> Tuple[set, float, float, bool, int]:
     while i < len(opts):
         c = opts[i]
         if c not in _TAKEN:
-            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, YY, S, e, n, o2, O, z, "
-                             "B, j, C, v, Q, V; i, F, l, X, I are ignored)")
+            raise ValueError(f"switch '{c}' is not supported (ridt takes p, r, q, a, A, c, D, Y, YY, S, e, n, o2, O, "
+                             "z, B, j, C, v, Q, V; i, F, l, X, I are ignored)")
         if c == "o" and opts[i + 1:i + 2] != "2":
             raise ValueError("switch 'o' is taken as 'o2' only (six-node triangles)")
         if c == "Y" and opts[i + 1:i + 2] == "Y":  # 'YY': no point on any segment
@@ -107,15 +107,15 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     pts = _api.as_points(tri["vertices"], "vertices", "ridt.triangle")
     pslg = "p" in flags
     segments = np.asarray(tri.get("segments", np.zeros((0, 2), dtype=np.intc))) if pslg else np.zeros((0, 2))
-    holes = tri.get("holes") if pslg and "O" not in flags else None
+    holes = tri.get("holes") if pslg and "O" not in flags and "r" not in flags else None  # 'r': the mesh's own
     if "r" in flags:
         cdt = _refined(tri, pts, segments, flags, angle, area, regional, steiner)
-        holes = None
     else:
         cdt = ConstrainedDelaunay(pts, segments.reshape(-1, 2) if segments.size else np.zeros((0, 2), dtype=np.intc),
-                                  holes=holes, convex_hull="c" in flags or not pslg, regions=_regions(tri, regional),
-                                  min_angle=max(angle, 0.0), max_area=area, split_boundary="Y" not in flags,
-                                  split_segments="YY" not in flags, conforming="D" in flags, max_steiner=max(steiner, 0))
+                                  holes=holes, convex_hull="c" in flags or not pslg, conforming="D" in flags,
+                                  regions=_regions(tri, regional), min_angle=max(angle, 0.0), max_area=area,
+                                  max_steiner=max(steiner, 0), split_boundary="Y" not in flags,
+                                  split_segments="YY" not in flags)
     out: Dict[str, np.ndarray] = {"vertices": cdt.points.copy(), "triangles": cdt.simplices.copy()}
     if "vertex_attributes" in tri:
         out["vertex_attributes"] = _vertex_attributes(tri["vertex_attributes"], pts, cdt)
@@ -149,17 +149,8 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
 def _dual(cdt: ConstrainedDelaunay) -> Dict[str, np.ndarray]:
     """'v': the mesh's dual, a vertex a triangle (cocircular neighbours not merged, so that
     vertex t stays triangle t's circumcentre, as in Triangle's .v.node)."""
-    points = cdt.points
-    if len(cdt.simplices) == 0:
-        vertices, ridge_points = np.empty((0, 2)), np.empty((0, 2), dtype=np.intc)
-        ridge_vertices = np.empty((0, 2), dtype=np.intc)
-    else:
-        vertices, _, _, _, ridge_points, ridge_vertices = _core.voronoi(points, cdt._tri, 1, False)
-        ridge_points, ridge_vertices = ridge_points.view(np.intc), ridge_vertices.view(np.intc)
-    ray = ridge_vertices[:, 1] < 0
-    return {"voronoi_vertices": vertices, "voronoi_edges": ridge_vertices[~ray].copy(),
-            "voronoi_ray_origins": ridge_vertices[ray, 0].copy(),
-            "voronoi_ray_directions": ray_directions(points, ridge_points[ray])}
+    keys = ("voronoi_vertices", "voronoi_edges", "voronoi_ray_origins", "voronoi_ray_directions")
+    return dict(zip(keys, _diagram(cdt.points, cdt._tri, False)))
 
 
 def _as_asked(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, flags: set) -> Dict[str, np.ndarray]:
@@ -285,9 +276,15 @@ def voronoi(pts: Any) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     the hull edge it bisects, as long as that edge. Degenerate input (as for ``delaunay``):
     every array empty, with the warning."""
     points, tri = _plain(pts, "ridt.triangle.voronoi")
-    if len(tri) == 0:
+    return _diagram(points, tri, True)
+
+
+def _diagram(points: np.ndarray, tri: Any, merge: bool) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The dual of triangulation `tri` of `points` as ``voronoi`` returns it: vertices (with
+    `merge`, cocircular triangles' one), edges, ray origins and ray directions."""
+    if len(tri.triangles) == 0:
         return (np.empty((0, 2)), np.empty((0, 2), dtype=np.intc), np.empty(0, dtype=np.intc), np.empty((0, 2)))
-    vertices, _, _, _, ridge_points, ridge_vertices = _core.voronoi(points, tri, 1)
+    vertices, _, _, _, ridge_points, ridge_vertices = _core.voronoi(points, tri, 1, merge)
     ridge_points, ridge_vertices = ridge_points.view(np.intc), ridge_vertices.view(np.intc)
     ray = ridge_vertices[:, 1] < 0
     return (vertices, ridge_vertices[~ray].copy(), ridge_vertices[ray, 0].copy(),

@@ -78,14 +78,14 @@ constexpr std::pair<char, bool Args::*> kFlags[] = {
 // mesh), r (refine the mesh of a .ele), q[DEG] (quality, 20 degrees where no number follows),
 // a[AREA] (an area bound; with no number, the regions' own, or with r the .area file's), A
 // (regional attributes), c (keep the convex hull), D (conforming Delaunay), Y (no points added
-// on the boundary; YY, on no segment either), S[N] (at most N points added by refinement), o2 (six-node triangles), O
-// (the .poly's holes ignored); for the files written, e (every edge in .edge), n (.neigh), j
-// (no vertex of no triangle), z (number from 0), B (no boundary markers), N and E (no .node, no
-// .ele), P (no .poly: ridt writes none), g (.off), v (the dual: .v.node, .v.edge), C (the mesh
-// checked, the verdict on stderr); Q and V
-// (quiet, verbose), and i, F, l, X and I (Triangle's choice of algorithm, its exact arithmetic
-// off, its iteration numbers in file names: the exact result does not depend on them):
-// ignored; the others are refused by name.
+// on the boundary; YY, on no segment either), S[N] (at most N points added by refinement), o2
+// (six-node triangles), O (the .poly's holes ignored); for the files written, e (every edge in
+// .edge), n (.neigh), j (no vertex of no triangle), z (number from 0), B (no boundary markers),
+// N and E (no .node, no .ele), P (no .poly: ridt writes none), g (.off), v (the dual: .v.node,
+// .v.edge), C (the mesh checked, the verdict on stderr); Q and V (quiet, verbose), and i, F, l,
+// X and I (Triangle's choice of algorithm, its exact arithmetic off, its iteration numbers in
+// file names: the exact result does not depend on them): ignored; the others are refused by
+// name.
 void apply_switches(Args& a) {
   const std::string& s = a.switches;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -133,6 +133,9 @@ void apply_switches(Args& a) {
   }
 }
 
+// Which files beside OUT.ele `a` asks for.
+io::MeshFileSet files_of(const Args& a) { return {!a.no_ele, !a.no_node, a.neighbours, a.off, a.voronoi}; }
+
 // The files `a` asks for: OUT.svg, or OUT.ele and the files beside it.
 std::vector<std::string> outputs(const Args& a) {
   const std::string extension = io::extension(a.output);
@@ -141,7 +144,7 @@ std::vector<std::string> outputs(const Args& a) {
     throw InputError(
         "mesh writes Triangle's files or a drawing: give -o OUT.ele (OUT.node and OUT.edge are "
         "written beside it; switch g adds OUT.off, v OUT.v.node and OUT.v.edge) or OUT.svg");
-  return io::mesh_file_paths(a.output, {!a.no_ele, !a.no_node, a.neighbours, a.off, a.voronoi});
+  return io::mesh_file_paths(a.output, files_of(a));
 }
 
 // The quality a asks for (none at all with -S0: the crossings, which the graph needs, stay).
@@ -182,7 +185,7 @@ int finish(const Args& a, const io::Pslg& g, const ConstrainedTriangulation& t, 
   }
   MeshOutput o;
   o.path = a.output, o.threads = a.threads, o.attributes = a.attributes || attributes;
-  o.files = {!a.no_ele, !a.no_node, a.neighbours, a.off, a.voronoi};
+  o.files = files_of(a);
   o.zero_based = a.zero_based, o.second_order = a.second_order, o.markers = !a.no_markers;
   o.all_edges = a.all_edges, o.jettison = a.jettison;
   write_mesh(o, g, t);
@@ -204,7 +207,8 @@ std::vector<VertexId> segments_of_edges(const std::string& path, const io::Pslg&
 }
 
 // Triangle's -r: IN.ele and IN.node refined, with the segments of IN.poly (with switch p, as
-// Triangle's -rp) or else of IN.edge (segments_of_edges), where there, kept; IN.area's bounds with -a and no number; the .ele's first attribute carried.
+// Triangle's -rp) or else of IN.edge (segments_of_edges), where there, kept; IN.area's bounds
+// with -a and no number; the .ele's first attribute carried.
 int run_refine(const Args& a, const std::vector<std::string>& out, const Options& o) {
   if (io::extension(a.input) != ".ele")
     throw InputError("switch 'r' refines a mesh: give its .ele (its .node is read beside it)");
@@ -310,9 +314,7 @@ Command add_mesh(CLI::App& app) {
   mesh->add_option(
       "--switches", a->switches,
       "Triangle's switches: p, r, q, a, A, c, D, Y, YY, S, e, n, j, z, o2, O, B, N, E, P, g, v, C, Q, V; i, F, l, "
-      "X "
-      "and I are "
-      "ignored (the exact result does not depend on them)");
+      "X and I are ignored (the exact result does not depend on them)");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
                    "threads of the triangulation and of the output's text (0, the default: all hardware threads)");

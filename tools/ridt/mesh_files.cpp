@@ -250,16 +250,17 @@ void write_mesh(const MeshOutput& o, const io::Pslg& g, const ConstrainedTriangu
   m.point_attributes = attributes;
   m.point_attribute_count = g.vertex_attributes;
   m.files = o.files;
-  if (o.files.neighbors) m.neighbors = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
+  const auto sides = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
+  if (o.files.neighbors) m.neighbors = sides;
   m.first_index = o.zero_based ? 0 : g.first_index;
   m.markers = o.markers;
   Dual dual;
   if (o.files.voronoi) dual = dual_of(all, t, threads);
   m.voronoi_vertices = dual.vertices, m.voronoi_edges = dual.edges, m.voronoi_directions = dual.directions;
-  // Each edge inside is two triangles' side, each on the boundary one's.
-  const auto sides = std::span(t.neighbors).first(std::min(t.neighbors.size(), 3 * t.size()));
-  const auto boundary = static_cast<std::size_t>(std::count(sides.begin(), sides.end(), -1));
-  m.edge_count = boundary + (3 * t.size() - boundary) / 2;
+  if (o.files.off) {  // each edge inside is two triangles' side, each on the boundary one's
+    const auto boundary = static_cast<std::size_t>(std::count(sides.begin(), sides.end(), -1));
+    m.edge_count = boundary + (3 * t.size() - boundary) / 2;
+  }
   SecondOrder s;
   std::vector<std::int64_t> point_markers;
   std::vector<double> point_attributes;
