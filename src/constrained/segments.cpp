@@ -197,7 +197,10 @@ class Inserter {
       const int o = orient2d(p[a], p[b], p[x]);
       if (o == 0) {
         right_.push_back(x), left_.push_back(x);
-        replace();
+        if (removed_.size() == 2)
+          flip(a, u, w, x);
+        else
+          replace();
         const std::uint32_t e = m_.find_edge(a, x);
         m_.set_fixed(e / 3, static_cast<int>(e % 3), true);
         return x;
@@ -234,6 +237,39 @@ class Inserter {
     int back;
     std::uint8_t fixed;
   };
+
+  // Edge k of t as the outside sees it: the triangle across, its slot there, whether fixed.
+  Outer outer(std::uint32_t t, int k) const {
+    const std::int32_t n = m_.nbrs[3 * t + k];
+    return {n, n >= 0 ? m_.back(static_cast<std::uint32_t>(n), t) : -1, m_.fixed[3 * t + k]};
+  }
+
+  // replace() where the piece a-x crosses one edge, u-w (removed_ = {t, the triangle beyond}):
+  // that edge flipped into a-x, the slots, corners and links left as replace() leaves them (t
+  // becomes (a, u, x), the other (a, x, w)), without its sorted lists. Three in four of the
+  // pieces a coastline's Delaunay triangulation lacks are such.
+  void flip(VertexId a, VertexId u, VertexId w, VertexId x) {
+    const std::uint32_t t = removed_[0], r = removed_[1];
+    const Outer au = outer(t, m_.corner_of(t, w)), wa = outer(t, m_.corner_of(t, u));
+    const Outer ux = outer(r, m_.corner_of(r, w)), xw = outer(r, m_.corner_of(r, u));
+    auto make = [&](std::uint32_t s, VertexId p, VertexId q, VertexId z, const Outer& e0, const Outer* e1,
+                    const Outer* e2, std::uint32_t inner) {
+      const VertexId v[3] = {p, q, z};
+      const Outer* e[3] = {&e0, e1, e2};
+      for (int j = 0; j < 3; ++j) {
+        m_.tris[3 * s + j] = v[j];
+        m_.corner[v[j]] = 3 * s + static_cast<std::uint32_t>(j);
+        if (e[j] == nullptr) {
+          m_.nbrs[3 * s + j] = static_cast<std::int32_t>(inner), m_.fixed[3 * s + j] = 0;
+          continue;
+        }
+        m_.nbrs[3 * s + j] = e[j]->n, m_.fixed[3 * s + j] = e[j]->fixed;
+        if (e[j]->n >= 0) m_.nbrs[3 * static_cast<std::size_t>(e[j]->n) + e[j]->back] = static_cast<std::int32_t>(s);
+      }
+    };
+    make(t, a, u, x, ux, nullptr, &au, r);  // edges u-x, x-a (inside), a-u
+    make(r, a, x, w, xw, &wa, nullptr, t);  // edges x-w, w-a, a-x (inside)
+  }
   using Keyed = std::pair<std::uint64_t, Outer>;
 
   // Triangles removed_ replaced by the triangulations of the polygons right_ and left_ of the
