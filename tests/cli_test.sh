@@ -514,6 +514,11 @@ printf '4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n' >"$dir/fold.node"
 printf '2 3 0\n1 1 2 3\n2 1 2 4\n' >"$dir/fold.ele"
 expect 2 "refine a folded mesh" -- "$ridt" mesh "$dir/fold.ele" -o "$dir/rc.ele"
 stderr_has "overlap"; absent "$dir/rc.ele"
+# A small triangle inside a large one: no vertex shared, no edge crossed, covered twice.
+printf '6 2 0 0\n1 0 0\n2 10 0\n3 0 10\n4 1 1\n5 2 1\n6 1 2\n' >"$dir/nest.node"
+printf '2 3 0\n1 1 2 3\n2 4 5 6\n' >"$dir/nest.ele"
+expect 2 "refine a mesh with a piece inside another" -- "$ridt" mesh "$dir/nest.ele" -o "$dir/rc.ele"
+stderr_has "covers the area about"; absent "$dir/rc.ele"
 expect 2 "-r of a .poly" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/rd.ele" --switches rq
 stderr_has "give its .ele"
 # Triangle's switches for the files: e (every edge in .edge: 16 for the holed square's 8

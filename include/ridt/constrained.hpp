@@ -108,9 +108,10 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
 /// `edges` the fixed edges (the segments and the boundary). `options`: canonical_order,
 /// neighbors, threads (the sort) and memory_limit. Throws InputError for an index out of range,
 /// a triangle clockwise or without area, two triangles running along an edge the same way,
-/// triangles about a vertex that turn round it more than once or overlap there (pieces that
-/// overlap without sharing a vertex are not found), a segment that is no edge, or per-triangle
-/// values not one a triangle or not finite.
+/// triangles about a vertex that turn round it more than once or overlap there, pieces of the
+/// mesh that overlap elsewhere (boundary edges that cross, two boundary vertices at one point,
+/// a vertex inside a boundary edge, a piece inside another), a segment that is no edge, or
+/// per-triangle values not one a triangle or not finite.
 ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<const VertexId> triangles,
                                      std::span<const VertexId> segments, const Quality& quality,
                                      std::span<const double> max_areas = {}, std::span<const double> attributes = {},

@@ -209,3 +209,15 @@ def test_what_ones_test_raises_comes_out_and_a_bad_test_is_refused():
     with pytest.warns(ridt.RefinementWarning, match="stopped after 300"):
         m = ridt.ConstrainedDelaunay(square, loop, unsuitable=lambda a, b, c, area: True, max_steiner=300)
     assert len(m.added) == 300
+
+
+def test_a_mesh_whose_pieces_overlap_is_refused():
+    # No vertex shared: a small triangle inside a large one, and two squares whose edges cross.
+    nested = np.array([[0, 0], [10, 0], [0, 10], [1, 1], [2, 1], [1, 2]], float)
+    with pytest.raises(ValueError, match="covers the area about .* 2 times"):
+        ridt.ConstrainedDelaunay.from_mesh(nested, [[0, 1, 2], [3, 4, 5]])
+    squares = np.array([[0, 0], [1, 0], [1, 1], [0, 1], [.5, .5], [1.5, .5], [1.5, 1.5], [.5, 1.5]])
+    with pytest.raises(ValueError, match=r"cross at \(1, 0.5\)"):
+        ridt.ConstrainedDelaunay.from_mesh(squares, [[0, 1, 2], [0, 2, 3], [4, 5, 6], [4, 6, 7]])
+    # The large triangle alone, the others' points unused: a mesh.
+    assert len(ridt.ConstrainedDelaunay.from_mesh(nested, [[0, 1, 2]]).simplices) == 1

@@ -2,10 +2,14 @@
 #include "constrained/given_mesh.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 
 #include "predicates/predicates.hpp"
+#include "ridt/constrained.hpp"
 
 namespace ridt::detail {
 
@@ -195,6 +199,104 @@ void check_fans(const Cdt& m) {
     }
     i = j;
   }
+}
+
+}  // namespace ridt::detail
+
+namespace ridt::detail {
+namespace {
+
+// Pairs (a, b) of vertices below n, listed by a.
+class ByFirst {
+ public:
+  ByFirst(std::size_t n, std::span<const VertexId> pairs) : start_(n + 1, 0), to_(pairs.size() / 2) {
+    for (std::size_t k = 0; k < pairs.size(); k += 2) ++start_[pairs[k] + 1];
+    for (std::size_t v = 1; v <= n; ++v) start_[v] += start_[v - 1];
+    std::vector<std::uint32_t> at(start_.begin(), start_.end() - 1);
+    for (std::size_t k = 0; k < pairs.size(); k += 2) to_[at[pairs[k]]++] = pairs[k + 1];
+  }
+  bool has(VertexId a, VertexId b) const {
+    return std::find(to_.begin() + start_[a], to_.begin() + start_[a + 1], b) != to_.begin() + start_[a + 1];
+  }
+
+ private:
+  std::vector<std::uint32_t> start_;
+  std::vector<VertexId> to_;
+};
+
+std::string at(const Point& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.17g, %.17g)", p.x, p.y);
+  return std::string(text);
+}
+
+// How many times the mesh covers each triangle of c (the constrained triangulation of its
+// boundary, `pts` its points): 0 beyond the hull, one more across a boundary edge into the side
+// the mesh lies on, one less out of it. More than once anywhere: pieces overlap (a piece inside
+// another, or a strip that winds over itself); the checks at the vertices make the mesh one
+// layer wherever it covers once.
+void check_covered_once(const ConstrainedTriangulation& c, const std::vector<Point>& pts, const ByFirst& boundary) {
+  constexpr std::int32_t kUnset = std::numeric_limits<std::int32_t>::min();
+  std::vector<std::int32_t> cover(c.size(), kUnset);
+  std::vector<std::uint32_t> queue;
+  auto across = [&](std::size_t t, int j) {  // the cover's change from t's side of its edge j to the other
+    const VertexId a = c.triangles[3 * t + (j + 1) % 3], b = c.triangles[3 * t + (j + 2) % 3];
+    return (boundary.has(b, a) ? 1 : 0) - (boundary.has(a, b) ? 1 : 0);
+  };
+  for (std::size_t t = 0; t < c.size(); ++t)
+    for (int j = 0; j < 3; ++j)
+      if (c.neighbors[3 * t + j] < 0 && cover[t] == kUnset)
+        cover[t] = -across(t, j), queue.push_back(static_cast<std::uint32_t>(t));
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const std::uint32_t t = queue[next];
+    if (cover[t] != 0 && cover[t] != 1) {
+      const VertexId* v = &c.triangles[3 * std::size_t{t}];
+      const Point middle{(pts[v[0]].x + pts[v[1]].x + pts[v[2]].x) / 3, (pts[v[0]].y + pts[v[1]].y + pts[v[2]].y) / 3};
+      throw InputError("pieces of the mesh overlap: it covers the area about " + at(middle) + " " +
+                       std::to_string(cover[t]) + " times");
+    }
+    for (int j = 0; j < 3; ++j)
+      if (const std::int32_t n = c.neighbors[3 * std::size_t{t} + j]; n >= 0 && cover[n] == kUnset)
+        cover[n] = cover[t] + across(t, j), queue.push_back(static_cast<std::uint32_t>(n));
+  }
+}
+
+}  // namespace
+
+void check_one_layer(std::span<const Point> points, std::span<const VertexId> triangles,
+                     std::span<const std::int32_t> neighbours, const Options& options) {
+  // The boundary's vertices, renumbered, and its edges, each run with the mesh on its left.
+  std::vector<VertexId> id(points.size(), Cdt::kNone), used, segments;
+  for (std::size_t s = 0; s < triangles.size(); ++s) {
+    if (neighbours[s] >= 0) continue;
+    const VertexId ends[2] = {triangles[s - s % 3 + (s + 1) % 3], triangles[s - s % 3 + (s + 2) % 3]};
+    for (const VertexId v : ends)
+      if (id[v] == Cdt::kNone) id[v] = static_cast<VertexId>(used.size()), used.push_back(v);
+    segments.push_back(id[ends[0]]), segments.push_back(id[ends[1]]);
+  }
+  std::vector<Point> pts(used.size());
+  for (std::size_t k = 0; k < used.size(); ++k) pts[k] = points[used[k]];
+  Options plain;
+  plain.threads = options.threads, plain.memory_limit = options.memory_limit;
+  Domain all;
+  all.convex_hull = true;
+  const ConstrainedTriangulation c = triangulate_constrained(pts, segments, plain, all, {});
+  if (!c.duplicates.empty())
+    throw InputError("vertices " + std::to_string(used[c.duplicates[0].dropped]) + " and " +
+                     std::to_string(used[c.duplicates[0].kept]) + " of the mesh's boundary lie at one point " +
+                     at(pts[c.duplicates[0].kept]) + ": pieces of it overlap there");
+  if (c.crossings > 0)
+    throw InputError("edges of the mesh's boundary cross at " + at(c.steiner[0]) + ": pieces of it overlap");
+  // Every boundary edge whole (none passes through a vertex): one of c's segment edges.
+  const ByFirst boundary(pts.size(), segments), fixed(pts.size(), c.edges);
+  for (std::size_t k = 0; k < segments.size(); k += 2) {
+    const VertexId a = segments[k], b = segments[k + 1];
+    if (!fixed.has(std::min(a, b), std::max(a, b)))
+      throw InputError("the boundary edge from vertex " + std::to_string(used[a]) + " to " + std::to_string(used[b]) +
+                       " passes through another vertex of the mesh: pieces of it overlap, or one meets another "
+                       "inside an edge");
+  }
+  check_covered_once(c, pts, boundary);
 }
 
 }  // namespace ridt::detail

@@ -62,7 +62,18 @@ class GivenMesh {
 /// Throws InputError where the triangles about a vertex of m, taken in turn across their
 /// shared edges, turn round it more than once, or where two such fans at one vertex overlap
 /// (one that closes round it must be its only one). Exact: directions compared by half-plane,
-/// then by orientation. Pieces of the mesh that overlap without sharing a vertex pass.
+/// then by orientation. Pieces of the mesh that overlap without sharing a vertex pass (they are
+/// check_one_layer's).
 void check_fans(const Cdt& m);
+
+/// Throws InputError, naming what it found, unless `triangles` (each counter-clockwise, no two
+/// along an edge the same way, the fans about each vertex sound: check_fans) lie in one layer.
+/// Exact, from the boundary alone (`neighbours` < 0): the constrained Delaunay triangulation
+/// of its vertices with its edges as segments must find no two of them at one point, no edge
+/// crossing another or passing through a vertex, and, counting across the boundary edges from
+/// outside, no place the mesh covers twice (a piece inside another, or a strip that winds over
+/// itself). `options`: threads and memory_limit for that triangulation.
+void check_one_layer(std::span<const Point> points, std::span<const VertexId> triangles,
+                     std::span<const std::int32_t> neighbours, const Options& options);
 
 }  // namespace ridt::detail

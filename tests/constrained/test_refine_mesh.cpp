@@ -267,5 +267,48 @@ TEST(RefineMesh, TrianglesTurningTwiceRoundAVertexAreRefused) {
   EXPECT_NO_THROW(refine_mesh(p, tris, {}, {}));
 }
 
+// Pieces that overlap without sharing a vertex pass every test at a vertex; they are found by
+// the mesh's own constrained triangulation, and named: crossing edges, a piece inside a
+// triangle, a vertex inside an edge, two vertices at one point. A point that no triangle uses
+// may lie anywhere.
+TEST(RefineMesh, PiecesThatOverlapWithoutSharingAVertexAreRefused) {
+  auto message = [](const std::vector<Point>& p, const std::vector<VertexId>& tris) {
+    try {
+      refine_mesh(p, tris, {}, {});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // Two unit squares, the second moved by (0.5, 0.5): their edges cross at (1, 0.5), (0.5, 1).
+  const std::vector<Point> squares = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
+  EXPECT_NE(message(squares, {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7}).find("cross at ("), std::string::npos);
+  // A small triangle inside a large one: no edge crosses.
+  const std::vector<Point> nested = {{0, 0}, {10, 0}, {0, 10}, {1, 1}, {2, 1}, {1, 2}};
+  const std::string inside = message(nested, {0, 1, 2, 3, 4, 5});
+  EXPECT_NE(inside.find("overlap: it covers the area about"), std::string::npos) << inside;
+  EXPECT_NE(inside.find(" 2 times"), std::string::npos) << inside;
+  // A vertex of one piece inside an edge of another (no overlap of area, but no mesh either).
+  const std::vector<Point> hanging = {{0, 0}, {2, 0}, {1, 1}, {1, 0}, {1, -1}};
+  EXPECT_NE(message(hanging, {0, 1, 2, 0, 4, 3, 3, 4, 1}).find("passes through another vertex"), std::string::npos);
+  // Two triangles touching where two of their vertices lie at one point.
+  const std::vector<Point> twins = {{0, 0}, {1, 0}, {0, 1}, {0, 0}, {-1, 0}, {0, -1}};
+  EXPECT_NE(message(twins, {0, 1, 2, 3, 4, 5}).find("lie at one point (0, 0)"), std::string::npos);
+  // A strip that goes one and a quarter times round: every vertex's fan is sound, and it
+  // covers its own first quarter again.
+  std::vector<Point> spiral;
+  std::vector<VertexId> strip;
+  for (VertexId k = 0; k <= 11; ++k) {
+    const double a = 2.5 * 3.14159265358979323846 * k / 11;
+    spiral.push_back({std::cos(a), std::sin(a)}), spiral.push_back({2 * std::cos(a), 2 * std::sin(a)});
+    if (k > 0) strip.insert(strip.end(), {2 * k - 2, 2 * k - 1, 2 * k + 1, 2 * k - 2, 2 * k + 1, 2 * k});
+  }
+  EXPECT_NE(message(spiral, strip).find("overlap"), std::string::npos);
+  strip.resize(6 * 8);  // less than a turn: a mesh
+  EXPECT_EQ(message(spiral, strip), "accepted");
+  // The nested triangle's points unused: the large one alone is a mesh.
+  EXPECT_EQ(message(nested, {0, 1, 2}), "accepted");
+}
+
 }  // namespace
 }  // namespace ridt::test
