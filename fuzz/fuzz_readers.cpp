@@ -127,10 +127,15 @@ void triangles(std::string_view data, const char* name, int first_index) {
   const ridt::CheckResult verdict = ridt::check(points, tris);
   if (verdict.valid != (verdict.problems == 0) || verdict.message.empty())
     finding("the validator's verdict does not add up: " + verdict.message);
-  // refine_mesh takes them as a mesh (flipped to constrained Delaunay) or refuses them by name.
+  // refine_mesh takes them as a mesh (flipped to constrained Delaunay), one the validator finds
+  // sound with its fixed edges as segments, or refuses them by name.
   try {
     const ridt::ConstrainedTriangulation r = ridt::refine_mesh(points, tris, {}, {});
     if (r.size() != tris.size() / 3 || !r.steiner.empty()) finding("refine_mesh with no bound changed the count");
+    ridt::MeshSpec spec;
+    spec.edges = r.edges;
+    if (const ridt::CheckResult c = ridt::check_mesh(points, r.triangles, spec); !c.valid)
+      finding("refine_mesh took a mesh the validator refuses: " + c.message);
   } catch (const ridt::InputError&) {}
 }
 
