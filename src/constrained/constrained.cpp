@@ -328,7 +328,9 @@ ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<co
   out.stats.points = out.stats.distinct = points.size();
   detail::Cdt m(std::move(pts), out);
   detail::check_fans(m);
-  detail::check_one_layer(points, m.tris, m.nbrs, options);
+  Options layer = options;  // the boundary's triangulation within what the mesh leaves of the limit
+  layer.memory_limit = room_left(options, m);
+  detail::check_one_layer(points, m.tris, m.nbrs, layer);
   const detail::GivenMesh given(m.pts, m.tris, m.nbrs);
   const Domain domain = mark_mesh(m, segment_slots, max_areas, attributes);
   if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size()), scale, &given);
