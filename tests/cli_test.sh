@@ -572,6 +572,15 @@ expect 0 "mesh -pjgvz" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hg.ele" --switche
 [ "$(head -1 "$dir/hg.v.node" | cut -d' ' -f1)" = "$(head -1 "$dir/hg.ele" | cut -d' ' -f1)" ] && pass || fail "v: not a vertex a triangle"
 [ "$(awk 'NR > 1 && $3 == -1' "$dir/hg.v.edge" | wc -l)" = 8 ] && pass || fail "v: not a ray across each of the 8 boundary edges (outer and hole)"
 [ "$(sed -n 2p "$dir/hg.v.edge" | cut -d' ' -f1)" = 0 ] && pass || fail "v with z: not numbered from 0"
+# The vertices' attributes at the circumcentres, from each triangle's linear function of its
+# corners': an attribute 2x + 3y + 1 comes out 2x + 3y + 1 at every centre, those outside their
+# triangle too (quality meshing off: long thin triangles whose centres lie far outside).
+printf '6 2 1 0\n1 0 0 1\n2 4 0 9\n3 4 1 12\n4 0 1 4\n5 2 0.1 5.3\n6 1 0.95 5.85\n' >"$dir/lin.node"
+expect 0 "mesh -v with attributes" -- "$ridt" mesh "$dir/lin.node" -o "$dir/linv.ele" --switches v
+[ "$(head -1 "$dir/linv.v.node" | cut -d' ' -f2,3)" = "2 1" ] && pass || fail "v: .v.node has no attribute column"
+awk 'NR > 1 { d = $4 - (2 * $2 + 3 * $3 + 1); if (d < 0) d = -d; if (d > 1e-9 * (1 + ($2 < 0 ? -$2 : $2) + ($3 < 0 ? -$3 : $3))) bad = 1 }
+     END { exit bad }' "$dir/linv.v.node" && pass || fail "v: an attribute at a circumcentre is not the linear one"
+[ "$(awk 'NR > 1 && ($2 < 0 || $2 > 4 || $3 < 0 || $3 > 1)' "$dir/linv.v.node" | wc -l)" -gt 0 ] && pass || fail "v: no centre outside the points' box (nothing extrapolated)"
 mkdir "$dir/hx.v.edge"  # a directory where the dual's edges go: nothing at all is written
 expect 2 "mesh -pv over a directory" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hx.ele" --switches pv
 absent "$dir/hx.ele"; absent "$dir/hx.node"; absent "$dir/hx.v.node"

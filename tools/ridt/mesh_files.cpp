@@ -3,6 +3,7 @@
 #include "mesh_files.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -207,14 +208,31 @@ struct Dual {
   std::vector<Point> vertices;
   std::vector<std::int32_t> edges;
   std::vector<Point> directions;
+  std::vector<double> attributes;
 };
+
+// The vertices' attributes (`count` a vertex) at each triangle's circumcentre, as Triangle gives
+// them: the linear function of the triangle's three, extended beyond it where the centre lies
+// outside (its weights from barycentric: exact where the centre lies on a side).
+std::vector<double> at_centres(std::span<const Point> all, const ConstrainedTriangulation& t,
+                               std::span<const Point> centres, std::span<const double> attributes, std::size_t count) {
+  std::vector<double> out(centres.size() * count);
+  for (std::size_t k = 0; k < centres.size() && count > 0; ++k) {
+    const VertexId* v = &t.triangles[3 * k];
+    const std::array<double, 3> w = barycentric(all[v[0]], all[v[1]], all[v[2]], centres[k]);
+    for (std::size_t j = 0; j < count; ++j)
+      out[k * count + j] = w[0] * attributes[v[0] * count + j] + w[1] * attributes[v[1] * count + j] +
+          w[2] * attributes[v[2] * count + j];
+  }
+  return out;
+}
 
 Dual dual_of(std::span<const Point> all, const ConstrainedTriangulation& t, unsigned threads) {
   Triangulation mesh;
   mesh.triangles.assign(t.triangles.begin(), t.triangles.begin() + static_cast<std::ptrdiff_t>(3 * t.size()));
   mesh.neighbors.assign(t.neighbors.begin(), t.neighbors.begin() + static_cast<std::ptrdiff_t>(3 * t.size()));
   Voronoi v = voronoi(all, mesh, threads);
-  Dual d{std::move(v.vertices), {}, {}};
+  Dual d{std::move(v.vertices), {}, {}, {}};
   d.edges.reserve(2 * v.ridges.size());
   d.directions.reserve(v.ridges.size());
   for (const Ridge& r : v.ridges) {
@@ -255,8 +273,12 @@ void write_mesh(const MeshOutput& o, const io::Pslg& g, const ConstrainedTriangu
   m.first_index = o.zero_based ? 0 : g.first_index;
   m.markers = o.markers;
   Dual dual;
-  if (o.files.voronoi) dual = dual_of(all, t, threads);
+  if (o.files.voronoi) {
+    dual = dual_of(all, t, threads);
+    dual.attributes = at_centres(all, t, dual.vertices, attributes, g.vertex_attributes);
+  }
   m.voronoi_vertices = dual.vertices, m.voronoi_edges = dual.edges, m.voronoi_directions = dual.directions;
+  m.voronoi_attributes = dual.attributes;
   if (o.files.off) {  // each edge inside is two triangles' side, each on the boundary one's
     const auto boundary = static_cast<std::size_t>(std::count(sides.begin(), sides.end(), -1));
     m.edge_count = boundary + (3 * t.size() - boundary) / 2;

@@ -136,6 +136,7 @@ struct MeshFiles {
   std::span<const Point> voronoi_vertices;
   std::span<const std::int32_t> voronoi_edges;  ///< pairs
   std::span<const Point> voronoi_directions;  ///< one an edge ((0, 0) for a segment)
+  std::span<const double> voronoi_attributes;  ///< `point_attribute_count` a vertex, row by row
   std::size_t edge_count = 0;  ///< the mesh's edges, for OUT.off's header
   int first_index = 0;  ///< the numbering of every file but OUT.off (which counts from 0)
   bool markers = true;  ///< boundary markers in OUT.node and OUT.edge (Triangle's -B: none)

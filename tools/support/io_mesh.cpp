@@ -160,7 +160,8 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
   if (set.neighbors) detail::write_neigh(*out[next++], m.neighbors, m.first_index, threads);
   if (set.off) detail::write_off(*out[next++], m.points, corners(m.triangles, m.nodes), m.edge_count);
   if (set.voronoi) {
-    detail::write_node(*out[next++], m.voronoi_vertices, m.first_index, threads);
+    detail::write_node(*out[next++], m.voronoi_vertices, m.first_index, threads, {},
+                       {m.voronoi_attributes, m.point_attribute_count});
     put_dual_edges(*out[next++], m.voronoi_edges, m.voronoi_directions, m.first_index, threads);
   }
   for (const auto& w : out) w->close();
