@@ -581,6 +581,10 @@ expect 0 "mesh -v with attributes" -- "$ridt" mesh "$dir/lin.node" -o "$dir/linv
 awk 'NR > 1 { d = $4 - (2 * $2 + 3 * $3 + 1); if (d < 0) d = -d; if (d > 1e-9 * (1 + ($2 < 0 ? -$2 : $2) + ($3 < 0 ? -$3 : $3))) bad = 1 }
      END { exit bad }' "$dir/linv.v.node" && pass || fail "v: an attribute at a circumcentre is not the linear one"
 [ "$(awk 'NR > 1 && ($2 < 0 || $2 > 4 || $3 < 0 || $3 > 1)' "$dir/linv.v.node" | wc -l)" -gt 0 ] && pass || fail "v: no centre outside the points' box (nothing extrapolated)"
+# A sliver whose circumcentre lies beyond the largest double: refused, nothing written.
+printf '3 2 1 0\n1 0 0 1\n2 1e200 0 2\n3 5e199 1e-100 3\n' >"$dir/far.node"
+expect 2 "mesh -v of a sliver whose centre overflows" -- "$ridt" mesh "$dir/far.node" -o "$dir/farv.ele" --switches v
+stderr_has "not finite"; absent "$dir/farv.ele"; absent "$dir/farv.v.node"
 mkdir "$dir/hx.v.edge"  # a directory where the dual's edges go: nothing at all is written
 expect 2 "mesh -pv over a directory" -- "$ridt" mesh "$dir/hp.poly" -o "$dir/hx.ele" --switches pv
 absent "$dir/hx.ele"; absent "$dir/hx.node"; absent "$dir/hx.v.node"

@@ -2,7 +2,6 @@
 #include "constrained/given_mesh.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -206,7 +205,8 @@ void check_fans(const Cdt& m) {
 namespace ridt::detail {
 namespace {
 
-// Pairs (a, b) of vertices below n, listed by a.
+// Pairs (a, b) of vertices below n, listed by a, each a's sorted by b (a vertex where many
+// pieces of a mesh meet has many).
 class ByFirst {
  public:
   ByFirst(std::size_t n, std::span<const VertexId> pairs) : start_(n + 1, 0), to_(pairs.size() / 2) {
@@ -214,9 +214,11 @@ class ByFirst {
     for (std::size_t v = 1; v <= n; ++v) start_[v] += start_[v - 1];
     std::vector<std::uint32_t> at(start_.begin(), start_.end() - 1);
     for (std::size_t k = 0; k < pairs.size(); k += 2) to_[at[pairs[k]]++] = pairs[k + 1];
+    for (std::size_t v = 0; v < n; ++v)
+      if (start_[v + 1] - start_[v] > 1) std::sort(to_.begin() + start_[v], to_.begin() + start_[v + 1]);
   }
   bool has(VertexId a, VertexId b) const {
-    return std::find(to_.begin() + start_[a], to_.begin() + start_[a + 1], b) != to_.begin() + start_[a + 1];
+    return std::binary_search(to_.begin() + start_[a], to_.begin() + start_[a + 1], b);
   }
 
  private:
@@ -232,9 +234,10 @@ std::string at(const Point& p) {
 
 // How many times the mesh covers each triangle of c (the constrained triangulation of its
 // boundary, `pts` its points): 0 beyond the hull, one more across a boundary edge into the side
-// the mesh lies on, one less out of it. More than once anywhere: pieces overlap (a piece inside
-// another, or a strip that winds over itself); the checks at the vertices make the mesh one
-// layer wherever it covers once.
+// the mesh lies on, one less out of it. Each directed edge is a triangle's once (MeshEdges), so
+// the boundary is the sum of the triangles' edges and the count is how many of them cover the
+// triangle: more than once anywhere, pieces overlap (a piece inside another, or a strip that
+// winds over itself).
 void check_covered_once(const ConstrainedTriangulation& c, const std::vector<Point>& pts, const ByFirst& boundary) {
   constexpr std::int32_t kUnset = std::numeric_limits<std::int32_t>::min();
   std::vector<std::int32_t> cover(c.size(), kUnset);
@@ -251,7 +254,8 @@ void check_covered_once(const ConstrainedTriangulation& c, const std::vector<Poi
     const std::uint32_t t = queue[next];
     if (cover[t] != 0 && cover[t] != 1) {
       const VertexId* v = &c.triangles[3 * std::size_t{t}];
-      const Point middle{(pts[v[0]].x + pts[v[1]].x + pts[v[2]].x) / 3, (pts[v[0]].y + pts[v[1]].y + pts[v[2]].y) / 3};
+      const Point middle{pts[v[0]].x / 3 + pts[v[1]].x / 3 + pts[v[2]].x / 3,
+                         pts[v[0]].y / 3 + pts[v[1]].y / 3 + pts[v[2]].y / 3};
       throw InputError("pieces of the mesh overlap: it covers the area about " + at(middle) + " " +
                        std::to_string(cover[t]) + " times");
     }
@@ -259,6 +263,25 @@ void check_covered_once(const ConstrainedTriangulation& c, const std::vector<Poi
       if (const std::int32_t n = c.neighbors[3 * std::size_t{t} + j]; n >= 0 && cover[n] == kUnset)
         cover[n] = cover[t] + across(t, j), queue.push_back(static_cast<std::uint32_t>(n));
   }
+}
+
+// Boundary edge a-b, not whole in the constrained triangulation of the boundary (`pts`, the
+// mesh's vertices `used`): a vertex lies inside it, or it crosses another where the crossing
+// rounds onto an end.
+[[noreturn]] void refuse_split(const std::vector<Point>& pts, const std::vector<VertexId>& used, VertexId a,
+                               VertexId b) {
+  const std::string edge =
+      "the boundary edge from vertex " + std::to_string(used[a]) + " to " + std::to_string(used[b]);
+  const Point &p = pts[a], &q = pts[b];
+  for (VertexId v = 0; v < pts.size(); ++v) {
+    const Point& r = pts[v];
+    const bool between = (std::min(p.x, q.x) <= r.x && r.x <= std::max(p.x, q.x)) &&
+        (std::min(p.y, q.y) <= r.y && r.y <= std::max(p.y, q.y));
+    if (v != a && v != b && between && orient2d(p, q, r) == 0)
+      throw InputError(edge + " passes through vertex " + std::to_string(used[v]) + " at " + at(r) +
+                       ": pieces of the mesh overlap, or one meets another inside an edge");
+  }
+  throw InputError(edge + " crosses another next to its ends: pieces of the mesh overlap");
 }
 
 }  // namespace
@@ -277,7 +300,7 @@ void check_one_layer(std::span<const Point> points, std::span<const VertexId> tr
   std::vector<Point> pts(used.size());
   for (std::size_t k = 0; k < used.size(); ++k) pts[k] = points[used[k]];
   Options plain;
-  plain.threads = options.threads, plain.memory_limit = options.memory_limit;
+  plain.method = options.method, plain.threads = options.threads, plain.memory_limit = options.memory_limit;
   Domain all;
   all.convex_hull = true;
   const ConstrainedTriangulation c = triangulate_constrained(pts, segments, plain, all, {});
@@ -287,15 +310,11 @@ void check_one_layer(std::span<const Point> points, std::span<const VertexId> tr
                      at(pts[c.duplicates[0].kept]) + ": pieces of it overlap there");
   if (c.crossings > 0)
     throw InputError("edges of the mesh's boundary cross at " + at(c.steiner[0]) + ": pieces of it overlap");
-  // Every boundary edge whole (none passes through a vertex): one of c's segment edges.
+  // Every boundary edge whole: one of c's segment edges.
   const ByFirst boundary(pts.size(), segments), fixed(pts.size(), c.edges);
-  for (std::size_t k = 0; k < segments.size(); k += 2) {
-    const VertexId a = segments[k], b = segments[k + 1];
-    if (!fixed.has(std::min(a, b), std::max(a, b)))
-      throw InputError("the boundary edge from vertex " + std::to_string(used[a]) + " to " + std::to_string(used[b]) +
-                       " passes through another vertex of the mesh: pieces of it overlap, or one meets another "
-                       "inside an edge");
-  }
+  for (std::size_t k = 0; k < segments.size(); k += 2)
+    if (const VertexId a = segments[k], b = segments[k + 1]; !fixed.has(std::min(a, b), std::max(a, b)))
+      refuse_split(pts, used, a, b);
   check_covered_once(c, pts, boundary);
 }
 

@@ -72,7 +72,7 @@ void check_fans(const Cdt& m);
 /// of its vertices with its edges as segments must find no two of them at one point, no edge
 /// crossing another or passing through a vertex, and, counting across the boundary edges from
 /// outside, no place the mesh covers twice (a piece inside another, or a strip that winds over
-/// itself). `options`: threads and memory_limit for that triangulation.
+/// itself). `options`: method, threads and memory_limit for that triangulation.
 void check_one_layer(std::span<const Point> points, std::span<const VertexId> triangles,
                      std::span<const std::int32_t> neighbours, const Options& options);
 

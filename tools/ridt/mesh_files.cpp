@@ -213,12 +213,17 @@ struct Dual {
 
 // The vertices' attributes (`count` a vertex) at each triangle's circumcentre, as Triangle gives
 // them: the linear function of the triangle's three, extended beyond it where the centre lies
-// outside (its weights from barycentric: exact where the centre lies on a side).
+// outside (its weights from barycentric: exact where the centre lies on a side); NaN where the
+// centre itself is not finite (a sliver's, beyond the largest double).
 std::vector<double> at_centres(std::span<const Point> all, const ConstrainedTriangulation& t,
                                std::span<const Point> centres, std::span<const double> attributes, std::size_t count) {
   std::vector<double> out(centres.size() * count);
   for (std::size_t k = 0; k < centres.size() && count > 0; ++k) {
     const VertexId* v = &t.triangles[3 * k];
+    if (!std::isfinite(centres[k].x) || !std::isfinite(centres[k].y)) {
+      std::fill_n(&out[k * count], count, std::numeric_limits<double>::quiet_NaN());
+      continue;
+    }
     const std::array<double, 3> w = barycentric(all[v[0]], all[v[1]], all[v[2]], centres[k]);
     for (std::size_t j = 0; j < count; ++j)
       out[k * count + j] = w[0] * attributes[v[0] * count + j] + w[1] * attributes[v[1] * count + j] +
