@@ -21,8 +21,9 @@ the rest numbered in order), ``C`` (the result checked exactly: RuntimeError whe
 ``v`` (also return the mesh's dual, as Triangle's ``-v`` writes it: 'voronoi_vertices', row t
 the circumcentre of triangle t; 'voronoi_edges', pairs of them across the mesh's inner edges;
 'voronoi_ray_origins' and 'voronoi_ray_directions', a ray from a vertex across each boundary
-edge, along its outward normal; the Voronoi diagram of the vertices where the mesh is Delaunay
-and fills their hull); ``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
+edge, along its outward normal; with 'vertex_attributes', 'voronoi_attributes', theirs at each
+centre as .v.node has them; the Voronoi diagram of the vertices where the mesh is Delaunay and
+fills their hull); ``r`` refines the mesh in 'triangles' (Triangle's ``-r``: its boundary, and
 with ``p`` its 'segments', kept; with ``a`` and no number each triangle to its
 'triangle_max_area'; its 'triangle_attributes' carried). The others (``u``, ``s``, ``g``,
 ``N``, ``E``, ``P``, ...) are refused with ValueError.
@@ -38,7 +39,7 @@ from __future__ import annotations
 
 import re
 import warnings
-from typing import Any, Dict, Tuple
+from typing import Any, Dict, Optional, Tuple
 
 import numpy as np
 
@@ -146,11 +147,18 @@ def triangulate(tri: Dict[str, Any], opts: str = "") -> Dict[str, np.ndarray]:
     return _as_asked(out, cdt, flags)
 
 
-def _dual(cdt: ConstrainedDelaunay) -> Dict[str, np.ndarray]:
+def _dual(cdt: ConstrainedDelaunay, attributes: Optional[np.ndarray]) -> Dict[str, np.ndarray]:
     """'v': the mesh's dual, a vertex a triangle (cocircular neighbours not merged, so that
-    vertex t stays triangle t's circumcentre, as in Triangle's .v.node)."""
+    vertex t stays triangle t's circumcentre, as in Triangle's .v.node), and with the vertices'
+    `attributes` theirs at each centre, as Triangle writes them in .v.node: the triangle's
+    linear function of its corners', extended beyond it where the centre lies outside."""
     keys = ("voronoi_vertices", "voronoi_edges", "voronoi_ray_origins", "voronoi_ray_directions")
-    return dict(zip(keys, _diagram(cdt.points, cdt._tri, False)))
+    out = dict(zip(keys, _diagram(cdt.points, cdt._tri, False)))
+    if attributes is not None:
+        simplices = np.ascontiguousarray(cdt.simplices, dtype=np.int32)
+        weights = _core.barycentric(cdt.points, simplices, out["voronoi_vertices"])
+        out["voronoi_attributes"] = np.einsum("ti,tik->tk", weights, attributes[simplices])
+    return out
 
 
 def _as_asked(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, flags: set) -> Dict[str, np.ndarray]:
@@ -158,7 +166,7 @@ def _as_asked(out: Dict[str, np.ndarray], cdt: ConstrainedDelaunay, flags: set) 
     'j': the vertices of no triangle left out, the rest numbered in order (the triangles,
     segments and edges with them)."""
     if "v" in flags:
-        out.update(_dual(cdt))
+        out.update(_dual(cdt, out.get("vertex_attributes")))
     if "C" in flags:
         valid, message = cdt.check()
         if not valid:

@@ -474,3 +474,16 @@ def test_six_node_triangles():
     np.testing.assert_array_equal(simplices, t)
     with pytest.raises(ValueError, match="'o2' only"):
         triangle.triangulate(tri, "po3")
+
+
+def test_the_dual_carries_the_vertices_attributes_at_the_centres():
+    # Attributes linear in the position come out so at every centre, those outside their
+    # triangle (a mesh without quality: thin triangles) too; without attributes, no key.
+    pts = np.array([[0, 0], [4, 0], [4, 1], [0, 1], [2, 0.1], [1, 0.95]])
+    linear = np.column_stack([2 * pts[:, 0] + 3 * pts[:, 1] + 1, -pts[:, 0]])
+    t = triangle.triangulate({"vertices": pts, "vertex_attributes": linear}, "v")
+    c = t["voronoi_vertices"]
+    expected = np.column_stack([2 * c[:, 0] + 3 * c[:, 1] + 1, -c[:, 0]])
+    np.testing.assert_allclose(t["voronoi_attributes"], expected, rtol=1e-12, atol=1e-12)
+    assert ((c[:, 1] < 0) | (c[:, 1] > 1)).any()  # some centres outside the points' box
+    assert "voronoi_attributes" not in triangle.triangulate({"vertices": pts}, "v")
