@@ -200,13 +200,12 @@ void check_fans(const Cdt& m) {
   }
 }
 
-}  // namespace ridt::detail
-
-namespace ridt::detail {
 namespace {
 
 // Pairs (a, b) of vertices below n, listed by a, each a's sorted by b (a vertex where many
-// pieces of a mesh meet has many).
+// pieces of a mesh meet has many). MeshEdges lists a mesh's edge slots the same way, but asking
+// it of every edge of the boundary's triangulation (a slot's end read from the triangles at
+// random) took 0.15 s more of the 1.2 s that refine_mesh takes on a 10^6-vertex coastline.
 class ByFirst {
  public:
   ByFirst(std::size_t n, std::span<const VertexId> pairs) : start_(n + 1, 0), to_(pairs.size() / 2) {
