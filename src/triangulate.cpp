@@ -11,14 +11,14 @@
 #include <malloc.h>
 #endif
 
-#include "finish/finish.hpp"
 #include "methods/method.hpp"
 #include "order/order.hpp"
+#include "output/output.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/ridt.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
-#include "walk/mesh.hpp"
+#include "tds/delaunay.hpp"
 
 namespace ridt {
 namespace {
@@ -116,7 +116,7 @@ Plan plan(std::size_t n, const Options& options) {
 
 // Bytes a point at the call's peak, the result included, as measured at 10^6 and 10^7 uniform
 // points (the process's peak resident memory less its input, docs/design.md#memory): the
-// walking mesh and its finish, the canonical order after it (the result's arrays, the
+// walking kernel and its finish, the canonical order after it (the result's arrays, the
 // triangles in buckets, each one's new number, and the blocks the memory cache keeps
 // for the next call), and the history DAG (its records are never freed during the run), with
 // 10 % over the largest seen. Each thread adds its own buffers.
@@ -217,39 +217,39 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
 // The walking kernel and the method that drives it (`keys`: each vertex's Hilbert key, in
 // insertion order, where the method asked for them).
 Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
-                          std::vector<std::uint32_t> keys, detail::MeshArrays arrays, const Plan& plan,
-                          const Options& options, Stats& stats) {
-  detail::Mesh mesh(detail::Vertices(pts.get(), n, plan.symbolic), std::move(arrays));
+                          std::vector<std::uint32_t> keys, detail::SlotArrays arrays, const Plan& plan,
+                          const Options& options, Stats& stats, bool links) {
+  detail::DelaunayTds tds(detail::Vertices(pts.get(), n, plan.symbolic), std::move(arrays));
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
   const auto t0 = Clock::now();
-  plan.method->walk(mesh, {plan.threads, false, options.experiment, keys.data(), duplicates, stats, progress});
+  plan.method->walk(tds, {plan.threads, false, options.experiment, keys.data(), duplicates, stats, progress});
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
   const auto t1 = Clock::now();
   if (plan.symbolic) pts.reset();  // the finish reads no point: the copy goes before it
-  Triangulation out = detail::finish_walking(mesh, order, duplicates, options, plan.threads);
+  Triangulation out = detail::finish_walking(tds, order, duplicates, options, plan.threads, links);
   stats.time_finish_s = since(t1);
   return out;
 }
 
 // The insertion order (vertex v is input point order[v]) and, for the partition method, each
-// vertex's Hilbert key in that order. `mesh`, when given, is the walking mesh's memory, made
+// vertex's Hilbert key in that order. `slots`, when given, is the walking kernel's memory, made
 // before the order so that the order's work needs no fresh pages.
 std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const detail::Extent& extent, const Plan& p,
                                            const Options& options, std::vector<std::uint32_t>& keys,
-                                           detail::MeshArrays* mesh) {
+                                           detail::SlotArrays* slots) {
   const auto n = static_cast<std::uint32_t>(points.size());
   if (!p.brio) return detail::random_permutation(n, options.seed);
   detail::OrderScratch scratch;
-  if (mesh != nullptr) scratch = {mesh->words(), mesh->numbers()};
+  if (slots != nullptr) scratch = {slots->words(), slots->numbers()};
   std::vector<std::uint32_t> order =
       detail::brio_order(points.data(), n, options.seed, p.threads, p.method->keys ? &keys : nullptr, scratch, &extent);
 #ifdef __GLIBC__
-  // The order's buffers (its own, where no mesh lends it memory, and the cells' small ones),
+  // The order's buffers (its own, where no kernel lends it memory, and the cells' small ones),
   // freed, may stay with the allocator (glibc keeps freed blocks below its mmap threshold,
   // which a first large block raises): given back now, they do not add to the peak that the
-  // mesh sets.
+  // kernel sets.
   malloc_trim(0);
 #endif
   return order;
@@ -265,9 +265,8 @@ void merge_stats(Triangulation& out, Stats stats) {
   out.stats = std::move(stats);
 }
 
-}  // namespace
-
-Triangulation triangulate(std::span<const Point> points, const Options& options) {
+// triangulate(), its neighbours links where `links` asks and the walking kernel can (`linked`).
+Triangulation run(std::span<const Point> points, const Options& options, bool links, bool& linked) {
   const auto t0 = Clock::now();
   const Plan p = plan(points.size(), options);
   check_memory(p, points.size(), options);
@@ -283,11 +282,11 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   lap(stats.time_scan_s);
   // Huge or tiny coordinates: the kernel works on copies scaled by 2^scale (predicates/predicates.hpp).
   const int scale = detail::exact_scale_exponent(extent);
-  std::optional<detail::MeshArrays> mesh;
-  if (p.walk) mesh.emplace(n, p.threads);
+  std::optional<detail::SlotArrays> slots;
+  if (p.walk) slots.emplace(n, p.threads);
   lap(stats.time_mesh_s);
   std::vector<std::uint32_t> keys;
-  const std::vector<std::uint32_t> order = insertion_order(points, extent, p, options, keys, mesh ? &*mesh : nullptr);
+  const std::vector<std::uint32_t> order = insertion_order(points, extent, p, options, keys, slots ? &*slots : nullptr);
   lap(stats.time_order_s);
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
@@ -297,16 +296,32 @@ Triangulation triangulate(std::span<const Point> points, const Options& options)
   stats.method = p.method->method;
   stats.locate = p.walk ? Locate::Walk : p.from_root ? Locate::Root : Locate::Dag;
   stats.memory_estimate = estimate(p, n);
+  linked = links && p.walk && !options.canonical_order;
   Triangulation out = p.walk
-      ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*mesh), p, options, stats)
+      ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*slots), p, options, stats, linked)
       : run_dag(std::move(pts), n, order, p, options, stats);
-  // After the mesh is gone, so that the sort's copies do not raise the peak.
+  // After the kernel is gone, so that the sort's copies do not raise the peak.
   phase = Clock::now();
   detail::apply_output_options(out, options, p.threads);
   lap(stats.time_canonical_s);
   merge_stats(out, std::move(stats));
   out.stats.time_triangulate_s = since(t0);
   return out;
+}
+
+}  // namespace
+
+namespace detail {
+
+Triangulation triangulate_linked(std::span<const Point> points, const Options& options, bool& linked) {
+  return run(points, options, true, linked);
+}
+
+}  // namespace detail
+
+Triangulation triangulate(std::span<const Point> points, const Options& options) {
+  bool linked = false;
+  return run(points, options, false, linked);
 }
 
 std::size_t estimate_memory(std::size_t n, const Options& options) { return estimate(plan(n, options), n); }

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <numeric>
 
-#include "finish/finish.hpp"
 #include "helpers.hpp"
 #include "order/random.hpp"
+#include "output/output.hpp"
 #include "ridt/generate.hpp"
 
 namespace ridt::test {

@@ -14,7 +14,13 @@ namespace ridt {
 /// points; id n + k is steiner[k]. Where triangles were removed (Domain), `hull` is empty: the
 /// boundary is then the edges with neighbour -1.
 struct ConstrainedTriangulation : Triangulation {
-  std::vector<VertexId> edges;  ///< the segments' edges, pairs (a, b) with a < b, sorted
+  /// The fixed edges: the segments' pieces (and, where the triangulation was refined, the
+  /// boundary's edges), pairs (a, b) with a < b, sorted.
+  std::vector<VertexId> edges;
+  /// Per edge of `edges`, the input segment it lies on (k for the pair at 2k of the segments
+  /// given), or -1 for a boundary edge that lies on none. Where segments overlap, their shared
+  /// pieces name the last of them; where two cross, each piece names its own.
+  std::vector<std::int32_t> edge_segments;
   /// Points added: first where two segments cross (`crossings` of them, each the exact
   /// crossing rounded to the nearest doubles), then those of quality refinement.
   std::vector<Point> steiner;

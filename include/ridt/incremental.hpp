@@ -38,8 +38,8 @@ class IncrementalTriangulation {
   std::span<const Point> points() const;
 
  private:
-  struct Mesh;
-  std::unique_ptr<Mesh> mesh_;
+  struct State;
+  std::unique_ptr<State> state_;
   Triangulation result_;
 };
 

@@ -13,9 +13,12 @@
 #include "check/parts.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/check.hpp"
+#include "tds/ids.hpp"
 
 namespace ridt {
 namespace {
+
+using detail::kNoVertex;
 
 using detail::adjacency;
 using detail::Edge;
@@ -205,7 +208,7 @@ class GapSearch {
   // `checked`: gaps only through no triangle, to any of the next 16 points ahead; else the one
   // way that jumps to the next point ahead, its gaps kept to report. Whether b was reached.
   bool run(bool checked, std::vector<Gap>& gaps) {
-    from_ = {{a_, {kNone, false}}};  // how each point was reached: from where, across a gap
+    from_ = {{a_, {kNoVertex, false}}};  // how each point was reached: from where, across a gap
     std::vector<std::pair<VertexId, bool>> todo{{a_, false}};  // a point; true: its gaps only
     std::vector<VertexId> steps;
     while (!todo.empty()) {
@@ -244,13 +247,12 @@ class GapSearch {
   }
 
  private:
-  static constexpr VertexId kNone = std::numeric_limits<VertexId>::max();
   using Key = std::pair<double, double>;
 
   Key key(VertexId v) const { return along_keys(pts_[a_], pts_[b_], pts_[v]); }
   double off(VertexId v) const { return std::fabs(detail::doubled_area(pts_[a_], pts_[b_], pts_[v])); }
   bool better(VertexId w, VertexId than) const {  // ahead sooner, then nearer the line
-    return than == kNone || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
+    return than == kNoVertex || key(w) < key(than) || (key(w) == key(than) && off(w) < off(than));
   }
   bool nearer(VertexId w, VertexId than) const {
     return off(w) < off(than) || (off(w) == off(than) && better(w, than));
@@ -261,11 +263,11 @@ class GapSearch {
   // The point ahead of u at the least key, the nearest the line there; b where none is (at b's
   // place along the segment already: another end there).
   VertexId next_ahead(VertexId u) const {
-    VertexId next = kNone;
+    VertexId next = kNoVertex;
     const auto it = after(u);
     for (auto other = it; other != ahead_.end() && other->first == it->first; ++other)
       if (better(other->second, next)) next = other->second;
-    return next == kNone ? b_ : next;
+    return next == kNoVertex ? b_ : next;
   }
 
   std::span<const Point> pts_;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <unordered_map>
 
@@ -14,11 +15,12 @@
 #include "constrained/given_mesh.hpp"
 #include "constrained/refine.hpp"
 #include "constrained/segments.hpp"
-#include "finish/finish.hpp"
 #include "order/order.hpp"
+#include "output/output.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/constrained.hpp"
 #include "runtime/memory.hpp"
+#include "tds/delaunay.hpp"
 
 namespace ridt {
 namespace {
@@ -42,6 +44,7 @@ void check_input(std::span<const Point> points, std::span<const VertexId> segmen
         "(conforming with split_segments off; Triangle's -D with -YY)");
   if (segments.size() % 2 != 0)
     throw InputError("a segment list needs an even size (got " + std::to_string(segments.size()) + ")");
+  if (segments.size() / 2 > 0x7fffffffu) throw InputError("ridt takes fewer than 2^31 segments");
   for (std::size_t k = 0; k < segments.size(); ++k)
     if (segments[k] >= points.size())
       throw InputError("segment " + std::to_string(k / 2) + " refers to point " + std::to_string(segments[k]) + " of " +
@@ -68,14 +71,13 @@ void check_refinable(const detail::Extent& e) {
 }
 
 // triangulate checks its own need against the memory limit (Options::memory_limit, else what
-// the system can give); the steps here hold more beside its result (the points' copy, a flag an
-// edge slot, a corner and a kept index a vertex, the carving's marks, the edges' lists). 24 bytes
-// a point and 8 a segment cover it: the CDT of generate_coastline's 4 * 10^6 and 10^7 vertices
-// peaked 10 and 8 bytes a point above triangulate's estimate. Refinement keeps within what is
+// the system can give); the steps here hold more beside its result (the points' copy, a
+// constraint of 4 bytes an edge slot, a corner and a kept index a vertex, the carving's marks,
+// the edges' lists). 44 bytes a point and 8 a segment cover it. Refinement keeps within what is
 // left (detail::refine). Throws MemoryError before anything large is allocated.
 void check_memory(std::size_t n, std::size_t segments, const Options& plain) {
   const std::size_t limit = detail::memory_room(plain.memory_limit);
-  const std::size_t needed = estimate_memory(n, plain) + 24 * n + 8 * segments;
+  const std::size_t needed = estimate_memory(n, plain) + 44 * n + 8 * segments;
   if (limit == 0 || needed <= limit) return;
   throw MemoryError("the constrained triangulation of " + std::to_string(n) + " points and " +
                         std::to_string(segments) + " segments needs about " + detail::gigabytes(needed) + "; " +
@@ -88,56 +90,65 @@ void check_memory(std::size_t n, std::size_t segments, const Options& plain) {
 // memory cache); 0 (what the process has left) without a limit.
 std::size_t room_left(const Options& options, const detail::Cdt& m) {
   if (options.memory_limit == 0) return 0;
-  const std::size_t held = m.tris.capacity() * sizeof(VertexId) + m.nbrs.capacity() * sizeof(std::int32_t) +
-      m.fixed.capacity() + m.pts.capacity() * sizeof(Point) + m.corner.capacity() * sizeof(std::uint32_t) +
-      cached_memory();
+  const std::size_t held =
+      m.tds.bytes() + m.pts.capacity() * sizeof(Point) + m.corner.capacity() * sizeof(std::uint32_t) + cached_memory();
   return options.memory_limit > held ? options.memory_limit - held : 1;
 }
 
-// The fixed edges, pairs (a, b) with a < b, sorted. Each is taken once (from the side where it
-// runs a -> b, or the only side), counted, then collected in a pass that appends without a
-// branch: a third of the slots are fixed, at random, and a branch on each mispredicted often.
-// Then counted by a, and each a's few sorted.
-std::vector<VertexId> fixed_edges(const detail::Cdt& m) {
-  auto taken = [&m](std::size_t s, VertexId a, VertexId b) {
-    return static_cast<std::size_t>(m.fixed[s] & ((a < b) | (m.nbrs[s] < 0)));
+// The fixed edges of the first `size` triangles of m (whose neighbours are ids by now:
+// to_output), pairs (a, b) with a < b, sorted, into out.edges, and each one's input segment
+// into out.edge_segments. Each is taken once (from the side where it runs a -> b, or the only
+// side), counted, then collected in a pass that appends without a branch: a third of the slots
+// are fixed, at random, and a branch on each mispredicted often. Then counted by a, and each
+// a's few sorted.
+void fixed_edges(const detail::Cdt& m, std::size_t size, ConstrainedTriangulation& out) {
+  const std::size_t slots = 3 * size;
+  const VertexId* v = m.tds.vertex_array().data();
+  const std::int32_t* neighbour = m.tds.link_array().data();
+  const detail::Constraint* constraint = m.tds.constraint_array().data();
+  auto taken = [&](std::size_t s, VertexId a, VertexId b) {
+    return static_cast<std::uint32_t>((constraint[s] != detail::kFree) & ((a < b) | (neighbour[s] < 0)));
   };
-  std::size_t count = 0;
-  for (std::size_t s = 0; s < m.tris.size(); s += 3)
-    for (int j = 0; j < 3; ++j) count += taken(s + j, m.tris[s + (j + 1) % 3], m.tris[s + (j + 2) % 3]);
-  std::vector<std::uint64_t> pairs(count + 1);  // one more: the last slot's write when it is not taken
-  count = 0;
-  for (std::size_t s = 0; s < m.tris.size(); s += 3)
+  // Counted by their first (smaller) end, then placed: two passes over the slots, and no list
+  // of the edges in between.
+  std::vector<std::uint32_t> start(m.pts.size() + 2, 0);
+  for (std::size_t s = 0; s < slots; s += 3)
     for (int j = 0; j < 3; ++j) {
-      const std::uint64_t a = m.tris[s + (j + 1) % 3], b = m.tris[s + (j + 2) % 3];
-      pairs[count] = a < b ? a << 32 | b : b << 32 | a;
-      count += taken(s + j, static_cast<VertexId>(a), static_cast<VertexId>(b));
+      const VertexId a = v[s + detail::next3(j)], b = v[s + detail::prev3(j)];
+      start[std::min(a, b) + 1] += taken(s + j, a, b);
     }
-  std::vector<std::uint32_t> start(m.pts.size() + 1, 0);
-  for (std::size_t k = 0; k < count; ++k) ++start[(pairs[k] >> 32) + 1];
-  for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
-  std::vector<VertexId> out(2 * count);
-  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < count; ++k) {
-    const auto a = static_cast<VertexId>(pairs[k] >> 32);
-    const std::uint32_t at = next[a]++;
-    out[2 * at] = a, out[2 * at + 1] = static_cast<VertexId>(pairs[k]);
-  }
-  std::vector<VertexId> many;
-  for (VertexId a = 0; a + 1 < start.size(); ++a) {  // each a's pairs by b: mostly a few, by insertion
+  for (std::size_t w = 1; w < start.size(); ++w) start[w] += start[w - 1];
+  const std::size_t count = start[m.pts.size()];
+  std::vector<VertexId>& edges = out.edges;
+  std::vector<std::int32_t>& segment = out.edge_segments;
+  edges.resize(2 * count + 2);  // one more edge: where a slot not taken writes
+  segment.resize(count + 1);
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 2);
+  for (std::size_t s = 0; s < slots; s += 3)
+    for (int j = 0; j < 3; ++j) {
+      const VertexId a = v[s + detail::next3(j)], b = v[s + detail::prev3(j)], lo = std::min(a, b);
+      const std::uint32_t take = taken(s + j, a, b), at = take != 0 ? next[lo] : static_cast<std::uint32_t>(count);
+      next[lo] += take;
+      const detail::Constraint c = constraint[s + j];
+      edges[2 * std::size_t{at}] = lo, edges[2 * std::size_t{at} + 1] = std::max(a, b);
+      segment[at] = c < detail::kUnnamed ? static_cast<std::int32_t>(c) : -1;
+    }
+  edges.resize(2 * count), segment.resize(count);
+  std::vector<std::pair<VertexId, std::int32_t>> many;
+  for (VertexId a = 0; a < m.pts.size(); ++a) {  // each a's edges by b: mostly a few, by insertion
     const std::uint32_t first = start[a], last = start[a + 1];
     if (last - first <= 16) {
       for (std::uint32_t k = first + 1; k < last; ++k)
-        for (std::uint32_t i = k; i > first && out[2 * i - 1] > out[2 * i + 1]; --i)
-          std::swap(out[2 * i - 1], out[2 * i + 1]);
+        for (std::uint32_t i = k; i > first && edges[2 * i - 1] > edges[2 * i + 1]; --i)
+          std::swap(edges[2 * i - 1], edges[2 * i + 1]), std::swap(segment[i - 1], segment[i]);
       continue;
     }
     many.clear();
-    for (std::uint32_t k = first; k < last; ++k) many.push_back(out[2 * k + 1]);
+    for (std::uint32_t k = first; k < last; ++k) many.push_back({edges[2 * k + 1], segment[k]});
     std::sort(many.begin(), many.end());
-    for (std::uint32_t k = first; k < last; ++k) out[2 * k + 1] = many[k - first];
+    for (std::uint32_t k = first; k < last; ++k)
+      edges[2 * k + 1] = many[k - first].first, segment[k] = many[k - first].second;
   }
-  return out;
 }
 
 // Triangles put in canonical order, their attributes following them.
@@ -156,17 +167,51 @@ void canonical(ConstrainedTriangulation& out, const Options& options) {
       if (third == key(t).second) out.attributes[t] = value;
 }
 
-// The mesh's arrays into `out` (whose duplicates, stats and warning the Delaunay step set).
+// m's triangles but those `gone` marks (none where it is empty) renumbered in their order, in
+// place, their links made neighbour ids (-1 across the boundary, or to a triangle gone), their
+// constraints and regions moved with them; returns how many there are.
+std::size_t to_output(detail::Cdt& m, const std::vector<std::uint8_t>& gone) {
+  const std::size_t nt = m.size();
+  std::vector<TriangleId> id;
+  if (!gone.empty()) {
+    id.resize(nt);
+    TriangleId kept = 0;
+    for (std::size_t t = 0; t < nt; ++t) id[t] = gone[t] ? detail::kNoTriangle : kept++;
+  }
+  VertexId* v = m.tds.vertex_array().data();
+  detail::Link* link = m.tds.link_array().data();  // becomes the neighbours
+  detail::Constraint* constraint = m.tds.constraint_array().data();
+  std::size_t to = 0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (!gone.empty() && gone[t]) continue;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const detail::Link l = link[3 * t + j];
+      const TriangleId u = l == detail::kNoLink ? detail::kNoTriangle : detail::triangle_of(l);
+      const TriangleId n = gone.empty() || u == detail::kNoTriangle ? u : id[u];
+      v[3 * to + j] = v[3 * t + j], constraint[3 * to + j] = constraint[3 * t + j];
+      link[3 * to + j] = n == detail::kNoTriangle ? -1 : static_cast<std::int32_t>(n);
+    }
+    if (!m.region.empty()) m.region[to] = m.region[t];
+    ++to;
+  }
+  return to;
+}
+
+// The constrained triangulation's arrays into `out` (whose duplicates, stats and warning the
+// Delaunay step set), but the triangles `gone` marks.
 void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain, std::size_t n, int scale,
-             bool reshaped) {
-  out.edges = fixed_edges(m);
-  out.triangles = std::move(m.tris);
-  out.neighbors = std::move(m.nbrs);
+             bool reshaped, const std::vector<std::uint8_t>& gone = {}) {
+  const std::size_t size = to_output(m, gone);
+  fixed_edges(m, size, out);
+  out.neighbors = std::move(m.tds.link_array());
+  out.neighbors.resize(3 * size);
+  out.triangles = std::move(m.tds.vertex_array());
+  out.triangles.resize(3 * size);
   if (reshaped) out.hull.clear();
   for (std::size_t v = n; v < m.pts.size(); ++v) out.steiner.push_back(scaled(m.pts[v], -scale));
   if (!m.region.empty()) {
-    out.attributes.resize(m.region.size(), 0.0);
-    for (std::size_t t = 0; t < m.region.size(); ++t)
+    out.attributes.resize(size, 0.0);
+    for (std::size_t t = 0; t < size; ++t)
       if (m.region[t] >= 0) out.attributes[t] = domain.regions[static_cast<std::size_t>(m.region[t])].attribute;
   }
 }
@@ -221,15 +266,19 @@ void check_mesh_input(std::span<const Point> points, std::span<const VertexId> t
 }
 
 // A given mesh's neighbours (checked: mesh_edges), and each segment's edge slot (either way
-// along it) into `slots`; InputError for a segment that is no edge.
+// along it; kNoTriangle for one whose ends coincide) into `slots`; InputError for a segment
+// that is no edge.
 std::vector<std::int32_t> mesh_links(std::span<const Point> pts, std::span<const VertexId> triangles,
                                      std::span<const VertexId> segments, std::vector<std::uint32_t>& slots) {
   const detail::MeshEdges edges(pts, triangles);
   for (std::size_t k = 0; k < segments.size(); k += 2) {
     const VertexId a = segments[k], b = segments[k + 1];
-    if (a == b) continue;
-    const std::uint32_t s = edges.slot(a, b) != detail::Cdt::kNone ? edges.slot(a, b) : edges.slot(b, a);
-    if (s == detail::Cdt::kNone)
+    if (a == b) {
+      slots.push_back(detail::kNoTriangle);
+      continue;
+    }
+    const std::uint32_t s = edges.slot(a, b) != detail::kNoTriangle ? edges.slot(a, b) : edges.slot(b, a);
+    if (s == detail::kNoTriangle)
       throw InputError("segment " + std::to_string(k / 2) + " (" + std::to_string(a) + ", " + std::to_string(b) +
                        ") is not an edge of the mesh");
     slots.push_back(s);
@@ -242,9 +291,11 @@ std::vector<std::int32_t> mesh_links(std::span<const Point> pts, std::span<const
 // region a given triangle (m.region numbers them, each triangle's found again by its centroid).
 Domain mark_mesh(detail::Cdt& m, const std::vector<std::uint32_t>& segment_slots, std::span<const double> max_areas,
                  std::span<const double> attributes) {
-  for (const std::uint32_t s : segment_slots) m.set_fixed(s / 3, static_cast<int>(s % 3), true);
-  for (std::size_t s = 0; s < m.nbrs.size(); ++s)
-    if (m.nbrs[s] < 0) m.fixed[s] = 1;
+  for (std::size_t k = 0; k < segment_slots.size(); ++k)
+    if (const std::uint32_t s = segment_slots[k]; s != detail::kNoTriangle)
+      m.constrain(static_cast<detail::Link>(s), static_cast<detail::Constraint>(k));
+  for (detail::Link s = 0; s < static_cast<detail::Link>(3 * m.size()); ++s)
+    if (m.boundary(s) && !m.fixed(s)) m.constrain(s, detail::kUnnamed);
   Domain domain;
   domain.convex_hull = false;
   if (!max_areas.empty() || !attributes.empty()) {
@@ -254,8 +305,8 @@ Domain mark_mesh(detail::Cdt& m, const std::vector<std::uint32_t>& segment_slots
       domain.regions.push_back({{}, attributes.empty() ? 0.0 : attributes[t], max_areas.empty() ? 0.0 : max_areas[t]});
     }
   }
-  std::vector<std::uint32_t> all(m.tris.size());
-  for (std::uint32_t s = 0; s < all.size(); ++s) all[s] = s;
+  std::vector<detail::Link> all(3 * m.size());
+  for (std::size_t s = 0; s < all.size(); ++s) all[s] = static_cast<detail::Link>(s);
   m.restore(std::move(all));
   return domain;
 }
@@ -281,7 +332,8 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   plain.on_sorted = {};
   check_memory(points.size(), segments.size() / 2, plain);
   ConstrainedTriangulation out;
-  static_cast<Triangulation&>(out) = triangulate(points, plain);
+  bool linked = false;
+  static_cast<Triangulation&>(out) = detail::triangulate_linked(points, plain, linked);
   if (out.size() == 0) return out;
   std::vector<VertexId> kept(points.size());
   for (VertexId v = 0; v < kept.size(); ++v) kept[v] = v;
@@ -291,16 +343,17 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   std::vector<Point> pts(points.begin(), points.end());
   if (scale != 0)
     for (Point& p : pts) p = scaled(p, scale);
-  detail::Cdt m(std::move(pts), out);
+  detail::Cdt m(std::move(pts), out, linked);
   detail::insert_segments(m, segments, kept);
   out.crossings = m.pts.size() - points.size();
   std::vector<Point> holes = domain.holes;
   std::vector<Region> regions = domain.regions;
   for (Point& h : holes) h = scaled(h, scale);
   for (Region& r : regions) r.seed = scaled(r.seed, scale);
-  const bool carved = detail::carve(m, holes, regions, domain.convex_hull, refined);
+  const std::vector<std::uint8_t> gone = detail::carve(m, holes, regions, domain.convex_hull, refined);
+  const bool carved = refined || !gone.empty();
   if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size() + out.crossings), scale);
-  collect(m, out, domain, points.size(), scale, carved || refined);
+  collect(m, out, domain, points.size(), scale, carved, gone);
   if (options.canonical_order) canonical(out, options);
   if (!options.neighbors) out.neighbors = {};
   return out;
@@ -324,18 +377,19 @@ ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<co
   ConstrainedTriangulation out;
   out.triangles.assign(triangles.begin(), triangles.end());
   std::vector<std::uint32_t> segment_slots;
-  out.neighbors = mesh_links(pts, out.triangles, segments, segment_slots);
+  const std::vector<std::int32_t> neighbours = mesh_links(pts, triangles, segments, segment_slots);
+  out.neighbors = neighbours;
   out.stats.points = out.stats.distinct = points.size();
   detail::Cdt m(std::move(pts), out);
   detail::check_fans(m);
   Options layer = options;  // the boundary's triangulation within what the mesh leaves of the limit
   layer.memory_limit = room_left(options, m);
-  detail::check_one_layer(points, m.tris, m.nbrs, layer);
-  const detail::GivenMesh given(m.pts, m.tris, m.nbrs);
+  detail::check_one_layer(points, triangles, neighbours, layer);
+  const detail::GivenMesh given(m.pts, m.tds);
   const Domain domain = mark_mesh(m, segment_slots, max_areas, attributes);
   if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size()), scale, &given);
   if (!m.region.empty())
-    for (std::uint32_t t = 0; t < m.size(); ++t) m.region[t] = given.region_of(m, t);
+    for (TriangleId t = 0; t < m.size(); ++t) m.region[t] = given.region_of(m, t);
   collect(m, out, domain, points.size(), scale, true);
   if (attributes.empty()) out.attributes.clear();
   if (options.canonical_order) canonical(out, options);

@@ -9,13 +9,15 @@
 
 namespace ridt::detail {
 
-/// Removes from m the triangles outside `domain` (holes and, without convex_hull, the
-/// exterior: flooded across every edge that is not fixed), then marks each region's
-/// triangles (m.region; left empty without regions). Seeds are in m's (scaled) coordinates.
-/// Renumbers the triangles that stay in their order; returns whether any were removed. Where
-/// it did, the vertices' corners are set again only where `corners` asks it (what follows
-/// walks round vertices), else left unset (Cdt::index_corners sets them).
-bool carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions, bool convex_hull, bool corners);
+/// Marks the triangles of m outside `domain` (holes and, without convex_hull, the exterior:
+/// flooded across every edge that is not fixed), then each region's triangles (m.region; left
+/// empty without regions). Seeds are in m's (scaled) coordinates. With `compact` (what follows
+/// works on m: refinement), the marked triangles are removed now, those that stay renumbered
+/// in their order, and the vertices' corners set again; returns nothing then. Else they stay
+/// (no kept triangle's free edge leads to one) and their marks are returned, for the output to
+/// leave them out in its own pass (empty where none is marked).
+std::vector<std::uint8_t> carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions,
+                                bool convex_hull, bool compact);
 
 /// Where the domain touches itself at a vertex (two holes, or a hole and the outline, meeting
 /// at a corner), the triangles about it make fans that no edge joins, and a walk round it

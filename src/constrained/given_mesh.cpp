@@ -38,67 +38,63 @@ MeshEdges::MeshEdges(std::span<const Point> points, std::span<const VertexId> tr
 }
 
 std::uint32_t MeshEdges::slot(VertexId a, VertexId b) const {
-  if (a + 1 >= start_.size()) return Cdt::kNone;
+  if (a + 1 >= start_.size()) return kNoTriangle;
   const auto last = slots_.begin() + start_[a + 1];
   const auto it = std::partition_point(slots_.begin() + start_[a], last, [&](std::uint32_t s) { return to(s) < b; });
-  return it != last && to(*it) == b ? *it : Cdt::kNone;
+  return it != last && to(*it) == b ? *it : kNoTriangle;
 }
 
 std::vector<std::int32_t> MeshEdges::neighbours() const {
   std::vector<std::int32_t> out(tris_.size(), -1);
   for (std::size_t s = 0; s < tris_.size(); ++s)
-    if (const std::uint32_t back = slot(to(s), from(s)); back != Cdt::kNone)
+    if (const std::uint32_t back = slot(to(s), from(s)); back != kNoTriangle)
       out[s] = static_cast<std::int32_t>(back / 3);
   return out;
 }
 
-bool GivenMesh::holds(std::uint32_t t, const Point& p) const {
+bool GivenMesh::holds(TriangleId t, const Point& p) const {
   for (int k = 0; k < 3; ++k)
-    if (orient2d(pts_[tris_[3 * t + (k + 1) % 3]], pts_[tris_[3 * t + (k + 2) % 3]], p) < 0) return false;
+    if (orient2d(pts_[tds_.vertex(t, next3(k))], pts_[tds_.vertex(t, prev3(k))], p) < 0) return false;
   return true;
 }
 
-std::uint32_t GivenMesh::locate(const Point& p, std::uint32_t hint) const {
-  const std::size_t count = tris_.size() / 3;
-  std::uint32_t t = hint < count ? hint : 0;
-  for (std::size_t steps = 0, turn = 0; steps < 64; ++steps, turn += 7) {
-    int out = -1;
-    bool beyond = false;  // p lies beyond some edge of t
-    for (int r = 0; r < 3 && out < 0; ++r) {
-      const int k = static_cast<int>((r + turn) % 3);
-      if (orient2d(pts_[tris_[3 * t + (k + 1) % 3]], pts_[tris_[3 * t + (k + 2) % 3]], p) >= 0) continue;
-      beyond = true;
-      if (nbrs_[3 * t + k] >= 0) out = k;
-    }
-    if (!beyond) return t;
-    if (out < 0) break;  // only the boundary lies that way from here
-    t = static_cast<std::uint32_t>(nbrs_[3 * t + out]);
-  }
-  const std::uint32_t found = search(p, t);
-  return found != Cdt::kNone ? found : hint;
+TriangleId GivenMesh::locate(const Point& p, TriangleId hint) const {
+  TriangleId t = hint < tds_.slots() ? hint : 0;
+  // The one visibility walk, never across the boundary while another edge leads on; the given
+  // mesh need not be Delaunay, so a walk of more than 64 steps gives way to the search.
+  int steps = 0;
+  const Walked end = tds_.walk(
+      t, [&](VertexId a, VertexId b) { return orient2d(pts_[a], pts_[b], p); },
+      [&](Link l) {
+        if (l == kNoLink) return Step::Blocked;
+        return ++steps > 64 ? Step::Stop : Step::Cross;
+      });
+  if (end.reached) return t;
+  const TriangleId found = search(p, t);
+  return found != kNoTriangle ? found : hint;
 }
 
 // Breadth first from `from` across the given mesh's edges, nearest triangles first.
-std::uint32_t GivenMesh::search(const Point& p, std::uint32_t from) const {
+TriangleId GivenMesh::search(const Point& p, TriangleId from) const {
   const std::uint32_t mark = ++searches_;
-  std::vector<std::uint32_t> queue{from};
+  std::vector<TriangleId> queue{from};
   seen_[from] = mark;
   for (std::size_t next = 0; next < queue.size(); ++next) {
-    const std::uint32_t t = queue[next];
+    const TriangleId t = queue[next];
     if (holds(t, p)) return t;
     for (int k = 0; k < 3; ++k)
-      if (const std::int32_t n = nbrs_[3 * t + k]; n >= 0 && seen_[static_cast<std::uint32_t>(n)] != mark) {
-        seen_[static_cast<std::uint32_t>(n)] = mark;
-        queue.push_back(static_cast<std::uint32_t>(n));
+      if (const TriangleId n = tds_.neighbour(t, k); n != kNoTriangle && seen_[n] != mark) {
+        seen_[n] = mark;
+        queue.push_back(n);
       }
   }
-  return Cdt::kNone;
+  return kNoTriangle;
 }
 
-std::int32_t GivenMesh::region_of(const Cdt& m, std::uint32_t t) const {
-  const Point &a = m.pts[m.tris[3 * t]], &b = m.pts[m.tris[3 * t + 1]], &c = m.pts[m.tris[3 * t + 2]];
+std::int32_t GivenMesh::region_of(const Cdt& m, TriangleId t) const {
+  const Point &a = m.pts[m.at(t, 0)], &b = m.pts[m.at(t, 1)], &c = m.pts[m.at(t, 2)];
   const Point centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
-  return static_cast<std::int32_t>(locate(centroid, static_cast<std::uint32_t>(std::max(m.region[t], 0))));
+  return static_cast<std::int32_t>(locate(centroid, static_cast<TriangleId>(std::max(m.region[t], 0))));
 }
 
 namespace {
@@ -132,12 +128,12 @@ struct Fan {
 // The fan about v that holds slot s (a corner of v), its corners marked seen; throws where it
 // turns round v more than once. A wedge (each triangle's, from its next corner to its last)
 // that ends before it starts, counted from +x, passes +x.
-Fan fan_at(const Cdt& m, std::size_t s, std::vector<std::uint8_t>& seen) {
-  const VertexId v = m.tris[s];
+Fan fan_at(const Cdt& m, Link s, std::vector<std::uint8_t>& seen) {
+  const VertexId v = m.tds.vertex_at(s);
   const Point& pv = m.pts[v];
-  const auto t0 = static_cast<std::uint32_t>(s / 3);
+  const TriangleId t0 = triangle_of(s);
   int wraps = 0;
-  auto wedge = [&](std::uint32_t t) {
+  auto wedge = [&](TriangleId t) {
     const int i = m.corner_of(t, v);
     seen[3 * t + i] = 1;
     wraps += before(pv, m.pts[m.at(t, i + 2)], m.pts[m.at(t, i + 1)]);
@@ -145,25 +141,25 @@ Fan fan_at(const Cdt& m, std::size_t s, std::vector<std::uint8_t>& seen) {
   };
   // Counter-clockwise from t0 (across the edge from its last corner to v) to the boundary or
   // round to t0; then clockwise from t0 where the fan is open.
-  Fan f{v, m.at(t0, m.corner_of(t0, v) + 1), Cdt::kNone, false};
-  for (std::uint32_t t = t0;;) {
+  Fan f{v, m.at(t0, m.corner_of(t0, v) + 1), kNoVertex, false};
+  for (TriangleId t = t0;;) {
     const int i = wedge(t);
-    const std::int32_t n = m.nbrs[3 * t + (i + 1) % 3];
-    if (n < 0) {
+    const TriangleId n = m.across(link_to(t, next3(i)));
+    if (n == kNoTriangle) {
       f.last = m.at(t, i + 2);
       break;
     }
-    t = static_cast<std::uint32_t>(n);
+    t = n;
     if (t == t0) {
       f.closed = true;
       f.last = f.first;
       break;
     }
   }
-  for (std::uint32_t t = t0; !f.closed;) {
-    const std::int32_t n = m.nbrs[3 * t + (m.corner_of(t, v) + 2) % 3];
-    if (n < 0) break;
-    t = static_cast<std::uint32_t>(n);
+  for (TriangleId t = t0; !f.closed;) {
+    const TriangleId n = m.across(link_to(t, prev3(m.corner_of(t, v))));
+    if (n == kNoTriangle) break;
+    t = n;
     f.first = m.at(t, wedge(t) + 1);
   }
   const bool once = f.closed ? wraps == 1 : wraps == 0 || (wraps == 1 && before(pv, m.pts[f.last], m.pts[f.first]));
@@ -176,10 +172,10 @@ Fan fan_at(const Cdt& m, std::size_t s, std::vector<std::uint8_t>& seen) {
 }  // namespace
 
 void check_fans(const Cdt& m) {
-  std::vector<std::uint8_t> seen(m.tris.size(), 0);
+  std::vector<std::uint8_t> seen(3 * m.size(), 0);
   std::vector<Fan> fans;
-  for (std::size_t s = 0; s < m.tris.size(); ++s)
-    if (!seen[s]) fans.push_back(fan_at(m, s, seen));
+  for (Link s = 0; s < static_cast<Link>(3 * m.size()); ++s)
+    if (!seen[static_cast<std::size_t>(s)]) fans.push_back(fan_at(m, s, seen));
   // Fans sharing a vertex (where the domain touches itself there), in order round it from +x:
   // none may close, and each must end before the next begins.
   std::sort(fans.begin(), fans.end(), [&](const Fan& a, const Fan& b) {
@@ -288,12 +284,12 @@ void check_covered_once(const ConstrainedTriangulation& c, const std::vector<Poi
 void check_one_layer(std::span<const Point> points, std::span<const VertexId> triangles,
                      std::span<const std::int32_t> neighbours, const Options& options) {
   // The boundary's vertices, renumbered, and its edges, each run with the mesh on its left.
-  std::vector<VertexId> id(points.size(), Cdt::kNone), used, segments;
+  std::vector<VertexId> id(points.size(), kNoVertex), used, segments;
   for (std::size_t s = 0; s < triangles.size(); ++s) {
     if (neighbours[s] >= 0) continue;
     const VertexId ends[2] = {triangles[s - s % 3 + (s + 1) % 3], triangles[s - s % 3 + (s + 2) % 3]};
     for (const VertexId v : ends)
-      if (id[v] == Cdt::kNone) id[v] = static_cast<VertexId>(used.size()), used.push_back(v);
+      if (id[v] == kNoVertex) id[v] = static_cast<VertexId>(used.size()), used.push_back(v);
     segments.push_back(id[ends[0]]), segments.push_back(id[ends[1]]);
   }
   std::vector<Point> pts(used.size());

@@ -19,7 +19,7 @@ namespace ridt::detail {
 class MeshEdges {
  public:
   MeshEdges(std::span<const Point> points, std::span<const VertexId> triangles);
-  /// The slot that runs from a to b, or Cdt::kNone.
+  /// The slot that runs from a to b, or kNoTriangle.
   std::uint32_t slot(VertexId a, VertexId b) const;
   /// The neighbours (3 a triangle, as Triangulation::neighbors has them: -1 on the boundary).
   std::vector<std::int32_t> neighbours() const;
@@ -37,24 +37,22 @@ class MeshEdges {
 class GivenMesh {
  public:
   /// `pts` (whose first points are the given mesh's, as the mesh refined has them) must outlive this.
-  GivenMesh(const std::vector<Point>& pts, std::vector<VertexId> tris, std::vector<std::int32_t> nbrs)
-      : pts_(pts), tris_(std::move(tris)), nbrs_(std::move(nbrs)), seen_(tris_.size() / 3, 0) {}
+  GivenMesh(const std::vector<Point>& pts, const Tds& given) : pts_(pts), tds_(given.copy()), seen_(tds_.slots(), 0) {}
 
   /// The given triangle whose closure holds p, found by a walk from `hint` (a triangle near
   /// it), else, where the walk meets the boundary or circles (the given mesh need not be
   /// Delaunay), by a search outward from where it stopped, neighbour by neighbour; `hint` where
   /// none holds it.
-  std::uint32_t locate(const Point& p, std::uint32_t hint) const;
+  TriangleId locate(const Point& p, TriangleId hint) const;
   /// The region of m's triangle t, its centroid located from its region now.
-  std::int32_t region_of(const Cdt& m, std::uint32_t t) const;
+  std::int32_t region_of(const Cdt& m, TriangleId t) const;
 
  private:
-  bool holds(std::uint32_t t, const Point& p) const;
-  std::uint32_t search(const Point& p, std::uint32_t from) const;
+  bool holds(TriangleId t, const Point& p) const;
+  TriangleId search(const Point& p, TriangleId from) const;
 
   const std::vector<Point>& pts_;
-  std::vector<VertexId> tris_;
-  std::vector<std::int32_t> nbrs_;
+  Tds tds_;
   mutable std::vector<std::uint32_t> seen_;  // search's marks: the search's number, so none is cleared
   mutable std::uint32_t searches_ = 0;
 };

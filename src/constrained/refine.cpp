@@ -18,20 +18,18 @@ namespace refining {
 // Subsegment s split at its split point, or, where that cannot be placed (a vertex a rounding
 // from the subsegment folds the triangles there), at a quarter or three eighths from either
 // end instead; left whole where none can.
-void Refiner::split(std::uint32_t s) {
+void Refiner::split(Link s) {
   if (!splittable(s)) return;
   const Unsplit key = unsplit_key(s);
   if (unsplit_.count(key) != 0) return;
-  const std::uint32_t t = s / 3;
-  const int k = static_cast<int>(s % 3);
-  const VertexId x = m_.at(t, k + 1), y = m_.at(t, k + 2);
+  const VertexId x = m_.tds.tail(s), y = m_.tds.head(s);
   const std::pair<VertexId, VertexId> ends = chain(x, y);
   const Point &a = m_.pts[x], &b = m_.pts[y];
   auto at = [&](double f) { return Point{a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f}; };
   const Point tries[5] = {split_point(x, y), at(0.25), at(0.75), at(0.375), at(0.625)};
   for (const Point& p : tries)
-    if (const VertexId v = split_at(s, p); v != Cdt::kNone) {
-      ends_.resize(m_.pts.size(), {Cdt::kNone, Cdt::kNone});
+    if (const VertexId v = split_at(s, p); v != kNoVertex) {
+      ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
       ends_[v] = ends;
       added(v);
       return;
@@ -41,24 +39,26 @@ void Refiner::split(std::uint32_t s) {
 
 // p added on subsegment s as though it lay on it (it does, up to rounding; on the boundary never
 // beyond it, lest the domain grow over a hole's seed); where that folds a triangle, inside the one
-// beside it that holds p (x-y freed, p added, x-p and p-y fixed, the regions kept); else kNone.
-VertexId Refiner::split_at(std::uint32_t s, const Point& given) {
-  const std::uint32_t t = s / 3;
-  const int k = static_cast<int>(s % 3);
+// beside it that holds p (x-y freed, p added, x-p and p-y given its constraint, the regions
+// kept); else kNoVertex.
+VertexId Refiner::split_at(Link s, const Point& given) {
+  const TriangleId t = triangle_of(s);
+  const int k = edge_of(s);
   const Point p = boundary(s) ? m_.not_beyond(t, k, given) : given;
   if (m_.fits_on_edge(t, k, p)) return m_.insert_on_edge(p, t, k);
-  if (boundary(s)) return Cdt::kNone;
+  if (boundary(s)) return kNoVertex;
   const Cdt::Place at = m_.beside(t, static_cast<int>(k), p);
-  if (at.kind != Cdt::Place::Inside) return Cdt::kNone;
-  const VertexId x = m_.at(t, k + 1), y = m_.at(t, k + 2);
+  if (at.kind != Cdt::Place::Inside) return kNoVertex;
+  const VertexId x = m_.tds.tail(s), y = m_.tds.head(s);
   // The regions of t (left of x -> y) and across, which the flips about p could mix.
-  const std::int32_t across = m_.nbrs[s];
+  const TriangleId across = m_.across(s);
   const std::int32_t left = m_.region.empty() ? -1 : m_.region[t];
-  const std::int32_t right = m_.region.empty() || across < 0 ? left : m_.region[static_cast<std::uint32_t>(across)];
-  m_.set_fixed(t, k, false);
+  const std::int32_t right = m_.region.empty() || across == kNoTriangle ? left : m_.region[across];
+  const Constraint c = m_.tds.constraint(s);
+  m_.constrain(s, kFree);
   const VertexId v = m_.insert(p, at);
   for (const VertexId e : {x, y})
-    if (const std::uint32_t f = m_.find_edge(v, e); f != Cdt::kNone) m_.set_fixed(f / 3, static_cast<int>(f % 3), true);
+    if (const Link f = m_.find_edge(v, e); f != kNoLink) m_.constrain(f, c);
   if (left != right) relabel(v, x, y, left, right);
   return v;
 }
@@ -84,11 +84,11 @@ void Refiner::relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std
 
 // After v is added: its triangles queued where bad, its fixed edges where encroached.
 void Refiner::added(VertexId v) {
-  ends_.resize(m_.pts.size(), {Cdt::kNone, Cdt::kNone});
-  m_.around(v, [&](std::uint32_t t) {
+  ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
+  m_.around(v, [&](TriangleId t) {
     queue_bad(t);
     for (int k = 0; k < 3; ++k)
-      if (m_.fixed[3 * t + k] && encroached(3 * t + k)) queue_split(3 * t + k, false);
+      if (const Link e = link_to(t, k); m_.fixed(e) && encroached(e)) queue_split(e, false);
     return false;
   });
 }

@@ -16,7 +16,6 @@
 #include "constrained/refine.hpp"
 #include "order/order.hpp"
 #include "predicates/predicates.hpp"
-#include "queries/circumcentre.hpp"
 #include "runtime/memory.hpp"
 
 namespace ridt::detail::refining {
@@ -49,14 +48,15 @@ class Refiner {
     diag2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1});
     tiny2_ = diag2_ * 0x1p-80;  // edges below 2^-40 of the diagonal stay
     cells_ = 65535 / std::max(box_.x1 - box_.x0, box_.y1 - box_.y0);  // infinite for one point: see curve()
-    ends_.assign(m.pts.size(), {Cdt::kNone, Cdt::kNone});
+    ends_.assign(m.pts.size(), {kNoVertex, kNoVertex});
   }
 
   std::string run() {
-    for (std::uint32_t s = 0; s < m_.tris.size(); ++s)
-      if (m_.nbrs[s] < 0) m_.fixed[s] = 1;
-    for (std::uint32_t s = 0; s < m_.tris.size(); ++s)
-      if (m_.fixed[s] && encroached(s)) queue_split(s, false);
+    const Link slots = static_cast<Link>(3 * m_.size());
+    for (Link s = 0; s < slots; ++s)
+      if (m_.boundary(s) && !m_.fixed(s)) m_.constrain(s, kUnnamed);
+    for (Link s = 0; s < slots; ++s)
+      if (m_.fixed(s) && encroached(s)) queue_split(s, false);
     find_small_angles();
     for (std::uint32_t t = 0; t < m_.size(); ++t) queue_bad(t);
     const std::size_t first = m_.pts.size();
@@ -74,8 +74,8 @@ class Refiner {
       if (!segments_.empty()) {
         const Split w = segments_.back();
         segments_.pop_back();
-        const std::uint32_t s = m_.find_edge(w.x, w.y);
-        if (s != Cdt::kNone && m_.fixed[s] && (w.forced || encroached(s))) split(s);
+        const Link s = m_.find_edge(w.x, w.y);
+        if (s != kNoLink && m_.fixed(s) && (w.forced || encroached(s))) split(s);
         continue;
       }
       if (bad_.empty()) return left_bad();
@@ -91,9 +91,7 @@ class Refiner {
     VertexId x, y;
     bool forced;  // split even where no vertex encroaches it (a point to be added would)
   };
-  void queue_split(std::uint32_t s, bool forced) {
-    segments_.push_back({m_.at(s / 3, static_cast<int>(s % 3) + 1), m_.at(s / 3, static_cast<int>(s % 3) + 2), forced});
-  }
+  void queue_split(Link s, bool forced) { segments_.push_back({m_.tds.tail(s), m_.tds.head(s), forced}); }
 
   // Most queued triangles are gone by their turn (four in five on a coastline), and those
   // still there, with their neighbours, lie anywhere in memory: what the next pops will read is
@@ -105,15 +103,16 @@ class Refiner {
       const Bad* b = bad_.ahead(ahead);
       return b != nullptr && alive(*b) ? b : nullptr;
     };
-    if (const Bad* b = bad_.ahead(8)) __builtin_prefetch(&m_.tris[3 * std::size_t{b->t}]);
+    const VertexId* v = m_.tds.vertex_array().data();
+    const Link* link = m_.tds.link_array().data();
+    if (const Bad* b = bad_.ahead(8)) __builtin_prefetch(v + 3 * std::size_t{b->t});
     if (const Bad* b = still_there(4)) {
-      for (const VertexId v : b->v) __builtin_prefetch(&m_.pts[v]);
-      __builtin_prefetch(&m_.nbrs[3 * std::size_t{b->t}]);
+      for (const VertexId w : b->v) __builtin_prefetch(&m_.pts[w]);
+      __builtin_prefetch(link + 3 * std::size_t{b->t});
     }
     if (const Bad* b = still_there(2))
       for (int k = 0; k < 3; ++k)
-        if (const std::int32_t n = m_.nbrs[3 * std::size_t{b->t} + k]; n >= 0)
-          __builtin_prefetch(&m_.tris[3 * static_cast<std::size_t>(n)]);
+        if (const Link l = link[3 * std::size_t{b->t} + k]; l != kNoLink) __builtin_prefetch(v + (l - l % 3));
   }
 
   struct Bad {
@@ -125,7 +124,7 @@ class Refiner {
   };
 
   bool corner(VertexId v) const { return v < r_.corners; }
-  bool boundary(std::uint32_t s) const { return m_.nbrs[s] < 0; }
+  bool boundary(Link s) const { return m_.boundary(s); }
   // The warning for the triangles refinement gave up on that are still bad: below the angle
   // after 64 tries (each time the subsegments its point would encroach were split, or its point
   // went in beyond one, it stood again: in a wedge so thin beside one so wide that the splits
@@ -152,12 +151,11 @@ class Refiner {
   }
 
   bool alive(const Bad& b) const {
-    return b.t < m_.size() && m_.tris[3 * b.t] == b.v[0] && m_.tris[3 * b.t + 1] == b.v[1] &&
-        m_.tris[3 * b.t + 2] == b.v[2];
+    return b.t < m_.size() && m_.at(b.t, 0) == b.v[0] && m_.at(b.t, 1) == b.v[1] && m_.at(b.t, 2) == b.v[2];
   }
   void queue_bad(std::uint32_t t) {
     if (const double key = badness(t); key != kGood)
-      bad_.push({key, t, {m_.tris[3 * t], m_.tris[3 * t + 1], m_.tris[3 * t + 2]}, 0, curve(m_.pts[m_.tris[3 * t]])});
+      bad_.push({key, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, curve(m_.pts[m_.at(t, 0)])});
   }
 
   // The subsegment in slot s has a vertex strictly inside its diametral circle: the apex of its
@@ -165,16 +163,14 @@ class Refiner {
   // conforming triangulation: two segments near each other (at a small angle, or side by side)
   // would split each other down to the gap between them, where the bounds need no such thing
   // (an angle bound splits them through their triangles' off-centres where it must).
-  bool encroached(std::uint32_t s) const {
-    const std::uint32_t t = s / 3;
-    const int k = static_cast<int>(s % 3);
-    const Point &a = m_.pts[m_.at(t, k + 1)], &b = m_.pts[m_.at(t, k + 2)];
+  bool encroached(Link s) const {
+    const Point &a = m_.pts[m_.tds.tail(s)], &b = m_.pts[m_.tds.head(s)];
     auto inside = [&](VertexId v) {
-      return (r_.conforming || corner(v) || ends_[v].first == Cdt::kNone) && dot(a, b, m_.pts[v]) < 0;
+      return (r_.conforming || corner(v) || ends_[v].first == kNoVertex) && dot(a, b, m_.pts[v]) < 0;
     };
-    if (inside(m_.at(t, k))) return true;
-    const std::int32_t n = m_.nbrs[s];
-    return n >= 0 && inside(m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t)));
+    if (inside(m_.tds.vertex_at(s))) return true;
+    const VertexId across = m_.apex_across(s);
+    return across != kNoVertex && inside(across);
   }
 
   // The corners at the ends of the chain of subsegments that subsegment x-y lies on.
@@ -194,21 +190,21 @@ class Refiner {
 
   // The corner below 60 degrees where the chains of u and w (two of them) meet, or kNone.
   VertexId apex(VertexId u, VertexId w) const {
-    if (corner(u) || corner(w) || ends_[u].first == Cdt::kNone || ends_[w].first == Cdt::kNone) return Cdt::kNone;
+    if (corner(u) || corner(w) || ends_[u].first == kNoVertex || ends_[w].first == kNoVertex) return kNoVertex;
     const auto [u1, u2] = chain_of(u);
     const auto [w1, w2] = chain_of(w);
-    if (u1 == w1 && u2 == w2) return Cdt::kNone;  // one chain
+    if (u1 == w1 && u2 == w2) return kNoVertex;  // one chain
     for (const VertexId z : {u1, u2})
       if (small_[z] && (z == w1 || z == w2)) return z;
-    return Cdt::kNone;
+    return kNoVertex;
   }
 
   // apex(u, w) where the chains make an angle below half the angle bound there: a wedge so
   // thin that mending its triangles would cut the chains down to the gap between them.
   VertexId thin_apex(VertexId u, VertexId w) const {
     const VertexId z = apex(u, w);
-    if (z == Cdt::kNone) return z;
-    return std::fabs(turn(m_.pts[z], m_.pts[u], m_.pts[w])) < half_bound_ ? z : Cdt::kNone;
+    if (z == kNoVertex) return z;
+    return std::fabs(turn(m_.pts[z], m_.pts[u], m_.pts[w])) < half_bound_ ? z : kNoVertex;
   }
 
   // Edge u-w is seditious (Shewchuk's word): u and w lie on two chains that meet at a corner z
@@ -217,7 +213,7 @@ class Refiner {
   // two chains; splitting it would only cut the shells finer.
   bool seditious(VertexId u, VertexId w) const {
     const VertexId z = apex(u, w);
-    if (z == Cdt::kNone) return false;
+    if (z == kNoVertex) return false;
     const double du = dist2(m_.pts[z], m_.pts[u]), dw = dist2(m_.pts[z], m_.pts[w]);
     return std::fabs(du - dw) <= kOneDistance * std::max(du, dw);
   }
@@ -240,7 +236,7 @@ class Refiner {
   // angle by its shortest edge's squared length (the smallest first: the sizes then grade out
   // from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex coastline).
   double badness(std::uint32_t t) const {
-    const VertexId v[3] = {m_.tris[3 * t], m_.tris[3 * t + 1], m_.tris[3 * t + 2]};
+    const VertexId v[3] = {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)};
     const Point &a = m_.pts[v[0]], &b = m_.pts[v[1]], &c = m_.pts[v[2]];
     const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     // First: the terminator (improve) may leave a small angle, never an area above its bound.
@@ -260,72 +256,48 @@ class Refiner {
     return kGood;
   }
 
-  // Where triangle t gets its point: the off-centre of its shortest edge.
-  Point off_centre(std::uint32_t t) const {
-    const Point &a = m_.pts[m_.tris[3 * t]], &b = m_.pts[m_.tris[3 * t + 1]], &c = m_.pts[m_.tris[3 * t + 2]];
-    const Point cc = circumcentre(a, b, c);
+  // Where triangle t gets its point: the off-centre of its shortest edge. The circumcentre is
+  // computed within its bound (circumcentre_bounded: exactly where the filter cannot vouch for
+  // it), so that a sliver's point lies where it is meant to, and not where rounding or an
+  // overflow in its distance would put it (on the edge itself, whose pieces then shrank without
+  // end).
+  Point off_centre(TriangleId t) const {
+    const Point &a = m_.pts[m_.at(t, 0)], &b = m_.pts[m_.at(t, 1)], &c = m_.pts[m_.at(t, 2)];
+    const Point cc = circumcentre_bounded(a, b, c);
     if (offset_ == 0) return cc;
     const double l[3] = {dist2(b, c), dist2(c, a), dist2(a, b)};
     const int s = shortest(l);
     const Point &p = m_.pts[m_.at(t, s + 1)], &q = m_.pts[m_.at(t, s + 2)];
     const Point mid{(p.x + q.x) / 2, (p.y + q.y) / 2};
     const double reach = offset_ * std::sqrt(l[s]), far = std::sqrt(dist2(cc, mid));
-    if (!(far > reach)) return cc;
-    const double f = reach / far;
-    return {mid.x + (cc.x - mid.x) * f, mid.y + (cc.y - mid.y) * f};
+    if (!(far > reach)) return cc;  // (NaN where the corners are collinear)
+    if (std::isfinite(far)) {
+      const double f = reach / far;
+      return {mid.x + (cc.x - mid.x) * f, mid.y + (cc.y - mid.y) * f};
+    }
+    // The centre so far that its squared distance overflows, or beyond the doubles (a sliver):
+    // its direction from the middle of the edge p -> q is the edge's left normal, toward t.
+    const double ex = q.x - p.x, ey = q.y - p.y, length = std::hypot(ex, ey);
+    return {mid.x - ey / length * reach, mid.y + ex / length * reach};
   }
 
   // The fixed edges that p, added in `at`, would see strictly inside their diametral circles:
-  // those bounding the triangles whose circles hold p, flooded from `at` without crossing a
-  // fixed edge.
-  std::vector<std::uint32_t>& would_encroach(const Point& p, const Cdt::Place& at) {
-    std::vector<std::uint32_t>&todo = todo_, &seen = seen_, &out = hit_;
-    // The triangles seen: searched for while they are few, marked once they are many (a search
-    // through each of m is m^2 steps, and where coordinates span the doubles' range m can be
-    // thousands; a mark is a miss in memory, slower for the few of a typical cavity).
-    std::uint32_t mark = 0;
-    auto is_seen = [&](std::uint32_t n) {
-      return mark != 0 ? m_.mark[n] == mark : std::find(seen.begin(), seen.end(), n) != seen.end();
-    };
-    auto see = [&](std::uint32_t n) {
-      seen.push_back(n);
-      if (mark != 0) {
-        m_.mark[n] = mark;
-      } else if (seen.size() > Cdt::kSearched) {
-        mark = m_.new_mark();
-        for (const std::uint32_t t : seen) m_.mark[t] = mark;
-      }
-    };
-    todo.assign(1, at.t), seen.assign(1, at.t), out.clear();
-    if (at.kind == Cdt::Place::Edge && !m_.fixed[3 * at.t + at.k] && m_.nbrs[3 * at.t + at.k] >= 0)
-      todo.push_back(static_cast<std::uint32_t>(m_.nbrs[3 * at.t + at.k])), see(todo.back());
-    while (!todo.empty()) {
-      const std::uint32_t t = todo.back();
-      todo.pop_back();
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t s = 3 * t + k;
-        if (m_.fixed[s]) {
-          if (dot(m_.pts[m_.at(t, k + 1)], m_.pts[m_.at(t, k + 2)], p) < 0) out.push_back(s);
-          continue;
-        }
-        const auto n = static_cast<std::uint32_t>(m_.nbrs[s]);
-        if (is_seen(n)) continue;
-        const VertexId* v = &m_.tris[3 * n];
-        if (incircle(m_.pts[v[0]], m_.pts[v[1]], m_.pts[v[2]], p) <= 0) {
-          __builtin_prefetch(&m_.nbrs[3 * std::size_t{n}]);  // on the rim: the fan links back to it
-          continue;
-        }
-        todo.push_back(n), see(n);
-      }
-    }
-    return out;
+  // those bounding the cavity of p (the triangles whose circles hold p, linked without crossing
+  // a fixed edge: Cdt::find_cavity, which insert_cavity then fills).
+  std::vector<Link>& would_encroach(const Point& p, const Cdt::Place& at) {
+    m_.find_cavity(p, at);
+    const CavityScratch& s = m_.cavity();
+    hit_.clear();
+    for (std::size_t i = 0; i < s.edges; ++i)
+      if (const Link e = s.boundary[i].inside;
+          m_.fixed(e) && dot(m_.pts[m_.tds.tail(e)], m_.pts[m_.tds.head(e)], p) < 0)
+        hit_.push_back(e);
+    return hit_;
   }
 
-  bool splittable(std::uint32_t s) const {
+  bool splittable(Link s) const {
     if (!r_.split_segments || (!r_.split_boundary && boundary(s))) return false;
-    const std::uint32_t t = s / 3;
-    const int k = static_cast<int>(s % 3);
-    return dist2(m_.pts[m_.at(t, k + 1)], m_.pts[m_.at(t, k + 2)]) >= 4 * tiny2_;
+    return dist2(m_.pts[m_.tds.tail(s)], m_.pts[m_.tds.head(s)]) >= 4 * tiny2_;
   }
 
   void improve(const Bad& b) {
@@ -334,25 +306,26 @@ class Refiner {
     const Cdt::Place at = m_.locate(b.t, p, true);
     if (at.kind == Cdt::Place::Corner) return centroid(b);
     // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
-    if (at.kind == Cdt::Place::Edge && m_.fixed[3 * at.t + at.k] && !splittable(3 * at.t + at.k)) return centroid(b);
+    const Link e = link_to(at.t, at.k);
+    if (at.kind == Cdt::Place::Edge && m_.fixed(e) && !splittable(e)) return centroid(b);
     const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
-    if (blocked) hit_.assign(1, 3 * at.t + at.k);
-    std::vector<std::uint32_t>& hit = blocked ? hit_ : would_encroach(p, at);
-    std::erase_if(hit, [&](std::uint32_t s) { return !splittable(s); });
-    for (const std::uint32_t s : hit)
+    if (blocked) hit_.assign(1, e);
+    std::vector<Link>& hit = blocked ? hit_ : would_encroach(p, at);
+    std::erase_if(hit, [&](Link s) { return !splittable(s); });
+    for (const Link s : hit)
       if (b.key >= 0 && terminated(s, b.t)) return;  // never for a triangle too large
     if (blocked || !hit.empty()) {
       if (b.key >= 0 && wedged(b.t, hit)) return;
       if (b.tries >= 64) return leave(b);
       if (hit.empty()) return centroid(b);
-      for (const std::uint32_t s : hit) queue_split(s, true);
+      for (const Link s : hit) queue_split(s, true);
       bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
       return;
     }
     // The triangles whose circles hold p are known (would_encroach's): replaced by a fan
     // about p where they make a cavity p sees whole, else p added with flips.
-    const VertexId v = m_.insert_cavity(p, seen_);
-    added(v != Cdt::kNone ? v : m_.insert(p, at));
+    const VertexId v = m_.insert_cavity(p);
+    added(v != kNoVertex ? v : m_.insert(p, at));
     // p beyond a subsegment too short to split from t (a triangle far thinner than long): t
     // stands, tried again, then given its centroid.
     if (alive(b)) {
@@ -376,7 +349,7 @@ class Refiner {
     const Point &p = m_.pts[b.v[0]], &q = m_.pts[b.v[1]], &r = m_.pts[b.v[2]];
     const Point c{p.x / 3 + q.x / 3 + r.x / 3, p.y / 3 + q.y / 3 + r.y / 3};
     const Cdt::Place at = m_.locate(b.t, c, true);
-    if (at.kind == Cdt::Place::Inside || (at.kind == Cdt::Place::Edge && !m_.fixed[3 * at.t + at.k]))
+    if (at.kind == Cdt::Place::Inside || (at.kind == Cdt::Place::Edge && !m_.fixed(link_to(at.t, at.k))))
       return added(m_.insert(c, at));
     given_up_.push_back(b);  // a triangle too thin for its centroid to fall inside it: left, and said
   }
@@ -396,15 +369,15 @@ class Refiner {
     return {z.x + (o.x - z.x) * f, z.y + (o.y - z.y) * f};
   }
 
-  void split(std::uint32_t s);
-  VertexId split_at(std::uint32_t s, const Point& given);
+  void split(Link s);
+  VertexId split_at(Link s, const Point& given);
   void relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right);
   void added(VertexId v);
   void find_small_angles();
-  bool wedged(std::uint32_t t, const std::vector<std::uint32_t>& hit);
+  bool wedged(TriangleId t, const std::vector<Link>& hit);
   bool partnered(std::uint32_t t);
   bool partner(VertexId x, VertexId y, VertexId z);
-  bool terminated(std::uint32_t s, std::uint32_t t) const;
+  bool terminated(Link s, TriangleId t) const;
 
   Cdt& m_;
   const Refinement& r_;
@@ -425,7 +398,7 @@ class Refiner {
   std::vector<Split> segments_;  // subsegments to split, if still there (and encroached)
   std::vector<Bad> given_up_;  // triangles left bad: for their shape after 64 tries, too large with no point inside
   Buckets<Bad> bad_;
-  std::vector<std::uint32_t> todo_, seen_, hit_;  // would_encroach's
+  std::vector<Link> hit_;  // would_encroach's
   // Subsegments split could not split, each by its ends and the apexes on either side (kNone
   // beyond the boundary): the outcome depends on those four alone, so a subsegment asked again
   // with the same neighbours is not tried again (where coordinates span the doubles' range, a
@@ -443,13 +416,8 @@ class Refiner {
     }
   };
   std::unordered_set<Unsplit, UnsplitHash> unsplit_;
-  Unsplit unsplit_key(std::uint32_t s) const {
-    const std::uint32_t t = s / 3;
-    const int k = static_cast<int>(s % 3);
-    const std::int32_t n = m_.nbrs[s];
-    const VertexId across =
-        n < 0 ? Cdt::kNone : m_.at(static_cast<std::uint32_t>(n), m_.back(static_cast<std::uint32_t>(n), t));
-    return {{m_.at(t, k + 1), m_.at(t, k + 2), m_.at(t, k), across}};
+  Unsplit unsplit_key(Link s) const {
+    return {{m_.tds.tail(s), m_.tds.head(s), m_.tds.vertex_at(s), m_.apex_across(s)}};
   }
 };
 

@@ -27,30 +27,31 @@ class Inserter {
  public:
   explicit Inserter(Cdt& m) : m_(m) {}
 
-  // Input segment a-b, its pieces fixed edges.
-  void insert_segment(VertexId a, VertexId b) {
+  // Input segment a-b, number `segment`, its pieces fixed edges that name it.
+  void insert_segment(VertexId a, VertexId b, Constraint segment) {
     first_added_ = static_cast<VertexId>(m_.pts.size());
-    insert(a, b);
+    insert(a, b, segment);
   }
 
  private:
-  void insert(VertexId a, VertexId b) {
+  // a-b, a piece of input segment c.
+  void insert(VertexId a, VertexId b, Constraint c) {
     while (a != b) {
       const Step s = step(a, b);
-      if (s.along != Cdt::kNone) {
-        m_.set_fixed(s.triangle, s.slot, true);
+      if (s.along != kNoVertex) {
+        m_.constrain(link_to(s.triangle, s.slot), c);
         // The next walk (or the next segment of a chain) starts from this triangle, at hand.
         m_.corner[s.along] = 3 * s.triangle + static_cast<std::uint32_t>(m_.corner_of(s.triangle, s.along));
         a = s.along;
         continue;
       }
-      a = cross(a, b, s.triangle);
+      a = cross(a, b, s.triangle, c);
     }
   }
 
   struct Step {
-    VertexId along = Cdt::kNone;  // an edge a-along runs along the segment (edge `slot` of `triangle`)
-    std::uint32_t triangle = Cdt::kNone;  // else the triangle at a through which the segment leaves a
+    VertexId along = kNoVertex;  // an edge a-along runs along the segment (edge `slot` of `triangle`)
+    TriangleId triangle = kNoTriangle;  // else the triangle at a through which the segment leaves a
     int slot = 0;
   };
 
@@ -79,7 +80,7 @@ class Inserter {
       const int ou = orient2d(p[a], p[b], p[u]), ow = orient2d(p[a], p[b], p[w]);
       if (ou == 0 && key(a, b, u) > key(a, b, a) && key(a, b, u) <= key(a, b, b)) return s = {u, t, (i + 2) % 3}, true;
       if (ow == 0 && key(a, b, w) > key(a, b, a) && key(a, b, w) <= key(a, b, b)) return s = {w, t, (i + 1) % 3}, true;
-      if (ou < 0 && ow > 0) return s = {Cdt::kNone, t, 0}, true;
+      if (ou < 0 && ow > 0) return s = {kNoVertex, t, 0}, true;
       return false;
     });
     if (!found) throw std::logic_error("ridt: a segment found no way out of its vertex");
@@ -93,12 +94,14 @@ class Inserter {
     return 0;
   }
 
-  // a-b meets fixed edge u-w (edge k of triangle t) inside both: the rounded crossing x made a
-  // vertex, u-w replaced by u-x and x-w, a-x inserted; returns x, from where a-b goes on.
-  VertexId split_crossing(VertexId a, VertexId b, std::uint32_t t, int k) {
+  // a-b (a piece of input segment c) meets fixed edge u-w (edge k of triangle t) inside both:
+  // the rounded crossing x made a vertex, u-w replaced by u-x and x-w (pieces of u-w's own
+  // segment), a-x inserted; returns x, from where a-b goes on.
+  VertexId split_crossing(VertexId a, VertexId b, TriangleId t, int k, Constraint c) {
     const VertexId u = m_.at(t, k + 1), w = m_.at(t, k + 2);
     const Point x = crossing_rounded(m_.pts[a], m_.pts[b], m_.pts[u], m_.pts[w]);
-    m_.set_fixed(t, k, false);
+    const Constraint other = m_.tds.constraint(link_to(t, k));
+    m_.constrain(link_to(t, k), kFree);
     // Pieces of segments at a hair's angle, their ends rounded, can cross again at each crossing
     // added (a cascade, each piece's insertion nested in the last's, or one crossing after
     // another along the segment): past kCascade levels, or where u-w ends at a point added for
@@ -112,7 +115,7 @@ class Inserter {
       ~Level() { --depth; }
     } level(depth_);
     VertexId v = 0;
-    if (const VertexId end = within_ulps(x, {a, b, u, w}); end != Cdt::kNone) {
+    if (const VertexId end = within_ulps(x, {a, b, u, w}); end != kNoVertex) {
       v = end;  // within a few units in the last place of an end: the segments bend through it
     } else if (depth_ > kCascade || u >= first_added_ || w >= first_added_) {
       v = nearest(x, {a, b, u, w});
@@ -131,10 +134,10 @@ class Inserter {
     }
     // u-w, no longer fixed, may be left standing where it is not locally Delaunay (x rounded
     // onto a vertex): flipped as it needs.
-    if (const std::uint32_t e = m_.find_edge(u, w); e != Cdt::kNone) m_.restore({e});
-    insert(u, v);
-    insert(v, w);
-    insert(a, v);
+    if (const Link e = m_.find_edge(u, w); e != kNoLink) m_.restore({e});
+    insert(u, v, other);
+    insert(v, w, other);
+    insert(a, v, c);
     return v;
   }
 
@@ -142,7 +145,7 @@ class Inserter {
   // outside it, beyond the hull by a rounding (the exact crossing lies on both segments, so
   // inside), the nearest of the doubles next to x in each coordinate that lies in it; Outside
   // where none does (the hull there thinner than a unit in the last place of x).
-  std::pair<Point, Cdt::Place> found_near(std::uint32_t t, const Point& x) const {
+  std::pair<Point, Cdt::Place> found_near(TriangleId t, const Point& x) const {
     if (const Cdt::Place at = m_.find(t, x); at.kind != Cdt::Place::Outside) return {x, at};
     std::vector<Point> next;
     for (const double dx : {-1, 0, 1})
@@ -167,7 +170,7 @@ class Inserter {
     return *std::min_element(ends.begin(), ends.end(), [&](VertexId p, VertexId q) { return d2(p) < d2(q); });
   }
 
-  // The first of `ends` within 4 units in the last place of x in each coordinate, or kNone:
+  // The first of `ends` within 4 units in the last place of x in each coordinate, or kNoVertex:
   // nearly collinear segments would otherwise cross again and again at the points added.
   VertexId within_ulps(const Point& x, std::initializer_list<VertexId> ends) const {
     auto close = [](double p, double q) {
@@ -176,33 +179,33 @@ class Inserter {
     };
     for (const VertexId e : ends)
       if (close(m_.pts[e].x, x.x) && close(m_.pts[e].y, x.y)) return e;
-    return Cdt::kNone;
+    return kNoVertex;
   }
 
-  // The triangles the segment crosses from a (leaving through triangle t) up to the next
-  // vertex v on it, replaced; returns v. (removed_, right_ and left_ are this call's: where it
-  // meets a fixed edge, the inserts that follow use them again, and it returns what they return.)
-  VertexId cross(VertexId a, VertexId b, std::uint32_t t) {
+  // The triangles the segment (a piece of input segment c) crosses from a (leaving through
+  // triangle t) up to the next vertex v on it, replaced; returns v. (removed_, right_ and left_
+  // are this call's: where it meets a fixed edge, the inserts that follow use them again, and
+  // it returns what they return.)
+  VertexId cross(VertexId a, VertexId b, TriangleId t, Constraint c) {
     const auto& p = m_.pts;
     removed_.assign({t});
     const int i = m_.corner_of(t, a);
     VertexId u = m_.at(t, i + 1), w = m_.at(t, i + 2);  // u right, w left
     right_.assign({a, u}), left_.assign({a, w});
-    for (std::uint32_t cur = t;;) {
+    for (TriangleId cur = t;;) {
       const int k = opposite(cur, u, w);
-      if (m_.fixed[3 * cur + k]) return split_crossing(a, b, cur, k);
-      const auto next = static_cast<std::uint32_t>(m_.nbrs[3 * cur + k]);
+      if (m_.fixed(link_to(cur, k))) return split_crossing(a, b, cur, k, c);
+      const TriangleId next = m_.across(link_to(cur, k));
       removed_.push_back(next);
       const VertexId x = m_.at(next, opposite(next, u, w));
       const int o = orient2d(p[a], p[b], p[x]);
       if (o == 0) {
         right_.push_back(x), left_.push_back(x);
         if (removed_.size() == 2)
-          flip(a, u, w, x);
+          m_.flip(link_to(t, m_.corner_of(t, a)));  // one edge crossed: t becomes (a, u, x), the other (a, x, w)
         else
           replace();
-        const std::uint32_t e = m_.find_edge(a, x);
-        m_.set_fixed(e / 3, static_cast<int>(e % 3), true);
+        m_.constrain(m_.find_edge(a, x), c);
         return x;
       }
       (o < 0 ? right_ : left_).push_back(x);
@@ -232,44 +235,12 @@ class Inserter {
     fill(poly, c, hi, left, out);
   }
 
+  // A boundary edge of the triangles a piece replaces, as its outer triangle runs it: the link
+  // across (kNoLink on the boundary) and its constraint.
   struct Outer {
-    std::int32_t n;
-    int back;
-    std::uint8_t fixed;
+    Link outside;
+    Constraint c;
   };
-
-  // Edge k of t as the outside sees it: the triangle across, its slot there, whether fixed.
-  Outer outer(std::uint32_t t, int k) const {
-    const std::int32_t n = m_.nbrs[3 * t + k];
-    return {n, n >= 0 ? m_.back(static_cast<std::uint32_t>(n), t) : -1, m_.fixed[3 * t + k]};
-  }
-
-  // replace() where the piece a-x crosses one edge, u-w (removed_ = {t, the triangle beyond}):
-  // that edge flipped into a-x, the slots, corners and links left as replace() leaves them (t
-  // becomes (a, u, x), the other (a, x, w)), without its sorted lists. Three in four of the
-  // pieces a coastline's Delaunay triangulation lacks are such.
-  void flip(VertexId a, VertexId u, VertexId w, VertexId x) {
-    const std::uint32_t t = removed_[0], r = removed_[1];
-    const Outer au = outer(t, m_.corner_of(t, w)), wa = outer(t, m_.corner_of(t, u));
-    const Outer ux = outer(r, m_.corner_of(r, w)), xw = outer(r, m_.corner_of(r, u));
-    auto make = [&](std::uint32_t s, VertexId p, VertexId q, VertexId z, const Outer& e0, const Outer* e1,
-                    const Outer* e2, std::uint32_t inner) {
-      const VertexId v[3] = {p, q, z};
-      const Outer* e[3] = {&e0, e1, e2};
-      for (int j = 0; j < 3; ++j) {
-        m_.tris[3 * s + j] = v[j];
-        m_.corner[v[j]] = 3 * s + static_cast<std::uint32_t>(j);
-        if (e[j] == nullptr) {
-          m_.nbrs[3 * s + j] = static_cast<std::int32_t>(inner), m_.fixed[3 * s + j] = 0;
-          continue;
-        }
-        m_.nbrs[3 * s + j] = e[j]->n, m_.fixed[3 * s + j] = e[j]->fixed;
-        if (e[j]->n >= 0) m_.nbrs[3 * static_cast<std::size_t>(e[j]->n) + e[j]->back] = static_cast<std::int32_t>(s);
-      }
-    };
-    make(t, a, u, x, ux, nullptr, &au, r);  // edges u-x, x-a (inside), a-u
-    make(r, a, x, w, xw, &wa, nullptr, t);  // edges x-w, w-a, a-x (inside)
-  }
   using Keyed = std::pair<std::uint64_t, Outer>;
 
   // Triangles removed_ replaced by the triangulations of the polygons right_ and left_ of the
@@ -279,12 +250,12 @@ class Inserter {
     gone_.assign(removed_.begin(), removed_.end());
     std::sort(gone_.begin(), gone_.end());
     outer_.clear();  // each directed boundary edge, as its outer triangle runs it
-    for (const std::uint32_t t : removed_)
+    for (const TriangleId t : removed_)
       for (int k = 0; k < 3; ++k) {
-        const std::int32_t n = m_.nbrs[3 * t + k];
-        if (n >= 0 && std::binary_search(gone_.begin(), gone_.end(), static_cast<std::uint32_t>(n))) continue;
-        const int back = n >= 0 ? m_.back(static_cast<std::uint32_t>(n), t) : -1;
-        outer_.push_back({directed(m_.at(t, k + 1), m_.at(t, k + 2)), {n, back, m_.fixed[3 * t + k]}});
+        const Link e = link_to(t, k);
+        const TriangleId n = m_.across(e);
+        if (n != kNoTriangle && std::binary_search(gone_.begin(), gone_.end(), n)) continue;
+        outer_.push_back({directed(m_.at(t, k + 1), m_.at(t, k + 2)), {m_.tds.link_at(e), m_.tds.constraint(e)}});
       }
     std::sort(outer_.begin(), outer_.end(), [](const Keyed& x, const Keyed& y) { return x.first < y.first; });
     made_.clear();
@@ -292,33 +263,33 @@ class Inserter {
     fill(left_, 0, left_.size() - 1, true, made_);
     if (made_.size() != 3 * removed_.size())
       throw std::logic_error("ridt: a segment's polygons do not fill its triangles");
-    inner_.clear();  // (x, y) of a new triangle
+    inner_.clear();  // (x, y) of a new triangle's edge, and its link
     for (std::size_t k = 0; k < removed_.size(); ++k) {
-      const std::uint32_t t = removed_[k];
+      const TriangleId t = removed_[k];
       for (int j = 0; j < 3; ++j) {
-        m_.tris[3 * t + j] = made_[3 * k + j];
-        m_.corner[made_[3 * k + j]] = 3 * t + j;
+        m_.tds.set_vertex(t, j, made_[3 * k + j]);
+        m_.corner[made_[3 * k + j]] = 3 * t + static_cast<TriangleId>(j);
       }
-      for (int j = 0; j < 3; ++j) inner_.push_back({directed(m_.at(t, j + 1), m_.at(t, j + 2)), t});
+      for (int j = 0; j < 3; ++j) inner_.push_back({directed(m_.at(t, j + 1), m_.at(t, j + 2)), link_to(t, j)});
     }
     std::sort(inner_.begin(), inner_.end());
-    for (const std::uint32_t t : removed_)
+    for (const TriangleId t : removed_)
       for (int j = 0; j < 3; ++j) {
         const VertexId x = m_.at(t, j + 1), y = m_.at(t, j + 2);
-        const auto in = std::lower_bound(inner_.begin(), inner_.end(), std::pair{directed(y, x), std::uint32_t{0}});
+        const Link e = link_to(t, j);
+        const auto in = std::lower_bound(inner_.begin(), inner_.end(), std::pair{directed(y, x), Link{0}});
         if (in != inner_.end() && in->first == directed(y, x)) {
-          m_.nbrs[3 * t + j] = static_cast<std::int32_t>(in->second);
-          m_.fixed[3 * t + j] = 0;
+          m_.tds.set_link(e, in->second);
+          m_.tds.set_constraint(e, kFree);
           continue;
         }
         const auto out = std::lower_bound(outer_.begin(), outer_.end(), directed(x, y),
-                                          [](const Keyed& e, std::uint64_t key) { return e.first < key; });
+                                          [](const Keyed& o, std::uint64_t key) { return o.first < key; });
         if (out == outer_.end() || out->first != directed(x, y))
           throw std::logic_error("ridt: a segment's new triangle has an edge that was not there");
         const Outer& o = out->second;
-        m_.nbrs[3 * t + j] = o.n;
-        m_.fixed[3 * t + j] = o.fixed;
-        if (o.n >= 0) m_.nbrs[3 * o.n + o.back] = static_cast<std::int32_t>(t);
+        m_.tds.glue(e, o.outside);
+        m_.tds.set_constraint(e, o.c);
       }
   }
 
@@ -327,10 +298,10 @@ class Inserter {
   int depth_ = 0;  // split_crossing's calls nested
   VertexId first_added_ = 0;  // the first point added for the input segment being inserted
   // Scratch, kept between segments.
-  std::vector<std::uint32_t> removed_, gone_;
+  std::vector<TriangleId> removed_, gone_;
   std::vector<VertexId> right_, left_, made_;
   std::vector<Keyed> outer_;
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> inner_;
+  std::vector<std::pair<std::uint64_t, Link>> inner_;
 };
 
 }  // namespace
@@ -342,20 +313,23 @@ void insert_segments(Cdt& m, std::span<const VertexId> segments, std::span<const
   // two stages, the triangle at the vertex and then, once it is at hand, its neighbours.
   constexpr std::size_t kFar = 16, kNear = 8;
   const std::size_t count = segments.size() / 2;
-  auto slot_of = [&](std::size_t s) { return s < count ? m.corner[kept[segments[2 * s]]] : Cdt::kNone; };
+  const VertexId* v = m.tds.vertex_array().data();
+  const Link* link = m.tds.link_array().data();
+  auto slot_of = [&](std::size_t s) { return s < count ? m.corner[kept[segments[2 * s]]] : kNoTriangle; };
   for (std::size_t s = 0; s < count; ++s) {
-    if (const std::uint32_t c = slot_of(s + kFar); c != Cdt::kNone) {
-      __builtin_prefetch(&m.tris[c - c % 3]);
-      __builtin_prefetch(&m.nbrs[c - c % 3]);
+    if (const std::uint32_t c = slot_of(s + kFar); c != kNoTriangle) {
+      __builtin_prefetch(v + (c - c % 3));
+      __builtin_prefetch(link + (c - c % 3));
     }
-    if (const std::uint32_t c = slot_of(s + kNear); c != Cdt::kNone)
+    if (const std::uint32_t c = slot_of(s + kNear); c != kNoTriangle)
       for (std::uint32_t j = c - c % 3; j < c - c % 3 + 3; ++j)
-        if (const std::int32_t n = m.nbrs[j]; n >= 0) {
-          __builtin_prefetch(&m.tris[3 * static_cast<std::size_t>(n)]);
-          __builtin_prefetch(&m.nbrs[3 * static_cast<std::size_t>(n)]);
+        if (const Link l = link[j]; l != kNoLink) {
+          __builtin_prefetch(v + (l - l % 3));
+          __builtin_prefetch(link + (l - l % 3));
         }
     const VertexId a = kept[segments[2 * s]], b = kept[segments[2 * s + 1]];
-    if (a != b) inserter.insert_segment(a, b);
+    if (a != b) inserter.insert_segment(a, b, static_cast<Constraint>(s));
+    v = m.tds.vertex_array().data(), link = m.tds.link_array().data();  // the arrays may have grown
   }
 }
 

@@ -8,18 +8,16 @@ namespace ridt::detail::refining {
 // Triangle t, bad for its shape, in a thin wedge (thin_apex) whose point would split `hit`, one
 // of them a subsegment of the wedge's chains: t is left where its shortest edge is seditious,
 // else mended by partnered(); true where either.
-bool Refiner::wedged(std::uint32_t t, const std::vector<std::uint32_t>& hit) {
-  const VertexId* v = &m_.tris[3 * t];
+bool Refiner::wedged(TriangleId t, const std::vector<Link>& hit) {
+  const VertexId v[3] = {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)};
   auto on_its_chain = [&](VertexId u) {
-    return std::any_of(hit.begin(), hit.end(), [&](std::uint32_t s) {
-      return ordered(chain(m_.at(s / 3, static_cast<int>(s % 3) + 1), m_.at(s / 3, static_cast<int>(s % 3) + 2))) ==
-          chain_of(u);
-    });
+    return std::any_of(hit.begin(), hit.end(),
+                       [&](Link s) { return ordered(chain(m_.tds.tail(s), m_.tds.head(s))) == chain_of(u); });
   };
   bool wedge = false;
   for (int k = 0; k < 3 && !wedge; ++k) {
     const VertexId u = v[(k + 1) % 3], w = v[(k + 2) % 3];
-    wedge = thin_apex(u, w) != Cdt::kNone && (on_its_chain(u) || on_its_chain(w));
+    wedge = thin_apex(u, w) != kNoVertex && (on_its_chain(u) || on_its_chain(w));
   }
   if (!wedge) return false;
   const Point &a = m_.pts[v[0]], &b = m_.pts[v[1]], &c = m_.pts[v[2]];
@@ -33,14 +31,14 @@ bool Refiner::wedged(std::uint32_t t, const std::vector<std::uint32_t>& hit) {
 // of t's off-centre, which would split the chains, each where it stands, and so on down to the
 // gap between them. Its edges are tried from the shortest. False where none has such a place.
 bool Refiner::partnered(std::uint32_t t) {
-  const VertexId* v = &m_.tris[3 * t];
+  const VertexId v[3] = {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)};
   const double l[3] = {dist2(m_.pts[v[1]], m_.pts[v[2]]), dist2(m_.pts[v[2]], m_.pts[v[0]]),
                        dist2(m_.pts[v[0]], m_.pts[v[1]])};
   int order[3] = {0, 1, 2};
   std::sort(order, order + 3, [&](int i, int j) { return l[i] < l[j]; });
   for (const int k : order) {
     const VertexId u = v[(k + 1) % 3], w = v[(k + 2) % 3], z = thin_apex(u, w);
-    if (z != Cdt::kNone && !seditious(u, w) && (partner(u, w, z) || partner(w, u, z))) return true;
+    if (z != kNoVertex && !seditious(u, w) && (partner(u, w, z) || partner(w, u, z))) return true;
   }
   return false;
 }
@@ -51,25 +49,25 @@ bool Refiner::partner(VertexId x, VertexId y, VertexId z) {
   const Point& pz = m_.pts[z];
   const double dx = dist2(pz, m_.pts[x]), dy = dist2(pz, m_.pts[y]);
   const std::pair<VertexId, VertexId> chain = chain_of(y);
-  std::uint32_t slot = Cdt::kNone;
-  m_.around(y, [&](std::uint32_t f) {
+  Link slot = kNoLink;
+  m_.around(y, [&](TriangleId f) {
     const int i = m_.corner_of(f, y);
     for (int j = 1; j <= 2; ++j) {
-      const std::uint32_t e = 3 * f + (i + j) % 3;  // the edge from y to n
+      const Link e = link_to(f, (i + j) % 3);  // the edge from y to n
       const VertexId n = m_.at(f, i + 3 - j);
-      if (!m_.fixed[e] || !(n == chain.first || n == chain.second || (!corner(n) && chain_of(n) == chain))) continue;
+      if (!m_.fixed(e) || !(n == chain.first || n == chain.second || (!corner(n) && chain_of(n) == chain))) continue;
       const double dn = dist2(pz, m_.pts[n]), lo = std::min(dn, dy), hi = std::max(dn, dy);
       if (dx > lo * (1 + kOneDistance) && dx < hi * (1 - kOneDistance) && splittable(e)) slot = e;
     }
-    return slot != Cdt::kNone;
+    return slot != kNoLink;
   });
-  if (slot == Cdt::kNone) return false;
+  if (slot == kNoLink) return false;
   // Along the chain's segment, from z towards its other end.
   const Point& po = m_.pts[chain.first == z ? chain.second : chain.first];
   const double f = std::sqrt(dx / dist2(pz, po));
   const VertexId p = split_at(slot, {pz.x + (po.x - pz.x) * f, pz.y + (po.y - pz.y) * f});
-  if (p == Cdt::kNone) return false;
-  ends_.resize(m_.pts.size(), {Cdt::kNone, Cdt::kNone});
+  if (p == kNoVertex) return false;
+  ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
   ends_[p] = chain;
   added(p);
   return true;
@@ -83,17 +81,17 @@ void Refiner::find_small_angles() {
     return turn(m_.pts[m_.at(t, i)], m_.pts[m_.at(t, i + 1)], m_.pts[m_.at(t, i + 2)]);
   };
   for (VertexId z = 0; z < r_.corners; ++z) {
-    if (m_.corner[z] == Cdt::kNone) continue;
+    if (m_.corner[z] == kNoTriangle) continue;
     // From each triangle whose edge (z, u) is fixed, counter-clockwise across the edges (w, z)
     // that are not, to the next fixed one.
-    m_.around(z, [&](std::uint32_t first) {
-      if (!m_.fixed[3 * first + (m_.corner_of(first, z) + 2) % 3]) return false;
+    m_.around(z, [&](TriangleId first) {
+      if (!m_.fixed(link_to(first, prev3(m_.corner_of(first, z))))) return false;
       double sector = 0;
-      for (std::uint32_t t = first;;) {
+      for (TriangleId t = first;;) {
         const int i = m_.corner_of(t, z);
         sector += angle(t, i);
-        if (m_.fixed[3 * t + (i + 1) % 3]) break;
-        t = static_cast<std::uint32_t>(m_.nbrs[3 * t + (i + 1) % 3]);
+        if (m_.fixed(link_to(t, next3(i)))) break;
+        t = m_.across(link_to(t, next3(i)));
       }
       if (sector < 3.14159265358979323846 / 3) small_[z] = 1;
       return small_[z] != 0;
@@ -105,18 +103,18 @@ void Refiner::find_small_angles() {
 // small angle, is left as it is where its point would have subsegment s, there, split closer
 // to one of its ends than t's shortest edge is long (t's small angle then comes from the
 // input's, and splitting on would only cut the shells finer).
-bool Refiner::terminated(std::uint32_t s, std::uint32_t t) const {
-  const VertexId x = m_.at(s / 3, static_cast<int>(s % 3) + 1), y = m_.at(s / 3, static_cast<int>(s % 3) + 2);
+bool Refiner::terminated(Link s, TriangleId t) const {
+  const VertexId x = m_.tds.tail(s), y = m_.tds.head(s);
   const auto [z1, z2] = chain(x, y);
-  if (z1 == Cdt::kNone || !(small_[z1] || small_[z2])) return false;
+  if (z1 == kNoVertex || !(small_[z1] || small_[z2])) return false;
   auto beside = [&](VertexId v) {
     if (corner(v)) return small_[v] != 0;
-    return ends_[v].first != Cdt::kNone && (small_[ends_[v].first] || small_[ends_[v].second]);
+    return ends_[v].first != kNoVertex && (small_[ends_[v].first] || small_[ends_[v].second]);
   };
-  if (!beside(m_.tris[3 * t]) && !beside(m_.tris[3 * t + 1]) && !beside(m_.tris[3 * t + 2])) return false;
+  if (!beside(m_.at(t, 0)) && !beside(m_.at(t, 1)) && !beside(m_.at(t, 2))) return false;
   const Point p = split_point(x, y);
   const double radius = std::min(dist2(p, m_.pts[x]), dist2(p, m_.pts[y]));
-  const Point &a = m_.pts[m_.tris[3 * t]], &b = m_.pts[m_.tris[3 * t + 1]], &c = m_.pts[m_.tris[3 * t + 2]];
+  const Point &a = m_.pts[m_.at(t, 0)], &b = m_.pts[m_.at(t, 1)], &c = m_.pts[m_.at(t, 2)];
   return radius < std::min({dist2(a, b), dist2(b, c), dist2(c, a)});
 }
 

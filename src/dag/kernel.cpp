@@ -16,14 +16,14 @@ Kernel::Kernel(Block<Point> points, std::uint32_t n, bool symbolic, bool brio)
   Scratch s;
   // Ids 1 .. kMaxOwner are never triangles (dag/records.hpp), nor written: the finish skips them.
   const TriangleId root = tris_.allocate(kFirstChild);
-  make(root, n, n + 1, n + 2, kNone, kNone, kNone, s);
+  make(root, n, n + 1, n + 2, kNoTriangle, kNoTriangle, kNoTriangle, s);
 }
 
 void Kernel::retire_pool(Scratch& s) {
   for (; s.pool_next < s.pool_end; ++s.pool_next) {
     Triangle& r = tris_[s.pool_next];
-    r.v[0] = r.v[1] = r.v[2] = kNone;  // the finish keeps only triangles of real vertices
-    r.n[0] = r.n[1] = r.n[2] = kNone;
+    r.v[0] = r.v[1] = r.v[2] = kNoVertex;  // the finish keeps only triangles of real vertices
+    r.n[0] = r.n[1] = r.n[2] = kNoTriangle;
     r.child = 0;
   }
 }
@@ -41,7 +41,7 @@ Kernel::Location Kernel::classify(TriangleId t, VertexId p) const {
   int o[3];
   int zeros = 0;
   for (int i = 0; i < 3; ++i) {
-    o[i] = orient(r.v[next(i)], r.v[prev(i)], p);
+    o[i] = orient(r.v[next3(i)], r.v[prev3(i)], p);
     if (o[i] < 0) throw std::logic_error("ridt: point location left its triangle");
     zeros += o[i] == 0;
   }
@@ -100,8 +100,15 @@ Kernel::EdgeSplit Kernel::read_edge_split(TriangleId t, int i) const {
   const TriangleId u = rt.n[i];
   const Triangle& ru = tris_[u];
   const int j = ru.n[0] == t ? 0 : (ru.n[1] == t ? 1 : 2);
-  return {
-      u, rt.v[i], rt.v[next(i)], rt.v[prev(i)], ru.v[j], rt.n[next(i)], rt.n[prev(i)], ru.n[prev(j)], ru.n[next(j)]};
+  return {u,
+          rt.v[i],
+          rt.v[next3(i)],
+          rt.v[prev3(i)],
+          ru.v[j],
+          rt.n[next3(i)],
+          rt.n[prev3(i)],
+          ru.n[prev3(j)],
+          ru.n[next3(j)]};
 }
 
 void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
@@ -141,7 +148,7 @@ void Kernel::split_edge(TriangleId t, int i, VertexId p, Scratch& s) {
 Kernel::Flip Kernel::read_flip(TriangleId t, TriangleId u, int j) const {
   const Triangle& rt = tris_[t];
   const Triangle& ru = tris_[u];
-  return {rt.v[0], rt.v[1], rt.v[2], ru.v[j], rt.n[2], rt.n[1], ru.n[next(j)], ru.n[prev(j)]};
+  return {rt.v[0], rt.v[1], rt.v[2], ru.v[j], rt.n[2], rt.n[1], ru.n[next3(j)], ru.n[prev3(j)]};
 }
 
 void Kernel::flip(TriangleId t, TriangleId u, int j, Scratch& s) {
@@ -170,7 +177,7 @@ void Kernel::legalize(VertexId p, Scratch& s) {
     const TriangleId t = s.stack.back();
     s.stack.pop_back();
     const TriangleId u = tris_[t].n[0];
-    if (u == kNone) continue;  // an edge of the bounding triangle
+    if (u == kNoTriangle) continue;  // an edge of the bounding triangle
     const Triangle& ru = tris_[u];
     const bool illegal = s.cavity != nullptr ? std::find(s.cavity->begin(), s.cavity->end(), u) != s.cavity->end()
                                              : incircle(ru.v[0], ru.v[1], ru.v[2], p) > 0;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dag/records.hpp"
+#include "output/output.hpp"
 #include "predicates/predicates.hpp"
 #include "predicates/symbolic.hpp"
 #include "ridt/ridt.hpp"
@@ -82,12 +83,12 @@ class Kernel {
   /// Where p lies in leaf t (whose closure contains p).
   Location classify(TriangleId t, VertexId p) const;
 
-  /// Inserts p from a known location. Returns kNone, or the vertex that p duplicates.
+  /// Inserts p from a known location. Returns kNoVertex, or the vertex that p duplicates.
   VertexId insert_at(const Location& where, VertexId p, Scratch& s) {
     if (where.where == Where::OnVertex) return tris_[where.t].v[where.i];
     split_at(where, p, s);
     legalize(p, s);
-    return kNone;
+    return kNoVertex;
   }
   void split_at(const Location& where, VertexId p, Scratch& s) {
     if (where.where == Where::Inside)
@@ -259,7 +260,7 @@ class Kernel {
   void flip(TriangleId t, TriangleId u, int j, Scratch& s);
   // Neighbour u of `old` now borders `now` instead.
   void relink(TriangleId u, TriangleId old, TriangleId now, const Scratch& s) {
-    if (u == kNone) return;
+    if (u == kNoTriangle) return;
     require_owned(u, s);
     Triangle& r = tris_[u];
     store_link(r.n[r.n[0] == old ? 0 : (r.n[1] == old ? 1 : 2)], now);
@@ -293,5 +294,11 @@ class Kernel {
   bool brio_;
   TriangleStore tris_;
 };
+
+/// The DAG's finish (dag/finish.cpp): removes the bounding vertices, numbers the remaining triangles compactly, finds the
+/// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
+/// point input_index[v]. Uses up to `threads` threads.
+Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
+                     const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
 
 }  // namespace ridt::detail

@@ -3,7 +3,7 @@
 // Conventions, used everywhere:
 //   t  a triangle id, v a vertex id, i a local index 0..2;
 //   v[i] counter-clockwise; n[i] is the neighbour across the edge opposite v[i], that is the
-//   edge v[next(i)] -> v[prev(i)]; kNone where there is none (the outer edges of the
+//   edge v[next3(i)] -> v[prev3(i)]; kNoTriangle where there is none (the outer edges of the
 //   bounding triangle).
 //   child: at most kMaxOwner while the triangle is a leaf (a current triangle): 0, or the
 //   thread that owns it (the optimistic method's per-triangle lock, dag/kernel.hpp). Otherwise the
@@ -11,7 +11,7 @@
 //   otherwise (a 2->4 split or a flip). Children are allocated consecutively, so one id names
 //   them all. Id 0 is the root and ids 1 .. kMaxOwner are never used, which frees the small
 //   values to mean "leaf". Publishing a triangle's children thus also ends its ownership.
-// See docs/mesh.md for drawings.
+// See docs/dag.md for drawings.
 #pragma once
 
 #include <algorithm>
@@ -25,10 +25,10 @@
 
 #include "ridt/ridt.hpp"
 #include "runtime/memory.hpp"
+#include "tds/ids.hpp"
 
 namespace ridt::detail {
 
-inline constexpr std::uint32_t kNone = 0xffffffffu;
 inline constexpr std::uint32_t kThreeChildren = 0x80000000u;
 inline constexpr std::uint32_t kIdMask = 0x7fffffffu;
 
@@ -37,9 +37,6 @@ inline constexpr std::uint32_t kMaxOwner = kMaxThreads;
 inline constexpr TriangleId kFirstChild = kMaxOwner + 1;
 /// Whether a child word (Triangle::child) belongs to a leaf.
 constexpr bool is_leaf(std::uint32_t child_word) { return child_word <= kMaxOwner; }
-
-constexpr int next(int i) { return i == 2 ? 0 : i + 1; }
-constexpr int prev(int i) { return i == 0 ? 2 : i - 1; }
 
 struct Triangle {
   VertexId v[3];

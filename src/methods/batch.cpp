@@ -138,7 +138,7 @@ void modify(Kernel& kernel, Queue& q, const Insertion& run, WorkerState<Scratch>
     tally.stale += !is_leaf(kernel.triangles()[hint].load_child());
     const TriangleId leaf = kernel.descend(hint, p);
     const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, modifier.scratch);
-    if (hit != kNone) modifier.duplicates.push_back({p, hit});
+    if (hit != kNoVertex) modifier.duplicates.push_back({p, hit});
     ++modifier.stats.points;
   }
 }

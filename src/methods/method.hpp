@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "dag/kernel.hpp"
-#include "finish/finish.hpp"
+#include "output/output.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::detail {
 
 /// What each thread of a threaded method keeps for itself, on its own cache lines: one type for
 /// every method. `KernelScratch` is the kernel's: Scratch on the DAG (dag/kernel.hpp),
-/// CavityScratch on the walking mesh (walk/mesh.hpp).
+/// CavityScratch on the walking kernel (tds/delaunay.hpp).
 template <class KernelScratch>
 struct alignas(64) WorkerState {
   KernelScratch scratch;
@@ -45,7 +45,7 @@ void add_worker(const WorkerState<KernelScratch>& w, double tick, double extra_w
   if constexpr (requires { w.scratch.edge_splits; }) {  // the DAG's kernel: flips and edge splits
     stats.flips += w.scratch.flips;
     stats.edge_splits += w.scratch.edge_splits;
-  } else {  // the walking mesh: the triangles each cavity replaced beyond the first
+  } else {  // the walking kernel: the triangles each cavity replaced beyond the first
     stats.flips += w.scratch.replaced;
   }
 }
@@ -69,7 +69,7 @@ class Progress {
   std::uint64_t n_, next_;
 };
 
-class Mesh;
+class DelaunayTds;
 
 /// What a method is given besides its kernel: the run's choices and where its findings go.
 struct Insertion {
@@ -87,14 +87,14 @@ struct Insertion {
 };
 
 /// A method: how it inserts vertices 0 .. n-1, in that order, into each kernel it can drive
-/// (null where it cannot): the history DAG's (dag/kernel.hpp) or the walking mesh
-/// (walk/mesh.hpp). Each is registered by one line in registry.cpp.
+/// (null where it cannot): the history DAG's (dag/kernel.hpp) or the walking kernel
+/// (tds/delaunay.hpp). Each is registered by one line in registry.cpp.
 struct MethodEntry {
   Method method;
   bool threaded;  ///< takes Options::threads (else one thread)
   bool keys;  ///< walking: needs each vertex's Hilbert key (Insertion::keys)
   void (*dag)(Kernel&, const Insertion&);
-  void (*walk)(Mesh&, const Insertion&);
+  void (*walk)(DelaunayTds&, const Insertion&);
 };
 
 /// The registered methods, and the one for `method` (not Method::Auto).

@@ -92,10 +92,10 @@ class alignas(64) Inserter {  // each on its own cache lines
       // vertices now, so the three incircle tests below wait for memory once, not in turn.
       if (k > 0)
         for (const TriangleId u : r.n)
-          if (u != kNone) kernel_.prefetch_vertices(u);
+          if (u != kNoTriangle) kernel_.prefetch_vertices(u);
       for (const TriangleId u : r.n) {
         // Held already? Before the split the thread owns exactly what it took in this attempt.
-        if (u == kNone || kernel_.owns(u, me_)) continue;
+        if (u == kNoTriangle || kernel_.owns(u, me_)) continue;
         if (!take(u)) return false;
         const Triangle& ru = tris[u];
         // The same test as legalization, so the region is exactly what it will touch.

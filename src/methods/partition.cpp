@@ -6,7 +6,7 @@ namespace ridt::detail {
 
 template <bool kLattice>
 void Partition<kLattice>::run() {
-  const VertexId n = mesh_.vertices().n();
+  const VertexId n = tds_.vertices().n();
   const auto t0 = Clock::now();
   for (VertexId b = 0; b < n; b = round_end(b)) {
     const VertexId e = std::min(round_end(b), n);
@@ -39,8 +39,8 @@ void Partition<kLattice>::insert_round(VertexId b, VertexId e) {
   for (unsigned i = 1; i < threads_; ++i) from[i] = cut[i] < e ? key_[cut[i]] : 0xffffffffu;
   // Before the threads start, with the mesh at rest: each thread's start, and slots for all
   // its points (two a point inserted), from a range for the whole round.
-  const TriangleId base = mesh_.grow(2 * m);
-  const auto anywhere = Mesh::kAnywhere;
+  const TriangleId base = tds_.grow(2 * m);
+  const auto anywhere = Tds::kAnywhere;
   std::vector<Stretch> stretch(threads_);
   for (unsigned i = 0; i < threads_; ++i) {
     Worker& w = workers_[i];
@@ -214,16 +214,16 @@ bool Partition<kLattice>::take_from_another(unsigned i, Stretch& s) {
   }
 }
 
-void insert_partition(Mesh& mesh, const Insertion& run) {
+void insert_partition(DelaunayTds& tds, const Insertion& run) {
   const std::uint32_t* key = run.keys;
   const unsigned threads = run.threads;
   std::vector<DuplicateHit>& duplicates = run.duplicates;
   Stats& stats = run.stats;
   Progress& progress = run.progress;
-  if (mesh.vertices().lattice())
-    Partition<true>(mesh, key, std::max(threads, 1u), duplicates, stats, progress).run();
+  if (tds.vertices().lattice())
+    Partition<true>(tds, key, std::max(threads, 1u), duplicates, stats, progress).run();
   else
-    Partition<false>(mesh, key, std::max(threads, 1u), duplicates, stats, progress).run();
+    Partition<false>(tds, key, std::max(threads, 1u), duplicates, stats, progress).run();
 }
 
 }  // namespace ridt::detail

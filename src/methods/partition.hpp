@@ -1,5 +1,5 @@
 // The partition method (partition.cpp: its first pass; partition_second.cpp: the second):
-// threads insert into one walking mesh (walk/mesh.hpp) without a lock and
+// threads insert into one walking kernel (tds/delaunay.hpp) without a lock and
 // without a history DAG.
 //
 // The points come in the BRIO order, each round along a Hilbert curve, with the curve's key
@@ -61,7 +61,7 @@
 #include "methods/threads.hpp"
 #include "order/order.hpp"
 #include "runtime/parallel.hpp"
-#include "walk/mesh.hpp"
+#include "tds/delaunay.hpp"
 
 namespace ridt::detail {
 
@@ -85,11 +85,11 @@ inline constexpr VertexId kMinShare = 2048;
 template <bool kLattice>
 class Partition {
  public:
-  Partition(Mesh& mesh, const std::uint32_t* key, unsigned threads, std::vector<DuplicateHit>& duplicates, Stats& stats,
-            Progress& progress)
-      : mesh_(mesh),
+  Partition(DelaunayTds& tds, const std::uint32_t* key, unsigned threads, std::vector<DuplicateHit>& duplicates,
+            Stats& stats, Progress& progress)
+      : tds_(tds),
         key_(key),
-        n_(mesh.vertices().n()),
+        n_(tds.vertices().n()),
         threads_(threads),
         workers_(threads),
         duplicates_(duplicates),
@@ -152,10 +152,10 @@ class Partition {
   // guess at where a walk to it is shorter.
   TriangleId nearer(TriangleId t, const PutOff& x) const {
     if (x.near == kNoTriangle) return t;
-    const Vertices& v = mesh_.vertices();
+    const Vertices& v = tds_.vertices();
     auto distance2 = [&](TriangleId u) {
       for (int i = 0; i < 3; ++i)
-        if (const VertexId a = mesh_.vertex(u, i); !v.symbolic(a)) {
+        if (const VertexId a = tds_.vertex(u, i); !v.symbolic(a)) {
           const double dx = v[a].x - v[x.p].x, dy = v[a].y - v[x.p].y;
           return dx * dx + dy * dy;
         }
@@ -168,14 +168,14 @@ class Partition {
   Region region(std::uint32_t lo, std::uint64_t len) const { return {key_, n_, lo, len}; }
 
   // Whether slot t holds a triangle (kNoTriangle: no).
-  bool live(TriangleId t) const { return t < mesh_.slots() && mesh_.vertex(t, 0) != kNoVertex; }
+  bool live(TriangleId t) const { return t < tds_.slots() && tds_.vertex(t, 0) != kNoVertex; }
 
   // Whether triangle t has all three vertices in region r (tested together, without a branch
   // between them: the answers are hard to predict). R: Region (the first pass) or CellRegion
   // (the second), here and below.
   template <class R>
   bool owns(const R& r, TriangleId t) const {
-    const VertexId a = mesh_.vertex(t, 0), b = mesh_.vertex(t, 1), c = mesh_.vertex(t, 2);
+    const VertexId a = tds_.vertex(t, 0), b = tds_.vertex(t, 1), c = tds_.vertex(t, 2);
     return (std::max(a, std::max(b, c)) < n_) & r.holds(a) & r.holds(b) & r.holds(c);
   }
 
@@ -185,17 +185,17 @@ class Partition {
     return (v < n_) & r.holds(v);
   }
   // Whether the triangle entered by link l from one with all its vertices in region r has all
-  // of them there too (Mesh::find_cavity's `owned`).
+  // of them there too (DelaunayTds::find_cavity's `owned`).
   template <class R>
   bool enters(const R& r, Link l) const {
-    return owns_vertex(r, mesh_.opposite(l));
+    return owns_vertex(r, tds_.opposite(l));
   }
   // Whether a walk in region r may cross the edge a b: one of its vertices is in r.
   template <class R>
   bool crosses(const R& r, VertexId a, VertexId b) const {
     return owns_vertex(r, a) | owns_vertex(r, b);
   }
-  // Mesh::walk's `cross` for a walk that enters only region r's own triangles (from one of
+  // DelaunayTds::walk's `cross` for a walk that enters only region r's own triangles (from one of
   // them), and for one that crosses the edges with a vertex in r.
   template <class R>
   auto own_triangles(const R& r) const {
@@ -216,7 +216,7 @@ class Partition {
     seen.assign(1, t);
     for (std::size_t k = 0; k < seen.size() && seen.size() < kEnough; ++k)
       for (int i = 0; i < 3; ++i) {
-        const Link l = mesh_.link(seen[k], i);
+        const Link l = tds_.link(seen[k], i);
         if (l == kNoLink) continue;
         const auto u = static_cast<TriangleId>(l / 3);
         if (owns(r, u) && std::find(seen.begin(), seen.end(), u) == seen.end()) seen.push_back(u);
@@ -233,7 +233,7 @@ class Partition {
     const VertexId size = b - a;
     for (VertexId k = 0; k < std::min<VertexId>(size, kStartTries); ++k) {
       const VertexId p = a + (size / 2 + k) % size;
-      if (mesh_.walk<kLattice>(t, p, enter) && deep_in(r, t, seen)) {
+      if (tds_.walk<kLattice>(t, p, enter) && deep_in(r, t, seen)) {
         from = p;
         return true;
       }
@@ -251,7 +251,7 @@ class Partition {
       const TriangleId u = queue[k];
       if (owns(r, u) && deep_in(r, u, seen)) return u;
       for (int i = 0; i < 3; ++i) {
-        const Link l = mesh_.link(u, i);
+        const Link l = tds_.link(u, i);
         if (l == kNoLink) continue;
         const TriangleId v = triangle_of(l);
         if (owns(within, v) && visited.insert(v).second) queue.push_back(v);
@@ -321,7 +321,7 @@ class Partition {
     // walk stopped (in the region, and nearer the points to come than the last insertion),
     // and where the second got to as its hint.
     const bool in_region = r.holds(p);
-    if (!in_region || !mesh_.walk<kLattice>(w.last, p, own_triangles(r))) [[unlikely]] {
+    if (!in_region || !tds_.walk<kLattice>(w.last, p, own_triangles(r))) [[unlikely]] {
       TriangleId t = w.last;
       if (!in_region || !walk_on(r, t, p)) {
         deferred.push_back({p, t});
@@ -331,18 +331,18 @@ class Partition {
       w.last = t;
     }
     const TriangleId t = w.last;
-    if (const VertexId hit = mesh_.coincident(t, p); hit != kNoVertex) {
+    if (const VertexId hit = tds_.coincident(t, p); hit != kNoVertex) {
       w.duplicates.push_back({p, hit});
       ++w.done;
       return true;
     }
-    if (!mesh_.find_cavity<kLattice>(t, p, w.scratch, [&](Link l) { return enters(r, l); })) {
+    if (!tds_.find_cavity<kLattice>(t, p, w.scratch, [&](Link l) { return enters(r, l); })) {
       deferred.push_back({p, t});
       ++w.stats.retries;
       return true;
     }
     if (pool.size() < 2) throw std::logic_error("ridt: a partition thread ran out of slots");
-    w.last = mesh_.fill_cavity(p, w.scratch, pool);
+    w.last = tds_.fill_cavity(p, w.scratch, pool);
     ++w.stats.points;
     ++w.done;
     return true;
@@ -352,7 +352,7 @@ class Partition {
   // it got there (out of line: the common path has no use for it).
   template <class R>
   [[gnu::noinline]] bool walk_on(const R& r, TriangleId& t, VertexId p) const {
-    return mesh_.walk<kLattice>(t, p, own_edges(r)) && owns(r, t);
+    return tds_.walk<kLattice>(t, p, own_edges(r)) && owns(r, t);
   }
 
   // body(i) on each thread i, the calling one taking 0; rethrows the first failure once all
@@ -395,7 +395,7 @@ class Partition {
   // The points of `list` by the calling thread, in order, with no regions.
   void insert_alone(const std::vector<PutOff>& list);
 
-  Mesh& mesh_;
+  DelaunayTds& tds_;
   const std::uint32_t* key_;  // n: the bounding vertices have none
   VertexId n_;
   unsigned threads_;

@@ -13,7 +13,7 @@ std::size_t Partition<kLattice>::prepare(Task& t, std::size_t taken) {
   t.split = t.todo.size();  // none found: every point is put off
   for (std::size_t k = 0; k < std::min(t.todo.size(), kStartTries); ++k) {
     const std::size_t c = (t.todo.size() / 2 + k) % t.todo.size();
-    last_ = mesh_.walk(t.todo[c].near != kNoTriangle ? t.todo[c].near : last_, t.todo[c].p);
+    last_ = tds_.walk(t.todo[c].near != kNoTriangle ? t.todo[c].near : last_, t.todo[c].p);
     if (deep_in(t.range, last_, workers_[0].seen)) {
       t.start = last_;
       t.split = c;
@@ -29,7 +29,7 @@ std::size_t Partition<kLattice>::prepare(Task& t, std::size_t taken) {
   const std::size_t listed = std::min(need, free_.size() - taken);
   t.pool.list = free_.data() + taken;
   t.pool.listed = listed;
-  t.pool.next = mesh_.grow(static_cast<TriangleId>(need - listed));
+  t.pool.next = tds_.grow(static_cast<TriangleId>(need - listed));
   t.pool.end = t.pool.next + static_cast<TriangleId>(need - listed);
   return listed;
 }
@@ -58,7 +58,7 @@ const std::vector<std::uint16_t>& cells_along_the_curve() {
 
 template <bool kLattice>
 auto Partition<kLattice>::second_pass(std::vector<PutOff> left) -> std::vector<PutOff> {
-  const Vertices& v = mesh_.vertices();
+  const Vertices& v = tds_.vertices();
   const CellRegion grid = CellRegion::grid(v.data(), n_, left);
   std::vector<std::uint32_t> count(CellRegion::kSide * CellRegion::kSide);
   for (const PutOff& x : left) ++count[static_cast<std::size_t>(grid.cell(v[x.p]))];
@@ -103,7 +103,7 @@ auto Partition<kLattice>::second_pass(std::vector<PutOff> left) -> std::vector<P
   for (Task& t : tasks_) {
     unused.insert(unused.end(), t.pool.list, t.pool.list + t.pool.listed);
     for (; t.pool.next < t.pool.end; ++t.pool.next) {
-      mesh_.free_slot(t.pool.next);
+      tds_.free_slot(t.pool.next);
       unused.push_back(t.pool.next);
     }
     left.insert(left.end(), t.deferred.begin(), t.deferred.end());
@@ -133,7 +133,7 @@ bool Partition<kLattice>::insert_task(unsigned i, Task& t) {
 template <bool kLattice>
 void Partition<kLattice>::release(TriangleId first, TriangleId end) {
   for (TriangleId t = first; t < end; ++t) {
-    mesh_.free_slot(t);
+    tds_.free_slot(t);
     free_.push_back(t);
   }
 }
@@ -147,12 +147,12 @@ void Partition<kLattice>::insert_alone(const std::vector<PutOff>& list) {
   pool.listed = std::min(free_.size(), 2 * list.size());
   const std::size_t listed = pool.listed;
   const std::size_t grown = 2 * list.size() - pool.listed;
-  pool.next = mesh_.grow(static_cast<TriangleId>(grown));
+  pool.next = tds_.grow(static_cast<TriangleId>(grown));
   pool.end = pool.next + static_cast<TriangleId>(grown);
   for (const auto [p, near] : list) {
     progress_(done_++);
     last_ = nearer(last_, {p, live(near) ? near : kNoTriangle});
-    if (const VertexId hit = mesh_.insert<kLattice>(p, last_, w.scratch, pool); hit != kNoVertex)
+    if (const VertexId hit = tds_.insert<kLattice>(p, last_, w.scratch, pool); hit != kNoVertex)
       w.duplicates.push_back({p, hit});
     else
       ++w.stats.points;
@@ -162,7 +162,7 @@ void Partition<kLattice>::insert_alone(const std::vector<PutOff>& list) {
   free_.erase(free_.begin() + static_cast<std::ptrdiff_t>(pool.listed),
               free_.begin() + static_cast<std::ptrdiff_t>(listed));
   pool.listed = 0;
-  mesh_.give_back(pool);
+  tds_.give_back(pool);
   stats_.alone += list.size();
   stats_.time_alone_s += seconds(Clock::now() - t0);
 }

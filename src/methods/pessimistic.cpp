@@ -45,7 +45,7 @@ void insert_point(Kernel& kernel, SpinLock& lock, VertexId p, TriangleId node, T
     if constexpr (kTimed) t1 = ticks();
     const TriangleId leaf = kernel.descend(start, p);
     const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, out.scratch);
-    if (hit != kNone) out.duplicates.push_back({p, hit});
+    if (hit != kNoVertex) out.duplicates.push_back({p, hit});
     if constexpr (kTimed) out.critical_ticks += ticks() - t1;
   }
   if constexpr (kTimed) out.wait_ticks += t1 - t0;

@@ -6,11 +6,11 @@
 
 namespace ridt::detail {
 
-void insert_walking(Mesh& mesh, const Insertion& run);  // walk/mesh.cpp
+void insert_walking(DelaunayTds& tds, const Insertion& run);  // methods/serial_walk.cpp
 void insert_pessimistic(Kernel& kernel, const Insertion& run);  // methods/pessimistic.cpp
 void insert_optimistic(Kernel& kernel, const Insertion& run);  // methods/optimistic.cpp
 void insert_batch(Kernel& kernel, const Insertion& run);  // methods/batch.cpp
-void insert_partition(Mesh& mesh, const Insertion& run);  // methods/partition.cpp
+void insert_partition(DelaunayTds& tds, const Insertion& run);  // methods/partition.cpp
 
 namespace {
 

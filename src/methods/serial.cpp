@@ -53,7 +53,7 @@ void insert_serial(Kernel& kernel, const Insertion& run) {
       progress(p);
       const TriangleId leaf = kernel.descend(Kernel::kRoot, p);
       const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
-      if (hit != kNone) duplicates.push_back({p, hit});
+      if (hit != kNoVertex) duplicates.push_back({p, hit});
     }
   } else {
     // Rounds (dag/rounds.hpp): each round's points first descend the DAG along a Hilbert curve
@@ -71,7 +71,7 @@ void insert_serial(Kernel& kernel, const Insertion& run) {
         progress(p);
         const TriangleId leaf = kernel.descend(ahead.take(i).node, p);
         const VertexId hit = kernel.insert_at(kernel.classify(leaf, p), p, scratch);
-        if (hit != kNone) duplicates.push_back({p, hit});
+        if (hit != kNoVertex) duplicates.push_back({p, hit});
       }
     }
   }

@@ -19,7 +19,7 @@
 #include "ridt/locate.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
-#include "walk/mesh.hpp"
+#include "tds/ids.hpp"
 
 namespace ridt::detail {
 

@@ -14,7 +14,7 @@
 #include "queries/arrays.hpp"
 #include "queries/near.hpp"
 #include "runtime/parallel.hpp"
-#include "walk/mesh.hpp"
+#include "tds/tds.hpp"
 
 namespace ridt {
 namespace {
@@ -41,36 +41,41 @@ struct Result {
     return true;
   }
 
-  // Walks from triangle t towards q, crossing an edge that has q strictly on its far side,
-  // never the one it came in by, nor a hull edge while another such edge leads on. In a
-  // Delaunay triangulation such a walk cannot cycle, whatever the point of view (Edelsbrunner
-  // 1990), so it ends at a triangle that holds q, or at one whose only edges with q beyond them
-  // are on the hull: q is then outside the hull, whose edges' lines support it, and beside
-  // that triangle, which answers when q is near it (see near). t is left at the last triangle
-  // reached, and `steps` grows by the triangles it crossed. The step limit only guards against
-  // arrays that are not a Delaunay triangulation; a scan of every triangle answers then.
+  // What detail::visibility_walk reads: the corners, and the link across edge i (the
+  // neighbour's edge that looks back).
+  const VertexId* corners(std::size_t t) const { return triangles + 3 * t; }
+  detail::Link link(std::size_t t, int i) const {
+    const std::int32_t u = neighbors[3 * t + i];
+    if (u < 0) return detail::kNoLink;
+    const std::size_t ub = 3 * static_cast<std::size_t>(u);
+    const int j = neighbors[ub] == static_cast<std::int32_t>(t) ? 0
+        : neighbors[ub + 1] == static_cast<std::int32_t>(t)     ? 1
+                                                                : 2;
+    return static_cast<detail::Link>(ub + static_cast<std::size_t>(j));
+  }
+
+  // The one visibility walk (tds/tds.hpp) from triangle t towards q, never across a hull edge
+  // while another edge leads on. In a Delaunay triangulation it cannot cycle, whatever the
+  // point of view (Edelsbrunner 1990), so it ends at a triangle that holds q, or at one whose
+  // only edges with q beyond them are on the hull: q is then outside the hull, whose edges'
+  // lines support it, and beside that triangle, which answers when q is near it (see near). t
+  // is left at the last triangle reached, and `steps` grows by the triangles it crossed. The
+  // step limit only guards against arrays that are not a Delaunay triangulation; a scan of
+  // every triangle answers then.
   std::int32_t walk(std::size_t& t, const Point& q, std::size_t& steps) const {
-    int from = 3;
-    for (std::size_t s = 0; s <= size; ++s, ++steps) {
-      int out = 3;
-      bool beyond_hull = false;
-      for (int i = 0; i < 3; ++i) {
-        if (i == from || detail::orient2d(corner(t, next3(i)), corner(t, prev3(i)), q) >= 0) continue;
-        if (neighbors[3 * t + i] >= 0) {
-          out = i;
-          break;
-        }
-        beyond_hull = true;
-      }
-      if (out == 3) {
-        const bool answers = !beyond_hull || near(corner(t, 0), corner(t, 1), corner(t, 2), q);
-        return answers ? static_cast<std::int32_t>(t) : -1;
-      }
-      const std::int32_t u = neighbors[3 * t + out];
-      from = 3;
-      for (int j = 0; j < 3; ++j)
-        if (neighbors[3 * std::size_t(u) + j] == static_cast<std::int32_t>(t)) from = j;
-      t = static_cast<std::size_t>(u);
+    auto t32 = static_cast<TriangleId>(t);
+    std::size_t taken = 0;
+    const detail::Walked end = detail::visibility_walk(
+        *this, t32, [&](VertexId a, VertexId b) { return detail::orient2d(points[a], points[b], q); },
+        [&](detail::Link l) {
+          if (l == detail::kNoLink) return detail::Step::Blocked;
+          return ++taken > size ? detail::Step::Stop : detail::Step::Cross;
+        });
+    t = t32;
+    steps += taken;
+    if (end.edge < 0) {
+      const bool answers = end.reached || near(corner(t, 0), corner(t, 1), corner(t, 2), q);
+      return answers ? static_cast<std::int32_t>(t) : -1;
     }
     for (std::size_t s = 0; s < size; ++s)
       if (holds(s, q)) return static_cast<std::int32_t>(s);

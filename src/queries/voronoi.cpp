@@ -14,7 +14,7 @@
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
 #include "runtime/parallel.hpp"
-#include "walk/mesh.hpp"
+#include "tds/ids.hpp"
 
 namespace ridt {
 namespace {

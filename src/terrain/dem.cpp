@@ -12,11 +12,13 @@
 #include "queries/sibson.hpp"
 #include "ridt/terrain.hpp"
 #include "runtime/parallel.hpp"
+#include "tds/ids.hpp"
 
 namespace ridt {
 namespace {
 
 using detail::Field;
+using detail::kNoVertex;
 using detail::next3;
 using detail::parallel_for;
 using detail::prev3;
@@ -102,13 +104,12 @@ Dem::Dem(std::span<const Point> points, const Triangulation& t, std::span<const 
 // input's, often a random one: every later pass then reads corners near in memory instead of
 // missing the cache at each one, which pays for this one pass that does.
 void Dem::renumber(std::span<const Point> points, std::span<const VertexId> triangles, std::span<const double> z) {
-  constexpr VertexId kNew = ~VertexId{0};
-  std::vector<VertexId> id(points.size(), kNew), old;
+  std::vector<VertexId> id(points.size(), kNoVertex), old;
   old.reserve(points.size());
   triangles_.resize(triangles.size());
   for (std::size_t k = 0; k < triangles.size(); ++k) {
     VertexId& v = id[triangles[k]];
-    if (v == kNew) v = static_cast<VertexId>(old.size()), old.push_back(triangles[k]);
+    if (v == kNoVertex) v = static_cast<VertexId>(old.size()), old.push_back(triangles[k]);
     triangles_[k] = v;
   }
   points_.resize(old.size());

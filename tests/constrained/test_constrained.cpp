@@ -96,7 +96,7 @@ TEST(Constrained, MemoryIsPlannedBeforeTheRun) {
     EXPECT_GT(e.needed, plain);
     EXPECT_NE(std::string(e.what()).find("constrained triangulation of 20000 points"), std::string::npos) << e.what();
   }
-  o.memory_limit = plain + 24 * n + 8 * segments;
+  o.memory_limit = plain + 44 * n + 8 * segments;
   EXPECT_EQ(triangulate_constrained(g.points, g.segments, o).size(),
             triangulate_constrained(g.points, g.segments).size());
 }

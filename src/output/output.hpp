@@ -1,5 +1,6 @@
-// The finish: what the insertion's mesh becomes, the output's arrays (finish.cpp for the DAG,
-// walk/mesh.cpp for the walking mesh), and the steps both share.
+// What every kernel's finish shares: each kernel turns what it inserted into the output's
+// arrays (dag/finish.cpp, tds/delaunay_finish.cpp) with these steps, and the output's options
+// are applied the same way to every result.
 #pragma once
 
 #include <cstdint>
@@ -13,18 +14,11 @@
 
 namespace ridt::detail {
 
-class Kernel;
-class Mesh;
-
-/// A point dropped during insertion and the mesh vertex it coincides with.
+/// A point dropped during insertion and the vertex it coincides with.
 struct DuplicateHit {
   VertexId dropped;
   VertexId vertex;
 };
-
-/// The finish of the walking mesh: its arrays become the output's, in place (walk/mesh.cpp).
-Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input_index,
-                             const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
 
 /// The input index that stands for a mesh vertex: its own, or for a group of equal points the
 /// smallest among them.
@@ -50,12 +44,6 @@ std::vector<VertexId> trace_hull(std::vector<std::pair<VertexId, VertexId>>& edg
 /// result. `input_points` fills the points in input order when they are needed.
 void set_warnings(Triangulation& out, std::uint32_t n, std::uint32_t count, std::size_t hull_edges,
                   const Options& options, const std::function<void(std::vector<Point>&)>& input_points);
-
-/// Removes the bounding vertices, numbers the remaining triangles compactly, finds the
-/// neighbours and the hull, and resolves duplicates (Fig. 4, line 24). Mesh vertex v is input
-/// point input_index[v]. Uses up to `threads` threads.
-Triangulation finish(Kernel& kernel, const std::vector<std::uint32_t>& input_index,
-                     const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads);
 
 /// Options::on_sorted's type.
 using Sorted = decltype(Options::on_sorted);

@@ -1,132 +1,20 @@
-// The walking kernel's mesh, its serial driver and its finish (walk/mesh.hpp).
+// The walking kernel's finish (tds/delaunay.hpp): its arrays become the output's, in place.
+// The triangles of the bounding vertices and the free slots are dropped, the kept slots above
+// the output's count move into the gaps below it, and links become neighbour ids.
 #include <algorithm>
-#include <atomic>
 #include <bit>
-#include <chrono>
-#include <memory>
-#include <new>
 #include <numeric>
-#include <stdexcept>
-#include <thread>
 
-#include "finish/finish.hpp"
-#include "methods/method.hpp"
-#include "runtime/memory.hpp"
+#include "output/output.hpp"
 #include "runtime/parallel.hpp"
-#include "walk/mesh.hpp"
+#include "tds/delaunay.hpp"
 
 namespace ridt::detail {
 
-MeshArrays::MeshArrays(std::uint64_t n, unsigned threads) {
-  if (n > kMaxWalkingPoints)
-    throw InputError("too many points for the walking kernel (at most " + std::to_string(kMaxWalkingPoints) + ")");
-  // 2k + 1 triangles for k points, at every step.
-  const std::size_t size = 3 * (2 * n + 1);
-  v.reserve(size), link.reserve(size);
-  make_present(v.data(), size * sizeof(VertexId), threads);
-  make_present(link.data(), size * sizeof(Link), threads);
-  // A vector's new elements are zeroed, on one thread: each array on its own, side by side.
-  on_threads(threads >= 2 ? 2 : 1, [&](unsigned w) {
-    if (w == 0) v.resize(size);
-    if (w == 1 || threads < 2) link.resize(size);
-  });
-}
-
-std::span<std::uint64_t> MeshArrays::words() {
-  // Words begin their lifetime where the vertex numbers were (trivial types: nothing is
-  // written); the mesh begins theirs again (Mesh::Mesh).
-  const std::size_t count = v.size() * sizeof(VertexId) / sizeof(std::uint64_t);
-  std::uninitialized_default_construct_n(reinterpret_cast<std::uint64_t*>(v.data()), count);
-  return {std::launder(reinterpret_cast<std::uint64_t*>(v.data())), count};
-}
-
-Mesh::Mesh(const Vertices& vertices, MeshArrays arrays)
-    : vertices_(vertices), vertex_store_(std::move(arrays.v)), link_store_(std::move(arrays.link)) {
-  if (vertex_store_.size() != 3 * (2 * std::size_t{vertices.n()} + 1) || link_store_.size() != vertex_store_.size())
-    throw std::logic_error("ridt: mesh arrays made for another number of points");
-  std::uninitialized_default_construct_n(vertex_store_.data(), vertex_store_.size());  // after words()
-  v_ = std::launder(vertex_store_.data());
-  link_ = link_store_.data();
-  top_ = 1;
-  v_[0] = vertices.n(), v_[1] = vertices.n() + 1, v_[2] = vertices.n() + 2;
-  link_[0] = link_[1] = link_[2] = kNoLink;
-}
-
-void Mesh::check_room(TriangleId end) const {
-  if (3 * std::size_t{end} > vertex_store_.size()) throw std::logic_error("ridt: the walking mesh ran out of slots");
-}
-
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-
-// insert_walking with the predicates' lattice forms (kLattice) or the general ones.
-template <bool kLattice>
-void insert_all(Mesh& mesh, bool profile, std::vector<DuplicateHit>& duplicates, Stats& stats, Progress& progress) {
-  const std::uint32_t n = mesh.vertices().n();
-  CavityScratch s;
-  SlotPool pool;
-  pool.next = mesh.grow(2 * n);
-  pool.end = pool.next + 2 * n;
-  TriangleId last = 0;
-  if (!profile) {
-    for (VertexId p = 0; p < n; ++p) {
-      progress(p);
-      if (const VertexId hit = mesh.insert<kLattice>(p, last, s, pool); hit != kNoVertex)
-        duplicates.push_back({p, hit});
-    }
-  } else {
-    // Fig. 8's phases: location is the walk, legalization finding the cavity (the triangles
-    // Lawson's flips would replace), subdivision writing the new triangles over it.
-    for (VertexId p = 0; p < n; ++p) {
-      progress(p);
-      const auto t0 = Clock::now();
-      TriangleId t = last;
-      mesh.walk<kLattice>(t, p, Mesh::kAnywhere);
-      const VertexId hit = mesh.coincident(t, p);
-      const auto t1 = Clock::now();
-      stats.time_locate_s += seconds(t1 - t0);
-      if (hit != kNoVertex) {
-        duplicates.push_back({p, hit});
-        last = t;
-        continue;
-      }
-      mesh.find_cavity<kLattice>(t, p, s, Mesh::kAnywhere);
-      const auto t2 = Clock::now();
-      stats.time_legalize_s += seconds(t2 - t1);
-      last = mesh.fill_cavity(p, s, pool);
-      stats.time_split_s += seconds(Clock::now() - t2);
-    }
-  }
-  mesh.give_back(pool);
-  stats.flips += s.replaced;
-}
-
-}  // namespace
-
-void insert_walking(Mesh& mesh, const Insertion& run) {
-  const bool profile = run.experiment.profile;
-  if (mesh.vertices().lattice())
-    insert_all<true>(mesh, profile, run.duplicates, run.stats, run.progress);
-  else
-    insert_all<false>(mesh, profile, run.duplicates, run.stats, run.progress);
-}
-
-void Mesh::give_back(SlotPool& pool) {
-  for (; pool.listed > 0; --pool.listed) free_slot(pool.list[pool.listed - 1]);
-  if (pool.end == top_) {
-    top_ = pool.next;
-  } else {
-    for (; pool.next < pool.end; ++pool.next) free_slot(pool.next);
-  }
-  pool.next = pool.end;
-}
-
-namespace {
-
-// The slots of the walking mesh that hold output triangles (no bounding vertex), a bit each,
-// and where the output puts them: the output is the mesh's own arrays, so a kept slot below
+// The slots of the walking kernel that hold output triangles (no bounding vertex), a bit each,
+// and where the output puts them: the output is the kernel's own arrays, so a kept slot below
 // count() keeps its place, and the i-th kept slot at or above count() moves into the i-th gap
 // below it (a slot of the bounding vertices, or a free one).
 class KeptSlots {
@@ -190,14 +78,14 @@ class KeptSlots {
 // or above it that are not movers: as many as there are bounding triangles and free slots): a
 // kept triangle's edge that a dropped one shares becomes a hull edge (kNoLink), so the
 // conversion needs no test of a neighbour's slot. Free slots link nowhere.
-void unlink_dropped(Mesh& mesh, const KeptSlots& kept) {
-  Link* link = mesh.link_array().data();
+void unlink_dropped(DelaunayTds& tds, const KeptSlots& kept) {
+  Link* link = tds.link_array().data();
   auto unlink = [link](TriangleId u) {
     for (int j = 0; j < 3; ++j)
       if (const Link l = link[3 * std::size_t{u} + j]; l != kNoLink) link[l] = kNoLink;
   };
   for (const TriangleId u : kept.gaps()) unlink(u);
-  for (TriangleId u = kept.count(); u < mesh.slots(); ++u)
+  for (TriangleId u = kept.count(); u < tds.slots(); ++u)
     if (!kept.kept(u)) unlink(u);
 }
 
@@ -211,13 +99,14 @@ void unlink_dropped(Mesh& mesh, const KeptSlots& kept) {
 // (31 before).
 class Converter {
  public:
-  Converter(Mesh& mesh, const KeptSlots& kept, const Standing& standing)
-      : v_(mesh.vertex_array().data()),
-        link_(mesh.link_array().data()),
+  Converter(DelaunayTds& tds, const KeptSlots& kept, const Standing& standing, bool links)
+      : v_(tds.vertex_array().data()),
+        link_(tds.link_array().data()),
         bits_(kept.bits()),
         count_(kept.count()),
         index_(standing.input_index.data()),
         plain_(standing.keep.empty()),
+        links_(links),
         kept_(&kept),
         standing_(&standing) {}
 
@@ -228,7 +117,8 @@ class Converter {
       const VertexId u = v_[3 * std::size_t{t} + i];
       w[i] = plain_ ? index_[u] : (*standing_)(u);
       const Link l = link_[3 * std::size_t{t} + i];
-      nb[i] = l != kNoLink ? new_id(triangle_of(l)) : kNoNeighbor;  // a dropped one is unlinked
+      // A dropped one is unlinked; kept as links, the neighbour's edge goes with its new id.
+      nb[i] = l == kNoLink ? kNoNeighbor : links_ ? 3 * new_id(triangle_of(l)) + edge_of(l) : new_id(triangle_of(l));
     }
     for (int i = 0; i < 3; ++i) {
       v_[3 * std::size_t{to} + i] = w[i], link_[3 * std::size_t{to} + i] = static_cast<Link>(nb[i]);
@@ -254,15 +144,16 @@ class Converter {
   TriangleId count_;
   const std::uint32_t* index_;
   bool plain_;
+  bool links_;
   const KeptSlots* kept_;
   const Standing* standing_;
 };
 
 // Converts every kept slot, on the kept slots' workers. Returns the hull's edges.
-std::vector<std::pair<VertexId, VertexId>> convert_in_place(Mesh& mesh, const KeptSlots& kept,
-                                                            const Standing& standing) {
-  const Converter proto(mesh, kept, standing);
-  const std::uint32_t n = mesh.vertices().n();
+std::vector<std::pair<VertexId, VertexId>> convert_in_place(DelaunayTds& tds, const KeptSlots& kept,
+                                                            const Standing& standing, bool links) {
+  const Converter proto(tds, kept, standing, links);
+  const std::uint32_t n = tds.vertices().n();
   std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(kept.workers());
   on_threads(kept.workers(), [&hull_parts, &kept, proto, n](unsigned w) {
     Converter convert = proto;
@@ -286,21 +177,22 @@ std::vector<std::pair<VertexId, VertexId>> convert_in_place(Mesh& mesh, const Ke
 
 }  // namespace
 
-Triangulation finish_walking(Mesh& mesh, const std::vector<std::uint32_t>& input_index,
-                             const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads) {
+Triangulation finish_walking(DelaunayTds& tds, const std::vector<std::uint32_t>& input_index,
+                             const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads,
+                             bool links) {
   Triangulation out;
-  const std::uint32_t n = mesh.vertices().n();
+  const std::uint32_t n = tds.vertices().n();
   const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
-  const KeptSlots kept(mesh.vertex_array().data(), n, mesh.slots(), threads);
-  unlink_dropped(mesh, kept);
-  std::vector<std::pair<VertexId, VertexId>> hull_edges = convert_in_place(mesh, kept, standing);
-  mesh.vertex_array().resize(3 * std::size_t{kept.count()});
-  mesh.link_array().resize(3 * std::size_t{kept.count()});
-  out.triangles = std::move(mesh.vertex_array());
-  out.neighbors = std::move(mesh.link_array());
+  const KeptSlots kept(tds.vertex_array().data(), n, tds.slots(), threads);
+  unlink_dropped(tds, kept);
+  std::vector<std::pair<VertexId, VertexId>> hull_edges = convert_in_place(tds, kept, standing, links);
+  tds.vertex_array().resize(3 * std::size_t{kept.count()});
+  tds.link_array().resize(3 * std::size_t{kept.count()});
+  out.triangles = std::move(tds.vertex_array());
+  out.neighbors = std::move(tds.link_array());
   out.hull = trace_hull(hull_edges);
   set_warnings(out, n, kept.count(), hull_edges.size(), options, [&](std::vector<Point>& pts) {
-    for (VertexId u = 0; u < n; ++u) pts[input_index[u]] = mesh.vertices()[u];
+    for (VertexId u = 0; u < n; ++u) pts[input_index[u]] = tds.vertices()[u];
   });
   return out;
 }
