@@ -29,7 +29,7 @@ namespace py = pybind11;
 
 // terrain.cpp, memory.cpp, interpolate.cpp, constrained.cpp
 void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m),
-    bind_constrained(py::module_&m);
+    bind_constrained(py::module_&m), bind_triangle(py::module_&m);
 
 namespace {
 
@@ -354,6 +354,7 @@ PYBIND11_MODULE(_core, m) {
   bind_triangulation(m);
   bind_incremental(m);
   bind_constrained(m);
+  bind_triangle(m);
   bind_terrain(m);
   bind_queries(m);
   bind_nearest(m);
