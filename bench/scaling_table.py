@@ -243,7 +243,7 @@ def write_page(a, runs, summary, more_runs, more):
                         f"| {s['bytes_per_point']:.0f} |\n")
             f.write(f"\n### Phases at {n:,} points\n\n"
                     "Median seconds of each phase (`--stats json`): the file read, the points' extent, "
-                    "the walking mesh's memory made present, the insertion order (BRIO), the points "
+                    "the walking kernel's memory made present, the insertion order (BRIO), the points "
                     "copied in that order, the insertion, the finish (the mesh into the result's "
                     "arrays); *rest*: the whole process less the read and the call (the process's start "
                     "and exit, memory given back).\n\n")

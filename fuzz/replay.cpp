@@ -39,9 +39,38 @@
 #include <utility>
 #include <vector>
 
-#include "order/random.hpp"
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+
+namespace {
+
+// SplitMix64 (Steele, Lea and Flood, 2014), as the library's own seeded streams compute it, so
+// that a seed replays the same mutations it always has; this program takes nothing from the
+// library's sources.
+constexpr std::uint64_t mix64(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+// Stream `stream` of a seed: value k is mix64 of the seed's key plus k steps.
+class Rng {
+ public:
+  Rng(std::uint64_t seed, std::uint64_t stream) : state_(mix64(seed ^ mix64(stream + 0x632be59bd9b4e019ULL))) {}
+  std::uint64_t next() { return mix64(state_ += 0x9e3779b97f4a7c15ULL); }
+  // Uniform in [0, bound), without modulo bias (Lemire, 2019).
+  std::uint64_t below(std::uint64_t bound) {
+    unsigned __int128 m = static_cast<unsigned __int128>(next()) * bound;
+    if (auto low = static_cast<std::uint64_t>(m); low < bound)
+      for (const std::uint64_t threshold = (0 - bound) % bound; low < threshold; low = static_cast<std::uint64_t>(m))
+        m = static_cast<unsigned __int128>(next()) * bound;
+    return static_cast<std::uint64_t>(m >> 64);
+  }
+
+ private:
+  std::uint64_t state_;
+};
+
+}  // namespace
 
 // Defined by the sanitizer runtimes when linked in: a callback run before a sanitizer ends the
 // process (ASan calls it; GCC's UBSan does not, hence abort_on_error below).
@@ -234,7 +263,7 @@ class Mutator {
   /// Mutation j: a function of (seed, j) alone, so that --only reproduces it without
   /// generating the ones before it.
   Bytes make(std::uint64_t j) const {
-    ridt::detail::Rng rng(seed_, j);
+    Rng rng(seed_, j);
     Bytes b = corpus_[rng.below(corpus_.size())];
     const std::uint64_t steps = 1 + rng.below(4);
     for (std::uint64_t s = 0; s < steps; ++s) mutate(b, rng);
@@ -243,9 +272,9 @@ class Mutator {
   }
 
  private:
-  static std::size_t pick(ridt::detail::Rng& rng, std::size_t n) { return static_cast<std::size_t>(rng.below(n)); }
+  static std::size_t pick(Rng& rng, std::size_t n) { return static_cast<std::size_t>(rng.below(n)); }
 
-  void mutate(Bytes& b, ridt::detail::Rng& rng) const {
+  void mutate(Bytes& b, Rng& rng) const {
     switch (rng.below(9)) {
       case 0:  // flip a bit
         if (!b.empty()) b[pick(rng, b.size())] ^= static_cast<char>(1u << rng.below(8));
@@ -293,7 +322,7 @@ class Mutator {
 
   /// Replaces the run of digits (with its sign) around a random position, or inserts a number
   /// there if there is none.
-  static void replace_number(Bytes& b, ridt::detail::Rng& rng) {
+  static void replace_number(Bytes& b, Rng& rng) {
     const std::string_view number = kNumbers[pick(rng, std::size(kNumbers))];
     const auto digit = [&](std::size_t i) { return b[i] >= '0' && b[i] <= '9'; };
     std::size_t at = pick(rng, b.size() + 1), end = at;
@@ -393,7 +422,7 @@ int main(int argc, char** argv) {
   for (std::uint64_t k = 0; k < total; ++k) {
     const Bytes in = input(k);
     for (const char c : in) digest = (digest ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
-    digest = ridt::detail::mix64(digest ^ in.size());  // FNV-1a bytes, then the length
+    digest = mix64(digest ^ in.size());  // FNV-1a bytes, then the length
     run(in, k);
   }
   std::printf(

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks the layout the code keeps to: no source file over 500 lines and no function over 60
 (the tests aside), nothing outside src/ and the tests including from src/ (the tools, the
-Python module and the benchmarks include only include/ridt/ and their own folders), and every
+Python module, the benchmarks and the fuzz targets include only include/ridt/ and their own
+folders), and every
 C++ file as clang-format (14, .clang-format) lays it out. Prints each
 breach and exits 1; with --list N, prints the N longest functions too.
 
@@ -108,7 +109,7 @@ def python_functions(path: Path):
 def src_includes() -> list:
     """`file:line: includes src/...` for each include of a library source outside src/ and the tests."""
     found = []
-    for folder in ("tools", "python/src", "bench"):
+    for folder in ("tools", "python/src", "bench", "fuzz"):
         for p in sorted((ROOT / folder).rglob("*")):
             if p.suffix not in (".cpp", ".hpp") or not p.is_file():
                 continue

@@ -112,7 +112,7 @@ class Kernel {
   }
   /// Prefetches the points that step(t, p) compares p with, once t's record is in cache, so
   /// that the step after it finds them there. Returns false for a leaf (nothing to step).
-  /// Safe while other threads change the mesh: an internal node never changes after its
+  /// Safe while other threads change the triangulation: an internal node never changes after its
   /// child link is published, and that link is read with acquire.
   bool prefetch_step(TriangleId t) const {
     const Triangle& r = tris_[t];
@@ -128,7 +128,7 @@ class Kernel {
   }
   /// Prefetches the second ring around leaf t, once its neighbours are in cache: the
   /// neighbours' far vertices and their other neighbours, which the first flips read. Safe
-  /// while another thread changes the mesh: every word is read atomically, and a stale or
+  /// while another thread changes the triangulation: every word is read atomically, and a stale or
   /// half-made record only sends a prefetch to the wrong line.
   void prefetch_ring(TriangleId t) const {
     const Triangle& r = tris_[t];
@@ -166,7 +166,7 @@ class Kernel {
     }
   }
   /// Prefetches what inserting into leaf t will read: its neighbours and its vertices. Safe
-  /// while other threads change the mesh: t's vertices never change, its links are read
+  /// while other threads change the triangulation: t's vertices never change, its links are read
   /// atomically, and a stale link only prefetches the wrong line.
   void prefetch_around(TriangleId t) const {
     const Triangle& r = tris_[t];

@@ -1,7 +1,7 @@
 // The batch method: the paper's third way (section 3, "3. Batch method"). L locator threads
 // only locate: they descend the DAG and queue (point, node reached). One modifier thread takes
 // the queue in order, finishes each location from its node (the node may have been split
-// since: a stale hint), splits and legalizes. Only the modifier changes the mesh, so nothing
+// since: a stale hint), splits and legalizes. Only the modifier changes the triangulation, so nothing
 // is locked; the locators read only what was published (dag/records.hpp), as the pessimistic workers
 // do outside their lock.
 //
@@ -19,7 +19,7 @@
 
 #include "dag/rounds.hpp"
 #include "methods/method.hpp"
-#include "methods/threads.hpp"
+#include "methods/round_driver.hpp"
 #include "order/order.hpp"
 
 namespace ridt::detail {

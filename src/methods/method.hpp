@@ -23,7 +23,7 @@ struct alignas(64) WorkerState {
   KernelScratch scratch;
   std::vector<DuplicateHit> duplicates;  ///< the points it found equal to a vertex
   ThreadStats stats;  ///< its counters, and times it measured in seconds
-  /// Time in its critical sections and waiting, in ticks (methods/threads.hpp), when timed.
+  /// Time in its critical sections and waiting, in ticks (runtime/sync.hpp), when timed.
   std::uint64_t critical_ticks = 0, wait_ticks = 0;
 };
 

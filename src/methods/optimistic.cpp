@@ -22,7 +22,7 @@
 // all workers together, then inserted in chunks taken from a shared counter.
 #include "dag/lookahead.hpp"
 #include "methods/method.hpp"
-#include "methods/threads.hpp"
+#include "methods/round_driver.hpp"
 
 namespace ridt::detail {
 namespace {

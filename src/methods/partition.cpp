@@ -37,7 +37,7 @@ void Partition<kLattice>::insert_round(VertexId b, VertexId e) {
   std::vector<std::uint32_t> from(threads_);
   from[0] = 0;
   for (unsigned i = 1; i < threads_; ++i) from[i] = cut[i] < e ? key_[cut[i]] : 0xffffffffu;
-  // Before the threads start, with the mesh at rest: each thread's start, and slots for all
+  // Before the threads start, with the triangulation at rest: each thread's start, and slots for all
   // its points (two a point inserted), from a range for the whole round.
   const TriangleId base = tds_.grow(2 * m);
   const auto anywhere = Tds::kAnywhere;
@@ -141,7 +141,7 @@ void Partition<kLattice>::answer(Worker& w, Stretch& s, bool up, VertexId next) 
       a = top, b = s.b;
   }
   bool ok = a < b;
-  Region keep = s.range, give = s.range;
+  KeyRange keep = s.range, give = s.range;
   if (ok) {
     const bool bottom = a == s.a;
     const std::uint32_t at = key_[bottom ? b : a];  // the cut's key: the rest's first, or the gift's

@@ -27,7 +27,7 @@
 // triangles join clusters of several regions: a walk kept to the region's own triangles
 // would stop there, and put off most of the points.
 //
-// So the threads share the mesh with plain loads and stores, and the passes are ordered by
+// So the threads share the triangulation with plain loads and stores, and the passes are ordered by
 // the joins between them.
 //
 // A thread that ends its stretch early asks the one with the most points left for some (a
@@ -57,8 +57,8 @@
 #include <utility>
 
 #include "methods/method.hpp"
-#include "methods/region.hpp"
-#include "methods/threads.hpp"
+#include "methods/ranges.hpp"
+#include "methods/round_driver.hpp"
 #include "order/order.hpp"
 #include "runtime/parallel.hpp"
 #include "tds/delaunay.hpp"
@@ -103,7 +103,7 @@ class Partition {
   // `from`, whose triangle `start` lies deep in the region, up to b, then from `from` down to a.
   struct Stretch {
     VertexId a = 0, b = 0, from = 0;
-    Region range;
+    KeyRange range;
     TriangleId start = kNoTriangle;
   };
   // A point put off, and a triangle that may lie near it: the one that holds it, or where its
@@ -112,7 +112,7 @@ class Partition {
   // borders, and in curve order they jump from one stretch of a border to another, but a walk
   // that was blocked may have stopped far from its point too. A slot that once held a
   // triangle always holds one (a cavity's slots are filled again at once), so the hint stays
-  // a triangle of the mesh.
+  // a triangle of the triangulation.
   struct PutOff {
     VertexId p;
     TriangleId near;
@@ -141,7 +141,7 @@ class Partition {
   };
   // A region of the second pass and its points, in curve order.
   struct Task {
-    CellRegion range;
+    CellRange range;
     std::vector<PutOff> todo, deferred;  // hints in todo only where the region owns them
     TriangleId start = 0;  // the triangle it starts from, in its region
     std::size_t split = 0;  // todo[split] is the first point it inserts
@@ -165,13 +165,13 @@ class Partition {
   }
 
   // The region of keys [lo, lo + len) round the circle.
-  Region region(std::uint32_t lo, std::uint64_t len) const { return {key_, n_, lo, len}; }
+  KeyRange region(std::uint32_t lo, std::uint64_t len) const { return {key_, n_, lo, len}; }
 
   // Whether slot t holds a triangle (kNoTriangle: no).
   bool live(TriangleId t) const { return t < tds_.slots() && tds_.vertex(t, 0) != kNoVertex; }
 
   // Whether triangle t has all three vertices in region r (tested together, without a branch
-  // between them: the answers are hard to predict). R: Region (the first pass) or CellRegion
+  // between them: the answers are hard to predict). R: KeyRange (the first pass) or CellRange
   // (the second), here and below.
   template <class R>
   bool owns(const R& r, TriangleId t) const {
@@ -243,7 +243,7 @@ class Partition {
 
   // A triangle deep in region r, found by a breadth-first search from t through the
   // triangles of `within` (which holds r and t), or none among the first few thousand.
-  TriangleId reach(const Region& within, const Region& r, TriangleId t, std::vector<TriangleId>& seen) const {
+  TriangleId reach(const KeyRange& within, const KeyRange& r, TriangleId t, std::vector<TriangleId>& seen) const {
     constexpr std::size_t kMost = std::size_t{1} << 15;
     std::vector<TriangleId> queue{t};
     std::unordered_set<TriangleId> visited{t};
@@ -289,7 +289,7 @@ class Partition {
 
   // The second pass: the points put off lie along the borders between the first pass's
   // regions, which follow the sides of the Hilbert curve's squares. The second pass's regions
-  // are runs of cells of a turned grid (CellRegion), in the grid's own Hilbert order, about
+  // are runs of cells of a turned grid (CellRange), in the grid's own Hilbert order, about
   // twice as many as threads with about equal numbers of these points: their borders cross the
   // first pass's at single places. Returns what is left.
   std::vector<PutOff> second_pass(std::vector<PutOff> left);
@@ -402,7 +402,7 @@ class Partition {
   std::vector<Worker> workers_;
   std::vector<Clock::time_point> pass_end_ = std::vector<Clock::time_point>(threads_);
   std::vector<Task> tasks_;  // the second pass's regions
-  std::vector<std::uint16_t> owner_;  // the second pass's region of each cell (CellRegion)
+  std::vector<std::uint16_t> owner_;  // the second pass's region of each cell (CellRange)
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> inserted_{0};  // counted by the threads as they go
   std::uint64_t before_ = 0;  // done_ when the pass began

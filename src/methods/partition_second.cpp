@@ -36,11 +36,11 @@ std::size_t Partition<kLattice>::prepare(Task& t, std::size_t taken) {
 
 namespace {
 
-// The cells of CellRegion's grid along the grid's Hilbert curve: the curve of order 16 passes
+// The cells of CellRange's grid along the grid's Hilbert curve: the curve of order 16 passes
 // through the squares of 2^(16 - k) units in the order of the curve of order k, so the top 2k
 // bits of a square's corner's key are its place on the grid's curve.
 const std::vector<std::uint16_t>& cells_along_the_curve() {
-  constexpr int kSide = CellRegion::kSide;
+  constexpr int kSide = CellRange::kSide;
   constexpr int kBits = std::bit_width(unsigned{kSide - 1});
   static_assert(std::has_single_bit(unsigned{kSide}) && 2 * kBits <= 16);
   static const std::vector<std::uint16_t> order = [] {
@@ -59,8 +59,8 @@ const std::vector<std::uint16_t>& cells_along_the_curve() {
 template <bool kLattice>
 auto Partition<kLattice>::second_pass(std::vector<PutOff> left) -> std::vector<PutOff> {
   const Vertices& v = tds_.vertices();
-  const CellRegion grid = CellRegion::grid(v.data(), n_, left);
-  std::vector<std::uint32_t> count(CellRegion::kSide * CellRegion::kSide);
+  const CellRange grid = CellRange::grid(v.data(), n_, left);
+  std::vector<std::uint32_t> count(CellRange::kSide * CellRange::kSide);
   for (const PutOff& x : left) ++count[static_cast<std::size_t>(grid.cell(v[x.p]))];
   // Runs of cells along the curve, each with about an equal share of the points.
   const std::size_t regions = 2 * std::size_t{threads_};

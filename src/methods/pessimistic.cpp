@@ -6,8 +6,8 @@
 // from a shared counter (the paper gives each thread a fixed subset; chunks taken on demand
 // keep a thread on a busier core from holding the others up). A worker descends the DAG
 // without the lock; the rest of location, the split and the legalization run inside one
-// critical section, so only one thread ever changes the mesh. Before each round the workers
-// locate its points together (methods/threads.hpp, dag/rounds.hpp), so a descent during insertion starts
+// critical section, so only one thread ever changes the triangulation. Before each round the workers
+// locate its points together (methods/round_driver.hpp, dag/rounds.hpp), so a descent during insertion starts
 // from a leaf of the round's beginning.
 //
 // Why the descent needs no lock: the records a descent reads (vertices, the split point or
@@ -22,7 +22,7 @@
 
 #include "dag/lookahead.hpp"
 #include "methods/method.hpp"
-#include "methods/threads.hpp"
+#include "methods/round_driver.hpp"
 
 namespace ridt::detail {
 namespace {

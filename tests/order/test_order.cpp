@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <set>
 
-#include "methods/region.hpp"
+#include "methods/ranges.hpp"
 #include "order/order.hpp"
 #include "ridt/generate.hpp"
 
@@ -163,11 +163,11 @@ TEST(BrioOrder, LargeRoundsOnAllThreadsGiveTheSameOrder) {
   }
 }
 
-// A partition thread's region tested by id (methods/region.hpp) holds exactly the vertices whose
+// A partition thread's region tested by id (methods/ranges.hpp) holds exactly the vertices whose
 // keys lie in its interval of keys: intervals that start or end at a vertex's key or between
 // keys, that wrap past key 0, hold nothing or the whole circle, on rounds of every size and on
 // points many of which share a key (a grid's coarse cells).
-TEST(Region, HoldsTheVerticesWhoseKeysLieInIt) {
+TEST(KeyRange, HoldsTheVerticesWhoseKeysLieInIt) {
   std::uint64_t z = 77;
   auto next = [&z] { return z = z * 6364136223846793005u + 1442695040888963407u, static_cast<std::uint32_t>(z >> 32); };
   for (const Distribution dist : {Distribution::Uniform, Distribution::Grid})
@@ -198,7 +198,7 @@ TEST(Region, HoldsTheVerticesWhoseKeysLieInIt) {
         cases.emplace_back(lo, std::min(len, kCircle));
       }
       for (const auto& [lo, len] : cases) {
-        const Region r(keys.data(), n, lo, len);
+        const KeyRange r(keys.data(), n, lo, len);
         for (std::uint32_t v = 0; v < n; ++v)
           ASSERT_EQ(r.holds(v), static_cast<std::uint32_t>(keys[v] - lo) < len)
               << "n " << n << " lo " << lo << " len " << len << " v " << v << " key " << keys[v];

@@ -1,4 +1,4 @@
-// A partition thread's region (methods/partition.cpp): in the first pass the vertices whose
+// A partition thread's region (methods/partition.cpp), as ranges: in the first pass the vertices whose
 // Hilbert keys lie in one interval round the circle of 32-bit keys, tested by vertex id alone;
 // in the second, cells of a grid turned against the curve's squares.
 #pragma once
@@ -22,7 +22,7 @@ namespace ridt::detail {
 /// the region wraps past key 0, its first ids and its last: one interval round the circle of
 /// 32-bit ids. holds() reads that round's entry, which stays in cache, and not the vertex's
 /// key, which would be a miss of its own. Made before any thread reads it.
-struct Region {
+struct KeyRange {
   // Read only: a region that changes is made again (the ids follow from these).
   std::uint32_t lo = 0;
   std::uint64_t len = 0;
@@ -31,8 +31,8 @@ struct Region {
   };
   std::array<Ids, 32> ids{};  // by round_of(); past the last round: none
 
-  Region() = default;
-  Region(const std::uint32_t* key, std::uint32_t n, std::uint32_t lo_key, std::uint64_t length)
+  KeyRange() = default;
+  KeyRange(const std::uint32_t* key, std::uint32_t n, std::uint32_t lo_key, std::uint64_t length)
       : lo(lo_key), len(length) {
     constexpr std::uint64_t kCircle = std::uint64_t{1} << 32;
     for (std::uint32_t b = 0; b < n; b = round_end(b)) {
@@ -73,20 +73,20 @@ struct Region {
 /// pass's borders follow the Hilbert curve's squares, along the axes, and the points it put off
 /// lie along them; this grid's lines cross them at single places, where an interval of the
 /// curve cut elsewhere would share whole sides of its squares with them.
-struct CellRegion {
+struct CellRange {
   static constexpr int kSide = 128;
   static constexpr double kCos = 0.89442719099991588, kSin = 0.44721359549995794;  // 2 and 1 over sqrt(5)
 
   /// The grid over `put_off` (items whose `p` is a vertex id): its box in the turned axes cut
   /// into kSide by kSide cells; vertices outside it fall in the cells at its edges.
   template <class PutOffs>
-  static CellRegion grid(const Point* points, std::uint32_t n, const PutOffs& put_off) {
+  static CellRange grid(const Point* points, std::uint32_t n, const PutOffs& put_off) {
     double u_lo = HUGE_VAL, u_hi = -HUGE_VAL, w_lo = HUGE_VAL, w_hi = -HUGE_VAL;
     for (const auto& x : put_off) {
       const auto [u, w] = turned(points[x.p]);
       u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u), w_lo = std::min(w_lo, w), w_hi = std::max(w_hi, w);
     }
-    CellRegion r;
+    CellRange r;
     r.points = points, r.n = n;
     r.u0 = u_lo, r.w0 = w_lo;
     // One column (or row) where the points lie on a line across it, or where the box's width
