@@ -86,8 +86,8 @@ class Voronoi:
                                                          furthest_site=self.furthest_site)
         if self._tri.warning:
             raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
-        (self.vertices, offsets, self._cell_vertices, point_cell, ridge_points,
-         self._ridge_vertices) = _core.voronoi(points, self._tri, threads)
+        self.vertices, offsets, self._cell_vertices, point_cell, ridges = _core.voronoi(points, self._tri, threads)
+        ridge_points, self._ridge_vertices = ridges[:, :2], ridges[:, 2:]  # views, no copy
         # The points with no region of the farthest-point diagram (those inside the hull) get an
         # empty one each, as in scipy; with Qz, region 0 is the point at infinity's, empty.
         lacking = np.flatnonzero(point_cell < 0)
@@ -167,7 +167,7 @@ class Voronoi:
     @cached_property
     def ridge_vertices(self) -> List[List[int]]:
         pairs = np.arange(0, 2 * len(self._ridge_vertices) + 1, 2, dtype=np.uint32)
-        return _core.lists(self._ridge_vertices.reshape(-1), pairs, self._ints)
+        return _core.lists(np.ascontiguousarray(self._ridge_vertices).reshape(-1), pairs, self._ints)
 
     @cached_property
     def regions(self) -> List[List[int]]:

@@ -31,20 +31,34 @@ Every triangle is counter-clockwise; indices are 0-based; the points added follo
 library, which knows which input segment each piece lies on.
 
 The package's other calls are here too: ``delaunay(pts)`` (its triangles), ``convex_hull(pts)``
-(the hull's edges) and ``voronoi(pts)`` (the diagram's vertices, edges and rays).
+(the hull's edges) and ``voronoi(pts)`` (the diagram's vertices, edges and rays); ``loads`` and
+``load`` (Triangle's files read into such a dict), ``get_data``, ``get_data_dir`` and
+``show_data`` (Triangle's sample files, from a directory the user names: ridt ships none), and
+``plot``, ``compare`` and ``comparev`` (the dicts drawn with matplotlib).
 """
 
 from __future__ import annotations
 
+import os
 import warnings
-from typing import Any, Dict, Tuple
+from typing import Any, Dict, Optional, Tuple
 
 import numpy as np
 
 from . import _api, _core
 from ._constrained import RefinementWarning
 from ._delaunay import DegenerateInputWarning, hull_edges
+from ._triangle_plot import compare, comparev, plot
 from ._voronoi import ray_directions
+
+__all__ = ["triangulate", "delaunay", "convex_hull", "voronoi", "loads", "load", "get_data", "get_data_dir",
+           "show_data", "plot", "compare", "comparev", "data_dir"]
+
+#: The directory that ``get_data`` reads Triangle's sample files from where the environment
+#: variable RIDT_TRIANGLE_DATA is not set (None: none).
+data_dir: Optional[str] = None
+
+_EXTENSIONS = ("node", "ele", "poly", "area", "edge", "neigh")
 
 
 def _array(tri: Dict[str, Any], key: str, dtype: Any, columns: int = 0) -> np.ndarray:
@@ -146,8 +160,92 @@ def _diagram(points: np.ndarray, tri: Any, merge: bool) -> Tuple[np.ndarray, np.
     `merge`, cocircular triangles' one), edges, ray origins and ray directions."""
     if len(tri.triangles) == 0:
         return (np.empty((0, 2)), np.empty((0, 2), dtype=np.intc), np.empty(0, dtype=np.intc), np.empty((0, 2)))
-    vertices, _, _, _, ridge_points, ridge_vertices = _core.voronoi(points, tri, 1, merge)
-    ridge_points, ridge_vertices = ridge_points.view(np.intc), ridge_vertices.view(np.intc)
+    vertices, _, _, _, ridges = _core.voronoi(points, tri, 1, merge)
+    ridge_points, ridge_vertices = ridges[:, :2].view(np.intc), ridges[:, 2:].view(np.intc)
     ray = ridge_vertices[:, 1] < 0
     return (vertices, ridge_vertices[~ray].copy(), ridge_vertices[ray, 0].copy(),
             ray_directions(points, ridge_points[ray]))
+
+
+def _text(value: Any, ext: str) -> str:
+    """A file's text as loads takes it: a str, or bytes as UTF-8."""
+    if isinstance(value, (bytes, bytearray)):
+        return bytes(value).decode("utf-8")
+    if not isinstance(value, str):
+        raise TypeError(f"{ext} must be the text of a .{ext} file (str), not {type(value).__name__}")
+    return value
+
+
+def _read(texts: Dict[str, Any], names: Dict[str, str]) -> Dict[str, np.ndarray]:
+    """The files' texts (those not empty) read by ``_core.triangle_files``."""
+    given = {ext: _text(value, ext) for ext, value in texts.items() if value}
+    return _core.triangle_files(given, {ext: names[ext] for ext in given})
+
+
+def loads(node: Optional[str] = None, ele: Optional[str] = None, poly: Optional[str] = None,
+          area: Optional[str] = None, edge: Optional[str] = None, neigh: Optional[str] = None) -> Dict[str, np.ndarray]:
+    """The dict of Triangle's files given as text (the package's ``loads``): each argument the
+    content of a .node, .ele, .poly, .area, .edge or .neigh file, or None (an empty text is none).
+    '#' starts a comment. Malformed text raises ValueError with the reader's message.
+
+    Keys, each where its file has at least one row: from .node (or a .poly that lists its own
+    vertices, which replace the .node's) 'vertices' (float64, n x 2), 'vertex_attributes'
+    (float64, n x k, where the header declares k > 0) and 'vertex_markers' (intc, n x 1, where it
+    declares markers); from .poly 'segments' (intc, s x 2), 'segment_markers' (intc, s x 1, where
+    declared), 'holes' (float64, h x 2) and 'regions' (float64, r x 4: x, y, attribute,
+    max_area, max_area -1 where a line has none); from .ele 'triangles' (intc, m x 3, or m x 6:
+    each triangle's corners, then the middles of the edges across from them) and
+    'triangle_attributes' (float64, m x k); from .area 'triangle_max_area' (float64, m x 1); from
+    .edge 'edges' (intc, e x 2), 'edge_markers' (intc, e x 1, where declared) and, for the rays
+    of a Voronoi diagram's .v.edge (lines "i a -1 dx dy"), 'ray_origins' (intc, r x 1) and
+    'ray_directions' (float64, r x 2); from .neigh 'triangle_neighbors' (intc, m x 3, -1 where
+    a triangle has no neighbour).
+
+    Indices are 0-based: the vertices' first index (0 or 1) numbers the vertices that .ele,
+    .poly, .edge and .neigh refer to and the triangles that .neigh refers to (0 where neither
+    .node nor .poly is given; for .neigh, then, its own first index). Each file's records are
+    numbered consecutively from their first, 0 or 1. A .poly that lists no vertices takes those
+    of `node`. Where .ele is given, .area and .neigh must have as many triangles."""
+    texts = {"node": node, "ele": ele, "poly": poly, "area": area, "edge": edge, "neigh": neigh}
+    return _read(texts, {ext: f"the .{ext} text" for ext in _EXTENSIONS})
+
+
+def load(directory: Any, name: str) -> Dict[str, np.ndarray]:
+    """loads of the files directory/name.node, .ele, .poly, .area, .edge and .neigh, those that
+    exist (the package's ``load``); ValueError messages name the file. FileNotFoundError where
+    none of them exists."""
+    paths = {ext: os.path.join(os.fspath(directory), f"{name}.{ext}") for ext in _EXTENSIONS}
+    texts = {}
+    for ext, path in paths.items():
+        if os.path.isfile(path):
+            with open(path, encoding="utf-8") as f:
+                texts[ext] = f.read()
+    if not texts:
+        raise FileNotFoundError(f"no Triangle file {name}.{{{','.join(_EXTENSIONS)}}} in {os.fspath(directory)}")
+    return _read(texts, paths)
+
+
+def get_data_dir() -> str:
+    """The directory of Triangle's sample files that ``get_data`` reads: the environment variable
+    RIDT_TRIANGLE_DATA where it is set and not empty, else ``ridt.triangle.data_dir``. ridt ships
+    no sample files: FileNotFoundError where neither names a directory."""
+    where = os.environ.get("RIDT_TRIANGLE_DATA") or data_dir
+    if not where:
+        raise FileNotFoundError("ridt ships none of Triangle's sample files: name the directory that holds them with "
+                                "the environment variable RIDT_TRIANGLE_DATA or ridt.triangle.data_dir")
+    return os.fspath(where)
+
+
+def get_data(name: str) -> Dict[str, np.ndarray]:
+    """``load(get_data_dir(), name)``: the sample `name` (Triangle's 'A', 'dots', 'face', ...)
+    from the directory the user names; FileNotFoundError where none is named or none of its
+    files is there."""
+    return load(get_data_dir(), name)
+
+
+def show_data(name: str) -> None:
+    """Draws ``get_data(name)`` with ``plot`` on new axes of matplotlib's pyplot and shows it."""
+    import matplotlib.pyplot as plt
+
+    plot(plt.axes(), **get_data(name))
+    plt.show()

@@ -29,7 +29,7 @@ namespace py = pybind11;
 
 // terrain.cpp, memory.cpp, interpolate.cpp, constrained.cpp
 void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m),
-    bind_constrained(py::module_&m), bind_triangle(py::module_&m);
+    bind_constrained(py::module_&m), bind_triangle(py::module_&m), bind_triangle_files(py::module_&m);
 
 namespace {
 
@@ -288,24 +288,17 @@ void bind_voronoi(py::module_& m) {
           py::gil_scoped_release nogil;
           v = ridt::voronoi(pts, t, threads, merge);
         }
-        const auto r = static_cast<py::ssize_t>(v.ridges.size());
-        py::array_t<std::int32_t> ridge_points({r, py::ssize_t{2}}), ridge_vertices({r, py::ssize_t{2}});
-        {
-          py::gil_scoped_release nogil;
-          std::int32_t* rp = ridge_points.mutable_data();
-          std::int32_t* rv = ridge_vertices.mutable_data();
-          for (const ridt::Ridge& x : v.ridges) {
-            *rp++ = static_cast<std::int32_t>(x.a), *rp++ = static_cast<std::int32_t>(x.b);
-            *rv++ = x.u, *rv++ = x.v;
-          }
-        }
+        // The ridges as they are, four int32 a ridge (a, b, u, v): ridge_points and ridge_vertices
+        // are views of their columns, with no copy.
+        static_assert(sizeof(ridt::Ridge) == 4 * sizeof(std::int32_t));
         const auto size = [](const auto& x) { return static_cast<py::ssize_t>(x.size()); };
         const py::ssize_t vertices = size(v.vertices), offsets = size(v.cell_offsets),
-                          cell_vertices = size(v.cell_vertices), sites = size(v.point_cell);
+                          cell_vertices = size(v.cell_vertices), sites = size(v.point_cell), ridges = size(v.ridges);
         return py::make_tuple(adopt<ridt::Point, double>(std::move(v.vertices), {vertices, 2}),
                               adopt(std::move(v.cell_offsets), {offsets}),
                               adopt(std::move(v.cell_vertices), {cell_vertices}),
-                              adopt(std::move(v.point_cell), {sites}), ridge_points, ridge_vertices);
+                              adopt(std::move(v.point_cell), {sites}),
+                              adopt<ridt::Ridge, std::int32_t>(std::move(v.ridges), {ridges, 4}));
       },
       py::arg("points"), py::arg("triangulation"), py::arg("threads"), py::arg("merge") = true);
 
@@ -355,6 +348,7 @@ PYBIND11_MODULE(_core, m) {
   bind_incremental(m);
   bind_constrained(m);
   bind_triangle(m);
+  bind_triangle_files(m);
   bind_terrain(m);
   bind_queries(m);
   bind_nearest(m);

@@ -9,10 +9,12 @@
 #include "ridt/voronoi.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "tds/ids.hpp"
 
@@ -66,7 +68,9 @@ struct Part {
 
 // Counter-clockwise around v from corner k: from triangle (v, a, b) to the one across its side
 // v-b, which is across from a, its next corner, until the walk comes back to its first
-// triangle or leaves the hull (then -1 closes the cell, between its two rays).
+// triangle or leaves the hull (then -1 closes the cell, between its two rays). The triangle
+// entered, u, has v at the corner after that of its edge back to the one left, found among u's
+// neighbours: the walk reads only the neighbours' array, whose entry it needs next anyway.
 void walk_cell(const Triangulation& t, VertexId v, std::size_t k, std::vector<std::int32_t>& out) {
   auto tri = static_cast<std::int32_t>(k / 3);
   int i = static_cast<int>(k % 3);
@@ -82,9 +86,10 @@ void walk_cell(const Triangulation& t, VertexId v, std::size_t k, std::vector<st
     if (steps > t.size())
       throw InputError("voronoi: the triangles around vertex " + std::to_string(v) +
                        " do not close: not a triangulation");
+    const std::int32_t* n = &t.neighbors[3 * std::size_t(u)];
+    const int back = n[0] == tri ? 0 : n[1] == tri ? 1 : 2;
     tri = u;
-    const VertexId* w = &t.triangles[3 * std::size_t(tri)];
-    i = w[0] == v ? 0 : w[1] == v ? 1 : 2;
+    i = next3(back);
   }
 }
 
@@ -113,7 +118,7 @@ void cells(const Triangulation& t, const std::vector<std::size_t>& cut, unsigned
   if (vertex0.back() > 0xffffffffu) throw InputError("voronoi: more than 2^32 cell vertices");
   out.cell_site.resize(cell0.back());
   out.cell_offsets.resize(cell0.back() + 1);
-  out.cell_vertices.resize(vertex0.back());
+  detail::resize_present(out.cell_vertices, vertex0.back(), detail::thread_count(threads));
   out.cell_offsets[0] = 0;
   each_part(cut, threads, [&](std::size_t p, std::size_t, std::size_t) {
     const Part& part = parts[p];
@@ -142,7 +147,7 @@ void ridges(const Triangulation& t, const std::vector<std::size_t>& cut, unsigne
     first_ridge[p + 1] = c;
   });
   for (std::size_t p = 1; p < cut.size(); ++p) first_ridge[p] += first_ridge[p - 1];
-  out.ridges.resize(first_ridge.back());
+  detail::resize_present(out.ridges, first_ridge.back(), detail::thread_count(threads));
   each_part(cut, threads, [&](std::size_t p, std::size_t first, std::size_t last) {
     Ridge* r = out.ridges.data() + first_ridge[p];
     for (std::size_t k = first; k < last; ++k)
@@ -157,10 +162,10 @@ using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 
 // The neighbours of triangle k, higher-numbered, whose fourth point lies on k's circle (exact
 // in-circle test; the perturbation plays no part): (k, neighbour) appended to `found`. `p`
-// holds k's three points.
-void cocircular_with(std::span<const Point> points, const Triangulation& t, std::size_t k, const Point* p,
-                     Pairs& found) {
-  for (int i = 0; i < 3; ++i) {
+// holds k's three points; `only` (0 to 2) asks of that side alone.
+void cocircular_with(std::span<const Point> points, const Triangulation& t, std::size_t k, const Point* p, Pairs& found,
+                     int only = -1) {
+  for (int i = only < 0 ? 0 : only; i < (only < 0 ? 3 : only + 1); ++i) {
     const std::int32_t u = t.neighbors[3 * k + i];
     if (u < 0 || static_cast<std::size_t>(u) < k) continue;
     // u's vertex across the shared side: the one that is not on it.
@@ -214,16 +219,16 @@ std::vector<std::int32_t> apply_merge(Voronoi& vd, std::size_t count, const Pair
   if (pairs.empty()) return vertex;
   // New vertex numbers in the order of each group's lowest triangle, which comes first.
   const std::vector<std::uint32_t> root = groups(count, pairs);
-  std::vector<Point> merged;
+  std::size_t kept = 0;  // the vertices kept, moved down in place
   for (std::size_t k = 0; k < count; ++k) {
     if (root[k] == k) {
-      vertex[k] = static_cast<std::int32_t>(merged.size());
-      merged.push_back(vd.vertices[k]);
+      vertex[k] = static_cast<std::int32_t>(kept);
+      vd.vertices[kept++] = vd.vertices[k];
     } else {
       vertex[k] = vertex[root[k]];
     }
   }
-  vd.vertices = std::move(merged);
+  vd.vertices.resize(kept);
   // Cells: each group's triangles around a site are consecutive (the group is a convex
   // polygon's), so a repeat follows its first, or closes a bounded cell onto its start.
   std::size_t at = 0;
@@ -240,7 +245,7 @@ std::vector<std::int32_t> apply_merge(Voronoi& vd, std::size_t count, const Pair
   vd.cell_offsets[vd.cells()] = static_cast<std::uint32_t>(at);
   vd.cell_vertices.resize(at);
   // Ridges: both ends renumbered; those inside a group have length zero.
-  std::size_t kept = 0;
+  kept = 0;
   for (const Ridge& r : vd.ridges) {
     Ridge m = r;
     m.u = vertex[static_cast<std::size_t>(r.u)];
@@ -251,6 +256,35 @@ std::vector<std::int32_t> apply_merge(Voronoi& vd, std::size_t count, const Pair
   return vertex;
 }
 
+// The cocircular pairs among neighbours, from their circumcentres: two neighbours are
+// cocircular exactly when their circles are one, their exact centres equal; each computed centre
+// lies within 2^-44 of its radius and an ulp of the exact one (circumcentre_bounded), so a pair
+// whose centres lie further apart than twice that is not, and only the few that do not are tested
+// exactly. The centres of neighbours lie near in memory (triangles near in the plane are near in
+// the triangulation's order), where the fourth point of each pair lies anywhere.
+Pairs cocircular_by_centres(std::span<const Point> points, const Triangulation& t, const Voronoi& out,
+                            const std::vector<float>& radius, const std::vector<std::size_t>& cut, unsigned threads) {
+  std::vector<Pairs> found(cut.size() - 1);
+  each_part(cut, threads, [&](std::size_t part, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      const Point& c = out.vertices[k];
+      for (int i = 0; i < 3; ++i) {
+        const std::int32_t u = t.neighbors[3 * k + i];
+        if (u < 0 || static_cast<std::size_t>(u) < k) continue;
+        const Point& d = out.vertices[static_cast<std::size_t>(u)];
+        const double r = std::max(radius[k], radius[static_cast<std::size_t>(u)]);
+        const double size = std::max({std::fabs(c.x), std::fabs(c.y), std::fabs(d.x), std::fabs(d.y)});
+        const double apart = 0x1p-42 * r + 0x1p-50 * size;  // twice each bound, with room
+        if (!(std::fabs(c.x - d.x) <= apart && std::fabs(c.y - d.y) <= apart) && std::isfinite(apart)) continue;
+        const VertexId* v = &t.triangles[3 * k];
+        const Point p[3] = {points[v[0]], points[v[1]], points[v[2]]};
+        cocircular_with(points, t, k, p, found[part], i);
+      }
+    }
+  });
+  return joined(found);
+}
+
 }  // namespace
 
 Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads, bool merge) {
@@ -258,22 +292,32 @@ Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned 
   const std::size_t count = t.size();
   const std::vector<std::size_t> cut = stretches(count, threads);
   Voronoi out;
-  out.vertices.resize(count);
-  // The circumcentres, and with `merge` the cocircular neighbours, found while each
-  // triangle's points are at hand (the points are in the caller's order: each read may miss).
-  std::vector<Pairs> found(cut.size() - 1);
-  each_part(cut, threads, [&](std::size_t part, std::size_t first, std::size_t last) {
+  // The large arrays' pages made present on the threads, not faulted in one by one as written.
+  const unsigned workers = detail::thread_count(threads);
+  detail::resize_present(out.vertices, count, workers);
+  std::vector<float> radius;
+  if (merge) detail::resize_present(radius, count, workers);
+  // The circumcentres, each triangle's points read some triangles ahead (they are in the
+  // caller's order: each read may miss), and with `merge` each circle's radius, rounded up.
+  each_part(cut, threads, [&](std::size_t, std::size_t first, std::size_t last) {
+    constexpr std::size_t kAhead = 8;
     for (std::size_t k = first; k < last; ++k) {
+      if (k + kAhead < last)
+        for (int j = 0; j < 3; ++j) __builtin_prefetch(&points[t.triangles[3 * (k + kAhead) + j]]);
       const VertexId* v = &t.triangles[3 * k];
       const Point p[3] = {points[v[0]], points[v[1]], points[v[2]]};
-      out.vertices[k] = detail::circumcentre_bounded(p[0], p[1], p[2]);
-      if (merge) cocircular_with(points, t, k, p, found[part]);
+      const Point c = out.vertices[k] = detail::circumcentre_bounded(p[0], p[1], p[2]);
+      const double dx = c.x - p[0].x, dy = c.y - p[0].y;  // (overflow: an infinite radius, tested exactly)
+      if (merge) radius[k] = static_cast<float>(std::sqrt(dx * dx + dy * dy) * (1 + 0x1p-20));
     }
   });
-  out.point_cell.assign(points.size(), -1);
+  detail::resize_present(out.point_cell, points.size(), workers);
+  std::fill(out.point_cell.begin(), out.point_cell.end(), -1);
   cells(t, cut, threads, out);
   ridges(t, cut, threads, out);
-  if (merge) apply_merge(out, count, joined(found));
+  if (merge)
+    if (const Pairs pairs = cocircular_by_centres(points, t, out, radius, cut, threads); !pairs.empty())
+      apply_merge(out, count, pairs);
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -98,6 +99,51 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
 /// Reads Triangle's .area file ("triangles", then "i max_area" numbered from `first_index`, a
 /// bound of 0 or below meaning none) for a mesh of `triangles`; throws IoError.
 std::vector<double> read_area_file(const std::string& path, std::size_t triangles, int first_index);
+
+/// Triangle's .area text (`name` stands for it in messages) as read_area_file reads a file; with
+/// `triangles` none, for a mesh of any number of triangles; with `first_index` -1, its records
+/// numbered from the first's index (0 or 1).
+std::vector<double> parse_area_text(std::string_view text, const std::string& name,
+                                    std::optional<std::size_t> triangles, int first_index);
+
+/// The edges and rays of an .edge file (parse_edge_text).
+struct EdgeText {
+  std::vector<VertexId> edges;  ///< pairs of 0-based indices
+  std::vector<std::int64_t> markers;  ///< one an edge where the header declares markers, else none
+  std::vector<VertexId> ray_origins;  ///< one a ray, 0-based
+  std::vector<Point> ray_directions;  ///< one a ray
+};
+
+/// Triangle's .edge text (`name` stands for it in messages): "edges [markers]", then records
+/// "i a b [marker]" or, as a Voronoi diagram's .v.edge has them, rays "i a -1 dx dy [marker]"
+/// (from vertex a along (dx, dy)). The records are numbered from the first's index (0 or 1),
+/// their ends from `first_index`, each end one of `points`; a ray's marker is read and not
+/// kept. Throws IoError.
+EdgeText parse_edge_text(std::string_view text, const std::string& name, std::size_t points, int first_index);
+
+/// Triangle's .poly text (`name` stands for it in messages) as read_pslg reads a .poly file,
+/// except that where it lists no vertices they come from `node`, the text of its .node file
+/// (`node_name` in messages), not from a file beside it; IoError where `node` is none then.
+Pslg parse_poly_text(std::string_view text, const std::string& name, std::optional<std::string_view> node,
+                     const std::string& node_name, unsigned threads = 1);
+
+/// Triangle's .node text (`name` stands for it in messages) as read_pslg reads a .node file: a
+/// graph of its points alone, with their attributes and markers.
+Pslg parse_node_text(std::string_view text, const std::string& name, unsigned threads = 1);
+
+/// Triangle's .ele text (`name` stands for it in messages) as read_elements reads a file, with
+/// every attribute of each triangle into `attributes` (`attribute_count` a triangle, the number
+/// its header declares, row by row).
+std::vector<VertexId> parse_elements(std::string_view text, const std::string& name, int first_index,
+                                     std::vector<double>& attributes, std::size_t& attribute_count,
+                                     std::vector<VertexId>& middles, unsigned threads = 1);
+
+/// Triangle's .neigh text (`name` stands for it in messages): "triangles 3", then records
+/// "i n1 n2 n3" numbered from the first's index (0 or 1), each neighbour -1 (none) or a triangle
+/// numbered from `first_index` (-1: as the records are); returns the neighbours, three a
+/// triangle, 0-based, -1 for none. Throws IoError.
+std::vector<std::int32_t> parse_neighbors(std::string_view text, const std::string& name, int first_index,
+                                          unsigned threads = 1);
 
 /// Reads Triangle's .ele file as read_triangles does, each triangle's first attribute into
 /// `attributes` (left empty where the file has none), and, from a six-node file (-o2), each

@@ -47,7 +47,15 @@ std::vector<std::int64_t> markers_of(const std::string& path, std::span<const Li
   return out;
 }
 
-std::size_t read_vertices(const std::string& path, const std::vector<Line>& lines, unsigned threads, Pslg& g) {
+// The text of the .node file whose vertices a .poly that lists none takes, where it is given
+// rather than read from the file beside the .poly.
+struct NodeText {
+  std::optional<std::string_view> text;  ///< none: not given
+  std::string name;
+};
+
+std::size_t read_vertices(const std::string& path, const std::vector<Line>& lines, unsigned threads, Pslg& g,
+                          const NodeText* given = nullptr) {
   const auto h = fields(path, lines[0], 2, 4, "a header \"vertices 2 [attributes [markers]]\"");
   const std::int64_t n = integer(path, lines[0].number, h[0], "number of vertices");
   if (integer(path, lines[0].number, h[1], "dimension") != 2) fail_line(path, lines[0].number, "dimension must be 2");
@@ -61,11 +69,15 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
       g.point_markers = markers_of(file, records);
   };
   PointFile p;
-  if (n == 0) {  // the vertices in the .node file beside it
-    const std::string node = (fs::path(path).replace_extension(".node")).string();
-    const FileText text(node);
-    p = read_node(node, text.view(), threads);
-    const std::vector<Line> all = split_lines(text.view(), threads);
+  if (n == 0) {  // the vertices in the .node file beside it, or in the text given for it
+    if (given != nullptr && !given->text)
+      fail_line(path, lines[0].number, "the file lists no vertices and no .node text is given for them");
+    const std::string node = given != nullptr ? given->name : (fs::path(path).replace_extension(".node")).string();
+    std::optional<FileText> file;
+    if (given == nullptr) file.emplace(node);
+    const std::string_view text = given != nullptr ? *given->text : file->view();
+    p = read_node(node, text, threads);
+    const std::vector<Line> all = split_lines(text, threads);
     if (!all.empty())
       declared(fields(node, all[0], 2, 4, "a header \"points 2 [attributes [markers]]\""), all[0].number,
                std::span(all).subspan(1), node);
@@ -134,18 +146,23 @@ std::size_t read_seeds(const std::string& path, const std::vector<Line>& lines, 
   return at + 1 + static_cast<std::size_t>(count);
 }
 
-}  // namespace
-
-Pslg read_poly(const std::string& path, std::string_view text, unsigned threads) {
+// read_poly's work, a .poly that lists no vertices taking them from `given` where it is not null.
+Pslg poly_of(const std::string& path, std::string_view text, unsigned threads, const NodeText* given) {
   const std::vector<Line> lines = split_lines(text, threads);
   if (lines.empty()) fail_file(path, "no header line \"vertices 2 [attributes [markers]]\"");
   Pslg g;
-  std::size_t at = read_vertices(path, lines, threads, g);
+  std::size_t at = read_vertices(path, lines, threads, g, given);
   at = read_segments(path, lines, at, threads, g);
   at = read_seeds(path, lines, at, false, g);
   at = read_seeds(path, lines, at, true, g);
   if (at != lines.size()) fail_line(path, lines[at].number, "unexpected line " + quoted(lines[at].text));
   return g;
+}
+
+}  // namespace
+
+Pslg read_poly(const std::string& path, std::string_view text, unsigned threads) {
+  return poly_of(path, text, threads, nullptr);
 }
 
 // A .node file as a graph of its points alone (Triangle's input without -p), their attributes
@@ -166,9 +183,64 @@ PointFile read_poly_points(const std::string& path, std::string_view text, unsig
   return PointFile(std::move(g.points), g.first_index);
 }
 
+namespace {
+
+// What an .edge file's records refer to: `points` vertices numbered from `first_index`; whether
+// the header declares markers.
+struct EdgeEnds {
+  std::size_t points;
+  int first_index;
+  bool marked;
+};
+
+// Record k of an .edge file: "index a b [marker]", or a ray "index a -1 dx dy [marker]"; its
+// index the first's (0 or 1, which sets `first`) plus k.
+void edge_record(const std::string& name, const Line& l, std::size_t k, std::int64_t& first, const EdgeEnds& e,
+                 EdgeText& out) {
+  const auto f = fields(name, l, 3, 6, "\"index a b [marker]\" or \"index a -1 dx dy [marker]\"");
+  const std::int64_t index = integer(name, l.number, f[0], "edge index");
+  if (k == 0 && index != 0 && index != 1)
+    fail_line(name, l.number, "the first edge index must be 0 or 1, got " + std::to_string(index));
+  if (k == 0) first = index;
+  if (index != first + static_cast<std::int64_t>(k))
+    fail_line(name, l.number, "expected edge index " + std::to_string(first + static_cast<std::int64_t>(k)));
+  const bool ray = integer(name, l.number, f[2], "edge end") == -1;
+  if (ray ? f.size() < 5 : f.size() > 4)
+    fail_line(name, l.number,
+              std::string("expected ") + (ray ? "a ray \"index a -1 dx dy [marker]\"" : "\"index a b [marker]\"") +
+                  ", got " + quoted(l.text));
+  VertexId ends[2] = {0, 0};
+  for (int i = 0; i < (ray ? 1 : 2); ++i) {
+    ends[i] = vertex(name, l.number, f[1 + i], e.first_index);
+    if (ends[i] >= e.points) fail_line(name, l.number, "edge end " + std::string(f[1 + i]) + " is not a vertex");
+  }
+  const std::size_t extra = ray ? 5 : 3;
+  const std::int64_t marker = f.size() > extra ? integer(name, l.number, f[extra], "edge marker") : 0;
+  if (ray) {
+    out.ray_origins.push_back(ends[0]);
+    out.ray_directions.push_back({coordinate(name, l.number, f[3], [&] { return not_a_number(f[3]); }),
+                                  coordinate(name, l.number, f[4], [&] { return not_a_number(f[4]); })});
+    return;
+  }
+  out.edges.insert(out.edges.end(), {ends[0], ends[1]});
+  if (e.marked) out.markers.push_back(marker);
+}
+
+}  // namespace
+
 }  // namespace ridt::io::detail
 
 namespace ridt::io {
+
+Pslg parse_poly_text(std::string_view text, const std::string& name, std::optional<std::string_view> node,
+                     const std::string& node_name, unsigned threads) {
+  const detail::NodeText given{node, node_name};
+  return detail::poly_of(name, text, threads, &given);
+}
+
+Pslg parse_node_text(std::string_view text, const std::string& name, unsigned threads) {
+  return detail::read_node_graph(name, text, threads);
+}
 
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index,
                                      std::vector<std::int64_t>* markers) {
@@ -184,27 +256,60 @@ std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points
   return std::move(g.segments);
 }
 
+EdgeText parse_edge_text(std::string_view text, const std::string& name, std::size_t points, int first_index) {
+  const std::vector<detail::Line> lines = detail::split_lines(text, 1);
+  if (lines.empty()) detail::fail_file(name, "no edge header \"edges [markers]\"");
+  const auto h = detail::fields(name, lines[0], 1, 2, "an edge header \"edges [markers]\"");
+  const std::int64_t m = detail::integer(name, lines[0].number, h[0], "number of edges");
+  const bool marked = h.size() > 1 && detail::integer(name, lines[0].number, h[1], "number of markers") > 0;
+  detail::need(name, lines, 1, m, "edges");
+  if (lines.size() > 1 + static_cast<std::size_t>(m)) {
+    const detail::Line& l = lines[1 + static_cast<std::size_t>(m)];
+    detail::fail_line(name, l.number, "unexpected line " + detail::quoted(l.text));
+  }
+  EdgeText out;
+  std::int64_t first = 0;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(m); ++k)
+    detail::edge_record(name, lines[1 + k], k, first, {points, first_index, marked}, out);
+  return out;
+}
+
 std::vector<double> read_area_file(const std::string& path, std::size_t triangles, int first_index) {
   const detail::FileText text(path);
-  const std::vector<detail::Line> lines = detail::split_lines(text.view(), 1);
-  if (lines.empty()) detail::fail_file(path, "no header line \"triangles\"");
+  return parse_area_text(text.view(), path, triangles, first_index);
+}
+
+std::vector<double> parse_area_text(std::string_view text, const std::string& name,
+                                    std::optional<std::size_t> triangles, int first_index) {
+  const std::vector<detail::Line> lines = detail::split_lines(text, 1);
+  if (lines.empty()) detail::fail_file(name, "no header line \"triangles\"");
   const std::int64_t count = detail::integer(
-      path, lines[0].number, detail::fields(path, lines[0], 1, 1, "a header \"triangles\"")[0], "number of triangles");
-  if (count != static_cast<std::int64_t>(triangles))
+      name, lines[0].number, detail::fields(name, lines[0], 1, 1, "a header \"triangles\"")[0], "number of triangles");
+  if (triangles && count != static_cast<std::int64_t>(*triangles))
     detail::fail_line(
-        path, lines[0].number,
-        "the file bounds " + std::to_string(count) + " triangles; the mesh has " + std::to_string(triangles));
-  if (lines.size() != triangles + 1)
+        name, lines[0].number,
+        "the file bounds " + std::to_string(count) + " triangles; the mesh has " + std::to_string(*triangles));
+  if (count < 0) detail::fail_line(name, lines[0].number, "negative number of triangles " + std::to_string(count));
+  const auto n = static_cast<std::size_t>(count);
+  if (lines.size() != n + 1)
     detail::fail_file(
-        path,
+        name,
         "header says " + std::to_string(count) + " triangles but the file has " + std::to_string(lines.size() - 1));
-  std::vector<double> out(triangles);
-  for (std::size_t k = 0; k < triangles; ++k) {
+  std::vector<double> out(n);
+  std::int64_t first = first_index;
+  for (std::size_t k = 0; k < n; ++k) {
     const detail::Line& l = lines[k + 1];
-    const auto f = detail::fields(path, l, 2, 2, "\"index max_area\"");
-    if (detail::integer(path, l.number, f[0], "triangle index") != first_index + static_cast<std::int64_t>(k))
-      detail::fail_line(path, l.number, "expected triangle index " + std::to_string(first_index + k));
-    out[k] = detail::coordinate(path, l.number, f[1], [&] { return detail::not_a_number(f[1]); });
+    const auto f = detail::fields(name, l, 2, 2, "\"index max_area\"");
+    const std::int64_t index = detail::integer(name, l.number, f[0], "triangle index");
+    if (k == 0 && first < 0) {
+      if (index != 0 && index != 1)
+        detail::fail_line(name, l.number, "the first triangle index must be 0 or 1, got " + std::to_string(index));
+      first = index;
+    }
+    if (index != first + static_cast<std::int64_t>(k))
+      detail::fail_line(name, l.number,
+                        "expected triangle index " + std::to_string(first + static_cast<std::int64_t>(k)));
+    out[k] = detail::coordinate(name, l.number, f[1], [&] { return detail::not_a_number(f[1]); });
   }
   return out;
 }

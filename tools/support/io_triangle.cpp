@@ -112,11 +112,11 @@ Point node_point(const std::string& path, const NodeHeader& h, std::size_t k, st
 }
 
 // Triangle k of an .ele file, as node_point reads a point: its corners into `out`, its other
-// three nodes (six-node files) into `middles`. `attribute`, where not null, takes the
-// triangle's first attribute.
+// three nodes (six-node files) into `middles`. `attributes`, where not null, takes the
+// triangle's first `wanted` attributes (at most the header's).
 void ele_triangle(const std::string& path, const EleHeader& h, std::size_t k, std::size_t line_no,
                   std::string_view line, std::int64_t& first, int first_index, VertexId* out, VertexId* middles,
-                  double* attribute) {
+                  double* attributes, std::size_t wanted) {
   Fields f{line, false};
   std::string_view idx, node[6], value;
   const auto count_error = [&] {
@@ -126,14 +126,12 @@ void ele_triangle(const std::string& path, const EleHeader& h, std::size_t k, st
   bool whole = f.next(idx);
   for (int i = 0; i < h.nodes && whole; ++i) whole = f.next(node[i]);
   if (!whole) fail_line(path, line_no, count_error());
-  const std::size_t read = 1 + static_cast<std::size_t>(h.nodes);
-  if (attribute != nullptr && h.attrs > 0) {
+  std::size_t read = 1 + static_cast<std::size_t>(h.nodes);
+  for (std::size_t a = 0; attributes != nullptr && a < wanted; ++a, ++read) {
     if (!f.next(value)) fail_line(path, line_no, count_error());
-    *attribute = coordinate(path, line_no, value, [&] { return "attribute " + quoted(value) + " is not a number"; });
-    check_rest(f, read + 1, h.fields, h.fields, path, line_no, count_error);
-  } else {
-    check_rest(f, read, h.fields, h.fields, path, line_no, count_error);
+    attributes[a] = coordinate(path, line_no, value, [&] { return "attribute " + quoted(value) + " is not a number"; });
   }
+  check_rest(f, read, h.fields, h.fields, path, line_no, count_error);
   check_index(path, line_no, integer(path, line_no, idx, "triangle index"), k, first, "triangle");
   for (int i = 0; i < 3; ++i) out[i] = vertex(path, line_no, node[i], first_index);
   for (int i = 3; i < h.nodes; ++i) middles[i - 3] = vertex(path, line_no, node[i], first_index);
@@ -189,26 +187,46 @@ std::vector<VertexId> read_ele(const std::string& path, std::string_view text, i
   return read_ele(path, text, first_index, threads, nullptr);
 }
 
-std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads,
-                               std::vector<double>* attributes, std::vector<VertexId>* middles) {
+namespace {
+
+// read_ele's work: each triangle's first attribute, or (where `count` is not null) all of them
+// and their number a triangle into `count`, into `attributes` where it is not null.
+std::vector<VertexId> read_ele_attributes(const std::string& path, std::string_view text, int first_index,
+                                          unsigned threads, std::vector<double>* attributes, std::size_t* count,
+                                          std::vector<VertexId>* middles) {
   const std::optional<Head> head = head_line(text);
   if (!head) fail_file(path, "no header line \"triangles 3 [attributes]\"");
   const EleHeader h = ele_header(path, head->line.number, head->line.text, middles != nullptr);
   const LinePieces lines(head->rest, threads, head->line.number);
+  // Each triangle's first attribute, or (with `count`) all of them: as many as fit in the text
+  // (two bytes each at least), else a record lacks some.
+  const std::size_t wanted = attributes == nullptr
+      ? 0
+      : static_cast<std::size_t>(count == nullptr ? std::min<std::int64_t>(h.attrs, 1) : h.attrs);
+  if (wanted > 1 && lines.size() > 0 && wanted > text.size() / (2 * lines.size()))
+    fail_file(path, "header says " + std::to_string(h.attrs) + " attributes a triangle, more than the file holds");
+  if (count != nullptr) *count = wanted;
   std::vector<VertexId> out(3 * lines.size());
-  if (attributes != nullptr) attributes->assign(h.attrs > 0 ? lines.size() : 0, 0.0);
+  if (attributes != nullptr) attributes->assign(wanted * lines.size(), 0.0);
   if (middles != nullptr) middles->assign(h.nodes == 6 ? 3 * lines.size() : 0, 0);
   std::int64_t first = 0;
   read_records(lines, head->rest, head->line.number, first,
                [&](std::size_t k, std::size_t line_no, std::string_view line, std::int64_t& from) {
-                 double* attribute = attributes != nullptr && h.attrs > 0 ? &(*attributes)[k] : nullptr;
+                 double* attribute = wanted > 0 ? &(*attributes)[wanted * k] : nullptr;
                  VertexId* middle = h.nodes == 6 ? &(*middles)[3 * k] : nullptr;
-                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k], middle, attribute);
+                 ele_triangle(path, h, k, line_no, line, from, first_index, &out[3 * k], middle, attribute, wanted);
                });
   if (lines.size() != static_cast<std::size_t>(h.n))
     fail_file(path,
               "header says " + std::to_string(h.n) + " triangles but the file has " + std::to_string(lines.size()));
   return out;
+}
+
+}  // namespace
+
+std::vector<VertexId> read_ele(const std::string& path, std::string_view text, int first_index, unsigned threads,
+                               std::vector<double>* attributes, std::vector<VertexId>* middles) {
+  return read_ele_attributes(path, text, first_index, threads, attributes, nullptr, middles);
 }
 
 void write_node(Writer& out, std::span<const Point> points, int first_index, unsigned threads) {
@@ -270,4 +288,60 @@ void write_neigh(Writer& out, std::span<const std::int32_t> neighbors, int first
   });
 }
 
+namespace {
+
+// Record k of a .neigh file ("index n1 n2 n3", its index the first's, 0 or 1, plus k): its
+// neighbours into `out`, each -1 or one of `triangles` numbered from `numbering` (-1: from the
+// records' first index).
+void neigh_record(const std::string& path, std::size_t k, std::size_t line_no, std::string_view line,
+                  std::int64_t& first, std::size_t triangles, int numbering, std::int32_t* out) {
+  const auto f = fields_of(path, line_no, line, 4, 4, "\"index n1 n2 n3\"");
+  check_index(path, line_no, integer(path, line_no, f[0], "triangle index"), k, first, "triangle");
+  const std::int64_t from = numbering < 0 ? first : numbering;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t n = integer(path, line_no, f[1 + i], "neighbour");
+    if (n != -1 && (n < from || n - from >= static_cast<std::int64_t>(triangles)))
+      fail_line(path, line_no,
+                "neighbour " + std::to_string(n) + " is neither -1 nor one of the " + std::to_string(triangles) +
+                    " triangles numbered from " + std::to_string(from));
+    out[i] = n == -1 ? -1 : static_cast<std::int32_t>(n - from);
+  }
+}
+
+}  // namespace
+
 }  // namespace ridt::io::detail
+
+namespace ridt::io {
+
+std::vector<VertexId> parse_elements(std::string_view text, const std::string& name, int first_index,
+                                     std::vector<double>& attributes, std::size_t& attribute_count,
+                                     std::vector<VertexId>& middles, unsigned threads) {
+  return detail::read_ele_attributes(name, text, first_index, threads, &attributes, &attribute_count, &middles);
+}
+
+std::vector<std::int32_t> parse_neighbors(std::string_view text, const std::string& name, int first_index,
+                                          unsigned threads) {
+  using namespace detail;
+  const std::optional<Head> head = head_line(text);
+  if (!head) fail_file(name, "no header line \"triangles 3\"");
+  const auto h = fields_of(name, head->line.number, head->line.text, 2, 2, "a header \"triangles 3\"");
+  const std::int64_t n = integer(name, head->line.number, h[0], "number of triangles");
+  if (n < 0) fail_line(name, head->line.number, "negative number of triangles " + std::to_string(n));
+  if (integer(name, head->line.number, h[1], "neighbours per triangle") != 3)
+    fail_line(name, head->line.number, "neighbours per triangle must be 3");
+  const LinePieces lines(head->rest, threads, head->line.number);
+  if (lines.size() != static_cast<std::size_t>(n))
+    fail_file(name, "header says " + std::to_string(n) + " triangles but the file has " + std::to_string(lines.size()));
+  if (lines.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    fail_file(name, "more triangles than a 32-bit index can number");
+  std::vector<std::int32_t> out(3 * lines.size());
+  std::int64_t first = 0;
+  read_records(lines, head->rest, head->line.number, first,
+               [&](std::size_t k, std::size_t line_no, std::string_view line, std::int64_t& from) {
+                 neigh_record(name, k, line_no, line, from, lines.size(), first_index, &out[3 * k]);
+               });
+  return out;
+}
+
+}  // namespace ridt::io
