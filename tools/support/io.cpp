@@ -17,7 +17,7 @@ using namespace detail;
 PointFile read_points(const std::string& path, unsigned threads) {
   if (extension_of(path) == ".bin")
     if (std::optional<PointFile> mapped = map_bin_points(path)) return std::move(*mapped);
-  return parse_points(FileText(path).view(), path, threads);
+  return FileText(path).parse([&](std::string_view text) { return parse_points(text, path, threads); });
 }
 
 PointFile parse_points(std::string_view data, const std::string& name, unsigned threads) {
@@ -33,7 +33,7 @@ void write_points(const std::string& path, std::span<const Point> points, int fi
 
 std::vector<VertexId> read_triangles(const std::string& path, int first_index, unsigned threads) {
   if (is_parts_index(path)) return read_parts(path, threads);
-  return parse_triangles(FileText(path).view(), path, first_index, threads);
+  return FileText(path).parse([&](std::string_view text) { return parse_triangles(text, path, first_index, threads); });
 }
 
 std::string extension(const std::string& path) { return extension_of(path); }
@@ -112,7 +112,7 @@ void SortedOutput::commit(const Triangulation& t) {
 
 Pslg read_pslg(const std::string& path, unsigned threads) {
   format_of(path, &Format::read_pslg, "planar straight-line graph input");  // before reading it
-  return parse_pslg(FileText(path).view(), path, threads);
+  return FileText(path).parse([&](std::string_view text) { return parse_pslg(text, path, threads); });
 }
 
 Pslg parse_pslg(std::string_view data, const std::string& name, unsigned threads) {

@@ -26,6 +26,21 @@
 #include "ridt/ridt.hpp"
 #include "ridt/voronoi.hpp"
 
+namespace ridt::io::detail {
+
+/// Mappings watched for a file that shrinks while it is read (mapped.cpp): a fault past its new
+/// end reads zeros, and marks the mapping, where it would end the process with SIGBUS. The slot
+/// of a watch, or -1 where none is free (the mapping is then read unwatched).
+int watch_mapping(const void* data, std::size_t bytes);
+void unwatch_mapping(int slot);
+/// Whether a fault was taken in the watched mapping `slot`, or in any since the process began.
+bool mapping_shrank(int slot);
+bool any_mapping_shrank();
+/// any_mapping_shrank false again (for tests, which go on in one process).
+void forget_shrunk_mappings();
+
+}  // namespace ridt::io::detail
+
 namespace ridt::io {
 
 /// A file that cannot be read or written, or malformed content; the message names the file

@@ -56,9 +56,12 @@ std::optional<PointFile> map_bin_points(const std::string& path) {
   std::optional<Mapping> m = map_file(path);
   if (!m) return std::nullopt;
   check_bin_size(path, m->bytes.size());
-  // Used where they lie; brought in by the check on threads.
+  // Used where they lie; brought in by the check on threads. Where the file shrinks later, the
+  // points past its end read as zeros, and the tools refuse to write what they made of them
+  // (any_mapping_shrank).
   const std::span<const Point> points(reinterpret_cast<const Point*>(m->bytes.data()), m->bytes.size() / 16);
   check_finite(path, points);
+  if (m->shrank()) throw shrank_error(path);
   return PointFile(std::move(m->owner), points);
 }
 

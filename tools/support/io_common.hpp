@@ -115,11 +115,19 @@ inline std::string read_file_whole(const std::string& path) {
   return data;
 }
 
+/// What a reader says of a file that shrank while it was read.
+inline IoError shrank_error(const std::string& path) {
+  return IoError(path + ": the file shrank while it was read (truncated or rewritten by another process)");
+}
+
 /// A regular file's bytes mapped into memory: the page cache's own pages, shared, never
-/// copied, kept while `owner` lives.
+/// copied, kept while `owner` lives, and watched while they are (watch_mapping).
 struct Mapping {
   std::shared_ptr<const void> owner;
   std::string_view bytes;
+  int watch = -1;
+  /// Whether the file shrank under the mapping (the bytes past its end read as zeros).
+  bool shrank() const { return mapping_shrank(watch); }
 };
 
 /// `path` mapped, or none where it is not a regular file with some bytes (a pipe, a device) or
@@ -140,15 +148,20 @@ inline std::optional<Mapping> map_file(const std::string& path) {
   }
   ::close(fd);
   if (at == MAP_FAILED) return std::nullopt;
-  return Mapping{std::shared_ptr<const void>(at, [bytes](const void* p) { ::munmap(const_cast<void*>(p), bytes); }),
-                 std::string_view(static_cast<const char*>(at), bytes)};
+  const int watch = watch_mapping(at, bytes);
+  return Mapping{std::shared_ptr<const void>(at,
+                                             [bytes, watch](const void* p) {
+                                               unwatch_mapping(watch);
+                                               ::munmap(const_cast<void*>(p), bytes);
+                                             }),
+                 std::string_view(static_cast<const char*>(at), bytes), watch};
 }
 
 /// A file's bytes: mapped where it is a regular file (map_file), else read whole; IoError as
 /// read_file_whole.
 class FileText {
  public:
-  explicit FileText(const std::string& path) {
+  explicit FileText(const std::string& path) : path_(path) {
     if (std::optional<Mapping> m = map_file(path)) {
       map_ = std::move(*m);
       ::madvise(const_cast<char*>(map_.bytes.data()), map_.bytes.size(), MADV_SEQUENTIAL);  // read ahead from a disk
@@ -159,7 +172,22 @@ class FileText {
 
   std::string_view view() const { return map_.owner ? map_.bytes : std::string_view(read_); }
 
+  /// parse(view()), or IoError (shrank_error) where the file shrank while it was read, what the
+  /// parse made of the zeros in its place, or threw on them, then set aside.
+  template <class Parse>
+  auto parse(Parse&& parse) const {
+    try {
+      auto result = parse(view());
+      if (map_.shrank()) throw shrank_error(path_);
+      return result;
+    } catch (const IoError&) {
+      if (map_.shrank()) throw shrank_error(path_);
+      throw;
+    }
+  }
+
  private:
+  std::string path_;
   Mapping map_;
   std::string read_;
 };

@@ -190,8 +190,7 @@ Terrain parse_las(std::string_view d, const std::string& name, const PointFilter
 }
 
 Terrain read_las(const std::string& path, const PointFilter& filter) {
-  const detail::FileText text(path);
-  return parse_las(text.view(), path, filter);
+  return detail::FileText(path).parse([&](std::string_view text) { return parse_las(text, path, filter); });
 }
 
 }  // namespace ridt::io

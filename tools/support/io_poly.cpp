@@ -73,14 +73,18 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
     if (given != nullptr && !given->text)
       fail_line(path, lines[0].number, "the file lists no vertices and no .node text is given for them");
     const std::string node = given != nullptr ? given->name : (fs::path(path).replace_extension(".node")).string();
-    std::optional<FileText> file;
-    if (given == nullptr) file.emplace(node);
-    const std::string_view text = given != nullptr ? *given->text : file->view();
-    p = read_node(node, text, threads);
-    const std::vector<Line> all = split_lines(text, threads);
-    if (!all.empty())
-      declared(fields(node, all[0], 2, 4, "a header \"points 2 [attributes [markers]]\""), all[0].number,
-               std::span(all).subspan(1), node);
+    auto vertices = [&](std::string_view text) {
+      p = read_node(node, text, threads);
+      const std::vector<Line> all = split_lines(text, threads);
+      if (!all.empty())
+        declared(fields(node, all[0], 2, 4, "a header \"points 2 [attributes [markers]]\""), all[0].number,
+                 std::span(all).subspan(1), node);
+      return 0;
+    };
+    if (given != nullptr)
+      vertices(*given->text);
+    else
+      FileText(node).parse(vertices);
     g.node_file = node;
   } else {  // the lines up to the last vertex's are a .node file's, line numbers and all
     need(path, lines, 1, n, "vertices");
@@ -244,16 +248,17 @@ Pslg parse_node_text(std::string_view text, const std::string& name, unsigned th
 
 std::vector<VertexId> read_edge_file(const std::string& path, std::size_t points, int first_index,
                                      std::vector<std::int64_t>* markers) {
-  const detail::FileText text(path);
-  const std::vector<detail::Line> lines = detail::split_lines(text.view(), 1);
-  Pslg g;
-  g.points.resize(points);
-  g.first_index = first_index;
-  const std::size_t at = detail::read_segments(path, lines, 0, 1, g);
-  if (at != lines.size())
-    detail::fail_line(path, lines[at].number, "unexpected line " + detail::quoted(lines[at].text));
-  if (markers != nullptr) *markers = std::move(g.segment_markers);
-  return std::move(g.segments);
+  return detail::FileText(path).parse([&](std::string_view text) {
+    const std::vector<detail::Line> lines = detail::split_lines(text, 1);
+    Pslg g;
+    g.points.resize(points);
+    g.first_index = first_index;
+    const std::size_t at = detail::read_segments(path, lines, 0, 1, g);
+    if (at != lines.size())
+      detail::fail_line(path, lines[at].number, "unexpected line " + detail::quoted(lines[at].text));
+    if (markers != nullptr) *markers = std::move(g.segment_markers);
+    return std::move(g.segments);
+  });
 }
 
 EdgeText parse_edge_text(std::string_view text, const std::string& name, std::size_t points, int first_index) {
@@ -275,8 +280,8 @@ EdgeText parse_edge_text(std::string_view text, const std::string& name, std::si
 }
 
 std::vector<double> read_area_file(const std::string& path, std::size_t triangles, int first_index) {
-  const detail::FileText text(path);
-  return parse_area_text(text.view(), path, triangles, first_index);
+  return detail::FileText(path).parse(
+      [&](std::string_view text) { return parse_area_text(text, path, triangles, first_index); });
 }
 
 std::vector<double> parse_area_text(std::string_view text, const std::string& name,
@@ -316,8 +321,8 @@ std::vector<double> parse_area_text(std::string_view text, const std::string& na
 
 std::vector<VertexId> read_elements(const std::string& path, int first_index, std::vector<double>& attributes,
                                     std::vector<VertexId>& middles, unsigned threads) {
-  const detail::FileText text(path);
-  return detail::read_ele(path, text.view(), first_index, threads, &attributes, &middles);
+  return detail::FileText(path).parse(
+      [&](std::string_view text) { return detail::read_ele(path, text, first_index, threads, &attributes, &middles); });
 }
 
 void write_mesh_svg(const std::string& path, std::span<const Point> points, const Triangulation& t,

@@ -264,6 +264,11 @@ class Writer {
 
   void commit() {
     close();
+    // An input mapped where it lay shrank while it was read: what was made of it is not kept.
+    if (detail::any_mapping_shrank())
+      throw IoError("cannot write " + target_.path +
+                    ": an input file shrank while it was read (truncated or "
+                    "rewritten by another process); nothing is written");
     errno = 0;
     if (!target_.in_place && std::rename(tmp_.c_str(), target_.path.c_str()) != 0) fail(errno);
     committed_ = true;
