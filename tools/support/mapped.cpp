@@ -3,7 +3,7 @@
 // here maps a page of zeros there instead and marks the mapping, so that the reader finishes (on
 // zeros where the file's text was) and its caller throws IoError, saying the file changed while
 // it was read, rather than the process dying of the signal. Only the faults in a mapping made
-// here are taken; any other SIGBUS ends the process as it would have.
+// here are taken; any other SIGBUS goes to the action there was before (a tool's message).
 #include <signal.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -26,6 +26,7 @@ struct Watched {
 constexpr int kWatched = 64;  // a reader maps one file at a time; a run, a few
 Watched watched[kWatched];
 std::atomic<bool> any_shrank{false};
+struct sigaction before {};  // the action this handler took the place of (a tool's, or the default)
 
 void on_sigbus(int, siginfo_t* info, void*) {
   const auto at = reinterpret_cast<std::uintptr_t>(info->si_addr);
@@ -40,8 +41,9 @@ void on_sigbus(int, siginfo_t* info, void*) {
     any_shrank.store(true, std::memory_order_relaxed);
     return;
   }
-  // Not a mapping of ours: the default action, when the access is tried again.
-  ::signal(SIGBUS, SIG_DFL);
+  // Not a mapping of ours: the action there was before (the tool's message, or the default),
+  // when the access is tried again.
+  ::sigaction(SIGBUS, &before, nullptr);
 }
 
 void install() {
@@ -51,7 +53,7 @@ void install() {
     sa.sa_sigaction = on_sigbus;
     sa.sa_flags = SA_SIGINFO | SA_RESTART;
     ::sigemptyset(&sa.sa_mask);
-    ::sigaction(SIGBUS, &sa, nullptr);
+    ::sigaction(SIGBUS, &sa, &before);
   });
 }
 
