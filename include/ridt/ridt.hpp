@@ -211,6 +211,13 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A file that cannot be read or written, or malformed content; the message names the file
+/// (the out-of-core triangulation, and the tools' readers and writers).
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Thrown before a call starts its work when it would need more memory than there is: the
 /// message names what it needs and what there is, and what would fit where something would.
 class MemoryError : public InputError {

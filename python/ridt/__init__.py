@@ -13,7 +13,7 @@ broken by a fixed symbolic perturbation), with its whole convex hull, the same f
 and thread count.
 """
 
-from ._api import available_memory, check, estimate_memory, triangulate
+from ._api import available_memory, check, estimate_memory, triangulate, triangulate_out_of_core
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._constrained import ConstrainedDelaunay, RefinementWarning
 from ._delaunay import Delaunay, DegenerateInputWarning
@@ -40,6 +40,7 @@ __all__ = [
     "available_memory",
     "cached_memory",
     "estimate_memory",
+    "triangulate_out_of_core",
     "check",
     "set_memory_cache_limit",
     "Voronoi",

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import math
 import numbers
-from typing import Any, Callable, Optional, Tuple, Union
+import os
+from typing import Any, Callable, Dict, Optional, Tuple, Union
 
 import numpy as np
 
@@ -191,6 +192,24 @@ def estimate_memory(n: int, *, method: str = "auto", threads: int = 1, order: st
     space, its copy of the points and the result; not the caller's array)."""
     return _core.estimate_memory(int(n), _choice(method, "method", METHODS), thread_count(threads),
                                  _choice(order, "order", ORDERS), _choice(locate, "locate", LOCATES))
+
+
+def triangulate_out_of_core(input: str, output: str, *, memory_limit: Optional[int] = None, threads: int = 0,
+                            column_points: int = 0) -> Dict[str, Any]:
+    """The Delaunay triangulation of a point file larger than memory (as ``ridt triangulate
+    --out-of-core``): `input` a ``.bin`` file (pairs of float64 x, y), bucketed on disk into
+    columns of cells, triangulated strip by strip within `memory_limit` bytes (None: a quarter
+    of what is available), each strip checked exactly against the columns it did not load, so
+    that the union of the strips' triangles is the triangulation of the whole set. Writes the
+    parts and their index, `output` (``OUT.parts``; each part ``OUT.k-of-S.bin``, uint32 input
+    indices, three a triangle from its smallest), which ``ridt check`` and the tool's readers
+    take. Returns the run's counts and times. OSError where a file cannot be read or written
+    (no part is left behind), ValueError for bad input or a limit too small for a strip."""
+    limit = 0 if memory_limit is None else int(memory_limit)
+    if memory_limit is not None and limit <= 0:
+        raise ValueError(f"memory_limit must be a positive number of bytes; got {memory_limit!r}")
+    return _core.triangulate_out_of_core(os.fspath(input), os.fspath(output), limit, thread_count(threads),
+                                         int(column_points))
 
 
 def available_memory() -> int:

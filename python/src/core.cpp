@@ -332,6 +332,7 @@ void bind_voronoi(py::module_& m) {
 PYBIND11_MODULE(_core, m) {
   m.doc() = "ridt's C++ library (use the ridt package, which checks and converts arguments)";
   py::register_exception<ridt::InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<ridt::IoError>(m, "IoError", PyExc_OSError);
   // Registered after InputError, whose kind it is, so that it is tried first.
   py::register_exception<ridt::MemoryError>(m, "RidtMemoryError", PyExc_MemoryError);
   py::dict names;

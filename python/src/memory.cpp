@@ -1,10 +1,12 @@
 // ridt._core's memory calls: the estimate a triangulation checks before it starts, what the
-// system can give, and the blocks kept between calls.
+// system can give, the blocks kept between calls, and the out-of-core triangulation of a point
+// file larger than memory.
 #include <pybind11/pybind11.h>
 
 #include <memory>
 #include <string>
 
+#include "ridt/out_of_core.hpp"
 #include "ridt/ridt.hpp"
 
 namespace py = pybind11;
@@ -23,6 +25,26 @@ void bind_memory(py::module_& m) {
       },
       py::arg("n"), py::arg("method"), py::arg("threads"), py::arg("order"), py::arg("locate"));
   m.def("available_memory", &ridt::available_memory);
+  m.def(
+      "triangulate_out_of_core",
+      [](const std::string& input, const std::string& output, std::size_t memory_limit, unsigned threads,
+         std::uint64_t column_points) {
+        ridt::OutOfCoreOptions o;
+        o.input = input, o.output = output, o.memory_limit = memory_limit, o.threads = threads;
+        o.column_points = column_points;
+        ridt::OutOfCoreStats st;
+        {
+          py::gil_scoped_release release;
+          st = ridt::triangulate_out_of_core(o);
+        }
+        py::dict d;
+        d["points"] = st.points, d["triangles"] = st.triangles, d["columns"] = st.columns, d["rows"] = st.rows;
+        d["strips"] = st.strips, d["loaded"] = st.loaded, d["retries"] = st.retries;
+        d["time_bucket_s"] = st.time_bucket_s, d["time_triangulate_s"] = st.time_triangulate_s;
+        d["time_check_s"] = st.time_check_s, d["time_write_s"] = st.time_write_s;
+        return d;
+      },
+      py::arg("input"), py::arg("output"), py::arg("memory_limit"), py::arg("threads"), py::arg("column_points"));
   m.def("set_memory_cache_limit", &ridt::set_memory_cache_limit, py::arg("bytes"));
   m.def("cached_memory", &ridt::cached_memory);
   // ridt::MemoryReuse as a context manager: `with MemoryReuse(bytes): ...`.

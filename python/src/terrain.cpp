@@ -61,7 +61,9 @@ Doubles dem(const Doubles& points, const ridt::Triangulation& t, const Doubles& 
 }  // namespace
 
 void bind_terrain(py::module_& m) {
-  py::register_exception<ridt::io::IoError>(m, "IoError", PyExc_ValueError);
+  // Registered after the library's IoError (an OSError), whose kind it is, so that it is tried
+  // first: a malformed file is a ValueError.
+  py::register_exception<ridt::io::IoError>(m, "FileError", PyExc_ValueError);
   m.def("read_las", &read_las, py::arg("path"), py::arg("classes"), py::arg("returns"), py::arg("withheld"));
   m.def("dem", &dem, py::arg("points"), py::arg("triangulation"), py::arg("z"), py::arg("x0"), py::arg("y1"),
         py::arg("cell"), py::arg("nx"), py::arg("ny"), py::arg("method"), py::arg("max_edge"), py::arg("nodata"),

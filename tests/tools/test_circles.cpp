@@ -1,5 +1,5 @@
 // The widened circumcircles that ridt-mpi and the out-of-core strips choose cells and ranks by
-// (tools/support/circles.hpp): every point that the exact in-circle test puts inside or on the
+// (ridt/regions.hpp): every point that the exact in-circle test puts inside or on the
 // circle lies in the widened disc, for triangles from fat to nearly flat at scales from 1e-300
 // to 1e300; the disc of a flat triangle is not widened far beyond its error.
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "circles.hpp"
 #include "ridt/predicates.hpp"
+#include "ridt/regions.hpp"
 
 namespace ridt::test {
 namespace {
@@ -29,7 +29,7 @@ TEST(Circles, TheWidenedDiscHoldsEveryPointTheExactTestFindsInside) {
     if (turn == 0) continue;
     const Point& p = turn > 0 ? b : c;
     const Point& q = turn > 0 ? c : b;
-    const io::Disc d = io::circle(a, p, q);
+    const regions::Disc d = regions::circle(a, p, q);
     if (!std::isfinite(d.r)) continue;
     const double radius = std::hypot(a.x - d.x, a.y - d.y);
     for (int k = 0; k < 16; ++k) {

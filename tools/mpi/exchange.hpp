@@ -109,7 +109,7 @@ class Sent {
   std::vector<std::uint32_t> fresh_;
 };
 
-using io::circle;
+using regions::circle;
 
 inline Disc circle_of(const Request& q) { return circle({q.a, q.b}, {q.c, q.d}, {q.e, q.f}); }
 
@@ -227,7 +227,7 @@ class Relevant {
   std::vector<std::uint8_t> mark_;
 };
 
-using io::hull_of_sorted;
+using regions::hull_of_sorted;
 
 inline std::vector<std::vector<Point>> gather_hulls(Mpi& mpi, const std::vector<Site>& mine) {
   std::vector<double> flat;

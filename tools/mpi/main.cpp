@@ -127,7 +127,7 @@ struct Rank {
 // Own points by input index, duplicates dropped (equal points share a box, so a rank sees all
 // of a group; the smallest index stands for it, as in one process), and the hulls.
 void take_own(Rank& r, std::vector<Site> sites) {
-  std::sort(sites.begin(), sites.end(), io::by_place);
+  std::sort(sites.begin(), sites.end(), regions::by_place);
   sites.erase(
       std::unique(sites.begin(), sites.end(), [](const Site& p, const Site& q) { return p.x == q.x && p.y == q.y; }),
       sites.end());

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "circles.hpp"
 #include "io.hpp"
 #include "ridt/predicates.hpp"
+#include "ridt/regions.hpp"
 #include "ridt/ridt.hpp"
 #include "writer.hpp"
 
@@ -32,8 +32,8 @@ using ridt::Point;
 using Clock = std::chrono::steady_clock;
 
 using io::Box;
-using io::Disc;
-using io::Site;
+using regions::Disc;
+using regions::Site;
 
 // What a rank asks another for: its points inside or on the circumcircle of the
 // counter-clockwise triangle (a, b), (c, d), (e, f) (kind 0), its neighbour across the line

@@ -66,7 +66,7 @@ int run(const std::vector<Command>& commands) {
   try {
     for (const Command& c : commands)
       if (*c.app) return c.run();
-  } catch (const ridt::io::IoError& e) {
+  } catch (const ridt::IoError& e) {
     std::fprintf(stderr, "ridt: error: %s\n", e.what());
     return kExitUsage;
   } catch (const ridt::InputError& e) {

@@ -5,7 +5,8 @@
 #include <sstream>
 
 #include "command.hpp"
-#include "out_of_core.hpp"
+#include "ridt/out_of_core.hpp"
+#include "temporaries.hpp"
 
 namespace ridt::tool {
 namespace {
@@ -107,7 +108,8 @@ Options options(const Args& a) {
   return o;
 }
 
-// --out-of-core: strip by strip within the memory limit (tools/support/out_of_core.hpp).
+// --out-of-core: strip by strip within the memory limit (the library's, ridt/out_of_core.hpp);
+// the parts it writes are removed where a signal stops the tool, as its temporary files are.
 int run_out_of_core(const Args& a) {
   if (a.method != "auto" || a.order != "brio" || a.locate != "auto" || a.bounding != "symbolic" || a.profile ||
       a.seed_given || a.k_given || a.paper_locking || a.no_thread_timing)
@@ -116,7 +118,7 @@ int run_out_of_core(const Args& a) {
         "--no-thread-timing or --profile: each strip is triangulated by the walking kernel in an order of its own");
   if (a.output.empty()) throw InputError("--out-of-core needs an output, -o OUT.parts");
   if (a.stats != "" && a.stats != "json") throw InputError("--out-of-core prints its stats as json only");
-  io::OutOfCoreOptions o;
+  OutOfCoreOptions o;
   o.input = a.input;
   o.output = a.output;
   if (!a.memory_limit.empty()) o.memory_limit = byte_size(a.memory_limit, "--memory-limit");
@@ -125,7 +127,9 @@ int run_out_of_core(const Args& a) {
   ProgressLine progress;
   if (progress.on()) o.progress = [&](const char* phase, double done) { progress.show(phase, done); };
   const auto t0 = std::chrono::steady_clock::now();
-  const io::OutOfCoreStats st = io::triangulate_out_of_core(o);
+  std::vector<io::TemporaryName> parts;
+  o.wrote = [&parts](const std::string& part) { parts.emplace_back(part); };
+  const OutOfCoreStats st = triangulate_out_of_core(o);
   progress.clear();
   if (a.stats.empty()) return 0;
   std::printf(

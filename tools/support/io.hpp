@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ridt/regions.hpp"
 #include "ridt/ridt.hpp"
 #include "ridt/voronoi.hpp"
 
@@ -44,10 +45,10 @@ void forget_shrunk_mappings();
 namespace ridt::io {
 
 /// A file that cannot be read or written, or malformed content; the message names the file
-/// and, for text, the line.
-class IoError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
+/// and, for text, the line. A kind of the library's IoError (ridt.hpp), which the library
+/// throws for files it cannot read or write alone: Python raises this one as ValueError.
+struct IoError : ridt::IoError {
+  using ridt::IoError::IoError;
 };
 
 /// Points read from a file. A .bin file is mapped into memory as it lies (on a little-endian
@@ -296,17 +297,8 @@ class SortedOutput {
   std::atomic<std::size_t> triangles_{0};
 };
 
-/// An axis-parallel box [x0, x1] x [y0, y1].
-struct Box {
-  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-
-  /// The distance from (x, y) to the box (0 inside), without overflow or underflow.
-  double distance(double x, double y) const {
-    const double dx = x < x0 ? x0 - x : x > x1 ? x - x1 : 0;
-    const double dy = y < y0 ? y0 - y : y > y1 ? y - y1 : 0;
-    return std::hypot(dx, dy);
-  }
-};
+/// An axis-parallel box (the library's, ridt/regions.hpp).
+using Box = ridt::regions::Box;
 
 /// The points' bounding box grown by `margin` of its size on every side (a box of one point
 /// or a line grows by 1 where it is flat).

@@ -1,6 +1,6 @@
-// The out-of-core triangulation (out_of_core.hpp): strips of columns triangulated one after
-// another, each checked exactly against the columns it did not load.
-#include "out_of_core.hpp"
+// The out-of-core triangulation (ridt/out_of_core.hpp): strips of columns triangulated one
+// after another, each checked exactly against the columns it did not load.
+#include "ridt/out_of_core.hpp"
 
 #include <unistd.h>
 
@@ -10,14 +10,21 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "cells.hpp"
-#include "io.hpp"
-#include "io_common.hpp"
+#include "regions/cells.hpp"
+#include "regions/files.hpp"
 #include "ridt/predicates.hpp"
-#include "writer.hpp"
+#include "ridt/regions.hpp"
 
-namespace ridt::io {
+namespace ridt {
 namespace {
+
+using detail::CellStore;
+using detail::FileOut;
+using regions::Box;
+using regions::by_place;
+using regions::Disc;
+using regions::may_meet;
+using regions::Site;
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -73,7 +80,7 @@ class Checker {
   // (a, b, c). Only the columns the widened circle reaches are looked at, outward from the
   // loaded ones, and in them only the cells it meets.
   void circle(const Strip& s, const Point& a, const Point& b, const Point& c, std::vector<Site>& found) {
-    const Disc d = io::circle(a, b, c);
+    const Disc d = regions::circle(a, b, c);
     auto look = [&](std::size_t k) {
       // The rows the disc meets over the column's width.
       const Box column = cells_.cell_box(k, 0);
@@ -183,8 +190,9 @@ bool check(Strip& s, const Triangulation& t, const CellStore& cells, std::vector
 
 // The triangles strip s keeps (those whose smallest input index it owns), each from that
 // index, as input indices: written to its part (.bin, uint32 triples, in one pass).
-std::uint64_t write_part(const std::string& path, const Strip& s, const Triangulation& t) {
-  Writer w(path);
+std::uint64_t write_part(const std::string& path, const Strip& s, const Triangulation& t,
+                         const std::function<void(const std::string&)>& announce) {
+  FileOut w(path, announce);
   std::uint64_t count = 0;
   for (std::size_t k = 0; k < t.size(); ++k) {
     const VertexId* v = &t.triangles[3 * k];
@@ -200,13 +208,16 @@ std::uint64_t write_part(const std::string& path, const Strip& s, const Triangul
   return count;
 }
 
-// The parts written so far, removed unless the whole run succeeds (by a signal too, as
-// temporary files are: temporaries.hpp).
+// The parts written so far, removed unless the whole run succeeds; each told to the caller
+// (OutOfCoreOptions::wrote), which may remove them where a signal stops the run.
 struct Parts {
   std::vector<std::string> written;
-  std::vector<TemporaryName> names;
+  const std::function<void(const std::string&)>& wrote;
   bool done = false;
-  void add(const std::string& part) { written.push_back(part), names.emplace_back(part); }
+  void add(const std::string& part) {
+    written.push_back(part);
+    if (wrote) wrote(part);
+  }
   ~Parts() {
     if (done) return;
     for (const std::string& p : written) std::remove(p.c_str());
@@ -226,7 +237,8 @@ std::size_t strip_points(std::size_t limit, unsigned threads) {
 // Triangulates strip s (owned columns [own_lo, own_hi)) until it knows its triangles, and
 // writes them to `part`.
 std::uint64_t run_strip(Strip& s, const CellStore& cells, std::vector<Checker>& checkers, const Options& o,
-                        const std::string& part, OutOfCoreStats& st) {
+                        const std::string& part, OutOfCoreStats& st,
+                        const std::function<void(const std::string&)>& o_wrote) {
   s.lo = s.own_lo > 0 ? s.own_lo - 1 : 0;
   s.hi = std::min(cells.columns(), s.own_hi + 1);
   for (Checker& c : checkers) c.reset();  // the cells they read stay good for the strip's next tries
@@ -253,7 +265,7 @@ std::uint64_t run_strip(Strip& s, const CellStore& cells, std::vector<Checker>& 
     st.time_check_s += since(t0);
     if (known) {
       t0 = Clock::now();
-      const std::uint64_t count = write_part(part, s, t);
+      const std::uint64_t count = write_part(part, s, t, o_wrote);
       st.time_write_s += since(t0);
       return count;
     }
@@ -291,7 +303,7 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
   o.method = threads > 1 ? Method::Partition : Method::Serial;
   o.threads = threads;
   std::vector<Checker> checkers(threads, Checker(cells, limit / 16 / threads));
-  Parts parts;
+  Parts parts{{}, options.wrote};
   auto name = [&](std::size_t k) {
     return out.stem().string() + "." + std::to_string(k) + "-of-" + std::to_string(st.strips) + ".bin";
   };
@@ -301,10 +313,11 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
     s.own_lo = k * kOwnedColumns, s.own_hi = std::min(cells.columns(), (k + 1) * kOwnedColumns);
     const std::string part = (out.parent_path() / name(k)).string();
     // Points all on one line (their hull has no corner but the two ends) have no triangle.
-    st.triangles += cells.hull().size() < 3 ? write_part(part, s, {}) : run_strip(s, cells, checkers, o, part, st);
+    st.triangles += cells.hull().size() < 3 ? write_part(part, s, {}, options.wrote)
+                                            : run_strip(s, cells, checkers, o, part, st, options.wrote);
     parts.add(part);
   }
-  Writer index(options.output);
+  FileOut index(options.output, options.wrote);
   index.put("ridt parts " + std::to_string(st.strips) + "\n");
   for (std::size_t k = 0; k < st.strips; ++k) index.put(name(k) + "\n");
   index.commit();
@@ -312,4 +325,4 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
   return st;
 }
 
-}  // namespace ridt::io
+}  // namespace ridt

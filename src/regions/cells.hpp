@@ -1,5 +1,5 @@
 // A .bin point file bucketed on disk into cells, for the out-of-core triangulation
-// (out_of_core.hpp): columns of about equal counts, each cut into rows, every cell's points in
+// (ridt/out_of_core.hpp): columns of about equal counts, each cut into rows, every cell's points in
 // input order, one file of (x, y, input index) records laid out column by column.
 #pragma once
 
@@ -8,9 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "circles.hpp"
+#include "ridt/regions.hpp"
 
-namespace ridt::io {
+namespace ridt::detail {
+
+using regions::Box;
+using regions::by_place;
+using regions::hull_of_sorted;
+using regions::Site;
 
 // Cuts of a line, and which stretch between them a value falls in: the number of cuts at or
 // below it, found through a table of equal bins (each the count of cuts at its start) and a
@@ -99,4 +104,4 @@ class CellStore {
   int fd_ = -1;
 };
 
-}  // namespace ridt::io
+}  // namespace ridt::detail

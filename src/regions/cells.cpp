@@ -2,7 +2,7 @@
 // read a block at a time (a mapping would count the file's pages in the process's memory): the
 // extent, the finite check and a sample; the count of each cell; the records, written through
 // a small buffer a cell at the place the counts give them.
-#include "cells.hpp"
+#include "regions/cells.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -12,10 +12,9 @@
 #include <cstring>
 #include <memory>
 
-#include "io.hpp"
-#include "io_common.hpp"
+#include "regions/files.hpp"
 
-namespace ridt::io {
+namespace ridt::detail {
 namespace {
 
 constexpr std::size_t kBlock = std::size_t{1} << 20;  // points read at a time (16 MiB)
@@ -33,11 +32,12 @@ template <class Visit>
 void each_block(const std::string& path, Visit&& visit) {
   static_assert(std::endian::native == std::endian::little, "the .bin format is little-endian");
   const Fd in{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (in.fd < 0) throw IoError("cannot read " + path + ": " + detail::errno_text(errno));
+  if (in.fd < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
   const off_t bytes = ::lseek(in.fd, 0, SEEK_END);
-  if (bytes < 0) throw IoError("cannot read " + path + ": " + detail::errno_text(errno));
+  if (bytes < 0) throw IoError("cannot read " + path + ": " + errno_text(errno));
   if (bytes % 16 != 0)
-    detail::fail_file(path, "size " + std::to_string(bytes) + " bytes is not a multiple of 16 (pairs of float64 x, y)");
+    throw InputError(path + ": size " + std::to_string(bytes) +
+                     " bytes is not a multiple of 16 (pairs of float64 x, y)");
   const std::unique_ptr<Point[]> block(new Point[kBlock]);
   const auto n = static_cast<std::uint64_t>(bytes) / 16;
   for (std::uint64_t first = 0; first < n; first += kBlock) {
@@ -45,7 +45,7 @@ void each_block(const std::string& path, Visit&& visit) {
     auto* to = reinterpret_cast<char*>(block.get());
     for (std::size_t done = 0; done < count * 16;) {
       const ssize_t got = ::pread(in.fd, to + done, count * 16 - done, static_cast<off_t>(first * 16 + done));
-      if (got <= 0) throw IoError("cannot read " + path + ": " + (got == 0 ? "it shrank" : detail::errno_text(errno)));
+      if (got <= 0) throw IoError("cannot read " + path + ": " + (got == 0 ? "it shrank" : errno_text(errno)));
       done += static_cast<std::size_t>(got);
     }
     visit(first, std::span<const Point>(block.get(), count));
@@ -79,7 +79,7 @@ CellStore::CellStore(const std::string& input, const std::string& scratch, std::
   cut(input, column_points);
   count(input);
   fd_ = ::open(scratch.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd_ < 0) throw IoError("cannot write " + scratch + ": " + detail::errno_text(errno));
+  if (fd_ < 0) throw IoError("cannot write " + scratch + ": " + errno_text(errno));
   ::unlink(scratch.c_str());  // the open descriptor keeps it until the store goes
   write(input, buffer_bytes, progress);
   hulls();
@@ -100,9 +100,8 @@ void CellStore::cut(const std::string& input, std::uint64_t column_points) {
     for (std::size_t i = 0; i < block.size(); ++i) {
       const Point& p = block[i];
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        detail::fail_file(input,
-                          "point " + std::to_string(at + i) + " has " +
-                              (std::isnan(p.x) || std::isnan(p.y) ? "a NaN" : "an infinite") + " coordinate");
+        throw InputError(input + ": point " + std::to_string(at + i) + " has " +
+                         (std::isnan(p.x) || std::isnan(p.y) ? "a NaN" : "an infinite") + " coordinate");
       extent_ = {std::min(extent_.x0, p.x), std::min(extent_.y0, p.y), std::max(extent_.x1, p.x),
                  std::max(extent_.y1, p.y)};
       if ((at + i) % stride == 0) {
@@ -153,7 +152,7 @@ void CellStore::write(const std::string& input, std::size_t buffer_bytes, const 
     for (std::size_t done = 0; done < bytes;) {
       const ssize_t put =
           ::pwrite(fd_, from + done, bytes - done, static_cast<off_t>(next[cell] * sizeof(Site) + done));
-      if (put <= 0) throw IoError("cannot write " + scratch_ + ": " + detail::errno_text(put == 0 ? ENOSPC : errno));
+      if (put <= 0) throw IoError("cannot write " + scratch_ + ": " + errno_text(put == 0 ? ENOSPC : errno));
       done += static_cast<std::size_t>(put);
     }
     next[cell] += held[cell];
@@ -202,10 +201,9 @@ void CellStore::read(std::uint64_t first, std::uint64_t count, std::vector<Site>
   for (std::size_t done = 0; done < count * sizeof(Site);) {
     const ssize_t got =
         ::pread(fd_, to + done, count * sizeof(Site) - done, static_cast<off_t>(first * sizeof(Site) + done));
-    if (got <= 0)
-      throw IoError("cannot read " + scratch_ + ": " + (got == 0 ? "it shrank" : detail::errno_text(errno)));
+    if (got <= 0) throw IoError("cannot read " + scratch_ + ": " + (got == 0 ? "it shrank" : errno_text(errno)));
     done += static_cast<std::size_t>(got);
   }
 }
 
-}  // namespace ridt::io
+}  // namespace ridt::detail

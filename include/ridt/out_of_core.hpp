@@ -1,4 +1,5 @@
-// The Delaunay triangulation of a point file larger than memory (`ridt triangulate --out-of-core`).
+// The Delaunay triangulation of a point file larger than memory (`ridt triangulate --out-of-core`,
+// Python's ridt.triangulate_out_of_core).
 //
 // The points are bucketed on disk into cells: columns of about equal counts (cut at quantiles
 // of a sample's x), each cut into rows (quantiles of y). Strips of a few columns are then
@@ -20,7 +21,7 @@
 #include <functional>
 #include <string>
 
-namespace ridt::io {
+namespace ridt {
 
 struct OutOfCoreOptions {
   std::string input;  ///< a .bin point file
@@ -32,6 +33,10 @@ struct OutOfCoreOptions {
   std::uint64_t column_points = 0;
   /// Called now and then with a phase ("bucketing", "triangulating") and the fraction done.
   std::function<void(const char*, double)> progress;
+  /// Called with each file the run writes (each part, and the temporary name each is written
+  /// under before it is renamed) as soon as it is there: for a caller that removes them where
+  /// a signal stops it. The run removes them itself where it fails.
+  std::function<void(const std::string&)> wrote;
 };
 
 struct OutOfCoreStats {
@@ -48,4 +53,4 @@ struct OutOfCoreStats {
 /// leaves no part behind) on bad input, a full disk or a limit too small for a strip.
 OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options);
 
-}  // namespace ridt::io
+}  // namespace ridt

@@ -1,6 +1,7 @@
-// Geometry that the tools' exact region exchanges share (ridt-mpi's ranks, the out-of-core
-// strips): a point with its input index, circumcircles widened so that a decision made from
-// them in floating point never leaves out a point the exact test would find, and exact hulls.
+// What an exact exchange between regions of the plane needs (ridt-mpi's ranks, the out-of-core
+// strips: ridt/out_of_core.hpp): a point with its input index, circumcircles widened so that a
+// decision made from them in floating point never leaves out a point the exact in-circle test
+// would find, and exact convex hulls.
 #pragma once
 
 #include <algorithm>
@@ -9,38 +10,49 @@
 #include <limits>
 #include <vector>
 
-#include "io.hpp"
 #include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
 
-namespace ridt::io {
+namespace ridt::regions {
 
-// A point and its input index.
+/// An axis-parallel box [x0, x1] x [y0, y1].
+struct Box {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+  /// The distance from (x, y) to the box (0 inside), without overflow or underflow.
+  double distance(double x, double y) const {
+    const double dx = x < x0 ? x0 - x : x > x1 ? x - x1 : 0;
+    const double dy = y < y0 ? y0 - y : y > y1 ? y - y1 : 0;
+    return std::hypot(dx, dy);
+  }
+};
+
+/// A point and its input index.
 struct Site {
   double x, y;
   std::uint64_t id;
 };
 static_assert(sizeof(Site) == 24);
 
-// A disc in the plane (r infinite: the whole plane).
+/// A disc in the plane (r infinite: the whole plane).
 struct Disc {
   double x, y, r;
 };
 
-// The circumcircle of (a, b, c), widened so that it holds every point the exact in-circle
-// test finds inside or on it; the whole plane when the working precision cannot place it.
-// Computed relative to a and scaled by the triangle's size, so that huge and tiny coordinates
-// neither overflow nor underflow. Only for choosing whom to ask and where to look: which
-// points are inside is decided exactly.
-//
-// The widening bounds the centre's error. In the scaled coordinates (each within two ulps of
-// its exact value, none above 1 in size) the centre u solves a 2 x 2 system with determinant
-// D = d / 2: errors of its entries and right side move u by at most about
-// (12 + 8 |u|) eps / |D|, and the rounding of the formula (D's three operations, each
-// numerator's four) by about (16 + 6 |u|) eps / |D| more, eps the working precision's unit
-// roundoff; the bound below is four times their sum, with the rounding of the centre to
-// double. So a flat triangle's huge circle grows by its error, not by a share of its radius,
-// and does not cover rows of cells it cannot reach.
+/// The circumcircle of (a, b, c), widened so that it holds every point the exact in-circle
+/// test finds inside or on it; the whole plane when the working precision cannot place it.
+/// Computed relative to a and scaled by the triangle's size, so that huge and tiny coordinates
+/// neither overflow nor underflow. Only for choosing whom to ask and where to look: which
+/// points are inside is decided exactly.
+///
+/// The widening bounds the centre's error. In the scaled coordinates (each within two ulps of
+/// its exact value, none above 1 in size) the centre u solves a 2 x 2 system with determinant
+/// D = d / 2: errors of its entries and right side move u by at most about
+/// (12 + 8 |u|) eps / |D|, and the rounding of the formula (D's three operations, each
+/// numerator's four) by about (16 + 6 |u|) eps / |D| more, eps the working precision's unit
+/// roundoff; the bound below is four times their sum, with the rounding of the centre to
+/// double. So a flat triangle's huge circle grows by its error, not by a share of its radius,
+/// and does not cover rows of cells it cannot reach.
 template <class F>
 Disc circle_in(const Point& a, const Point& b, const Point& c, F& determinant) {
   constexpr Disc kEverything{0, 0, INFINITY};
@@ -65,8 +77,8 @@ Disc circle_in(const Point& a, const Point& b, const Point& c, F& determinant) {
   return {centre.x, centre.y, r};
 }
 
-// In double, and again in long double (x86's 64-bit significand: an error 2048 times smaller)
-// where the triangle is flat enough for the error to matter.
+/// In double, and again in long double (x86's 64-bit significand: an error 2048 times smaller)
+/// where the triangle is flat enough for the error to matter.
 inline Disc circle(const Point& a, const Point& b, const Point& c) {
   double d = 0;
   const Disc quick = circle_in<double>(a, b, c, d);
@@ -75,9 +87,9 @@ inline Disc circle(const Point& a, const Point& b, const Point& c) {
   return circle_in<long double>(a, b, c, ld);
 }
 
-// Whether the disc may meet the convex polygon `hull` (counter-clockwise; one or two points:
-// a point or a segment): false only when its centre, outside the polygon, is farther than its
-// radius from every edge, with a margin for rounding. Anything not finite answers true.
+/// Whether the disc may meet the convex polygon `hull` (counter-clockwise; one or two points:
+/// a point or a segment): false only when its centre, outside the polygon, is farther than its
+/// radius from every edge, with a margin for rounding. Anything not finite answers true.
 inline bool may_meet(const Disc& d, const std::vector<Site>& hull) {
   if (hull.empty()) return false;
   if (!std::isfinite(d.r)) return true;
@@ -98,13 +110,13 @@ inline bool may_meet(const Disc& d, const std::vector<Site>& hull) {
   return inside || nearest <= d.r * (1 + 1e-9);
 }
 
-// The order hull_of_sorted takes: by x, then y, then input index (equal points by index).
+/// The order hull_of_sorted takes: by x, then y, then input index (equal points by index).
 inline bool by_place(const Site& u, const Site& v) {
   return u.x != v.x ? u.x < v.x : u.y != v.y ? u.y < v.y : u.id < v.id;
 }
 
-// The convex hull of points sorted by x, then y (Andrew's chain, exact orientation tests),
-// counter-clockwise, collinear points left out.
+/// The convex hull of points sorted by x, then y (Andrew's chain, exact orientation tests),
+/// counter-clockwise, collinear points left out.
 inline std::vector<Site> hull_of_sorted(const std::vector<Site>& s) {
   if (s.size() < 3) return s;
   std::vector<std::uint32_t> h(2 * s.size());  // indices: a fraction of the points' size
@@ -122,4 +134,4 @@ inline std::vector<Site> hull_of_sorted(const std::vector<Site>& s) {
   return hull;
 }
 
-}  // namespace ridt::io
+}  // namespace ridt::regions
