@@ -690,6 +690,16 @@ expect 2 "dem without a resolution" -- "$ridt" dem "$dir/t.csv" -o "$dir/x.tif"
 absent "$dir/x.tif"
 expect 2 "dem to an unknown format" -- "$ridt" dem "$dir/t.csv" -o "$dir/x.jpg" --resolution 10
 stderr_has "unknown DEM extension"; absent "$dir/x.jpg"
+stderr_has "(use .png, .tif, .tiff or .img)"
+expect 2 "a TIN of an unknown format" -- "$ridt" tin "$dir/t.csv" -o "$dir/x.stl"
+stderr_has "unknown TIN extension '.stl' (use .ply, .obj, .json, .gpkg"; absent "$dir/x.stl"
+expect 2 "LAZ" -- "$ridt" tin "$dir/t.laz" -o "$dir/x.ply"
+stderr_has "laszip"
+# The registry of formats: every role, each format read or written by the role's command.
+expect 0 "formats" -- "$ridt" formats
+stdout_has "^terrain in (tin, dem)"; stdout_has "^  .gpkg .shp .geojson"
+expect 0 "formats --markdown" -- "$ridt" formats --markdown
+stdout_has "^| DEM out (dem) | \`.png\` |"
 printf 'a,b\n1,2\n' >"$dir/noz.csv"
 expect 2 "a table without z" -- "$ridt" dem "$dir/noz.csv" -o "$dir/x.tif" --resolution 1
 stderr_has "no z column"; absent "$dir/x.tif"

@@ -824,7 +824,7 @@ TEST_F(IoTest, TriangulationExtensions) {
        {"a.ele", "a.neigh", "a.off", "a.ply", "a.obj", "a.svg", "a.bin", "dir.x/b.c.ele", "out.ELE", "a.Svg"})
     EXPECT_EQ(triangulation_needs_neighbors(ok), ok == "a.neigh" || ok == "a.svg" || ok == "a.Svg") << ok;
   EXPECT_EQ(error_of([] { triangulation_needs_neighbors("out.xyz"); }),
-            "unknown output extension '.xyz' (use .ele, .neigh, .off, .ply, .obj, .svg or .bin)");
+            "unknown output extension '.xyz' (use .ele, .neigh, .bin, .ply, .obj, .off or .svg)");
   for (const char* bad : {"out", "out.txt", "out.node", "ele", "dir.ele/out"}) {
     SCOPED_TRACE(bad);
     EXPECT_TRUE(Has(error_of([&] { triangulation_needs_neighbors(bad); }), "unknown output extension"));

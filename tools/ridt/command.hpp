@@ -28,6 +28,7 @@ Command add_triangulate(CLI::App& app);
 Command add_generate(CLI::App& app);
 Command add_check(CLI::App& app);
 Command add_voronoi(CLI::App& app);
+Command add_formats(CLI::App& app);
 Command add_interpolate(CLI::App& app);
 Command add_mesh(CLI::App& app);
 Command add_tin(CLI::App& app);

@@ -1,4 +1,6 @@
-// ridt generate, ridt check and ridt voronoi: the small subcommands.
+// ridt generate, ridt check, ridt voronoi and ridt formats: the small subcommands.
+#include <cstdio>
+
 #include "command.hpp"
 #include "ridt/check.hpp"
 #include "ridt/generate.hpp"
@@ -148,6 +150,20 @@ Command add_voronoi(CLI::App& app) {
             if (!t.warning.empty()) throw InputError("no Voronoi vertex: " + t.warning);
             const Voronoi vd = voronoi(p.points, t, a->threads);
             io::write_voronoi(a->output, p.points, t, vd, box_option(a->box, p.points));
+            return 0;
+          }};
+}
+
+Command add_formats(CLI::App& app) {
+  struct Args {
+    bool markdown = false, summary = false;
+  };
+  auto a = std::make_shared<Args>();
+  CLI::App* f = app.add_subcommand("formats", "every file format, by extension, and what it holds in each role");
+  f->add_flag("--markdown", a->markdown, "as a Markdown table (docs/cli.md's)");
+  f->add_flag("--summary", a->summary, "a line a role, as a Markdown table (the README's)");
+  return {f, [a] {
+            std::fputs(io::formats_table(a->markdown, a->summary).c_str(), stdout);
             return 0;
           }};
 }

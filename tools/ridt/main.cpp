@@ -92,8 +92,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version());
-  const std::vector<Command> commands = {add_triangulate(app), add_generate(app), add_check(app), add_voronoi(app),
-                                         add_interpolate(app), add_mesh(app),     add_tin(app),   add_dem(app)};
+  const std::vector<Command> commands = {add_triangulate(app), add_generate(app),    add_check(app),
+                                         add_voronoi(app),     add_interpolate(app), add_mesh(app),
+                                         add_tin(app),         add_dem(app),         add_formats(app)};
   if (const std::optional<int> done = parse(app, argc, argv)) return *done;
   return run(commands);
 }

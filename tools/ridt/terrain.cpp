@@ -166,7 +166,7 @@ Command add_dem(CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("dem", "a DEM raster (GeoTIFF) interpolated in the TIN of points with heights");
   add_common(c, *a);
-  c->add_option("-o,--output", a->output, "the DEM: .tif (GeoTIFF), .img, or .png (a hillshade)")->required();
+  c->add_option("-o,--output", a->output, "the DEM: " + io::dem_formats())->required();
   c->add_option("--resolution", a->resolution, "the cell size, in the points' units")->required();
   c->add_option("--method", a->method, choices_help("", Surface::Linear));
   c->add_option("--max-edge", a->max_edge, "no value in triangles with a side longer than this (lakes, gaps)");

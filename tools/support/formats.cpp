@@ -1,15 +1,12 @@
-// The file formats, one line each (formats.hpp). The writers of triangulations take a uniform
-// call here; each format's own code is in its io_*.cpp.
+// The file formats, a row each (formats.hpp): every role a format plays, with its reader or
+// writer and what the file holds in it. The writers of triangulations take a uniform call here;
+// each format's own code is in its io_*.cpp.
 #include "formats.hpp"
 
+// A row names only the roles its format has; the others stay empty.
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
 namespace ridt::io::detail {
-
-void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.cpp
-void write_ply_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
-Pslg read_poly(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
-PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads);
-Pslg read_node_graph(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
-
 namespace {
 
 // Writes through a Writer that commits only when the whole file is written.
@@ -54,47 +51,150 @@ void bin_out(const std::string& path, const TriangulationOut& o) {
   whole(path, [&](Writer& out) { write_bin_triangles(out, o.triangles()); });
 }
 
-// clang-format off
-// extension, description, points in, triangles in, points out, triangulation out, Voronoi out, values out, graph in
-// (and, where the triangulation's writer reads the neighbours, true; where the triangles can be
-// written as they are sorted, how)
+Terrain ogr_in(const std::string& path, const PointFilter& /*filter*/, const Columns& columns) {
+  return read_ogr(path, columns);
+}
+
+// What the text formats hold.
+constexpr std::string_view kTextPoints = "one point a line, `x y` or `x,y`; `#` starts a comment";
+constexpr std::string_view kTextTriangles = "three indices a line, from 0";
+constexpr std::string_view kOgrTerrain = "a point layer; z from the geometry or a field (`--columns x,y,FIELD`)";
+constexpr std::string_view kOgrTin = "triangles as PolygonZ, with the CRS";
+constexpr std::string_view kTable =
+    "a table with or without a header, fields apart by commas, semicolons, tabs or spaces";
+
+// GDAL's vector formats: terrain in, TINs out, through GDAL's module.
+constexpr Format ogr(std::string_view extension, std::string_view name, std::string_view driver) {
+  return {.extension = extension,
+          .name = name,
+          .terrain_in = {ogr_in, kOgrTerrain, true},
+          .tin_out = {write_tin_ogr, kOgrTin, true},
+          .gdal_driver = driver};
+}
+
+constexpr Format text(std::string_view extension) {
+  return {.extension = extension,
+          .name = "text",
+          .points_in = {read_text_points, kTextPoints},
+          .points_out = {write_text_points, kTextPoints},
+          .triangles_in = {read_text_triangles, kTextTriangles},
+          .terrain_in = {read_table, kTable}};
+}
+
 constexpr Format kFormats[] = {
-    {".poly", "Triangle's planar straight-line graph", read_poly_points, nullptr, nullptr, nullptr, nullptr, nullptr, read_poly},
-    {".node", "Triangle's nodes",           read_node,        nullptr,             write_node,        nullptr,   nullptr,            nullptr, read_node_graph},
-    {".ele", "Triangle's elements",         nullptr,          read_ele,            nullptr,           ele_out,   nullptr,            nullptr, nullptr},
-    {".neigh", "Triangle's neighbours",     nullptr,          nullptr,             nullptr,           neigh_out, nullptr,            nullptr, nullptr, true},
-    {".off", "OFF mesh",                    nullptr,          nullptr,             nullptr,           off_out,   write_voronoi_off,  nullptr, nullptr},
-    {".ply", "Stanford PLY, binary",        nullptr,          nullptr,             write_ply_points,  write_ply, nullptr,            nullptr, nullptr},
-    {".obj", "Wavefront OBJ",               nullptr,          nullptr,             nullptr,           obj_out,   nullptr,            nullptr, nullptr},
-    {".svg", "a drawing",                   nullptr,          nullptr,             nullptr,           svg_out,   write_voronoi_svg,  nullptr, nullptr, true},
-    {".json", "JSON",                       nullptr,          nullptr,             nullptr,           nullptr,   write_voronoi_json, nullptr, nullptr},
-    {".csv", "x,y rows (and values)",       read_text_points, nullptr,             write_csv_points,  nullptr,   nullptr,            write_values_csv, nullptr},
-    {".txt", "text, a point a line",        read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
-    {".xy", "text, a point a line",         read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
-    {".pts", "text, a point a line",        read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
-    {".dat", "text, a point a line",        read_text_points, read_text_triangles, write_text_points, nullptr,   nullptr,            nullptr, nullptr},
-    {".png", "a colour map of a grid",      nullptr,          nullptr,             nullptr,           nullptr,   nullptr,            write_values_png, nullptr},
-    {".bin", "little-endian binary",        read_bin_points,  bin_triangles_in,    write_bin_points,  bin_out,   nullptr,            write_values_bin, nullptr, false, put_bin_sorted},
-    {"", "text, a point or triangle a line", read_text_points, read_text_triangles, write_text_points, nullptr,  nullptr,            nullptr, nullptr},
+    {.extension = ".node",
+     .name = "Triangle's nodes",
+     .points_in = {read_node, "header `n 2 attributes markers`, then `i x y ...`; its first index (0 or 1) is kept"},
+     .points_out = {write_node, "Triangle's, numbered from 0, no attributes or markers"},
+     .graph_in = {read_node_graph, "points alone (no segments)"},
+     .mesh_files = {true, "`OUT.node`: the mesh's vertices, attributes, markers; `OUT.v.node`: its dual's vertices"}},
+    {.extension = ".poly",
+     .name = "Triangle's planar straight-line graph",
+     .points_in = {read_poly_points, "its vertices (or the `.node` beside it)"},
+     .graph_in = {read_poly, "vertices (or none, and the `.node` beside it), segments, holes, regions"}},
+    {.extension = ".ele",
+     .name = "Triangle's elements",
+     .triangles_in = {read_ele, "`T 3 0`, then `k a b c`, numbered like the `.node` (else from 0)"},
+     .triangulation_out = {ele_out, "`T 3 0`, then `k a b c`, numbered like the input `.node` (else from 0)"},
+     .mesh_files = {true, "three nodes or six (`o2`), an attribute each (`A`); read with `r` and by `check`"}},
+    {.extension = ".area",
+     .name = "Triangle's area bounds",
+     .mesh_files = {true, "with `r` and `a`: `n`, then `i max_area`, an area bound a triangle"}},
+    {.extension = ".edge",
+     .name = "Triangle's edges",
+     .mesh_files = {true,
+                    "`m 1`, then `i a b marker` a segment's edge (every edge with `e`); `OUT.v.edge`: the dual, "
+                    "a ray as `i u -1 dx dy`"}},
+    {.extension = ".neigh",
+     .name = "Triangle's neighbours",
+     .triangulation_out = {neigh_out, "three neighbours a triangle, -1 on the hull"},
+     .mesh_files = {true, "with `n`"},
+     .writes_neighbors = true},
+    {.extension = ".parts",
+     .name = "an index of parts",
+     .triangles_in = {read_parts_index, "`ridt parts N`, then N part files (`.ele` from 0, or `.bin`)"}},
+    {.extension = ".bin",
+     .name = "little-endian binary",
+     .points_in = {read_bin_points, "float64 `x, y` pairs"},
+     .points_out = {write_bin_points, "float64 `x, y` pairs"},
+     .triangles_in = {bin_triangles_in, "uint32 triples"},
+     .triangulation_out = {bin_out, "uint32 triples"},
+     .values_out = {write_values_bin, "float64 values"},
+     .put_sorted = put_bin_sorted},
+    {.extension = ".ply",
+     .name = "Stanford PLY, binary little-endian",
+     .points_out = {write_ply_points, "binary PLY: the vertices alone, float64 x, y, z (z = 0)"},
+     .triangulation_out = {write_ply, "binary PLY: float64 x, y, z (z = 0), faces of uint32 indices"},
+     .tin_out = {write_tin_ply, "vertices with their heights, faces"}},
+    {.extension = ".obj",
+     .name = "Wavefront OBJ",
+     .triangulation_out = {obj_out, "vertices (z = 0), faces"},
+     .tin_out = {write_tin_obj, "vertices with their heights, faces"}},
+    {.extension = ".off",
+     .name = "Object File Format",
+     .triangulation_out = {off_out, "vertices (z = 0), faces"},
+     .voronoi_out = {write_voronoi_off, "each cell clipped to the box a face"},
+     .mesh_files = {true, "with `g`: the triangles for a viewer"}},
+    {.extension = ".svg",
+     .name = "a drawing",
+     .triangulation_out = {svg_out, "the triangles (at most 200,000), segments apart"},
+     .voronoi_out = {write_voronoi_svg, "the cells clipped to the box, and the sites"},
+     .writes_neighbors = true},
+    {.extension = ".png",
+     .name = "a picture",
+     .values_out = {write_values_png, "a grid's values as a colour map"},
+     .dem_out = {write_dem_png, "a hillshade (sun in the north-west, 45 degrees high), transparent where no height"}},
+    {.extension = ".json",
+     .name = "JSON, or GeoJSON through GDAL",
+     .voronoi_out = {write_voronoi_json, "vertices, cells, ridges"},
+     .terrain_in = {ogr_in, kOgrTerrain, true},
+     .tin_out = {write_tin_ogr, kOgrTin, true},
+     .gdal_driver = "GeoJSON"},
+    {.extension = ".las",
+     .name = "ASPRS LAS 1.0-1.4",
+     .terrain_in = {read_las_terrain, "ASPRS LAS 1.0-1.4, point formats 0-10, the CRS from its WKT or GeoTIFF keys"}},
+    {.extension = ".laz",
+     .name = "compressed LAS",
+     .terrain_in = {read_laz, "compressed LAS: refused, with how to decompress it"}},
+    ogr(".gpkg", "GeoPackage", "GPKG"),
+    ogr(".shp", "ESRI Shapefile", "ESRI Shapefile"),
+    ogr(".geojson", "GeoJSON", "GeoJSON"),
+    ogr(".fgb", "FlatGeobuf", "FlatGeobuf"),
+    ogr(".gml", "GML", "GML"),
+    ogr(".kml", "KML", "KML"),
+    ogr(".sqlite", "SpatiaLite", "SQLite"),
+    {.extension = ".tif",
+     .name = "GeoTIFF",
+     .dem_out = {write_dem_gdal, "GeoTIFF, tiled, DEFLATE, Float64 or Float32, with the CRS", true},
+     .gdal_driver = "GTiff"},
+    {.extension = ".tiff",
+     .name = "GeoTIFF",
+     .dem_out = {write_dem_gdal, "GeoTIFF, tiled, DEFLATE, Float64 or Float32, with the CRS", true},
+     .gdal_driver = "GTiff"},
+    {.extension = ".img",
+     .name = "Erdas Imagine",
+     .dem_out = {write_dem_gdal, "Erdas Imagine, Float64 or Float32, with the CRS", true},
+     .gdal_driver = "HFA"},
+    {.extension = ".csv",
+     .name = "comma-separated values",
+     .points_in = {read_text_points, "`x,y` a line"},
+     .points_out = {write_csv_points, "`x,y` a line"},
+     .values_out = {write_values_csv, "`x,y,values` a line"},
+     .terrain_in = {read_table, kTable}},
+    text(".txt"),
+    text(".xy"),
+    text(".pts"),
+    text(".dat"),
+    {.extension = "",
+     .name = "text",
+     .points_in = {read_text_points, kTextPoints},
+     .points_out = {write_text_points, kTextPoints},
+     .triangles_in = {read_text_triangles, kTextTriangles},
+     .terrain_in = {read_table, kTable}},
 };
-// clang-format on
 
 }  // namespace
 
 std::span<const Format> formats() { return kFormats; }
 
 }  // namespace ridt::io::detail
-
-namespace ridt::io {
-
-std::string point_formats() { return detail::extensions_with(&detail::Format::read_points); }
-std::string point_output_formats() { return detail::extensions_with(&detail::Format::write_points, false); }
-std::string triangle_formats() { return detail::extensions_with(&detail::Format::read_triangles); }
-std::string triangulation_formats() { return detail::extensions_with(&detail::Format::write_triangulation); }
-std::string voronoi_formats() {
-  return ".svg (the cells clipped to the box, and the sites), .off (each clipped cell a face) or .json (vertices, "
-         "cells, ridges)";
-}
-std::string values_formats() { return ".csv (x,y,values), .bin (float64 values) or, for a grid, .png (a colour map)"; }
-
-}  // namespace ridt::io

@@ -1,6 +1,9 @@
-// The registry of file formats, keyed by extension (formats.cpp): what each format reads and
-// writes. io.cpp asks it for the format of a path; a new format is its io_*.cpp and one line in
-// formats.cpp.
+// The one registry of file formats, keyed by extension (formats.cpp): for each format, each
+// role it plays (points in, a triangulation out, a TIN out, ...), with its reader or writer and
+// what a file of it holds in that role. Every reader and writer of the tool is found here; the
+// help texts, the messages that name the formats and the tables of formats in the README and
+// docs/cli.md (`ridt formats --markdown`) are made from it. A new format is its io_*.cpp and
+// its row in formats.cpp.
 #pragma once
 
 #include <span>
@@ -9,6 +12,7 @@
 #include <vector>
 
 #include "io_common.hpp"
+#include "terrain_io.hpp"
 
 namespace ridt::io::detail {
 
@@ -39,60 +43,139 @@ struct ValuesOut {
   std::size_t components, nx, ny;
 };
 
-/// A format: its extension ("" stands for any other: text) and what it can do (null: not).
+/// One role of a format: its reader or writer (null: the format has not this role), what a file
+/// of it holds in this role (for the tables), and whether GDAL's module reads or writes it.
+template <class Fn>
+struct Role {
+  Fn fn{};
+  std::string_view holds;
+  bool through_gdal = false;
+};
+
+// The readers' and writers' calls, a role each. Text is parsed and formatted on `threads`.
+using ReadPoints = PointFile (*)(const std::string& path, std::string_view data, unsigned threads);
+using WritePoints = void (*)(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
+using ReadTriangles = std::vector<VertexId> (*)(const std::string& path, std::string_view data, int first_index,
+                                                unsigned threads);
+using WriteTriangulation = void (*)(const std::string& path, const TriangulationOut& out);
+using WriteVoronoi = void (*)(Writer& out, const VoronoiOut& v);
+using WriteValues = void (*)(Writer& out, const ValuesOut& v);
+using ReadGraph = Pslg (*)(const std::string& path, std::string_view data, unsigned threads);
+using ReadTerrain = Terrain (*)(const std::string& path, const PointFilter& filter, const Columns& columns);
+using WriteTin = void (*)(const std::string& path, const Terrain& terrain, const Triangulation& t);
+using WriteDem = void (*)(const std::string& path, const Dem& dem, const DemFile& file);
+/// A role that `ridt mesh` or `ridt check` reads or writes itself, as a family of files named
+/// by Triangle's conventions rather than chosen by extension: described, not dispatched.
+using Described = bool;
+
+/// A format: its extension ("" stands for any other: text) and its roles.
 struct Format {
   std::string_view extension;
-  std::string_view description;
-  /// Readers of text parse on `threads` threads.
-  PointFile (*read_points)(const std::string& path, std::string_view data, unsigned threads);
-  std::vector<VertexId> (*read_triangles)(const std::string& path, std::string_view data, int first_index,
-                                          unsigned threads);
-  /// Text formats format on `threads` threads.
-  void (*write_points)(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
-  void (*write_triangulation)(const std::string& path, const TriangulationOut& out);
-  void (*write_voronoi)(Writer& out, const VoronoiOut& v);
-  void (*write_values)(Writer& out, const ValuesOut& v);
-  Pslg (*read_pslg)(const std::string& path, std::string_view data, unsigned threads);  ///< points, segments, holes
-  bool writes_neighbors = false;  ///< write_triangulation reads Triangulation::neighbors
+  std::string_view name;
+  Role<ReadPoints> points_in;
+  Role<WritePoints> points_out;
+  Role<ReadTriangles> triangles_in;
+  Role<WriteTriangulation> triangulation_out;
+  Role<WriteVoronoi> voronoi_out;
+  Role<WriteValues> values_out;
+  Role<ReadGraph> graph_in;  ///< points, segments, holes, regions
+  Role<Described> mesh_files;  ///< read or written by `ridt mesh` (Triangle's files)
+  Role<ReadTerrain> terrain_in;
+  Role<WriteTin> tin_out;
+  Role<WriteDem> dem_out;
+  std::string_view gdal_driver;  ///< GDAL's name of the format, for its roles through GDAL
+  bool writes_neighbors = false;  ///< triangulation_out reads Triangulation::neighbors
   /// Writes a stretch of the canonically sorted triangles at its place (Options::on_sorted),
   /// `first` its first triangle: for a format whose file is the triangles as they lie, which
   /// the writer then fills while the rest are sorted.
   void (*put_sorted)(Writer& out, std::size_t first, std::span<const VertexId> triangles) = nullptr;
 };
 
-/// The format of `path` that has `role` (a member: &Format::read_points, ...); else throws
-/// IoError naming the extensions that have it, `what` naming the role. With `any_extension`
-/// false, text (the format of extension "") is only for a path without an extension: an output
-/// whose extension names another format is not written as text.
-template <class Role>
-const Format& format_of(const std::string& path, Role Format::*role, const char* what, bool any_extension = true);
+/// A role's member and its names: `title` for the tables ("points in"), `what` for messages
+/// ("point input"), `commands` the subcommands that take it. With `any_extension` false, text
+/// (the format of extension "") is only for a path without an extension: an output whose
+/// extension names another format is not written as text.
+template <class Fn>
+struct RoleName {
+  Role<Fn> Format::*role;
+  const char* title;
+  const char* what;
+  const char* commands;
+  bool any_extension = true;
+};
 
 /// The registered formats.
 std::span<const Format> formats();
 
+/// The format of `path` that has `role`; else throws IoError naming the extensions that have it
+/// ("unknown point input extension '.x' (use ...)").
+template <class Fn>
+const Format& format_of(const std::string& path, const RoleName<Fn>& role);
+
 /// "a, b or c": the extensions of the formats with `role` (" or text" where any other is, " or
-/// none (text)" where only a path without an extension is: `any_extension` false).
-template <class Role>
-std::string extensions_with(Role Format::*role, bool any_extension = true) {
+/// none (text)" where only a path without an extension is); GDAL's formats only where the
+/// build has GDAL.
+template <class Fn>
+std::string extensions_with(const RoleName<Fn>& role) {
+  std::vector<std::string> found;
+  std::string text;
+  for (const Format& f : formats()) {
+    const Role<Fn>& r = f.*role.role;
+    if (!r.fn || (r.through_gdal && !have_gdal())) continue;
+    if (f.extension.empty()) {
+      text = role.any_extension ? "text" : "none (text)";
+      continue;
+    }
+    found.emplace_back(f.extension);
+  }
+  if (!text.empty()) found.push_back(text);
   std::string list;
-  bool text = false;
-  std::vector<std::string_view> found;
-  for (const Format& f : formats())
-    if (f.*role != nullptr) f.extension.empty() ? void(text = true) : found.push_back(f.extension);
   for (std::size_t i = 0; i < found.size(); ++i)
-    list += std::string(i == 0 ? "" : i + 1 == found.size() && !text ? " or " : ", ") + std::string(found[i]);
-  return !text ? list : any_extension ? list + " or text" : list + " or none (text)";
+    list += (i == 0 ? "" : i + 1 == found.size() ? " or " : ", ") + found[i];
+  return list;
 }
 
-template <class Role>
-const Format& format_of(const std::string& path, Role Format::*role, const char* what, bool any_extension) {
+template <class Fn>
+const Format& format_of(const std::string& path, const RoleName<Fn>& role) {
   const std::string ext = extension_of(path);
   for (const Format& f : formats())
-    if (f.extension == ext && f.*role != nullptr) return f;
+    if (f.extension == ext && (f.*role.role).fn) return f;
   for (const Format& f : formats())
-    if (any_extension && f.extension.empty() && f.*role != nullptr) return f;
-  throw IoError("unknown " + std::string(what) + " extension '" + fs::path(path).extension().string() + "' (use " +
-                extensions_with(role, any_extension) + ")");
+    if (role.any_extension && f.extension.empty() && (f.*role.role).fn) return f;
+  throw IoError("unknown " + std::string(role.what) + " extension '" + fs::path(path).extension().string() + "' (use " +
+                extensions_with(role) + ")");
 }
+
+// The roles.
+inline constexpr RoleName<ReadPoints> kPointsIn{&Format::points_in, "points in", "point input",
+                                                "triangulate, voronoi, interpolate, check"};
+inline constexpr RoleName<WritePoints> kPointsOut{&Format::points_out, "points out", "point output", "generate", false};
+inline constexpr RoleName<ReadTriangles> kTrianglesIn{&Format::triangles_in, "triangles in", "triangle input",
+                                                      "check, interpolate"};
+inline constexpr RoleName<WriteTriangulation> kTriangulationOut{&Format::triangulation_out, "triangulation out",
+                                                                "output", "triangulate"};
+inline constexpr RoleName<WriteVoronoi> kVoronoiOut{&Format::voronoi_out, "Voronoi out", "Voronoi output", "voronoi"};
+inline constexpr RoleName<WriteValues> kValuesOut{&Format::values_out, "values out", "values output", "interpolate"};
+inline constexpr RoleName<ReadGraph> kGraphIn{&Format::graph_in, "graph in", "planar straight-line graph input",
+                                              "mesh"};
+inline constexpr RoleName<Described> kMeshFiles{&Format::mesh_files, "mesh files", "mesh file", "mesh, check"};
+inline constexpr RoleName<ReadTerrain> kTerrainIn{&Format::terrain_in, "terrain in", "terrain input", "tin, dem"};
+inline constexpr RoleName<WriteTin> kTinOut{&Format::tin_out, "TIN out", "TIN", "tin"};
+inline constexpr RoleName<WriteDem> kDemOut{&Format::dem_out, "DEM out", "DEM", "dem"};
+
+// Readers and writers of more than one file's code, named in formats.cpp's rows.
+void write_ply(const std::string& path, const TriangulationOut& o);  // io_ply.cpp
+void write_ply_points(Writer& out, std::span<const Point> points, int first_index, unsigned threads);
+Pslg read_poly(const std::string& path, std::string_view text, unsigned threads);  // io_poly.cpp
+PointFile read_poly_points(const std::string& path, std::string_view text, unsigned threads);
+Pslg read_node_graph(const std::string& path, std::string_view text, unsigned threads);
+void write_tin_ply(const std::string& path, const Terrain& terrain, const Triangulation& t);  // io_terrain.cpp
+void write_tin_obj(const std::string& path, const Terrain& terrain, const Triangulation& t);
+void write_dem_png(const std::string& path, const Dem& dem, const DemFile& file);
+Terrain read_las_terrain(const std::string& path, const PointFilter& filter, const Columns& columns);  // io_las.cpp
+Terrain read_laz(const std::string& path, const PointFilter& filter, const Columns& columns);
+Terrain read_table(const std::string& path, const PointFilter& filter, const Columns& columns);  // io_table.cpp
+std::vector<VertexId> read_parts_index(const std::string& path, std::string_view index, int first_index,
+                                       unsigned threads);  // io.cpp
 
 }  // namespace ridt::io::detail

@@ -21,18 +21,17 @@ PointFile read_points(const std::string& path, unsigned threads) {
 }
 
 PointFile parse_points(std::string_view data, const std::string& name, unsigned threads) {
-  return format_of(name, &Format::read_points, "point input").read_points(name, data, threads);
+  return format_of(name, kPointsIn).points_in.fn(name, data, threads);
 }
 
 void write_points(const std::string& path, std::span<const Point> points, int first_index, unsigned threads) {
-  const Format& f = format_of(path, &Format::write_points, "point output", false);
+  const Format& f = format_of(path, kPointsOut);
   Writer out(path);
-  f.write_points(out, points, first_index, threads);
+  f.points_out.fn(out, points, first_index, threads);
   out.commit();
 }
 
 std::vector<VertexId> read_triangles(const std::string& path, int first_index, unsigned threads) {
-  if (is_parts_index(path)) return read_parts(path, threads);
   return FileText(path).parse([&](std::string_view text) { return parse_triangles(text, path, first_index, threads); });
 }
 
@@ -40,9 +39,11 @@ std::string extension(const std::string& path) { return extension_of(path); }
 
 bool is_parts_index(const std::string& path) { return extension_of(path) == ".parts"; }
 
-std::vector<std::string> part_files(const std::string& path) {
-  // "ridt parts N", then N part files (.ele, indices from 0, or .bin), named relative to the index.
-  const std::string text = read_file_whole(path);
+namespace {
+
+// The part files that the index `text` at `path` names: "ridt parts N", then N part files (.ele,
+// indices from 0, or .bin), named relative to the index.
+std::vector<std::string> parts_named(const std::string& path, std::string_view text) {
   std::vector<std::string> lines;
   for_each_line(text, [&](std::size_t, std::string_view line) {
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
@@ -65,9 +66,14 @@ std::vector<std::string> part_files(const std::string& path) {
   return parts;
 }
 
-std::vector<VertexId> read_parts(const std::string& path, unsigned threads) {
+}  // namespace
+
+std::vector<std::string> part_files(const std::string& path) { return parts_named(path, read_file_whole(path)); }
+
+std::vector<VertexId> detail::read_parts_index(const std::string& path, std::string_view index, int /*first_index*/,
+                                               unsigned threads) {
   std::vector<VertexId> out;
-  for (const std::string& part : part_files(path)) {
+  for (const std::string& part : parts_named(path, index)) {
     const std::vector<VertexId> t = read_triangles(part, 0, threads);
     out.insert(out.end(), t.begin(), t.end());
   }
@@ -76,20 +82,20 @@ std::vector<VertexId> read_parts(const std::string& path, unsigned threads) {
 
 std::vector<VertexId> parse_triangles(std::string_view data, const std::string& name, int first_index,
                                       unsigned threads) {
-  return format_of(name, &Format::read_triangles, "triangle input").read_triangles(name, data, first_index, threads);
+  return format_of(name, kTrianglesIn).triangles_in.fn(name, data, first_index, threads);
 }
 
 bool triangulation_needs_neighbors(const std::string& path) {
-  return format_of(path, &Format::write_triangulation, "output").writes_neighbors;
+  return format_of(path, kTriangulationOut).writes_neighbors;
 }
 
 void write_triangulation(const std::string& path, std::span<const Point> points, const Triangulation& t,
                          int first_index, unsigned threads) {
-  format_of(path, &Format::write_triangulation, "output").write_triangulation(path, {points, t, first_index, threads});
+  format_of(path, kTriangulationOut).triangulation_out.fn(path, {points, t, first_index, threads});
 }
 
 SortedOutput::SortedOutput(const std::string& path) : path_(path) {
-  const Format& f = format_of(path, &Format::write_triangulation, "output");
+  const Format& f = format_of(path, kTriangulationOut);
   // A device or a pipe takes its bytes in order only: the file is written after the sort.
   if (f.put_sorted == nullptr || output_target(path).in_place) return;
   writer_ = std::make_unique<Writer>(path);
@@ -111,27 +117,27 @@ void SortedOutput::commit(const Triangulation& t) {
 }
 
 Pslg read_pslg(const std::string& path, unsigned threads) {
-  format_of(path, &Format::read_pslg, "planar straight-line graph input");  // before reading it
+  format_of(path, kGraphIn);  // before reading it
   return FileText(path).parse([&](std::string_view text) { return parse_pslg(text, path, threads); });
 }
 
 Pslg parse_pslg(std::string_view data, const std::string& name, unsigned threads) {
-  return format_of(name, &Format::read_pslg, "planar straight-line graph input").read_pslg(name, data, threads);
+  return format_of(name, kGraphIn).graph_in.fn(name, data, threads);
 }
 
 void write_voronoi(const std::string& path, std::span<const Point> points, const Triangulation& t, const Voronoi& vd,
                    const Box& box) {
-  const Format& f = format_of(path, &Format::write_voronoi, "Voronoi output");
+  const Format& f = format_of(path, kVoronoiOut);
   Writer out(path);
-  f.write_voronoi(out, {path, points, t, vd, box});
+  f.voronoi_out.fn(out, {path, points, t, vd, box});
   out.commit();
 }
 
 void write_values(const std::string& path, std::span<const Point> queries, std::span<const double> values,
                   std::size_t components, std::size_t nx, std::size_t ny) {
-  const Format& f = format_of(path, &Format::write_values, "values output");
+  const Format& f = format_of(path, kValuesOut);
   Writer out(path);
-  f.write_values(out, {path, queries, values, components, nx, ny});
+  f.values_out.fn(out, {path, queries, values, components, nx, ny});
   out.commit();
 }
 

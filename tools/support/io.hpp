@@ -219,13 +219,18 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
 void write_elements(const std::string& path, std::span<const VertexId> triangles, std::span<const double> attributes,
                     int first_index, unsigned threads = 1);
 
-/// The extensions of each kind of file, for a help text ("a, b or text").
+/// The extensions of each kind of file, for a help text ("a, b or text"), from the registry
+/// (formats.cpp).
 std::string point_formats();
 std::string point_output_formats();
 std::string triangle_formats();
 std::string triangulation_formats();
 std::string voronoi_formats();
 std::string values_formats();
+
+/// Every format and what it holds in each role, from the registry: as text for a terminal, or
+/// as the Markdown table of docs/cli.md; `summary`: a line a role (the README's table).
+std::string formats_table(bool markdown, bool summary);
 
 /// Reads points; throws IoError on a missing file, a malformed line, a NaN or infinite
 /// coordinate, or a .node count that does not match. Text is parsed on `threads` threads.
@@ -242,12 +247,10 @@ void write_points(const std::string& path, std::span<const Point> points, int fi
 
 /// Reads triangles (.ele, .bin, or text with three indices a line) as 0-based indices;
 /// `first_index` is the numbering of .ele and text files. Text is parsed on `threads` threads.
+/// An index of a distributed or out-of-core run's parts (.parts: "ridt parts N", then the N
+/// part files, .ele (0-based) or .bin, named relative to the index) gives the parts' triangles
+/// one after another.
 std::vector<VertexId> read_triangles(const std::string& path, int first_index, unsigned threads = 1);
-
-/// The triangles of a distributed or out-of-core run's parts: an index (.parts: "ridt parts N",
-/// then the N part files, .ele (0-based) or .bin, named relative to the index), the parts'
-/// triangles one after another.
-std::vector<VertexId> read_parts(const std::string& path, unsigned threads = 1);
 /// A file's extension in lower case, as the formats are chosen (".tif" for "dem.TIF").
 std::string extension(const std::string& path);
 /// Whether `path` names an index of parts (.parts).

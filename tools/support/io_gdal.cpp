@@ -1,4 +1,4 @@
-// GDAL's formats by extension, and the loading of the module that writes and reads them
+// GDAL's formats (the registry's rows with a driver), and the loading of the module that writes and reads them
 // (tools/gdal/module.cpp, libridt_gdal.so; terrain_io.hpp's GdalModule). The module is looked
 // for where RIDT_GDAL_MODULE (the environment) says, beside the build's own copy, then where an
 // installed tool keeps it (../lib/ridt/ from the executable).
@@ -6,6 +6,7 @@
 
 #include <mutex>
 
+#include "formats.hpp"
 #include "io_common.hpp"
 #include "temporaries.hpp"
 #include "terrain_io.hpp"
@@ -15,24 +16,12 @@ namespace {
 
 using detail::fail_file;
 
-struct Driver {
-  const char* extension;
-  const char* name;
-};
-// The formats GIS people exchange points and TINs in, and DEMs.
-constexpr Driver kVectorDrivers[] = {
-    {".gpkg", "GPKG"},    {".shp", "ESRI Shapefile"}, {".geojson", "GeoJSON"},
-    {".json", "GeoJSON"}, {".fgb", "FlatGeobuf"},     {".gml", "GML"},
-    {".kml", "KML"},      {".sqlite", "SQLite"},
-};
-constexpr Driver kRasterDrivers[] = {{".tif", "GTiff"}, {".tiff", "GTiff"}, {".img", "HFA"}};
-
-template <std::size_t N>
-const char* driver_of(const std::string& path, const Driver (&drivers)[N]) {
-  const std::string ext = detail::extension_of(path);
-  for (const Driver& d : drivers)
-    if (ext == d.extension) return d.name;
-  return nullptr;
+// GDAL's name of the format of `path` (the registry's, formats.cpp), for `role`.
+template <class Fn>
+std::string driver_of(const std::string& path, const detail::RoleName<Fn>& role) {
+  const std::string_view driver = detail::format_of(path, role).gdal_driver;
+  if (driver.empty()) fail_file(path, "not a format ridt reads or writes through GDAL");
+  return std::string(driver);
 }
 
 // The module, or why there is none.
@@ -87,23 +76,17 @@ bool have_gdal() {
 #endif
 }
 
-bool detail::is_gdal_vector(const std::string& path) { return driver_of(path, kVectorDrivers) != nullptr; }
-
 Terrain detail::read_ogr(const std::string& path, const Columns& columns) {
   return gdal_module(path).read_ogr(path, columns);
 }
 
 void detail::write_tin_ogr(const std::string& path, const Terrain& terrain, const Triangulation& t) {
-  gdal_module(path).write_tin(path, driver_of(path, kVectorDrivers), terrain, t);
+  gdal_module(path).write_tin(path, driver_of(path, detail::kTinOut).c_str(), terrain, t);
 }
 
 void detail::write_dem_gdal(const std::string& path, const Dem& dem, const DemFile& file) {
-  const char* driver = driver_of(path, kRasterDrivers);
-  if (driver == nullptr)
-    fail_file(path,
-              "unknown DEM extension '" + detail::fs::path(path).extension().string() +
-                  "' (use .tif, .img, or .png for a hillshade)");
-  gdal_module(path).write_dem(path, driver, dem.grid(), dem.options().nodata, file, dem.band_rows(),
+  const std::string driver = driver_of(path, detail::kDemOut);
+  gdal_module(path).write_dem(path, driver.c_str(), dem.grid(), dem.options().nodata, file, dem.band_rows(),
                               [&](std::size_t b, std::span<double> out) { dem.band(b, out); });
 }
 

@@ -2,6 +2,7 @@
 // (VLR, and the 1.4 extended ones) for the CRS, and the point records of formats 0 to 10, read
 // in place from a mapping of the file. Every offset is checked against the file's size before it
 // is read, so a truncated or inconsistent file is an IoError that says what is wrong.
+#include "formats.hpp"
 #include "io_common.hpp"
 #include "terrain_io.hpp"
 
@@ -191,6 +192,16 @@ Terrain parse_las(std::string_view d, const std::string& name, const PointFilter
 
 Terrain read_las(const std::string& path, const PointFilter& filter) {
   return detail::FileText(path).parse([&](std::string_view text) { return parse_las(text, path, filter); });
+}
+
+Terrain detail::read_las_terrain(const std::string& path, const PointFilter& filter, const Columns& /*columns*/) {
+  return read_las(path, filter);
+}
+
+Terrain detail::read_laz(const std::string& path, const PointFilter& /*filter*/, const Columns& /*columns*/) {
+  fail_file(path,
+            "compressed LAS (LAZ) is not read; decompress it first, e.g. \"laszip -i " + path +
+                " -o OUT.las\" or \"pdal translate " + path + " OUT.las\"");
 }
 
 }  // namespace ridt::io

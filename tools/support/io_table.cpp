@@ -1,5 +1,6 @@
 // Tables of points with heights (terrain_io.hpp): CSV and its relatives, with or without a
-// header, and read_terrain, which picks the reader of a terrain file by its extension.
+// header (the registry, formats.cpp, gives them every extension no other terrain format has).
+#include "formats.hpp"
 #include "io_common.hpp"
 #include "terrain_io.hpp"
 
@@ -144,22 +145,8 @@ Terrain parse_table(std::string_view text, const std::string& name, const Column
   return out;
 }
 
-Terrain read_terrain(const std::string& path, const PointFilter& filter, const Columns& columns) {
-  const std::string ext = detail::extension_of(path);
-  if (ext == ".laz")
-    fail_file(path,
-              "compressed LAS (LAZ) is not read; decompress it first, e.g. \"laszip -i " + path +
-                  " -o OUT.las\" or \"pdal translate " + path + " OUT.las\"");
-  if (ext == ".las") return read_las(path, filter);
-  if (detail::is_gdal_vector(path)) return detail::read_ogr(path, columns);
+Terrain detail::read_table(const std::string& path, const PointFilter& /*filter*/, const Columns& columns) {
   return parse_table(detail::read_file_whole(path), path, columns);
 }
-
-std::string terrain_formats() {
-  return std::string(".las") + (have_gdal() ? ", GDAL's vector formats (.gpkg, .shp, .geojson, .fgb, ...)" : "") +
-      " or a table (.csv, .txt, .xyz)";
-}
-
-std::string tin_formats() { return std::string(".ply, .obj") + (have_gdal() ? " or GDAL's vector formats" : ""); }
 
 }  // namespace ridt::io

@@ -1,12 +1,13 @@
 // TINs and DEMs out (terrain_io.hpp): PLY and OBJ with heights and the hillshade PNG here,
-// GDAL's formats in io_gdal.cpp.
-#include "io_common.hpp"
+// GDAL's formats in io_gdal.cpp, each found in the registry (formats.cpp).
+#include "formats.hpp"
 #include "terrain_io.hpp"
 
 namespace ridt::io {
 namespace {
 
 using detail::fail_file;
+using detail::format_of;
 
 void check_tin(const std::string& path, const Terrain& terrain, const Triangulation& t) {
   if (terrain.z.size() != terrain.points.size())
@@ -15,7 +16,9 @@ void check_tin(const std::string& path, const Terrain& terrain, const Triangulat
   detail::check_indices(path, std::span(t.triangles).first(3 * t.size()), terrain.points.size(), "a triangle");
 }
 
-void write_ply_z(const std::string& path, const Terrain& terrain, const Triangulation& t) {
+}  // namespace
+
+void detail::write_tin_ply(const std::string& path, const Terrain& terrain, const Triangulation& t) {
   Writer out(path);
   out.put("ply\nformat binary_little_endian 1.0\ncomment ridt: a TIN\nelement vertex ");
   out.put_int(static_cast<std::int64_t>(terrain.points.size()));
@@ -31,7 +34,7 @@ void write_ply_z(const std::string& path, const Terrain& terrain, const Triangul
   out.commit();
 }
 
-void write_obj_z(const std::string& path, const Terrain& terrain, const Triangulation& t) {
+void detail::write_tin_obj(const std::string& path, const Terrain& terrain, const Triangulation& t) {
   Writer out(path);
   out.put("# ridt: a TIN\n");
   for (std::size_t i = 0; i < terrain.points.size(); ++i) {
@@ -52,7 +55,7 @@ void write_obj_z(const std::string& path, const Terrain& terrain, const Triangul
 }
 
 // The DEM's hillshade as a grey picture, transparent where there is no shade.
-void write_hillshade_png(const std::string& path, const Dem& dem) {
+void detail::write_dem_png(const std::string& path, const Dem& dem, const DemFile& /*file*/) {
   const RasterGrid& g = dem.grid();
   if (g.nx > 65535 || g.ny > 65535) fail_file(path, "a hillshade .png is at most 65535 cells a side");
   const std::vector<std::uint8_t> shade = hillshade(dem.all(), g.nx, g.ny, g.cell, dem.options().nodata);
@@ -63,27 +66,27 @@ void write_hillshade_png(const std::string& path, const Dem& dem) {
   out.commit();
 }
 
-}  // namespace
-
 void write_tin(const std::string& path, const Terrain& terrain, const Triangulation& t) {
   check_tin(path, terrain, t);
-  const std::string ext = detail::extension_of(path);
-  if (ext == ".ply") return write_ply_z(path, terrain, t);
-  if (ext == ".obj") return write_obj_z(path, terrain, t);
-  if (detail::is_gdal_vector(path)) return detail::write_tin_ogr(path, terrain, t);
-  fail_file(path,
-            "unknown TIN extension '" + detail::fs::path(path).extension().string() + "' (use " + tin_formats() + ")");
+  format_of(path, detail::kTinOut).tin_out.fn(path, terrain, t);
 }
 
 void write_hillshade(const std::string& path, const Dem& dem) {
   if (detail::extension_of(path) != ".png")
     fail_file(path, "a hillshade is a .png picture (the DEM itself: .tif or .img)");
-  write_hillshade_png(path, dem);
+  detail::write_dem_png(path, dem, {});
 }
 
 void write_dem(const std::string& path, const Dem& dem, const DemFile& file) {
-  if (detail::extension_of(path) == ".png") return write_hillshade_png(path, dem);
-  detail::write_dem_gdal(path, dem, file);
+  format_of(path, detail::kDemOut).dem_out.fn(path, dem, file);
 }
+
+Terrain read_terrain(const std::string& path, const PointFilter& filter, const Columns& columns) {
+  return format_of(path, detail::kTerrainIn).terrain_in.fn(path, filter, columns);
+}
+
+std::string terrain_formats() { return detail::extensions_with(detail::kTerrainIn); }
+std::string tin_formats() { return detail::extensions_with(detail::kTinOut); }
+std::string dem_formats() { return detail::extensions_with(detail::kDemOut); }
 
 }  // namespace ridt::io

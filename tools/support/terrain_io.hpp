@@ -80,9 +80,11 @@ Terrain read_terrain(const std::string& path, const PointFilter& filter = {}, co
 /// True where the build reads and writes GDAL's formats.
 bool have_gdal();
 
-/// The extensions read_terrain reads, and those write_tin writes, for a help text.
+/// The extensions read_terrain reads, those write_tin writes and those write_dem writes, for a
+/// help text.
 std::string terrain_formats();
 std::string tin_formats();
+std::string dem_formats();
 
 /// Writes a TIN: .ply and .obj with z (here); a GDAL vector layer (.gpkg, .shp, .geojson, .fgb,
 /// ...) of triangles as PolygonZ with the CRS, where the build has GDAL. Throws IoError.
@@ -126,8 +128,6 @@ struct GdalModule {
 /// loaded (the message says why).
 const GdalModule& gdal_module(const std::string& path);
 
-/// True where `path`'s extension is one of GDAL's vector formats that ridt reads and writes.
-bool is_gdal_vector(const std::string& path);
 Terrain read_ogr(const std::string& path, const Columns& columns);
 void write_tin_ogr(const std::string& path, const Terrain& terrain, const Triangulation& t);
 void write_dem_gdal(const std::string& path, const Dem& dem, const DemFile& file);
