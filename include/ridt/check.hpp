@@ -68,7 +68,8 @@ CheckResult check_constrained(std::span<const Point> points, std::span<const Ver
 struct MeshSpec {
   /// The mesh's segment edges (pairs, ConstrainedTriangulation::edges): each must be an edge;
   /// they alone may be not locally Delaunay; every boundary edge must be one of them or lie on
-  /// the convex hull.
+  /// the convex hull. Empty, with `segments`: the mesh's edges that lie along the segments (a
+  /// mesh from files that do not name its segment edges, as Triangle's without -e).
   std::span<const VertexId> edges;
   /// The input's segments (pairs of indices below `input_points`): each must be a chain of
   /// `edges` from end to end through points added (index >= input_points) or points on it.

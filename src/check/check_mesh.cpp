@@ -10,6 +10,7 @@
 #include <unordered_set>
 
 #include "check/mesh_angles.hpp"
+#include "check/on_segment.hpp"
 #include "check/parts.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/check.hpp"
@@ -20,33 +21,50 @@ namespace {
 
 using detail::kNoVertex;
 
-using detail::adjacency;
+using detail::Adjacency;
+using detail::along_keys;
 using detail::Edge;
-using detail::off_line;
+using detail::OnSegment;
 using detail::orient2d;
 using detail::Report;
 using detail::SegmentEdges;
 
 std::uint64_t key(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
 
+// The convex hull of the points `of` (indices into pts), counter-clockwise, points on its sides
+// kept (of equal points, the first in `of`); empty where they are fewer than three distinct or
+// collinear.
+std::vector<VertexId> hull_of(std::span<const Point> pts, const std::vector<VertexId>& of) {
+  std::vector<Point> p(of.size());
+  for (std::size_t i = 0; i < of.size(); ++i) p[i] = pts[of[i]];
+  const detail::Distinct d = detail::near_the_hull(p, 0);
+  bool flat = true;
+  for (std::size_t i = 2; flat && i < d.first.size(); ++i)
+    flat = orient2d(p[d.first[0]], p[d.first[1]], p[d.first[i]]) == 0;
+  if (d.first.size() < 3 || flat) return {};
+  std::vector<VertexId> hull = detail::hull_with_collinear(p, d.first);
+  for (VertexId& v : hull) v = of[v];
+  return hull;
+}
+
 // Boundary edges that are no segment's must lie on the convex hull of the vertices.
 void check_boundary(std::span<const Point> pts, const std::vector<std::uint8_t>& used,
-                    const std::vector<Edge>& boundary, const std::unordered_set<std::uint64_t>& segment,
-                    Report& report) {
+                    const std::vector<Edge>& boundary, const std::vector<Edge>& segment_edges, Report& report) {
   std::vector<Edge> open;
   for (const Edge& e : boundary)
-    if (!segment.count(key(e.first, e.second))) open.push_back(e);
+    if (!std::binary_search(segment_edges.begin(), segment_edges.end(),
+                            Edge{std::min(e.first, e.second), std::max(e.first, e.second)}))
+      open.push_back(e);
   if (open.empty()) return;
-  std::vector<VertexId> sorted;
+  std::vector<VertexId> vertices;
   for (VertexId v = 0; v < pts.size(); ++v)
-    if (used[v]) sorted.push_back(v);
-  std::sort(sorted.begin(), sorted.end(), [&](VertexId a, VertexId b) { return detail::lex_less(pts[a], pts[b]); });
-  const std::vector<VertexId> hull = detail::hull_with_collinear(pts, sorted);
-  std::unordered_set<std::uint64_t> on_hull;
-  for (std::size_t i = 0; i < hull.size(); ++i)
-    on_hull.insert((std::uint64_t{hull[i]} << 32) | hull[(i + 1) % hull.size()]);
+    if (used[v]) vertices.push_back(v);
+  const std::vector<VertexId> hull = hull_of(pts, vertices);
+  std::vector<Edge> on_hull;
+  for (std::size_t i = 0; i < hull.size(); ++i) on_hull.emplace_back(hull[i], hull[(i + 1) % hull.size()]);
+  std::sort(on_hull.begin(), on_hull.end());
   for (const Edge& e : open)
-    if (!on_hull.count((std::uint64_t{e.first} << 32) | e.second))
+    if (!std::binary_search(on_hull.begin(), on_hull.end(), e))
       report.problem("boundary edge ", e.first, "-", e.second, " is neither a segment's nor on the convex hull");
 }
 
@@ -56,23 +74,6 @@ struct Gap {
   VertexId u, w;
   std::size_t segment;
 };
-
-// Where p lies along a -> b, exactly: its coordinate on the axis a -> b moves most along (x
-// where it moves at least as much in x), signed so that it grows from a to b.
-double along_key(const Point& a, const Point& b, const Point& p) {
-  const bool by_x = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y);
-  const double from = by_x ? a.x : a.y, to = by_x ? b.x : b.y, at = by_x ? p.x : p.y;
-  return to >= from ? at : -at;
-}
-
-// Where p lies along a -> b, in order: along_key, then, where that ties, the coordinate on the
-// other axis, signed the same way (a point a rounding beside an end of a steep segment lies at
-// that end's along_key, yet ahead of it or behind).
-std::pair<double, double> along_keys(const Point& a, const Point& b, const Point& p) {
-  const bool by_x = std::fabs(b.x - a.x) >= std::fabs(b.y - a.y);
-  const double from = by_x ? a.y : a.x, to = by_x ? b.y : b.x, at = by_x ? p.y : p.x;
-  return {along_key(a, b, p), to >= from ? at : -at};
-}
 
 // Whether the open segment u-w passes through the inside of triangle a-b-c (counter-
 // clockwise): no line of an edge of either separates them (for two convex sets in the plane,
@@ -131,41 +132,6 @@ class TrianglesByX {
   double widest_ = 0;
 };
 
-// Whether a point lies on input segment a-b, as far as its chain goes: between its ends along
-// it (up to 2^-40 of each end's coordinate: a crossing rounded past an end; a point beside a
-// very long segment's end, within that segment's rounding of its line, is not on it), within
-// its box grown by 10^-6 of its length, and off its line by no more than an added point's
-// roundings upon roundings (2^-40 of the coordinates: a point on another segment is farther)
-// or an input point's where a crossing within a few units in the last place of its
-// coordinates was merged into it (2^-49: the merge's 4 units, the crossing's rounding).
-struct OnSegment {
-  OnSegment(std::span<const Point> points, VertexId from_a, VertexId to_b, std::size_t input_points, long double floor)
-      : pts(points), a(from_a), b(to_b), input(input_points), least(floor) {
-    const Point &pa = pts[a], &pb = pts[b];
-    const double grow = 1e-6 * std::max(std::fabs(pa.x - pb.x), std::fabs(pa.y - pb.y));
-    x0 = std::min(pa.x, pb.x) - grow, x1 = std::max(pa.x, pb.x) + grow;
-    y0 = std::min(pa.y, pb.y) - grow, y1 = std::max(pa.y, pb.y) + grow;
-    from = along_key(pa, pb, pa), to = along_key(pa, pb, pb);
-  }
-
-  bool operator()(VertexId v) const {
-    const Point& p = pts[v];
-    if (v == b) return true;
-    if (!(p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1)) return false;
-    const double at = along_key(pts[a], pts[b], p);
-    if (!(at > from - 0x1p-40 * std::fabs(from) && at < to + 0x1p-40 * std::fabs(to))) return false;
-    return orient2d(pts[a], pts[b], p) == 0 ||
-        (v >= input ? off_line(pts[a], pts[b], p, least, true) <= 0x1p-40
-                    : off_line(pts[a], pts[b], p, least, false) <= 0x1p-49);
-  }
-
-  std::span<const Point> pts;
-  VertexId a, b;
-  std::size_t input;
-  long double least;
-  double x0 = 0, x1 = 0, y0 = 0, y1 = 0, from = 0, to = 0;
-};
-
 // A segment that runs through a hole or the exterior is a chain where it lies in the mesh,
 // followed from a: from each vertex by a segment edge to a point near the segment and ahead
 // along it, the nearest to its line first; where there is none, or none leads on to b, across
@@ -178,7 +144,7 @@ struct OnSegment {
 // segment as no chain.
 class GapSearch {
  public:
-  GapSearch(std::span<const Point> pts, const OnSegment& near, const std::vector<std::vector<VertexId>>& adj,
+  GapSearch(std::span<const Point> pts, const OnSegment& near, const Adjacency& adj,
             std::span<const std::pair<double, VertexId>> by_x, const std::vector<std::uint8_t>& on_boundary,
             TrianglesByX& triangles, std::size_t segment)
       : pts_(pts),
@@ -272,7 +238,7 @@ class GapSearch {
 
   std::span<const Point> pts_;
   VertexId a_, b_;
-  const std::vector<std::vector<VertexId>>& adj_;
+  const Adjacency& adj_;
   const std::vector<std::uint8_t>& on_boundary_;
   const OnSegment& near_;
   TrianglesByX& triangles_;
@@ -290,8 +256,9 @@ class GapSearch {
 class ChainCheck {
  public:
   ChainCheck(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec, long double least,
-             const std::vector<std::uint8_t>& used, const std::vector<std::uint8_t>& on_boundary, Report& report)
-      : edges_{adjacency(pts.size(), spec.edges), std::vector<std::uint8_t>(pts.size(), 0)},
+             const std::vector<std::uint8_t>& used, const detail::Standing& stand,
+             const std::vector<std::uint8_t>& on_boundary, Report& report)
+      : edges_{Adjacency::of_pairs(pts.size(), spec.edges), std::vector<std::uint8_t>(pts.size(), 0)},
         pts_(pts),
         spec_(spec),
         least_(least),
@@ -299,10 +266,9 @@ class ChainCheck {
         on_boundary_(on_boundary),
         report_(report),
         input_(spec.input_points == 0 ? pts.size() : spec.input_points),
+        stand_(stand),
         seen_(pts.size(), 0),
         triangles_(pts, tris) {  // sorted when a segment first runs through a hole
-    for (VertexId v = 0; v < pts.size(); ++v)
-      if (used[v]) vertex_at_.emplace(bits(pts[v]), v);
     for (VertexId v = 0; v < pts.size(); ++v)
       if (!edges_.adj[v].empty()) by_x_.push_back({pts[v].x, v});
     std::sort(by_x_.begin(), by_x_.end());
@@ -311,7 +277,7 @@ class ChainCheck {
   void check(std::size_t s) {
     if (spec_.segments[2 * s] >= input_ || spec_.segments[2 * s + 1] >= input_)
       return report_.problem("segment ", s, " refers to a point that is not one of the input's ", input_);
-    const VertexId a = stand(spec_.segments[2 * s]), b = stand(spec_.segments[2 * s + 1]);
+    const VertexId a = stand_(spec_.segments[2 * s]), b = stand_(spec_.segments[2 * s + 1]);
     if (a == b || pts_[a] == pts_[b]) return;  // (two equal points, both unused)
     const OnSegment near(pts_, a, b, input_, least_);
     const auto stamp = static_cast<std::uint32_t>(s + 1);
@@ -331,12 +297,6 @@ class ChainCheck {
   SegmentEdges take() { return std::move(edges_); }
 
  private:
-  static std::size_t bits(const Point& p) { return std::hash<double>{}(p.x) * 31 + std::hash<double>{}(p.y); }
-  VertexId stand(VertexId v) const {  // an unused duplicate stands for the used one
-    const auto it = vertex_at_.find(bits(pts_[v]));
-    return used_[v] || it == vertex_at_.end() || !(pts_[it->second] == pts_[v]) ? v : it->second;
-  }
-
   // The segment through a hole: a chain where it lies in the mesh (GapSearch), or reported.
   // Returns the points on it.
   std::vector<VertexId> across_gaps(const OnSegment& near, std::size_t s) {
@@ -362,7 +322,7 @@ class ChainCheck {
   void mark_straight(const OnSegment& near, const std::vector<VertexId>& reached) {
     const Point &a = pts_[near.a], &b = pts_[near.b];
     for (const VertexId v : reached) {
-      const std::vector<VertexId>& n = edges_.adj[v];
+      const std::span<const VertexId> n = edges_.adj[v];
       if (v < input_ || n.size() != 2 || !near(n[0]) || !near(n[1])) continue;
       const auto kp = along_keys(a, b, pts_[n[0]]), kv = along_keys(a, b, pts_[v]), kq = along_keys(a, b, pts_[n[1]]);
       if ((kp < kv && kv < kq) || (kq < kv && kv < kp)) edges_.straight[v] = 1;
@@ -377,7 +337,7 @@ class ChainCheck {
   const std::vector<std::uint8_t>& on_boundary_;
   Report& report_;
   std::size_t input_;
-  std::unordered_map<std::uint64_t, VertexId> vertex_at_;
+  const detail::Standing& stand_;
   std::vector<std::pair<double, VertexId>> by_x_;  // the points with a segment edge, by x (GapSearch)
   std::vector<std::uint32_t> seen_;
   TrianglesByX triangles_;
@@ -385,9 +345,9 @@ class ChainCheck {
 
 // The input's segments checked as chains; returns the segment edges (ChainCheck).
 SegmentEdges check_chains(std::span<const Point> pts, std::span<const VertexId> tris, const MeshSpec& spec,
-                          long double least, const std::vector<std::uint8_t>& used,
+                          long double least, const std::vector<std::uint8_t>& used, const detail::Standing& stand,
                           const std::vector<std::uint8_t>& on_boundary, Report& report) {
-  ChainCheck chains(pts, tris, spec, least, used, on_boundary, report);
+  ChainCheck chains(pts, tris, spec, least, used, stand, on_boundary, report);
   for (std::size_t s = 0; s + 1 < spec.segments.size(); s += 2) chains.check(s / 2);
   return chains.take();
 }
@@ -408,62 +368,87 @@ void check_holes(std::span<const Point> pts, std::span<const VertexId> tris, std
   }
 }
 
+// The edges of a mesh given without its segment edges: those along the segments, and along the
+// input's convex hull (a mesh of the hull has its edges as segments: Triangle's -c).
+std::vector<VertexId> edges_found(std::span<const Point> pts, const Adjacency& sides,
+                                  std::span<const VertexId> segments, std::size_t input_points,
+                                  const std::vector<std::uint8_t>& used, const detail::Standing& stand,
+                                  long double least) {
+  std::vector<VertexId> follow(segments.begin(), segments.end());
+  std::vector<VertexId> input(input_points);
+  for (VertexId v = 0; v < input_points; ++v) input[v] = v;
+  const std::vector<VertexId> hull = hull_of(pts, input);
+  for (std::size_t i = 0; i < hull.size(); ++i)
+    follow.push_back(hull[i]), follow.push_back(hull[(i + 1) % hull.size()]);
+  return detail::edges_along_segments(pts, sides, follow, segments.size() / 2, input_points, used, stand, least, 0);
+}
+
+// What check_mesh says of a valid mesh.
+std::string valid_message(std::size_t triangles, std::size_t added, const MeshSpec& spec, std::size_t segment_edges,
+                          bool found, const detail::MeshShape& shape) {
+  std::ostringstream s;
+  s << "valid: " << triangles << " triangles, " << added << " points added, " << spec.segments.size() / 2
+    << " segments as chains of " << segment_edges << (found ? " edges (found along them)" : " edges")
+    << ", every other edge locally Delaunay; smallest angle " << static_cast<double>(shape.smallest) << " degrees";
+  if (shape.excused > 0)
+    s << " (" << shape.excused << " triangles below " << spec.min_angle
+      << " beside small input angles, in their wedges or with an edge below 2^-39 of the extent)";
+  s << ", largest area " << static_cast<double>(shape.largest_area);
+  return s.str();
+}
+
 }  // namespace
 
-CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> tris, const MeshSpec& spec) {
+CheckResult check_mesh(std::span<const Point> input, std::span<const VertexId> tris, const MeshSpec& given) {
   if (tris.size() / 3 > kCheckMaxTriangles)
     throw InputError(std::to_string(tris.size() / 3) + " triangles are more than the validator takes");
   const std::vector<Point> scaled = detail::exactly_scaled(input);
   const std::span<const Point> pts = scaled.empty() ? input : std::span<const Point>(scaled);
   Report report;
-  if (tris.size() % 3 != 0 || spec.edges.size() % 2 != 0 || spec.segments.size() % 2 != 0)
+  if (tris.size() % 3 != 0 || given.edges.size() % 2 != 0 || given.segments.size() % 2 != 0)
     report.problem("a triangle, edge or segment list has a length that does not divide");
   std::vector<std::uint8_t> used(pts.size(), 0);
   detail::check_triangles(pts, tris, used, report);
-  for (const VertexId e : spec.edges)
+  for (const VertexId e : given.edges)
     if (e >= pts.size()) report.problem("an edge refers to point ", e, " of ", pts.size());
   if (report.problems() > 0) return report.result();
-  std::vector<Edge> segment_edges;
-  std::unordered_set<std::uint64_t> segment;
-  for (std::size_t k = 0; k + 1 < spec.edges.size(); k += 2) {
-    segment_edges.emplace_back(std::min(spec.edges[k], spec.edges[k + 1]), std::max(spec.edges[k], spec.edges[k + 1]));
-    segment.insert(key(spec.edges[k], spec.edges[k + 1]));
-  }
-  std::sort(segment_edges.begin(), segment_edges.end());
-  const std::vector<Edge> boundary = detail::check_edges(pts, tris, segment_edges, report);
-  std::unordered_set<std::uint64_t> sides;
-  for (std::size_t k = 0; k < tris.size(); ++k) sides.insert(key(tris[k], tris[k % 3 == 2 ? k - 2 : k + 1]));
-  for (const Edge& e : segment_edges)
-    if (!sides.count(key(e.first, e.second))) report.problem("segment edge ", e.first, "-", e.second, " is no edge");
-  check_boundary(pts, used, boundary, segment, report);
-  std::vector<std::uint8_t> on_boundary(pts.size(), 0);
-  for (const Edge& e : boundary) on_boundary[e.first] = on_boundary[e.second] = 1;
-  for (VertexId v = 0; v < pts.size(); ++v) on_boundary[v] |= !used[v];
   // The least normal double in the coordinates the mesher worked in (the input points scaled
   // by a power of two where they are huge or tiny), in these coordinates (scaled or not).
-  const std::size_t input_points = spec.input_points == 0 ? pts.size() : std::min(spec.input_points, pts.size());
+  const std::size_t input_points = given.input_points == 0 ? pts.size() : std::min(given.input_points, pts.size());
   const int here = scaled.empty() ? 0 : detail::exact_scale_exponent(input);
   // No finer either than the roundings of the output's doubles, 2^-1074 apart below the least
   // normal (points computed in scaled coordinates and scaled back), 2^-40 of the scale.
   const long double least =
       std::max(std::ldexp(0x1p-1022L, here - detail::exact_scale_exponent(input.first(input_points))),
                std::ldexp(0x1p-1034L, here));
-  const detail::SegmentEdges edges = check_chains(pts, tris, spec, least, used, on_boundary, report);
+  // A mesh given without its segment edges: those along the segments, and along the input's
+  // convex hull (a mesh of the hull has its edges as segments: Triangle's -c).
+  MeshSpec spec = given;
+  std::vector<VertexId> found;
+  const bool find = given.edges.empty() && !given.segments.empty();
+  const Adjacency sides = Adjacency::of_triangles(pts.size(), tris);
+  const detail::Standing stand(pts, used, input_points);
+  if (find) spec.edges = found = edges_found(pts, sides, given.segments, input_points, used, stand, least);
+  std::vector<Edge> segment_edges;
+  for (std::size_t k = 0; k + 1 < spec.edges.size(); k += 2)
+    segment_edges.emplace_back(std::min(spec.edges[k], spec.edges[k + 1]), std::max(spec.edges[k], spec.edges[k + 1]));
+  std::sort(segment_edges.begin(), segment_edges.end());
+  const std::vector<Edge> boundary = detail::check_edges(pts, tris, segment_edges, report);
+  for (const auto& [u, w] : segment_edges)
+    if (const auto n = sides[u]; std::find(n.begin(), n.end(), w) == n.end())
+      report.problem("segment edge ", u, "-", w, " is no edge");
+  check_boundary(pts, used, boundary, segment_edges, report);
+  std::vector<std::uint8_t> on_boundary(pts.size(), 0);
+  for (const Edge& e : boundary) on_boundary[e.first] = on_boundary[e.second] = 1;
+  for (VertexId v = 0; v < pts.size(); ++v) on_boundary[v] |= !used[v];
+  const detail::SegmentEdges edges = check_chains(pts, tris, spec, least, used, stand, on_boundary, report);
   std::vector<Point> holes(spec.holes.begin(), spec.holes.end());
   if (here != 0)
     for (Point& h : holes) h = {std::ldexp(h.x, here), std::ldexp(h.y, here)};
   check_holes(pts, tris, holes, report);
   const detail::MeshShape shape = detail::check_mesh_shape(input, pts, tris, spec, input_points, least, edges, report);
-  std::ostringstream s;
-  s << "valid: " << tris.size() / 3 << " triangles, " << pts.size() - input_points << " points added, "
-    << spec.segments.size() / 2 << " segments as chains of " << segment_edges.size()
-    << " edges, every other edge locally Delaunay; smallest angle " << static_cast<double>(shape.smallest)
-    << " degrees";
-  if (shape.excused > 0)
-    s << " (" << shape.excused << " triangles below " << spec.min_angle
-      << " beside small input angles, in their wedges or with an edge below 2^-39 of the extent)";
-  s << ", largest area " << static_cast<double>(shape.largest_area);
-  return report.result(s.str());
+  return report.result(
+      valid_message(tris.size() / 3, pts.size() - input_points, spec, segment_edges.size(), find, shape));
 }
 
 }  // namespace ridt

@@ -158,61 +158,6 @@ void edges_of_range(std::span<const Point> pts, const TriangleFeed& feed, std::s
   }
 }
 
-// Some extreme points' convex polygon, counter-clockwise: the least and greatest
-// lexicographically, by y, by x + y and by x - y (the sums rounded: they only choose points).
-// Empty where those points are fewer than three distinct or collinear.
-std::vector<VertexId> extreme_polygon(std::span<const Point> pts) {
-  VertexId e[8] = {};
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    const Point& p = pts[i];
-    auto take = [&](int k, bool better) {
-      if (better) e[k] = static_cast<VertexId>(i);
-    };
-    take(0, lex_less(p, pts[e[0]]));
-    take(1, lex_less(pts[e[1]], p));
-    take(2, p.y < pts[e[2]].y);
-    take(3, p.y > pts[e[3]].y);
-    take(4, p.x + p.y < pts[e[4]].x + pts[e[4]].y);
-    take(5, p.x + p.y > pts[e[5]].x + pts[e[5]].y);
-    take(6, p.x - p.y < pts[e[6]].x - pts[e[6]].y);
-    take(7, p.x - p.y > pts[e[7]].x - pts[e[7]].y);
-  }
-  std::vector<VertexId> corners(e, e + 8);
-  std::sort(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]); });
-  corners.erase(std::unique(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return pts[a] == pts[b]; }),
-                corners.end());
-  bool flat = true;
-  for (std::size_t i = 2; flat && i < corners.size(); ++i)
-    flat = orient2d(pts[corners[0]], pts[corners[1]], pts[corners[i]]) == 0;
-  if (corners.size() < 3 || flat) return {};
-  return detail::hull_with_collinear(pts, corners);
-}
-
-// The points not strictly inside the extreme polygon (all of them where it is empty), grouped:
-// `first` the least index of each group of equal points, in lexicographic order. They hold the
-// convex hull's corners and the points on its sides.
-detail::Distinct near_the_hull(std::span<const Point> pts, unsigned threads) {
-  const std::vector<VertexId> polygon = extreme_polygon(pts);
-  InOrder<std::vector<VertexId>> kept;
-  detail::parallel_for(pts.size(), threads, 1 << 16, [&](std::size_t first, std::size_t last) {
-    std::vector<VertexId> near;
-    for (std::size_t i = first; i < last; ++i) {
-      bool inside = !polygon.empty();
-      for (std::size_t k = 0; inside && k < polygon.size(); ++k)
-        inside = orient2d(pts[polygon[k]], pts[polygon[(k + 1) % polygon.size()]], pts[i]) > 0;
-      if (!inside) near.push_back(static_cast<VertexId>(i));
-    }
-    kept.put(first, std::move(near));
-  });
-  detail::Distinct d;
-  for (const std::vector<VertexId>& part : kept.take()) d.sorted.insert(d.sorted.end(), part.begin(), part.end());
-  std::sort(d.sorted.begin(), d.sorted.end(),
-            [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]) || (pts[a] == pts[b] && a < b); });
-  for (std::size_t i = 0; i < d.sorted.size(); ++i)
-    if (i == 0 || !(pts[d.sorted[i]] == pts[d.sorted[i - 1]])) d.first.push_back(d.sorted[i]);
-  return d;
-}
-
 // Every point that no triangle uses equal to one that some triangle does; returns the number
 // of vertices.
 std::size_t check_unused(std::span<const Point> pts, const std::vector<std::uint8_t>& used, unsigned threads,
@@ -272,7 +217,7 @@ CheckResult check_in_passes(std::span<const Point> input, const TriangleFeed& fe
                    boundary, report);
   }
   const std::size_t vertices = check_unused(pts, used, threads, report);
-  detail::check_hull_and_count(pts, near_the_hull(pts, threads), std::move(boundary), count, vertices, report);
+  detail::check_hull_and_count(pts, detail::near_the_hull(pts, threads), std::move(boundary), count, vertices, report);
   std::string valid = "valid: " + std::to_string(count) + " triangles, " + std::to_string(vertices) + " vertices of " +
       std::to_string(n) + " points (" + std::to_string(vertices) + " distinct), exactly Delaunay";
   return report.result(valid);

@@ -8,16 +8,9 @@
 #include <string>
 
 #include "predicates/predicates.hpp"
+#include "runtime/parallel.hpp"
 
 namespace ridt::detail {
-
-// The segment edges as lists of neighbours.
-std::vector<std::vector<VertexId>> adjacency(std::size_t n, std::span<const VertexId> edges) {
-  std::vector<std::vector<VertexId>> adj(n);
-  for (std::size_t k = 0; k + 1 < edges.size(); k += 2)
-    adj[edges[k]].push_back(edges[k + 1]), adj[edges[k + 1]].push_back(edges[k]);
-  return adj;
-}
 
 // How far p lies off the line a-b, in units of the coordinates' magnitudes: an error of r
 // times |x| in x and r times |y| in y moves p by r of this measure at most, where |x| and |y|
@@ -210,73 +203,118 @@ class Wedges {
 // end put points there, and splitting it would cut the chains down to the gap between them),
 // where its shortest edge is below 2^-39 of the points' extent (refinement splits no
 // subsegment that short), or where its circle meets a segment edge that short.
-MeshShape check_shape(std::span<const Point> pts, std::span<const Point> scaled, std::span<const VertexId> tris,
-                      const MeshSpec& spec, const Chains& chains, Report& report) {
-  MeshShape shape;
-  const Wedges wedges(scaled, chains.wedges);  // in the predicates' coordinates
-  const long double pi = 3.14159265358979323846264338327950288L;
-  // A vertex on a chain that ends at a corner with a small angle: refinement stops there.
-  auto beside_small_angle = [&](VertexId v) {
-    for (const std::uint32_t k : chains.on[v])
-      if (chains.small[chains.ends[k].first] || chains.small[chains.ends[k].second]) return true;
-    return false;
-  };
-  const Extent box = extent_of(pts);
-  const long double w = box.x1 - (long double)box.x0, h = box.y1 - (long double)box.y0;
-  const long double tiny2 = (w * w + h * h) * 0x1p-78L;
-  // The segment edges refinement never splits (below 2^-39 of the extent, with a margin).
-  std::vector<Edge> short_edges;
-  for (std::size_t k = 0; k + 1 < spec.edges.size(); k += 2) {
-    const Point &p = pts[spec.edges[k]], &q = pts[spec.edges[k + 1]];
-    const long double dx = p.x - (long double)q.x, dy = p.y - (long double)q.y;
-    if (dx * dx + dy * dy < 2 * tiny2) short_edges.emplace_back(spec.edges[k], spec.edges[k + 1]);
+class ShapeCheck {
+ public:
+  ShapeCheck(std::span<const Point> pts, std::span<const Point> scaled, std::span<const VertexId> tris,
+             const MeshSpec& spec, const Chains& chains)
+      : pts_(pts), scaled_(scaled), tris_(tris), spec_(spec), chains_(chains), wedges_(scaled, chains.wedges) {
+    const Extent box = extent_of(pts);
+    const long double w = box.x1 - (long double)box.x0, h = box.y1 - (long double)box.y0;
+    tiny2_ = (w * w + h * h) * 0x1p-78L;
+    // The segment edges refinement never splits (below 2^-39 of the extent, with a margin).
+    for (std::size_t k = 0; k + 1 < spec.edges.size(); k += 2)
+      if (length2(spec.edges[k], spec.edges[k + 1]) < 2 * tiny2_)
+        short_edges_.emplace_back(spec.edges[k], spec.edges[k + 1]);
   }
-  auto length2 = [&](VertexId a, VertexId b) {
-    const long double dx = pts[a].x - (long double)pts[b].x, dy = pts[a].y - (long double)pts[b].y;
-    return dx * dx + dy * dy;
-  };
-  for (std::size_t t = 0; t < tris.size() / 3; ++t) {
-    const VertexId* v = &tris[3 * t];
-    long double worst = 180;
-    for (int i = 0; i < 3; ++i) {
-      const Point &o = pts[v[i]], &u = pts[v[(i + 1) % 3]], &w = pts[v[(i + 2) % 3]];
-      const long double ux = u.x - (long double)o.x, uy = u.y - (long double)o.y;
-      const long double wx = w.x - (long double)o.x, wy = w.y - (long double)o.y;
-      worst = std::min(worst, std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / pi);
+
+  // Every triangle, on threads; the problems reported in the triangles' order.
+  MeshShape all(Report& report) const {
+    struct Part {
+      MeshShape shape;
+      Report report;
+    };
+    InOrder<Part> parts;
+    parallel_for(tris_.size() / 3, 0, 1 << 14, [&](std::size_t first, std::size_t last) {
+      Part part;
+      for (std::size_t t = first; t < last; ++t) measure(t, part.shape, part.report);
+      parts.put(first, std::move(part));
+    });
+    MeshShape shape;
+    for (const Part& part : parts.take()) {
+      shape.smallest = std::min(shape.smallest, part.shape.smallest);
+      shape.largest_area = std::max(shape.largest_area, part.shape.largest_area);
+      shape.excused += part.shape.excused;
+      report.merge(part.report);
     }
-    const Point &a = pts[v[0]], &b = pts[v[1]], &c = pts[v[2]];
+    return shape;
+  }
+
+ private:
+  long double length2(VertexId a, VertexId b) const {
+    const long double dx = pts_[a].x - (long double)pts_[b].x, dy = pts_[a].y - (long double)pts_[b].y;
+    return dx * dx + dy * dy;
+  }
+
+  // A triangle's smallest angle, in degrees: the one across its shortest side (within the
+  // lengths' roundings, which the bound's relative tolerance covers where two are nearly equal).
+  long double smallest_angle(const VertexId* v) const {
+    int i = 0;
+    long double shortest = length2(v[1], v[2]);
+    for (int k = 1; k < 3; ++k)
+      if (const long double l = length2(v[(k + 1) % 3], v[(k + 2) % 3]); l < shortest) shortest = l, i = k;
+    const Point &o = pts_[v[i]], &u = pts_[v[(i + 1) % 3]], &w = pts_[v[(i + 2) % 3]];
+    const long double ux = u.x - (long double)o.x, uy = u.y - (long double)o.y;
+    const long double wx = w.x - (long double)o.x, wy = w.y - (long double)o.y;
+    const long double pi = 3.14159265358979323846264338327950288L;
+    return std::atan2(std::fabs(ux * wy - uy * wx), ux * wx + uy * wy) * 180 / pi;
+  }
+
+  // A vertex on a chain that ends at a corner with a small angle: refinement stops there.
+  bool beside_small_angle(VertexId v) const {
+    for (const std::uint32_t k : chains_.on[v])
+      if (chains_.small[chains_.ends[k].first] || chains_.small[chains_.ends[k].second]) return true;
+    return false;
+  }
+
+  // A triangle below the angle that refinement leaves so (above).
+  bool excused(const VertexId* v) const {
+    const long double shortest = std::min({length2(v[0], v[1]), length2(v[1], v[2]), length2(v[2], v[0])});
+    auto at_a_short_one = [&] {  // its circle meets a segment edge too short to split
+      if (short_edges_.empty()) return false;
+      const Circle circle(scaled_[v[0]], scaled_[v[1]], scaled_[v[2]]);
+      return std::any_of(short_edges_.begin(), short_edges_.end(),
+                         [&](const Edge& e) { return circle.meets(scaled_[e.first], scaled_[e.second]); });
+    };
+    return beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2_ ||
+        wedges_.hold(scaled_[v[0]], scaled_[v[1]], scaled_[v[2]]) || at_a_short_one();
+  }
+
+  // Triangle t's angle and area against the bounds.
+  void measure(std::size_t t, MeshShape& shape, Report& report) const {
+    const VertexId* v = &tris_[3 * t];
+    const long double worst = smallest_angle(v);
+    const Point &a = pts_[v[0]], &b = pts_[v[1]], &c = pts_[v[2]];
     const long double area = std::fabs((b.x - (long double)a.x) * (c.y - (long double)a.y) -
                                        (b.y - (long double)a.y) * (c.x - (long double)a.x)) /
         2;
     shape.smallest = std::min(shape.smallest, worst);
     shape.largest_area = std::max(shape.largest_area, area);
-    if (spec.max_area > 0 && area > spec.max_area * (1 + 1e-9L))
-      report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec.max_area);
-    if (spec.min_angle > 0 && worst < spec.min_angle * (1 - 1e-9L)) {
-      const long double shortest = std::min({length2(v[0], v[1]), length2(v[1], v[2]), length2(v[2], v[0])});
-      auto at_a_short_one = [&] {  // its circle meets a segment edge too short to split
-        if (short_edges.empty()) return false;
-        const Circle circle(scaled[v[0]], scaled[v[1]], scaled[v[2]]);
-        return std::any_of(short_edges.begin(), short_edges.end(),
-                           [&](const Edge& e) { return circle.meets(scaled[e.first], scaled[e.second]); });
-      };
-      if (beside_small_angle(v[0]) || beside_small_angle(v[1]) || beside_small_angle(v[2]) || shortest < tiny2 ||
-          wedges.hold(scaled[v[0]], scaled[v[1]], scaled[v[2]]) || at_a_short_one())
-        ++shape.excused;
-      else
-        report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",
-                       spec.min_angle, ", and no small input angle beside it");
-    }
+    if (spec_.max_area > 0 && area > spec_.max_area * (1 + 1e-9L))
+      report.problem("triangle ", t, " has area ", static_cast<double>(area), ", above ", spec_.max_area);
+    if (!(spec_.min_angle > 0 && worst < spec_.min_angle * (1 - 1e-9L))) return;
+    if (excused(v))
+      ++shape.excused;
+    else
+      report.problem("triangle ", t, " has an angle of ", static_cast<double>(worst), " degrees, below ",
+                     spec_.min_angle, ", and no small input angle beside it");
   }
-  return shape;
-}
+
+  std::span<const Point> pts_, scaled_;
+  std::span<const VertexId> tris_;
+  const MeshSpec& spec_;
+  const Chains& chains_;
+  const Wedges wedges_;  // in the predicates' coordinates
+  long double tiny2_ = 0;
+  std::vector<Edge> short_edges_;
+};
 
 }  // namespace
 
 MeshShape check_mesh_shape(std::span<const Point> input, std::span<const Point> pts, std::span<const VertexId> tris,
                            const MeshSpec& spec, std::size_t input_points, long double least, const SegmentEdges& edges,
                            Report& report) {
-  return check_shape(input, pts, tris, spec, chains_of(pts, edges, input_points, least), report);
+  const Chains chains = chains_of(pts, edges, input_points, least);
+  return ShapeCheck(input, pts, tris, spec, chains).all(report);
 }
 
 }  // namespace ridt::detail

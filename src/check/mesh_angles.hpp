@@ -11,9 +11,6 @@
 
 namespace ridt::detail {
 
-/// The segment edges (pairs, flat) as lists of neighbours of each of n points.
-std::vector<std::vector<VertexId>> adjacency(std::size_t n, std::span<const VertexId> edges);
-
 /// How far p lies off the line a-b, in units of the roundings of a point on it (see the
 /// definition); `least`: the least scale, `computed`: p computed from a and b.
 double off_line(const Point& a, const Point& b, const Point& p, long double least, bool computed);
@@ -22,7 +19,7 @@ double off_line(const Point& a, const Point& b, const Point& p, long double leas
 /// added one found on an input segment between its two segment edges' other ends (`straight`:
 /// no corner of the segments' chains, however its neighbours measure the turn).
 struct SegmentEdges {
-  std::vector<std::vector<VertexId>> adj;
+  Adjacency adj;
   std::vector<std::uint8_t> straight;
 };
 

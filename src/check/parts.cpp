@@ -21,6 +21,29 @@ std::vector<Point> exactly_scaled(std::span<const Point> input) {
   return scaled;
 }
 
+Adjacency Adjacency::of_pairs(std::size_t n, std::span<const VertexId> pairs) {
+  Adjacency a{std::vector<std::size_t>(n + 1, 0), std::vector<VertexId>(pairs.size())};
+  for (const VertexId v : pairs) ++a.start[v + 1];
+  std::partial_sum(a.start.begin(), a.start.end(), a.start.begin());
+  std::vector<std::size_t> at(a.start.begin(), a.start.end() - 1);
+  for (std::size_t k = 0; k + 1 < pairs.size(); k += 2)
+    a.list[at[pairs[k]]++] = pairs[k + 1], a.list[at[pairs[k + 1]]++] = pairs[k];
+  return a;
+}
+
+Adjacency Adjacency::of_triangles(std::size_t n, std::span<const VertexId> tris) {
+  Adjacency a{std::vector<std::size_t>(n + 1, 0), std::vector<VertexId>(2 * tris.size())};
+  for (const VertexId v : tris) a.start[v + 1] += 2;
+  std::partial_sum(a.start.begin(), a.start.end(), a.start.begin());
+  std::vector<std::size_t> at(a.start.begin(), a.start.end() - 1);
+  for (std::size_t t = 0; t + 2 < tris.size(); t += 3)
+    for (int i = 0; i < 3; ++i) {
+      const VertexId u = tris[t + i], w = tris[t + (i + 1) % 3];
+      a.list[at[u]++] = w, a.list[at[w]++] = u;
+    }
+  return a;
+}
+
 // Every index in range, every triangle counter-clockwise and not degenerate; marks the
 // vertices used.
 void check_triangles(std::span<const Point> pts, std::span<const VertexId> tris, std::vector<std::uint8_t>& used,
@@ -182,6 +205,65 @@ void check_hull_and_count(std::span<const Point> pts, const Distinct& d, std::ve
   if (count != 2 * vertices - 2 - h)
     report.problem(count, " triangles, but ", vertices, " vertices with ", h, " on the hull need ",
                    2 * vertices - 2 - h);
+}
+
+// Some extreme points' convex polygon, counter-clockwise: the least and greatest
+// lexicographically, by y, by x + y and by x - y (the sums rounded: they only choose points).
+// Empty where those points are fewer than three distinct or collinear.
+namespace {
+
+std::vector<VertexId> extreme_polygon(std::span<const Point> pts) {
+  VertexId e[8] = {};
+  for (std::size_t i = 1; i < pts.size(); ++i) {
+    const Point& p = pts[i];
+    auto take = [&](int k, bool better) {
+      if (better) e[k] = static_cast<VertexId>(i);
+    };
+    take(0, lex_less(p, pts[e[0]]));
+    take(1, lex_less(pts[e[1]], p));
+    take(2, p.y < pts[e[2]].y);
+    take(3, p.y > pts[e[3]].y);
+    take(4, p.x + p.y < pts[e[4]].x + pts[e[4]].y);
+    take(5, p.x + p.y > pts[e[5]].x + pts[e[5]].y);
+    take(6, p.x - p.y < pts[e[6]].x - pts[e[6]].y);
+    take(7, p.x - p.y > pts[e[7]].x - pts[e[7]].y);
+  }
+  std::vector<VertexId> corners(e, e + 8);
+  std::sort(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]); });
+  corners.erase(std::unique(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return pts[a] == pts[b]; }),
+                corners.end());
+  bool flat = true;
+  for (std::size_t i = 2; flat && i < corners.size(); ++i)
+    flat = orient2d(pts[corners[0]], pts[corners[1]], pts[corners[i]]) == 0;
+  if (corners.size() < 3 || flat) return {};
+  return hull_with_collinear(pts, corners);
+}
+
+}  // namespace
+
+// The points not strictly inside the extreme polygon (all of them where it is empty), grouped:
+// `first` the least index of each group of equal points, in lexicographic order. They hold the
+// convex hull's corners and the points on its sides.
+Distinct near_the_hull(std::span<const Point> pts, unsigned threads) {
+  const std::vector<VertexId> polygon = extreme_polygon(pts);
+  InOrder<std::vector<VertexId>> kept;
+  parallel_for(pts.size(), threads, 1 << 16, [&](std::size_t first, std::size_t last) {
+    std::vector<VertexId> near;
+    for (std::size_t i = first; i < last; ++i) {
+      bool inside = !polygon.empty();
+      for (std::size_t k = 0; inside && k < polygon.size(); ++k)
+        inside = orient2d(pts[polygon[k]], pts[polygon[(k + 1) % polygon.size()]], pts[i]) > 0;
+      if (!inside) near.push_back(static_cast<VertexId>(i));
+    }
+    kept.put(first, std::move(near));
+  });
+  Distinct d;
+  for (const std::vector<VertexId>& part : kept.take()) d.sorted.insert(d.sorted.end(), part.begin(), part.end());
+  std::sort(d.sorted.begin(), d.sorted.end(),
+            [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]) || (pts[a] == pts[b] && a < b); });
+  for (std::size_t i = 0; i < d.sorted.size(); ++i)
+    if (i == 0 || !(pts[d.sorted[i]] == pts[d.sorted[i - 1]])) d.first.push_back(d.sorted[i]);
+  return d;
 }
 
 }  // namespace ridt::detail

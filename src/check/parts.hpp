@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <mutex>
+#include <span>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -69,6 +70,18 @@ class InOrder {
 
 using Edge = std::pair<VertexId, VertexId>;
 
+/// Lists of neighbours of n points in one array (no allocation a point): list v runs from
+/// list[start[v]] to list[start[v + 1]].
+struct Adjacency {
+  std::vector<std::size_t> start;
+  std::vector<VertexId> list;
+  std::span<const VertexId> operator[](VertexId v) const { return {list.data() + start[v], start[v + 1] - start[v]}; }
+  /// Of pairs (flat: u0, w0, u1, w1, ...), each in the other's list, in their order.
+  static Adjacency of_pairs(std::size_t n, std::span<const VertexId> pairs);
+  /// Of the triangles' sides, both ways: an interior edge twice, from its two triangles.
+  static Adjacency of_triangles(std::size_t n, std::span<const VertexId> tris);
+};
+
 /// The points' indices sorted lexicographically (equal points by index), the first index of
 /// each group of equal points, and whether the distinct points are fewer than three or
 /// collinear (then no triangle is right).
@@ -96,6 +109,13 @@ std::vector<Edge> check_edges(std::span<const Point> pts, std::span<const Vertex
 /// given as indices sorted lexicographically (Andrew's monotone chain). Requires at least three
 /// non-collinear points.
 std::vector<VertexId> hull_with_collinear(std::span<const Point> pts, const std::vector<VertexId>& sorted);
+
+/// The points not strictly inside the convex polygon of a few extreme points (all of them where
+/// that is empty), grouped as for Distinct: `first` the least index of each group of equal
+/// points, lexicographically. They hold the convex hull's corners and the points on its sides,
+/// and are few: hull_with_collinear(pts, near_the_hull(pts).first) is the hull, without a sort
+/// of every point. On `threads`.
+Distinct near_the_hull(std::span<const Point> pts, unsigned threads);
 
 /// Triangles exactly when the points are not degenerate; then the boundary edges (directed as
 /// their triangles run, any index of a group of equal points) are the convex hull of the

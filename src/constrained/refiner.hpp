@@ -188,7 +188,7 @@ class Refiner {
     return {std::min(e.first, e.second), std::max(e.first, e.second)};
   }
 
-  // The corner below 60 degrees where the chains of u and w (two of them) meet, or kNone.
+  // The corner below 60 degrees where the chains of u and w (two of them) meet, or kNoVertex.
   VertexId apex(VertexId u, VertexId w) const {
     if (corner(u) || corner(w) || ends_[u].first == kNoVertex || ends_[w].first == kNoVertex) return kNoVertex;
     const auto [u1, u2] = chain_of(u);
@@ -399,7 +399,7 @@ class Refiner {
   std::vector<Bad> given_up_;  // triangles left bad: for their shape after 64 tries, too large with no point inside
   Buckets<Bad> bad_;
   std::vector<Link> hit_;  // would_encroach's
-  // Subsegments split could not split, each by its ends and the apexes on either side (kNone
+  // Subsegments split could not split, each by its ends and the apexes on either side (kNoVertex
   // beyond the boundary): the outcome depends on those four alone, so a subsegment asked again
   // with the same neighbours is not tried again (where coordinates span the doubles' range, a
   // wedge's bad triangles asked for the same unsplittable subsegments 600,000 times, each try

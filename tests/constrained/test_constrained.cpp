@@ -37,6 +37,9 @@ ConstrainedTriangulation carved(const std::vector<Point>& pts, const std::vector
   spec.edges = t.edges, spec.segments = segs, spec.input_points = pts.size(), spec.holes = domain.holes;
   const CheckResult verdict = check_mesh(all, t.triangles, spec);
   EXPECT_TRUE(verdict.valid) << verdict.message;
+  spec.edges = {};  // found along the segments, as for a mesh read from Triangle's files
+  const CheckResult found = check_mesh(all, t.triangles, spec);
+  EXPECT_TRUE(found.valid) << found.message;
   return t;
 }
 

@@ -25,7 +25,8 @@ struct Meshed {
   std::vector<Point> all;  // the input's points, then those added
 };
 
-// check_mesh's verdict on mesh m of g, asked for q's bounds where `bounds`.
+// check_mesh's verdict on mesh m of g, asked for q's bounds where `bounds`, given the mesh's
+// segment edges and not.
 CheckResult verdict(const Meshed& m, const Pslg& g, const Quality& q, bool bounds) {
   MeshSpec spec;
   spec.edges = m.t.edges;
@@ -34,7 +35,13 @@ CheckResult verdict(const Meshed& m, const Pslg& g, const Quality& q, bool bound
   spec.holes = g.holes;
   spec.min_angle = bounds ? q.min_angle : 0;
   spec.max_area = bounds ? q.max_area : 0;
-  return check_mesh(m.all, m.t.triangles, spec);
+  const CheckResult given = check_mesh(m.all, m.t.triangles, spec);
+  // Without the mesh's segment edges (as from Triangle's files), the same verdict: check_mesh
+  // finds them along the segments.
+  spec.edges = {};
+  const CheckResult found = check_mesh(m.all, m.t.triangles, spec);
+  EXPECT_EQ(found.valid, given.valid) << "with the edges: " << given.message << "; found: " << found.message;
+  return given;
 }
 
 // The mesh, validated, with the bounds asked unless `bounds` is off (then only its structure)

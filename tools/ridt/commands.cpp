@@ -121,7 +121,9 @@ Command add_check(CLI::App& app) {
                       "ridt-mpi's parts")
       ->required();
   chk->add_option("--poly", a->poly, "a mesh's input .poly: its segments must be chains of edges, its holes empty");
-  chk->add_option("--edges", a->edges, "a mesh's .edge file (ridt mesh's OUT.edge): its segment edges");
+  chk->add_option("--edges", a->edges,
+                  "a mesh's .edge file (ridt mesh's OUT.edge): its segment edges (without it, with --poly: the mesh's "
+                  "edges along the segments)");
   chk->add_option("--min-angle", a->min_angle, "no angle below DEG degrees (but beside small input angles)");
   chk->add_option("--max-area", a->max_area, "no triangle larger than A");
   return {chk, [a] { return run_check(*a); }};
