@@ -307,6 +307,18 @@ expect 0 "mesh" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sq.ele"
 [ "$(head -1 "$dir/sq.node")" = "8 2 0 1" ] && pass || fail "sq.node: its header, with a marker a vertex"
 [ "$(head -1 "$dir/sq.edge")" = "8 1" ] && pass || fail "sq.edge"
 grep -q '^1 ' "$dir/sq.ele" && pass || fail ".ele not numbered from 1 as its .poly"
+# The mesh checked from its files alone (as Triangle's are: no OUT.edge), the hole's boundary
+# and an interior segment found along the .poly's segments; a mesh that breaks a segment fails.
+expect 0 "check a holed mesh without its edges" -- "$ridt" check "$dir/sq.node" "$dir/sq.ele" --poly "$dir/sq.poly"
+stdout_has "(found along them)"
+printf '6 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 2\n6 3 2\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n0\n' >"$dir/inner.poly"
+expect 0 "mesh -pq30 an interior segment" -- "$ridt" mesh "$dir/inner.poly" -o "$dir/inner.ele" --switches pq30
+expect 0 "check an interior segment without its edges" -- "$ridt" check "$dir/inner.node" "$dir/inner.ele" --poly "$dir/inner.poly" --min-angle 30
+printf '8 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 2\n6 3 2\n7 2 1.9\n8 2 2.1\n' >"$dir/beside.node"
+"$ridt" triangulate "$dir/beside.node" -o "$dir/beside.ele" >/dev/null 2>&1
+printf '0 2 0 0\n5 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n0\n' >"$dir/beside.poly"
+expect 1 "check a mesh that breaks a segment" -- "$ridt" check "$dir/beside.node" "$dir/beside.ele" --poly "$dir/beside.poly"
+stdout_has "segment 4 (4-5)"
 expect 0 "mesh -pz" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/z.ele" --switches pz
 # O: the holes ignored (the inner square then meshed too: 10 triangles); i, F, l, X and I pick
 # Triangle's algorithms and file names: ignored, the same mesh.
