@@ -29,8 +29,6 @@ using detail::orient2d;
 using detail::Report;
 using detail::SegmentEdges;
 
-std::uint64_t key(VertexId a, VertexId b) { return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b); }
-
 // The convex hull of the points `of` (indices into pts), counter-clockwise, points on its sides
 // kept (of equal points, the first in `of`); empty where they are fewer than three distinct or
 // collinear.

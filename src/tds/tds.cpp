@@ -91,11 +91,17 @@ void Tds::make_room(TriangleId end) {
     return;
   }
   if (!growable_) throw std::logic_error("ridt: the triangulation ran out of slots");
-  // Doubling, as a vector's push_back would: the slots are added a few at a time.
-  const std::size_t size = std::max(need, 2 * vertex_store_.size());
-  vertex_store_.resize(size, kNoVertex);
-  link_store_.resize(size, kNoLink);
-  if (!constraints_.empty()) constraints_.resize(size, kFree);
+  // The capacity doubles, as a vector's push_back makes it: the slots are added a few at a
+  // time. Only the slots asked for are written (the rest of the capacity is not touched, so
+  // its pages are not made present before they are used).
+  if (need > vertex_store_.capacity()) {
+    const std::size_t room = std::max(need, 2 * vertex_store_.capacity());
+    vertex_store_.reserve(room), link_store_.reserve(room);
+    if (!constraints_.empty()) constraints_.reserve(room);
+  }
+  vertex_store_.resize(need, kNoVertex);
+  link_store_.resize(need, kNoLink);
+  if (!constraints_.empty()) constraints_.resize(need, kFree);
   refresh();
 }
 

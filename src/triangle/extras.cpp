@@ -64,23 +64,23 @@ void add_dual(const ConstrainedTriangulation& t, unsigned threads, Output& out) 
   }
 }
 
-void add_middles(const ConstrainedTriangulation& t, Output& out) {
-  const std::size_t points = out.vertices.size(), count = out.attribute_count;
+void add_middles(const std::vector<std::int32_t>& neighbors, const std::vector<VertexId>& pieces, Output& out) {
+  const std::size_t points = out.vertices.size(), count = out.attribute_count, triangles = out.triangles.size() / 3;
   Triangulation mesh;
   mesh.triangles = out.triangles;
-  mesh.neighbors.assign(t.neighbors.begin(), t.neighbors.begin() + static_cast<std::ptrdiff_t>(3 * t.size()));
-  const SecondOrder s = second_order(out.vertices, mesh);
+  mesh.neighbors = neighbors;
+  SecondOrder s = second_order(out.vertices, mesh);
   // A middle's marker by the vertices' rule: its piece's marker where not 0, else 1 on the
   // boundary, 0 inside; its attributes the mean of its ends', as linear interpolation along the
   // edge gives them.
   if (!out.vertex_markers.empty()) {
     out.vertex_markers.resize(points + s.nodes.size(), 0);
-    for (std::size_t k = 0; k < t.size(); ++k)
+    for (std::size_t k = 0; k < triangles; ++k)
       for (int i = 0; i < 3; ++i)
-        if (t.neighbors[3 * k + i] < 0) out.vertex_markers[s.triangles[6 * k + 3 + i]] = 1;
-    const EdgeIndex pieces(t.edges);
+        if (neighbors[3 * k + i] < 0) out.vertex_markers[s.triangles[6 * k + 3 + i]] = 1;
+    const EdgeIndex index(pieces);
     for (std::size_t q = 0; q < s.nodes.size(); ++q)
-      if (const std::size_t e = pieces.find(s.ends[2 * q], s.ends[2 * q + 1]);
+      if (const std::size_t e = index.find(s.ends[2 * q], s.ends[2 * q + 1]);
           e < out.segment_markers.size() && out.segment_markers[e] != 0)
         out.vertex_markers[points + q] = out.segment_markers[e];
   }
@@ -89,7 +89,7 @@ void add_middles(const ConstrainedTriangulation& t, Output& out) {
       out.vertex_attributes.push_back(std::midpoint(out.vertex_attributes[s.ends[2 * q] * count + j],
                                                     out.vertex_attributes[s.ends[2 * q + 1] * count + j]));
   out.vertices.insert(out.vertices.end(), s.nodes.begin(), s.nodes.end());
-  out.triangles = s.triangles;
+  out.triangles = std::move(s.triangles);
   out.nodes = 6;
 }
 

@@ -40,8 +40,9 @@ void every_edge(const ConstrainedTriangulation& t, Output& out);
 /// v: the mesh's dual, with the vertices' attributes at its vertices.
 void add_dual(const ConstrainedTriangulation& t, unsigned threads, Output& out);
 /// o2: a node at the middle of every edge, after the vertices, with its marker and attributes;
-/// the triangles become six-node ones.
-void add_middles(const ConstrainedTriangulation& t, Output& out);
+/// the triangles become six-node ones. `neighbors` are those of out.triangles, `pieces` the
+/// fixed edges (ConstrainedTriangulation::edges).
+void add_middles(const std::vector<std::int32_t>& neighbors, const std::vector<VertexId>& pieces, Output& out);
 /// j: the vertices of no triangle left out, the rest numbered in order.
 void jettison(Output& out);
 

@@ -77,16 +77,16 @@ std::vector<VertexId> segments_of_edges(const std::string& path, std::size_t poi
 }
 
 // Triangle's input from a .poly or .node (its vertices, markers, attributes, segments, holes
-// and regions); `read` gets the files read.
-triangle::Input input_of(const io::Pslg& g) {
+// and regions), moved out of the file's contents.
+triangle::Input input_of(io::Pslg&& g) {
   triangle::Input in;
-  in.vertices = g.points;
-  in.vertex_markers = g.point_markers;
+  in.vertices = std::move(g.points);
+  in.vertex_markers = std::move(g.point_markers);
   in.attribute_count = g.vertex_attributes;
-  in.vertex_attributes = g.point_attributes;
-  in.segments = g.segments;
-  in.segment_markers = g.segment_markers;
-  in.holes = g.holes;
+  in.vertex_attributes = std::move(g.point_attributes);
+  in.segments = std::move(g.segments);
+  in.segment_markers = std::move(g.segment_markers);
+  in.holes = std::move(g.holes);
   for (const auto& r : g.regions) in.regions.push_back({{r[0], r[1]}, r[2], r[3]});
   return in;
 }
@@ -98,24 +98,25 @@ triangle::Input refine_input(const Args& a, triangle::Switches& w, int& first_in
   const std::string base = a.input.substr(0, a.input.size() - 4);
   io::Pslg g = io::read_pslg(base + ".node", thread_count(a.threads));
   first_index = g.first_index;
-  triangle::Input in = input_of(g);
+  const std::size_t points = g.points.size();
+  triangle::Input in = input_of(std::move(g));
   std::vector<VertexId> middles;  // of a six-node mesh: left unused, its corners refined
   in.triangles = io::read_elements(a.input, g.first_index, in.triangle_attributes, middles, thread_count(a.threads));
   read = {a.input, base + ".node"};
   if (w.pslg) {
     const io::Pslg p = io::read_pslg(base + ".poly", thread_count(a.threads));
-    if (p.points.size() != g.points.size())
+    if (p.points.size() != points)
       throw InputError(base + ".poly has " + std::to_string(p.points.size()) + " vertices; the mesh has " +
-                       std::to_string(g.points.size()));
+                       std::to_string(points));
     in.segments = p.segments, in.segment_markers = p.segment_markers;
     read.push_back(base + ".poly");
   } else if (std::filesystem::exists(base + ".edge")) {
-    in.segments = segments_of_edges(base + ".edge", g.points.size(), g.first_index, in.triangles.size() / 3);
+    in.segments = segments_of_edges(base + ".edge", points, first_index, in.triangles.size() / 3);
     w.pslg = true;  // the .edge's segments kept
     read.push_back(base + ".edge");
   }
   if (w.region_areas && !(w.limit_steiner && w.max_steiner == 0)) {
-    in.triangle_max_area = io::read_area_file(base + ".area", in.triangles.size() / 3, g.first_index);
+    in.triangle_max_area = io::read_area_file(base + ".area", in.triangles.size() / 3, first_index);
     read.push_back(base + ".area");
   } else {
     w.region_areas = false;
@@ -137,10 +138,10 @@ int run(const Args& a, triangle::Switches w) {
     in = refine_input(a, w, first_index, read);
   } else {
     refuse_overwriting({a.input}, out);
-    const io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
+    io::Pslg g = io::read_pslg(a.input, thread_count(a.threads));
     first_index = g.first_index;
     read = {g.node_file};
-    in = input_of(g);
+    in = input_of(std::move(g));
   }
   refuse_overwriting(read, out);
   const triangle::Output m = triangle::triangulate(in, w, o);
