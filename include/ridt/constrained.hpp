@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ridt/ridt.hpp"
+#include "ridt/size_field.hpp"
 
 namespace ridt {
 
@@ -80,7 +81,11 @@ struct Quality {
   /// an area bound that depends on the position: `area > size(centroid)`), or refinement goes on
   /// until `max_steiner` or the memory left stops it.
   std::function<bool(const Point& a, const Point& b, const Point& c, double area)> unsuitable;
-  bool enabled() const { return min_angle > 0 || max_area > 0 || conforming || unsuitable; }
+  /// A target edge length over the plane (ridt/size_field.hpp): no triangle's longest edge
+  /// above the size at its centroid, but where the angle bound or the input forces one. The
+  /// field is asked for the sizes of many triangles at once, on the calling thread.
+  SizeField size;
+  bool enabled() const { return min_angle > 0 || max_area > 0 || conforming || unsuitable || size; }
 };
 
 /// The constrained Delaunay triangulation of `points` with `segments` (pairs of indices into

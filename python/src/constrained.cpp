@@ -33,7 +33,8 @@ ridt::Quality quality(double min_angle, double max_area, bool split_boundary, bo
                   .split_segments = split_segments,
                   .max_steiner = max_steiner,
                   .conforming = conforming,
-                  .unsuitable = {}};
+                  .unsuitable = {},
+                  .size = {}};
   if (!unsuitable.is_none()) {
     if (!PyCallable_Check(unsuitable.ptr())) throw py::type_error("unsuitable must be callable or None");
     q.unsuitable = [f = py::handle(unsuitable)](const ridt::Point& a, const ridt::Point& b, const ridt::Point& c,

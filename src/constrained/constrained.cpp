@@ -208,6 +208,7 @@ void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain
   out.triangles = std::move(m.tds.vertex_array());
   out.triangles.resize(3 * size);
   if (reshaped) out.hull.clear();
+  out.steiner.reserve(out.steiner.size() + (m.pts.size() - n));
   for (std::size_t v = n; v < m.pts.size(); ++v) out.steiner.push_back(scaled(m.pts[v], -scale));
   if (!m.region.empty()) {
     out.attributes.resize(size, 0.0);
@@ -232,6 +233,7 @@ void refine(detail::Cdt& m, ConstrainedTriangulation& out, const Options& option
                        static_cast<VertexId>(corners + pinched.size()),
                        room_left(options, m),
                        given,
+                       {},
                        {}};
   for (const Region& g : domain.regions)
     r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
@@ -239,6 +241,13 @@ void refine(detail::Cdt& m, ConstrainedTriangulation& out, const Options& option
     r.unsuitable = [&quality, scale](const Point& a, const Point& b, const Point& c, double twice) {
       return quality.unsuitable(scaled(a, -scale), scaled(b, -scale), scaled(c, -scale),
                                 std::ldexp(twice, -2 * scale - 1));
+    };
+  if (quality.size)
+    r.sizes = [&quality, scale](std::span<const Point> at, std::span<double> out) {
+      std::vector<Point> p(at.size());
+      for (std::size_t k = 0; k < at.size(); ++k) p[k] = scaled(at[k], -scale);
+      quality.size.sizes(p, out);
+      for (double& h : out) h = std::ldexp(h, scale);
     };
   if (std::string w = detail::refine(m, r); !w.empty()) out.warning = w;
   detail::merge_pinches(m, first, pinched);

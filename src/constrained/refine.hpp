@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct Refinement {
   const GivenMesh* given = nullptr;
   /// Quality::unsuitable, given m's (scaled) corners and twice the area; empty: none.
   std::function<bool(const Point&, const Point&, const Point&, double)> unsuitable;
+  /// Quality::size at many points of m (scaled), in m's lengths; empty: none.
+  std::function<void(std::span<const Point>, std::span<double>)> sizes;
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's

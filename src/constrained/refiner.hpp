@@ -78,6 +78,10 @@ class Refiner {
         if (s != kNoLink && m_.fixed(s) && (w.forced || encroached(s))) split(s);
         continue;
       }
+      if (!unsized_.empty() && (bad_.empty() || unsized_.size() >= kSizeBatch)) {
+        weigh_sizes();
+        continue;
+      }
       if (bad_.empty()) return left_bad();
       const Bad b = bad_.pop();
       prefetch_ahead();
@@ -144,7 +148,7 @@ class Refiner {
     auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
     std::string w = "quality refinement left ";
     if (below > 0) w += triangles(below) + " below the minimum angle";
-    if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area";
+    if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area or size";
     if (failed > 0)
       w += std::string(below + above > 0 ? " and " : "") + triangles(failed) + " unsuitable by the test given";
     return w + ": the subsegments near them could not be split far enough";
@@ -153,9 +157,30 @@ class Refiner {
   bool alive(const Bad& b) const {
     return b.t < m_.size() && m_.at(b.t, 0) == b.v[0] && m_.at(b.t, 1) == b.v[1] && m_.at(b.t, 2) == b.v[2];
   }
+  // A triangle queued where bad; with a size field, first put aside until the field is asked
+  // for the sizes of a batch of them (weigh_sizes).
   void queue_bad(std::uint32_t t) {
+    if (r_.sizes) return unsized_.push_back({kGood, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, 0});
     if (const double key = badness(t); key != kGood)
       bad_.push({key, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, curve(m_.pts[m_.at(t, 0)])});
+  }
+  // The sizes at the centroids of the triangles put aside and still there, in one call of the
+  // field; each then queued where bad. The batches depend on the mesh alone, so the mesh does
+  // not depend on how the field is given.
+  void weigh_sizes() {
+    std::erase_if(unsized_, [&](const Bad& b) { return !alive(b); });
+    centroids_.resize(unsized_.size()), sizes_.resize(unsized_.size());
+    for (std::size_t k = 0; k < unsized_.size(); ++k) {
+      const Point &a = m_.pts[unsized_[k].v[0]], &b = m_.pts[unsized_[k].v[1]], &c = m_.pts[unsized_[k].v[2]];
+      centroids_[k] = {a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3};
+    }
+    r_.sizes(centroids_, sizes_);
+    for (std::size_t k = 0; k < unsized_.size(); ++k) {
+      const std::uint32_t t = unsized_[k].t;
+      if (const double key = badness(t, sizes_[k]); key != kGood)
+        bad_.push({key, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, curve(m_.pts[m_.at(t, 0)])});
+    }
+    unsized_.clear();
   }
 
   // The subsegment in slot s has a vertex strictly inside its diametral circle: the apex of its
@@ -230,17 +255,24 @@ class Refiner {
   }
 
   // Where triangle t stands in the queue of bad triangles, kGood where it is good: one too large
-  // (whatever its angles) by minus its area over its bound (the largest first: -1 or below),
+  // (whatever its angles) by minus its area over its bound, or its longest edge's squared length
+  // over the squared `size` (the largest first: -1 or below),
   // then one the caller's test finds unsuitable, refined as one too large is (the largest first,
   // from -1/3 to 0), one with a small
   // angle by its shortest edge's squared length (the smallest first: the sizes then grade out
   // from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex coastline).
-  double badness(std::uint32_t t) const {
+  double badness(std::uint32_t t, double size = kGood) const {
     const VertexId v[3] = {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)};
     const Point &a = m_.pts[v[0]], &b = m_.pts[v[1]], &c = m_.pts[v[2]];
     const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
     // First: the terminator (improve) may leave a small angle, never an area above its bound.
-    if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) return -twice / (2 * bound);
+    double large = 0;
+    if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) large = twice / (2 * bound);
+    if (size != kGood) {
+      const double longest = std::max({dist2(b, c), dist2(c, a), dist2(a, b)}), h2 = size * size;
+      if (longest > h2) large = std::max(large, std::min(longest / h2, 0x1p1000));
+    }
+    if (large > 0) return -large;
     // Within the box a triangle's doubled area is at most diag2_ / 2, so this is in [-1/3, 0)
     // (divided first: diag2_ may be near the largest double).
     if (r_.unsuitable && r_.unsuitable(a, b, c, twice)) {
@@ -398,6 +430,11 @@ class Refiner {
   std::vector<Split> segments_;  // subsegments to split, if still there (and encroached)
   std::vector<Bad> given_up_;  // triangles left bad: for their shape after 64 tries, too large with no point inside
   Buckets<Bad> bad_;
+  // With a size field: the triangles made since the field was last asked, and its answers.
+  static constexpr std::size_t kSizeBatch = 4096;
+  std::vector<Bad> unsized_;
+  std::vector<Point> centroids_;
+  std::vector<double> sizes_;
   std::vector<Link> hit_;  // would_encroach's
   // Subsegments split could not split, each by its ends and the apexes on either side (kNoVertex
   // beyond the boundary): the outcome depends on those four alone, so a subsegment asked again
