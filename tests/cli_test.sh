@@ -326,6 +326,45 @@ expect 0 "mesh -pO" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sqO.ele" --switches 
 [ "$(head -1 "$dir/sqO.ele")" = "10 3 0" ] && pass || fail "O did not keep the hole's triangles"
 expect 0 "mesh -piFlXI" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/sqi.ele" --switches piFlXIQ
 cmp -s "$dir/sqi.ele" "$dir/sq.ele" && cmp -s "$dir/sqi.node" "$dir/sq.node" && pass || fail "i, F, l, X, I changed the mesh"
+# --size: a target edge length from a grid (ESRI ASCII; the same grid as a GeoTIFF through GDAL
+# gives the same mesh), from points (a .node's first attribute) and from a background mesh (a
+# .ele and its .node); every triangle's longest edge within the size at its centroid; bad size
+# files refused, nothing written.
+printf '4 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' >"$dir/ten.poly"
+printf 'ncols 3\nnrows 2\nxllcenter 0\nyllcenter 0\ncellsize 5\n1.25 1.75 2.25\n0.25 0.75 1.25\n' >"$dir/h.asc"
+expect 0 "mesh --size grid" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hg.ele" --switches pq30 --size "$dir/h.asc"
+expect 0 "check the size-graded mesh" -- "$ridt" check "$dir/hg.node" "$dir/hg.ele" --poly "$dir/ten.poly" --min-angle 30
+within_size() {  # MESH.node MESH.ele: every triangle's longest edge <= 0.25 + 0.1 x + 0.2 y at its centroid
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import math, sys
+node = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")][1:]
+ele = [l.split() for l in open(sys.argv[2]) if l.strip() and not l.startswith("#")][1:]
+p = {r[0]: (float(r[1]), float(r[2])) for r in node}
+assert len(ele) > 300, len(ele)
+for r in ele:
+    a, b, c = (p[r[1]], p[r[2]], p[r[3]])
+    x, y = (a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3
+    longest = max(math.dist(a, b), math.dist(b, c), math.dist(c, a))
+    assert longest <= (0.25 + 0.1 * x + 0.2 * y) * (1 + 1e-9), (r, longest, x, y)
+PY
+}
+within_size "$dir/hg.node" "$dir/hg.ele" && pass || fail "a triangle above the grid's size"
+gdal_translate -q -of GTiff -ot Float64 "$dir/h.asc" "$dir/h.tif" && pass || fail "gdal_translate of the size grid"
+expect 0 "mesh --size GeoTIFF" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/ht.ele" --switches pq30 --size "$dir/h.tif"
+cmp -s "$dir/hg.ele" "$dir/ht.ele" && cmp -s "$dir/hg.node" "$dir/ht.node" && pass || fail "the GeoTIFF's mesh differs from the .asc's"
+printf '4 2 1 0\n1 0 0 0.25\n2 10 0 1.25\n3 10 10 3.25\n4 0 10 2.25\n' >"$dir/hp.node"
+expect 0 "mesh --size points" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hpm.ele" --switches pq30 --size "$dir/hp.node"
+within_size "$dir/hpm.node" "$dir/hpm.ele" && pass || fail "a triangle above the points' size"
+printf '2 3 0\n1 1 2 3\n2 1 3 4\n' >"$dir/hp.ele"
+expect 0 "mesh --size background mesh" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hm.ele" --switches pq30 --size "$dir/hp.ele"
+within_size "$dir/hm.node" "$dir/hm.ele" && pass || fail "a triangle above the background mesh's size"
+printf 'ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 5\nnodata_value -9999\n1 -9999\n' >"$dir/nodata.asc"
+printf 'ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 5\n1 0\n' >"$dir/zero.asc"
+for bad in nodata.asc zero.asc ten.poly sq.node missing.tif; do
+  expect 2 "mesh --size $bad" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/bad_size.ele" --switches pq30 --size "$dir/$bad"
+  absent "$dir/bad_size.ele"
+done
+
 # A SIGBUS (an input file cut short while it is mapped) ends the tool with a message and status
 # 2, and no output: here sent while the tool waits to open a FIFO no one writes.
 mkfifo "$dir/wait.fifo"

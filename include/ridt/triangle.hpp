@@ -74,6 +74,9 @@ struct Input {
   std::vector<VertexId> triangles;  ///< a mesh to refine (r): three a triangle
   std::vector<double> triangle_attributes;  ///< (r) one a triangle, or none
   std::vector<double> triangle_max_area;  ///< (r with a alone) one a triangle
+  /// A target edge length over the plane (Quality::size), beyond Triangle's switches: the mesh
+  /// refined to it, with or without q and a.
+  SizeField size;
 };
 
 /// What Triangle gives: its .node, .ele, .edge, .neigh, .v.node and .v.edge files' content,

@@ -36,8 +36,9 @@ void check_sizes(const Input& in, const Switches& w) {
 
 // The triangulation or mesh the switches ask of the input.
 ConstrainedTriangulation run(const Input& in, const Switches& w, const Options& o, std::vector<Point>& holes) {
-  const Quality q = w.quality_bounds();
+  Quality q = w.quality_bounds();
   const bool refining = !(w.limit_steiner && w.max_steiner == 0);  // S0: nothing refined
+  if (refining) q.size = in.size;
   const std::span<const VertexId> segments = w.pslg ? std::span(in.segments) : std::span<const VertexId>{};
   if (w.refine) {
     const std::span<const double> areas =

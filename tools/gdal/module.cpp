@@ -11,6 +11,7 @@
 #include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
 
+#include <cmath>
 #include <mutex>
 
 #include "io_common.hpp"
@@ -259,14 +260,42 @@ void dem_out(const std::string& path, const char* name, const RasterGrid& g, dou
   file.commit();
 }
 
+// A north-up raster's first band, its cells' centres from the geotransform.
+void raster_in(const std::string& path, detail::RasterIn& out) {
+  register_gdal();
+  const Dataset ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!ds) fail_file(path, "cannot open as a raster: " + gdal_error());
+  if (ds->GetRasterCount() < 1) fail_file(path, "has no band");
+  double t[6] = {0, 1, 0, 0, 0, 1};
+  if (ds->GetGeoTransform(t) != CE_None) fail_file(path, "has no geotransform: where its cells lie is not known");
+  if (t[2] != 0 || t[4] != 0) fail_file(path, "is rotated or sheared: ridt reads north-up rasters");
+  const auto nx = static_cast<std::size_t>(ds->GetRasterXSize()), ny = static_cast<std::size_t>(ds->GetRasterYSize());
+  out.values.resize(nx * ny);
+  GDALRasterBand* band = ds->GetRasterBand(1);
+  if (band->RasterIO(GF_Read, 0, 0, static_cast<int>(nx), static_cast<int>(ny), out.values.data(), static_cast<int>(nx),
+                     static_cast<int>(ny), GDT_Float64, 0, 0, nullptr) != CE_None)
+    fail_file(path, "cannot read its band: " + gdal_error());
+  int has = 0;
+  const double nodata = band->GetNoDataValue(&has);
+  if (has != 0)
+    for (std::size_t k = 0; k < out.values.size(); ++k)
+      if (out.values[k] == nodata || (std::isnan(nodata) && std::isnan(out.values[k])))
+        fail_file(path,
+                  "has no value (nodata) at column " + std::to_string(k % nx) + ", row " + std::to_string(k / nx) +
+                      ": a size is needed everywhere");
+  out.nx = nx, out.ny = ny;
+  out.x0 = t[0] + 0.5 * t[1], out.x1 = t[0] + (static_cast<double>(nx) - 0.5) * t[1];
+  out.y0 = t[3] + 0.5 * t[5], out.y1 = t[3] + (static_cast<double>(ny) - 0.5) * t[5];
+}
+
 }  // namespace
 
 }  // namespace ridt::io
 
 // The entry's name carries the GdalModule layout's version: a module built for another layout is
 // not found, rather than misread.
-extern "C" const ridt::io::detail::GdalModule* ridt_gdal_module_2() {
+extern "C" const ridt::io::detail::GdalModule* ridt_gdal_module_3() {
   static const ridt::io::detail::GdalModule module{ridt::io::points_in, ridt::io::tin_out, ridt::io::dem_out,
-                                                   ridt::io::remove_temporaries};
+                                                   ridt::io::raster_in, ridt::io::remove_temporaries};
   return &module;
 }

@@ -15,7 +15,7 @@ namespace ridt::tool {
 namespace {
 
 struct Args {
-  std::string input, output, switches;
+  std::string input, output, switches, size;
   std::string method = "auto";
   unsigned threads = 0;
   double quality = 0, max_area = 0;
@@ -143,6 +143,10 @@ int run(const Args& a, triangle::Switches w) {
     read = {g.node_file};
     in = input_of(std::move(g));
   }
+  if (!a.size.empty()) {
+    in.size = io::read_size_field(a.size, thread_count(a.threads));
+    read.push_back(a.size);
+  }
   refuse_overwriting(read, out);
   const triangle::Output m = triangle::triangulate(in, w, o);
   if (!m.warning.empty()) std::fprintf(stderr, "ridt: warning: %s\n", m.warning.c_str());
@@ -173,6 +177,11 @@ Command add_mesh(CLI::App& app) {
   CLI::Option* quality =
       mesh->add_option("--quality", a->quality, "no angle below DEG degrees, up to 34 (Triangle's -q)");
   mesh->add_option("--max-area", a->max_area, "no triangle larger than A (Triangle's -a)");
+  mesh->add_option("--size", a->size,
+                   "a target edge length over the plane: no triangle's longest edge above it at its centroid; " +
+                       io::size_formats() +
+                       " (a .node's points with the size their first attribute, a .ele with its .node: a background "
+                       "mesh, a grid)");
   mesh->add_flag("--region-areas", a->region_areas,
                  "the regions' own area bounds; refining a .ele, each triangle's from its .area file (Triangle's -a "
                  "with no number)");

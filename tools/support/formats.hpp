@@ -64,6 +64,7 @@ using ReadGraph = Pslg (*)(const std::string& path, std::string_view data, unsig
 using ReadTerrain = Terrain (*)(const std::string& path, const PointFilter& filter, const Columns& columns);
 using WriteTin = void (*)(const std::string& path, const Terrain& terrain, const Triangulation& t);
 using WriteDem = void (*)(const std::string& path, const Dem& dem, const DemFile& file);
+using ReadSize = SizeField (*)(const std::string& path, unsigned threads);
 /// A role that `ridt mesh` or `ridt check` reads or writes itself, as a family of files named
 /// by Triangle's conventions rather than chosen by extension: described, not dispatched.
 using Described = bool;
@@ -79,6 +80,7 @@ struct Format {
   Role<WriteVoronoi> voronoi_out;
   Role<WriteValues> values_out;
   Role<ReadGraph> graph_in;  ///< points, segments, holes, regions
+  Role<ReadSize> size_in;  ///< a size field for quality meshes
   Role<Described> mesh_files;  ///< read or written by `ridt mesh` (Triangle's files)
   Role<ReadTerrain> terrain_in;
   Role<WriteTin> tin_out;
@@ -158,6 +160,7 @@ inline constexpr RoleName<WriteVoronoi> kVoronoiOut{&Format::voronoi_out, "Voron
 inline constexpr RoleName<WriteValues> kValuesOut{&Format::values_out, "values out", "values output", "interpolate"};
 inline constexpr RoleName<ReadGraph> kGraphIn{&Format::graph_in, "graph in", "planar straight-line graph input",
                                               "mesh"};
+inline constexpr RoleName<ReadSize> kSizeIn{&Format::size_in, "size in", "size field input", "mesh"};
 inline constexpr RoleName<Described> kMeshFiles{&Format::mesh_files, "mesh files", "mesh file", "mesh, check"};
 inline constexpr RoleName<ReadTerrain> kTerrainIn{&Format::terrain_in, "terrain in", "terrain input", "tin, dem"};
 inline constexpr RoleName<WriteTin> kTinOut{&Format::tin_out, "TIN out", "TIN", "tin"};
@@ -172,6 +175,10 @@ Pslg read_node_graph(const std::string& path, std::string_view text, unsigned th
 void write_tin_ply(const std::string& path, const Terrain& terrain, const Triangulation& t);  // io_terrain.cpp
 void write_tin_obj(const std::string& path, const Terrain& terrain, const Triangulation& t);
 void write_dem_png(const std::string& path, const Dem& dem, const DemFile& file);
+SizeField read_size_node(const std::string& path, unsigned threads);  // io_size.cpp
+SizeField read_size_mesh(const std::string& path, unsigned threads);
+SizeField read_size_ascii_grid(const std::string& path, unsigned threads);
+SizeField read_size_gdal(const std::string& path, unsigned threads);
 Terrain read_las_terrain(const std::string& path, const PointFilter& filter, const Columns& columns);  // io_las.cpp
 Terrain read_laz(const std::string& path, const PointFilter& filter, const Columns& columns);
 Terrain read_table(const std::string& path, const PointFilter& filter, const Columns& columns);  // io_table.cpp

@@ -39,8 +39,8 @@ Section section_of(const RoleName<Fn>& role) {
 
 std::vector<Section> sections() {
   return {section_of(kPointsIn),   section_of(kPointsOut), section_of(kTrianglesIn), section_of(kTriangulationOut),
-          section_of(kVoronoiOut), section_of(kValuesOut), section_of(kGraphIn),     section_of(kMeshFiles),
-          section_of(kTerrainIn),  section_of(kTinOut),    section_of(kDemOut)};
+          section_of(kVoronoiOut), section_of(kValuesOut), section_of(kGraphIn),     section_of(kSizeIn),
+          section_of(kMeshFiles),  section_of(kTerrainIn), section_of(kTinOut),      section_of(kDemOut)};
 }
 
 std::string joined(const std::vector<std::string>& items, bool code, const char* between) {

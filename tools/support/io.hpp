@@ -25,6 +25,7 @@
 
 #include "ridt/regions.hpp"
 #include "ridt/ridt.hpp"
+#include "ridt/size_field.hpp"
 #include "ridt/voronoi.hpp"
 
 namespace ridt::io::detail {
@@ -97,6 +98,13 @@ struct Pslg {
 /// are parsed on `threads` threads, as every text reader's here are: the same result, and the
 /// same first error, as on one.
 Pslg read_pslg(const std::string& path, unsigned threads = 1);
+
+/// A size field for quality meshes (`ridt mesh --size`), by extension: a .node's points with
+/// the size their first attribute; a .ele and the .node beside it (a background mesh); an ESRI
+/// ASCII grid (.asc); a GDAL raster (.tif, .tiff, .img) where the build has GDAL. Throws IoError.
+SizeField read_size_field(const std::string& path, unsigned threads = 1);
+/// The extensions read_size_field reads ("a, b or c").
+std::string size_formats();
 
 /// The same for a file's content already in memory; `name` picks the format by its extension.
 Pslg parse_pslg(std::string_view data, const std::string& name, unsigned threads = 1);

@@ -49,7 +49,7 @@ Loaded load() {
       continue;
     }
     using Entry = const detail::GdalModule* (*)();
-    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module_2"))) {
+    if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "ridt_gdal_module_3"))) {
       const detail::GdalModule* module = entry();
       also_remove_temporaries(module->remove_temporaries);  // its files too, on a signal
       return {module, ""};

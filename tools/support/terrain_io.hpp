@@ -113,6 +113,14 @@ namespace detail {
 /// from tools/gdal/): loaded on first use, so that the tool starts without loading GDAL's
 /// hundred-odd libraries (some 40 ms) when it writes no GIS format. `driver` is GDAL's name of
 /// the format (io_gdal.cpp picks it by extension).
+/// A raster's first band and where its cells' centres lie: (x0, y0) the first cell's (the top
+/// left of a north-up raster), (x1, y1) the last's, rows of nx cells, ny of them.
+struct RasterIn {
+  std::vector<double> values;
+  std::size_t nx = 0, ny = 0;
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 struct GdalModule {
   Terrain (*read_ogr)(const std::string& path, const Columns& columns);
   void (*write_tin)(const std::string& path, const char* driver, const Terrain& terrain, const Triangulation& t);
@@ -120,6 +128,8 @@ struct GdalModule {
   void (*write_dem)(const std::string& path, const char* driver, const RasterGrid& grid, double nodata,
                     const DemFile& file, std::size_t band_rows,
                     const std::function<void(std::size_t, std::span<double>)>& band);
+  /// A north-up raster's first band; IoError where a cell has the band's nodata value.
+  void (*read_raster)(const std::string& path, RasterIn& out);
   /// The module's own list of temporary files (temporaries.hpp), emptied: async-signal-safe.
   void (*remove_temporaries)() noexcept;
 };
