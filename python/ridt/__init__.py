@@ -16,6 +16,7 @@ and thread count.
 from ._api import available_memory, check, estimate_memory, triangulate, triangulate_out_of_core
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._constrained import ConstrainedDelaunay, RefinementWarning
+from ._size import SizeField
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
@@ -36,6 +37,7 @@ __all__ = [
     "NaturalNeighborInterpolator",
     "NearestNDInterpolator",
     "RefinementWarning",
+    "SizeField",
     "Triangulation",
     "available_memory",
     "cached_memory",

@@ -10,6 +10,7 @@ import numpy as np
 
 from . import _api, _core
 from ._delaunay import DegenerateInputWarning, hull_edges
+from ._size import as_size_field
 
 
 class RefinementWarning(RuntimeWarning):
@@ -79,6 +80,12 @@ class ConstrainedDelaunay:
         c[1]) / 3)``. Called once for each triangle refinement makes or first sees; what it
         raises comes out of the call. It must hold for no triangle small enough, else refinement
         goes on until `max_steiner` (or the memory left) stops it.
+    size : ridt.SizeField, number, callable or (points, values), optional
+        A target edge length over the plane: no triangle's longest edge above it at its
+        centroid, but where the angle bound or the input forces one. A ridt.SizeField (a grid, a
+        background mesh, scattered points), a number (uniform), a vectorized function of an
+        (n, 2) array of points returning n sizes (called with many points at once), or a
+        `(points, values)` pair (scattered). Refines even without `min_angle`.
     method, threads, seed
         As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
 
@@ -109,8 +116,8 @@ class ConstrainedDelaunay:
     def __init__(self, points: Any, segments: Any, *, holes: Any = None, convex_hull: bool = True,
                  regions: Any = None, min_angle: float = 0.0, max_area: float = 0.0,
                  split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
-                 max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, method: str = "auto",
-                 threads: int = 1, seed: int = 1):
+                 max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, size: Any = None,
+                 method: str = "auto", threads: int = 1, seed: int = 1):
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay")
         segs = _api.as_segments(segments)
         if segs.size and segs.max() >= pts.shape[0]:
@@ -126,14 +133,14 @@ class ConstrainedDelaunay:
         result = _core.triangulate_constrained(
             pts, segs, seeds, bool(convex_hull), method, _api.thread_count(threads), int(seed), True,
             np.ascontiguousarray(zones), float(min_angle), float(max_area), bool(split_boundary),
-            bool(conforming), int(max_steiner), _callable(unsuitable), bool(split_segments))
+            bool(conforming), int(max_steiner), _callable(unsuitable), bool(split_segments), as_size_field(size))
         self._take(pts, segs, seeds, result, min_angle if split_boundary and split_segments else 0.0, max_area)
 
     @classmethod
     def from_mesh(cls, points: Any, simplices: Any, segments: Any = None, *, min_angle: float = 0.0,
                   max_area: float = 0.0, triangle_max_area: Any = None, triangle_attributes: Any = None,
                   split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
-                  max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None,
+                  max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, size: Any = None,
                   threads: int = 1) -> "ConstrainedDelaunay":
         """A mesh already made, refined (Triangle's ``-r``; ridt.refine_mesh): `simplices`
         (counter-clockwise rows of three point indices) cover the domain, whose boundary and
@@ -147,7 +154,7 @@ class ConstrainedDelaunay:
         overlap about a vertex or along an edge (pieces that overlap without sharing a vertex
         are not found), a segment that is no edge, or per-triangle values not one a triangle.
         Six-column simplices are not taken: pass an ``o2`` mesh's first three columns.
-        `unsuitable`: as for the class."""
+        `unsuitable` and `size`: as for the class."""
         pts = _api.as_points(points, "points", "ridt.ConstrainedDelaunay.from_mesh")
         tris = np.asarray(simplices)
         if tris.ndim != 2 or tris.shape[1] != 3 or (tris.size and not np.issubdtype(tris.dtype, np.integer)):
@@ -172,7 +179,7 @@ class ConstrainedDelaunay:
             per_triangle(triangle_max_area, "triangle_max_area"), per_triangle(triangle_attributes,
                                                                                "triangle_attributes"),
             _api.thread_count(threads), float(min_angle), float(max_area), bool(split_boundary), bool(conforming),
-            int(max_steiner), _callable(unsuitable), bool(split_segments))
+            int(max_steiner), _callable(unsuitable), bool(split_segments), as_size_field(size))
         self = cls.__new__(cls)
         self._take(pts, segs, np.zeros((0, 2)), result, min_angle if split_boundary and split_segments else 0.0,
                    max_area)
@@ -180,7 +187,7 @@ class ConstrainedDelaunay:
 
     def refine(self, *, min_angle: float = 0.0, max_area: float = 0.0, triangle_max_area: Any = None,
                split_boundary: bool = True, split_segments: bool = True, conforming: bool = False,
-               max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None,
+               max_steiner: int = 0, unsuitable: Optional[Callable[..., Any]] = None, size: Any = None,
                threads: int = 1) -> "ConstrainedDelaunay":
         """This mesh refined further (``from_mesh`` on its points, simplices and edges; its
         attributes carried): a new ConstrainedDelaunay. `triangle_max_area`: one bound a triangle
@@ -189,7 +196,7 @@ class ConstrainedDelaunay:
             self._points, self.simplices, self.edges, min_angle=min_angle, max_area=max_area,
             triangle_max_area=triangle_max_area, triangle_attributes=self.attributes if len(self.attributes) else None,
             split_boundary=split_boundary, split_segments=split_segments, conforming=conforming,
-            max_steiner=max_steiner, unsuitable=unsuitable, threads=threads)
+            max_steiner=max_steiner, unsuitable=unsuitable, size=size, threads=threads)
 
     def _take(self, pts: np.ndarray, segs: np.ndarray, seeds: np.ndarray, result: tuple, min_angle: float,
               max_area: float) -> None:

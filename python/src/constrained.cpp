@@ -26,7 +26,7 @@ using ridt_python::Points;
 // the GIL taken for the call; it stays alive with the call's arguments, so the handle kept here
 // needs no reference of its own (copying it needs no GIL).
 ridt::Quality quality(double min_angle, double max_area, bool split_boundary, bool conforming, std::size_t max_steiner,
-                      const py::object& unsuitable, bool split_segments) {
+                      const py::object& unsuitable, bool split_segments, const py::object& size) {
   ridt::Quality q{.min_angle = min_angle,
                   .max_area = max_area,
                   .split_boundary = split_boundary,
@@ -44,6 +44,7 @@ ridt::Quality quality(double min_angle, double max_area, bool split_boundary, bo
       return py::bool_(r).cast<bool>();
     };
   }
+  if (!size.is_none()) q.size = size.cast<ridt::SizeField>();
   return q;
 }
 
@@ -68,7 +69,8 @@ void bind_triangulate_constrained(py::module_& m) {
       [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style>& segments, const Points& holes,
          bool convex_hull, const std::string& method, unsigned threads, std::uint64_t seed, bool canonical,
          const py::array_t<double, py::array::c_style>& regions, double min_angle, double max_area, bool split_boundary,
-         bool conforming, std::size_t max_steiner, const py::object& unsuitable, bool split_segments) {
+         bool conforming, std::size_t max_steiner, const py::object& unsuitable, bool split_segments,
+         const py::object& size) {
         ridt::Options o;
         o.method = ridt::parse<ridt::Method>(method);
         o.threads = threads;
@@ -86,7 +88,7 @@ void bind_triangulate_constrained(py::module_& m) {
           domain.regions.push_back({{v[0], v[1]}, v[2], v[3]});
         }
         const ridt::Quality q =
-            quality(min_angle, max_area, split_boundary, conforming, max_steiner, unsuitable, split_segments);
+            quality(min_angle, max_area, split_boundary, conforming, max_steiner, unsuitable, split_segments, size);
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
@@ -97,7 +99,7 @@ void bind_triangulate_constrained(py::module_& m) {
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("convex_hull"), py::arg("method"),
       py::arg("threads"), py::arg("seed"), py::arg("canonical"), py::arg("regions"), py::arg("min_angle"),
       py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"), py::arg("max_steiner"),
-      py::arg("unsuitable") = py::none(), py::arg("split_segments") = true);
+      py::arg("unsuitable") = py::none(), py::arg("split_segments") = true, py::arg("size") = py::none());
 }
 
 // A mesh already made, refined (ridt::refine_mesh), as triangulate_constrained's tuple.
@@ -109,14 +111,14 @@ void bind_refine_mesh(py::module_& m) {
          const py::array_t<double, py::array::c_style>& max_areas,
          const py::array_t<double, py::array::c_style>& attributes, unsigned threads, double min_angle, double max_area,
          bool split_boundary, bool conforming, std::size_t max_steiner, const py::object& unsuitable,
-         bool split_segments) {
+         bool split_segments, const py::object& size) {
         ridt::Options o;
         o.threads = threads;
         o.canonical_order = true;
         const auto pts = as_points(points, "points");
         auto span_of = [](const auto& a) { return std::span(a.data(), static_cast<std::size_t>(a.size())); };
         const ridt::Quality q =
-            quality(min_angle, max_area, split_boundary, conforming, max_steiner, unsuitable, split_segments);
+            quality(min_angle, max_area, split_boundary, conforming, max_steiner, unsuitable, split_segments, size);
         ridt::ConstrainedTriangulation c;
         {
           py::gil_scoped_release nogil;
@@ -127,7 +129,8 @@ void bind_refine_mesh(py::module_& m) {
       },
       py::arg("points"), py::arg("triangles"), py::arg("segments"), py::arg("max_areas"), py::arg("attributes"),
       py::arg("threads"), py::arg("min_angle"), py::arg("max_area"), py::arg("split_boundary"), py::arg("conforming"),
-      py::arg("max_steiner"), py::arg("unsuitable") = py::none(), py::arg("split_segments") = true);
+      py::arg("max_steiner"), py::arg("unsuitable") = py::none(), py::arg("split_segments") = true,
+      py::arg("size") = py::none());
 }
 
 // The validator of constrained triangulations and meshes.

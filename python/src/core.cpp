@@ -29,7 +29,8 @@ namespace py = pybind11;
 
 // terrain.cpp, memory.cpp, interpolate.cpp, constrained.cpp
 void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m),
-    bind_constrained(py::module_&m), bind_triangle(py::module_&m), bind_triangle_files(py::module_&m);
+    bind_constrained(py::module_&m), bind_triangle(py::module_&m), bind_triangle_files(py::module_&m),
+    bind_size_field(py::module_&m);
 
 namespace {
 
@@ -347,6 +348,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("MAX_THREADS") = ridt::kMaxThreads;
   bind_triangulation(m);
   bind_incremental(m);
+  bind_size_field(m);
   bind_constrained(m);
   bind_triangle(m);
   bind_triangle_files(m);
