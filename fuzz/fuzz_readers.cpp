@@ -1,7 +1,7 @@
 // Fuzz target: the point, triangle and graph readers, every format.
 //
-// The first byte picks the format (0xff: a .poly, then triangulated with its segments), the
-// rest is the file's content. A reader must either
+// The first byte picks the format (0xff: a .poly, then triangulated with its segments; 0xfe: an
+// ESRI ASCII grid of sizes, then a square meshed to it), the rest is the file's content. A reader must either
 // throw IoError or return what it promises: finite points that survive writing and reading
 // back bit for bit in every point format, and whole triangles, which the exact validator then
 // judges against a small point set without failing. Any other exception, a crash or a
@@ -291,12 +291,48 @@ void graph(std::string_view data) {
   } catch (const ridt::InputError&) {}
 }
 
+// A size field from an ESRI ASCII grid: IoError, or a field that a square is meshed to (a few
+// thousand points at most), no triangle's longest edge then above the size at its centroid.
+void size_grid(std::string_view data) {
+  const std::string path = (scratch_dir() / "in.asc").string();
+  if (std::FILE* f = std::fopen(path.c_str(), "wb")) {
+    std::fwrite(data.data(), 1, data.size(), f);
+    std::fclose(f);
+  }
+  ridt::SizeField field;
+  try {
+    field = io::read_size_field(path);
+  } catch (const io::IoError&) {
+    return;
+  }
+  const std::vector<Point> square = {{-1, -1}, {2, -1}, {2, 2}, {-1, 2}};
+  const std::vector<VertexId> sides = {0, 1, 1, 2, 2, 3, 3, 0};
+  ridt::Quality q;
+  q.size = field;
+  q.max_steiner = 3000;
+  const ridt::ConstrainedTriangulation t = ridt::triangulate_constrained(square, sides, {}, {}, q);
+  if (!t.warning.empty()) return;  // stopped at max_steiner: sizes too small for the square
+  std::vector<Point> all = square, centroids;
+  all.insert(all.end(), t.steiner.begin(), t.steiner.end());
+  std::vector<double> longest;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const Point &a = all[t.triangles[3 * k]], &b = all[t.triangles[3 * k + 1]], &c = all[t.triangles[3 * k + 2]];
+    centroids.push_back({a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3});
+    longest.push_back(std::max(
+        {std::hypot(a.x - b.x, a.y - b.y), std::hypot(b.x - c.x, b.y - c.y), std::hypot(c.x - a.x, c.y - a.y)}));
+  }
+  const std::vector<double> h = field.sizes(centroids);
+  for (std::size_t k = 0; k < h.size(); ++k)
+    if (!(longest[k] <= h[k] * (1 + 1e-9))) finding("a triangle above the size field's size");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view data(reinterpret_cast<const char*>(bytes) + 1, size - 1);
   if (bytes[0] == 0xff) return graph(data), 0;  // the other first bytes pick as they always did
+  if (bytes[0] == 0xfe) return size_grid(data), 0;
   switch (bytes[0] % 7) {
     case 0:
       points(data, "in.txt");

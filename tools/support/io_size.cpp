@@ -1,6 +1,7 @@
 // Size fields from files (`ridt mesh --size FILE`, the registry's "size in" role): scattered
 // points (a .node's first attribute), a background mesh (a .ele and the .node beside it), a grid
 // (an ESRI ASCII grid here, GDAL's rasters through its module).
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -91,12 +92,14 @@ SizeField read_size_ascii_grid(const std::string& path, unsigned /*threads*/) {
       fail_line(path, line, "unknown key " + quoted(key) + " of an ESRI ASCII grid");
     rest.remove_prefix(std::min(end + 1, rest.size()));
   }
-  if (!(ncols >= 1 && nrows >= 1 && ncols == std::floor(ncols) && nrows == std::floor(nrows)) || std::isnan(x) ||
-      std::isnan(y) || !(cell > 0))
+  constexpr double kMost = 0x1p31;  // cells a side, as GDAL's rasters
+  if (!(ncols >= 1 && nrows >= 1 && ncols <= kMost && nrows <= kMost && ncols == std::floor(ncols) &&
+        nrows == std::floor(nrows)) ||
+      std::isnan(x) || std::isnan(y) || !(cell > 0))
     fail_file(path, "an ESRI ASCII grid's header gives ncols, nrows, xllcorner, yllcorner and cellsize > 0");
   const auto nx = static_cast<std::size_t>(ncols), ny = static_cast<std::size_t>(nrows);
   std::vector<double> h;
-  h.reserve(nx * ny);
+  h.reserve(std::min(nx * ny, rest.size() / 2 + 1));  // a value and a space at least
   for_each_line(rest, [&](std::size_t, std::string_view l) {
     Fields f{l, false};
     std::string_view field;
