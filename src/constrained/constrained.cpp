@@ -172,22 +172,24 @@ void canonical(ConstrainedTriangulation& out, const Options& options) {
 // constraints and regions moved with them; returns how many there are.
 std::size_t to_output(detail::Cdt& m, const std::vector<std::uint8_t>& gone) {
   const std::size_t nt = m.size();
-  std::vector<TriangleId> id;
-  if (!gone.empty()) {
-    id.resize(nt);
-    TriangleId kept = 0;
-    for (std::size_t t = 0; t < nt; ++t) id[t] = gone[t] ? detail::kNoTriangle : kept++;
-  }
   VertexId* v = m.tds.vertex_array().data();
   detail::Link* link = m.tds.link_array().data();  // becomes the neighbours
   detail::Constraint* constraint = m.tds.constraint_array().data();
+  if (gone.empty()) {  // every triangle kept where it is: the links alone become neighbours
+    for (std::size_t s = 0; s < 3 * nt; ++s)
+      link[s] = link[s] == detail::kNoLink ? -1 : static_cast<std::int32_t>(detail::triangle_of(link[s]));
+    return nt;
+  }
+  std::vector<TriangleId> id(nt);
+  TriangleId kept = 0;
+  for (std::size_t t = 0; t < nt; ++t) id[t] = gone[t] ? detail::kNoTriangle : kept++;
   std::size_t to = 0;
   for (std::size_t t = 0; t < nt; ++t) {
-    if (!gone.empty() && gone[t]) continue;
+    if (gone[t]) continue;
     for (std::size_t j = 0; j < 3; ++j) {
       const detail::Link l = link[3 * t + j];
       const TriangleId u = l == detail::kNoLink ? detail::kNoTriangle : detail::triangle_of(l);
-      const TriangleId n = gone.empty() || u == detail::kNoTriangle ? u : id[u];
+      const TriangleId n = u == detail::kNoTriangle ? u : id[u];
       v[3 * to + j] = v[3 * t + j], constraint[3 * to + j] = constraint[3 * t + j];
       link[3 * to + j] = n == detail::kNoTriangle ? -1 : static_cast<std::int32_t>(n);
     }
@@ -209,7 +211,10 @@ void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain
   out.triangles.resize(3 * size);
   if (reshaped) out.hull.clear();
   out.steiner.reserve(out.steiner.size() + (m.pts.size() - n));
-  for (std::size_t v = n; v < m.pts.size(); ++v) out.steiner.push_back(scaled(m.pts[v], -scale));
+  if (scale == 0)
+    out.steiner.insert(out.steiner.end(), m.pts.begin() + static_cast<std::ptrdiff_t>(n), m.pts.end());
+  else
+    for (std::size_t v = n; v < m.pts.size(); ++v) out.steiner.push_back(scaled(m.pts[v], -scale));
   if (!m.region.empty()) {
     out.attributes.resize(size, 0.0);
     for (std::size_t t = 0; t < size; ++t)
