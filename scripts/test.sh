@@ -13,6 +13,9 @@ jobs=$(nproc)
 # Every build below through ccache (CMake reads these variables): pip's build of the package
 # compiles the same sources with the same flags as the Release build, and takes its objects.
 export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache
+# Paths taken relative to the checkout, so that a clone elsewhere (a clean clone for a test run)
+# finds the objects a clone at another path compiled.
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 
 echo "== Layout: file and function sizes, src/ private to the library and its tests (at ${SECONDS} s)"
 /usr/bin/python3 scripts/layout.py
