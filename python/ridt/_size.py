@@ -13,7 +13,7 @@ def _ends(axis: Any, n: int, name: str) -> tuple:
     """The first and last node's coordinate along an axis: given as (first, last), or as every
     node's coordinate, evenly spaced."""
     a = np.asarray(axis, dtype=float).reshape(-1)
-    if len(a) == 2 and n != 2 or n == 1 and len(a) == 1:
+    if len(a) == 2 or (n == 1 and len(a) == 1):
         return float(a[0]), float(a[-1])
     if len(a) != n:
         raise ValueError(f"{name} gives {len(a)} coordinates for {n} nodes: give (first, last) or all {n}")
