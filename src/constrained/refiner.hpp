@@ -161,8 +161,10 @@ class Refiner {
   // for the sizes of a batch of them (weigh_sizes).
   void queue_bad(std::uint32_t t) {
     if (r_.sizes) return unsized_.push_back({kGood, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, 0});
-    if (const double key = badness(t); key != kGood)
-      bad_.push({key, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, curve(m_.pts[m_.at(t, 0)])});
+    push_if_bad(t, badness(t));
+  }
+  void push_if_bad(std::uint32_t t, double key) {
+    if (key != kGood) bad_.push({key, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, curve(m_.pts[m_.at(t, 0)])});
   }
   // The sizes at the centroids of the triangles put aside and still there, in one call of the
   // field; each then queued where bad. The batches depend on the mesh alone, so the mesh does
@@ -175,11 +177,7 @@ class Refiner {
       centroids_[k] = {a.x / 3 + b.x / 3 + c.x / 3, a.y / 3 + b.y / 3 + c.y / 3};
     }
     r_.sizes(centroids_, sizes_);
-    for (std::size_t k = 0; k < unsized_.size(); ++k) {
-      const std::uint32_t t = unsized_[k].t;
-      if (const double key = badness(t, sizes_[k]); key != kGood)
-        bad_.push({key, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, curve(m_.pts[m_.at(t, 0)])});
-    }
+    for (std::size_t k = 0; k < unsized_.size(); ++k) push_if_bad(unsized_[k].t, badness(unsized_[k].t, sizes_[k]));
     unsized_.clear();
   }
 
@@ -270,6 +268,7 @@ class Refiner {
     if (const double bound = area_bound(t); bound > 0 && twice > 2 * bound) large = twice / (2 * bound);
     if (size != kGood) {
       const double longest = std::max({dist2(b, c), dist2(c, a), dist2(a, b)}), h2 = size * size;
+      // (kept finite where h2 underflows: the queue's buckets take finite keys)
       if (longest > h2) large = std::max(large, std::min(longest / h2, 0x1p1000));
     }
     if (large > 0) return -large;

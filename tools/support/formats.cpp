@@ -73,6 +73,17 @@ constexpr Format ogr(std::string_view extension, std::string_view name, std::str
           .gdal_driver = driver};
 }
 
+// GDAL's raster formats: size fields in, DEMs out, through GDAL's module.
+constexpr std::string_view kGeoTiffDem = "GeoTIFF, tiled, DEFLATE, Float64 or Float32, with the CRS";
+constexpr Format raster(std::string_view extension, std::string_view name, std::string_view driver,
+                        std::string_view dem) {
+  return {.extension = extension,
+          .name = name,
+          .size_in = {read_size_gdal, kRasterSizes, true},
+          .dem_out = {write_dem_gdal, dem, true},
+          .gdal_driver = driver};
+}
+
 constexpr Format text(std::string_view extension) {
   return {.extension = extension,
           .name = "text",
@@ -166,21 +177,9 @@ constexpr Format kFormats[] = {
     ogr(".gml", "GML", "GML"),
     ogr(".kml", "KML", "KML"),
     ogr(".sqlite", "SpatiaLite", "SQLite"),
-    {.extension = ".tif",
-     .name = "GeoTIFF",
-     .size_in = {read_size_gdal, kRasterSizes, true},
-     .dem_out = {write_dem_gdal, "GeoTIFF, tiled, DEFLATE, Float64 or Float32, with the CRS", true},
-     .gdal_driver = "GTiff"},
-    {.extension = ".tiff",
-     .name = "GeoTIFF",
-     .size_in = {read_size_gdal, kRasterSizes, true},
-     .dem_out = {write_dem_gdal, "GeoTIFF, tiled, DEFLATE, Float64 or Float32, with the CRS", true},
-     .gdal_driver = "GTiff"},
-    {.extension = ".img",
-     .name = "Erdas Imagine",
-     .size_in = {read_size_gdal, kRasterSizes, true},
-     .dem_out = {write_dem_gdal, "Erdas Imagine, Float64 or Float32, with the CRS", true},
-     .gdal_driver = "HFA"},
+    raster(".tif", "GeoTIFF", "GTiff", kGeoTiffDem),
+    raster(".tiff", "GeoTIFF", "GTiff", kGeoTiffDem),
+    raster(".img", "Erdas Imagine", "HFA", "Erdas Imagine, Float64 or Float32, with the CRS"),
     {.extension = ".asc",
      .name = "ESRI ASCII grid",
      .size_in = {read_size_ascii_grid, "sizes at the cells' centres, bilinear between them"}},
