@@ -33,9 +33,10 @@ struct OutOfCoreOptions {
   std::uint64_t column_points = 0;
   /// Called now and then with a phase ("bucketing", "triangulating") and the fraction done.
   std::function<void(const char*, double)> progress;
-  /// Called with each file the run writes (each part, and the temporary name each is written
-  /// under before it is renamed) as soon as it is there: for a caller that removes them where
-  /// a signal stops it. The run removes them itself where it fails.
+  /// Called with each file the run writes (each part and the index, under the temporary name
+  /// each is written under as soon as that is there, and under its own name just before the
+  /// rename puts it there): for a caller that removes them where a signal stops it. The run
+  /// removes them itself where it fails.
   std::function<void(const std::string&)> wrote;
 };
 

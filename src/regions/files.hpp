@@ -30,12 +30,13 @@ inline std::string extension_of(const std::string& path) {
 
 /// Bytes written to a temporary name beside `path` through a buffer, renamed onto it by
 /// commit(); removed unless committed. IoError where the file cannot be written. `announce`,
-/// where set, is told the temporary name as soon as the file is there (a caller removes it
-/// where a signal stops the process).
+/// where set, is told the temporary name as soon as the file is there, and the final name just
+/// before the rename puts it there (a caller removes them where a signal stops the process: no
+/// moment is left in which a file stands that the caller has not been told of).
 class FileOut {
  public:
   explicit FileOut(const std::string& path, const std::function<void(const std::string&)>& announce = {})
-      : path_(path), tmp_(path + ".tmp-" + std::to_string(::getpid())) {
+      : path_(path), tmp_(path + ".tmp-" + std::to_string(::getpid())), announce_(announce) {
     fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd_ < 0) throw IoError("cannot write " + path_ + ": " + errno_text(errno));
     if (announce) announce(tmp_);
@@ -63,6 +64,7 @@ class FileOut {
     const int fd = fd_;
     fd_ = -1;
     if (::close(fd) != 0) throw IoError("cannot write " + path_ + ": " + errno_text(errno));
+    if (announce_) announce_(path_);
     if (std::rename(tmp_.c_str(), path_.c_str()) != 0)
       throw IoError("cannot write " + path_ + ": " + errno_text(errno));
     committed_ = true;
@@ -85,6 +87,7 @@ class FileOut {
   std::string path_, tmp_;
   int fd_ = -1;
   bool committed_ = false;
+  std::function<void(const std::string&)> announce_;
   std::vector<char> buffer_;
 };
 

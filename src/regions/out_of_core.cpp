@@ -208,15 +208,13 @@ std::uint64_t write_part(const std::string& path, const Strip& s, const Triangul
   return count;
 }
 
-// The parts written so far, removed unless the whole run succeeds; each told to the caller
-// (OutOfCoreOptions::wrote), which may remove them where a signal stops the run.
+// The parts written so far, removed unless the whole run succeeds (FileOut told the caller of
+// each, OutOfCoreOptions::wrote, which may remove them where a signal stops the run).
 struct Parts {
   std::vector<std::string> written;
-  const std::function<void(const std::string&)>& wrote;
   bool done = false;
   void add(const std::string& part) {
-    written.push_back(part);
-    if (wrote) wrote(part);
+    written.push_back(part);  // told to the caller by FileOut, before it was renamed into place
   }
   ~Parts() {
     if (done) return;
@@ -303,7 +301,7 @@ OutOfCoreStats triangulate_out_of_core(const OutOfCoreOptions& options) {
   o.method = threads > 1 ? Method::Partition : Method::Serial;
   o.threads = threads;
   std::vector<Checker> checkers(threads, Checker(cells, limit / 16 / threads));
-  Parts parts{{}, options.wrote};
+  Parts parts;
   auto name = [&](std::size_t k) {
     return out.stem().string() + "." + std::to_string(k) + "-of-" + std::to_string(st.strips) + ".bin";
   };
