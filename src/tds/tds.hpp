@@ -336,10 +336,10 @@ class Tds {
   const std::vector<Link>& link_array() const { return link_store_; }
   const std::vector<Constraint>& constraint_array() const { return constraints_; }
   std::vector<Constraint>& constraint_array() { return constraints_; }
-  /// Bytes held by the arrays.
+  /// Bytes the arrays use (their capacity beyond is address space never touched).
   std::size_t bytes() const {
-    return vertex_store_.capacity() * sizeof(VertexId) + link_store_.capacity() * sizeof(Link) +
-        constraints_.capacity() * sizeof(Constraint);
+    return vertex_store_.size() * sizeof(VertexId) + link_store_.size() * sizeof(Link) +
+        constraints_.size() * sizeof(Constraint);
   }
 
  private:
