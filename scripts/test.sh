@@ -43,7 +43,7 @@ ls build/wheels/ridt-*.whl
 (cd python/tests && ../../build/venv/bin/python -c "import ridt, sys; assert 'venv' in ridt.__file__, ridt.__file__" &&
   ../../build/venv/bin/python -m pytest -q -p no:cacheprovider .)
 
-echo "== scipy's own tests (Delaunay, Voronoi, LinearND, NearestND, CloughTocher, griddata) against ridt (at ${SECONDS} s)"
+echo "== scipy's own tests (Delaunay, Voronoi, ConvexHull, LinearND, NearestND, CloughTocher, griddata) against ridt (at ${SECONDS} s)"
 # The test files of the scipy installed on the machine, with scipy's 2-D classes replaced by
 # ridt's (python/scipy_suite/ridt_scipy.py); exceptions only as python/scipy_suite/exceptions.txt
 # lists them. Missing files are an error, not a skip.

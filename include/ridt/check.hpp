@@ -108,4 +108,12 @@ CheckResult check_second_order(std::span<const Point> points, std::span<const Ve
 /// when the points have fewer than three hull corners.
 CheckResult check_furthest_site(std::span<const Point> points, std::span<const VertexId> triangles);
 
+/// Checks with exact arithmetic that `corners` is the convex hull of `points` (convex_hull()'s,
+/// ridt/hull.hpp): indices in range; at least three corners, each a strict left turn (so no
+/// copies and no point on a side among them) and the polygon round once, counter-clockwise;
+/// every point inside it or on it (located in the fan from the first corner by bisection,
+/// on `threads` threads). Empty is valid only when fewer than three distinct points are given
+/// or all are collinear.
+CheckResult check_convex_hull(std::span<const Point> points, std::span<const VertexId> corners, unsigned threads = 0);
+
 }  // namespace ridt

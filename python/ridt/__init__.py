@@ -6,6 +6,7 @@
     >>> t = ridt.triangulate(points, threads=2)   # the library's arrays, no copies
     >>> ridt.griddata(points, values, (gx, gy))       # scipy.interpolate's, on threads
     >>> ridt.Voronoi(points).regions                  # scipy.spatial's
+    >>> ridt.ConvexHull(points).vertices              # scipy.spatial's, exact
     >>> ridt.terrain.dem(ridt.terrain.read_las("tile.las").xyz, resolution=1.0)   # a DEM
 
 Every result is exactly the Delaunay triangulation of the distinct points (cocircular ties
@@ -13,11 +14,12 @@ broken by a fixed symbolic perturbation), with its whole convex hull, the same f
 and thread count.
 """
 
-from ._api import available_memory, check, estimate_memory, triangulate, triangulate_out_of_core
+from ._api import available_memory, check, check_convex_hull, estimate_memory, triangulate, triangulate_out_of_core
 from ._core import InputError, Triangulation, cached_memory, set_memory_cache_limit
 from ._constrained import ConstrainedDelaunay, RefinementWarning
 from ._size import SizeField
 from ._delaunay import Delaunay, DegenerateInputWarning
+from ._hull import ConvexHull, DegenerateInputError
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
@@ -30,7 +32,9 @@ __all__ = [
     "GradientEstimationWarning",
     "estimate_gradients_2d_global",
     "ConstrainedDelaunay",
+    "ConvexHull",
     "Delaunay",
+    "DegenerateInputError",
     "DegenerateInputWarning",
     "InputError",
     "LinearNDInterpolator",
@@ -44,6 +48,7 @@ __all__ = [
     "estimate_memory",
     "triangulate_out_of_core",
     "check",
+    "check_convex_hull",
     "set_memory_cache_limit",
     "Voronoi",
     "griddata",

@@ -252,3 +252,47 @@ def check(points: Any, triangles: Any, furthest_site: bool = False, segments: An
             return False, f"a segment's end is not one of the {pts.shape[0]} points"
     valid, message, _ = _core.check(pts, t, bool(furthest_site), segs)
     return bool(valid), message
+
+
+def check_convex_hull(points: Any, vertices: Any) -> Tuple[bool, str, int]:
+    """Checks exactly that `vertices` (point indices) is the convex hull of `points`, as
+    ConvexHull.vertices gives it: at least three corners, each a strict left turn, round once
+    counter-clockwise, every point inside or on it; none only where the points have fewer than
+    three distinct or all are collinear. Returns (valid, message, problems)."""
+    pts = as_points(points)
+    v = np.asarray(vertices)
+    if v.size == 0:
+        v = np.zeros(0, dtype=np.uint32)
+    if v.dtype.kind not in "iu" or v.ndim != 1:
+        raise TypeError("vertices must be a one-dimensional array of integers")
+    if v.size and (v.min() < 0 or v.max() >= pts.shape[0]):
+        return False, f"a vertex index is not one of the {pts.shape[0]} points", 1
+    valid, message, problems = _core.check_convex_hull(pts, np.ascontiguousarray(v, dtype=np.uint32))
+    return bool(valid), message, int(problems)
+
+
+class PlanarPoints:
+    """scipy's attributes of the input points, shared by ridt's classes in scipy's place (each
+    keeps its points in `_points`)."""
+
+    _points: np.ndarray
+
+    @property
+    def points(self) -> np.ndarray:
+        return self._points
+
+    @property
+    def npoints(self) -> int:
+        return int(self._points.shape[0])
+
+    @property
+    def ndim(self) -> int:
+        return 2
+
+    @property
+    def min_bound(self) -> np.ndarray:
+        return self._points.min(axis=0) if len(self._points) else np.full(2, np.nan)
+
+    @property
+    def max_bound(self) -> np.ndarray:
+        return self._points.max(axis=0) if len(self._points) else np.full(2, np.nan)

@@ -107,7 +107,7 @@ def hull_edges(tri: _core.Triangulation) -> np.ndarray:
         return np.empty((0, 2), dtype=np.intc)
     return np.stack([h, np.roll(h, -1)], axis=1)
 
-class Delaunay:
+class Delaunay(_api.PlanarPoints):
     """Delaunay triangulation in the plane, with scipy.spatial.Delaunay's interface.
 
     ``from ridt import Delaunay`` in place of ``from scipy.spatial import Delaunay`` gives the
@@ -199,10 +199,6 @@ class Delaunay:
 
     # --- what the library returned, as scipy's dtypes (views, no copies) ---
     @property
-    def points(self) -> np.ndarray:
-        return self._points
-
-    @property
     def simplices(self) -> np.ndarray:
         return self._simplices
 
@@ -218,16 +214,8 @@ class Delaunay:
         return self._neighbors
 
     @property
-    def npoints(self) -> int:
-        return int(self._points.shape[0])
-
-    @property
     def nsimplex(self) -> int:
         return len(self._tri)
-
-    @property
-    def ndim(self) -> int:
-        return 2
 
     @property
     def stats(self) -> dict:
@@ -244,14 +232,6 @@ class Delaunay:
         facet of the lifted points' lower hull (of the upper one for furthest_site), and all are
         good, so (nsimplex,) intc ones; simplices[good == 1] is every triangle."""
         return np.ones(self.nsimplex, dtype=np.intc)
-
-    @cached_property
-    def min_bound(self) -> np.ndarray:
-        return self._points.min(axis=0) if self.npoints else np.full(2, np.nan)
-
-    @cached_property
-    def max_bound(self) -> np.ndarray:
-        return self._points.max(axis=0) if self.npoints else np.full(2, np.nan)
 
     # --- derived, computed on first use ---
     @cached_property

@@ -19,7 +19,7 @@ def ray_directions(points: np.ndarray, hull_edges: np.ndarray) -> np.ndarray:
     return np.stack([b[:, 1] - a[:, 1], a[:, 0] - b[:, 0]], axis=1)
 
 
-class Voronoi:
+class Voronoi(_api.PlanarPoints):
     """Voronoi diagram in the plane, with scipy.spatial.Voronoi's attributes.
 
     The diagram is the dual of ridt's exact Delaunay triangulation: each vertex is the
@@ -135,29 +135,9 @@ class Voronoi:
         self._inc = None
 
     @property
-    def points(self) -> np.ndarray:
-        return self._points
-
-    @property
     def triangulation(self) -> _core.Triangulation:
         """ridt's Delaunay triangulation of the points, whose dual the diagram is."""
         return self._tri
-
-    @property
-    def npoints(self) -> int:
-        return int(self._points.shape[0])
-
-    @property
-    def ndim(self) -> int:
-        return 2
-
-    @property
-    def min_bound(self) -> np.ndarray:
-        return self._points.min(axis=0)
-
-    @property
-    def max_bound(self) -> np.ndarray:
-        return self._points.max(axis=0)
 
     @cached_property
     def _ints(self) -> List[int]:

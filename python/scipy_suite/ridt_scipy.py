@@ -4,16 +4,16 @@ Loaded with ``-p ridt_scipy`` (this folder on PYTHONPATH), before pytest imports
 module, it puts ridt's classes and functions in the place of scipy's 2-D ones, in every module
 the test files import them from:
 
-- scipy.spatial: Delaunay, Voronoi, tsearch (also in scipy.spatial._qhull);
+- scipy.spatial: Delaunay, Voronoi, ConvexHull, tsearch (also in scipy.spatial._qhull);
 - scipy.interpolate: LinearNDInterpolator, NearestNDInterpolator, CloughTocher2DInterpolator,
   griddata, estimate_gradients_2d_global, GradientEstimationWarning (also in
   scipy.interpolate.interpnd, ._interpnd and ._ndgriddata).
 
 What ridt does not claim is not run against Qhull in its place: input that is not 2-D,
-ConvexHull, HalfspaceIntersection and Qhull's own object skip the test with a reason that
-starts with "outside ridt's claim"; the summary counts them. Any other skip is reported as
-such, and a test that fails fails the run. Every ridt.Delaunay a test builds is checked by the
-exact validator as it is made, and a test listed in exceptions.txt (one that pins Qhull's
+HalfspaceIntersection and Qhull's own object skip the test with a reason that starts with
+"outside ridt's claim"; the summary counts them. Any other skip is reported as such, and a test
+that fails fails the run. Every ridt.Delaunay and ridt.ConvexHull a test builds is checked by
+an exact validator as it is made, and a test listed in exceptions.txt (one that pins Qhull's
 arbitrary choice among equally valid answers) must fail, strictly, with every triangulation it
 built valid; one listed as "refused option:" (it passes QJ on points with copies, which ridt
 refuses) must fail by ridt's ValueError.
@@ -68,6 +68,22 @@ def _validate(points: np.ndarray, triangles: np.ndarray, furthest_site: bool) ->
         raise AssertionError(f"ridt's triangulation of {len(points)} points is not valid: {message}")
 
 
+def _validate_hull(hull: Any) -> None:
+    """A hull checked exactly (ridt.check_convex_hull), of the points it was made of: with QGn
+    all but point n."""
+    _used["validated"] += 1
+    points, corners = hull.points, hull.vertices
+    if hull.good is not None:
+        keep = np.ones(len(points), dtype=bool)
+        keep[hull._good[0]] = False
+        points, corners = points[keep], np.searchsorted(np.flatnonzero(keep), corners)
+    valid, message, _ = ridt.check_convex_hull(points, corners)
+    _verdicts.setdefault(_current[0], []).append(message)
+    if not valid:
+        _invalid.append(f"{_current[0]}: {message}")
+        raise AssertionError(f"ridt's convex hull of {len(points)} points is not valid: {message}")
+
+
 def _outside(what: str) -> None:
     pytest.skip(f"{OUTSIDE}: {what}")
 
@@ -93,6 +109,8 @@ def _replacement(name: str, ridt_class: Any, first_arg: str = "points", planar_o
         owner = getattr(obj, "tri", obj)  # an interpolator's Delaunay, or the object itself
         if isinstance(owner, (ridt.Delaunay, ridt.Voronoi)):
             _validate(owner.points, owner.triangulation.triangles, owner.furthest_site)
+        if isinstance(owner, ridt.ConvexHull):
+            _validate_hull(owner)
         return obj
 
     return _Replacing(name, (), {"__new__": __new__, "_ridt": ridt_class, "__doc__": ridt_class.__doc__})
@@ -128,7 +146,7 @@ def replacements() -> Dict[str, Any]:
                                                    planar_only=True),
         "griddata": _griddata,
         "tsearch": _tsearch,
-        "ConvexHull": _not_claimed("ConvexHull"),
+        "ConvexHull": _replacement("ConvexHull", ridt.ConvexHull),
         "HalfspaceIntersection": _not_claimed("HalfspaceIntersection"),
         "_Qhull": _not_claimed("Qhull's own object (_Qhull)"),
         "estimate_gradients_2d_global": ridt.estimate_gradients_2d_global,

@@ -113,7 +113,8 @@ std::vector<VertexId> edges_along_segments(std::span<const Point> pts, const Adj
   const std::size_t count = segments.size() / 2;
   InOrder<Scratch> done;
   parallel_for(count, threads, 1 << 12, [&](std::size_t first, std::size_t last) {
-    Scratch scratch{std::vector<std::uint32_t>(pts.size(), 0)};
+    Scratch scratch;
+    scratch.seen.assign(pts.size(), 0);
     for (std::size_t s = first; s < last; ++s) follow.from_a(s, scratch);
     done.put(first, std::move(scratch));
   });
