@@ -358,6 +358,19 @@ within_size "$dir/hpm.node" "$dir/hpm.ele" && pass || fail "a triangle above the
 printf '2 3 0\n1 1 2 3\n2 1 3 4\n' >"$dir/hp.ele"
 expect 0 "mesh --size background mesh" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hm.ele" --switches pq30 --size "$dir/hp.ele"
 within_size "$dir/hm.node" "$dir/hm.ele" && pass || fail "a triangle above the background mesh's size"
+# --gradation: the grid's sizes lowered where they grow faster than G (this one grows by 0.1 and
+# 0.2 a unit): by 0.05 more triangles, each still within the grid's own size; by 0.5 nothing
+# lowered, the same files as without; refused without --size or below 0.
+expect 0 "mesh --size --gradation" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hgg.ele" --switches pq30 --size "$dir/h.asc" --gradation 0.05
+within_size "$dir/hgg.node" "$dir/hgg.ele" && pass || fail "a triangle above the graded grid's size"
+[ "$(head -1 "$dir/hgg.ele" | cut -d' ' -f1)" -gt "$(head -1 "$dir/hg.ele" | cut -d' ' -f1)" ] && pass ||
+  fail "a gradation of 0.05 did not make the mesh finer"
+expect 0 "mesh --size --gradation above the field's" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hg5.ele" --switches pq30 --size "$dir/h.asc" --gradation 0.5
+cmp -s "$dir/hg.ele" "$dir/hg5.ele" && cmp -s "$dir/hg.node" "$dir/hg5.node" && pass || fail "a gradation above the field's changed it"
+expect 2 "--gradation without --size" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hgx.ele" --switches pq30 --gradation 0.1
+expect 2 "--gradation below 0" -- "$ridt" mesh "$dir/ten.poly" -o "$dir/hgx.ele" --switches pq30 --size "$dir/h.asc" --gradation -1
+stderr_has "finite number >= 0"
+absent "$dir/hgx.ele"
 printf 'ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 5\nnodata_value -9999\n1 -9999\n' >"$dir/nodata.asc"
 printf 'ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 5\n1 0\n' >"$dir/zero.asc"
 for bad in nodata.asc zero.asc ten.poly sq.node missing.tif; do

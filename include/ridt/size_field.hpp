@@ -32,6 +32,13 @@ class SizeField {
   /// h everywhere. Throws InputError unless h > 0 (infinite: no bound).
   static SizeField uniform(double h);
 
+  /// `gradation` (the three below): where it is above 0, the values are first lowered where
+  /// they grow faster than that along the grid's or the mesh's edges (the gradient limit of
+  /// ocean and coastal meshers: each value the least, over every node, of that node's value
+  /// plus `gradation` times the shortest path there), so that neighbouring triangles' sizes
+  /// differ by about that fraction at most (0.2: neighbours within some 20 %). No value rises;
+  /// the smallest stay. Throws InputError unless it is finite and >= 0.
+  ///
   /// Values at the nodes of a regular grid of nx by ny nodes, row by row: node (i, j), value
   /// values[j * nx + i], lies at (x0 + i (x1 - x0) / (nx - 1), y0 + j (y1 - y0) / (ny - 1)), so
   /// that y1 < y0 reads an image's rows, the top first (a single node along an axis spans it
@@ -39,7 +46,7 @@ class SizeField {
   /// InputError for values.size() != nx * ny, nx or ny 0, an extent not finite or empty, or a
   /// value not > 0.
   static SizeField on_grid(std::span<const double> values, std::size_t nx, std::size_t ny, double x0, double y0,
-                           double x1, double y1);
+                           double x1, double y1, double gradation = 0);
 
   /// Values at the vertices of a background mesh (`triangles`: 3 indices into `vertices` a
   /// triangle, either orientation; any mesh, Delaunay or not, with holes or not), linear within
@@ -47,11 +54,11 @@ class SizeField {
   /// the nearest vertex. Throws InputError for sizes that do not match, an index out of range,
   /// a vertex not finite, or a value not > 0.
   static SizeField on_mesh(std::span<const Point> vertices, std::span<const VertexId> triangles,
-                           std::span<const double> values);
+                           std::span<const double> values, double gradation = 0);
 
   /// Values at scattered points: linear over their Delaunay triangulation, the nearest point's
   /// value beyond its hull (on_mesh of triangulate(points)).
-  static SizeField on_points(std::span<const Point> points, std::span<const double> values);
+  static SizeField on_points(std::span<const Point> points, std::span<const double> values, double gradation = 0);
 
   /// A function of the caller's. What it throws comes out of the call that refines; a size it
   /// gives that is NaN or not > 0 throws InputError there.

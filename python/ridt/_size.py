@@ -50,21 +50,27 @@ class SizeField:
         return cls(_core.SizeField.uniform(float(h)))
 
     @classmethod
-    def grid(cls, values: Any, x: Sequence[float], y: Sequence[float]) -> "SizeField":
+    def grid(cls, values: Any, x: Sequence[float], y: Sequence[float], gradation: float = 0) -> "SizeField":
         """Values on a regular grid: ``values[j, i]`` (shape (ny, nx), as numpy.meshgrid's
         ``indexing="xy"`` gives) at ``(x_i, y_j)``; `x` and `y` each the first and last node's
         coordinate, or every node's (evenly spaced), decreasing where the rows run down (an
-        image's). Bilinear within a cell; beyond the grid, the value on its edge nearest."""
+        image's). Bilinear within a cell; beyond the grid, the value on its edge nearest.
+
+        `gradation` (also of `mesh` and `scattered`): above 0, the values are first lowered where
+        they grow faster than that along the grid's (the mesh's) edges, each the least over
+        every node of its value plus `gradation` times the path there, so that neighbouring
+        triangles' sizes differ by about that fraction at most (0.2: some 20 %); no value
+        rises."""
         v = np.ascontiguousarray(values, dtype=float)
         if v.ndim != 2:
             raise ValueError(f"values must be a 2-D array (ny, nx), got shape {v.shape}")
         ny, nx = v.shape
         x0, x1 = _ends(x, nx, "x")
         y0, y1 = _ends(y, ny, "y")
-        return cls(_core.SizeField.grid(v.reshape(-1), nx, ny, x0, y0, x1, y1))
+        return cls(_core.SizeField.grid(v.reshape(-1), nx, ny, x0, y0, x1, y1, float(gradation)))
 
     @classmethod
-    def mesh(cls, points: Any, simplices: Any, values: Any) -> "SizeField":
+    def mesh(cls, points: Any, simplices: Any, values: Any, gradation: float = 0) -> "SizeField":
         """Values at a background mesh's vertices (`simplices`: rows of three indices into
         `points`, any mesh), linear in each triangle; beyond the mesh, the nearest vertex's."""
         pts = _api.as_points(points, "points", "ridt.SizeField.mesh")
@@ -74,14 +80,14 @@ class SizeField:
         if tris.size and tris.min() < 0:
             raise ValueError("simplices refer to a negative index")
         return cls(_core.SizeField.mesh(pts, np.ascontiguousarray(tris, dtype=np.uint32).reshape(-1),
-                                        np.asarray(values, dtype=float).reshape(-1)))
+                                        np.asarray(values, dtype=float).reshape(-1), float(gradation)))
 
     @classmethod
-    def scattered(cls, points: Any, values: Any) -> "SizeField":
+    def scattered(cls, points: Any, values: Any, gradation: float = 0) -> "SizeField":
         """Values at scattered points: linear over their Delaunay triangulation, the nearest
         point's beyond its hull."""
         pts = _api.as_points(points, "points", "ridt.SizeField.scattered")
-        return cls(_core.SizeField.scattered(pts, np.asarray(values, dtype=float).reshape(-1)))
+        return cls(_core.SizeField.scattered(pts, np.asarray(values, dtype=float).reshape(-1), float(gradation)))
 
     @classmethod
     def function(cls, f: Callable[[np.ndarray], Any]) -> "SizeField":

@@ -48,24 +48,24 @@ void bind_size_field(py::module_& m) {
       .def_static("uniform", &ridt::SizeField::uniform, py::arg("h"))
       .def_static(
           "grid",
-          [](const Doubles& values, std::size_t nx, std::size_t ny, double x0, double y0, double x1, double y1) {
-            return ridt::SizeField::on_grid(span_of(values), nx, ny, x0, y0, x1, y1);
-          },
-          py::arg("values"), py::arg("nx"), py::arg("ny"), py::arg("x0"), py::arg("y0"), py::arg("x1"), py::arg("y1"))
+          [](const Doubles& values, std::size_t nx, std::size_t ny, double x0, double y0, double x1, double y1,
+             double gradation) { return ridt::SizeField::on_grid(span_of(values), nx, ny, x0, y0, x1, y1, gradation); },
+          py::arg("values"), py::arg("nx"), py::arg("ny"), py::arg("x0"), py::arg("y0"), py::arg("x1"), py::arg("y1"),
+          py::arg("gradation") = 0.0)
       .def_static(
           "mesh",
           [](const Points& points, const py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>& t,
-             const Doubles& values) {
+             const Doubles& values, double gradation) {
             return ridt::SizeField::on_mesh(as_points(points, "points"), {t.data(), static_cast<std::size_t>(t.size())},
-                                            span_of(values));
+                                            span_of(values), gradation);
           },
-          py::arg("points"), py::arg("triangles"), py::arg("values"))
+          py::arg("points"), py::arg("triangles"), py::arg("values"), py::arg("gradation") = 0.0)
       .def_static(
           "scattered",
-          [](const Points& points, const Doubles& values) {
-            return ridt::SizeField::on_points(as_points(points, "points"), span_of(values));
+          [](const Points& points, const Doubles& values, double gradation) {
+            return ridt::SizeField::on_points(as_points(points, "points"), span_of(values), gradation);
           },
-          py::arg("points"), py::arg("values"))
+          py::arg("points"), py::arg("values"), py::arg("gradation") = 0.0)
       .def_static("function", &of_function, py::arg("f"))
       .def(
           "sizes",

@@ -102,6 +102,39 @@ def test_with_area_bound_and_refined_mesh():
     assert_within(fine, linear)
 
 
+def test_gradation_limits_growth_and_the_mesh_keeps_the_graded_sizes():
+    # A 5-unit-wide field of 2 with one node of 0.02: graded by 0.25, a cone about that node.
+    x = np.linspace(0, 10, 51)
+    values = np.full((51, 51), 2.0)
+    values[25, 25] = 0.02
+    f = ridt.SizeField.grid(values, x=x, y=x, gradation=0.25)
+    gx, gy = np.meshgrid(x, x)
+    nodes = np.column_stack([gx.ravel(), gy.ravel()])
+    h = f(nodes).reshape(51, 51)
+    assert h[25, 25] == 0.02 and np.all(h <= values)
+    step = x[1] - x[0]
+    assert np.all(np.abs(np.diff(h, axis=0)) <= 0.25 * step * (1 + 1e-12))
+    assert np.all(np.abs(np.diff(h, axis=1)) <= 0.25 * step * (1 + 1e-12))
+    np.testing.assert_allclose(h[25, 35], 0.02 + 0.25 * 10 * step, rtol=1e-12)
+    np.testing.assert_allclose(ridt.SizeField.grid(values, x=x, y=x)(nodes), values.ravel(), rtol=1e-13)
+    m = ridt.ConstrainedDelaunay(SQUARE, SEGMENTS, holes=HOLES, min_angle=25, size=f)
+    assert_within(m, f)
+    raw = ridt.ConstrainedDelaunay(SQUARE, SEGMENTS, holes=HOLES, min_angle=25,
+                                   size=ridt.SizeField.grid(values, x=x, y=x))
+    assert len(m.simplices) > len(raw.simplices)  # the cone's sizes are smaller: more triangles
+    # scattered and mesh fields grade along their triangulation's edges
+    pts = np.random.default_rng(2).random((500, 2)) * 10
+    v = np.where(np.arange(500) == 7, 0.01, 3.0)
+    hs = ridt.SizeField.scattered(pts, v, gradation=0.1)(pts)
+    tri = ridt.Delaunay(pts)
+    for a, b in np.vstack([tri.simplices[:, [0, 1]], tri.simplices[:, [1, 2]], tri.simplices[:, [2, 0]]]):
+        assert abs(hs[a] - hs[b]) <= 0.1 * np.linalg.norm(pts[a] - pts[b]) * (1 + 1e-12) + 1e-15
+    np.testing.assert_array_equal(ridt.SizeField.mesh(pts, tri.simplices, v, gradation=0.1)(pts), hs)
+    for bad in (-1, float("nan"), float("inf")):
+        with pytest.raises(ValueError):
+            ridt.SizeField.grid(values, x=x, y=x, gradation=bad)
+
+
 def test_bad_fields_are_refused():
     with pytest.raises(ValueError):
         ridt.SizeField.grid(np.ones((2, 3)), x=(0, 1, 2, 3), y=(0, 1))

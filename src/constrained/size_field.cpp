@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <queue>
 #include <string>
 #include <utility>
 
@@ -24,6 +25,77 @@ void check_values(std::span<const double> values, const char* what) {
     if (!(values[k] > 0) || !std::isfinite(values[k]))
       throw InputError(std::string(what) + " " + std::to_string(k) + " is " + std::to_string(values[k]) +
                        ": sizes are finite and above 0");
+}
+
+void check_gradation(double rate) {
+  if (!(rate >= 0) || !std::isfinite(rate))
+    throw InputError("a size field's gradation is a finite number >= 0: got " + std::to_string(rate));
+}
+
+// The values lowered where they grow faster than `rate` along the edges of a graph: each
+// becomes the least, over every node j, of values[j] + rate * (the shortest path's length to
+// j), for every node at once by Dijkstra's algorithm started from all of them, each at its own
+// value. Then along every edge i - j, h_i <= h_j + rate * |ij|; no value rises, and the least
+// stay. each_neighbour(i, f) calls f(j, |ij|) for each neighbour j of node i.
+template <class EachNeighbour>
+std::vector<double> limit_growth(std::span<const double> values, double rate, EachNeighbour&& each_neighbour) {
+  std::vector<double> h(values.begin(), values.end());
+  if (rate == 0 || h.empty()) return h;
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  for (std::size_t i = 0; i < h.size(); ++i) queue.emplace(h[i], i);
+  while (!queue.empty()) {
+    const auto [d, i] = queue.top();
+    queue.pop();
+    if (d > h[i]) continue;  // lowered since it was queued
+    each_neighbour(i, [&, d = d](std::size_t j, double length) {
+      if (const double c = d + rate * length; c < h[j]) h[j] = c, queue.emplace(c, j);
+    });
+  }
+  return h;
+}
+
+// Grid values limited along the grid's rows, columns and diagonals.
+std::vector<double> graded_grid(std::span<const double> values, std::size_t nx, std::size_t ny, double x0, double y0,
+                                double x1, double y1, double rate) {
+  const double sx = nx > 1 ? std::fabs(x1 - x0) / static_cast<double>(nx - 1) : 0;
+  const double sy = ny > 1 ? std::fabs(y1 - y0) / static_cast<double>(ny - 1) : 0;
+  const double diagonal = std::hypot(sx, sy);
+  return limit_growth(values, rate, [&](std::size_t k, auto&& f) {
+    const std::size_t i = k % nx, j = k / nx;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        if ((di == 0 && dj == 0) || (di < 0 && i == 0) || (dj < 0 && j == 0) || (di > 0 && i + 1 == nx) ||
+            (dj > 0 && j + 1 == ny))
+          continue;
+        f(k + static_cast<std::size_t>(dj) * nx + static_cast<std::size_t>(di),
+          di != 0 && dj != 0 ? diagonal
+              : di != 0      ? sx
+                             : sy);
+      }
+  });
+}
+
+// Mesh values limited along the mesh's edges.
+std::vector<double> graded_mesh(std::span<const Point> vertices, std::span<const VertexId> triangles,
+                                std::span<const double> values, double rate) {
+  if (rate == 0) return {values.begin(), values.end()};
+  std::vector<std::size_t> first(vertices.size() + 1, 0);
+  for (const VertexId v : triangles) first[v + 1] += 2;
+  for (std::size_t v = 0; v < vertices.size(); ++v) first[v + 1] += first[v];
+  std::vector<VertexId> next(first.back());
+  std::vector<std::size_t> at(first.begin(), first.end() - 1);
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+    for (int i = 0; i < 3; ++i) {
+      const VertexId a = triangles[t + i], b = triangles[t + (i + 1) % 3];
+      next[at[a]++] = b, next[at[b]++] = a;
+    }
+  return limit_growth(values, rate, [&](std::size_t v, auto&& f) {
+    for (std::size_t k = first[v]; k < first[v + 1]; ++k) {
+      const Point &p = vertices[v], &q = vertices[next[k]];
+      f(next[k], std::hypot(q.x - p.x, q.y - p.y));
+    }
+  });
 }
 
 // Values on a regular grid, bilinear, clamped to the grid beyond it.
@@ -168,7 +240,7 @@ SizeField SizeField::uniform(double h) {
 }
 
 SizeField SizeField::on_grid(std::span<const double> values, std::size_t nx, std::size_t ny, double x0, double y0,
-                             double x1, double y1) {
+                             double x1, double y1, double gradation) {
   if (nx == 0 || ny == 0 || values.size() != nx * ny)
     throw InputError("a size grid of " + std::to_string(nx) + " by " + std::to_string(ny) + " nodes has " +
                      std::to_string(values.size()) + " values");
@@ -176,12 +248,14 @@ SizeField SizeField::on_grid(std::span<const double> values, std::size_t nx, std
     if (!std::isfinite(c)) throw InputError("a size grid's extent is finite");
   if ((nx > 1 && x0 == x1) || (ny > 1 && y0 == y1)) throw InputError("a size grid's extent is not empty");
   check_values(values, "size grid value");
-  auto g = std::make_shared<const GridField>(GridField{{values.begin(), values.end()}, nx, ny, x0, y0, x1, y1});
+  check_gradation(gradation);
+  auto g = std::make_shared<const GridField>(
+      GridField{graded_grid(values, nx, ny, x0, y0, x1, y1, gradation), nx, ny, x0, y0, x1, y1});
   return SizeField([g](std::span<const Point> p, std::span<double> out) { (*g)(p, out); });
 }
 
 SizeField SizeField::on_mesh(std::span<const Point> vertices, std::span<const VertexId> triangles,
-                             std::span<const double> values) {
+                             std::span<const double> values, double gradation) {
   if (values.size() != vertices.size())
     throw InputError("a size mesh has " + std::to_string(vertices.size()) + " vertices and " +
                      std::to_string(values.size()) + " values");
@@ -192,18 +266,19 @@ SizeField SizeField::on_mesh(std::span<const Point> vertices, std::span<const Ve
   for (const Point& p : vertices)
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw InputError("a size mesh's vertex is not finite");
   check_values(values, "size mesh value");
-  auto m = std::make_shared<const MeshField>(vertices, triangles, values);
+  check_gradation(gradation);
+  auto m = std::make_shared<const MeshField>(vertices, triangles, graded_mesh(vertices, triangles, values, gradation));
   return SizeField([m](std::span<const Point> p, std::span<double> out) { (*m)(p, out); });
 }
 
-SizeField SizeField::on_points(std::span<const Point> points, std::span<const double> values) {
+SizeField SizeField::on_points(std::span<const Point> points, std::span<const double> values, double gradation) {
   if (values.size() != points.size())
     throw InputError("size points: " + std::to_string(points.size()) + " points and " + std::to_string(values.size()) +
                      " values");
   Options o;
   o.threads = 1;
   const Triangulation t = points.empty() ? Triangulation{} : triangulate(points, o);
-  return on_mesh(points, t.triangles, values);
+  return on_mesh(points, t.triangles, values, gradation);
 }
 
 SizeField SizeField::of(Function f) {

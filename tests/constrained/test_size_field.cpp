@@ -169,6 +169,57 @@ TEST(SizeField, ARefinedMeshKeepsItToo) {
     ASSERT_LE(longest(all[t.triangles[3 * k]], all[t.triangles[3 * k + 1]], all[t.triangles[3 * k + 2]]), 0.05);
 }
 
+TEST(SizeField, GradationMakesAConeOfASingleSmallValueOnAGrid) {
+  // h = 1 on a 41 x 41 grid of spacing 0.05 but 0.01 at its centre; graded by 0.2 it becomes
+  // min(1, 0.01 + 0.2 * the grid path to the centre), whose length through rows, columns and
+  // diagonals is 0.05 ((sqrt 2 - 1) min(di, dj) + max(di, dj)).
+  const std::size_t n = 41;
+  std::vector<double> v(n * n, 1.0);
+  v[20 * n + 20] = 0.01;
+  const double g = 0.2, s = 0.05;
+  const SizeField f = SizeField::on_grid(v, n, n, 0, 0, 2, 2, g);
+  std::vector<Point> nodes;
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) nodes.push_back({static_cast<double>(i) * s, static_cast<double>(j) * s});
+  const std::vector<double> h = f.sizes(nodes);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double di = std::fabs(double(i) - 20), dj = std::fabs(double(j) - 20);
+      const double path = s * ((std::sqrt(2.0) - 1) * std::min(di, dj) + std::max(di, dj));
+      ASSERT_NEAR(h[j * n + i], std::min(1.0, 0.01 + g * path), 1e-12) << i << ", " << j;
+    }
+  // Without a gradation (or 0), the values as given.
+  EXPECT_EQ(SizeField::on_grid(v, n, n, 0, 0, 2, 2, 0).sizes(nodes), v);
+  EXPECT_EQ(SizeField::on_grid(v, n, n, 0, 0, 2, 2).sizes(nodes), v);
+}
+
+TEST(SizeField, GradationBoundsTheGrowthAlongEveryEdgeOfAMesh) {
+  // Scattered points with sizes at random over two orders of magnitude: graded, the values at
+  // the ends of every edge of their triangulation differ by at most 0.3 times its length; none
+  // rose, and the least is kept.
+  const std::vector<Point> p = generate(Distribution::Uniform, 3000, 4);
+  std::vector<double> v(p.size());
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = std::exp2(-7.0 * static_cast<double>((k * 7919) % 1000) / 1000);
+  const double g = 0.3;
+  const std::vector<double> h = SizeField::on_points(p, v, g).sizes(p);
+  const Triangulation t = triangulate(p, {});
+  for (std::size_t k = 0; k < t.triangles.size(); ++k) {
+    const VertexId a = t.triangles[k], b = t.triangles[k - k % 3 + (k + 1) % 3];
+    const double length = std::hypot(p[a].x - p[b].x, p[a].y - p[b].y);
+    ASSERT_LE(std::fabs(h[a] - h[b]), g * length * (1 + 1e-12) + 1e-15) << a << " - " << b;
+  }
+  for (std::size_t k = 0; k < v.size(); ++k) ASSERT_LE(h[k], v[k]);
+  EXPECT_EQ(*std::min_element(h.begin(), h.end()), *std::min_element(v.begin(), v.end()));
+  // A mesh refined to the graded field keeps it.
+  Quality q;
+  q.min_angle = 25;
+  q.size = SizeField::on_points(p, v, g);
+  const Meshed m = meshed(holed_square(), q);
+  expect_within(m, q.size);
+  EXPECT_THROW(SizeField::on_points(p, v, -0.1), InputError);
+  EXPECT_THROW(SizeField::on_grid(std::vector<double>{1, 1, 1, 1}, 2, 2, 0, 0, 1, 1, NAN), InputError);
+}
+
 TEST(SizeField, BadFieldsAreRefused) {
   const std::vector<double> v = {1, 2, 3};
   EXPECT_THROW(SizeField::on_grid(v, 2, 2, 0, 0, 1, 1), InputError);  // 3 values for 4 nodes

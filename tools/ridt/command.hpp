@@ -37,6 +37,9 @@ Command add_dem(CLI::App& app);
 /// A seed as text: the whole of it a decimal integer that fits 64 bits.
 extern const CLI::Validator kSeed;
 
+/// A finite number >= 0 as text (`what` names it in the message).
+CLI::Validator non_negative(const char* what);
+
 /// Numbers apart by commas, e.g. "200,100" or "0,0,1,1"; `what` names them in a message.
 std::vector<double> numbers(const std::string& text, const char* what);
 

@@ -24,6 +24,17 @@ const CLI::Validator kSeed(
     },
     "SEED");
 
+CLI::Validator non_negative(const char* what) {
+  return CLI::Validator(
+      [what](std::string& text) -> std::string {
+        double v = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size() && std::isfinite(v) && v >= 0) return "";
+        return std::string(what) + " is a finite number >= 0, got '" + text + "'";
+      },
+      "NUMBER");
+}
+
 std::vector<double> numbers(const std::string& text, const char* what) {
   std::vector<double> out;
   std::size_t at = 0;

@@ -16,6 +16,7 @@ namespace {
 
 struct Args {
   std::string input, output, switches, size;
+  double gradation = 0;
   std::string method = "auto";
   unsigned threads = 0;
   double quality = 0, max_area = 0;
@@ -144,7 +145,7 @@ int run(const Args& a, triangle::Switches w) {
     in = input_of(std::move(g));
   }
   if (!a.size.empty()) {
-    in.size = io::read_size_field(a.size, thread_count(a.threads));
+    in.size = io::read_size_field(a.size, thread_count(a.threads), a.gradation);
     read.push_back(a.size);
   }
   refuse_overwriting(read, out);
@@ -182,6 +183,11 @@ Command add_mesh(CLI::App& app) {
                        io::size_formats() +
                        " (a .node's points with the size their first attribute, a .ele with its .node: a background "
                        "mesh, a grid)");
+  mesh->add_option("--gradation", a->gradation,
+                   "with --size: the sizes first lowered where they grow faster than G along the field's grid or "
+                   "mesh, so that neighbouring triangles' sizes differ by about G times at most (0.2: 20 %)")
+      ->check(non_negative("a gradation"))
+      ->needs("--size");
   mesh->add_flag("--region-areas", a->region_areas,
                  "the regions' own area bounds; refining a .ele, each triangle's from its .area file (Triangle's -a "
                  "with no number)");

@@ -64,7 +64,7 @@ using ReadGraph = Pslg (*)(const std::string& path, std::string_view data, unsig
 using ReadTerrain = Terrain (*)(const std::string& path, const PointFilter& filter, const Columns& columns);
 using WriteTin = void (*)(const std::string& path, const Terrain& terrain, const Triangulation& t);
 using WriteDem = void (*)(const std::string& path, const Dem& dem, const DemFile& file);
-using ReadSize = SizeField (*)(const std::string& path, unsigned threads);
+using ReadSize = SizeField (*)(const std::string& path, unsigned threads, double gradation);
 /// A role that `ridt mesh` or `ridt check` reads or writes itself, as a family of files named
 /// by Triangle's conventions rather than chosen by extension: described, not dispatched.
 using Described = bool;
@@ -175,10 +175,10 @@ Pslg read_node_graph(const std::string& path, std::string_view text, unsigned th
 void write_tin_ply(const std::string& path, const Terrain& terrain, const Triangulation& t);  // io_terrain.cpp
 void write_tin_obj(const std::string& path, const Terrain& terrain, const Triangulation& t);
 void write_dem_png(const std::string& path, const Dem& dem, const DemFile& file);
-SizeField read_size_node(const std::string& path, unsigned threads);  // io_size.cpp
-SizeField read_size_mesh(const std::string& path, unsigned threads);
-SizeField read_size_ascii_grid(const std::string& path, unsigned threads);
-SizeField read_size_gdal(const std::string& path, unsigned threads);
+SizeField read_size_node(const std::string& path, unsigned threads, double gradation);  // io_size.cpp
+SizeField read_size_mesh(const std::string& path, unsigned threads, double gradation);
+SizeField read_size_ascii_grid(const std::string& path, unsigned threads, double gradation);
+SizeField read_size_gdal(const std::string& path, unsigned threads, double gradation);
 Terrain read_las_terrain(const std::string& path, const PointFilter& filter, const Columns& columns);  // io_las.cpp
 Terrain read_laz(const std::string& path, const PointFilter& filter, const Columns& columns);
 Terrain read_table(const std::string& path, const PointFilter& filter, const Columns& columns);  // io_table.cpp

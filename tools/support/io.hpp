@@ -101,8 +101,9 @@ Pslg read_pslg(const std::string& path, unsigned threads = 1);
 
 /// A size field for quality meshes (`ridt mesh --size`), by extension: a .node's points with
 /// the size their first attribute; a .ele and the .node beside it (a background mesh); an ESRI
-/// ASCII grid (.asc); a GDAL raster (.tif, .tiff, .img) where the build has GDAL. Throws IoError.
-SizeField read_size_field(const std::string& path, unsigned threads = 1);
+/// ASCII grid (.asc); a GDAL raster (.tif, .tiff, .img) where the build has GDAL; its values
+/// graded to `gradation` (SizeField::on_grid). Throws IoError.
+SizeField read_size_field(const std::string& path, unsigned threads = 1, double gradation = 0);
 /// The extensions read_size_field reads ("a, b or c").
 std::string size_formats();
 

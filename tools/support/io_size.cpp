@@ -42,25 +42,25 @@ double header_value(const std::string& path, std::size_t line, std::string_view 
 
 }  // namespace
 
-SizeField read_size_node(const std::string& path, unsigned threads) {
+SizeField read_size_node(const std::string& path, unsigned threads, double gradation) {
   const Pslg g = read_pslg(path, threads);
   const std::vector<double> h = first_attribute(g, path);
-  return made(path, [&] { return SizeField::on_points(g.points, h); });
+  return made(path, [&] { return SizeField::on_points(g.points, h, gradation); });
 }
 
-SizeField read_size_mesh(const std::string& path, unsigned threads) {
+SizeField read_size_mesh(const std::string& path, unsigned threads, double gradation) {
   const std::string node = path.substr(0, path.size() - 4) + ".node";
   const Pslg g = read_pslg(node, threads);
   const std::vector<double> h = first_attribute(g, node);
   std::vector<double> attributes;
   std::vector<VertexId> middles;
   const std::vector<VertexId> t = read_elements(path, g.first_index, attributes, middles, threads);
-  return made(path, [&] { return SizeField::on_mesh(g.points, t, h); });
+  return made(path, [&] { return SizeField::on_mesh(g.points, t, h, gradation); });
 }
 
 // Header lines `ncols`, `nrows`, `xllcorner` or `xllcenter`, `yllcorner` or `yllcenter`,
 // `cellsize`, optionally `nodata_value`, in any order; then the rows, the top one first.
-SizeField read_size_ascii_grid(const std::string& path, unsigned /*threads*/) {
+SizeField read_size_ascii_grid(const std::string& path, unsigned /*threads*/, double gradation) {
   const std::string text = read_file_whole(path);
   std::string_view rest = without_bom(text);
   double ncols = -1, nrows = -1, x = NAN, y = NAN, cell = NAN, nodata = NAN;
@@ -118,22 +118,22 @@ SizeField read_size_ascii_grid(const std::string& path, unsigned /*threads*/) {
   // Cell centres: the first column's, the top row's, and the last of each.
   const double x0 = centre_x ? x : x + cell / 2, y_bottom = centre_y ? y : y + cell / 2;
   const double x1 = x0 + cell * static_cast<double>(nx - 1), y_top = y_bottom + cell * static_cast<double>(ny - 1);
-  return made(path, [&] { return SizeField::on_grid(h, nx, ny, x0, y_top, x1, y_bottom); });
+  return made(path, [&] { return SizeField::on_grid(h, nx, ny, x0, y_top, x1, y_bottom, gradation); });
 }
 
-SizeField read_size_gdal(const std::string& path, unsigned /*threads*/) {
+SizeField read_size_gdal(const std::string& path, unsigned /*threads*/, double gradation) {
   RasterIn r;
   if (std::error_code ec; !fs::exists(path, ec)) throw IoError("cannot read " + path + ": " + errno_text(ENOENT));
   gdal_module(path).read_raster(path, r);
-  return made(path, [&] { return SizeField::on_grid(r.values, r.nx, r.ny, r.x0, r.y0, r.x1, r.y1); });
+  return made(path, [&] { return SizeField::on_grid(r.values, r.nx, r.ny, r.x0, r.y0, r.x1, r.y1, gradation); });
 }
 
 }  // namespace ridt::io::detail
 
 namespace ridt::io {
 
-SizeField read_size_field(const std::string& path, unsigned threads) {
-  return detail::format_of(path, detail::kSizeIn).size_in.fn(path, threads);
+SizeField read_size_field(const std::string& path, unsigned threads, double gradation) {
+  return detail::format_of(path, detail::kSizeIn).size_in.fn(path, threads, gradation);
 }
 
 std::string size_formats() { return detail::extensions_with(detail::kSizeIn); }
