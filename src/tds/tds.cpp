@@ -98,20 +98,24 @@ void Tds::make_room(TriangleId end) {
   // present before they are used, so the larger step costs no memory; but it does cost address
   // space, which ulimit -v limits (and available_memory() then counts): by two where four
   // would take more than a quarter of what is left, or is refused; then by what is asked.
-  const std::size_t capacity = vertex_store_.capacity();
-  const std::size_t slot_bytes = sizeof(VertexId) + sizeof(Link) + (constraints_.empty() ? 0 : sizeof(Constraint));
-  const std::size_t left = available_memory();  // 0 where it cannot be read
-  const bool ample = left == 0 || 4 * capacity * slot_bytes <= left / 4;
-  for (const std::size_t step : {ample ? 4 : 2, 2, 0}) {
-    if (need <= vertex_store_.capacity() && need <= link_store_.capacity() &&
-        (constraints_.empty() || need <= constraints_.capacity()))
-      break;
-    try {
-      const std::size_t room = std::max(need, step * capacity);
-      vertex_store_.reserve(room), link_store_.reserve(room);
-      if (!constraints_.empty()) constraints_.reserve(room);
-    } catch (const std::bad_alloc&) {
-      if (step == 0) throw;
+  auto roomy = [&] {
+    return need <= vertex_store_.capacity() && need <= link_store_.capacity() &&
+        (constraints_.empty() || need <= constraints_.capacity());
+  };
+  if (!roomy()) {  // (asked once a growth: available_memory() reads files)
+    const std::size_t capacity = vertex_store_.capacity();
+    const std::size_t slot_bytes = sizeof(VertexId) + sizeof(Link) + (constraints_.empty() ? 0 : sizeof(Constraint));
+    const std::size_t left = available_memory();  // 0 where it cannot be read
+    const bool ample = left == 0 || 4 * capacity * slot_bytes <= left / 4;
+    for (const std::size_t step : {ample ? 4 : 2, 2, 0}) {
+      if (roomy()) break;
+      try {
+        const std::size_t room = std::max(need, step * capacity);
+        vertex_store_.reserve(room), link_store_.reserve(room);
+        if (!constraints_.empty()) constraints_.reserve(room);
+      } catch (const std::bad_alloc&) {
+        if (step == 0) throw;
+      }
     }
   }
   vertex_store_.resize(need, kNoVertex);
