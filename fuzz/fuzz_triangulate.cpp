@@ -8,7 +8,9 @@
 // Every method, order and location mode must give a result that passes the whole audit (the
 // exact validator, neighbours, hull, duplicates), and all must give the same triangles, hull
 // and duplicates. The finite bounding triangle may lose hull edges (the paper's defect) but
-// then must say so. Anything else aborts: a finding.
+// then must say so. The convex hull (ridt/hull.hpp) must pass its validator and be the
+// triangulation's boundary where it turns. Anything else aborts: a finding.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -17,6 +19,9 @@
 #include <vector>
 
 #include "audit.hpp"
+#include "ridt/check.hpp"
+#include "ridt/hull.hpp"
+#include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace {
@@ -76,6 +81,24 @@ const std::vector<test::Mode>& modes() {
   return all;
 }
 
+// The hull's corners against the triangulation's boundary (points on its sides left out).
+void check_hull(const std::vector<Point>& pts) {
+  const ConvexHull h = convex_hull(pts, true, 2);
+  if (const CheckResult r = check_convex_hull(pts, h.corners); !r.valid) finding("convex hull: " + r.message);
+  const Triangulation t = triangulate(pts);
+  std::vector<Point> turns;
+  const std::vector<VertexId>& b = t.hull;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    if (orientation(pts[b[(i + b.size() - 1) % b.size()]], pts[b[i]], pts[b[(i + 1) % b.size()]]) != 0)
+      turns.push_back(pts[b[i]]);
+  std::vector<Point> corners;
+  for (const VertexId v : h.corners) corners.push_back(pts[v]);
+  auto by_place = [](const Point& p, const Point& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); };
+  std::sort(turns.begin(), turns.end(), by_place), std::sort(corners.begin(), corners.end(), by_place);
+  if (t.size() > 0 && turns != corners) finding("the convex hull's corners are not the triangulation's");
+  if (h.corners.size() + h.on_sides.size() > pts.size()) finding("the convex hull lists more points than given");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t size) {
@@ -83,6 +106,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* bytes, std::size_t siz
   const std::vector<Point> pts = points_of(bytes, size);
   // A different order for each length.
   if (const std::string problem = test::audit_every_mode(pts, modes(), size); !problem.empty()) finding(problem);
+  check_hull(pts);
   // The paper's finite bounding triangle: right, or it says that it lost hull edges.
   Options finite;
   finite.experiment.bounding = Bounding::Finite;
