@@ -10,7 +10,6 @@
 // and duplicates. The finite bounding triangle may lose hull edges (the paper's defect) but
 // then must say so. The convex hull (ridt/hull.hpp) must pass its validator and be the
 // triangulation's boundary where it turns. Anything else aborts: a finding.
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -21,7 +20,6 @@
 #include "audit.hpp"
 #include "ridt/check.hpp"
 #include "ridt/hull.hpp"
-#include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace {
@@ -85,17 +83,10 @@ const std::vector<test::Mode>& modes() {
 void check_hull(const std::vector<Point>& pts) {
   const ConvexHull h = convex_hull(pts, true, 2);
   if (const CheckResult r = check_convex_hull(pts, h.corners); !r.valid) finding("convex hull: " + r.message);
-  const Triangulation t = triangulate(pts);
-  std::vector<Point> turns;
-  const std::vector<VertexId>& b = t.hull;
-  for (std::size_t i = 0; i < b.size(); ++i)
-    if (orientation(pts[b[(i + b.size() - 1) % b.size()]], pts[b[i]], pts[b[(i + 1) % b.size()]]) != 0)
-      turns.push_back(pts[b[i]]);
   std::vector<Point> corners;
   for (const VertexId v : h.corners) corners.push_back(pts[v]);
-  auto by_place = [](const Point& p, const Point& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); };
-  std::sort(turns.begin(), turns.end(), by_place), std::sort(corners.begin(), corners.end(), by_place);
-  if (t.size() > 0 && turns != corners) finding("the convex hull's corners are not the triangulation's");
+  if (corners != test::hull_turns(pts, triangulate(pts)))
+    finding("the convex hull's corners are not the triangulation's");
   if (h.corners.size() + h.on_sides.size() > pts.size()) finding("the convex hull lists more points than given");
 }
 

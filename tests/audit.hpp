@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ridt/check.hpp"
+#include "ridt/predicates.hpp"
 #include "ridt/ridt.hpp"
 
 namespace ridt::test {
@@ -46,6 +47,20 @@ inline std::vector<VertexId> canonical_hull(std::vector<VertexId> hull) {
 ///    the smallest index of its kind, and no duplicate is a vertex;
 ///  - an empty result says why in the warning; the counts in the stats add up.
 /// With `segments`, the validator is the constrained one.
+/// The points where the triangulation's boundary turns (its hull without the points on its
+/// sides), counter-clockwise from the least (by x, then y): the convex hull's corners, by
+/// another algorithm than ridt::convex_hull's. Empty without triangles.
+inline std::vector<Point> hull_turns(std::span<const Point> points, const Triangulation& t) {
+  const std::vector<VertexId>& b = t.hull;
+  std::vector<Point> out;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    if (orientation(points[b[(i + b.size() - 1) % b.size()]], points[b[i]], points[b[(i + 1) % b.size()]]) != 0)
+      out.push_back(points[b[i]]);
+  auto least = [](const Point& p, const Point& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); };
+  std::rotate(out.begin(), std::min_element(out.begin(), out.end(), least), out.end());
+  return out;
+}
+
 inline std::string audit(std::span<const Point> points, const Triangulation& t,
                          std::span<const VertexId> segments = {}) {
   const CheckResult verdict = check_constrained(points, t.triangles, segments);

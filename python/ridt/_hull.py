@@ -91,16 +91,12 @@ class ConvexHull(_api.PlanarPoints):
 
     def _run(self) -> None:
         pts = self._points
-        left_out = None
-        if self._good is not None:
+        if self._good is not None:  # the hull of every point but n
             n = self._good[0]
             if n >= len(pts):
                 raise ValueError(f"qhull_options QG{n}: there is no point {n} ({len(pts)} points)")
-            left_out = n
-            keep = np.ones(len(pts), dtype=bool)
-            keep[n] = False
-            index = np.flatnonzero(keep)
-            pts = np.ascontiguousarray(pts[keep])
+            index = np.flatnonzero(np.arange(len(pts)) != n)
+            pts = np.ascontiguousarray(pts[index])
         corners, on, side, volume, area = _core.convex_hull(pts, self._coplanar_wanted, self._threads)
         if len(corners) == 0:
             raise DegenerateInputError(f"ridt.ConvexHull: the {len(pts)} points have no convex hull in the plane "
@@ -108,7 +104,7 @@ class ConvexHull(_api.PlanarPoints):
         corners = corners.astype(np.intc)
         on = on.astype(np.intc)
         side = side.astype(np.intc)
-        if left_out is not None:  # back to the indices of all the points
+        if self._good is not None:  # back to the indices of all the points
             corners, on = index[corners].astype(np.intc), index[on].astype(np.intc)
         h = len(corners)
         self.vertices = corners
@@ -131,8 +127,8 @@ class ConvexHull(_api.PlanarPoints):
         else:
             self.coplanar = np.empty((0, 3), dtype=np.intc)
         self.good = None
-        if left_out is not None:
-            visible = np.asarray(_core.sees(self._points, self.simplices.astype(np.uint32), left_out), dtype=bool)
+        if self._good is not None:
+            visible = np.asarray(_core.sees(self._points, self.simplices.astype(np.uint32), n), dtype=bool)
             self.good = visible if self._good[1] else ~visible
         self.area = float(area)
         self.volume = float(volume)

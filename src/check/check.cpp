@@ -31,7 +31,6 @@ using detail::orient2d;
 
 Distinct group_distinct(std::span<const Point> pts) {
   const std::size_t n = pts.size();
-  Distinct d;
   // The coordinates travel with the index, so the comparisons read memory in order.
   struct Entry {
     Point p;
@@ -41,15 +40,9 @@ Distinct group_distinct(std::span<const Point> pts) {
   for (std::size_t i = 0; i < n; ++i) entries[i] = {pts[i], static_cast<VertexId>(i)};
   std::sort(entries.begin(), entries.end(),
             [](const Entry& a, const Entry& b) { return detail::lex_less(a.p, b.p) || (a.p == b.p && a.i < b.i); });
-  d.sorted.resize(n);
-  for (std::size_t i = 0; i < n; ++i) d.sorted[i] = entries[i].i;
-  for (std::size_t i = 0; i < n; ++i)
-    if (i == 0 || !(pts[d.sorted[i]] == pts[d.sorted[i - 1]])) d.first.push_back(d.sorted[i]);
-  bool collinear = true;
-  for (std::size_t i = 2; collinear && i < d.first.size(); ++i)
-    collinear = orient2d(pts[d.first[0]], pts[d.first[1]], pts[d.first[i]]) == 0;
-  d.degenerate = d.first.size() < 3 || collinear;
-  return d;
+  std::vector<VertexId> sorted(n);
+  for (std::size_t i = 0; i < n; ++i) sorted[i] = entries[i].i;
+  return detail::grouped(pts, std::move(sorted));
 }
 
 // For each point, the member of its group of equal points that stands for it: the one that

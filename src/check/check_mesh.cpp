@@ -36,10 +36,7 @@ std::vector<VertexId> hull_of(std::span<const Point> pts, const std::vector<Vert
   std::vector<Point> p(of.size());
   for (std::size_t i = 0; i < of.size(); ++i) p[i] = pts[of[i]];
   const detail::Distinct d = detail::near_the_hull(p, 0);
-  bool flat = true;
-  for (std::size_t i = 2; flat && i < d.first.size(); ++i)
-    flat = orient2d(p[d.first[0]], p[d.first[1]], p[d.first[i]]) == 0;
-  if (d.first.size() < 3 || flat) return {};
+  if (d.degenerate) return {};
   std::vector<VertexId> hull = detail::hull_with_collinear(p, d.first);
   for (VertexId& v : hull) v = of[v];
   return hull;

@@ -213,6 +213,7 @@ void check_hull_and_count(std::span<const Point> pts, const Distinct& d, std::ve
 namespace {
 
 std::vector<VertexId> extreme_polygon(std::span<const Point> pts) {
+  if (pts.size() < 3) return {};
   VertexId e[8] = {};
   for (std::size_t i = 1; i < pts.size(); ++i) {
     const Point& p = pts[i];
@@ -242,8 +243,9 @@ std::vector<VertexId> extreme_polygon(std::span<const Point> pts) {
 }  // namespace
 
 // The points not strictly inside the extreme polygon (all of them where it is empty), grouped:
-// `first` the least index of each group of equal points, in lexicographic order. They hold the
-// convex hull's corners and the points on its sides.
+// `first` the least index of each group of equal points, in lexicographic order, and
+// `degenerate` where those are fewer than three or collinear (then so are all the points: the
+// extreme polygon is empty). They hold the convex hull's corners and the points on its sides.
 Distinct near_the_hull(std::span<const Point> pts, unsigned threads) {
   const std::vector<VertexId> polygon = extreme_polygon(pts);
   InOrder<std::vector<VertexId>> kept;
@@ -257,12 +259,22 @@ Distinct near_the_hull(std::span<const Point> pts, unsigned threads) {
     }
     kept.put(first, std::move(near));
   });
-  Distinct d;
-  for (const std::vector<VertexId>& part : kept.take()) d.sorted.insert(d.sorted.end(), part.begin(), part.end());
-  std::sort(d.sorted.begin(), d.sorted.end(),
+  std::vector<VertexId> sorted;
+  for (const std::vector<VertexId>& part : kept.take()) sorted.insert(sorted.end(), part.begin(), part.end());
+  std::sort(sorted.begin(), sorted.end(),
             [&](VertexId a, VertexId b) { return lex_less(pts[a], pts[b]) || (pts[a] == pts[b] && a < b); });
+  return grouped(pts, std::move(sorted));
+}
+
+Distinct grouped(std::span<const Point> pts, std::vector<VertexId> sorted) {
+  Distinct d;
+  d.sorted = std::move(sorted);
   for (std::size_t i = 0; i < d.sorted.size(); ++i)
     if (i == 0 || !(pts[d.sorted[i]] == pts[d.sorted[i - 1]])) d.first.push_back(d.sorted[i]);
+  bool collinear = true;
+  for (std::size_t i = 2; collinear && i < d.first.size(); ++i)
+    collinear = orient2d(pts[d.first[0]], pts[d.first[1]], pts[d.first[i]]) == 0;
+  d.degenerate = d.first.size() < 3 || collinear;
   return d;
 }
 

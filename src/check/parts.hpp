@@ -91,6 +91,10 @@ struct Distinct {
   bool degenerate = false;
 };
 
+/// The Distinct of points whose indices `sorted` holds lexicographically (equal points by
+/// index): the first of each group of equal points, and whether those are degenerate.
+Distinct grouped(std::span<const Point> pts, std::vector<VertexId> sorted);
+
 /// Huge or tiny coordinates: an exactly scaled copy keeps the predicates on their fast path.
 /// Empty when the input needs none.
 std::vector<Point> exactly_scaled(std::span<const Point> input);
@@ -114,7 +118,7 @@ std::vector<VertexId> hull_with_collinear(std::span<const Point> pts, const std:
 /// that is empty), grouped as for Distinct: `first` the least index of each group of equal
 /// points, lexicographically. They hold the convex hull's corners and the points on its sides,
 /// and are few: hull_with_collinear(pts, near_the_hull(pts).first) is the hull, without a sort
-/// of every point. On `threads`.
+/// of every point; `degenerate` where the points have none. On `threads`.
 Distinct near_the_hull(std::span<const Point> pts, unsigned threads);
 
 /// Triangles exactly when the points are not degenerate; then the boundary edges (directed as

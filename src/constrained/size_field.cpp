@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "check/parts.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/interpolate.hpp"
 #include "ridt/predicates.hpp"
@@ -80,21 +81,10 @@ std::vector<double> graded_grid(std::span<const double> values, std::size_t nx, 
 std::vector<double> graded_mesh(std::span<const Point> vertices, std::span<const VertexId> triangles,
                                 std::span<const double> values, double rate) {
   if (rate == 0) return {values.begin(), values.end()};
-  std::vector<std::size_t> first(vertices.size() + 1, 0);
-  for (const VertexId v : triangles) first[v + 1] += 2;
-  for (std::size_t v = 0; v < vertices.size(); ++v) first[v + 1] += first[v];
-  std::vector<VertexId> next(first.back());
-  std::vector<std::size_t> at(first.begin(), first.end() - 1);
-  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
-    for (int i = 0; i < 3; ++i) {
-      const VertexId a = triangles[t + i], b = triangles[t + (i + 1) % 3];
-      next[at[a]++] = b, next[at[b]++] = a;
-    }
+  const detail::Adjacency sides = detail::Adjacency::of_triangles(vertices.size(), triangles);
   return limit_growth(values, rate, [&](std::size_t v, auto&& f) {
-    for (std::size_t k = first[v]; k < first[v + 1]; ++k) {
-      const Point &p = vertices[v], &q = vertices[next[k]];
-      f(next[k], std::hypot(q.x - p.x, q.y - p.y));
-    }
+    for (const VertexId w : sides[static_cast<VertexId>(v)])
+      f(w, std::hypot(vertices[w].x - vertices[v].x, vertices[w].y - vertices[v].y));
   });
 }
 

@@ -54,16 +54,10 @@ ConvexHull convex_hull(std::span<const Point> points, bool boundary, unsigned th
     if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
       throw InputError("point " + std::to_string(i) + " is not finite");
   ConvexHull out;
-  if (points.size() < 3) return out;
   const detail::Distinct d = detail::near_the_hull(points, threads);
-  const std::vector<VertexId>& s = d.first;  // distinct, lexicographically
-  if (s.size() < 3) return out;
-  bool flat = true;
-  for (std::size_t i = 1; flat && i + 1 < s.size(); ++i)
-    flat = detail::orient2d(points[s[0]], points[s.back()], points[s[i]]) == 0;
-  if (flat) return out;
+  if (d.degenerate) return out;
   // Round the boundary with the points on the sides; a corner is where it turns.
-  const std::vector<VertexId> round = detail::hull_with_collinear(points, s);
+  const std::vector<VertexId> round = detail::hull_with_collinear(points, d.first);
   const std::size_t m = round.size();
   std::vector<std::uint8_t> turns(m);
   for (std::size_t i = 0; i < m; ++i)

@@ -16,32 +16,14 @@
 namespace ridt {
 namespace {
 
-// The triangulation's boundary (counter-clockwise, points on the sides kept) without the
-// points where it does not turn: another algorithm's answer to the same question, rotated to
-// start at the least point.
-std::vector<VertexId> corners_of_triangulation(const std::vector<Point>& pts) {
-  const Triangulation t = triangulate(pts, {});
-  const std::vector<VertexId>& h = t.hull;
-  std::vector<VertexId> c;
-  for (std::size_t i = 0; i < h.size(); ++i)
-    if (detail::orient2d(pts[h[(i + h.size() - 1) % h.size()]], pts[h[i]], pts[h[(i + 1) % h.size()]]) != 0)
-      c.push_back(h[i]);
-  std::rotate(
-      c.begin(),
-      std::min_element(c.begin(), c.end(), [&](VertexId a, VertexId b) { return detail::lex_less(pts[a], pts[b]); }),
-      c.end());
-  return c;
-}
-
 void expect_hull(const std::vector<Point>& pts, unsigned threads = 1) {
   const ConvexHull h = convex_hull(pts, false, threads);
   const CheckResult r = check_convex_hull(pts, h.corners);
   EXPECT_TRUE(r.valid) << r.message;
   // Equal points: the triangulation keeps one of them (not always the least index).
-  std::vector<Point> mine, theirs;
+  std::vector<Point> mine;
   for (const VertexId v : h.corners) mine.push_back(pts[v]);
-  for (const VertexId v : corners_of_triangulation(pts)) theirs.push_back(pts[v]);
-  EXPECT_EQ(mine, theirs);
+  EXPECT_EQ(mine, test::hull_turns(pts, triangulate(pts)));
   for (const VertexId v : h.corners)
     for (VertexId u = 0; u < v; ++u) ASSERT_FALSE(pts[u] == pts[v]) << "corner " << v << " is not the least copy";
 }
