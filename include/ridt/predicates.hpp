@@ -15,4 +15,9 @@ int orientation(const Point& a, const Point& b, const Point& c);
 /// -1 strictly outside, 0 on it; exact as orientation().
 int in_circle(const Point& a, const Point& b, const Point& c, const Point& d);
 
+/// +1 when d lies below the plane through (a, b, c), those seen counter-clockwise from above
+/// (the side the normal (b - a) x (c - a) points to), -1 above it, 0 when the four are
+/// coplanar; exact as orientation().
+int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
 }  // namespace ridt

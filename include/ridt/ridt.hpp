@@ -32,6 +32,14 @@ struct Point {
   friend bool operator==(const Point&, const Point&) = default;
 };
 
+/// A point in space (the triangulation on the sphere, include/ridt/sphere.hpp).
+struct Point3 {
+  double x = 0;
+  double y = 0;
+  double z = 0;
+  friend bool operator==(const Point3&, const Point3&) = default;
+};
+
 using VertexId = std::uint32_t;
 using TriangleId = std::uint32_t;
 /// Marks "no triangle" in neighbour lists of the result (a hull edge).

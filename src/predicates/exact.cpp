@@ -12,7 +12,9 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <vector>
 
+#include "predicates/orient3d.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/predicates.hpp"
 
@@ -316,6 +318,75 @@ int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d
   return incircle_exact(a, b, c, d);
 }
 
+int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  // Degree 3: 2098-bit integers make products of some 6300 bits, within BigInt's room.
+  const int e = min_ulp_exponent({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
+  auto big = [&](double v) { return BigInt::from_double(v, e); };
+  const BigInt dx = big(d.x), dy = big(d.y), dz = big(d.z);
+  const BigInt adx = big(a.x) - dx, ady = big(a.y) - dy, adz = big(a.z) - dz;
+  const BigInt bdx = big(b.x) - dx, bdy = big(b.y) - dy, bdz = big(b.z) - dz;
+  const BigInt cdx = big(c.x) - dx, cdy = big(c.y) - dy, cdz = big(c.z) - dz;
+  return (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx)).sign();
+}
+
+int orient3d_tie(const Point3* const p[4], const std::uint32_t rank[4]) {
+  // The perturbed determinant of rows (x, y, z, 1) is a polynomial in eps; the coefficient of
+  // the product of the moves of entries S (at most one a row and a column) is the determinant
+  // with S's rows replaced by unit rows, and its exponent is the sum of S's 2^(3r + j), so
+  // the sets in the order of those sums as binary numbers come in the order of their terms.
+  static const std::vector<std::uint16_t> sets = [] {
+    std::vector<std::uint16_t> out;
+    for (unsigned m = 1; m < 4096; ++m) {
+      unsigned ranks = 0, columns = 0;
+      bool ok = true;
+      for (unsigned bit = 0; bit < 12 && ok; ++bit)
+        if (m >> bit & 1) {
+          ok = !(ranks >> (bit / 3) & 1) && !(columns >> (bit % 3) & 1);
+          ranks |= 1u << (bit / 3), columns |= 1u << (bit % 3);
+        }
+      if (ok) out.push_back(static_cast<std::uint16_t>(m));
+    }
+    return out;
+  }();
+  int row_of_rank[4];
+  for (int i = 0; i < 4; ++i) {
+    int r = 0;
+    for (int k = 0; k < 4; ++k) r += rank[k] < rank[i];
+    row_of_rank[r] = i;
+  }
+  auto coordinate = [&](int row, int j) { return j == 0 ? p[row]->x : j == 1 ? p[row]->y : p[row]->z; };
+  for (const std::uint16_t m : sets) {
+    int column_of_row[4] = {-1, -1, -1, -1};
+    bool used[4] = {false, false, false, true};  // the column of ones is never replaced
+    for (unsigned bit = 0; bit < 12; ++bit)
+      if (m >> bit & 1) column_of_row[row_of_rank[bit / 3]] = static_cast<int>(bit % 3), used[bit % 3] = true;
+    int rows[4], columns[4], k = 0, c = 0;
+    for (int i = 0; i < 4; ++i)
+      if (column_of_row[i] < 0) rows[k++] = i;
+    for (int j = 0; j < 4; ++j)
+      if (!used[j] || j == 3) columns[c++] = j;
+    // The minor of the rows left and the columns left (the column of ones last).
+    int minor = 1;
+    if (k == 3) {
+      auto at = [&](int row) { return Point{coordinate(row, columns[0]), coordinate(row, columns[1])}; };
+      minor = orient2d(at(rows[0]), at(rows[1]), at(rows[2]));
+    } else if (k == 2) {
+      const double u = coordinate(rows[0], columns[0]), w = coordinate(rows[1], columns[0]);
+      minor = (u > w) - (u < w);
+    }
+    if (minor == 0) continue;
+    // The sign of the permutation taking the rows left to the columns left in order, and each
+    // replaced row to its column: the determinant is that sign times the minor.
+    int sigma[4];
+    for (int i = 0, left = 0; i < 4; ++i) sigma[i] = column_of_row[i] >= 0 ? column_of_row[i] : columns[left++];
+    int inversions = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) inversions += sigma[i] > sigma[j];
+    return inversions % 2 == 0 ? minor : -minor;
+  }
+  return 0;  // unreachable: three replaced rows leave the column of ones, whose minor is 1
+}
+
 int incircle_sos_hard(const Point& a, const Point& b, const Point& c, const Point& d) {
   const int s = incircle_hard(a, b, c, d);
   return s != 0 ? s : incircle_tie(a, b, c, d);
@@ -372,5 +443,9 @@ namespace ridt {
 int orientation(const Point& a, const Point& b, const Point& c) { return detail::orient2d(a, b, c); }
 
 int in_circle(const Point& a, const Point& b, const Point& c, const Point& d) { return detail::incircle(a, b, c, d); }
+
+int orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  return detail::orient3d(a, b, c, d);
+}
 
 }  // namespace ridt

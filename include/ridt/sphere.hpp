@@ -1,0 +1,58 @@
+// The Delaunay triangulation on the sphere and its Voronoi diagram, decided exactly.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ridt/check.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt {
+
+/// The Delaunay triangulation of points on a sphere: the convex hull of the points as given
+/// (for points on a sphere its faces are the triangles whose circles hold no other point).
+struct SphericalTriangulation {
+  /// #T by 3 input indices, counter-clockwise seen from outside.
+  std::vector<VertexId> triangles;
+  /// #T by 3: the triangle across from corner i.
+  std::vector<std::int32_t> neighbors;
+  /// Copies dropped, each with the input index that stands for it (the least of the equal
+  /// points), sorted by `dropped`.
+  std::vector<Duplicate> duplicates;
+  /// Points strictly inside the hull of the others, so on no face (a point given a rounding
+  /// below the sphere among close neighbours), sorted.
+  std::vector<VertexId> hidden;
+
+  std::size_t size() const { return triangles.size() / 3; }
+};
+
+/// The convex hull of `points` in space, by an exact orientation test with a symbolic
+/// perturbation (four points on one circle of the sphere get one answer, whatever their order
+/// in the input), built by randomized incremental insertion. Throws InputError for a point
+/// that is not finite, for fewer than four distinct points, and where all are coplanar.
+SphericalTriangulation triangulate_sphere(std::span<const Point3> points);
+
+/// The Voronoi diagram on the sphere of centre `centre` and radius `radius`: a vertex for each
+/// triangle (the point of the sphere its outward normal points to: the centre of its circle,
+/// equally far from its three corners), and for each input point its cell, as the triangles
+/// round it, counter-clockwise seen from outside (empty for a copy or a hidden point).
+struct SphericalVoronoi {
+  std::vector<Point3> vertices;
+  std::vector<std::uint32_t> region_start;  ///< #points + 1: cell i is regions[start[i], start[i + 1])
+  std::vector<std::uint32_t> regions;
+  /// With `areas`: each cell's area, from the solid angles of the triangles it fans into (Van
+  /// Oosterom and Strackee's formula, with the triple product taken of differences).
+  std::vector<double> areas;
+};
+
+SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<const Point3> points,
+                                   const Point3& centre, double radius, bool areas = true, unsigned threads = 0);
+
+/// Checks exactly that `triangles` (#T by 3 input indices) is the convex hull of `points` as
+/// triangulate_sphere decides it: a closed surface of consistently oriented triangles, every
+/// edge convex (under the same perturbation), wrapped once round an inner point, every distinct
+/// point a corner or inside it, every corner a distinct point.
+CheckResult check_sphere(std::span<const Point3> points, std::span<const VertexId> triangles);
+
+}  // namespace ridt

@@ -1,0 +1,375 @@
+// The Delaunay triangulation on the sphere (ridt/sphere.hpp): the convex hull of the points,
+// built by randomized incremental insertion on the one mutable triangulation (tds/tds.hpp),
+// whose walk and cavity take the sphere's predicates.
+//
+// The hull is kept as a closed surface of triangles, counter-clockwise seen from outside,
+// about an inner point o (the centroid of the first four points, strictly inside their
+// tetrahedron, so inside every later hull). A point is located by walking through the cones
+// from o over the triangles (the side of a point from an edge a-b is its side of the plane
+// through o, a and b); it sees the triangles whose planes it lies above, by the exact
+// orientation with its symbolic perturbation (predicates/orient3d.hpp), keyed on the points'
+// lexicographic ranks, so that cocircular points (a cube's faces, a latitude circle) get one
+// answer whatever the input's order. Those triangles make a disc (the horizon's inside); it is
+// replaced by the fan of the point round its boundary, as a Delaunay cavity is. A point that
+// sees no triangle lies inside the hull: hidden. A disc with a vertex inside it (a point given
+// a rounding below the sphere among close neighbours, now covered) makes that vertex hidden.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <string>
+
+#include "predicates/orient3d.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/sphere.hpp"
+#include "tds/tds.hpp"
+
+namespace ridt {
+namespace detail {
+namespace {
+
+bool lex_less3(const Point3& a, const Point3& b) {
+  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+}
+
+// The distinct points in lexicographic order (their ranks are their vertex ids), the input
+// index of each, and the copies dropped.
+struct Distinct {
+  std::vector<Point3> points;
+  std::vector<VertexId> input;
+  std::vector<Duplicate> duplicates;
+};
+
+Distinct distinct_points(std::span<const Point3> points) {
+  if (points.size() >= kMaxSlotPoints) throw InputError("triangulate_sphere: too many points");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
+      throw InputError("triangulate_sphere: point " + std::to_string(i) + " is not finite");
+  std::vector<VertexId> order(points.size());
+  std::iota(order.begin(), order.end(), VertexId{0});
+  std::sort(order.begin(), order.end(), [&](VertexId a, VertexId b) {
+    return lex_less3(points[a], points[b]) || (points[a] == points[b] && a < b);
+  });
+  Distinct d;
+  d.points.reserve(points.size()), d.input.reserve(points.size());
+  for (const VertexId i : order) {
+    if (!d.input.empty() && points[d.input.back()] == points[i]) {
+      d.duplicates.push_back({i, d.input.back()});
+      continue;
+    }
+    d.input.push_back(i);
+    d.points.push_back(points[i]);
+  }
+  std::sort(d.duplicates.begin(), d.duplicates.end(),
+            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
+  return d;
+}
+
+double dist2(const Point3& a, const Point3& b) {
+  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z);
+}
+Point3 minus(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Point3 cross(const Point3& a, const Point3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+bool collinear(const Point3& a, const Point3& b, const Point3& c) {
+  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == 0 && orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == 0 &&
+      orient2d({a.x, a.z}, {b.x, b.z}, {c.x, c.z}) == 0;
+}
+
+// Spreads the low 21 bits of v three apart (Morton order in space).
+std::uint64_t spread3(std::uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffull;
+  v = (v | v << 16) & 0x1f0000ff0000ffull;
+  v = (v | v << 8) & 0x100f00f00f00f00full;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+  v = (v | v << 2) & 0x1249249249249249ull;
+  return v;
+}
+
+class Builder {
+ public:
+  explicit Builder(const std::vector<Point3>& p) : p_(p) {}
+
+  // Builds the hull; hidden_[v] marks the points inside it.
+  void run() {
+    const VertexId n = static_cast<VertexId>(p_.size());
+    hidden_.assign(n, 0);
+    const std::array<VertexId, 4> first = tetrahedron();
+    start(first);
+    for (const VertexId v : insertion_order(first)) insert(v);
+  }
+
+  const Tds& tds() const { return tds_; }
+  const std::vector<std::uint8_t>& hidden() const { return hidden_; }
+
+ private:
+  // Four points far from coplanar: the least, the farthest from it, the farthest from their
+  // line, the farthest from their plane (in double precision, then confirmed exactly).
+  std::array<VertexId, 4> tetrahedron() const {
+    const VertexId n = static_cast<VertexId>(p_.size());
+    if (n < 4) throw InputError("triangulate_sphere: fewer than four distinct points");
+    auto best = [&](auto&& score) {
+      VertexId arg = 0;
+      double top = -1;
+      for (VertexId v = 0; v < n; ++v)
+        if (const double s = score(v); s > top) top = s, arg = v;
+      return arg;
+    };
+    const VertexId a = 0;
+    VertexId b = best([&](VertexId v) { return dist2(p_[v], p_[a]); });
+    VertexId c = best([&](VertexId v) {
+      const Point3 u = cross(minus(p_[b], p_[a]), minus(p_[v], p_[a]));
+      return dot(u, u);
+    });
+    if (collinear(p_[a], p_[b], p_[c])) {
+      c = kNoVertex;
+      for (VertexId v = 0; v < n && c == kNoVertex; ++v)
+        if (!collinear(p_[a], p_[b], p_[v])) c = v;
+      if (c == kNoVertex) throw InputError("triangulate_sphere: all points are collinear");
+    }
+    VertexId d = best([&](VertexId v) {
+      const Point3 u = cross(minus(p_[b], p_[a]), minus(p_[c], p_[a]));
+      return std::fabs(dot(u, minus(p_[v], p_[a])));
+    });
+    if (orient3d(p_[a], p_[b], p_[c], p_[d]) == 0) {
+      d = kNoVertex;
+      for (VertexId v = 0; v < n && d == kNoVertex; ++v)
+        if (orient3d(p_[a], p_[b], p_[c], p_[v]) != 0) d = v;
+      if (d == kNoVertex) throw InputError("triangulate_sphere: all points are coplanar");
+    }
+    if (orient3d(p_[a], p_[b], p_[c], p_[d]) < 0) std::swap(b, c);
+    return {a, b, c, d};
+  }
+
+  // The tetrahedron's four triangles, counter-clockwise seen from outside (d lies below
+  // (a, b, c), and so on), linked; o inside it.
+  void start(const std::array<VertexId, 4>& q) {
+    const auto [a, b, c, d] = q;
+    const VertexId faces[4][3] = {{a, b, c}, {a, d, b}, {a, c, d}, {b, d, c}};
+    const std::size_t room = 3 * (2 * p_.size() + 8);
+    std::vector<VertexId> v(room, kNoVertex);
+    std::vector<Link> link(room, kNoLink);
+    for (int f = 0; f < 4; ++f)
+      for (int i = 0; i < 3; ++i) v[3 * f + i] = faces[f][i];
+    for (int f = 0; f < 4; ++f)
+      for (int i = 0; i < 3; ++i) {
+        const VertexId x = faces[f][next3(i)], y = faces[f][prev3(i)];
+        for (int g = 0; g < 4; ++g)
+          for (int j = 0; j < 3; ++j)
+            if (faces[g][next3(j)] == y && faces[g][prev3(j)] == x) link[3 * f + i] = static_cast<Link>(3 * g + j);
+      }
+    tds_ = Tds(std::move(v), std::move(link), 4);
+    stamp_.assign(2 * p_.size() + 8, 0);
+    const Point3 &pa = p_[a], &pb = p_[b], &pc = p_[c], &pd = p_[d];
+    inner_ = {(pa.x + pb.x) / 4 + (pc.x + pd.x) / 4, (pa.y + pb.y) / 4 + (pc.y + pd.y) / 4,
+              (pa.z + pb.z) / 4 + (pc.z + pd.z) / 4};
+    for (const auto& f : faces)
+      if (orient3d(p_[f[0]], p_[f[1]], p_[f[2]], inner_) <= 0)
+        throw InputError("triangulate_sphere: the points are too nearly coplanar");
+  }
+
+  // The points but the first four: a random permutation (seeded: the same every run) in rounds
+  // of doubling size (a biased randomized insertion order), each round in Morton order.
+  std::vector<VertexId> insertion_order(const std::array<VertexId, 4>& first) const {
+    std::vector<VertexId> order;
+    order.reserve(p_.size());
+    for (VertexId v = 0; v < p_.size(); ++v)
+      if (std::find(first.begin(), first.end(), v) == first.end()) order.push_back(v);
+    std::mt19937_64 random(0x5eed);
+    std::shuffle(order.begin(), order.end(), random);
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (const Point3& p : p_) {
+      const double c[3] = {p.x, p.y, p.z};
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+    }
+    auto key = [&](VertexId v) {
+      const double c[3] = {p_[v].x, p_[v].y, p_[v].z};
+      std::uint64_t k = 0;
+      for (int i = 0; i < 3; ++i) {
+        const double span = hi[i] - lo[i];
+        const double f = span > 0 ? (c[i] - lo[i]) / span : 0;
+        k |= spread3(static_cast<std::uint64_t>(std::clamp(f, 0.0, 1.0) * 2097151.0)) << i;
+      }
+      return k;
+    };
+    std::vector<std::pair<std::uint64_t, VertexId>> keyed(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {key(order[i]), order[i]};
+    std::size_t end = keyed.size();
+    while (end > 0) {
+      const std::size_t begin = end > 64 ? end / 2 : 0;
+      std::sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin), keyed.begin() + static_cast<std::ptrdiff_t>(end));
+      end = begin;
+    }
+    for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+    return order;
+  }
+
+  int side(VertexId a, VertexId b, const Point3& q) const { return -orient3d(inner_, p_[a], p_[b], q); }
+  // Whether point v lies above the plane of triangle t (perturbed: never on it).
+  bool sees(const VertexId* w, VertexId v) const {
+    return orient3d_sos(p_[w[0]], p_[w[1]], p_[w[2]], p_[v], w[0], w[1], w[2], v) < 0;
+  }
+  bool holds(TriangleId t, const Point3& q) const {
+    const VertexId* w = tds_.corners(t);
+    return side(w[0], w[1], q) >= 0 && side(w[1], w[2], q) >= 0 && side(w[2], w[0], q) >= 0;
+  }
+
+  // A triangle whose cone from o holds v's point: by walking from last_, or, where the walk
+  // goes on too long (the cones are not a Delaunay triangulation's, whose walks cannot cycle),
+  // by looking at every triangle.
+  TriangleId locate(VertexId v) {
+    const Point3& q = p_[v];
+    TriangleId t = last_;
+    std::size_t steps = 0;
+    const std::size_t limit = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
+    const Walked w = tds_.walk(
+        t, [&](VertexId a, VertexId b) { return side(a, b, q); },
+        [&](Link) { return ++steps < limit ? Step::Cross : Step::Stop; });
+    if (w) return t;
+    for (TriangleId u = 0; u < tds_.slots(); ++u)
+      if (tds_.vertex(u, 0) != kNoVertex && holds(u, q)) return u;
+    return last_;  // unreachable: the cones cover space
+  }
+
+  // A triangle that v sees among those whose closed cones hold it (more than one where it lies
+  // on a cone's side), else kNoTriangle.
+  TriangleId seen_from(TriangleId t, VertexId v) {
+    if (sees(tds_.corners(t), v)) return t;
+    const Point3& q = p_[v];
+    ++epoch_;
+    stamp_[t] = epoch_;
+    std::vector<TriangleId>& todo = todo_;
+    todo.assign(1, t);
+    while (!todo.empty()) {
+      const TriangleId u = todo.back();
+      todo.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const TriangleId x = triangle_of(tds_.link(u, i));
+        if (stamp_[x] == epoch_) continue;
+        stamp_[x] = epoch_;
+        if (!holds(x, q)) continue;
+        if (sees(tds_.corners(x), v)) return x;
+        todo.push_back(x);
+      }
+    }
+    return kNoTriangle;
+  }
+
+  void insert(VertexId v) {
+    const TriangleId t = seen_from(locate(v), v);
+    if (t == kNoTriangle) {
+      hidden_[v] = 1;
+      return;
+    }
+    ++epoch_;
+    stamp_[t] = epoch_;
+    tds_.find_cavity(
+        t, scratch_, [&](const VertexId* w) { return sees(w, v); }, Tds::kAnywhere, Tds::kNoWall,
+        [&](TriangleId u, const TriangleId*, std::size_t) {
+          if (stamp_[u] == epoch_) return true;
+          stamp_[u] = epoch_;
+          return false;
+        });
+    if (scratch_.revisited) cover(v);
+    SlotPool pool;
+    if (free_.size() >= 2) {
+      pool.list = free_.data(), pool.listed = free_.size();
+    } else {
+      pool = tds_.fresh(2);
+    }
+    last_ = tds_.fill_cavity(v, scratch_, pool);
+    free_.resize(pool.listed);
+  }
+
+  static VertexId key(VertexId v) { return v; }
+  static VertexId key(const CavityScratch::Boundary& e) { return e.a; }
+
+  // The triangles v sees surround a vertex (the traversal met one of them again): their
+  // boundary found and ordered anew, the vertices inside made hidden, the slots beyond the
+  // fan's freed.
+  void cover(VertexId v) {
+    CavityScratch& s = scratch_;
+    const std::size_t m = s.size;
+    std::vector<CavityScratch::Boundary>& edges = edges_;
+    edges.clear();
+    std::vector<VertexId>& inside = inside_;
+    inside.clear();
+    for (std::size_t k = 0; k < m; ++k) {
+      const TriangleId t = s.cavity[k];
+      for (int i = 0; i < 3; ++i) {
+        const Link l = tds_.link(t, i);
+        inside.push_back(tds_.vertex(t, i));
+        if (stamp_[triangle_of(l)] != epoch_) edges.push_back({tds_.vertex(t, next3(i)), l, link_to(t, i)});
+      }
+    }
+    // Round the boundary: each edge a -> b is followed by the one from b.
+    std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.a < y.a; });
+    auto head = [&](const CavityScratch::Boundary& e) { return tds_.head(e.inside); };
+    s.make_room(edges.size() + 2);
+    s.boundary[0] = edges[0];
+    for (std::size_t k = 1; k < edges.size(); ++k) {
+      const VertexId b = head(s.boundary[k - 1]);
+      s.boundary[k] = *std::lower_bound(edges.begin(), edges.end(), b,
+                                        [](const CavityScratch::Boundary& e, VertexId x) { return e.a < x; });
+    }
+    // (edges is sorted by a: a vertex of the cavity's triangles not on its boundary is inside)
+    for (const VertexId u : inside)
+      if (!std::binary_search(edges.begin(), edges.end(), u,
+                              [](const auto& x, const auto& y) { return key(x) < key(y); }))
+        hidden_[u] = 1;
+    const std::size_t k = edges.size();
+    for (std::size_t i = k - 2; i < m; ++i) {
+      tds_.free_slot(s.cavity[i]);
+      free_.push_back(s.cavity[i]);
+    }
+    s.size = k - 2, s.edges = k;
+    (void)v;
+  }
+
+  const std::vector<Point3>& p_;
+  Tds tds_;
+  Point3 inner_;
+  TriangleId last_ = 0;
+  CavityScratch scratch_;
+  std::vector<TriangleId> free_, todo_;
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t epoch_ = 0;
+  std::vector<std::uint8_t> hidden_;
+  std::vector<CavityScratch::Boundary> edges_;
+  std::vector<VertexId> inside_;
+};
+
+}  // namespace
+}  // namespace detail
+
+SphericalTriangulation triangulate_sphere(std::span<const Point3> points) {
+  using namespace detail;
+  Distinct d = distinct_points(points);
+  Builder builder(d.points);
+  builder.run();
+  const Tds& tds = builder.tds();
+  SphericalTriangulation out;
+  std::vector<std::int32_t> id(tds.slots(), -1);
+  std::int32_t count = 0;
+  for (TriangleId t = 0; t < tds.slots(); ++t)
+    if (tds.vertex(t, 0) != kNoVertex) id[t] = count++;
+  out.triangles.resize(3 * std::size_t(count));
+  out.neighbors.resize(3 * std::size_t(count));
+  for (TriangleId t = 0; t < tds.slots(); ++t)
+    if (id[t] >= 0)
+      for (int i = 0; i < 3; ++i) {
+        out.triangles[3 * std::size_t(id[t]) + i] = d.input[tds.vertex(t, i)];
+        out.neighbors[3 * std::size_t(id[t]) + i] = id[triangle_of(tds.link(t, i))];
+      }
+  for (VertexId v = 0; v < d.points.size(); ++v)
+    if (builder.hidden()[v]) out.hidden.push_back(d.input[v]);
+  std::sort(out.hidden.begin(), out.hidden.end());
+  out.duplicates = std::move(d.duplicates);
+  return out;
+}
+
+}  // namespace ridt

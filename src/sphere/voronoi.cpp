@@ -1,0 +1,95 @@
+// The Voronoi diagram on the sphere (ridt/sphere.hpp), from the triangulation: a vertex a
+// triangle, each cell the triangles round its point, each cell's area the sum of the solid
+// angles of the triangles (point, vertex k, vertex k + 1) it fans into.
+#include <cmath>
+
+#include "ridt/sphere.hpp"
+#include "runtime/parallel.hpp"
+#include "tds/ids.hpp"
+
+namespace ridt {
+namespace {
+
+Point3 minus(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Point3 cross(const Point3& a, const Point3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Point3 unit(const Point3& a) {
+  const double l = std::sqrt(dot(a, a));
+  return {a.x / l, a.y / l, a.z / l};
+}
+
+// The signed solid angle of the spherical triangle of unit vectors a, b, c (Van Oosterom and
+// Strackee): its triple product taken of b - a and c - a, which keeps its digits where the
+// three are close (a small cell's triangles).
+double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
+  const double triple = dot(a, cross(minus(b, a), minus(c, a)));
+  const double below = 1 + dot(a, b) + dot(b, c) + dot(c, a);
+  return 2 * std::atan2(triple, below);
+}
+
+}  // namespace
+
+SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<const Point3> points,
+                                   const Point3& centre, double radius, bool areas, unsigned threads) {
+  using detail::next3;
+  const std::size_t m = t.size(), n = points.size();
+  SphericalVoronoi out;
+  out.vertices.resize(m);
+  // A triangle's circle on the sphere is centred where its outward normal points: the cross
+  // product of two sides, from its corner opposite the longest side (the two shortest sides,
+  // which lose least to the differences).
+  detail::parallel_for(m, threads, 4096, [&](std::size_t from, std::size_t to) {
+    for (std::size_t f = from; f < to; ++f) {
+      const Point3 &a = points[t.triangles[3 * f]], &b = points[t.triangles[3 * f + 1]],
+                   &c = points[t.triangles[3 * f + 2]];
+      const double ab = dot(minus(a, b), minus(a, b)), bc = dot(minus(b, c), minus(b, c)),
+                   ca = dot(minus(c, a), minus(c, a));
+      const Point3 normal = unit(bc >= ab && bc >= ca ? cross(minus(b, a), minus(c, a))
+                                     : ca >= ab       ? cross(minus(c, b), minus(a, b))
+                                                      : cross(minus(a, c), minus(b, c)));
+      out.vertices[f] = {centre.x + radius * normal.x, centre.y + radius * normal.y, centre.z + radius * normal.z};
+    }
+  });
+  // Each point's cell: one triangle of it, then round it. In triangle (g, b, c) the next
+  // triangle counter-clockwise round g is the one across g-c, from b.
+  std::vector<std::uint32_t> one(n, 0xffffffffu);
+  out.region_start.assign(n + 1, 0);
+  for (std::size_t f = 0; f < m; ++f)
+    for (int i = 0; i < 3; ++i) {
+      const VertexId g = t.triangles[3 * f + i];
+      one[g] = static_cast<std::uint32_t>(3 * f + i);
+      ++out.region_start[g + 1];
+    }
+  for (std::size_t i = 0; i < n; ++i) out.region_start[i + 1] += out.region_start[i];
+  out.regions.resize(out.region_start[n]);
+  if (areas) out.areas.assign(n, 0);
+  detail::parallel_for(n, threads, 4096, [&](std::size_t from, std::size_t to) {
+    for (std::size_t g = from; g < to; ++g) {
+      if (one[g] == 0xffffffffu) continue;
+      std::uint32_t* cell = out.regions.data() + out.region_start[g];
+      const std::size_t size = out.region_start[g + 1] - out.region_start[g];
+      std::uint32_t f = one[g] / 3;
+      int i = static_cast<int>(one[g] % 3);
+      for (std::size_t k = 0; k < size; ++k) {
+        cell[k] = f;
+        const std::uint32_t next = static_cast<std::uint32_t>(t.neighbors[3 * std::size_t{f} + next3(i)]);
+        f = next;
+        i = t.triangles[3 * std::size_t{f}] == g ? 0 : t.triangles[3 * std::size_t{f} + 1] == g ? 1 : 2;
+      }
+      if (!areas) continue;
+      const Point3 p = unit(minus(points[g], centre));
+      double sum = 0;
+      for (std::size_t k = 0; k < size; ++k) {
+        const Point3 u = unit(minus(out.vertices[cell[k]], centre));
+        const Point3 w = unit(minus(out.vertices[cell[k + 1 < size ? k + 1 : 0]], centre));
+        sum += solid_angle(p, u, w);
+      }
+      out.areas[g] = sum * radius * radius;
+    }
+  });
+  return out;
+}
+
+}  // namespace ridt
