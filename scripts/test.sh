@@ -43,14 +43,14 @@ ls build/wheels/ridt-*.whl
 (cd python/tests && ../../build/venv/bin/python -c "import ridt, sys; assert 'venv' in ridt.__file__, ridt.__file__" &&
   ../../build/venv/bin/python -m pytest -q -p no:cacheprovider .)
 
-echo "== scipy's own tests (Delaunay, Voronoi, ConvexHull, LinearND, NearestND, CloughTocher, griddata) against ridt (at ${SECONDS} s)"
+echo "== scipy's own tests (Delaunay, Voronoi, ConvexHull, SphericalVoronoi, LinearND, NearestND, CloughTocher, griddata) against ridt (at ${SECONDS} s)"
 # The test files of the scipy installed on the machine, with scipy's 2-D classes replaced by
 # ridt's (python/scipy_suite/ridt_scipy.py); exceptions only as python/scipy_suite/exceptions.txt
 # lists them. Missing files are an error, not a skip.
 scipy_tests=$(/usr/bin/python3 -c "import os, scipy; print(os.path.dirname(scipy.__file__))")
 (cd python/scipy_suite && PYTHONPATH="$PWD" ../../build/venv/bin/python -m pytest -q -p no:cacheprovider -p ridt_scipy \
   "$scipy_tests/spatial/tests/test_qhull.py" "$scipy_tests/interpolate/tests/test_interpnd.py" \
-  "$scipy_tests/interpolate/tests/test_ndgriddata.py")
+  "$scipy_tests/interpolate/tests/test_ndgriddata.py" "$scipy_tests/spatial/tests/test_spherical_voronoi.py")
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer (at ${SECONDS} s)"
 # CGAL's comparisons run in the Release suite above; here they would add minutes of template

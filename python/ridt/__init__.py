@@ -20,6 +20,7 @@ from ._constrained import ConstrainedDelaunay, RefinementWarning
 from ._size import SizeField
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._hull import ConvexHull, DegenerateInputError
+from ._sphere import SphericalVoronoi, check_sphere
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
@@ -42,6 +43,7 @@ __all__ = [
     "NearestNDInterpolator",
     "RefinementWarning",
     "SizeField",
+    "SphericalVoronoi",
     "Triangulation",
     "available_memory",
     "cached_memory",
@@ -49,6 +51,7 @@ __all__ = [
     "triangulate_out_of_core",
     "check",
     "check_convex_hull",
+    "check_sphere",
     "set_memory_cache_limit",
     "Voronoi",
     "griddata",

@@ -4,7 +4,8 @@ Loaded with ``-p ridt_scipy`` (this folder on PYTHONPATH), before pytest imports
 module, it puts ridt's classes and functions in the place of scipy's 2-D ones, in every module
 the test files import them from:
 
-- scipy.spatial: Delaunay, Voronoi, ConvexHull, tsearch (also in scipy.spatial._qhull);
+- scipy.spatial: Delaunay, Voronoi, ConvexHull, tsearch (also in scipy.spatial._qhull),
+  SphericalVoronoi (on a sphere and on a circle);
 - scipy.interpolate: LinearNDInterpolator, NearestNDInterpolator, CloughTocher2DInterpolator,
   griddata, estimate_gradients_2d_global, GradientEstimationWarning (also in
   scipy.interpolate.interpnd, ._interpnd and ._ndgriddata).
@@ -116,6 +117,32 @@ def _replacement(name: str, ridt_class: Any, first_arg: str = "points", planar_o
     return _Replacing(name, (), {"__new__": __new__, "_ridt": ridt_class, "__doc__": ridt_class.__doc__})
 
 
+def _spherical_voronoi() -> type:
+    """ridt.SphericalVoronoi on a sphere (3-D) or a circle (2-D), its triangulation validated; scipy's
+    higher dimensions are outside the claim."""
+
+    def __new__(cls, *args: Any, **kwargs: Any) -> Any:
+        points = args[0] if args else kwargs.get("points")
+        d = _dimension(points)
+        if d not in (2, 3):
+            _outside(f"SphericalVoronoi in {d}-D")
+        _used["SphericalVoronoi"] += 1
+        sv = ridt.SphericalVoronoi(*args, **kwargs)
+        _used["validated"] += 1
+        if d == 3:
+            valid, message = ridt.check_sphere(sv.points, sv.triangles)
+        else:
+            valid, message, _ = ridt.check_convex_hull(sv.points, sv.triangles[:, 0])
+        _verdicts.setdefault(_current[0], []).append(message)
+        if not valid:
+            _invalid.append(f"{_current[0]}: {message}")
+            raise AssertionError(f"ridt's triangulation of {len(sv.points)} points on the sphere is not valid: {message}")
+        return sv
+
+    return _Replacing("SphericalVoronoi", (), {"__new__": __new__, "_ridt": ridt.SphericalVoronoi,
+                                               "__doc__": ridt.SphericalVoronoi.__doc__})
+
+
 def _not_claimed(name: str) -> type:
     def __new__(cls, *args: Any, **kwargs: Any) -> Any:
         _outside(name)
@@ -147,6 +174,7 @@ def replacements() -> Dict[str, Any]:
         "griddata": _griddata,
         "tsearch": _tsearch,
         "ConvexHull": _replacement("ConvexHull", ridt.ConvexHull),
+        "SphericalVoronoi": _spherical_voronoi(),
         "HalfspaceIntersection": _not_claimed("HalfspaceIntersection"),
         "_Qhull": _not_claimed("Qhull's own object (_Qhull)"),
         "estimate_gradients_2d_global": ridt.estimate_gradients_2d_global,
@@ -154,7 +182,8 @@ def replacements() -> Dict[str, Any]:
     }
 
 
-MODULES = ("scipy.spatial", "scipy.spatial._qhull", "scipy.spatial.qhull", "scipy.interpolate",
+MODULES = ("scipy.spatial", "scipy.spatial._qhull", "scipy.spatial.qhull", "scipy.spatial._spherical_voronoi",
+           "scipy.interpolate",
            "scipy.interpolate.interpnd", "scipy.interpolate._interpnd", "scipy.interpolate._ndgriddata",
            "scipy.interpolate.ndgriddata")  # where scipy's test files import them from
 
@@ -242,12 +271,18 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
 
 def _problems(config: pytest.Config) -> List[str]:
     out = []
-    unseen = set(config._ridt_exceptions) - config._ridt_seen  # type: ignore[attr-defined]
+    # Exceptions of files not run this session are not looked for.
+    files = {os.path.basename(str(a)).split("::")[0] for a in config.args}
+    unseen = {t for t in set(config._ridt_exceptions) - config._ridt_seen  # type: ignore[attr-defined]
+              if t.split("::")[0] in files}
     if unseen:
         out.append(f"exceptions.txt names tests that were not collected: {sorted(unseen)}")
     out += [f"not a valid triangulation: {x}" for x in _invalid]
-    if not _used["Delaunay"] or not _used["LinearNDInterpolator"] or not _used["griddata"]:
-        out.append("ridt's classes were never called: the replacement did not take")
+    called = {"test_qhull.py": "Delaunay", "test_interpnd.py": "LinearNDInterpolator",
+              "test_ndgriddata.py": "griddata", "test_spherical_voronoi.py": "SphericalVoronoi"}
+    for f in files:
+        if f in called and not _used[called[f]]:
+            out.append(f"ridt's {called[f]} was never called in {f}: the replacement did not take")
     return out
 
 

@@ -32,8 +32,11 @@ inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, co
       (std::fabs(adx * bdy) + std::fabs(ady * bdx)) * std::fabs(cdz);
   // Underflow: six degree-2 products, each off by 2^-1075 at most, times a difference of at
   // most m, and three degree-3 products: below 2^-1072 (m + 1).
-  const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(adz), std::fabs(bdx), std::fabs(bdy),
-                             std::fabs(bdz), std::fabs(cdx), std::fabs(cdy), std::fabs(cdz)});
+  // (a tree of maxima, not a chain: the sign waits on this bound, and a walk on the sign)
+  const double m =
+      std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)), std::max(std::fabs(adz), std::fabs(bdx))),
+               std::max(std::max(std::fabs(bdy), std::fabs(bdz)),
+                        std::max(std::fabs(cdx), std::max(std::fabs(cdy), std::fabs(cdz)))));
   const double bound = kOrient3dBound * permanent + 0x1p-1070 * (m + 1);
   if (det > bound) return 1;
   if (det < -bound) return -1;

@@ -19,6 +19,7 @@
 #include <random>
 #include <string>
 
+#include "order/order.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/sphere.hpp"
@@ -79,32 +80,32 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
       orient2d({a.x, a.z}, {b.x, b.z}, {c.x, c.z}) == 0;
 }
 
-// Spreads the low 21 bits of v three apart (Morton order in space).
-std::uint64_t spread3(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffull;
-  v = (v | v << 16) & 0x1f0000ff0000ffull;
-  v = (v | v << 8) & 0x100f00f00f00f00full;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-  v = (v | v << 2) & 0x1249249249249249ull;
-  return v;
-}
-
 class Builder {
  public:
   explicit Builder(const std::vector<Point3>& p) : p_(p) {}
 
   // Builds the hull; hidden_[v] marks the points inside it.
+  // Vertex ids are places in the insertion order (the tetrahedron's four first), so that points
+  // inserted one after another lie together in memory; rank_ maps them back.
   void run() {
     const VertexId n = static_cast<VertexId>(p_.size());
     hidden_.assign(n, 0);
     const std::array<VertexId, 4> first = tetrahedron();
-    start(first);
-    for (const VertexId v : insertion_order(first)) insert(v);
+    const std::vector<VertexId> order = insertion_order(first);
+    rank_.assign(first.begin(), first.end());
+    rank_.insert(rank_.end(), order.begin(), order.end());
+    q_.resize(n);
+    for (VertexId v = 0; v < n; ++v) q_[v] = p_[rank_[v]];
+    start();
+    for (VertexId v = 4; v < n; ++v) insert(v);
   }
 
   const Tds& tds() const { return tds_; }
+  /// Per vertex id: its rank (the points' lexicographic order), whether it is hidden.
+  const std::vector<VertexId>& rank() const { return rank_; }
   const std::vector<std::uint8_t>& hidden() const { return hidden_; }
+  /// Each point's place along the curve insertion_order sorts by.
+  const std::vector<std::uint64_t>& curve() const { return curve_; }
 
  private:
   // Four points far from coplanar: the least, the farthest from it, the farthest from their
@@ -147,8 +148,8 @@ class Builder {
 
   // The tetrahedron's four triangles, counter-clockwise seen from outside (d lies below
   // (a, b, c), and so on), linked; o inside it.
-  void start(const std::array<VertexId, 4>& q) {
-    const auto [a, b, c, d] = q;
+  void start() {
+    const VertexId a = 0, b = 1, c = 2, d = 3;
     const VertexId faces[4][3] = {{a, b, c}, {a, d, b}, {a, c, d}, {b, d, c}};
     const std::size_t room = 3 * (2 * p_.size() + 8);
     std::vector<VertexId> v(room, kNoVertex);
@@ -164,17 +165,18 @@ class Builder {
       }
     tds_ = Tds(std::move(v), std::move(link), 4);
     stamp_.assign(2 * p_.size() + 8, 0);
-    const Point3 &pa = p_[a], &pb = p_[b], &pc = p_[c], &pd = p_[d];
+    const Point3 &pa = q_[a], &pb = q_[b], &pc = q_[c], &pd = q_[d];
     inner_ = {(pa.x + pb.x) / 4 + (pc.x + pd.x) / 4, (pa.y + pb.y) / 4 + (pc.y + pd.y) / 4,
               (pa.z + pb.z) / 4 + (pc.z + pd.z) / 4};
     for (const auto& f : faces)
-      if (orient3d(p_[f[0]], p_[f[1]], p_[f[2]], inner_) <= 0)
+      if (orient3d(q_[f[0]], q_[f[1]], q_[f[2]], inner_) <= 0)
         throw InputError("triangulate_sphere: the points are too nearly coplanar");
   }
 
   // The points but the first four: a random permutation (seeded: the same every run) in rounds
-  // of doubling size (a biased randomized insertion order), each round in Morton order.
-  std::vector<VertexId> insertion_order(const std::array<VertexId, 4>& first) const {
+  // of doubling size (a biased randomized insertion order), each round along a curve
+  // over the directions from the middle (key, below).
+  std::vector<VertexId> insertion_order(const std::array<VertexId, 4>& first) {
     std::vector<VertexId> order;
     order.reserve(p_.size());
     for (VertexId v = 0; v < p_.size(); ++v)
@@ -186,18 +188,23 @@ class Builder {
       const double c[3] = {p.x, p.y, p.z};
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
     }
+    // Along a Hilbert curve on each face of a cube about the points' box's centre, the point's
+    // direction from it projected onto the face it meets.
+    const double mid[3] = {lo[0] / 2 + hi[0] / 2, lo[1] / 2 + hi[1] / 2, lo[2] / 2 + hi[2] / 2};
     auto key = [&](VertexId v) {
-      const double c[3] = {p_[v].x, p_[v].y, p_[v].z};
-      std::uint64_t k = 0;
-      for (int i = 0; i < 3; ++i) {
-        const double span = hi[i] - lo[i];
-        const double f = span > 0 ? (c[i] - lo[i]) / span : 0;
-        k |= spread3(static_cast<std::uint64_t>(std::clamp(f, 0.0, 1.0) * 2097151.0)) << i;
-      }
-      return k;
+      const double d[3] = {p_[v].x - mid[0], p_[v].y - mid[1], p_[v].z - mid[2]};
+      int axis = 0;
+      for (int k = 1; k < 3; ++k)
+        if (std::fabs(d[k]) > std::fabs(d[axis])) axis = k;
+      const double scale = d[axis] != 0 ? 32767.5 / std::fabs(d[axis]) : 0;
+      auto cell = [&](double x) { return static_cast<std::uint32_t>(std::clamp(x * scale + 32767.5, 0.0, 65535.0)); };
+      const std::uint64_t face = 2 * static_cast<std::uint64_t>(axis) + (d[axis] < 0);
+      return face << 32 | hilbert_key(cell(d[(axis + 1) % 3]), cell(d[(axis + 2) % 3]));
     };
+    curve_.resize(p_.size());
+    for (VertexId v = 0; v < p_.size(); ++v) curve_[v] = key(v);
     std::vector<std::pair<std::uint64_t, VertexId>> keyed(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {key(order[i]), order[i]};
+    for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {curve_[order[i]], order[i]};
     std::size_t end = keyed.size();
     while (end > 0) {
       const std::size_t begin = end > 64 ? end / 2 : 0;
@@ -208,10 +215,10 @@ class Builder {
     return order;
   }
 
-  int side(VertexId a, VertexId b, const Point3& q) const { return -orient3d(inner_, p_[a], p_[b], q); }
+  int side(VertexId a, VertexId b, const Point3& q) const { return -orient3d(inner_, q_[a], q_[b], q); }
   // Whether point v lies above the plane of triangle t (perturbed: never on it).
   bool sees(const VertexId* w, VertexId v) const {
-    return orient3d_sos(p_[w[0]], p_[w[1]], p_[w[2]], p_[v], w[0], w[1], w[2], v) < 0;
+    return orient3d_sos(q_[w[0]], q_[w[1]], q_[w[2]], q_[v], rank_[w[0]], rank_[w[1]], rank_[w[2]], rank_[v]) < 0;
   }
   bool holds(TriangleId t, const Point3& q) const {
     const VertexId* w = tds_.corners(t);
@@ -222,7 +229,7 @@ class Builder {
   // goes on too long (the cones are not a Delaunay triangulation's, whose walks cannot cycle),
   // by looking at every triangle.
   TriangleId locate(VertexId v) {
-    const Point3& q = p_[v];
+    const Point3& q = q_[v];
     TriangleId t = last_;
     std::size_t steps = 0;
     const std::size_t limit = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
@@ -239,7 +246,7 @@ class Builder {
   // on a cone's side), else kNoTriangle.
   TriangleId seen_from(TriangleId t, VertexId v) {
     if (sees(tds_.corners(t), v)) return t;
-    const Point3& q = p_[v];
+    const Point3& q = q_[v];
     ++epoch_;
     stamp_[t] = epoch_;
     std::vector<TriangleId>& todo = todo_;
@@ -330,7 +337,9 @@ class Builder {
     (void)v;
   }
 
-  const std::vector<Point3>& p_;
+  const std::vector<Point3>& p_;  // by rank
+  std::vector<Point3> q_;  // by vertex id
+  std::vector<VertexId> rank_;
   Tds tds_;
   Point3 inner_;
   TriangleId last_ = 0;
@@ -341,6 +350,7 @@ class Builder {
   std::vector<std::uint8_t> hidden_;
   std::vector<CavityScratch::Boundary> edges_;
   std::vector<VertexId> inside_;
+  std::vector<std::uint64_t> curve_;
 };
 
 }  // namespace
@@ -352,21 +362,29 @@ SphericalTriangulation triangulate_sphere(std::span<const Point3> points) {
   Builder builder(d.points);
   builder.run();
   const Tds& tds = builder.tds();
+  // The triangles in the curve's order of their least corner: a point's triangles then lie close
+  // together in the arrays, and a walk round each (its Voronoi cell) stays in the cache.
+  std::vector<std::pair<std::uint64_t, TriangleId>> live;
+  live.reserve(tds.slots());
+  const std::vector<std::uint64_t>& key = builder.curve();
+  const std::vector<VertexId>& rank = builder.rank();
+  for (TriangleId t = 0; t < tds.slots(); ++t)
+    if (tds.vertex(t, 0) != kNoVertex)
+      live.push_back(
+          {std::min({key[rank[tds.vertex(t, 0)]], key[rank[tds.vertex(t, 1)]], key[rank[tds.vertex(t, 2)]]}), t});
+  std::sort(live.begin(), live.end());
   SphericalTriangulation out;
   std::vector<std::int32_t> id(tds.slots(), -1);
-  std::int32_t count = 0;
-  for (TriangleId t = 0; t < tds.slots(); ++t)
-    if (tds.vertex(t, 0) != kNoVertex) id[t] = count++;
-  out.triangles.resize(3 * std::size_t(count));
-  out.neighbors.resize(3 * std::size_t(count));
-  for (TriangleId t = 0; t < tds.slots(); ++t)
-    if (id[t] >= 0)
-      for (int i = 0; i < 3; ++i) {
-        out.triangles[3 * std::size_t(id[t]) + i] = d.input[tds.vertex(t, i)];
-        out.neighbors[3 * std::size_t(id[t]) + i] = id[triangle_of(tds.link(t, i))];
-      }
+  for (std::size_t k = 0; k < live.size(); ++k) id[live[k].second] = static_cast<std::int32_t>(k);
+  out.triangles.resize(3 * live.size());
+  out.neighbors.resize(3 * live.size());
+  for (std::size_t k = 0; k < live.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      out.triangles[3 * k + i] = d.input[rank[tds.vertex(live[k].second, i)]];
+      out.neighbors[3 * k + i] = id[triangle_of(tds.link(live[k].second, i))];
+    }
   for (VertexId v = 0; v < d.points.size(); ++v)
-    if (builder.hidden()[v]) out.hidden.push_back(d.input[v]);
+    if (builder.hidden()[v]) out.hidden.push_back(d.input[rank[v]]);
   std::sort(out.hidden.begin(), out.hidden.end());
   out.duplicates = std::move(d.duplicates);
   return out;

@@ -65,9 +65,11 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
   for (std::size_t i = 0; i < n; ++i) out.region_start[i + 1] += out.region_start[i];
   out.regions.resize(out.region_start[n]);
   if (areas) out.areas.assign(n, 0);
-  detail::parallel_for(n, threads, 4096, [&](std::size_t from, std::size_t to) {
-    for (std::size_t g = from; g < to; ++g) {
-      if (one[g] == 0xffffffffu) continue;
+  // The points in the triangles' order (where they lie close together), not the input's.
+  detail::parallel_for(3 * m, threads, 4096, [&](std::size_t from, std::size_t to) {
+    for (std::size_t corner = from; corner < to; ++corner) {
+      const VertexId g = t.triangles[corner];
+      if (one[g] != corner) continue;
       std::uint32_t* cell = out.regions.data() + out.region_start[g];
       const std::size_t size = out.region_start[g + 1] - out.region_start[g];
       std::uint32_t f = one[g] / 3;
