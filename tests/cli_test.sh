@@ -916,5 +916,46 @@ expect 0 "tin into a FIFO" -- timeout 20 "$ridt" tin "$dir/t.csv" -o "$dir/tin_f
 wait "$reader"
 grep -q '"FeatureCollection"' "$dir/tin_fifo.out" && [ -p "$dir/tin_fifo.geojson" ] && pass || fail "tin into a FIFO"
 
+# ridt sphere: longitudes and latitudes (a grid: its rows are circles, its poles shared by a
+# column each) and x y z; the triangles, the cells and their areas; copies and bad input.
+/usr/bin/python3 -c "
+for lat in range(-80, 90, 20):
+  for lon in range(0, 360, 30): print(lon, lat)
+print(0, 90); print(0, -90); print(30, 20)" >"$dir/lonlat.txt"
+expect 0 "sphere of longitudes and latitudes" -- "$ridt" sphere "$dir/lonlat.txt" -o "$dir/sphere.off" \
+  --voronoi "$dir/cells.off" --areas "$dir/areas.txt" --check
+stderr_has "valid: the convex hull of 110 points, 216 triangles"
+stderr_has "1 duplicate point dropped"
+[ "$(sed -n 2p "$dir/sphere.off")" = "111 216 0" ] && pass || fail "sphere .off header"
+[ "$(sed -n 2p "$dir/cells.off")" = "216 110 0" ] && pass || fail "sphere cells .off header"
+/usr/bin/python3 -c "
+import math, sys
+a = [float(x) for x in open(sys.argv[1])]
+assert len(a) == 111 and a[110] == 0 and abs(sum(a) - 4 * math.pi) < 1e-12, sum(a)" "$dir/areas.txt" \
+  && pass || fail "sphere areas: one a point, the copy's 0, summing to 4 pi"
+/usr/bin/python3 -c "
+import random
+random.seed(3)
+for _ in range(2000):
+  x, y, z = (random.gauss(0, 1) for _ in range(3)); r = (x * x + y * y + z * z) ** 0.5
+  print(5 + 2 * x / r, -1 + 2 * y / r, 2 * z / r)" >"$dir/xyz.txt"
+expect 0 "sphere of x y z, text triangles" -- "$ridt" sphere "$dir/xyz.txt" -o "$dir/xyz.tri" --check \
+  --areas "$dir/xyz_areas.txt" --center 5,-1,0 --threads 2
+[ "$(wc -l <"$dir/xyz.tri")" -eq 3996 ] && pass || fail "sphere: 2n - 4 triangles"
+/usr/bin/python3 -c "
+import math, sys
+a = [float(x) for x in open(sys.argv[1])]
+assert abs(sum(a) - 16 * math.pi) < 1e-9, sum(a)" "$dir/xyz_areas.txt" && pass || fail "sphere areas sum to 4 pi r^2"
+expect 2 "sphere: coplanar points" -- "$ridt" sphere <(printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n') -o "$dir/flat.off"
+absent "$dir/flat.off"
+expect 2 "sphere: a latitude past 90" -- "$ridt" sphere <(printf '0 0\n10 95\n') -o "$dir/lat.off"
+stderr_has "beyond 90"
+expect 2 "sphere: mixed columns" -- "$ridt" sphere <(printf '0 0\n1 2 3\n') -o "$dir/mixed.off"
+stderr_has "2: 3 numbers"
+expect 2 "sphere: not a number" -- "$ridt" sphere <(printf '0 0\n1 x\n') -o "$dir/nan.off"
+expect 2 "sphere: nan" -- "$ridt" sphere <(printf '0 0 1\nnan 0 1\n') -o "$dir/nan.off"
+expect 2 "sphere: fewer than four" -- "$ridt" sphere <(printf '0 0\n90 0\n0 90\n') -o "$dir/few.off"
+absent "$dir/few.off"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

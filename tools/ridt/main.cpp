@@ -7,6 +7,7 @@
 //   ridt mesh INPUT.poly -o OUT.ele [--convex-hull] [--switches pcz]
 //   ridt tin INPUT.las|.csv|.gpkg -o OUT.gpkg|.shp|.ply [--class 2]
 //   ridt dem INPUT.las|.csv|.gpkg -o DEM.tif --resolution R [--method M] [--max-edge L]
+//   ridt sphere POINTS -o OUT.off [--voronoi CELLS.off] [--areas AREAS.txt] [--check]
 // Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage, 3 an
 // internal error.
 
@@ -92,9 +93,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version());
-  const std::vector<Command> commands = {add_triangulate(app), add_generate(app),    add_check(app),
-                                         add_voronoi(app),     add_interpolate(app), add_mesh(app),
-                                         add_tin(app),         add_dem(app),         add_formats(app)};
+  const std::vector<Command> commands = {add_triangulate(app), add_generate(app), add_check(app), add_voronoi(app),
+                                         add_interpolate(app), add_mesh(app),     add_tin(app),   add_dem(app),
+                                         add_sphere(app),      add_formats(app)};
   if (const std::optional<int> done = parse(app, argc, argv)) return *done;
   return run(commands);
 }
