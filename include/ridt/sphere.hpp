@@ -29,9 +29,10 @@ struct SphericalTriangulation {
 
 /// The convex hull of `points` in space, by an exact orientation test with a symbolic
 /// perturbation (four points on one circle of the sphere get one answer, whatever their order
-/// in the input), built by randomized incremental insertion. Throws InputError for a point
-/// that is not finite, for fewer than four distinct points, and where all are coplanar.
-SphericalTriangulation triangulate_sphere(std::span<const Point3> points);
+/// in the input), built by randomized incremental insertion; `threads` (0: the machine's) sort
+/// the points and write the result. Throws InputError for a point that is not finite, for fewer
+/// than four distinct points, and where all are coplanar.
+SphericalTriangulation triangulate_sphere(std::span<const Point3> points, unsigned threads = 0);
 
 /// The Voronoi diagram on the sphere of centre `centre` and radius `radius`: a vertex for each
 /// triangle (the point of the sphere its outward normal points to: the centre of its circle,

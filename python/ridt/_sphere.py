@@ -42,7 +42,8 @@ class SphericalVoronoi:
         As scipy's: points closer than ``threshold * radius`` to each other are duplicates, and
         farther than that from the sphere, off it (ValueError for both).
     threads : int
-        Threads for the cells and their areas (0: the machine's).
+        Threads (0: the machine's) for sorting the points, writing the triangulation, and the
+        cells and their areas; the insertion itself runs on one.
 
     Attributes
     ----------
@@ -98,13 +99,10 @@ class SphericalVoronoi:
             warnings.warn(f"{len(self.hidden)} of the points lie inside the hull of the others (below the "
                           f"sphere among close neighbours) and have no cell", RuntimeWarning, stacklevel=2)
 
-    def _too_close(self, pairs: np.ndarray, threshold: float, duplicates: np.ndarray) -> None:
+    def _too_close(self, shortest: float, threshold: float, duplicates: np.ndarray) -> None:
         """ValueError where two points are copies or closer than threshold * radius (the closest
-        pairs are edges of the triangulation)."""
-        if len(duplicates):
-            raise ValueError("Duplicate generators present.")
-        d = self.points[pairs[:, 0]] - self.points[pairs[:, 1]]
-        if len(d) and np.sqrt(np.einsum("ij,ij->i", d, d)).min() < threshold * self.radius:
+        pairs are edges of the triangulation: `shortest` is its shortest edge)."""
+        if len(duplicates) or shortest < threshold * self.radius:
             raise ValueError("Duplicate generators present.")
 
     def _hidden_apart(self, threshold: float) -> None:
@@ -119,10 +117,10 @@ class SphericalVoronoi:
 
     def _on_sphere(self, threshold: float) -> None:
         try:
-            tris, nbrs, duplicates, hidden = _core.triangulate_sphere(self.points)
+            tris, nbrs, duplicates, hidden = _core.triangulate_sphere(self.points, self._threads)
         except _core.InputError as e:  # coplanar beyond the rank test's tolerance
             raise ValueError(f"Rank of input points must be at least 3 ({e})") from None
-        self._too_close(np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]]), threshold, duplicates)
+        self._too_close(_core.shortest_edge(self.points, tris), threshold, duplicates)
         self.hidden = hidden.astype(np.intp)
         self._hidden_apart(threshold)
         vertices, self._start, self._flat, areas = _core.spherical_voronoi(
@@ -138,7 +136,7 @@ class SphericalVoronoi:
         h = len(corners)
         nxt = np.roll(corners, -1)
         side = self.points[nxt] - self.points[corners]
-        self._too_close(np.stack([corners, nxt], axis=1), threshold, np.zeros(0))
+        self._too_close(float(np.sqrt(np.einsum("ij,ij->i", side, side)).min()), threshold, np.zeros(0))
         # Copies and points inside the polygon are not corners.
         rest = np.setdiff1d(np.arange(len(self.points)), corners)
         if len(rest):  # each against the two corners either side of it round the centre

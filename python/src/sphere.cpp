@@ -2,6 +2,9 @@
 // its validator (ridt/sphere.hpp).
 #include "ridt/sphere.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "points.hpp"
 
 namespace py = pybind11;
@@ -19,71 +22,85 @@ std::span<const ridt::Point3> as_points3(const Points& a, const char* name) {
 using Indices = py::array_t<std::uint32_t, py::array::c_style>;
 using Links = py::array_t<std::int32_t, py::array::c_style>;
 
+py::tuple triangulate(const Points& points, unsigned threads) {
+  const auto pts = as_points3(points, "points");
+  ridt::SphericalTriangulation t;
+  {
+    py::gil_scoped_release nogil;
+    t = ridt::triangulate_sphere(pts, threads);
+  }
+  const auto size = static_cast<py::ssize_t>(t.size());
+  std::vector<std::uint32_t> copies;
+  for (const ridt::Duplicate& d : t.duplicates) copies.insert(copies.end(), {d.dropped, d.kept});
+  const auto dups = static_cast<py::ssize_t>(t.duplicates.size()), hidden = static_cast<py::ssize_t>(t.hidden.size());
+  return py::make_tuple(adopt(std::move(t.triangles), {size, 3}), adopt(std::move(t.neighbors), {size, 3}),
+                        adopt(std::move(copies), {dups, 2}), adopt(std::move(t.hidden), {hidden}));
+}
+
+py::tuple voronoi(const Points& points, const Indices& triangles, const Links& neighbors, const Points& center,
+                  double radius, bool areas, unsigned threads) {
+  const auto pts = as_points3(points, "points");
+  const auto c = as_points3(center, "center");
+  if (c.size() != 1) throw py::value_error("center must have shape (1, 3)");
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3 || neighbors.ndim() != 2 ||
+      neighbors.shape(0) != triangles.shape(0) || neighbors.shape(1) != 3)
+    throw py::value_error("triangles and neighbors must have shape (ntriangles, 3)");
+  ridt::SphericalTriangulation t;
+  t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
+  t.neighbors.assign(neighbors.data(), neighbors.data() + neighbors.size());
+  for (const ridt::VertexId v : t.triangles)
+    if (v >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
+  for (const std::int32_t g : t.neighbors)
+    if (g < 0 || static_cast<std::size_t>(g) >= t.size()) throw py::value_error("a neighbour is not a triangle");
+  ridt::SphericalVoronoi v;
+  {
+    py::gil_scoped_release nogil;
+    v = ridt::spherical_voronoi(t, pts, c[0], radius, areas, threads);
+  }
+  const auto nv = static_cast<py::ssize_t>(v.vertices.size()), n = static_cast<py::ssize_t>(pts.size()),
+             nr = static_cast<py::ssize_t>(v.regions.size()), na = static_cast<py::ssize_t>(v.areas.size());
+  return py::make_tuple(adopt<ridt::Point3, double>(std::move(v.vertices), {nv, 3}),
+                        adopt(std::move(v.region_start), {n + 1}), adopt(std::move(v.regions), {nr}),
+                        adopt(std::move(v.areas), {na}));
+}
+
+double shortest_edge(const Points& points, const Indices& triangles) {
+  const auto pts = as_points3(points, "points");
+  const std::uint32_t* t = triangles.data();
+  const auto size = static_cast<std::size_t>(triangles.size());
+  for (std::size_t k = 0; k < size; ++k)
+    if (t[k] >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
+  double shortest = HUGE_VAL;
+  py::gil_scoped_release nogil;
+  for (std::size_t k = 0; k + 2 < size; k += 3)
+    for (int i = 0; i < 3; ++i) {
+      const ridt::Point3 &a = pts[t[k + i]], &b = pts[t[k + (i + 1) % 3]];
+      shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y, a.z - b.z));
+    }
+  return shortest;
+}
+
+py::tuple check(const Points& points, const Indices& triangles) {
+  const auto pts = as_points3(points, "points");
+  const std::span<const ridt::VertexId> tris(triangles.data(), static_cast<std::size_t>(triangles.size()));
+  ridt::CheckResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = ridt::check_sphere(pts, tris);
+  }
+  return py::make_tuple(r.valid, r.message, r.problems);
+}
+
 }  // namespace
 
 void bind_sphere(py::module_& m) {
-  m.def(
-      "triangulate_sphere",
-      [](const Points& points) {
-        const auto pts = as_points3(points, "points");
-        ridt::SphericalTriangulation t;
-        {
-          py::gil_scoped_release nogil;
-          t = ridt::triangulate_sphere(pts);
-        }
-        const auto size = static_cast<py::ssize_t>(t.size());
-        std::vector<std::uint32_t> copies;
-        for (const ridt::Duplicate& d : t.duplicates) copies.insert(copies.end(), {d.dropped, d.kept});
-        const auto dups = static_cast<py::ssize_t>(t.duplicates.size()),
-                   hidden = static_cast<py::ssize_t>(t.hidden.size());
-        return py::make_tuple(adopt(std::move(t.triangles), {size, 3}), adopt(std::move(t.neighbors), {size, 3}),
-                              adopt(std::move(copies), {dups, 2}), adopt(std::move(t.hidden), {hidden}));
-      },
-      py::arg("points"),
-      "(triangles, neighbors, duplicates, hidden): the exact convex hull of points in space, each triangle "
-      "counter-clockwise seen from outside; duplicates as (dropped, kept) rows; hidden: the points inside it");
-  m.def(
-      "spherical_voronoi",
-      [](const Points& points, const Indices& triangles, const Links& neighbors, const Points& center, double radius,
-         bool areas, unsigned threads) {
-        const auto pts = as_points3(points, "points");
-        const auto c = as_points3(center, "center");
-        if (c.size() != 1) throw py::value_error("center must have shape (1, 3)");
-        if (triangles.ndim() != 2 || triangles.shape(1) != 3 || neighbors.ndim() != 2 ||
-            neighbors.shape(0) != triangles.shape(0) || neighbors.shape(1) != 3)
-          throw py::value_error("triangles and neighbors must have shape (ntriangles, 3)");
-        ridt::SphericalTriangulation t;
-        t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
-        t.neighbors.assign(neighbors.data(), neighbors.data() + neighbors.size());
-        for (const ridt::VertexId v : t.triangles)
-          if (v >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
-        for (const std::int32_t g : t.neighbors)
-          if (g < 0 || static_cast<std::size_t>(g) >= t.size()) throw py::value_error("a neighbour is not a triangle");
-        ridt::SphericalVoronoi v;
-        {
-          py::gil_scoped_release nogil;
-          v = ridt::spherical_voronoi(t, pts, c[0], radius, areas, threads);
-        }
-        const auto nv = static_cast<py::ssize_t>(v.vertices.size()), n = static_cast<py::ssize_t>(pts.size()),
-                   nr = static_cast<py::ssize_t>(v.regions.size()), na = static_cast<py::ssize_t>(v.areas.size());
-        return py::make_tuple(adopt<ridt::Point3, double>(std::move(v.vertices), {nv, 3}),
-                              adopt(std::move(v.region_start), {n + 1}), adopt(std::move(v.regions), {nr}),
-                              adopt(std::move(v.areas), {na}));
-      },
-      py::arg("points"), py::arg("triangles"), py::arg("neighbors"), py::arg("center"), py::arg("radius"),
-      py::arg("areas") = true, py::arg("threads") = 0,
-      "(vertices, region_start, regions, areas): the Voronoi diagram on the sphere of a triangulate_sphere result");
-  m.def(
-      "check_sphere",
-      [](const Points& points, const Indices& triangles) {
-        const auto pts = as_points3(points, "points");
-        const std::span<const ridt::VertexId> tris(triangles.data(), static_cast<std::size_t>(triangles.size()));
-        ridt::CheckResult r;
-        {
-          py::gil_scoped_release nogil;
-          r = ridt::check_sphere(pts, tris);
-        }
-        return py::make_tuple(r.valid, r.message, r.problems);
-      },
-      py::arg("points"), py::arg("triangles"));
+  m.def("triangulate_sphere", &triangulate, py::arg("points"), py::arg("threads") = 0,
+        "(triangles, neighbors, duplicates, hidden): the exact convex hull of points in space, each triangle "
+        "counter-clockwise seen from outside; duplicates as (dropped, kept) rows; hidden: the points inside it");
+  m.def("spherical_voronoi", &voronoi, py::arg("points"), py::arg("triangles"), py::arg("neighbors"), py::arg("center"),
+        py::arg("radius"), py::arg("areas") = true, py::arg("threads") = 0,
+        "(vertices, region_start, regions, areas): the Voronoi diagram on the sphere of a triangulate_sphere result");
+  m.def("shortest_edge", &shortest_edge, py::arg("points"), py::arg("triangles"),
+        "the length of the triangles' shortest edge");
+  m.def("check_sphere", &check, py::arg("points"), py::arg("triangles"));
 }

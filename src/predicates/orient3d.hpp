@@ -21,12 +21,21 @@ int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Poin
 
 /// The sign of det[a - d; b - d; c - d] where double precision settles it, else 0 (and for a
 /// NaN or an overflow).
-inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+[[gnu::always_inline]] inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
   const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
   const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
   const double bc = bdx * cdy - bdy * cdx, ca = cdx * ady - cdy * adx, ab = adx * bdy - ady * bdx;
   const double det = adz * bc + bdz * ca + cdz * ab;
+  // First a cheap bound: with sa, sb, sc the rows' sums of absolute values, the permanent below
+  // is at most 3 sa sb sc and the largest difference at most sa + sb + sc; 1.01 covers the
+  // roundings of these few operations.
+  const double sa = std::fabs(adx) + std::fabs(ady) + std::fabs(adz),
+               sb = std::fabs(bdx) + std::fabs(bdy) + std::fabs(bdz),
+               sc = std::fabs(cdx) + std::fabs(cdy) + std::fabs(cdz);
+  const double rough = 1.01 * (3 * kOrient3dBound * (sa * sb * sc) + 0x1p-1070 * (sa + sb + sc + 1));
+  if (det > rough) return 1;
+  if (det < -rough) return -1;
   const double permanent = (std::fabs(bdx * cdy) + std::fabs(bdy * cdx)) * std::fabs(adz) +
       (std::fabs(cdx * ady) + std::fabs(cdy * adx)) * std::fabs(bdz) +
       (std::fabs(adx * bdy) + std::fabs(ady * bdx)) * std::fabs(cdz);
@@ -45,7 +54,7 @@ inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c, co
 
 /// +1 when d lies below the plane of (a, b, c), seen counter-clockwise from above, -1 above,
 /// 0 on it. Exact for finite input.
-inline int orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+[[gnu::always_inline]] inline int orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   const int s = orient3d_filter(a, b, c, d);
   return s != 0 ? s : orient3d_exact(a, b, c, d);
 }
@@ -56,8 +65,8 @@ inline int orient3d(const Point3& a, const Point3& b, const Point3& c, const Poi
 int orient3d_tie(const Point3* const p[4], const std::uint32_t rank[4]);
 
 /// orient3d with the perturbation: never 0 for four distinct points ranked apart.
-inline int orient3d_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d, std::uint32_t ra,
-                        std::uint32_t rb, std::uint32_t rc, std::uint32_t rd) {
+[[gnu::always_inline]] inline int orient3d_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                                               std::uint32_t ra, std::uint32_t rb, std::uint32_t rc, std::uint32_t rd) {
   if (const int s = orient3d(a, b, c, d); s != 0) return s;
   const Point3* p[4] = {&a, &b, &c, &d};
   const std::uint32_t rank[4] = {ra, rb, rc, rd};

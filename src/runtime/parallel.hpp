@@ -73,4 +73,19 @@ void parallel_for(std::size_t count, unsigned threads, std::size_t grain, Body&&
     if (e) std::rethrow_exception(e);
 }
 
+/// Sorts [first, last) by `less`: in up to `threads` parts (0: the hardware's threads) sorted
+/// side by side, then merged.
+template <class It, class Less>
+void parallel_sort(It first, It last, unsigned threads, Less less) {
+  const auto n = static_cast<std::size_t>(last - first);
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n / 65536, 1, thread_count(threads)));
+  auto at = [&](std::size_t p) { return first + static_cast<std::ptrdiff_t>(n * p / parts); };
+  parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
+    for (std::size_t p = from; p < to; ++p) std::sort(at(p), at(p + 1), less);
+  });
+  for (unsigned width = 1; width < parts; width *= 2)
+    for (unsigned p = 0; p + width < parts; p += 2 * width)
+      std::inplace_merge(at(p), at(p + width), at(std::min(p + 2 * width, parts)), less);
+}
+
 }  // namespace ridt::detail

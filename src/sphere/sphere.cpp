@@ -15,6 +15,7 @@
 // a rounding below the sphere among close neighbours, now covered) makes that vertex hidden.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <random>
 #include <string>
@@ -23,6 +24,9 @@
 #include "predicates/orient3d.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/sphere.hpp"
+#include "runtime/memory.hpp"
+#include "runtime/parallel.hpp"
+#include "tds/delaunay.hpp"
 #include "tds/tds.hpp"
 
 namespace ridt {
@@ -41,25 +45,31 @@ struct Distinct {
   std::vector<Duplicate> duplicates;
 };
 
-Distinct distinct_points(std::span<const Point3> points) {
+Distinct distinct_points(std::span<const Point3> points, unsigned threads) {
   if (points.size() >= kMaxSlotPoints) throw InputError("triangulate_sphere: too many points");
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
       throw InputError("triangulate_sphere: point " + std::to_string(i) + " is not finite");
-  std::vector<VertexId> order(points.size());
-  std::iota(order.begin(), order.end(), VertexId{0});
-  std::sort(order.begin(), order.end(), [&](VertexId a, VertexId b) {
-    return lex_less3(points[a], points[b]) || (points[a] == points[b] && a < b);
+  // The points sorted with their indices beside them (each comparison reads what it sorts).
+  struct Indexed {
+    Point3 p;
+    VertexId i;
+  };
+  std::vector<Indexed> sorted(points.size());
+  parallel_for(points.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to; ++i) sorted[i] = {points[i], static_cast<VertexId>(i)};
   });
+  parallel_sort(sorted.begin(), sorted.end(), threads,
+                [](const Indexed& a, const Indexed& b) { return lex_less3(a.p, b.p) || (a.p == b.p && a.i < b.i); });
   Distinct d;
   d.points.reserve(points.size()), d.input.reserve(points.size());
-  for (const VertexId i : order) {
-    if (!d.input.empty() && points[d.input.back()] == points[i]) {
-      d.duplicates.push_back({i, d.input.back()});
+  for (const Indexed& e : sorted) {
+    if (!d.input.empty() && d.points.back() == e.p) {
+      d.duplicates.push_back({e.i, d.input.back()});
       continue;
     }
-    d.input.push_back(i);
-    d.points.push_back(points[i]);
+    d.input.push_back(e.i);
+    d.points.push_back(e.p);
   }
   std::sort(d.duplicates.begin(), d.duplicates.end(),
             [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
@@ -82,7 +92,7 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
 
 class Builder {
  public:
-  explicit Builder(const std::vector<Point3>& p) : p_(p) {}
+  Builder(const std::vector<Point3>& p, unsigned threads) : p_(p), threads_(threads) {}
 
   // Builds the hull; hidden_[v] marks the points inside it.
   // Vertex ids are places in the insertion order (the tetrahedron's four first), so that points
@@ -151,9 +161,11 @@ class Builder {
   void start() {
     const VertexId a = 0, b = 1, c = 2, d = 3;
     const VertexId faces[4][3] = {{a, b, c}, {a, d, b}, {a, c, d}, {b, d, c}};
-    const std::size_t room = 3 * (2 * p_.size() + 8);
-    std::vector<VertexId> v(room, kNoVertex);
-    std::vector<Link> link(room, kNoLink);
+    // Room for the 2n - 4 triangles of n points and the two a fan takes before its cavity's
+    // slots are given back (SlotArrays makes its pages present on the threads).
+    SlotArrays arrays(p_.size(), threads_);
+    std::vector<VertexId>& v = arrays.v;
+    std::vector<Link>& link = arrays.link;
     for (int f = 0; f < 4; ++f)
       for (int i = 0; i < 3; ++i) v[3 * f + i] = faces[f][i];
     for (int f = 0; f < 4; ++f)
@@ -164,7 +176,7 @@ class Builder {
             if (faces[g][next3(j)] == y && faces[g][prev3(j)] == x) link[3 * f + i] = static_cast<Link>(3 * g + j);
       }
     tds_ = Tds(std::move(v), std::move(link), 4);
-    stamp_.assign(2 * p_.size() + 8, 0);
+    stamp_.assign(2 * p_.size() + 1, 0);
     const Point3 &pa = q_[a], &pb = q_[b], &pc = q_[c], &pd = q_[d];
     inner_ = {(pa.x + pb.x) / 4 + (pc.x + pd.x) / 4, (pa.y + pb.y) / 4 + (pc.y + pd.y) / 4,
               (pa.z + pb.z) / 4 + (pc.z + pd.z) / 4};
@@ -202,13 +214,16 @@ class Builder {
       return face << 32 | hilbert_key(cell(d[(axis + 1) % 3]), cell(d[(axis + 2) % 3]));
     };
     curve_.resize(p_.size());
-    for (VertexId v = 0; v < p_.size(); ++v) curve_[v] = key(v);
+    parallel_for(p_.size(), threads_, 65536, [&](std::size_t from, std::size_t to) {
+      for (std::size_t v = from; v < to; ++v) curve_[v] = key(static_cast<VertexId>(v));
+    });
     std::vector<std::pair<std::uint64_t, VertexId>> keyed(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {curve_[order[i]], order[i]};
     std::size_t end = keyed.size();
     while (end > 0) {
       const std::size_t begin = end > 64 ? end / 2 : 0;
-      std::sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin), keyed.begin() + static_cast<std::ptrdiff_t>(end));
+      parallel_sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin),
+                    keyed.begin() + static_cast<std::ptrdiff_t>(end), threads_, std::less<>());
       end = begin;
     }
     for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
@@ -338,6 +353,7 @@ class Builder {
   }
 
   const std::vector<Point3>& p_;  // by rank
+  unsigned threads_;
   std::vector<Point3> q_;  // by vertex id
   std::vector<VertexId> rank_;
   Tds tds_;
@@ -356,10 +372,11 @@ class Builder {
 }  // namespace
 }  // namespace detail
 
-SphericalTriangulation triangulate_sphere(std::span<const Point3> points) {
+SphericalTriangulation triangulate_sphere(std::span<const Point3> points, unsigned threads) {
   using namespace detail;
-  Distinct d = distinct_points(points);
-  Builder builder(d.points);
+  threads = thread_count(threads);
+  Distinct d = distinct_points(points, threads);
+  Builder builder(d.points, threads);
   builder.run();
   const Tds& tds = builder.tds();
   // The triangles in the curve's order of their least corner: a point's triangles then lie close
@@ -372,17 +389,19 @@ SphericalTriangulation triangulate_sphere(std::span<const Point3> points) {
     if (tds.vertex(t, 0) != kNoVertex)
       live.push_back(
           {std::min({key[rank[tds.vertex(t, 0)]], key[rank[tds.vertex(t, 1)]], key[rank[tds.vertex(t, 2)]]}), t});
-  std::sort(live.begin(), live.end());
+  parallel_sort(live.begin(), live.end(), threads, std::less<>());
   SphericalTriangulation out;
   std::vector<std::int32_t> id(tds.slots(), -1);
   for (std::size_t k = 0; k < live.size(); ++k) id[live[k].second] = static_cast<std::int32_t>(k);
-  out.triangles.resize(3 * live.size());
-  out.neighbors.resize(3 * live.size());
-  for (std::size_t k = 0; k < live.size(); ++k)
-    for (int i = 0; i < 3; ++i) {
-      out.triangles[3 * k + i] = d.input[rank[tds.vertex(live[k].second, i)]];
-      out.neighbors[3 * k + i] = id[triangle_of(tds.link(live[k].second, i))];
-    }
+  resize_present(out.triangles, 3 * live.size(), threads);
+  resize_present(out.neighbors, 3 * live.size(), threads);
+  parallel_for(live.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k)
+      for (int i = 0; i < 3; ++i) {
+        out.triangles[3 * k + i] = d.input[rank[tds.vertex(live[k].second, i)]];
+        out.neighbors[3 * k + i] = id[triangle_of(tds.link(live[k].second, i))];
+      }
+  });
   for (VertexId v = 0; v < d.points.size(); ++v)
     if (builder.hidden()[v]) out.hidden.push_back(d.input[rank[v]]);
   std::sort(out.hidden.begin(), out.hidden.end());

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ridt/sphere.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "tds/ids.hpp"
 
@@ -29,18 +30,12 @@ double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
   return 2 * std::atan2(triple, below);
 }
 
-}  // namespace
-
-SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<const Point3> points,
-                                   const Point3& centre, double radius, bool areas, unsigned threads) {
-  using detail::next3;
-  const std::size_t m = t.size(), n = points.size();
-  SphericalVoronoi out;
-  out.vertices.resize(m);
-  // A triangle's circle on the sphere is centred where its outward normal points: the cross
-  // product of two sides, from its corner opposite the longest side (the two shortest sides,
-  // which lose least to the differences).
-  detail::parallel_for(m, threads, 4096, [&](std::size_t from, std::size_t to) {
+// A triangle's circle on the sphere is centred where its outward normal points: the cross
+// product of two sides, from its corner opposite the longest side (the two shortest sides,
+// which lose least to the differences). `normals` (where not empty) gets the unit normals.
+void circle_centres(const SphericalTriangulation& t, std::span<const Point3> points, const Point3& centre,
+                    double radius, std::vector<Point3>& vertices, std::vector<Point3>& normals, unsigned threads) {
+  detail::parallel_for(t.size(), threads, 4096, [&](std::size_t from, std::size_t to) {
     for (std::size_t f = from; f < to; ++f) {
       const Point3 &a = points[t.triangles[3 * f]], &b = points[t.triangles[3 * f + 1]],
                    &c = points[t.triangles[3 * f + 2]];
@@ -49,9 +44,24 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
       const Point3 normal = unit(bc >= ab && bc >= ca ? cross(minus(b, a), minus(c, a))
                                      : ca >= ab       ? cross(minus(c, b), minus(a, b))
                                                       : cross(minus(a, c), minus(b, c)));
-      out.vertices[f] = {centre.x + radius * normal.x, centre.y + radius * normal.y, centre.z + radius * normal.z};
+      vertices[f] = {centre.x + radius * normal.x, centre.y + radius * normal.y, centre.z + radius * normal.z};
+      if (!normals.empty()) normals[f] = normal;
     }
   });
+}
+
+}  // namespace
+
+SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<const Point3> points,
+                                   const Point3& centre, double radius, bool areas, unsigned threads) {
+  using detail::next3;
+  threads = detail::thread_count(threads);
+  const std::size_t m = t.size(), n = points.size();
+  SphericalVoronoi out;
+  detail::resize_present(out.vertices, m, threads);
+  std::vector<Point3> normals;  // the vertices on the unit sphere
+  if (areas) detail::resize_present(normals, m, threads);
+  circle_centres(t, points, centre, radius, out.vertices, normals, threads);
   // Each point's cell: one triangle of it, then round it. In triangle (g, b, c) the next
   // triangle counter-clockwise round g is the one across g-c, from b.
   std::vector<std::uint32_t> one(n, 0xffffffffu);
@@ -63,7 +73,7 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
       ++out.region_start[g + 1];
     }
   for (std::size_t i = 0; i < n; ++i) out.region_start[i + 1] += out.region_start[i];
-  out.regions.resize(out.region_start[n]);
+  detail::resize_present(out.regions, out.region_start[n], threads);
   if (areas) out.areas.assign(n, 0);
   // The points in the triangles' order (where they lie close together), not the input's.
   detail::parallel_for(3 * m, threads, 4096, [&](std::size_t from, std::size_t to) {
@@ -84,9 +94,7 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
       const Point3 p = unit(minus(points[g], centre));
       double sum = 0;
       for (std::size_t k = 0; k < size; ++k) {
-        const Point3 u = unit(minus(out.vertices[cell[k]], centre));
-        const Point3 w = unit(minus(out.vertices[cell[k + 1 < size ? k + 1 : 0]], centre));
-        sum += solid_angle(p, u, w);
+        sum += solid_angle(p, normals[cell[k]], normals[cell[k + 1 < size ? k + 1 : 0]]);
       }
       out.areas[g] = sum * radius * radius;
     }

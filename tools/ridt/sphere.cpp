@@ -71,16 +71,102 @@ void put_point(io::Writer& out, const Point3& p) {
   out.put('\n');
 }
 
+// The triangles: OUT.off with the points, else three indices a line.
+void write_triangles(const std::string& path, std::span<const Point3> pts, const SphericalTriangulation& t) {
+  io::Writer out(path);
+  const bool off = ends_with(path, ".off");
+  if (off) {
+    out.put("OFF\n" + std::to_string(pts.size()) + " " + std::to_string(t.size()) + " 0\n");
+    for (const Point3& p : pts) put_point(out, p);
+  }
+  for (std::size_t f = 0; f < t.size(); ++f) {
+    if (off) out.put("3 ");
+    for (int i = 0; i < 3; ++i) {
+      out.put_int(t.triangles[3 * f + i]);
+      out.put(i < 2 ? ' ' : '\n');
+    }
+  }
+  out.commit();
+}
+
+// The cells as an .off: the Voronoi vertices, a polygon a point that has a cell.
+void write_cells(const std::string& path, const SphericalVoronoi& v, std::size_t n) {
+  io::Writer out(path);
+  std::size_t cells = 0;
+  for (std::size_t g = 0; g < n; ++g) cells += v.region_start[g + 1] > v.region_start[g];
+  out.put("OFF\n" + std::to_string(v.vertices.size()) + " " + std::to_string(cells) + " 0\n");
+  for (const Point3& p : v.vertices) put_point(out, p);
+  for (std::size_t g = 0; g < n; ++g) {
+    const std::uint32_t from = v.region_start[g], to = v.region_start[g + 1];
+    if (from == to) continue;
+    out.put_int(to - from);
+    for (std::uint32_t k = from; k < to; ++k) {
+      out.put(' ');
+      out.put_int(v.regions[k]);
+    }
+    out.put('\n');
+  }
+  out.commit();
+}
+
+void write_areas(const std::string& path, const SphericalVoronoi& v) {
+  io::Writer out(path);
+  for (const double area : v.areas) {
+    out.put_double(area);
+    out.put('\n');
+  }
+  out.commit();
+}
+
+struct SphereArgs {
+  std::string input, output, voronoi, areas, center;
+  double radius = 0;
+  bool check = false;
+  unsigned threads = 0;
+};
+
+// The run: read, triangulate, say what was dropped, check, write.
+int run_sphere(const SphereArgs& a) {
+  refuse_overwriting({a.input}, {a.output, a.voronoi, a.areas});
+  bool degrees = false;
+  const std::vector<Point3> pts = read_sphere_points(a.input, degrees);
+  Point3 c{};
+  if (!a.center.empty()) {
+    const std::vector<double> v = numbers(a.center, "--center");
+    if (v.size() != 3) throw InputError("--center takes three numbers x,y,z");
+    c = {v[0], v[1], v[2]};
+  }
+  const unsigned threads = thread_count(a.threads);
+  const SphericalTriangulation t = triangulate_sphere(pts, threads);
+  if (!t.duplicates.empty())
+    std::fprintf(stderr, "ridt: %zu duplicate point%s dropped (the first of equal points stands for them)\n",
+                 t.duplicates.size(), t.duplicates.size() == 1 ? "" : "s");
+  if (!t.hidden.empty())
+    std::fprintf(stderr, "ridt: %zu point%s inside the hull of the others (no cell), the first %u\n", t.hidden.size(),
+                 t.hidden.size() == 1 ? " lies" : "s lie", t.hidden[0]);
+  int status = 0;
+  if (a.check) {
+    const CheckResult r = check_sphere(pts, t.triangles);
+    std::fprintf(stderr, "ridt: %s\n", r.message.c_str());
+    if (!r.valid) status = kExitInvalid;
+  }
+  write_triangles(a.output, pts, t);
+  if (a.voronoi.empty() && a.areas.empty()) return status;
+  double radius = a.radius != 0 ? a.radius : degrees ? 1 : 0;
+  if (radius == 0) {
+    for (const Point3& p : pts) radius += std::hypot(p.x - c.x, p.y - c.y, p.z - c.z);
+    radius /= static_cast<double>(pts.size());
+  }
+  const SphericalVoronoi v = spherical_voronoi(t, pts, c, radius, !a.areas.empty(), threads);
+  if (!a.voronoi.empty()) write_cells(a.voronoi, v, pts.size());
+  if (!a.areas.empty()) write_areas(a.areas, v);
+  return status;
+}
+
 }  // namespace
 
 Command add_sphere(CLI::App& app) {
-  struct Args {
-    std::string input, output, voronoi, areas, center;
-    double radius = 0;
-    bool check = false;
-    unsigned threads = 0;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<SphereArgs>();
   CLI::App* cmd = app.add_subcommand(
       "sphere",
       "the Delaunay triangulation on the sphere (the points' exact convex hull), its Voronoi cells and areas");
@@ -104,83 +190,8 @@ Command add_sphere(CLI::App& app) {
                   "else the points' mean distance from the centre)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--check", a->check, "check the triangulation with the exact validator (exit 1 if invalid)");
-  cmd->add_option("--threads", a->threads, "threads for the cells (0: every hardware thread)");
-  return {cmd, [a] {
-            refuse_overwriting({a->input}, {a->output, a->voronoi, a->areas});
-            bool degrees = false;
-            const std::vector<Point3> pts = read_sphere_points(a->input, degrees);
-            Point3 c{};
-            if (!a->center.empty()) {
-              const std::vector<double> v = numbers(a->center, "--center");
-              if (v.size() != 3) throw InputError("--center takes three numbers x,y,z");
-              c = {v[0], v[1], v[2]};
-            }
-            const SphericalTriangulation t = triangulate_sphere(pts);
-            if (!t.duplicates.empty())
-              std::fprintf(stderr, "ridt: %zu duplicate point%s dropped (the first of equal points stands for them)\n",
-                           t.duplicates.size(), t.duplicates.size() == 1 ? "" : "s");
-            if (!t.hidden.empty())
-              std::fprintf(stderr, "ridt: %zu point%s inside the hull of the others (no cell), the first %u\n",
-                           t.hidden.size(), t.hidden.size() == 1 ? " lies" : "s lie", t.hidden[0]);
-            int status = 0;
-            if (a->check) {
-              const CheckResult r = check_sphere(pts, t.triangles);
-              std::fprintf(stderr, "ridt: %s\n", r.message.c_str());
-              if (!r.valid) status = kExitInvalid;
-            }
-            {
-              io::Writer out(a->output);
-              if (ends_with(a->output, ".off")) {
-                out.put("OFF\n" + std::to_string(pts.size()) + " " + std::to_string(t.size()) + " 0\n");
-                for (const Point3& p : pts) put_point(out, p);
-              }
-              for (std::size_t f = 0; f < t.size(); ++f) {
-                if (ends_with(a->output, ".off")) out.put("3 ");
-                for (int i = 0; i < 3; ++i) {
-                  out.put_int(t.triangles[3 * f + i]);
-                  out.put(i < 2 ? ' ' : '\n');
-                }
-              }
-              out.commit();
-            }
-            if (a->voronoi.empty() && a->areas.empty()) return status;
-            double radius = a->radius;
-            if (radius == 0 && degrees) radius = 1;
-            if (radius == 0) {
-              double sum = 0;
-              for (const Point3& p : pts) sum += std::hypot(p.x - c.x, p.y - c.y, p.z - c.z);
-              radius = sum / static_cast<double>(pts.size());
-            }
-            const SphericalVoronoi v =
-                spherical_voronoi(t, pts, c, radius, !a->areas.empty(), thread_count(a->threads));
-            if (!a->voronoi.empty()) {
-              io::Writer out(a->voronoi);
-              std::size_t cells = 0;
-              for (std::size_t g = 0; g < pts.size(); ++g) cells += v.region_start[g + 1] > v.region_start[g];
-              out.put("OFF\n" + std::to_string(v.vertices.size()) + " " + std::to_string(cells) + " 0\n");
-              for (const Point3& p : v.vertices) put_point(out, p);
-              for (std::size_t g = 0; g < pts.size(); ++g) {
-                const std::uint32_t from = v.region_start[g], to = v.region_start[g + 1];
-                if (from == to) continue;
-                out.put_int(to - from);
-                for (std::uint32_t k = from; k < to; ++k) {
-                  out.put(' ');
-                  out.put_int(v.regions[k]);
-                }
-                out.put('\n');
-              }
-              out.commit();
-            }
-            if (!a->areas.empty()) {
-              io::Writer out(a->areas);
-              for (const double area : v.areas) {
-                out.put_double(area);
-                out.put('\n');
-              }
-              out.commit();
-            }
-            return status;
-          }};
+  cmd->add_option("--threads", a->threads, "threads for sorting, writing and the cells (0: every hardware thread)");
+  return {cmd, [a] { return run_sphere(*a); }};
 }
 
 }  // namespace ridt::tool
