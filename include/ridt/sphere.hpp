@@ -31,19 +31,24 @@ struct SphericalTriangulation {
 /// perturbation (four points on one circle of the sphere get one answer, whatever their order
 /// in the input), built by randomized incremental insertion; `threads` (0: the machine's) sort
 /// the points and write the result. Throws InputError for a point that is not finite, for fewer
-/// than four distinct points, and where all are coplanar.
+/// than four distinct points, where all are coplanar, and where they are so nearly coplanar
+/// that no double lies strictly inside the fattest tetrahedron of them ("too nearly coplanar":
+/// a few units in the last place from flat).
 SphericalTriangulation triangulate_sphere(std::span<const Point3> points, unsigned threads = 0);
 
 /// The Voronoi diagram on the sphere of centre `centre` and radius `radius`: a vertex for each
 /// triangle (the point of the sphere its outward normal points to: the centre of its circle,
-/// equally far from its three corners), and for each input point its cell, as the triangles
+/// equally far from its three corners; the normal within a relative 2^-50 of the exact one), and for each input point its cell, as the triangles
 /// round it, counter-clockwise seen from outside (empty for a copy or a hidden point).
 struct SphericalVoronoi {
   std::vector<Point3> vertices;
   std::vector<std::uint32_t> region_start;  ///< #points + 1: cell i is regions[start[i], start[i + 1])
   std::vector<std::uint32_t> regions;
   /// With `areas`: each cell's area, from the solid angles of the triangles it fans into (Van
-  /// Oosterom and Strackee's formula, with the triple product taken of differences).
+  /// Oosterom and Strackee's formula, with the triple product taken of differences). Where all
+  /// the points lie on one great circle (within rounding) the cells are lunes whose corners are
+  /// antipodal, and their areas are not computed reliably (Python's SphericalVoronoi refuses
+  /// such points, as scipy's does).
   std::vector<double> areas;
 };
 

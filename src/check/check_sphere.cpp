@@ -1,10 +1,11 @@
 // check_sphere (ridt/sphere.hpp): a triangulation on the sphere checked to be the convex hull
 // of its points, by other means than triangulate_sphere finds it. A closed surface (each
 // directed edge once, its reverse once, one piece, Euler's V - E + F = 2) whose triangles all
-// face away from an inner point and wrap round it once (their solid angles from it sum to
-// 4 pi) projects onto the directions from that point one to one: it is star-shaped. Star-shaped
+// face away from an inner point and wrap round it once (one of their cones from it holds a
+// probe) projects onto the directions from that point one to one: it is star-shaped. Star-shaped
 // with every edge convex, it is convex, so it is the hull of its corners; every other point
-// then lies below the triangle whose cone holds it.
+// then lies below the triangle whose cone holds it. The inner point is strictly inside four
+// corners (sphere/tetrahedron.hpp, which the triangulation starts from too), exactly.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -12,6 +13,7 @@
 #include "check/parts.hpp"
 #include "predicates/orient3d.hpp"
 #include "ridt/sphere.hpp"
+#include "sphere/tetrahedron.hpp"
 #include "tds/ids.hpp"
 
 namespace ridt {
@@ -144,72 +146,80 @@ class SphereCheck {
     return detail::orient3d_sos(pts_[a], pts_[b], pts_[c], pts_[q], rank_[a], rank_[b], rank_[c], rank_[q]) > 0;
   }
 
-  // An inner point: the corners' centroid; every triangle faces away from it, and their solid
+  // An inner point: the centroid of four corners far from flat, strictly inside them, so inside
+  // their hull (sphere/tetrahedron.hpp); every triangle faces away from it, and their solid
   // angles from it make one turn of the sphere.
   bool wrapped() {
-    long double sx = 0, sy = 0, sz = 0;
+    // The corners in lexicographic order; where the fattest tetrahedron from the least is too
+    // thin for a double inside it, from each of the next few.
+    std::vector<VertexId> corners;
     for (std::size_t v = 0; v < n_; ++v)
-      if (corner_[v]) sx += pts_[v].x, sy += pts_[v].y, sz += pts_[v].z;
-    o_ = {static_cast<double>(sx / corners_), static_cast<double>(sy / corners_), static_cast<double>(sz / corners_)};
-    double total = 0;
-    auto dot = [](const Point3& x, const Point3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; };
+      if (corner_[v]) corners.push_back(static_cast<VertexId>(v));
+    std::sort(corners.begin(), corners.end(), [&](VertexId a, VertexId b) { return rank_[a] < rank_[b]; });
+    detail::Tetrahedron t = detail::fat_tetrahedron(pts_, corners);
+    for (std::size_t k = 1; k < std::min<std::size_t>(corners.size(), 8) && t.flat == nullptr && !t.inside; ++k) {
+      std::swap(corners[0], corners[k]);
+      t = detail::fat_tetrahedron(pts_, corners);
+    }
+    if (t.flat != nullptr || !t.inside) {
+      report_.problem("the corners are ", t.flat != nullptr ? t.flat : "too nearly coplanar", ": they have no inside");
+      return false;
+    }
+    o_ = t.inner;
+    const std::uint32_t* r = rank_.data();
     for (std::size_t f = 0; f < m_; ++f) {
-      const Point3 &a = pts_[tris_[3 * f]], &b = pts_[tris_[3 * f + 1]], &c = pts_[tris_[3 * f + 2]];
-      if (orient3d(a, b, c, o_) <= 0) {
-        report_.problem("triangle ", f, " does not face away from the corners' centroid");
+      // (perturbed as the triangulation is, the inner point least of all: a face of three
+      // collinear points is a sliver of the perturbed hull, with the inner point below it)
+      const VertexId* c = tris_.data() + 3 * f;
+      if (detail::orient3d_sos(pts_[c[0]], pts_[c[1]], pts_[c[2]], o_, r[c[0]], r[c[1]], r[c[2]], inner_rank()) <= 0) {
+        report_.problem("triangle ", f, " does not face away from the inner point");
         return false;
       }
-      const Point3 u{a.x - o_.x, a.y - o_.y, a.z - o_.z}, v{b.x - o_.x, b.y - o_.y, b.z - o_.z},
-          w{c.x - o_.x, c.y - o_.y, c.z - o_.z};
-      const double lu = std::sqrt(dot(u, u)), lv = std::sqrt(dot(v, v)), lw = std::sqrt(dot(w, w));
-      const double triple =
-          u.x * (v.y * w.z - v.z * w.y) + u.y * (v.z * w.x - v.x * w.z) + u.z * (v.x * w.y - v.y * w.x);
-      total += 2 * std::atan2(triple, lu * lv * lw + dot(u, v) * lw + dot(u, w) * lv + dot(v, w) * lu);
     }
-    const double turns = total / (4 * 3.14159265358979323846);
-    if (!(std::fabs(turns - 1) < 0.5))
-      report_.problem("the triangles wrap round the inner point ", std::lround(turns), " times, not once");
+    // Facing away, the triangles cover every direction from o the same number of times: as
+    // many as hold one probe in their cones (perturbed, so that exactly that many do).
+    const Point3& a = pts_[tris_[0]];
+    const Point3 probe{a.x / 2 + o_.x / 2, a.y / 2 + o_.y / 2, a.z / 2 + o_.z / 2};
+    std::size_t turns = 0;
+    for (std::size_t f = 0; f < m_; ++f) turns += holds(f, probe, inner_rank() + 1);
+    if (turns != 1) report_.problem("the triangles wrap round the inner point ", turns, " times, not once");
     return report_.problems() == 0;
   }
+  std::uint32_t inner_rank() const { return static_cast<std::uint32_t>(n_); }
 
-  // Every point not a corner: a copy of one, or below every triangle whose closed cone from o
-  // holds it (found by walking). Returns how many lie inside.
+  // Every point not a corner: a copy of one, or below the triangle whose cone from o holds it
+  // (found by walking; the sides perturbed, o least of all, so that the cones part space).
+  // Returns how many lie inside.
   std::size_t inside() {
     std::size_t last = 0, hidden = 0;
-    std::vector<std::uint32_t> stamp(m_, 0), todo;
     for (std::size_t q = 0; q < n_ && report_.problems() < 100; ++q) {
       if (corner_[q] || owner_[rank_[q]] != kNoVertex) continue;  // a corner, or a copy of one
       ++hidden;
-      last = cone(last, pts_[q]);
-      todo.assign(1, static_cast<std::uint32_t>(last));
-      stamp[last] = static_cast<std::uint32_t>(hidden);
-      while (!todo.empty()) {
-        const std::uint32_t g = todo.back();
-        todo.pop_back();
-        if (!below(g, static_cast<VertexId>(q))) {
-          report_.problem("point ", q, " is outside the hull (above triangle ", g, ")");
-          break;
-        }
-        for (int i = 0; i < 3; ++i)
-          if (const std::uint32_t h = across_[3 * g + i] / 3; stamp[h] != hidden && holds(h, pts_[q]))
-            stamp[h] = static_cast<std::uint32_t>(hidden), todo.push_back(h);
-      }
+      last = cone(last, static_cast<VertexId>(q));
+      if (!below(last, static_cast<VertexId>(q)))
+        report_.problem("point ", q, " is outside the hull (above triangle ", last, ")");
     }
     return hidden;
   }
-  int side(VertexId a, VertexId b, const Point3& q) const { return -orient3d(o_, pts_[a], pts_[b], q); }
-  bool holds(std::size_t f, const Point3& q) const {
-    const VertexId* t = tris_.data() + 3 * f;
-    return side(t[0], t[1], q) >= 0 && side(t[1], t[2], q) >= 0 && side(t[2], t[0], q) >= 0;
+  // q's side of the plane through o, a and b (+1: the side of the triangles left of a -> b),
+  // perturbed, o least of all but a probe (rank r): never 0, so that the cones part space.
+  int side(VertexId a, VertexId b, const Point3& q, std::uint32_t r) const {
+    return -detail::orient3d_sos(o_, pts_[a], pts_[b], q, inner_rank(), rank_[a], rank_[b], r);
   }
-  // A triangle whose closed cone holds q: by walking from f, else by looking at each.
-  std::size_t cone(std::size_t f, const Point3& q) const {
+  bool holds(std::size_t f, const Point3& q, std::uint32_t r) const {
+    const VertexId* t = tris_.data() + 3 * f;
+    return side(t[0], t[1], q, r) > 0 && side(t[1], t[2], q, r) > 0 && side(t[2], t[0], q, r) > 0;
+  }
+  // The triangle whose cone holds q: by walking from f, else by looking at each.
+  std::size_t cone(std::size_t f, VertexId q) const {
+    const Point3& x = pts_[q];
     for (std::size_t steps = 0, moved = 1; moved && steps < 4 * m_; ++steps) {
       moved = 0;
       for (int i = 0; i < 3 && !moved; ++i)
-        if (side(tris_[3 * f + next3(i)], tris_[3 * f + prev3(i)], q) < 0) f = across_[3 * f + i] / 3, moved = 1;
+        if (side(tris_[3 * f + next3(i)], tris_[3 * f + prev3(i)], x, rank_[q]) < 0)
+          f = across_[3 * f + i] / 3, moved = 1;
     }
-    for (std::size_t g = 0; g < m_ && !holds(f, q); ++g) f = g;
+    for (std::size_t g = 0; g < m_ && !holds(f, x, rank_[q]); ++g) f = g;
     return f;
   }
 

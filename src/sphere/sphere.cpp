@@ -4,15 +4,17 @@
 //
 // The hull is kept as a closed surface of triangles, counter-clockwise seen from outside,
 // about an inner point o (the centroid of the first four points, strictly inside their
-// tetrahedron, so inside every later hull). A point is located by walking through the cones
-// from o over the triangles (the side of a point from an edge a-b is its side of the plane
-// through o, a and b); it sees the triangles whose planes it lies above, by the exact
-// orientation with its symbolic perturbation (predicates/orient3d.hpp), keyed on the points'
-// lexicographic ranks, so that cocircular points (a cube's faces, a latitude circle) get one
-// answer whatever the input's order. Those triangles make a disc (the horizon's inside); it is
-// replaced by the fan of the point round its boundary, as a Delaunay cavity is. A point that
-// sees no triangle lies inside the hull: hidden. A disc with a vertex inside it (a point given
-// a rounding below the sphere among close neighbours, now covered) makes that vertex hidden.
+// tetrahedron, so inside every later hull: sphere/tetrahedron.hpp). Every decision is the
+// exact orientation with its symbolic perturbation (predicates/orient3d.hpp), keyed on the
+// points' lexicographic ranks, so that cocircular points (a cube's faces, a latitude circle)
+// get one answer whatever the input's order. A point is located by walking through the cones
+// from o over the triangles (its side of an edge a-b is its side of the plane through o, a and
+// b, o perturbed least of all: the cones part space). It lies outside the hull exactly where
+// it sees (lies above the plane of) the triangle whose cone holds it; then the triangles it
+// sees make a disc, which is replaced by the fan of the point round its boundary, as a
+// Delaunay cavity is. Else it is inside the hull: hidden. A disc with a vertex inside it (a
+// point given a rounding below the sphere among close neighbours, now covered) makes that
+// vertex hidden.
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -26,6 +28,7 @@
 #include "ridt/sphere.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
+#include "sphere/tetrahedron.hpp"
 #include "tds/delaunay.hpp"
 #include "tds/tds.hpp"
 
@@ -76,20 +79,6 @@ Distinct distinct_points(std::span<const Point3> points, unsigned threads) {
   return d;
 }
 
-double dist2(const Point3& a, const Point3& b) {
-  return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z);
-}
-Point3 minus(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-bool collinear(const Point3& a, const Point3& b, const Point3& c) {
-  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == 0 && orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == 0 &&
-      orient2d({a.x, a.z}, {b.x, b.z}, {c.x, c.z}) == 0;
-}
-
 class Builder {
  public:
   Builder(const std::vector<Point3>& p, unsigned threads) : p_(p), threads_(threads) {}
@@ -118,42 +107,17 @@ class Builder {
   const std::vector<std::uint64_t>& curve() const { return curve_; }
 
  private:
-  // Four points far from coplanar: the least, the farthest from it, the farthest from their
-  // line, the farthest from their plane (in double precision, then confirmed exactly).
-  std::array<VertexId, 4> tetrahedron() const {
+  // Four points far from coplanar (fat_tetrahedron), and the inner point inside them.
+  std::array<VertexId, 4> tetrahedron() {
     const VertexId n = static_cast<VertexId>(p_.size());
     if (n < 4) throw InputError("triangulate_sphere: fewer than four distinct points");
-    auto best = [&](auto&& score) {
-      VertexId arg = 0;
-      double top = -1;
-      for (VertexId v = 0; v < n; ++v)
-        if (const double s = score(v); s > top) top = s, arg = v;
-      return arg;
-    };
-    const VertexId a = 0;
-    VertexId b = best([&](VertexId v) { return dist2(p_[v], p_[a]); });
-    VertexId c = best([&](VertexId v) {
-      const Point3 u = cross(minus(p_[b], p_[a]), minus(p_[v], p_[a]));
-      return dot(u, u);
-    });
-    if (collinear(p_[a], p_[b], p_[c])) {
-      c = kNoVertex;
-      for (VertexId v = 0; v < n && c == kNoVertex; ++v)
-        if (!collinear(p_[a], p_[b], p_[v])) c = v;
-      if (c == kNoVertex) throw InputError("triangulate_sphere: all points are collinear");
-    }
-    VertexId d = best([&](VertexId v) {
-      const Point3 u = cross(minus(p_[b], p_[a]), minus(p_[c], p_[a]));
-      return std::fabs(dot(u, minus(p_[v], p_[a])));
-    });
-    if (orient3d(p_[a], p_[b], p_[c], p_[d]) == 0) {
-      d = kNoVertex;
-      for (VertexId v = 0; v < n && d == kNoVertex; ++v)
-        if (orient3d(p_[a], p_[b], p_[c], p_[v]) != 0) d = v;
-      if (d == kNoVertex) throw InputError("triangulate_sphere: all points are coplanar");
-    }
-    if (orient3d(p_[a], p_[b], p_[c], p_[d]) < 0) std::swap(b, c);
-    return {a, b, c, d};
+    std::vector<VertexId> all(n);
+    std::iota(all.begin(), all.end(), VertexId{0});
+    const Tetrahedron t = fat_tetrahedron(p_, all);
+    if (t.flat != nullptr) throw InputError(std::string("triangulate_sphere: all points are ") + t.flat);
+    if (!t.inside) throw InputError("triangulate_sphere: the points are too nearly coplanar");
+    inner_ = t.inner;
+    return t.v;
   }
 
   // The tetrahedron's four triangles, counter-clockwise seen from outside (d lies below
@@ -177,12 +141,6 @@ class Builder {
       }
     tds_ = Tds(std::move(v), std::move(link), 4);
     stamp_.assign(2 * p_.size() + 1, 0);
-    const Point3 &pa = q_[a], &pb = q_[b], &pc = q_[c], &pd = q_[d];
-    inner_ = {(pa.x + pb.x) / 4 + (pc.x + pd.x) / 4, (pa.y + pb.y) / 4 + (pc.y + pd.y) / 4,
-              (pa.z + pb.z) / 4 + (pc.z + pd.z) / 4};
-    for (const auto& f : faces)
-      if (orient3d(q_[f[0]], q_[f[1]], q_[f[2]], inner_) <= 0)
-        throw InputError("triangulate_sphere: the points are too nearly coplanar");
   }
 
   // The points but the first four: a random permutation (seeded: the same every run) in rounds
@@ -230,60 +188,42 @@ class Builder {
     return order;
   }
 
-  int side(VertexId a, VertexId b, const Point3& q) const { return -orient3d(inner_, q_[a], q_[b], q); }
+  // v's side of the plane through o, a and b (+1: the side of the triangles left of a -> b),
+  // perturbed as the points are, o least of all (its rank past every point's): never 0, so
+  // that the cones from o over the triangles part space, a triangle of three collinear points
+  // (a sliver of the perturbed hull) too.
+  int side(VertexId a, VertexId b, VertexId v) const {
+    return -orient3d_sos(inner_, q_[a], q_[b], q_[v], static_cast<std::uint32_t>(q_.size()), rank_[a], rank_[b],
+                         rank_[v]);
+  }
   // Whether point v lies above the plane of triangle t (perturbed: never on it).
   bool sees(const VertexId* w, VertexId v) const {
     return orient3d_sos(q_[w[0]], q_[w[1]], q_[w[2]], q_[v], rank_[w[0]], rank_[w[1]], rank_[w[2]], rank_[v]) < 0;
   }
-  bool holds(TriangleId t, const Point3& q) const {
+  bool holds(TriangleId t, VertexId v) const {
     const VertexId* w = tds_.corners(t);
-    return side(w[0], w[1], q) >= 0 && side(w[1], w[2], q) >= 0 && side(w[2], w[0], q) >= 0;
+    return side(w[0], w[1], v) > 0 && side(w[1], w[2], v) > 0 && side(w[2], w[0], v) > 0;
   }
 
-  // A triangle whose cone from o holds v's point: by walking from last_, or, where the walk
-  // goes on too long (the cones are not a Delaunay triangulation's, whose walks cannot cycle),
-  // by looking at every triangle.
+  // The triangle whose cone from o holds v: by walking from last_, or, where the walk goes on
+  // too long (the cones are not a Delaunay triangulation's, whose walks cannot cycle), by
+  // looking at every triangle. v lies outside the hull exactly where it sees that triangle.
   TriangleId locate(VertexId v) {
-    const Point3& q = q_[v];
     TriangleId t = last_;
     std::size_t steps = 0;
     const std::size_t limit = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
     const Walked w = tds_.walk(
-        t, [&](VertexId a, VertexId b) { return side(a, b, q); },
+        t, [&](VertexId a, VertexId b) { return side(a, b, v); },
         [&](Link) { return ++steps < limit ? Step::Cross : Step::Stop; });
     if (w) return t;
     for (TriangleId u = 0; u < tds_.slots(); ++u)
-      if (tds_.vertex(u, 0) != kNoVertex && holds(u, q)) return u;
-    return last_;  // unreachable: the cones cover space
-  }
-
-  // A triangle that v sees among those whose closed cones hold it (more than one where it lies
-  // on a cone's side), else kNoTriangle.
-  TriangleId seen_from(TriangleId t, VertexId v) {
-    if (sees(tds_.corners(t), v)) return t;
-    const Point3& q = q_[v];
-    ++epoch_;
-    stamp_[t] = epoch_;
-    std::vector<TriangleId>& todo = todo_;
-    todo.assign(1, t);
-    while (!todo.empty()) {
-      const TriangleId u = todo.back();
-      todo.pop_back();
-      for (int i = 0; i < 3; ++i) {
-        const TriangleId x = triangle_of(tds_.link(u, i));
-        if (stamp_[x] == epoch_) continue;
-        stamp_[x] = epoch_;
-        if (!holds(x, q)) continue;
-        if (sees(tds_.corners(x), v)) return x;
-        todo.push_back(x);
-      }
-    }
-    return kNoTriangle;
+      if (tds_.vertex(u, 0) != kNoVertex && holds(u, v)) return u;
+    return last_;  // unreachable: the cones part space
   }
 
   void insert(VertexId v) {
-    const TriangleId t = seen_from(locate(v), v);
-    if (t == kNoTriangle) {
+    const TriangleId t = locate(v);
+    if (!sees(tds_.corners(t), v)) {
       hidden_[v] = 1;
       return;
     }
@@ -360,7 +300,7 @@ class Builder {
   Point3 inner_;
   TriangleId last_ = 0;
   CavityScratch scratch_;
-  std::vector<TriangleId> free_, todo_;
+  std::vector<TriangleId> free_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
