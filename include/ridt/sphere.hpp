@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -54,6 +55,20 @@ struct SphericalVoronoi {
 
 SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<const Point3> points,
                                    const Point3& centre, double radius, bool areas = true, unsigned threads = 0);
+
+/// Linear interpolation on the sphere: each query's direction from `centre` is located in the
+/// triangle whose cone from the centre holds it (a walk from the last query's), and its value
+/// is the combination of the corners' values (k a point, point-major) whose weights are the
+/// ratios of the volumes det[q, b, c] : det[a, q, c] : det[a, b, q] about the centre (the
+/// barycentric coordinates of the query's central projection onto the triangle's plane), each
+/// volume within a relative 2^-50 of the exact one. `fill` (NaN) where no triangle facing away
+/// from the centre holds the query (the points in one hemisphere, the query beyond them).
+/// Returns queries.size() * k values.
+std::vector<double> interpolate_sphere_linear(const SphericalTriangulation& t, std::span<const Point3> points,
+                                              std::span<const double> values, std::size_t k,
+                                              std::span<const Point3> queries, const Point3& centre,
+                                              double fill = std::numeric_limits<double>::quiet_NaN(),
+                                              unsigned threads = 0);
 
 /// Checks exactly that `triangles` (#T by 3 input indices) is the convex hull of `points` as
 /// triangulate_sphere decides it: a closed surface of consistently oriented triangles, every

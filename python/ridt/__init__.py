@@ -20,7 +20,7 @@ from ._constrained import ConstrainedDelaunay, RefinementWarning
 from ._size import SizeField
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._hull import ConvexHull, DegenerateInputError
-from ._sphere import SphericalVoronoi, check_sphere
+from ._sphere import SphericalLinearInterpolator, SphericalVoronoi, check_sphere
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
@@ -43,6 +43,7 @@ __all__ = [
     "NearestNDInterpolator",
     "RefinementWarning",
     "SizeField",
+    "SphericalLinearInterpolator",
     "SphericalVoronoi",
     "Triangulation",
     "available_memory",

@@ -91,9 +91,39 @@ py::tuple check(const Points& points, const Indices& triangles) {
   return py::make_tuple(r.valid, r.message, r.problems);
 }
 
+py::array_t<double> interpolate_linear(const Points& points, const Indices& triangles, const Links& neighbors,
+                                       const Points& values, const Points& queries, const Points& center, double fill,
+                                       unsigned threads) {
+  const auto pts = as_points3(points, "points");
+  const auto xi = as_points3(queries, "xi");
+  const auto c = as_points3(center, "center");
+  if (c.size() != 1) throw py::value_error("center must have shape (1, 3)");
+  if (values.ndim() != 2 || static_cast<std::size_t>(values.shape(0)) != pts.size())
+    throw py::value_error("values must have shape (npoints, k)");
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3 || neighbors.ndim() != 2 ||
+      neighbors.shape(0) != triangles.shape(0) || neighbors.shape(1) != 3)
+    throw py::value_error("triangles and neighbors must have shape (ntriangles, 3)");
+  ridt::SphericalTriangulation t;
+  t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
+  t.neighbors.assign(neighbors.data(), neighbors.data() + neighbors.size());
+  for (const std::int32_t g : t.neighbors)
+    if (g < 0 || static_cast<std::size_t>(g) >= t.size()) throw py::value_error("a neighbour is not a triangle");
+  const auto k = static_cast<std::size_t>(values.shape(1));
+  const std::span<const double> v(values.data(), static_cast<std::size_t>(values.size()));
+  std::vector<double> out;
+  {
+    py::gil_scoped_release nogil;
+    out = ridt::interpolate_sphere_linear(t, pts, v, k, xi, c[0], fill, threads);
+  }
+  return adopt(std::move(out), {static_cast<py::ssize_t>(xi.size()), static_cast<py::ssize_t>(k)});
+}
+
 }  // namespace
 
 void bind_sphere(py::module_& m) {
+  m.def("interpolate_sphere_linear", &interpolate_linear, py::arg("points"), py::arg("triangles"), py::arg("neighbors"),
+        py::arg("values"), py::arg("xi"), py::arg("center"), py::arg("fill"), py::arg("threads") = 0,
+        "(nxi, k): linear interpolation on the sphere of a triangulate_sphere result");
   m.def("triangulate_sphere", &triangulate, py::arg("points"), py::arg("threads") = 0,
         "(triangles, neighbors, duplicates, hidden): the exact convex hull of points in space, each triangle "
         "counter-clockwise seen from outside; duplicates as (dropped, kept) rows; hidden: the points inside it");

@@ -175,3 +175,32 @@ def test_check_sphere_refuses_a_wrong_hull():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         ridt.SphericalVoronoi(pts)  # no warning without hidden points
+
+
+def test_linear_interpolation_on_the_sphere():
+    pts = on_sphere(3000, 21, 2.0, (1.0, 0.0, -1.0))
+    values = np.column_stack([np.sin(3 * pts[:, 0]), pts[:, 2]])
+    f = ridt.SphericalLinearInterpolator(pts, values, center=(1.0, 0.0, -1.0), threads=2)
+    xi = on_sphere(400, 22, 0.5, (1.0, 0.0, -1.0))
+    got = f(xi)
+    assert got.shape == (400, 2)
+    # Against the same interpolant found by brute force: the triangle whose cone from the centre
+    # holds the query, the barycentric coordinates of the query's projection onto its plane.
+    o = np.array([1.0, 0.0, -1.0])
+    a, b, c = (pts[f.triangles[:, i]] - o for i in range(3))
+    for q, g in zip(xi - o, got):
+        w = np.stack([np.einsum("ij,ij->i", np.broadcast_to(q, a.shape), np.cross(b, c)),
+                      np.einsum("ij,ij->i", a, np.cross(np.broadcast_to(q, a.shape), c)),
+                      np.einsum("ij,ij->i", a, np.cross(b, np.broadcast_to(q, a.shape)))], axis=1)
+        k = np.flatnonzero((w >= 0).all(axis=1))[0]
+        expected = (w[k] / w[k].sum()) @ values[f.triangles[k]]
+        np.testing.assert_allclose(g, expected, rtol=1e-12, atol=1e-14)
+    # The data at the points; a constant kept; the fill beyond points in one hemisphere.
+    np.testing.assert_allclose(f(pts[:50] * 3 - 2 * o), values[:50], atol=1e-13)
+    assert np.allclose(ridt.SphericalLinearInterpolator(pts, np.full(3000, 4.5), center=o)(xi), 4.5, rtol=1e-14)
+    half = on_sphere(500, 23)
+    half[:, 0] = np.abs(half[:, 0])
+    h = ridt.SphericalLinearInterpolator(half, np.ones(500), fill_value=-7.0)
+    assert h([[1.0, 0.1, 0.2]])[0] == pytest.approx(1.0) and h([[-1.0, 0.1, 0.2]])[0] == -7.0
+    with pytest.raises(ValueError):
+        ridt.SphericalLinearInterpolator(pts, values[:10])

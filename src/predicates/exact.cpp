@@ -329,6 +329,19 @@ int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Poin
   return (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx)).sign();
 }
 
+double orient3d_value_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const int e = min_ulp_exponent({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
+  auto big = [&](double v) { return BigInt::from_double(v, e); };
+  const BigInt dx = big(d.x), dy = big(d.y), dz = big(d.z);
+  const BigInt adx = big(a.x) - dx, ady = big(a.y) - dy, adz = big(a.z) - dz;
+  const BigInt bdx = big(b.x) - dx, bdy = big(b.y) - dy, bdz = big(b.z) - dz;
+  const BigInt cdx = big(c.x) - dx, cdy = big(c.y) - dy, cdz = big(c.z) - dz;
+  int exponent = 0;
+  const double m = (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx))
+                       .scaled(3 * e, exponent);
+  return std::ldexp(m, exponent);
+}
+
 int orient3d_tie(const Point3* const p[4], const std::uint32_t rank[4]) {
   // The perturbed determinant of rows (x, y, z, 1) is a polynomial in eps; the coefficient of
   // the product of the moves of entries S (at most one a row and a column) is the determinant

@@ -59,6 +59,25 @@ int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Poin
   return s != 0 ? s : orient3d_exact(a, b, c, d);
 }
 
+double orient3d_value_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+/// det[a - d; b - d; c - d] itself, within a relative 2^-50 of the exact value: in double
+/// precision where the filter's bound allows, else exactly and rounded.
+inline double orient3d_value(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const double adx = a.x - d.x, ady = a.y - d.y, adz = a.z - d.z;
+  const double bdx = b.x - d.x, bdy = b.y - d.y, bdz = b.z - d.z;
+  const double cdx = c.x - d.x, cdy = c.y - d.y, cdz = c.z - d.z;
+  const double det = adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx);
+  const double permanent = (std::fabs(bdx * cdy) + std::fabs(bdy * cdx)) * std::fabs(adz) +
+      (std::fabs(cdx * ady) + std::fabs(cdy * adx)) * std::fabs(bdz) +
+      (std::fabs(adx * bdy) + std::fabs(ady * bdx)) * std::fabs(cdz);
+  const double m = std::max({std::fabs(adx), std::fabs(ady), std::fabs(adz), std::fabs(bdx), std::fabs(bdy),
+                             std::fabs(bdz), std::fabs(cdx), std::fabs(cdy), std::fabs(cdz)});
+  const double bound = kOrient3dBound * permanent + 0x1p-1070 * (m + 1);
+  if (bound <= 0x1p-50 * std::fabs(det)) return det;
+  return orient3d_value_exact(a, b, c, d);
+}
+
 /// The sign orient3d takes where it is 0 under Simulation of Simplicity (Edelsbrunner and
 /// Mücke): coordinate j of the point ranked r among the four (by `rank`, distinct) moved by
 /// eps^(2^(3r + j)); never 0. The points must be distinct.

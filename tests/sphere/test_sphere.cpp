@@ -260,5 +260,39 @@ TEST(SphericalVoronoiCells, CirclesCellsAndAreas) {
   for (const double a : v.areas) EXPECT_NEAR(a, 4 * kPi * 3 / 8, 1e-12);
 }
 
+TEST(SphereInterpolation, LinearOnTheSphere) {
+  const Point3 c{1, -2, 3};
+  const std::vector<Point3> pts = on_sphere(20000, 12, 2, c);
+  const SphericalTriangulation t = triangulate_sphere(pts);
+  // Two values a point: a constant and the height above the centre.
+  std::vector<double> values;
+  for (const Point3& p : pts) values.insert(values.end(), {7.25, p.z - c.z});
+  const std::vector<Point3> queries = on_sphere(5000, 13, 3, c);
+  const std::vector<double> one = interpolate_sphere_linear(t, pts, values, 2, queries, c, -1, 1);
+  const std::vector<double> two = interpolate_sphere_linear(t, pts, values, 2, queries, c, -1, 2);
+  EXPECT_EQ(one, two);
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    EXPECT_NEAR(one[2 * i], 7.25, 1e-14);
+    // The height of the query's direction on the sphere of radius 2, within the mesh's error.
+    EXPECT_NEAR(one[2 * i + 1], (queries[i].z - c.z) * 2 / 3, 2e-3);
+  }
+  // At the data points (any distance along their direction) the data.
+  std::vector<Point3> at;
+  for (std::size_t i = 0; i < 500; ++i)
+    at.push_back({c.x + (pts[i].x - c.x) * 5, c.y + (pts[i].y - c.y) * 5, c.z + (pts[i].z - c.z) * 5});
+  const std::vector<double> data = interpolate_sphere_linear(t, pts, values, 2, at, c);
+  for (std::size_t i = 0; i < at.size(); ++i) EXPECT_NEAR(data[2 * i + 1], values[2 * i + 1], 1e-13);
+  // Points in one hemisphere: beyond them, the fill.
+  std::vector<Point3> half = on_sphere(2000, 14);
+  for (Point3& p : half) p.x = std::fabs(p.x);
+  const SphericalTriangulation h = triangulate_sphere(half);
+  const std::vector<double> ones(half.size(), 1.0);
+  const std::vector<Point3> probes{{1, 0.1, 0.2}, {-1, 0.1, 0.2}, {-1, -0.5, 0}};
+  const std::vector<double> got = interpolate_sphere_linear(h, half, ones, 1, probes, {});
+  EXPECT_NEAR(got[0], 1, 1e-14);
+  EXPECT_TRUE(std::isnan(got[1]) && std::isnan(got[2]));
+  EXPECT_THROW(interpolate_sphere_linear(h, half, ones, 2, probes, {}), InputError);
+}
+
 }  // namespace
 }  // namespace ridt
