@@ -282,6 +282,19 @@ def interpolate_section(results):
                 ["---", "---:", "---:", "---", "---:", "---:", "---:"]) + "\n")
 
 
+def sphere_section(results):
+    data = rows(results, "sphere.csv")
+    body = [[n_text(r["n"]), r["code"], f"{float(r['time_s']):.3f}", f"{float(r['scipy_over_code']):.1f}"]
+            for r in data if r.get("time_s")]
+    return (
+        "## Voronoi diagrams on the sphere against scipy\n\n"
+        "`ridt.SphericalVoronoi(points).calculate_areas()` against scipy's (Qhull's 3-D hull) on "
+        "uniform points of the unit sphere, each call in a fresh process; the floor: `ridt.Delaunay` "
+        "of as many points in the plane; × scipy: scipy's time over the code's. Output: "
+        "[results/sphere.md](results/sphere.md).\n\n"
+        + table(["n", "code", "s", "× scipy"], body, ["---:", "---", "---:", "---:"]) + "\n")
+
+
 def constrained_section(results):
     """ridt_bench_constrained's rows (constrained.csv) and the whole-process page beside them."""
     data = rows(results, "constrained.csv")
@@ -353,7 +366,8 @@ def main():
         "taken in the same run, not seconds across runs.\n")
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
              threads_section(args.results), table3_section(args.results), python_section(args.results),
-             interpolate_section(args.results), constrained_section(args.results), terrain_section(args.results),
+             interpolate_section(args.results), sphere_section(args.results), constrained_section(args.results),
+             terrain_section(args.results),
              out_of_core_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"
                  + "\n".join(cmd for _, cmd in commands) + "\n```\n")

@@ -48,6 +48,7 @@ if [ "$mode" = quick ]; then
   process_args=(--sizes 100000 --reps 3)
   python_args=(--sizes 10000,100000 --big "" --reps 2)
   interpolate_args=(--n 100000 --grid 500 --reps 2)
+  sphere_args=(--sizes 10000,100000 --reps 2)
   terrain_args=(--sizes 100000 --reps 1 --gdal-nearest-max 100000)
   ooc_args=(--sizes 1000000 --limits 100M)
   cdt_args=(--n 100000 --lakes 10 --reps 3)
@@ -62,6 +63,7 @@ else
   process_args=(--sizes 1000000,10000000 --reps 9)
   python_args=(--sizes 10000,100000,1000000 --big "" --reps 3)
   interpolate_args=(--n 1000000 --grid 2000 --reps 3)
+  sphere_args=(--sizes 10000,100000,1000000 --reps 3)
   terrain_args=(--sizes 1000000,10000000 --reps 3)
   ooc_args=(--sizes 10000000 --limits 500M)
   cdt_args=(--n 1000000 --lakes 100 --reps 5)
@@ -95,6 +97,8 @@ run python env PYTHONPATH="$build/python" "$py" bench/python_table.py --python "
   --out "$tmp/python.md"
 run interpolate env PYTHONPATH="$build/python" "$py" bench/interpolate_table.py --python "$py" \
   "${interpolate_args[@]}" --out "$tmp/interpolate.md"
+run sphere env PYTHONPATH="$build/python" "$py" bench/sphere_table.py --python "$py" "${sphere_args[@]}" \
+  --out "$tmp/sphere.md"
 run terrain "$py" bench/terrain_table.py --build "$build" "${terrain_args[@]}" --dir "$tmp/terrain" \
   --out "$tmp/terrain.md"
 rm -rf "$tmp/terrain"
