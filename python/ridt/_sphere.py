@@ -84,8 +84,7 @@ class SphericalVoronoi:
             raise ValueError("points and center must be finite")
         self._threads = threads
         # scipy's tests of the input, in scipy's order and words.
-        if len(self.points) == 0 or np.linalg.matrix_rank(self.points - self.points[0],
-                                                          tol=threshold * self.radius) < self._dim:
+        if len(self.points) == 0 or self._rank(threshold) < self._dim:
             raise ValueError(f"Rank of input points must be at least {self._dim}")
         radii = np.linalg.norm(self.points - self.center, axis=1)
         if np.abs(radii - self.radius).max() >= threshold * self.radius:
@@ -98,6 +97,19 @@ class SphericalVoronoi:
         if len(self.hidden):
             warnings.warn(f"{len(self.hidden)} of the points lie inside the hull of the others (below the "
                           f"sphere among close neighbours) and have no cell", RuntimeWarning, stacklevel=2)
+
+    def _rank(self, threshold: float) -> int:
+        """scipy's test: the rank of the points less the first, singular values up to
+        threshold * radius counted out. Where the Gram matrix's eigenvalues show the smallest
+        singular value far above that (a thousandth of the largest or more, at least 10^3 times
+        the tolerance), the SVD of the whole array is spared."""
+        a = self.points - self.points[0]
+        gram = a.T @ a
+        eig = np.linalg.eigvalsh(gram)
+        tol = threshold * self.radius
+        if eig[-1] > 0 and eig[0] >= 1e-6 * eig[-1] and eig[0] >= (1e3 * tol) ** 2:
+            return self._dim
+        return int(np.linalg.matrix_rank(a, tol=tol))
 
     def _too_close(self, shortest: float, threshold: float, duplicates: np.ndarray) -> None:
         """ValueError where two points are copies or closer than threshold * radius (the closest

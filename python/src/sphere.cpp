@@ -70,14 +70,25 @@ double shortest_edge(const Points& points, const Indices& triangles) {
   const auto size = static_cast<std::size_t>(triangles.size());
   for (std::size_t k = 0; k < size; ++k)
     if (t[k] >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
-  double shortest = HUGE_VAL;
+  double shortest = HUGE_VAL;  // squared
   py::gil_scoped_release nogil;
   for (std::size_t k = 0; k + 2 < size; k += 3)
     for (int i = 0; i < 3; ++i) {
       const ridt::Point3 &a = pts[t[k + i]], &b = pts[t[k + (i + 1) % 3]];
-      shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y, a.z - b.z));
+      const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+      shortest = std::min(shortest, dx * dx + dy * dy + dz * dz);
     }
-  return shortest;
+  // A square that underflows or overflows: the length itself, where it matters.
+  if (shortest < 0x1p-1000 || shortest > 0x1p1000) {
+    shortest = HUGE_VAL;
+    for (std::size_t k = 0; k + 2 < size; k += 3)
+      for (int i = 0; i < 3; ++i) {
+        const ridt::Point3 &a = pts[t[k + i]], &b = pts[t[k + (i + 1) % 3]];
+        shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y, a.z - b.z));
+      }
+    return shortest;
+  }
+  return std::sqrt(shortest);
 }
 
 py::tuple check(const Points& points, const Indices& triangles) {
