@@ -125,8 +125,8 @@ class Builder {
   void start() {
     const VertexId a = 0, b = 1, c = 2, d = 3;
     const VertexId faces[4][3] = {{a, b, c}, {a, d, b}, {a, c, d}, {b, d, c}};
-    // Room for the 2n - 4 triangles of n points and the two a fan takes before its cavity's
-    // slots are given back (SlotArrays makes its pages present on the threads).
+    // Room for the 2n - 4 triangles of n points (a fan takes its cavity's slots and two more,
+    // freed ones first; SlotArrays makes the pages present on the threads).
     SlotArrays arrays(p_.size(), threads_);
     std::vector<VertexId>& v = arrays.v;
     std::vector<Link>& link = arrays.link;
