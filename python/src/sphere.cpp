@@ -22,6 +22,21 @@ std::span<const ridt::Point3> as_points3(const Points& a, const char* name) {
 using Indices = py::array_t<std::uint32_t, py::array::c_style>;
 using Links = py::array_t<std::int32_t, py::array::c_style>;
 
+// A triangulate_sphere result given back from Python, its shapes and indices checked.
+ridt::SphericalTriangulation as_triangulation(std::size_t points, const Indices& triangles, const Links& neighbors) {
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3 || neighbors.ndim() != 2 ||
+      neighbors.shape(0) != triangles.shape(0) || neighbors.shape(1) != 3)
+    throw py::value_error("triangles and neighbors must have shape (ntriangles, 3)");
+  ridt::SphericalTriangulation t;
+  t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
+  t.neighbors.assign(neighbors.data(), neighbors.data() + neighbors.size());
+  for (const ridt::VertexId v : t.triangles)
+    if (v >= points) throw py::value_error("a triangle's corner is not a point's index");
+  for (const std::int32_t g : t.neighbors)
+    if (g < 0 || static_cast<std::size_t>(g) >= t.size()) throw py::value_error("a neighbour is not a triangle");
+  return t;
+}
+
 py::tuple triangulate(const Points& points, unsigned threads) {
   const auto pts = as_points3(points, "points");
   ridt::SphericalTriangulation t;
@@ -42,16 +57,7 @@ py::tuple voronoi(const Points& points, const Indices& triangles, const Links& n
   const auto pts = as_points3(points, "points");
   const auto c = as_points3(center, "center");
   if (c.size() != 1) throw py::value_error("center must have shape (1, 3)");
-  if (triangles.ndim() != 2 || triangles.shape(1) != 3 || neighbors.ndim() != 2 ||
-      neighbors.shape(0) != triangles.shape(0) || neighbors.shape(1) != 3)
-    throw py::value_error("triangles and neighbors must have shape (ntriangles, 3)");
-  ridt::SphericalTriangulation t;
-  t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
-  t.neighbors.assign(neighbors.data(), neighbors.data() + neighbors.size());
-  for (const ridt::VertexId v : t.triangles)
-    if (v >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
-  for (const std::int32_t g : t.neighbors)
-    if (g < 0 || static_cast<std::size_t>(g) >= t.size()) throw py::value_error("a neighbour is not a triangle");
+  const ridt::SphericalTriangulation t = as_triangulation(pts.size(), triangles, neighbors);
   ridt::SphericalVoronoi v;
   {
     py::gil_scoped_release nogil;
@@ -111,14 +117,7 @@ py::array_t<double> interpolate_linear(const Points& points, const Indices& tria
   if (c.size() != 1) throw py::value_error("center must have shape (1, 3)");
   if (values.ndim() != 2 || static_cast<std::size_t>(values.shape(0)) != pts.size())
     throw py::value_error("values must have shape (npoints, k)");
-  if (triangles.ndim() != 2 || triangles.shape(1) != 3 || neighbors.ndim() != 2 ||
-      neighbors.shape(0) != triangles.shape(0) || neighbors.shape(1) != 3)
-    throw py::value_error("triangles and neighbors must have shape (ntriangles, 3)");
-  ridt::SphericalTriangulation t;
-  t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
-  t.neighbors.assign(neighbors.data(), neighbors.data() + neighbors.size());
-  for (const std::int32_t g : t.neighbors)
-    if (g < 0 || static_cast<std::size_t>(g) >= t.size()) throw py::value_error("a neighbour is not a triangle");
+  const ridt::SphericalTriangulation t = as_triangulation(pts.size(), triangles, neighbors);
   const auto k = static_cast<std::size_t>(values.shape(1));
   const std::span<const double> v(values.data(), static_cast<std::size_t>(values.size()));
   std::vector<double> out;

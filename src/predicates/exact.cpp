@@ -318,27 +318,26 @@ int incircle_hard(const Point& a, const Point& b, const Point& c, const Point& d
   return incircle_exact(a, b, c, d);
 }
 
-int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-  // Degree 3: 2098-bit integers make products of some 6300 bits, within BigInt's room.
-  const int e = min_ulp_exponent({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
+// det[a - d; b - d; c - d] in integers of the unit 2^(3 e), e the least unit in the last place.
+// Degree 3: 2098-bit integers make products of some 6300 bits, within BigInt's room.
+BigInt orient3d_big(const Point3& a, const Point3& b, const Point3& c, const Point3& d, int& e) {
+  e = min_ulp_exponent({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
   auto big = [&](double v) { return BigInt::from_double(v, e); };
   const BigInt dx = big(d.x), dy = big(d.y), dz = big(d.z);
   const BigInt adx = big(a.x) - dx, ady = big(a.y) - dy, adz = big(a.z) - dz;
   const BigInt bdx = big(b.x) - dx, bdy = big(b.y) - dy, bdz = big(b.z) - dz;
   const BigInt cdx = big(c.x) - dx, cdy = big(c.y) - dy, cdz = big(c.z) - dz;
-  return (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx)).sign();
+  return adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx);
+}
+
+int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  int e = 0;
+  return orient3d_big(a, b, c, d, e).sign();
 }
 
 double orient3d_value_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-  const int e = min_ulp_exponent({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
-  auto big = [&](double v) { return BigInt::from_double(v, e); };
-  const BigInt dx = big(d.x), dy = big(d.y), dz = big(d.z);
-  const BigInt adx = big(a.x) - dx, ady = big(a.y) - dy, adz = big(a.z) - dz;
-  const BigInt bdx = big(b.x) - dx, bdy = big(b.y) - dy, bdz = big(b.z) - dz;
-  const BigInt cdx = big(c.x) - dx, cdy = big(c.y) - dy, cdz = big(c.z) - dz;
-  int exponent = 0;
-  const double m = (adz * (bdx * cdy - bdy * cdx) + bdz * (cdx * ady - cdy * adx) + cdz * (adx * bdy - ady * bdx))
-                       .scaled(3 * e, exponent);
+  int e = 0, exponent = 0;
+  const double m = orient3d_big(a, b, c, d, e).scaled(3 * e, exponent);
   return std::ldexp(m, exponent);
 }
 

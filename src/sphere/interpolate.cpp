@@ -2,7 +2,6 @@
 // cones from the centre over the triangles, its weights the volumes about the centre.
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "predicates/orient3d.hpp"
 #include "ridt/sphere.hpp"
