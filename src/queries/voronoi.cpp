@@ -12,8 +12,10 @@
 #include <cmath>
 #include <string>
 
+#include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
 #include "queries/arrays.hpp"
+#include "ridt/regular.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "tds/ids.hpp"
@@ -285,40 +287,64 @@ Pairs cocircular_by_centres(std::span<const Point> points, const Triangulation& 
   return joined(found);
 }
 
-}  // namespace
-
-Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads, bool merge) {
-  detail::check_arrays("voronoi", points.size(), t.triangles, t.neighbors);
+// The diagram's vertices, vertex(k, corners) each (the triangles' points read some triangles
+// ahead: they are in the caller's order, so each read may miss), its cells and ridges.
+template <class Vertex>
+Voronoi diagram(std::span<const Point> points, const Triangulation& t, unsigned threads,
+                const std::vector<std::size_t>& cut, Vertex&& vertex) {
   const std::size_t count = t.size();
-  const std::vector<std::size_t> cut = stretches(count, threads);
   Voronoi out;
   // The large arrays' pages made present on the threads, not faulted in one by one as written.
   const unsigned workers = detail::thread_count(threads);
   detail::resize_present(out.vertices, count, workers);
-  std::vector<float> radius;
-  if (merge) detail::resize_present(radius, count, workers);
-  // The circumcentres, each triangle's points read some triangles ahead (they are in the
-  // caller's order: each read may miss), and with `merge` each circle's radius, rounded up.
   each_part(cut, threads, [&](std::size_t, std::size_t first, std::size_t last) {
     constexpr std::size_t kAhead = 8;
     for (std::size_t k = first; k < last; ++k) {
       if (k + kAhead < last)
         for (int j = 0; j < 3; ++j) __builtin_prefetch(&points[t.triangles[3 * (k + kAhead) + j]]);
-      const VertexId* v = &t.triangles[3 * k];
-      const Point p[3] = {points[v[0]], points[v[1]], points[v[2]]};
-      const Point c = out.vertices[k] = detail::circumcentre_bounded(p[0], p[1], p[2]);
-      const double dx = c.x - p[0].x, dy = c.y - p[0].y;  // (overflow: an infinite radius, tested exactly)
-      if (merge) radius[k] = static_cast<float>(std::sqrt(dx * dx + dy * dy) * (1 + 0x1p-20));
+      out.vertices[k] = vertex(k, &t.triangles[3 * k]);
     }
   });
   detail::resize_present(out.point_cell, points.size(), workers);
   std::fill(out.point_cell.begin(), out.point_cell.end(), -1);
   cells(t, cut, threads, out);
   ridges(t, cut, threads, out);
+  return out;
+}
+
+}  // namespace
+
+Voronoi voronoi(std::span<const Point> points, const Triangulation& t, unsigned threads, bool merge) {
+  detail::check_arrays("voronoi", points.size(), t.triangles, t.neighbors);
+  const std::size_t count = t.size();
+  const std::vector<std::size_t> cut = stretches(count, threads);
+  // With `merge` each circle's radius, rounded up.
+  std::vector<float> radius;
+  if (merge) detail::resize_present(radius, count, detail::thread_count(threads));
+  Voronoi out = diagram(points, t, threads, cut, [&](std::size_t k, const VertexId* v) {
+    const Point c = detail::circumcentre_bounded(points[v[0]], points[v[1]], points[v[2]]);
+    const double dx = c.x - points[v[0]].x,
+                 dy = c.y - points[v[0]].y;  // (overflow: an infinite radius, tested exactly)
+    if (merge) radius[k] = static_cast<float>(std::sqrt(dx * dx + dy * dy) * (1 + 0x1p-20));
+    return c;
+  });
   if (merge)
     if (const Pairs pairs = cocircular_by_centres(points, t, out, radius, cut, threads); !pairs.empty())
       apply_merge(out, count, pairs);
   return out;
+}
+
+Voronoi power_diagram(std::span<const Point> points, std::span<const double> weights, const Triangulation& t,
+                      unsigned threads) {
+  detail::check_arrays("power_diagram", points.size(), t.triangles, t.neighbors);
+  if (weights.size() != points.size())
+    throw InputError("power_diagram: " + std::to_string(weights.size()) + " weights for " +
+                     std::to_string(points.size()) + " points");
+  return diagram(points, t, threads, stretches(t.size(), threads), [&](std::size_t, const VertexId* v) {
+    const detail::Weighted a{points[v[0]], weights[v[0]]}, b{points[v[1]], weights[v[1]]},
+        c{points[v[2]], weights[v[2]]};
+    return detail::power_centre_bounded(a, b, c);
+  });
 }
 
 std::vector<std::int32_t> merge_cocircular(std::span<const Point> points, const Triangulation& t, Voronoi& vd,
