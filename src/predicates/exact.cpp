@@ -14,141 +14,17 @@
 #include <limits>
 #include <vector>
 
+#include "predicates/bigint.hpp"
 #include "predicates/orient3d.hpp"
-#include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/predicates.hpp"
 
 namespace ridt::detail {
+using exact::BigInt;
+using exact::min_ulp_exponent;
+using exact::ulp_exponent;
+
 namespace {
-
-// Sign-magnitude integer with a fixed capacity and no heap use.
-class BigInt {
- public:
-  static constexpr int kCap = 140;  // 4 * 34 limbs for a degree-4 product, plus carries
-
-  BigInt() {}  // the limbs are left uninitialized on purpose: only [0, n_) is ever read
-
-  // x / 2^emin, where x is an integer multiple of 2^emin.
-  static BigInt from_double(double x, int emin) {
-    BigInt r;
-    if (x == 0) return r;
-    int e = 0;
-    const double f = std::frexp(std::fabs(x), &e);  // |x| = f * 2^e, f in [0.5, 1)
-    auto mant = static_cast<std::uint64_t>(std::ldexp(f, 53));
-    const int shift = e - 53 - emin;  // >= 0 by the choice of emin
-    const int limb = shift / 64, bit = shift % 64;
-    for (int i = 0; i < limb; ++i) r.w_[i] = 0;
-    r.w_[limb] = mant << bit;
-    r.n_ = limb + 1;
-    if (bit != 0 && (mant >> (64 - bit)) != 0) r.w_[r.n_++] = mant >> (64 - bit);
-    r.neg_ = x < 0;
-    return r;
-  }
-
-  int sign() const { return n_ == 0 ? 0 : (neg_ ? -1 : 1); }
-
-  // The value as m * 2^(exponent + emin) with |m| in [1, 2^64) (0 for zero), m within a
-  // relative 2^-62 of the truth: the top three limbs, each rounded once, the rest dropped.
-  double scaled(int emin, int& exponent) const {
-    exponent = emin;
-    if (n_ == 0) return 0;
-    double m = static_cast<double>(w_[n_ - 1]);
-    if (n_ >= 2) m += std::ldexp(static_cast<double>(w_[n_ - 2]), -64);
-    if (n_ >= 3) m += std::ldexp(static_cast<double>(w_[n_ - 3]), -128);
-    exponent += 64 * (n_ - 1);
-    return neg_ ? -m : m;
-  }
-
-  friend BigInt operator+(const BigInt& a, const BigInt& b) { return add(a, b, b.neg_); }
-  friend BigInt operator-(const BigInt& a, const BigInt& b) { return add(a, b, !b.neg_); }
-
-  friend BigInt operator*(const BigInt& a, const BigInt& b) {
-    BigInt r;
-    if (a.n_ == 0 || b.n_ == 0) return r;
-    r.n_ = a.n_ + b.n_;
-    std::fill(r.w_, r.w_ + r.n_, 0);
-    for (int i = 0; i < a.n_; ++i) {
-      unsigned __int128 carry = 0;
-      for (int j = 0; j < b.n_; ++j) {
-        carry += static_cast<unsigned __int128>(a.w_[i]) * b.w_[j] + r.w_[i + j];
-        r.w_[i + j] = static_cast<std::uint64_t>(carry);
-        carry >>= 64;
-      }
-      r.w_[i + b.n_] = static_cast<std::uint64_t>(carry);
-    }
-    r.trim();
-    r.neg_ = a.neg_ != b.neg_;
-    return r;
-  }
-
- private:
-  void trim() {
-    while (n_ > 0 && w_[n_ - 1] == 0) --n_;
-    if (n_ == 0) neg_ = false;
-  }
-
-  static int compare_magnitude(const BigInt& a, const BigInt& b) {
-    if (a.n_ != b.n_) return a.n_ < b.n_ ? -1 : 1;
-    for (int i = a.n_ - 1; i >= 0; --i)
-      if (a.w_[i] != b.w_[i]) return a.w_[i] < b.w_[i] ? -1 : 1;
-    return 0;
-  }
-
-  // a + (b with sign b_neg)
-  static BigInt add(const BigInt& a, const BigInt& b, bool b_neg) {
-    BigInt r;
-    if (a.neg_ == b_neg) {
-      const BigInt& big = a.n_ >= b.n_ ? a : b;
-      const BigInt& small = a.n_ >= b.n_ ? b : a;
-      std::uint64_t carry = 0;
-      for (int i = 0; i < big.n_; ++i) {
-        const std::uint64_t s = big.w_[i] + carry;
-        carry = s < carry;
-        const std::uint64_t t = i < small.n_ ? s + small.w_[i] : s;
-        carry += t < s;
-        r.w_[i] = t;
-      }
-      r.n_ = big.n_;
-      if (carry) r.w_[r.n_++] = carry;
-      r.neg_ = a.neg_;
-      return r;
-    }
-    const int cmp = compare_magnitude(a, b);
-    if (cmp == 0) return r;
-    const BigInt& big = cmp > 0 ? a : b;
-    const BigInt& small = cmp > 0 ? b : a;
-    std::uint64_t borrow = 0;
-    for (int i = 0; i < big.n_; ++i) {
-      const std::uint64_t sub = (i < small.n_ ? small.w_[i] : 0);
-      const std::uint64_t t = big.w_[i] - sub - borrow;
-      borrow = (big.w_[i] < sub) || (big.w_[i] - sub < borrow);
-      r.w_[i] = t;
-    }
-    r.n_ = big.n_;
-    r.neg_ = cmp > 0 ? a.neg_ : b_neg;
-    r.trim();
-    return r;
-  }
-
-  std::uint64_t w_[kCap];
-  int n_ = 0;
-  bool neg_ = false;
-};
-
-// Exponent of the unit in the last place of x (x != 0): x is an integer multiple of 2^result.
-int ulp_exponent(double x) {
-  int e = 0;
-  std::frexp(x, &e);
-  return e - 53;
-}
-
-int min_ulp_exponent(std::initializer_list<double> values) {
-  int emin = 1 << 20;
-  for (double v : values)
-    if (v != 0) emin = std::min(emin, ulp_exponent(v));
-  return emin;
-}
 
 // The points of one call scaled by exact_scale_exponent (predicates/predicates.hpp), where the filter
 // fails only for their size: then it decides as usual, and only true near-degeneracies reach
@@ -340,65 +216,6 @@ double orient3d_value_exact(const Point3& a, const Point3& b, const Point3& c, c
   int e = 0, exponent = 0;
   const double m = orient3d_big(a, b, c, d, e).scaled(3 * e, exponent);
   return std::ldexp(m, exponent);
-}
-
-// The unit of a power test's integers: coordinates in units of 2^e, weights (of degree 2) in
-// units of 2^(2 e), e the least unit in the last place of a coordinate and half a weight's.
-static int power_unit(std::initializer_list<const Weighted*> points) {
-  int e = 1 << 20;
-  for (const Weighted* p : points) {
-    e = std::min(e, min_ulp_exponent({p->p.x, p->p.y}));
-    if (p->w != 0) e = std::min(e, static_cast<int>(std::floor(ulp_exponent(p->w) / 2.0)));
-  }
-  return e;
-}
-
-int power_exact(const Weighted& a, const Weighted& b, const Weighted& c, const Weighted& d) {
-  const int e = power_unit({&a, &b, &c, &d});
-  auto big = [e](double v) { return BigInt::from_double(v, e); };
-  auto weight = [e](double w) { return BigInt::from_double(w, 2 * e); };
-  const BigInt dx = big(d.p.x), dy = big(d.p.y), dw = weight(d.w);
-  const BigInt adx = big(a.p.x) - dx, ady = big(a.p.y) - dy, bdx = big(b.p.x) - dx, bdy = big(b.p.y) - dy;
-  const BigInt cdx = big(c.p.x) - dx, cdy = big(c.p.y) - dy;
-  const BigInt alift = adx * adx + ady * ady - (weight(a.w) - dw);
-  const BigInt blift = bdx * bdx + bdy * bdy - (weight(b.w) - dw);
-  const BigInt clift = cdx * cdx + cdy * cdy - (weight(c.w) - dw);
-  return (alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady)).sign();
-}
-
-int power_tie(const Weighted* const p[4], const std::uint32_t rank[4]) {
-  const Point &a = p[0]->p, &b = p[1]->p, &c = p[2]->p, &d = p[3]->p;
-  // The cofactors of the lift in rows a, b, c, d (incircle_tie's), largest rank first.
-  int order[4] = {0, 1, 2, 3};
-  std::sort(order, order + 4, [&](int i, int j) { return rank[i] > rank[j]; });
-  for (const int i : order) {
-    const int f = i == 0 ? orient2d(b, c, d)
-        : i == 1         ? -orient2d(a, c, d)
-        : i == 2         ? orient2d(a, b, d)
-                         : -orient2d(a, b, c);
-    if (f != 0) return f;
-  }
-  return 0;  // only for a degenerate (a, b, c), which callers never pass
-}
-
-Point power_centre_exact(const Weighted& a, const Weighted& b, const Weighted& c) {
-  const int e = power_unit({&a, &b, &c});
-  auto big = [e](double v) { return BigInt::from_double(v, e); };
-  auto weight = [e](double w) { return BigInt::from_double(w, 2 * e); };
-  const BigInt ax = big(a.p.x), ay = big(a.p.y), aw = weight(a.w);
-  const BigInt bx = big(b.p.x) - ax, by = big(b.p.y) - ay, cx = big(c.p.x) - ax, cy = big(c.p.y) - ay;
-  const BigInt b2 = bx * bx + by * by - (weight(b.w) - aw), c2 = cx * cx + cy * cy - (weight(c.w) - aw);
-  const BigInt half = bx * cy - by * cx, d = half + half;
-  // Each coordinate (a d + n) / d, in units of 2^e: the quotient of the two rounded.
-  int de = 0;
-  const double dm = d.scaled(0, de);
-  if (dm == 0) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-  auto quotient = [&](const BigInt& n) {
-    int ne = 0;
-    const double nm = n.scaled(0, ne);
-    return nm == 0 ? 0.0 : std::ldexp(nm / dm, ne - de + e);
-  };
-  return {quotient(ax * d + cy * b2 - by * c2), quotient(ay * d + bx * c2 - cx * b2)};
 }
 
 int orient3d_tie(const Point3* const p[4], const std::uint32_t rank[4]) {
