@@ -7,6 +7,7 @@
     >>> ridt.griddata(points, values, (gx, gy))       # scipy.interpolate's, on threads
     >>> ridt.Voronoi(points).regions                  # scipy.spatial's
     >>> ridt.ConvexHull(points).vertices              # scipy.spatial's, exact
+    >>> ridt.PowerDiagram(points, weights).regions    # Laguerre cells of weighted points
     >>> ridt.terrain.dem(ridt.terrain.read_las("tile.las").xyz, resolution=1.0)   # a DEM
 
 Every result is exactly the Delaunay triangulation of the distinct points (cocircular ties
@@ -24,6 +25,7 @@ from ._sphere import SphericalLinearInterpolator, SphericalVoronoi, check_sphere
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
+from ._regular import PowerDiagram, RegularTriangulation
 from . import terrain, triangle
 
 __version__ = "0.1.0"
@@ -41,7 +43,9 @@ __all__ = [
     "LinearNDInterpolator",
     "NaturalNeighborInterpolator",
     "NearestNDInterpolator",
+    "PowerDiagram",
     "RefinementWarning",
+    "RegularTriangulation",
     "SizeField",
     "SphericalLinearInterpolator",
     "SphericalVoronoi",

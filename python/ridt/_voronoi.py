@@ -86,10 +86,14 @@ class Voronoi(_api.PlanarPoints):
                                                          furthest_site=self.furthest_site)
         if self._tri.warning:
             raise _core.InputError(f"ridt.Voronoi: {self._tri.warning}: no Voronoi vertex")
-        self.vertices, offsets, self._cell_vertices, point_cell, ridges = _core.voronoi(points, self._tri, threads)
+        self._adopt(_core.voronoi(points, self._tri, threads), at_infinity)
+
+    def _adopt(self, diagram: tuple, at_infinity: bool) -> None:
+        # _core.voronoi's (or _core.power_diagram's) arrays made scipy's attributes.
+        self.vertices, offsets, self._cell_vertices, point_cell, ridges = diagram
         ridge_points, self._ridge_vertices = ridges[:, :2], ridges[:, 2:]  # views, no copy
-        # The points with no region of the farthest-point diagram (those inside the hull) get an
-        # empty one each, as in scipy; with Qz, region 0 is the point at infinity's, empty.
+        # The points with no region of the farthest-point diagram (those inside the hull) or of
+        # the power diagram (those hidden) get an empty one each, as in scipy; with Qz, region 0 is the point at infinity's, empty.
         lacking = np.flatnonzero(point_cell < 0)
         if len(lacking):
             point_cell[lacking] = len(offsets) - 1 + np.arange(len(lacking), dtype=point_cell.dtype)

@@ -64,7 +64,7 @@ class RegularCheck {
     if (w_.size() != pts_.size()) throw InputError("check_regular: one weight a point");
     for (const VertexId v : tris_)
       if (v >= pts_.size()) throw InputError("check_regular: a vertex is not one of the points");
-    ranks();
+    sort();
     for (std::size_t t = 0; t < count_; ++t)
       if (orient2d(pts_[tris_[3 * t]], pts_[tris_[3 * t + 1]], pts_[tris_[3 * t + 2]]) <= 0)
         problems_.add("triangle ", t, " is not counter-clockwise or is degenerate");
@@ -87,20 +87,15 @@ class RegularCheck {
  private:
   Weighted at(VertexId v) const { return {pts_[v], w_[v]}; }
 
-  // Each point's rank among the distinct weighted points (weighted_less), copies the same.
-  void ranks() {
+  // The points in weighted_less order, copies by index.
+  void sort() {
     sorted_.resize(pts_.size());
     std::iota(sorted_.begin(), sorted_.end(), VertexId{0});
     std::sort(sorted_.begin(), sorted_.end(),
               [&](VertexId a, VertexId b) { return detail::weighted_less(at(a), at(b)) || (at(a) == at(b) && a < b); });
-    rank_.assign(pts_.size(), 0);
-    for (std::size_t k = 0, r = 0; k < sorted_.size(); ++k) {
-      if (k > 0 && !(at(sorted_[k - 1]) == at(sorted_[k]))) ++r;
-      rank_[sorted_[k]] = static_cast<std::uint32_t>(r);
-    }
   }
   bool above(VertexId a, VertexId b, VertexId c, VertexId d) const {
-    return detail::power_sos(at(a), at(b), at(c), at(d), rank_[a], rank_[b], rank_[c], rank_[d]) < 0;
+    return detail::power_sos(at(a), at(b), at(c), at(d)) < 0;
   }
 
   // Each directed edge once; each interior edge locally regular; the neighbours found.
@@ -240,7 +235,6 @@ class RegularCheck {
   std::span<const VertexId> tris_;
   std::size_t count_;
   std::vector<VertexId> sorted_;
-  std::vector<std::uint32_t> rank_;
   std::vector<std::int32_t> neighbour_;
   std::vector<std::pair<VertexId, VertexId>> boundary_;
   std::vector<std::uint8_t> is_vertex_;

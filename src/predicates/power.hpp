@@ -67,19 +67,17 @@ int power_exact(const Weighted& a, const Weighted& b, const Weighted& c, const W
 }
 
 /// The power test under the perturbation, where power() is 0: each lift raised by an
-/// infinitesimal that grows with the point's rank in weighted_less's order (given: rank, four
-/// distinct numbers), so the sign is the cofactor of the largest-ranked point whose cofactor is
-/// not 0, as incircle_tie for equal weights (the same order and the same signs: with equal
-/// weights the regular triangulation is the Delaunay kernel's, tie for tie). Never 0 where
-/// (a, b, c) is a proper triangle.
-int power_tie(const Weighted* const p[4], const std::uint32_t rank[4]);
+/// infinitesimal that grows with the point's place in weighted_less's order, so the sign is the
+/// cofactor of the greatest point whose cofactor is not 0, as incircle_tie for equal weights
+/// (the same order and the same signs: with equal weights the regular triangulation is the
+/// Delaunay kernel's, tie for tie). The four must differ; never 0 where (a, b, c) is a proper
+/// triangle.
+int power_tie(const Weighted& a, const Weighted& b, const Weighted& c, const Weighted& d);
 
-[[gnu::always_inline]] inline int power_sos(const Weighted& a, const Weighted& b, const Weighted& c, const Weighted& d,
-                                            std::uint32_t ra, std::uint32_t rb, std::uint32_t rc, std::uint32_t rd) {
-  if (const int s = power(a, b, c, d); s != 0) return s;
-  const Weighted* p[4] = {&a, &b, &c, &d};
-  const std::uint32_t rank[4] = {ra, rb, rc, rd};
-  return power_tie(p, rank);
+[[gnu::always_inline]] inline int power_sos(const Weighted& a, const Weighted& b, const Weighted& c,
+                                            const Weighted& d) {
+  const int s = power(a, b, c, d);
+  return s != 0 ? s : power_tie(a, b, c, d);
 }
 
 Point power_centre_exact(const Weighted& a, const Weighted& b, const Weighted& c);

@@ -42,16 +42,16 @@ int power_exact(const Weighted& a, const Weighted& b, const Weighted& c, const W
   return (alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady)).sign();
 }
 
-int power_tie(const Weighted* const p[4], const std::uint32_t rank[4]) {
-  const Point &a = p[0]->p, &b = p[1]->p, &c = p[2]->p, &d = p[3]->p;
-  // The cofactors of the lift in rows a, b, c, d (incircle_tie's), largest rank first.
+int power_tie(const Weighted& a, const Weighted& b, const Weighted& c, const Weighted& d) {
+  // The cofactors of the lift in rows a, b, c, d (incircle_tie's), the greatest point first.
+  const Weighted* p[4] = {&a, &b, &c, &d};
   int order[4] = {0, 1, 2, 3};
-  std::sort(order, order + 4, [&](int i, int j) { return rank[i] > rank[j]; });
+  std::sort(order, order + 4, [&](int i, int j) { return weighted_less(*p[j], *p[i]); });
   for (const int i : order) {
-    const int f = i == 0 ? orient2d(b, c, d)
-        : i == 1         ? -orient2d(a, c, d)
-        : i == 2         ? orient2d(a, b, d)
-                         : -orient2d(a, b, c);
+    const int f = i == 0 ? orient2d(b.p, c.p, d.p)
+        : i == 1         ? -orient2d(a.p, c.p, d.p)
+        : i == 2         ? orient2d(a.p, b.p, d.p)
+                         : -orient2d(a.p, b.p, c.p);
     if (f != 0) return f;
   }
   return 0;  // only for a degenerate (a, b, c), which callers never pass

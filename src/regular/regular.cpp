@@ -19,6 +19,7 @@
 // regular triangulation: Edelsbrunner's acyclicity theorem), stopped where it would enter a
 // wall: the point lies beyond that hull edge.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <numeric>
@@ -26,6 +27,7 @@
 #include <string>
 
 #include "order/order.hpp"
+#include "order/random.hpp"
 #include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/regular.hpp"
@@ -38,15 +40,7 @@ namespace ridt {
 namespace detail {
 namespace {
 
-// The distinct weighted points in weighted_less order (their ranks), the input index of each,
-// and the copies dropped.
-struct Distinct {
-  std::vector<Weighted> points;
-  std::vector<VertexId> input;
-  std::vector<Duplicate> duplicates;
-};
-
-Distinct distinct_points(std::span<const Point> points, std::span<const double> weights, unsigned threads) {
+void check_input(std::span<const Point> points, std::span<const double> weights) {
   if (points.size() >= kMaxSlotPoints) throw InputError("triangulate_regular: too many points");
   if (weights.size() != points.size())
     throw InputError("triangulate_regular: " + std::to_string(weights.size()) + " weights for " +
@@ -57,57 +51,44 @@ Distinct distinct_points(std::span<const Point> points, std::span<const double> 
     if (!std::isfinite(weights[i]))
       throw InputError("triangulate_regular: the weight of point " + std::to_string(i) + " is not finite");
   }
-  struct Indexed {
-    Weighted p;
-    VertexId i;
-  };
-  std::vector<Indexed> sorted(points.size());
-  parallel_for(points.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) sorted[i] = {{points[i], weights[i]}, static_cast<VertexId>(i)};
-  });
-  parallel_sort(sorted.begin(), sorted.end(), threads, [](const Indexed& a, const Indexed& b) {
-    return weighted_less(a.p, b.p) || (a.p == b.p && a.i < b.i);
-  });
-  Distinct d;
-  d.points.reserve(points.size()), d.input.reserve(points.size());
-  for (const Indexed& e : sorted) {
-    if (!d.input.empty() && d.points.back() == e.p) {
-      d.duplicates.push_back({e.i, d.input.back()});
-      continue;
-    }
-    d.input.push_back(e.i);
-    d.points.push_back(e.p);
-  }
-  std::sort(d.duplicates.begin(), d.duplicates.end(),
-            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
-  return d;
 }
 
 class Builder {
  public:
-  Builder(const std::vector<Weighted>& p, unsigned threads)
-      : p_(p), n_(static_cast<VertexId>(p.size())), infinite_(n_), threads_(threads) {}
+  Builder(std::span<const Point> points, std::span<const double> weights, unsigned threads)
+      : points_(points),
+        weights_(weights),
+        n_(static_cast<VertexId>(points.size())),
+        infinite_(n_),
+        threads_(threads) {}
 
   // Vertex ids are places in the insertion order (the first triangle's three first), so that
-  // points inserted one after another lie together in memory; rank_ maps them back, and the
+  // points inserted one after another lie together in memory; input_ maps them back, and the
   // vertex at infinity is n_.
   void run() {
-    hidden_.assign(n_, 0);
     const std::array<VertexId, 3> first = first_triangle();
-    const std::vector<VertexId> order = insertion_order(first);
-    rank_.assign(first.begin(), first.end());
-    rank_.insert(rank_.end(), order.begin(), order.end());
+    // A biased randomized insertion order along the Hilbert curve (brio_order, the kernel's).
+    const std::vector<std::uint32_t> order = brio_order(points_.data(), n_, 0x5eed, threads_);
+    input_.assign(first.begin(), first.end());
+    input_.reserve(n_);
+    for (const std::uint32_t i : order)
+      if (i != first[0] && i != first[1] && i != first[2]) input_.push_back(i);
     q_.resize(n_);
-    for (VertexId v = 0; v < n_; ++v) q_[v] = p_[rank_[v]];
+    parallel_for(n_, threads_, 65536, [&](std::size_t from, std::size_t to) {
+      for (std::size_t v = from; v < to; ++v) q_[v] = {points_[input_[v]], weights_[input_[v]]};
+    });
+    hidden_.assign(n_, 0);
     start();
     for (VertexId v = 3; v < n_; ++v) insert(v);
   }
 
   const Tds& tds() const { return tds_; }
   VertexId infinite() const { return infinite_; }
-  const std::vector<VertexId>& rank() const { return rank_; }
+  /// Per vertex id: its input index (the least of its copies'), whether it is hidden.
+  const std::vector<VertexId>& input() const { return input_; }
   const std::vector<std::uint8_t>& hidden() const { return hidden_; }
-  const std::vector<std::uint32_t>& curve() const { return curve_; }
+  /// Copies found: (the copy's vertex id, the vertex id it coincides with).
+  const std::vector<std::pair<VertexId, VertexId>>& copies() const { return copies_; }
 
  private:
   // Three points far from collinear: the first, the farthest from it, the farthest from their
@@ -116,31 +97,30 @@ class Builder {
   std::array<VertexId, 3> first_triangle() const {
     if (n_ < 3) throw InputError("triangulate_regular: fewer than three distinct points");
     double largest = 0;
-    for (const Weighted& q : p_) largest = std::max({largest, std::fabs(q.p.x), std::fabs(q.p.y)});
-    const int e = largest > 0 ? std::ilogb(largest) : 0;
-    auto at = [&](VertexId v) { return Point{std::ldexp(p_[v].p.x, -e), std::ldexp(p_[v].p.y, -e)}; };
+    for (const Point& q : points_) largest = std::max({largest, std::fabs(q.x), std::fabs(q.y)});
+    // Scaled by a power of two to at most 1: no square overflows (one that underflows scores 0).
+    const double f = largest > 0 ? std::ldexp(1.0, -std::ilogb(largest) - 1) : 1.0;
     auto best = [&](auto&& score) {
       VertexId arg = 0;
       double top = -1;
       for (VertexId v = 0; v < n_; ++v)
-        if (const double s = score(v); s > top) top = s, arg = v;
+        if (const double s = score(f * points_[v].x, f * points_[v].y); s > top) top = s, arg = v;
       return arg;
     };
     const VertexId a = 0;
-    const Point pa = at(a);
-    const VertexId b = best([&](VertexId v) { return std::hypot(at(v).x - pa.x, at(v).y - pa.y); });
-    const Point pb = at(b);
-    VertexId c = best(
-        [&](VertexId v) { return std::fabs((pb.x - pa.x) * (at(v).y - pa.y) - (pb.y - pa.y) * (at(v).x - pa.x)); });
-    if (orient2d(p_[a].p, p_[b].p, p_[c].p) == 0) {
+    const double ax = f * points_[a].x, ay = f * points_[a].y;
+    const VertexId b = best([&](double x, double y) { return (x - ax) * (x - ax) + (y - ay) * (y - ay); });
+    const double bx = f * points_[b].x - ax, by = f * points_[b].y - ay;
+    VertexId c = best([&](double x, double y) { return std::fabs(bx * (y - ay) - by * (x - ax)); });
+    if (orient2d(points_[a], points_[b], points_[c]) == 0) {
       c = n_;
       for (VertexId v = 0; v < n_ && c == n_; ++v)
-        if (orient2d(p_[a].p, p_[b].p, p_[v].p) != 0) c = v;
+        if (orient2d(points_[a], points_[b], points_[v]) != 0) c = v;
       if (c == n_)
-        throw InputError(p_[a].p == p_[b].p ? "triangulate_regular: fewer than three distinct points"
-                                            : "triangulate_regular: all points are collinear");
+        throw InputError(points_[a] == points_[b] ? "triangulate_regular: fewer than three distinct points"
+                                                  : "triangulate_regular: all points are collinear");
     }
-    return orient2d(p_[a].p, p_[b].p, p_[c].p) > 0 ? std::array{a, b, c} : std::array{a, c, b};
+    return orient2d(points_[a], points_[b], points_[c]) > 0 ? std::array{a, b, c} : std::array{a, c, b};
   }
 
   // The first triangle (0, 1, 2) and its three walls, linked, in arrays with room for every
@@ -162,37 +142,12 @@ class Builder {
     stamp_.assign(2 * std::size_t{n_} + 2, 0);
   }
 
-  // The points but the first three: a random permutation (seeded: the same every run) in rounds
-  // of doubling size, each round along a Hilbert curve over the points' bounding square.
-  std::vector<VertexId> insertion_order(const std::array<VertexId, 3>& first) {
-    std::vector<Point> where(n_);
-    for (VertexId v = 0; v < n_; ++v) where[v] = p_[v].p;
-    curve_ = hilbert_keys(where.data(), n_, threads_);
-    std::vector<VertexId> order;
-    order.reserve(n_);
-    for (VertexId v = 0; v < n_; ++v)
-      if (std::find(first.begin(), first.end(), v) == first.end()) order.push_back(v);
-    std::mt19937_64 random(0x5eed);
-    std::shuffle(order.begin(), order.end(), random);
-    std::vector<std::pair<std::uint32_t, VertexId>> keyed(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {curve_[order[i]], order[i]};
-    std::size_t end = keyed.size();
-    while (end > 0) {
-      const std::size_t begin = end > 64 ? end / 2 : 0;
-      parallel_sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin),
-                    keyed.begin() + static_cast<std::ptrdiff_t>(end), threads_, std::less<>());
-      end = begin;
-    }
-    for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
-    return order;
-  }
-
   // The corner of face w that is the vertex at infinity, or -1.
   int infinite_corner(const VertexId* w) const {
     return w[0] == infinite_ ? 0 : w[1] == infinite_ ? 1 : w[2] == infinite_ ? 2 : -1;
   }
   bool power_sees(VertexId a, VertexId b, VertexId c, VertexId v) const {
-    return power_sos(q_[a], q_[b], q_[c], q_[v], rank_[a], rank_[b], rank_[c], rank_[v]) > 0;
+    return power_sos(q_[a], q_[b], q_[c], q_[v]) > 0;
   }
   // Whether face w (a slot's corners) sees point v: see the file's comment.
   bool sees(const VertexId* w, VertexId v) const {
@@ -240,6 +195,9 @@ class Builder {
   void insert(VertexId v) {
     bool outside = false;
     const TriangleId t = locate(v, outside);
+    if (!outside)
+      for (int i = 0; i < 3; ++i)
+        if (const VertexId w = tds_.vertex(t, i); q_[w] == q_[v]) return copies_.emplace_back(v, w), void();
     if (!outside && !sees(tds_.corners(t), v)) {
       hidden_[v] = 1;
       return;
@@ -307,11 +265,13 @@ class Builder {
     s.size = k - 2, s.edges = k;
   }
 
-  const std::vector<Weighted>& p_;  // by rank
+  std::span<const Point> points_;
+  std::span<const double> weights_;
   VertexId n_, infinite_;
   unsigned threads_;
   std::vector<Weighted> q_;  // by vertex id
-  std::vector<VertexId> rank_;
+  std::vector<VertexId> input_;
+  std::vector<std::pair<VertexId, VertexId>> copies_;
   Tds tds_;
   TriangleId last_ = 0;
   CavityScratch scratch_;
@@ -321,12 +281,11 @@ class Builder {
   std::vector<std::uint8_t> hidden_;
   std::vector<CavityScratch::Boundary> edges_;
   std::vector<VertexId> inside_;
-  std::vector<std::uint32_t> curve_;
 };
 
 // The hull, counter-clockwise from its lexicographically least vertex: each wall (p, q, inf)
 // runs p -> q, so the hull runs q -> p.
-std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, const std::vector<VertexId>& rank,
+std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const Point> points,
                               const std::vector<VertexId>& input) {
   std::vector<std::pair<VertexId, VertexId>> next;  // (q, p)
   for (TriangleId t = 0; t < tds.slots(); ++t)
@@ -335,14 +294,63 @@ std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, const std::vect
   std::sort(next.begin(), next.end());
   VertexId from = next[0].first;
   for (const auto& e : next)
-    if (rank[e.first] < rank[from]) from = e.first;
+    if (lex_less(points[input[e.first]], points[input[from]])) from = e.first;
   std::vector<VertexId> hull;
   for (VertexId v = from; hull.size() < next.size();) {
-    hull.push_back(input[rank[v]]);
+    hull.push_back(input[v]);
     v = std::lower_bound(next.begin(), next.end(), std::make_pair(v, VertexId{0}))->second;
     if (v == from) break;
   }
   return hull;
+}
+
+// Copies found at insertion (a point at a vertex's place with its weight) and hidden points
+// that are copies of each other (a copy of a point hidden before it came): each group of equal
+// weighted points among them, found by a hash of their values and then compared, keeps its
+// least input index, the vertex's (relabelled) or a hidden point's; the others are duplicates.
+struct Settled {
+  std::vector<Duplicate> duplicates;
+  std::vector<VertexId> hidden;
+};
+
+Settled settle(std::span<const Point> points, std::span<const double> weights,
+               const std::vector<std::pair<VertexId, VertexId>>& copies, const std::vector<std::uint8_t>& is_hidden,
+               std::vector<VertexId>& input, unsigned threads) {
+  auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x); };
+  auto hash = [&](VertexId i) { return mix64(bits(points[i].x) ^ mix64(bits(points[i].y) ^ mix64(bits(weights[i])))); };
+  std::vector<std::pair<std::uint64_t, VertexId>> keyed;
+  for (const auto& [c, w] : copies)
+    keyed.emplace_back(hash(input[c]), input[c]), keyed.emplace_back(hash(input[w]), input[w]);
+  Settled out;
+  for (VertexId v = 0; v < is_hidden.size(); ++v)
+    if (is_hidden[v]) keyed.emplace_back(hash(input[v]), input[v]), out.hidden.push_back(input[v]);
+  parallel_sort(keyed.begin(), keyed.end(), threads, std::less<>());
+  keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
+  std::vector<std::pair<VertexId, VertexId>> least;  // (index, its group's least), where they differ
+  auto same = [&](VertexId a, VertexId b) { return points[a] == points[b] && weights[a] == weights[b]; };
+  for (std::size_t k = 0, g = 0; k < keyed.size(); k = g) {
+    for (g = k; g < keyed.size() && keyed[g].first == keyed[k].first;) ++g;
+    for (std::size_t a = k; a < g; ++a) {  // (a run is a group but for a collision of the hash)
+      VertexId low = keyed[a].second;
+      for (std::size_t b = k; b < g; ++b)
+        if (same(keyed[a].second, keyed[b].second)) low = std::min(low, keyed[b].second);
+      if (low != keyed[a].second)
+        least.emplace_back(keyed[a].second, low), out.duplicates.push_back({keyed[a].second, low});
+    }
+  }
+  std::sort(least.begin(), least.end());
+  auto dropped = [&](VertexId i) {
+    const auto it = std::lower_bound(least.begin(), least.end(), std::make_pair(i, VertexId{0}));
+    return it != least.end() && it->first == i ? it->second : i;
+  };
+  for (const auto& [c, w] : copies) input[w] = dropped(input[w]);
+  // A group with a hidden member is hidden (a vertex hidden after its copies came), as its least.
+  for (VertexId& i : out.hidden) i = dropped(i);
+  std::sort(out.hidden.begin(), out.hidden.end());
+  out.hidden.erase(std::unique(out.hidden.begin(), out.hidden.end()), out.hidden.end());
+  std::sort(out.duplicates.begin(), out.duplicates.end(),
+            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
+  return out;
 }
 
 }  // namespace
@@ -352,44 +360,40 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
                                          unsigned threads) {
   using namespace detail;
   threads = thread_count(threads);
-  Distinct d = distinct_points(points, weights, threads);
-  Builder builder(d.points, threads);
+  check_input(points, weights);
+  Builder builder(points, weights, threads);
   builder.run();
   const Tds& tds = builder.tds();
   const VertexId inf = builder.infinite();
-  const std::vector<VertexId>& rank = builder.rank();
-  // The finite faces in the curve's order of their least corner: a point's triangles lie close
-  // together in the arrays.
-  std::vector<std::pair<std::uint32_t, TriangleId>> live;
-  live.reserve(tds.slots());
-  const std::vector<std::uint32_t>& key = builder.curve();
+  std::vector<VertexId> input = builder.input();
+  RegularTriangulation out;
+  Settled settled = settle(points, weights, builder.copies(), builder.hidden(), input, threads);
+  out.duplicates = std::move(settled.duplicates);
+  out.hidden = std::move(settled.hidden);
+  // The finite faces in their slots' order (the fans of successive insertions, near each other).
+  std::vector<std::int32_t> id(tds.slots(), -1);
+  std::int32_t count = 0;
   for (TriangleId t = 0; t < tds.slots(); ++t) {
     const VertexId* c = tds.corners(t);
-    if (c[0] != kNoVertex && c[0] != inf && c[1] != inf && c[2] != inf)
-      live.push_back({std::min({key[rank[c[0]]], key[rank[c[1]]], key[rank[c[2]]]}), t});
+    if (c[0] != kNoVertex && c[0] != inf && c[1] != inf && c[2] != inf) id[t] = count++;
   }
-  parallel_sort(live.begin(), live.end(), threads, std::less<>());
-  RegularTriangulation out;
-  std::vector<std::int32_t> id(tds.slots(), -1);
-  for (std::size_t k = 0; k < live.size(); ++k) id[live[k].second] = static_cast<std::int32_t>(k);
-  resize_present(out.triangles, 3 * live.size(), threads);
-  resize_present(out.neighbors, 3 * live.size(), threads);
-  parallel_for(live.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k)
+  resize_present(out.triangles, 3 * std::size_t(count), threads);
+  resize_present(out.neighbors, 3 * std::size_t(count), threads);
+  parallel_for(tds.slots(), threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t t = from; t < to; ++t) {
+      if (id[t] < 0) continue;
+      const std::size_t k = static_cast<std::size_t>(id[t]);
       for (int i = 0; i < 3; ++i) {
-        out.triangles[3 * k + i] = d.input[rank[tds.vertex(live[k].second, i)]];
-        out.neighbors[3 * k + i] = id[triangle_of(tds.link(live[k].second, i))];
+        out.triangles[3 * k + i] = input[tds.vertex(static_cast<TriangleId>(t), i)];
+        out.neighbors[3 * k + i] = id[triangle_of(tds.link(static_cast<TriangleId>(t), i))];
       }
+    }
   });
-  out.hull = hull_of(tds, inf, rank, d.input);
-  for (VertexId v = 0; v < d.points.size(); ++v)
-    if (builder.hidden()[v]) out.hidden.push_back(d.input[rank[v]]);
-  std::sort(out.hidden.begin(), out.hidden.end());
-  out.duplicates = std::move(d.duplicates);
+  out.hull = hull_of(tds, inf, points, input);
   out.stats.threads = 1;
   out.stats.points = points.size();
-  out.stats.distinct = d.points.size();
   out.stats.duplicates = out.duplicates.size();
+  out.stats.distinct = points.size() - out.duplicates.size();
   return out;
 }
 

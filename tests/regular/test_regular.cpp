@@ -139,6 +139,27 @@ TEST(Regular, CopiesAndPointsAtOnePlace) {
   EXPECT_FALSE(std::binary_search(t.hidden.begin(), t.hidden.end(), 201u));
 }
 
+TEST(Regular, CopiesOfHiddenPointsAreDuplicatesTheLeastIndexKept) {
+  // Copies before and after their point, some of them hidden at once, some covered later by a
+  // heavy point given last: every copy a duplicate of the least index of its group, which is a
+  // vertex or hidden, never both, never neither.
+  Weighted in = random_weighted(400, 31, 0.0005);
+  const std::size_t n = in.points.size();
+  for (std::size_t i = 0; i < 40; ++i) in.points.push_back(in.points[i]), in.weights.push_back(in.weights[i]);
+  in.points.insert(in.points.begin(), in.points[45]), in.weights.insert(in.weights.begin(), in.weights[45]);
+  in.points.push_back({0.5, 0.5}), in.weights.push_back(0.05);  // covers the middle
+  const RegularTriangulation t = checked(in);
+  EXPECT_EQ(t.duplicates.size(), 41u);
+  std::set<VertexId> vertices(t.triangles.begin(), t.triangles.end());
+  for (const Duplicate& d : t.duplicates) {
+    EXPECT_LT(d.kept, d.dropped);
+    EXPECT_EQ(in.points[d.kept], in.points[d.dropped]);
+    EXPECT_NE(vertices.count(d.kept), std::binary_search(t.hidden.begin(), t.hidden.end(), d.kept)) << d.kept;
+    EXPECT_FALSE(vertices.count(d.dropped) || std::binary_search(t.hidden.begin(), t.hidden.end(), d.dropped));
+  }
+  EXPECT_EQ(vertices.size() + t.hidden.size() + t.duplicates.size(), n + 42);
+}
+
 TEST(Regular, CollinearHullPointsAndHiddenOnesOnTheHull) {
   // A square's sides full of points; some of those on the bottom side made light enough that
   // their neighbours on the side hide them.
