@@ -957,5 +957,39 @@ expect 2 "sphere: nan" -- "$ridt" sphere <(printf '0 0 1\nnan 0 1\n') -o "$dir/n
 expect 2 "sphere: fewer than four" -- "$ridt" sphere <(printf '0 0\n90 0\n0 90\n') -o "$dir/few.off"
 absent "$dir/few.off"
 
+# ridt regular: weighted points as x y w rows and as a .node's first attribute; the power
+# diagram; hidden points and copies; bad input.
+/usr/bin/python3 -c "
+import random
+random.seed(5)
+with open('$dir/weighted.txt', 'w') as f:
+    for i in range(1500):
+        f.write(f'{random.random()} {random.random()} {random.random() * 0.003}\\n')
+    f.write('0.25 0.75 0.001\\n0.25 0.75 0.001\\n')
+"
+expect 0 "regular of x y w rows" -- "$ridt" regular "$dir/weighted.txt" -o "$dir/regular.ele" --power "$dir/power.svg" \
+  --hidden "$dir/hidden.txt" --check --threads 2
+stderr_has "exactly regular"
+stderr_has "1 duplicate point dropped"
+[ -s "$dir/power.svg" ] && pass || fail "regular: the power diagram written"
+/usr/bin/python3 -c "
+import sys
+tris = [list(map(int, l.split()[1:])) for l in list(open(sys.argv[1]))[1:] if l.strip() and not l.startswith('#')]
+hidden = [int(l) for l in open(sys.argv[2])]
+used = {v for t in tris for v in t}
+assert hidden and not used & set(hidden), 'hidden points are no vertices'
+assert len(used) + len(hidden) + 1 == 1502, (len(used), len(hidden))
+" "$dir/regular.ele" "$dir/hidden.txt" && pass || fail "regular: every point a vertex, hidden or a copy"
+printf '4 2 1 0\n1 1 1 0\n2 0 0 20\n3 4 0 0\n4 0 4 0\n' >"$dir/weighted.node"
+expect 0 "regular of a .node's first attribute" -- "$ridt" regular "$dir/weighted.node" -o "$dir/node.ele" \
+  --hidden "$dir/node_hidden.txt" --check
+[ "$(cat "$dir/node_hidden.txt")" = "1" ] && pass || fail "regular: the .node's point 1 hidden by point 2's weight"
+expect 2 "regular: collinear" -- "$ridt" regular <(printf '0 0 0\n1 1 0\n2 2 1\n') -o "$dir/col.ele"
+stderr_has "collinear"
+absent "$dir/col.ele"
+expect 2 "regular: two columns" -- "$ridt" regular <(printf '0 0\n1 0\n0 1\n') -o "$dir/two.ele"
+expect 2 "regular: a weight that is not finite" -- "$ridt" regular <(printf '0 0 0\n1 0 inf\n0 1 0\n') -o "$dir/inf.ele"
+expect 2 "regular: a .node without attributes" -- "$ridt" regular <(printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n') -o "$dir/na.ele"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

@@ -8,6 +8,7 @@
 //   ridt tin INPUT.las|.csv|.gpkg -o OUT.gpkg|.shp|.ply [--class 2]
 //   ridt dem INPUT.las|.csv|.gpkg -o DEM.tif --resolution R [--method M] [--max-edge L]
 //   ridt sphere POINTS -o OUT.off [--voronoi CELLS.off] [--areas AREAS.txt] [--check]
+//   ridt regular WEIGHTED -o OUT.ele [--power CELLS.svg] [--hidden FILE] [--check]
 // Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage, 3 an
 // internal error.
 
@@ -93,9 +94,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version());
-  const std::vector<Command> commands = {add_triangulate(app), add_generate(app), add_check(app), add_voronoi(app),
-                                         add_interpolate(app), add_mesh(app),     add_tin(app),   add_dem(app),
-                                         add_sphere(app),      add_formats(app)};
+  const std::vector<Command> commands = {add_triangulate(app), add_generate(app), add_check(app),  add_voronoi(app),
+                                         add_interpolate(app), add_mesh(app),     add_tin(app),    add_dem(app),
+                                         add_sphere(app),      add_regular(app),  add_formats(app)};
   if (const std::optional<int> done = parse(app, argc, argv)) return *done;
   return run(commands);
 }
