@@ -48,6 +48,19 @@ int power_exact(const Weighted& a, const Weighted& b, const Weighted& c, const W
   const double alift = asq - aw, blift = bsq - bw, clift = csq - cw;
   const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
   const double det = alift * bc + blift * ca + clift * ab;
+  // First a cheap bound: with m the largest difference and v the largest weight difference,
+  // each minor's products sum to at most 2 m^2 and each lift's terms to 2 m^2 + v, so the
+  // permanent below is at most 6 m^2 (2 m^2 + v); 1.01 covers the roundings of this bound.
+  const double m =
+      std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)), std::max(std::fabs(bdx), std::fabs(bdy))),
+               std::max(std::fabs(cdx), std::fabs(cdy)));
+  const double v = std::max(std::max(std::fabs(aw), std::fabs(bw)), std::fabs(cw));
+  const double m2 = m * m;
+  const double rough = 1.01 * (11.0 + 128.0 * kEps) * kEps * (6 * m2 * (2 * m2 + v));
+  if (rough >= 0x1p-800 && rough <= 0x1p1000) {
+    if (det > rough) return 1;
+    if (det < -rough) return -1;
+  }
   const double permanent = (std::fabs(bdx * cdy) + std::fabs(cdx * bdy)) * (asq + std::fabs(aw)) +
       (std::fabs(cdx * ady) + std::fabs(adx * cdy)) * (bsq + std::fabs(bw)) +
       (std::fabs(adx * bdy) + std::fabs(bdx * ady)) * (csq + std::fabs(cw));

@@ -82,7 +82,7 @@ class Builder {
     for (VertexId v = 3; v < n_; ++v) insert(v);
   }
 
-  const Tds& tds() const { return tds_; }
+  Tds& tds() { return tds_; }
   VertexId infinite() const { return infinite_; }
   /// Per vertex id: its input index (the least of its copies'), whether it is hidden.
   const std::vector<VertexId>& input() const { return input_; }
@@ -363,33 +363,37 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
   check_input(points, weights);
   Builder builder(points, weights, threads);
   builder.run();
-  const Tds& tds = builder.tds();
+  Tds& tds = builder.tds();
   const VertexId inf = builder.infinite();
   std::vector<VertexId> input = builder.input();
   RegularTriangulation out;
   Settled settled = settle(points, weights, builder.copies(), builder.hidden(), input, threads);
   out.duplicates = std::move(settled.duplicates);
   out.hidden = std::move(settled.hidden);
-  // The finite faces in their slots' order (the fans of successive insertions, near each other).
+  out.hull = hull_of(tds, inf, points, input);
+  // The finite faces in their slots' order (the fans of successive insertions, near each
+  // other), written over the structure's own arrays: face k of slot t >= k, so each slot is
+  // read before a later one is written over it.
   std::vector<std::int32_t> id(tds.slots(), -1);
   std::int32_t count = 0;
   for (TriangleId t = 0; t < tds.slots(); ++t) {
     const VertexId* c = tds.corners(t);
     if (c[0] != kNoVertex && c[0] != inf && c[1] != inf && c[2] != inf) id[t] = count++;
   }
-  resize_present(out.triangles, 3 * std::size_t(count), threads);
-  resize_present(out.neighbors, 3 * std::size_t(count), threads);
-  parallel_for(tds.slots(), threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t t = from; t < to; ++t) {
-      if (id[t] < 0) continue;
-      const std::size_t k = static_cast<std::size_t>(id[t]);
-      for (int i = 0; i < 3; ++i) {
-        out.triangles[3 * k + i] = input[tds.vertex(static_cast<TriangleId>(t), i)];
-        out.neighbors[3 * k + i] = id[triangle_of(tds.link(static_cast<TriangleId>(t), i))];
-      }
+  VertexId* v = tds.vertex_array().data();
+  Link* link = tds.link_array().data();
+  for (std::size_t t = 0; t < tds.slots(); ++t) {
+    if (id[t] < 0) continue;
+    const std::size_t k = static_cast<std::size_t>(id[t]);
+    for (std::size_t i = 0; i < 3; ++i) {
+      v[3 * k + i] = input[v[3 * t + i]];
+      link[3 * k + i] = id[triangle_of(link[3 * t + i])];
     }
-  });
-  out.hull = hull_of(tds, inf, points, input);
+  }
+  out.triangles = std::move(tds.vertex_array());
+  out.neighbors = std::move(tds.link_array());
+  out.triangles.resize(3 * std::size_t(count));
+  out.neighbors.resize(3 * std::size_t(count));
   out.stats.threads = 1;
   out.stats.points = points.size();
   out.stats.duplicates = out.duplicates.size();
