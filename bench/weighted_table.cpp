@@ -62,9 +62,10 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("n,weights,hidden,regular_1_s,regular_%u_s,cgal_s,delaunay_1_s,delaunay_%u_s,cgal_over_regular_1,"
-              "regular_1_over_delaunay_1\n",
-              threads, threads);
+  std::printf(
+      "n,weights,hidden,regular_1_s,regular_%u_s,cgal_s,delaunay_1_s,delaunay_%u_s,cgal_over_regular_1,"
+      "regular_1_over_delaunay_1\n",
+      threads, threads);
   for (const std::size_t n : sizes)
     for (const double scale : {1.0, 40.0}) {
       std::mt19937_64 random(n);
