@@ -295,6 +295,25 @@ def sphere_section(results):
         + table(["n", "code", "s", "× scipy"], body, ["---:", "---", "---:", "---:"]) + "\n")
 
 
+def weighted_section(results):
+    data = rows(results, "weighted.csv")
+    t = [k for k in data[0] if k.startswith("regular_") and k.endswith("_s") and k != "regular_1_s"][0]
+    d = [k for k in data[0] if k.startswith("delaunay_") and k.endswith("_s") and k != "delaunay_1_s"][0]
+    body = [[n_text(r["n"]), r["weights"], n_text(r["hidden"]), f"{float(r['regular_1_s']):.3f}",
+             f"{float(r[t]):.3f}", f"{float(r['cgal_s']):.3f}", f"{float(r['cgal_over_regular_1']):.2f}",
+             f"{float(r['delaunay_1_s']):.3f}", f"{float(r['regular_1_over_delaunay_1']):.2f}"] for r in data]
+    threads = t.split("_")[1]
+    return (
+        "## Regular (weighted Delaunay) triangulations against CGAL\n\n"
+        "`ridt::triangulate_regular` against CGAL's `Regular_triangulation_2` (range insert, which sorts "
+        "along a curve) on uniform points with weights uniform in [0, s/n) (light: s = 1; heavy: s = 40, "
+        "most points hidden), in process, interleaved; the floor: `ridt::triangulate` of the same points "
+        "without weights (`bench/weighted_table.cpp`).\n\n"
+        + table(["n", "weights", "hidden", "ridt 1 thread s", f"ridt {threads} threads s", "CGAL s",
+                 "CGAL / ridt", "unweighted 1 thread s", "ridt / unweighted"], body,
+                ["---:", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:"]) + "\n")
+
+
 def constrained_section(results):
     """ridt_bench_constrained's rows (constrained.csv) and the whole-process page beside them."""
     data = rows(results, "constrained.csv")
@@ -366,7 +385,8 @@ def main():
         "taken in the same run, not seconds across runs.\n")
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
              threads_section(args.results), table3_section(args.results), python_section(args.results),
-             interpolate_section(args.results), sphere_section(args.results), constrained_section(args.results),
+             interpolate_section(args.results), sphere_section(args.results), weighted_section(args.results),
+             constrained_section(args.results),
              terrain_section(args.results),
              out_of_core_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"

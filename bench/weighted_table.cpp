@@ -3,7 +3,7 @@
 // kernels in process, interleaved, each figure the median of --reps. Weights are uniform in
 // [0, scale / n): `light` (scale 1, few points hidden) and `heavy` (scale 40, about a fifth).
 //
-//   ridt_bench_weighted [--sizes 100000,1000000] [--reps 5] [--threads 2]
+//   ridt_bench_weighted [--sizes 100000,1000000] [--reps 5] [--threads 2] [--csv FILE]
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> sizes = {100000, 1000000};
   int reps = 5;
   unsigned threads = 2;
+  std::string csv;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--sizes") {
@@ -55,17 +56,32 @@ int main(int argc, char** argv) {
       for (const std::string& s : ridt::bench::split(argv[i + 1])) sizes.push_back(std::stoul(s));
     } else if (a == "--reps") {
       reps = std::atoi(argv[i + 1]);
+    } else if (a == "--csv") {
+      csv = argv[i + 1];
     } else if (a == "--threads") {
       threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
     } else {
-      std::fprintf(stderr, "usage: %s [--sizes N,...] [--reps R] [--threads T]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes N,...] [--reps R] [--threads T] [--csv FILE]\n", argv[0]);
       return 2;
     }
   }
-  std::printf(
-      "n,weights,hidden,regular_1_s,regular_%u_s,cgal_s,delaunay_1_s,delaunay_%u_s,cgal_over_regular_1,"
-      "regular_1_over_delaunay_1\n",
-      threads, threads);
+  // Each line to stdout, and to FILE where --csv names one.
+  FILE* file = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
+  if (!csv.empty() && file == nullptr) {
+    std::fprintf(stderr, "cannot write %s\n", csv.c_str());
+    return 1;
+  }
+  auto line = [&](const std::string& text) {
+    std::fputs(text.c_str(), stdout);
+    if (file != nullptr) std::fputs(text.c_str(), file);
+    std::fflush(stdout);
+  };
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "n,weights,hidden,regular_1_s,regular_%u_s,cgal_s,delaunay_1_s,delaunay_%u_s,cgal_over_regular_1,"
+                "regular_1_over_delaunay_1\n",
+                threads, threads);
+  line(buf);
   for (const std::size_t n : sizes)
     for (const double scale : {1.0, 40.0}) {
       std::mt19937_64 random(n);
@@ -96,9 +112,10 @@ int main(int argc, char** argv) {
       }
       using ridt::bench::median;
       const double cm = median(c);
-      std::printf("%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f\n", n, scale == 1 ? "light" : "heavy", hidden,
-                  median(r1), median(rt), cm, median(d1), median(dt), cm > 0 ? cm / median(r1) : 0.0,
-                  median(r1) / median(d1));
-      std::fflush(stdout);
+      std::snprintf(buf, sizeof buf, "%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f\n", n,
+                    scale == 1 ? "light" : "heavy", hidden, median(r1), median(rt), cm, median(d1), median(dt),
+                    cm > 0 ? cm / median(r1) : 0.0, median(r1) / median(d1));
+      line(buf);
     }
+  if (file != nullptr) std::fclose(file);
 }

@@ -200,6 +200,7 @@ class Builder {
         if (const VertexId w = tds_.vertex(t, i); q_[w] == q_[v]) return copies_.emplace_back(v, w), void();
     if (!outside && !sees(tds_.corners(t), v)) {
       hidden_[v] = 1;
+      last_ = t;  // the next point's walk starts near this one
       return;
     }
     ++epoch_;
@@ -319,11 +320,15 @@ Settled settle(std::span<const Point> points, std::span<const double> weights,
   auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x); };
   auto hash = [&](VertexId i) { return mix64(bits(points[i].x) ^ mix64(bits(points[i].y) ^ mix64(bits(weights[i])))); };
   std::vector<std::pair<std::uint64_t, VertexId>> keyed;
+  std::vector<std::uint8_t> hidden(points.size(), 0);  // by input index: the list comes out sorted
+  std::size_t count = 0;
+  for (VertexId v = 0; v < is_hidden.size(); ++v) count += is_hidden[v];
+  keyed.reserve(2 * copies.size() + count);
   for (const auto& [c, w] : copies)
     keyed.emplace_back(hash(input[c]), input[c]), keyed.emplace_back(hash(input[w]), input[w]);
-  Settled out;
   for (VertexId v = 0; v < is_hidden.size(); ++v)
-    if (is_hidden[v]) keyed.emplace_back(hash(input[v]), input[v]), out.hidden.push_back(input[v]);
+    if (is_hidden[v]) keyed.emplace_back(hash(input[v]), input[v]), hidden[input[v]] = 1;
+  Settled out;
   parallel_sort(keyed.begin(), keyed.end(), threads, std::less<>());
   keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
   std::vector<std::pair<VertexId, VertexId>> least;  // (index, its group's least), where they differ
@@ -345,9 +350,11 @@ Settled settle(std::span<const Point> points, std::span<const double> weights,
   };
   for (const auto& [c, w] : copies) input[w] = dropped(input[w]);
   // A group with a hidden member is hidden (a vertex hidden after its copies came), as its least.
-  for (VertexId& i : out.hidden) i = dropped(i);
-  std::sort(out.hidden.begin(), out.hidden.end());
-  out.hidden.erase(std::unique(out.hidden.begin(), out.hidden.end()), out.hidden.end());
+  for (const auto& [i, low] : least)
+    if (hidden[i]) hidden[i] = 0, hidden[low] = 1;
+  out.hidden.reserve(count);
+  for (VertexId i = 0; i < hidden.size(); ++i)
+    if (hidden[i]) out.hidden.push_back(i);
   std::sort(out.duplicates.begin(), out.duplicates.end(),
             [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
   return out;
