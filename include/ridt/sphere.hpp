@@ -70,6 +70,22 @@ std::vector<double> interpolate_sphere_linear(const SphericalTriangulation& t, s
                                               double fill = std::numeric_limits<double>::quiet_NaN(),
                                               unsigned threads = 0);
 
+/// Natural-neighbour (Sibson) interpolation on the sphere: each query's weights are the areas
+/// (spherical, as solid angles) that its Voronoi cell on the sphere would take from its natural
+/// neighbours' cells were it inserted, its point on the sphere taken at the mean distance of the
+/// located triangle's corners from `centre`; the cells' vertices as spherical_voronoi's (each
+/// within a bound however thin its triangle). The weights are positive and sum to 1, the value
+/// at a data point is its own, and it is continuous. Where the query's point lies on or below
+/// its triangle's plane (within rounding of a data point, or of the edge of a triangle a few
+/// ulps across) the linear weights of that triangle; `fill` where no triangle facing away from
+/// the centre holds the query, or its cavity reaches one that faces the centre (beyond the
+/// points of one hemisphere). Returns queries.size() * k values.
+std::vector<double> interpolate_sphere_natural(const SphericalTriangulation& t, std::span<const Point3> points,
+                                               std::span<const double> values, std::size_t k,
+                                               std::span<const Point3> queries, const Point3& centre,
+                                               double fill = std::numeric_limits<double>::quiet_NaN(),
+                                               unsigned threads = 0);
+
 /// Checks exactly that `triangles` (#T by 3 input indices) is the convex hull of `points` as
 /// triangulate_sphere decides it: a closed surface of consistently oriented triangles, every
 /// edge convex (under the same perturbation), wrapped once round an inner point, every distinct

@@ -21,7 +21,7 @@ from ._constrained import ConstrainedDelaunay, RefinementWarning
 from ._size import SizeField
 from ._delaunay import Delaunay, DegenerateInputWarning
 from ._hull import ConvexHull, DegenerateInputError
-from ._sphere import SphericalLinearInterpolator, SphericalVoronoi, check_sphere
+from ._sphere import SphericalLinearInterpolator, SphericalNaturalNeighborInterpolator, SphericalVoronoi, check_sphere
 from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning, LinearNDInterpolator,
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
@@ -48,6 +48,7 @@ __all__ = [
     "RegularTriangulation",
     "SizeField",
     "SphericalLinearInterpolator",
+    "SphericalNaturalNeighborInterpolator",
     "SphericalVoronoi",
     "Triangulation",
     "available_memory",

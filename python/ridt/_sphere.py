@@ -261,7 +261,24 @@ class SphericalLinearInterpolator:
         if xi.shape[-1:] != (3,):
             raise ValueError("xi must have shape (..., 3): directions from the centre")
         flat = np.ascontiguousarray(xi.reshape(-1, 3))
-        out = _core.interpolate_sphere_linear(self.points, self.triangles, self.neighbors, self.values, flat,
-                                              self.center.reshape(1, 3), self.fill_value, self._threads)
+        out = _core.interpolate_sphere(self.points, self.triangles, self.neighbors, self.values, flat,
+                                       self.center.reshape(1, 3), self.fill_value, self._threads, self._natural)
         return out.reshape(xi.shape[:-1] + self._shape)
+
+    _natural = False
+
+
+class SphericalNaturalNeighborInterpolator(SphericalLinearInterpolator):
+    """Natural-neighbour (Sibson) interpolation on the sphere, over the same triangulation as
+    :class:`SphericalLinearInterpolator`, with the same parameters.
+
+    Each query's weights are the areas its Voronoi cell on the sphere would take from its
+    neighbours' cells were it inserted (spherical areas, the cells' vertices within a bound
+    however thin their triangles): positive, summing to 1, the data at the points, continuous,
+    and in a small cap the plane's Sibson coordinates. Where the query lies within rounding of a
+    data point's direction, that point's value; `fill_value` beyond the points of one
+    hemisphere.
+    """
+
+    _natural = True
 

@@ -108,9 +108,9 @@ py::tuple check(const Points& points, const Indices& triangles) {
   return py::make_tuple(r.valid, r.message, r.problems);
 }
 
-py::array_t<double> interpolate_linear(const Points& points, const Indices& triangles, const Links& neighbors,
-                                       const Points& values, const Points& queries, const Points& center, double fill,
-                                       unsigned threads) {
+py::array_t<double> interpolate(const Points& points, const Indices& triangles, const Links& neighbors,
+                                const Points& values, const Points& queries, const Points& center, double fill,
+                                unsigned threads, bool natural) {
   const auto pts = as_points3(points, "points");
   const auto xi = as_points3(queries, "xi");
   const auto c = as_points3(center, "center");
@@ -123,7 +123,8 @@ py::array_t<double> interpolate_linear(const Points& points, const Indices& tria
   std::vector<double> out;
   {
     py::gil_scoped_release nogil;
-    out = ridt::interpolate_sphere_linear(t, pts, v, k, xi, c[0], fill, threads);
+    out = natural ? ridt::interpolate_sphere_natural(t, pts, v, k, xi, c[0], fill, threads)
+                  : ridt::interpolate_sphere_linear(t, pts, v, k, xi, c[0], fill, threads);
   }
   return adopt(std::move(out), {static_cast<py::ssize_t>(xi.size()), static_cast<py::ssize_t>(k)});
 }
@@ -131,9 +132,10 @@ py::array_t<double> interpolate_linear(const Points& points, const Indices& tria
 }  // namespace
 
 void bind_sphere(py::module_& m) {
-  m.def("interpolate_sphere_linear", &interpolate_linear, py::arg("points"), py::arg("triangles"), py::arg("neighbors"),
+  m.def("interpolate_sphere", &interpolate, py::arg("points"), py::arg("triangles"), py::arg("neighbors"),
         py::arg("values"), py::arg("xi"), py::arg("center"), py::arg("fill"), py::arg("threads") = 0,
-        "(nxi, k): linear interpolation on the sphere of a triangulate_sphere result");
+        py::arg("natural") = false,
+        "(nxi, k): linear (or natural-neighbour) interpolation on the sphere of a triangulate_sphere result");
   m.def("triangulate_sphere", &triangulate, py::arg("points"), py::arg("threads") = 0,
         "(triangles, neighbors, duplicates, hidden): the exact convex hull of points in space, each triangle "
         "counter-clockwise seen from outside; duplicates as (dropped, kept) rows; hidden: the points inside it");

@@ -204,3 +204,24 @@ def test_linear_interpolation_on_the_sphere():
     assert h([[1.0, 0.1, 0.2]])[0] == pytest.approx(1.0) and h([[-1.0, 0.1, 0.2]])[0] == -7.0
     with pytest.raises(ValueError):
         ridt.SphericalLinearInterpolator(pts, values[:10])
+
+
+def test_natural_neighbour_interpolation_against_scipys_cells():
+    # Sibson's weights by their definition, from scipy's own SphericalVoronoi: what each cell
+    # loses when the query is inserted, over the query's new cell.
+    pts = on_sphere(300, 31)
+    values = np.sin(3 * pts[:, 0]) + pts[:, 2]
+    f = ridt.SphericalNaturalNeighborInterpolator(pts, values, threads=2)
+    before = scipy.spatial.SphericalVoronoi(pts).calculate_areas()
+    for q in on_sphere(25, 32):
+        after = scipy.spatial.SphericalVoronoi(np.vstack([pts, q])).calculate_areas()
+        weights = (before - after[:-1]) / after[-1]
+        assert weights.min() > -1e-9 and abs(weights.sum() - 1) < 1e-9
+        assert f(q[None, :])[0] == pytest.approx(weights @ values, abs=1e-9)
+    np.testing.assert_allclose(f(pts[:50] * 4.0), values[:50], atol=1e-12)
+    assert np.allclose(ridt.SphericalNaturalNeighborInterpolator(pts, np.full(300, -2.5))(pts * 0.3 + 0.01), -2.5,
+                       rtol=1e-13)
+    half = on_sphere(500, 33)
+    half[:, 0] = np.abs(half[:, 0])
+    h = ridt.SphericalNaturalNeighborInterpolator(half, np.ones(500), fill_value=-7.0)
+    assert h([[1.0, 0.1, 0.2]])[0] == pytest.approx(1.0) and h([[-1.0, 0.1, 0.2]])[0] == -7.0

@@ -6,6 +6,7 @@
 #include "predicates/orient3d.hpp"
 #include "ridt/sphere.hpp"
 #include "runtime/parallel.hpp"
+#include "sphere/geometry.hpp"
 #include "tds/ids.hpp"
 
 namespace ridt {
@@ -14,46 +15,19 @@ std::vector<double> interpolate_sphere_linear(const SphericalTriangulation& t, s
                                               std::span<const double> values, std::size_t k,
                                               std::span<const Point3> queries, const Point3& centre, double fill,
                                               unsigned threads) {
-  using detail::next3;
-  using detail::prev3;
   const std::size_t m = t.size();
   if (k == 0 || values.size() != points.size() * k) throw InputError("interpolate_sphere_linear: k values a point");
   for (const VertexId v : t.triangles)
     if (v >= points.size()) throw InputError("interpolate_sphere_linear: a corner is not a point");
   std::vector<double> out(queries.size() * k, fill);
   if (m == 0) return out;
-  // The triangles that face away from the centre (all of them where it lies inside the hull).
-  std::vector<std::uint8_t> away(m);
-  for (std::size_t f = 0; f < m; ++f) {
-    const VertexId* c = &t.triangles[3 * f];
-    away[f] = detail::orient3d(points[c[0]], points[c[1]], points[c[2]], centre) > 0;
-  }
-  // q's side of the plane through the centre, a and b: +1 on the side of the triangle left of a -> b.
-  auto side = [&](VertexId a, VertexId b, const Point3& q) {
-    return -detail::orient3d(centre, points[a], points[b], q);
-  };
-  auto holds = [&](std::size_t f, const Point3& q) {
-    const VertexId* c = &t.triangles[3 * f];
-    return side(c[0], c[1], q) >= 0 && side(c[1], c[2], q) >= 0 && side(c[2], c[0], q) >= 0;
-  };
+  const detail::sphere::ConeWalk walk(t, points, centre);
   detail::parallel_for(queries.size(), threads, 1024, [&](std::size_t from, std::size_t to) {
     std::size_t f = 0;
     for (std::size_t i = from; i < to; ++i) {
       const Point3& q = queries[i];
       if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || q == centre) continue;
-      bool moved = true;
-      for (std::size_t steps = 0; moved && steps < 4 * m + 8; ++steps) {
-        moved = false;
-        for (int j = 0; j < 3 && !moved; ++j)
-          if (side(t.triangles[3 * f + next3(j)], t.triangles[3 * f + prev3(j)], q) < 0 && away[f])
-            f = static_cast<std::size_t>(t.neighbors[3 * f + j]), moved = true;
-      }
-      if (!holds(f, q) || !away[f]) {  // a walk that cycled, or left the triangles facing away
-        std::size_t g = 0;
-        while (g < m && !(away[g] && holds(g, q))) ++g;
-        if (g == m) continue;
-        f = g;
-      }
+      if (!walk.locate(q, f)) continue;
       const VertexId* c = &t.triangles[3 * f];
       const Point3 &a = points[c[0]], &b = points[c[1]], &cc = points[c[2]];
       // det[x - o, y - o, z - o] is orient3d(x, y, z, o) up to its sign convention: the same

@@ -8,60 +8,26 @@
 #include "ridt/sphere.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
+#include "sphere/geometry.hpp"
 #include "tds/ids.hpp"
 
 namespace ridt {
 namespace {
 
-Point3 minus(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Point3 cross(const Point3& a, const Point3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-// a scaled by a power of two (exactly) to a largest coordinate in [1, 2): its squares and
-// products then neither overflow nor underflow.
-Point3 scaled(const Point3& a) {
-  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
-  if (!(m > 0) || !std::isfinite(m)) return a;
-  const int e = std::ilogb(m);
-  return {std::ldexp(a.x, -e), std::ldexp(a.y, -e), std::ldexp(a.z, -e)};
-}
-Point3 unit(const Point3& given) {
-  const Point3 a = scaled(given);
-  const double l = std::sqrt(dot(a, a));
-  return {a.x / l, a.y / l, a.z / l};
-}
+using detail::sphere::minus;
+using detail::sphere::solid_angle;
+using detail::sphere::unit;
+using detail::sphere::unit_normal;
 
-// The signed solid angle of the spherical triangle of unit vectors a, b, c (Van Oosterom and
-// Strackee): its triple product taken of b - a and c - a, which keeps its digits where the
-// three are close (a small cell's triangles).
-double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
-  const double triple = dot(a, cross(minus(b, a), minus(c, a)));
-  const double below = 1 + dot(a, b) + dot(b, c) + dot(c, a);
-  return 2 * std::atan2(triple, below);
-}
-
-// A triangle's circle on the sphere is centred where its outward normal points. The normal's
-// components, (b - a) x (c - a), are the triangle's doubled areas in the planes yz, zx and xy,
-// each within a relative 2^-50 of the exact one (detail::doubled_area: exactly where the
-// filter cannot vouch), so the centre's direction carries a bounded error however thin the
-// triangle (two corners an ulp apart leave a cross product of rounded sides nothing right). The
-// corners are first scaled by one power of two, so that no area overflows. `normals` (where
-// not empty) gets the unit normals.
+// A triangle's circle on the sphere is centred where its outward normal points (unit_normal:
+// within a bound however thin the triangle). `normals` (where not empty) gets the unit normals.
 void circle_centres(const SphericalTriangulation& t, std::span<const Point3> points, const Point3& centre,
                     double radius, std::vector<Point3>& vertices, std::vector<Point3>& normals, unsigned threads) {
   detail::parallel_for(t.size(), threads, 4096, [&](std::size_t from, std::size_t to) {
     for (std::size_t f = from; f < to; ++f) {
       const Point3 &a = points[t.triangles[3 * f]], &b = points[t.triangles[3 * f + 1]],
                    &c = points[t.triangles[3 * f + 2]];
-      const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x), std::fabs(b.y),
-                                 std::fabs(b.z), std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
-      const int e = m > 0 ? std::ilogb(m) : 0;
-      auto at = [&](const Point3& p) { return Point3{std::ldexp(p.x, -e), std::ldexp(p.y, -e), std::ldexp(p.z, -e)}; };
-      const Point3 u = at(a), v = at(b), w = at(c);
-      const Point3 normal = unit({detail::doubled_area({u.y, u.z}, {v.y, v.z}, {w.y, w.z}),
-                                  detail::doubled_area({u.z, u.x}, {v.z, v.x}, {w.z, w.x}),
-                                  detail::doubled_area({u.x, u.y}, {v.x, v.y}, {w.x, w.y})});
+      const Point3 normal = unit_normal(a, b, c);
       vertices[f] = {centre.x + radius * normal.x, centre.y + radius * normal.y, centre.z + radius * normal.z};
       if (!normals.empty()) normals[f] = normal;
     }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "predicates/orient3d.hpp"
+#include "ridt/interpolate.hpp"
 #include "ridt/predicates.hpp"
 #include "ridt/sphere.hpp"
 
@@ -292,6 +293,69 @@ TEST(SphereInterpolation, LinearOnTheSphere) {
   EXPECT_NEAR(got[0], 1, 1e-14);
   EXPECT_TRUE(std::isnan(got[1]) && std::isnan(got[2]));
   EXPECT_THROW(interpolate_sphere_linear(h, half, ones, 2, probes, {}), InputError);
+}
+
+TEST(SphereInterpolation, NaturalNeighbourOnTheSphere) {
+  const Point3 c{1, -2, 3};
+  const std::vector<Point3> pts = on_sphere(20000, 15, 2, c);
+  const SphericalTriangulation t = triangulate_sphere(pts);
+  std::vector<double> values;
+  for (const Point3& p : pts) values.insert(values.end(), {7.25, p.z - c.z});
+  std::vector<Point3> queries = on_sphere(5000, 16, 3, c);
+  for (std::size_t i = 0; i < 300; ++i)  // at the data points (any distance along their direction)
+    queries.push_back({c.x + (pts[i].x - c.x) * 5, c.y + (pts[i].y - c.y) * 5, c.z + (pts[i].z - c.z) * 5});
+  const std::vector<double> one = interpolate_sphere_natural(t, pts, values, 2, queries, c, -1, 1);
+  EXPECT_EQ(one, interpolate_sphere_natural(t, pts, values, 2, queries, c, -1, 2));
+  for (std::size_t i = 0; i < 5000; ++i) {
+    EXPECT_NEAR(one[2 * i], 7.25, 1e-13);
+    EXPECT_NEAR(one[2 * i + 1], (queries[i].z - c.z) * 2 / 3, 2e-3);
+  }
+  for (std::size_t i = 0; i < 300; ++i) EXPECT_NEAR(one[2 * (5000 + i) + 1], values[2 * i + 1], 1e-9);
+  // Points in one hemisphere: beyond them, the fill.
+  std::vector<Point3> half = on_sphere(2000, 14);
+  for (Point3& p : half) p.x = std::fabs(p.x);
+  const SphericalTriangulation h = triangulate_sphere(half);
+  const std::vector<double> ones(half.size(), 1.0);
+  const std::vector<double> got =
+      interpolate_sphere_natural(h, half, ones, 1, std::vector<Point3>{{1, 0.1, 0.2}, {-1, 0.1, 0.2}}, {});
+  EXPECT_NEAR(got[0], 1, 1e-13);
+  EXPECT_TRUE(std::isnan(got[1]));
+}
+
+TEST(SphereInterpolation, NaturalNeighbourInASmallCapIsThePlanesSibson) {
+  // In a cap 0.01 across the sphere is nearly flat: the weights differ from the plane's (of the
+  // points projected stereographically, which keeps circles circles) by about the cap's size
+  // squared.
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> u(-0.01, 0.01);
+  std::vector<Point3> pts;
+  std::vector<Point> flat;
+  auto lift = [](double x, double y) {  // the inverse stereographic projection from the south pole
+    const double s = x * x + y * y;
+    return Point3{4 * x / (4 + s), 4 * y / (4 + s), (4 - s) / (4 + s)};
+  };
+  for (int i = 0; i < 600; ++i) {
+    const double x = u(random), y = u(random);
+    flat.push_back({x, y}), pts.push_back(lift(x, y));
+  }
+  // Seven more points far away, so that the hull holds the centre.
+  for (const Point3& p : std::vector<Point3>{
+           {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0.6, 0.6, -0.53}, {-0.6, 0.6, -0.53}})
+    pts.push_back(p);
+  std::vector<double> values;
+  for (const Point3& p : pts) values.push_back(p.x * 100 + std::sin(p.y * 300));
+  const SphericalTriangulation t = triangulate_sphere(pts);
+  const Triangulation planar = triangulate(flat);
+  std::vector<Point3> queries;
+  std::vector<Point> flat_queries;
+  for (int i = 0; i < 400; ++i) {
+    const double x = u(random) * 0.8, y = u(random) * 0.8;
+    flat_queries.push_back({x, y}), queries.push_back(lift(x, y));
+  }
+  const std::vector<double> sphere = interpolate_sphere_natural(t, pts, values, 1, queries, {});
+  const std::vector<double> plane =
+      interpolate_natural_neighbor(flat, planar, {std::span<const double>(values).first(600), 1}, flat_queries);
+  for (std::size_t i = 0; i < queries.size(); ++i) EXPECT_NEAR(sphere[i], plane[i], 1e-5) << i;
 }
 
 }  // namespace

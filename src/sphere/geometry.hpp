@@ -1,0 +1,110 @@
+// What the sphere's queries share (sphere/voronoi.cpp, sphere/interpolate.cpp,
+// sphere/natural.cpp): vectors, a triangle's unit normal within a bound, the solid angle of a
+// spherical triangle, and the walk that finds the triangle whose cone from the centre holds a
+// direction.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "predicates/orient3d.hpp"
+#include "predicates/predicates.hpp"
+#include "ridt/sphere.hpp"
+#include "tds/ids.hpp"
+
+namespace ridt::detail::sphere {
+
+inline Point3 minus(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Point3 cross(const Point3& a, const Point3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+// a scaled by a power of two (exactly) to a largest coordinate in [1, 2): its squares and
+// products then neither overflow nor underflow.
+inline Point3 scaled(const Point3& a) {
+  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
+  if (!(m > 0) || !std::isfinite(m)) return a;
+  const int e = std::ilogb(m);
+  return {std::ldexp(a.x, -e), std::ldexp(a.y, -e), std::ldexp(a.z, -e)};
+}
+inline Point3 unit(const Point3& given) {
+  const Point3 a = scaled(given);
+  const double l = std::sqrt(dot(a, a));
+  return {a.x / l, a.y / l, a.z / l};
+}
+
+// The signed solid angle of the spherical triangle of unit vectors a, b, c (Van Oosterom and
+// Strackee): its triple product taken of b - a and c - a, which keeps its digits where the
+// three are close (a small cell's triangles).
+inline double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
+  const double triple = dot(a, cross(minus(b, a), minus(c, a)));
+  const double below = 1 + dot(a, b) + dot(b, c) + dot(c, a);
+  return 2 * std::atan2(triple, below);
+}
+
+// The unit outward normal of triangle (a, b, c), counter-clockwise seen from outside: where its
+// circle on the sphere is centred. Its components, (b - a) x (c - a), are the triangle's doubled
+// areas in the planes yz, zx and xy, each within a relative 2^-50 of the exact one
+// (doubled_area: exactly where the filter cannot vouch), so the direction carries a bounded
+// error however thin the triangle (two corners an ulp apart leave a cross product of rounded
+// sides nothing right). The corners are first scaled by one power of two, so that no area
+// overflows.
+inline Point3 unit_normal(const Point3& a, const Point3& b, const Point3& c) {
+  const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x), std::fabs(b.y),
+                             std::fabs(b.z), std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
+  const int e = m > 0 ? std::ilogb(m) : 0;
+  auto at = [&](const Point3& p) { return Point3{std::ldexp(p.x, -e), std::ldexp(p.y, -e), std::ldexp(p.z, -e)}; };
+  const Point3 u = at(a), v = at(b), w = at(c);
+  return unit({doubled_area({u.y, u.z}, {v.y, v.z}, {w.y, w.z}), doubled_area({u.z, u.x}, {v.z, v.x}, {w.z, w.x}),
+               doubled_area({u.x, u.y}, {v.x, v.y}, {w.x, w.y})});
+}
+
+/// Finds, for a direction from the centre, the triangle whose cone from the centre holds it,
+/// among the triangles that face away from the centre (all where the centre is inside the
+/// hull): a walk from the last triangle found, or, where it cycles or leaves them, a scan.
+class ConeWalk {
+ public:
+  ConeWalk(const SphericalTriangulation& t, std::span<const Point3> points, const Point3& centre)
+      : t_(t), points_(points), centre_(centre), away_(t.size()) {
+    for (std::size_t f = 0; f < t.size(); ++f) {
+      const VertexId* c = &t.triangles[3 * f];
+      away_[f] = orient3d(points[c[0]], points[c[1]], points[c[2]], centre) > 0;
+    }
+  }
+
+  /// Whether triangle f faces away from the centre.
+  bool away(std::size_t f) const { return away_[f] != 0; }
+
+  /// The triangle whose cone holds q, from f (kept for the next query); false where none does
+  /// (the points in one hemisphere, q beyond them).
+  bool locate(const Point3& q, std::size_t& f) const {
+    const std::size_t m = t_.size();
+    bool moved = true;
+    for (std::size_t steps = 0; moved && steps < 4 * m + 8; ++steps) {
+      moved = false;
+      for (int j = 0; j < 3 && !moved; ++j)
+        if (side(t_.triangles[3 * f + next3(j)], t_.triangles[3 * f + prev3(j)], q) < 0 && away_[f])
+          f = static_cast<std::size_t>(t_.neighbors[3 * f + j]), moved = true;
+    }
+    if (holds(f, q) && away_[f]) return true;
+    for (std::size_t g = 0; g < m; ++g)  // a walk that cycled, or left the triangles facing away
+      if (away_[g] && holds(g, q)) return f = g, true;
+    return false;
+  }
+
+ private:
+  // q's side of the plane through the centre, a and b: +1 on the side of the triangle left of a -> b.
+  int side(VertexId a, VertexId b, const Point3& q) const { return -orient3d(centre_, points_[a], points_[b], q); }
+  bool holds(std::size_t f, const Point3& q) const {
+    const VertexId* c = &t_.triangles[3 * f];
+    return side(c[0], c[1], q) >= 0 && side(c[1], c[2], q) >= 0 && side(c[2], c[0], q) >= 0;
+  }
+
+  const SphericalTriangulation& t_;
+  std::span<const Point3> points_;
+  Point3 centre_;
+  std::vector<std::uint8_t> away_;
+};
+
+}  // namespace ridt::detail::sphere
