@@ -42,6 +42,44 @@ double cgal(const std::vector<ridt::Point>& pts, const std::vector<double>& w, s
 }
 #endif
 
+// One size and weight scale: the medians of `reps` interleaved runs of each code, as a CSV line;
+// empty where CGAL's triangle count differs from ridt's.
+std::string row(std::size_t n, double scale, int reps, unsigned threads) {
+  std::mt19937_64 random(n);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<ridt::Point> pts(n);
+  std::vector<double> w(n);
+  for (std::size_t i = 0; i < n; ++i) pts[i] = {u(random), u(random)}, w[i] = u(random) * scale / double(n);
+  std::vector<double> r1, rt, c, d1, dt;
+  std::size_t hidden = 0, ours = 0, theirs = 0;
+  for (int rep = 0; rep < reps; ++rep) {
+    r1.push_back(seconds([&] {
+      const ridt::RegularTriangulation t = ridt::triangulate_regular(pts, w, 1);
+      hidden = t.hidden.size(), ours = t.size();
+    }));
+    rt.push_back(seconds([&] { ridt::triangulate_regular(pts, w, threads); }));
+#ifdef RIDT_WITH_CGAL
+    c.push_back(cgal(pts, w, theirs));
+#endif
+    ridt::Options o;
+    o.threads = 1;
+    d1.push_back(seconds([&] { ridt::triangulate(pts, o); }));
+    o.threads = threads;
+    dt.push_back(seconds([&] { ridt::triangulate(pts, o); }));
+  }
+  if (theirs != 0 && theirs != ours) {
+    std::fprintf(stderr, "CGAL has %zu triangles, ridt %zu\n", theirs, ours);
+    return {};
+  }
+  using ridt::bench::median;
+  const double cm = median(c);
+  char buf[512];
+  std::snprintf(buf, sizeof buf, "%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f\n", n, scale == 1 ? "light" : "heavy",
+                hidden, median(r1), median(rt), cm, median(d1), median(dt), cm > 0 ? cm / median(r1) : 0.0,
+                median(r1) / median(d1));
+  return buf;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,46 +114,13 @@ int main(int argc, char** argv) {
     if (file != nullptr) std::fputs(text.c_str(), file);
     std::fflush(stdout);
   };
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "n,weights,hidden,regular_1_s,regular_%u_s,cgal_s,delaunay_1_s,delaunay_%u_s,cgal_over_regular_1,"
-                "regular_1_over_delaunay_1\n",
-                threads, threads);
-  line(buf);
+  line("n,weights,hidden,regular_1_s,regular_" + std::to_string(threads) + "_s,cgal_s,delaunay_1_s,delaunay_" +
+       std::to_string(threads) + "_s,cgal_over_regular_1,regular_1_over_delaunay_1\n");
   for (const std::size_t n : sizes)
     for (const double scale : {1.0, 40.0}) {
-      std::mt19937_64 random(n);
-      std::uniform_real_distribution<double> u(0, 1);
-      std::vector<ridt::Point> pts(n);
-      std::vector<double> w(n);
-      for (std::size_t i = 0; i < n; ++i) pts[i] = {u(random), u(random)}, w[i] = u(random) * scale / double(n);
-      std::vector<double> r1, rt, c, d1, dt;
-      std::size_t hidden = 0, ours = 0, theirs = 0;
-      for (int rep = 0; rep < reps; ++rep) {
-        r1.push_back(seconds([&] {
-          const ridt::RegularTriangulation t = ridt::triangulate_regular(pts, w, 1);
-          hidden = t.hidden.size(), ours = t.size();
-        }));
-        rt.push_back(seconds([&] { ridt::triangulate_regular(pts, w, threads); }));
-#ifdef RIDT_WITH_CGAL
-        c.push_back(cgal(pts, w, theirs));
-#endif
-        ridt::Options o;
-        o.threads = 1;
-        d1.push_back(seconds([&] { ridt::triangulate(pts, o); }));
-        o.threads = threads;
-        dt.push_back(seconds([&] { ridt::triangulate(pts, o); }));
-      }
-      if (theirs != 0 && theirs != ours) {
-        std::fprintf(stderr, "CGAL has %zu triangles, ridt %zu\n", theirs, ours);
-        return 1;
-      }
-      using ridt::bench::median;
-      const double cm = median(c);
-      std::snprintf(buf, sizeof buf, "%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f\n", n,
-                    scale == 1 ? "light" : "heavy", hidden, median(r1), median(rt), cm, median(d1), median(dt),
-                    cm > 0 ? cm / median(r1) : 0.0, median(r1) / median(d1));
-      line(buf);
+      const std::string r = row(n, scale, reps, threads);
+      if (r.empty()) return 1;
+      line(r);
     }
   if (file != nullptr) std::fclose(file);
 }
