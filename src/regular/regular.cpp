@@ -13,7 +13,7 @@
 // horizon edge has the point on its line, and no new face is flat). A point whose lift lies
 // above the triangle that holds it is hidden; one whose lift hides vertices surrounds them
 // with its cavity (the traversal meets a face twice): they are made hidden and their faces
-// dropped (cover).
+// dropped (cover_cavity, tds/cover.hpp).
 //
 // Points are located by a visibility walk over the finite faces (which cannot cycle in a
 // regular triangulation: Edelsbrunner's acyclicity theorem), stopped where it would enter a
@@ -33,6 +33,7 @@
 #include "ridt/regular.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
+#include "tds/cover.hpp"
 #include "tds/delaunay.hpp"
 #include "tds/tds.hpp"
 
@@ -212,7 +213,13 @@ class Builder {
           stamp_[u] = epoch_;
           return false;
         });
-    if (scratch_.revisited) cover();
+    if (scratch_.revisited)
+      cover_cavity(
+          tds_, scratch_, [&](TriangleId u) { return stamp_[u] == epoch_; },
+          [&](VertexId u) {
+            if (u < n_) hidden_[u] = 1;
+          },
+          free_, cover_);
     SlotPool pool;
     if (free_.size() >= 2) {
       pool.list = free_.data(), pool.listed = free_.size();
@@ -221,49 +228,6 @@ class Builder {
     }
     last_ = tds_.fill_cavity(v, scratch_, pool);
     free_.resize(pool.listed);
-  }
-
-  static VertexId key(VertexId v) { return v; }
-  static VertexId key(const CavityScratch::Boundary& e) { return e.a; }
-
-  // The faces v sees surround vertices (the traversal met one of them again): their boundary
-  // found and ordered anew, the vertices inside made hidden, the slots beyond the fan's freed.
-  void cover() {
-    CavityScratch& s = scratch_;
-    const std::size_t m = s.size;
-    std::vector<CavityScratch::Boundary>& edges = edges_;
-    edges.clear();
-    std::vector<VertexId>& inside = inside_;
-    inside.clear();
-    for (std::size_t k = 0; k < m; ++k) {
-      const TriangleId t = s.cavity[k];
-      for (int i = 0; i < 3; ++i) {
-        const Link l = tds_.link(t, i);
-        inside.push_back(tds_.vertex(t, i));
-        if (stamp_[triangle_of(l)] != epoch_) edges.push_back({tds_.vertex(t, next3(i)), l, link_to(t, i)});
-      }
-    }
-    // Round the boundary: each edge a -> b is followed by the one from b.
-    std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.a < y.a; });
-    s.make_room(edges.size() + 2);
-    s.boundary[0] = edges[0];
-    for (std::size_t k = 1; k < edges.size(); ++k) {
-      const VertexId b = tds_.head(s.boundary[k - 1].inside);
-      s.boundary[k] = *std::lower_bound(edges.begin(), edges.end(), b,
-                                        [](const CavityScratch::Boundary& e, VertexId x) { return e.a < x; });
-    }
-    // (edges is sorted by a: a vertex of the cavity's faces not on its boundary is inside)
-    for (const VertexId u : inside)
-      if (u < n_ && !std::binary_search(edges.begin(), edges.end(), u, [](const auto& x, const auto& y) {
-            return key(x) < key(y);
-          }))
-        hidden_[u] = 1;
-    const std::size_t k = edges.size();
-    for (std::size_t i = k - 2; i < m; ++i) {
-      tds_.free_slot(s.cavity[i]);
-      free_.push_back(s.cavity[i]);
-    }
-    s.size = k - 2, s.edges = k;
   }
 
   std::span<const Point> points_;
@@ -280,8 +244,7 @@ class Builder {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
-  std::vector<CavityScratch::Boundary> edges_;
-  std::vector<VertexId> inside_;
+  CoverScratch cover_;
 };
 
 // The hull, counter-clockwise from its lexicographically least vertex: each wall (p, q, inf)

@@ -60,6 +60,22 @@ inline Point3 unit_normal(const Point3& a, const Point3& b, const Point3& c) {
                doubled_area({u.x, u.y}, {v.x, v.y}, {w.x, w.y})});
 }
 
+/// The linear weights of direction q (from `centre`) in triangle (a, b, c): the barycentric
+/// coordinates of its central projection onto the triangle's plane, the volumes
+/// det[q, b, c] : det[a, q, c] : det[a, b, q] about the centre (each within a relative 2^-50 of
+/// the exact one), summing to 1; false where their sum is 0 or not finite.
+inline bool linear_weights(const Point3& a, const Point3& b, const Point3& c, const Point3& q, const Point3& centre,
+                           double w[3]) {
+  // det[x - o, y - o, z - o] is orient3d(x, y, z, o) up to its sign convention: the same for
+  // all three, so the ratios stand.
+  w[0] = orient3d_value(q, b, c, centre), w[1] = orient3d_value(a, q, c, centre),
+  w[2] = orient3d_value(a, b, q, centre);
+  const double sum = w[0] + w[1] + w[2];
+  if (!(sum != 0) || !std::isfinite(sum)) return false;
+  for (int i = 0; i < 3; ++i) w[i] /= sum;
+  return true;
+}
+
 /// Finds, for a direction from the centre, the triangle whose cone from the centre holds it,
 /// among the triangles that face away from the centre (all where the centre is inside the
 /// hull): a walk from the last triangle found, or, where it cycles or leaves them, a scan.

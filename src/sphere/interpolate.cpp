@@ -29,16 +29,10 @@ std::vector<double> interpolate_sphere_linear(const SphericalTriangulation& t, s
       if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || q == centre) continue;
       if (!walk.locate(q, f)) continue;
       const VertexId* c = &t.triangles[3 * f];
-      const Point3 &a = points[c[0]], &b = points[c[1]], &cc = points[c[2]];
-      // det[x - o, y - o, z - o] is orient3d(x, y, z, o) up to its sign convention: the same
-      // for all three, so the ratios stand.
-      const double w[3] = {detail::orient3d_value(q, b, cc, centre), detail::orient3d_value(a, q, cc, centre),
-                           detail::orient3d_value(a, b, q, centre)};
-      const double sum = w[0] + w[1] + w[2];
-      if (!(sum != 0) || !std::isfinite(sum)) continue;
+      double w[3];
+      if (!detail::sphere::linear_weights(points[c[0]], points[c[1]], points[c[2]], q, centre, w)) continue;
       for (std::size_t j = 0; j < k; ++j)
-        out[i * k + j] =
-            (w[0] * values[c[0] * k + j] + w[1] * values[c[1] * k + j] + w[2] * values[c[2] * k + j]) / sum;
+        out[i * k + j] = w[0] * values[c[0] * k + j] + w[1] * values[c[1] * k + j] + w[2] * values[c[2] * k + j];
     }
   });
   return out;

@@ -158,14 +158,11 @@ std::vector<double> interpolate_sphere_natural(const SphericalTriangulation& t, 
       if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || q == centre) continue;
       if (!walk.locate(q, f)) continue;
       if (!sibson.weights(q, f, who, weight)) {
-        // No cavity: the linear weights of f (its corners' volumes about the centre).
+        // No cavity: the linear weights of f.
         const VertexId* c = &t.triangles[3 * f];
-        const Point3 &a = points[c[0]], &b = points[c[1]], &cc = points[c[2]];
-        const double w[3] = {detail::orient3d_value(q, b, cc, centre), detail::orient3d_value(a, q, cc, centre),
-                             detail::orient3d_value(a, b, q, centre)};
-        const double sum = w[0] + w[1] + w[2];
-        if (!(sum != 0) || !std::isfinite(sum)) continue;
-        who.assign(c, c + 3), weight.assign({w[0] / sum, w[1] / sum, w[2] / sum});
+        double w[3];
+        if (!linear_weights(points[c[0]], points[c[1]], points[c[2]], q, centre, w)) continue;
+        who.assign(c, c + 3), weight.assign(w, w + 3);
       }
       for (std::size_t j = 0; j < k; ++j) {
         double v = 0;

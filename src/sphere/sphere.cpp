@@ -29,6 +29,7 @@
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "sphere/tetrahedron.hpp"
+#include "tds/cover.hpp"
 #include "tds/delaunay.hpp"
 #include "tds/tds.hpp"
 
@@ -236,7 +237,10 @@ class Builder {
           stamp_[u] = epoch_;
           return false;
         });
-    if (scratch_.revisited) cover(v);
+    if (scratch_.revisited)
+      cover_cavity(
+          tds_, scratch_, [&](TriangleId u) { return stamp_[u] == epoch_; }, [&](VertexId u) { hidden_[u] = 1; }, free_,
+          cover_);
     SlotPool pool;
     if (free_.size() >= 2) {
       pool.list = free_.data(), pool.listed = free_.size();
@@ -245,51 +249,6 @@ class Builder {
     }
     last_ = tds_.fill_cavity(v, scratch_, pool);
     free_.resize(pool.listed);
-  }
-
-  static VertexId key(VertexId v) { return v; }
-  static VertexId key(const CavityScratch::Boundary& e) { return e.a; }
-
-  // The triangles v sees surround a vertex (the traversal met one of them again): their
-  // boundary found and ordered anew, the vertices inside made hidden, the slots beyond the
-  // fan's freed.
-  void cover(VertexId v) {
-    CavityScratch& s = scratch_;
-    const std::size_t m = s.size;
-    std::vector<CavityScratch::Boundary>& edges = edges_;
-    edges.clear();
-    std::vector<VertexId>& inside = inside_;
-    inside.clear();
-    for (std::size_t k = 0; k < m; ++k) {
-      const TriangleId t = s.cavity[k];
-      for (int i = 0; i < 3; ++i) {
-        const Link l = tds_.link(t, i);
-        inside.push_back(tds_.vertex(t, i));
-        if (stamp_[triangle_of(l)] != epoch_) edges.push_back({tds_.vertex(t, next3(i)), l, link_to(t, i)});
-      }
-    }
-    // Round the boundary: each edge a -> b is followed by the one from b.
-    std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.a < y.a; });
-    auto head = [&](const CavityScratch::Boundary& e) { return tds_.head(e.inside); };
-    s.make_room(edges.size() + 2);
-    s.boundary[0] = edges[0];
-    for (std::size_t k = 1; k < edges.size(); ++k) {
-      const VertexId b = head(s.boundary[k - 1]);
-      s.boundary[k] = *std::lower_bound(edges.begin(), edges.end(), b,
-                                        [](const CavityScratch::Boundary& e, VertexId x) { return e.a < x; });
-    }
-    // (edges is sorted by a: a vertex of the cavity's triangles not on its boundary is inside)
-    for (const VertexId u : inside)
-      if (!std::binary_search(edges.begin(), edges.end(), u,
-                              [](const auto& x, const auto& y) { return key(x) < key(y); }))
-        hidden_[u] = 1;
-    const std::size_t k = edges.size();
-    for (std::size_t i = k - 2; i < m; ++i) {
-      tds_.free_slot(s.cavity[i]);
-      free_.push_back(s.cavity[i]);
-    }
-    s.size = k - 2, s.edges = k;
-    (void)v;
   }
 
   const std::vector<Point3>& p_;  // by rank
@@ -304,8 +263,7 @@ class Builder {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
-  std::vector<CavityScratch::Boundary> edges_;
-  std::vector<VertexId> inside_;
+  CoverScratch cover_;
   std::vector<std::uint64_t> curve_;
 };
 

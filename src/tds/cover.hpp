@@ -1,0 +1,58 @@
+// A cavity that surrounds vertices, for the triangulations whose insertions may hide points (on
+// the sphere, sphere/sphere.cpp; with weights, regular/regular.cpp): the faces a new point sees
+// can enclose a vertex, and Tds::find_cavity, meeting a face again, leaves its boundary wrong.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "tds/tds.hpp"
+
+namespace ridt::detail {
+
+/// What cover_cavity keeps between calls.
+struct CoverScratch {
+  std::vector<CavityScratch::Boundary> edges;
+  std::vector<VertexId> inside;
+};
+
+/// The cavity in s (its `size` faces, all of them marked: in(t) says whether face t is one)
+/// made whole again: its boundary found from the faces' edges whose far side is not in it and
+/// ordered round (each edge a -> b followed by the one from b), each vertex of its faces that is
+/// on no boundary edge passed to hide(v), and the slots beyond those the fan takes freed onto
+/// `free`.
+template <class In, class Hide>
+void cover_cavity(Tds& tds, CavityScratch& s, In&& in, Hide&& hide, std::vector<TriangleId>& free, CoverScratch& c) {
+  const std::size_t m = s.size;
+  c.edges.clear(), c.inside.clear();
+  for (std::size_t k = 0; k < m; ++k) {
+    const TriangleId t = s.cavity[k];
+    for (int i = 0; i < 3; ++i) {
+      const Link l = tds.link(t, i);
+      c.inside.push_back(tds.vertex(t, i));
+      if (!in(triangle_of(l))) c.edges.push_back({tds.vertex(t, next3(i)), l, link_to(t, i)});
+    }
+  }
+  std::vector<CavityScratch::Boundary>& edges = c.edges;
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) { return x.a < y.a; });
+  s.make_room(edges.size() + 2);
+  s.boundary[0] = edges[0];
+  for (std::size_t k = 1; k < edges.size(); ++k) {
+    const VertexId b = tds.head(s.boundary[k - 1].inside);
+    s.boundary[k] = *std::lower_bound(edges.begin(), edges.end(), b,
+                                      [](const CavityScratch::Boundary& e, VertexId x) { return e.a < x; });
+  }
+  // (edges is sorted by a: a vertex of the cavity's faces not on its boundary is inside)
+  for (const VertexId u : c.inside)
+    if (!std::binary_search(edges.begin(), edges.end(), CavityScratch::Boundary{u, kNoLink, kNoLink},
+                            [](const auto& x, const auto& y) { return x.a < y.a; }))
+      hide(u);
+  const std::size_t k = edges.size();
+  for (std::size_t i = k - 2; i < m; ++i) {
+    tds.free_slot(s.cavity[i]);
+    free.push_back(s.cavity[i]);
+  }
+  s.size = k - 2, s.edges = k;
+}
+
+}  // namespace ridt::detail
