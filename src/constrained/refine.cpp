@@ -2,9 +2,11 @@
 // algorithm for quality 2-dimensional mesh generation", 1995) and Shewchuk ("Delaunay
 // refinement algorithms for triangular mesh generation", 2002): a subsegment is encroached
 // when a vertex it sees (not one added on another subsegment, but for a conforming
-// triangulation) lies strictly inside its diametral circle; those are split first
-// (at the midpoint, or, where one end is a corner, at a power-of-two distance from it, so
-// that splits near a small input angle fall on concentric shells and stop). Then each bad
+// triangulation) lies strictly inside its diametral circle. A conforming triangulation splits
+// each as it is found; a constrained one where it is encroached through a triangle that the
+// angle bound exempts, or where a point to be added would encroach it (Refiner::run says why).
+// A split falls at the midpoint, or, where one end is a corner, at a power-of-two distance from
+// it, so that splits near a small input angle fall on concentric shells and stop. Each bad
 // triangle (a smallest angle below the bound, or an area above it) gets a point at its
 // off-centre (Üngör, "Off-centers", 2004): the circumcentre, or, where that lies far from the
 // shortest edge, the point on its bisector that makes an angle a little above the bound with it.
@@ -88,7 +90,7 @@ void Refiner::added(VertexId v) {
   m_.around(v, [&](TriangleId t) {
     queue_bad(t);
     for (int k = 0; k < 3; ++k)
-      if (const Link e = link_to(t, k); m_.fixed(e) && encroached(e)) queue_split(e, false);
+      if (const Link e = link_to(t, k); m_.fixed(e) && encroached(e, !r_.conforming)) queue_split(e, false);
     return false;
   });
 }
