@@ -162,8 +162,8 @@ class Builder {
   }
 
   // Where v lies: a finite face whose closure holds it (outside = false), or a wall beyond whose
-  // edge it lies (outside = true). A walk from last_; where it goes on too long (it cannot in a
-  // regular triangulation, but the perturbation's is the one it is proven for), every face.
+  // edge it lies (outside = true). A walk from last_ (it cannot cycle in a regular
+  // triangulation), and behind it, should it go on too long, a look at every face.
   TriangleId locate(VertexId v, bool& outside) {
     TriangleId t = last_;
     if (const int k = infinite_corner(tds_.corners(t)); k >= 0) t = triangle_of(tds_.link(t, k));
