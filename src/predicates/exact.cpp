@@ -16,6 +16,7 @@
 
 #include "predicates/bigint.hpp"
 #include "predicates/orient3d.hpp"
+#include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/predicates.hpp"
 
@@ -93,23 +94,9 @@ void barycentric_exact(const Point& a, const Point& b, const Point& c, const Poi
   }
 }
 
+// The power centre of the three with no weights (predicates/power_exact.cpp).
 Point circumcentre_exact(const Point& a, const Point& b, const Point& c) {
-  const int e = min_ulp_exponent({a.x, a.y, b.x, b.y, c.x, c.y});
-  auto big = [e](double v) { return BigInt::from_double(v, e); };
-  const BigInt ax = big(a.x), ay = big(a.y);
-  const BigInt bx = big(b.x) - ax, by = big(b.y) - ay, cx = big(c.x) - ax, cy = big(c.y) - ay;
-  const BigInt b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  const BigInt half = bx * cy - by * cx, d = half + half;
-  // Each coordinate (a d + n) / d, in units of 2^e: the quotient of the two rounded.
-  int de = 0;
-  const double dm = d.scaled(0, de);
-  if (dm == 0) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-  auto quotient = [&](const BigInt& n) {
-    int ne = 0;
-    const double nm = n.scaled(0, ne);
-    return nm == 0 ? 0.0 : std::ldexp(nm / dm, ne - de + e);
-  };
-  return {quotient(ax * d + cy * b2 - by * c2), quotient(ay * d + bx * c2 - cx * b2)};
+  return power_centre_exact({a, 0}, {b, 0}, {c, 0});
 }
 
 double doubled_area_exact(const Point& a, const Point& b, const Point& c) {
