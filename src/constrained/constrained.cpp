@@ -240,6 +240,7 @@ void refine(detail::Cdt& m, ConstrainedTriangulation& out, const Options& option
                        given,
                        {},
                        {}};
+  r.threads = options.threads;
   for (const Region& g : domain.regions)
     r.region_area.push_back(g.max_area > 0 ? std::ldexp(g.max_area, 2 * scale) : 0);
   if (quality.unsuitable)  // the caller's coordinates, not the scaled ones (exactly: powers of two)

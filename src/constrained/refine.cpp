@@ -21,7 +21,7 @@ namespace refining {
 // from the subsegment folds the triangles there), at a quarter or three eighths from either
 // end instead; left whole where none can.
 void Refiner::split(Link s) {
-  if (!splittable(s)) return;
+  if (!splittable(s) || frozen(s)) return;
   const Unsplit key = unsplit_key(s);
   if (unsplit_.count(key) != 0) return;
   const VertexId x = m_.tds.tail(s), y = m_.tds.head(s);
@@ -29,13 +29,19 @@ void Refiner::split(Link s) {
   const Point &a = m_.pts[x], &b = m_.pts[y];
   auto at = [&](double f) { return Point{a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f}; };
   const Point tries[5] = {split_point(x, y), at(0.25), at(0.75), at(0.375), at(0.625)};
-  for (const Point& p : tries)
-    if (const VertexId v = split_at(s, p); v != kNoVertex) {
+  for (const Point& p : tries) {
+    const VertexId v = split_at(s, p);
+    if (deferred_) {  // a tile's: left for the whole mesh
+      deferred_ = false;
+      return;
+    }
+    if (v != kNoVertex) {
       ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
       ends_[v] = ends;
       added(v);
       return;
     }
+  }
   unsplit_.insert(key);
 }
 
@@ -47,6 +53,10 @@ VertexId Refiner::split_at(Link s, const Point& given) {
   const TriangleId t = triangle_of(s);
   const int k = edge_of(s);
   const Point p = boundary(s) ? m_.not_beyond(t, k, given) : given;
+  if (fenced_split(s, p)) {
+    deferred_ = true;
+    return kNoVertex;
+  }
   if (m_.fits_on_edge(t, k, p)) return m_.insert_on_edge(p, t, k);
   if (boundary(s)) return kNoVertex;
   const Cdt::Place at = m_.beside(t, static_cast<int>(k), p);
@@ -95,8 +105,141 @@ void Refiner::added(VertexId v) {
   });
 }
 
+// The queues to begin with. A conforming triangulation splits every encroached subsegment; a
+// constrained one those a point to be added would encroach (improve's forced splits), those
+// encroached through a triangle below the angle bound that the bound exempts (beside a small
+// input angle), and those of a bad triangle the terminator leaves: a subsegment that a vertex
+// encroaches is no flaw of a constrained Delaunay mesh in itself, and splitting every one
+// added points that no bound asked for (18 to the 29 triangles of Triangle's example `A` at 1
+// degree). Then every bad triangle, in the order of their slots. The tests are made on
+// threads where they ask nothing of the caller (no test or size field of its own, no given
+// mesh whose regions are looked up), the queues filled in the same order.
+void Refiner::first_queues() {
+  const Link slots = static_cast<Link>(3 * m_.size());
+  auto split_first = [&](Link s) {
+    return m_.fixed(s) &&
+        (r_.longer_than == 0 ||
+         dist2(m_.pts[m_.tds.tail(s)], m_.pts[m_.tds.head(s)]) > r_.longer_than * r_.longer_than) &&
+        !ghost(triangle_of(s)) && encroached(s, !r_.conforming);
+  };
+  const bool threaded = thread_count(r_.threads) > 1 && fence_ == nullptr && !r_.unsuitable && !r_.sizes &&
+      r_.given == nullptr && m_.size() >= 65536;
+  if (!threaded) {
+    for (Link s = 0; s < slots; ++s)
+      if (split_first(s)) queue_split(s, false);
+    for (std::uint32_t t = 0; t < m_.size(); ++t)
+      if (!ghost(t)) queue_bad(t);
+    return;
+  }
+  std::vector<std::uint8_t> encroaching(slots);
+  std::vector<double> key(m_.size());
+  parallel_for(m_.size(), r_.threads, 16384, [&](std::size_t from, std::size_t to) {
+    for (std::size_t t = from; t < to; ++t) {
+      for (std::size_t k = 3 * t; k < 3 * t + 3; ++k) encroaching[k] = split_first(static_cast<Link>(k));
+      key[t] =
+          r_.longer_than > 0 && !longer(static_cast<TriangleId>(t)) ? kGood : badness(static_cast<std::uint32_t>(t));
+    }
+  });
+  for (Link s = 0; s < slots; ++s)
+    if (encroaching[s]) queue_split(s, false);
+  for (std::uint32_t t = 0; t < m_.size(); ++t) push_if_bad(t, key[t]);
+}
+
+// The warning for the triangles refinement gave up on that are still bad: below the angle
+// after 64 tries (each time the subsegments its point would encroach were split, or its point
+// went in beyond one, it stood again: in a wedge so thin beside one so wide that the splits
+// cannot reach it before the subsegments are too short to split), or too large where its
+// centroid could not go in.
+std::string Refiner::left_bad() const {
+  std::vector<std::uint32_t> shape, area, unsuitable;  // still bad: for the angle, the area, the caller's test
+  for (const Bad& b : given_up_)
+    if (const double key = alive(b) ? b.key : kGood; key != kGood)  // the same vertices, the same badness
+      (key >= 0 ? shape : key <= -1 ? area : unsuitable).push_back(b.t);
+  auto count = [](std::vector<std::uint32_t>& v) {
+    std::sort(v.begin(), v.end());
+    return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
+  };
+  const std::size_t below = count(shape), above = count(area), failed = count(unsuitable);
+  if (below + above + failed == 0) return "";
+  auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
+  std::string w = "quality refinement left ";
+  if (below > 0) w += triangles(below) + " below the minimum angle";
+  if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area or size";
+  if (failed > 0)
+    w += std::string(below + above > 0 ? " and " : "") + triangles(failed) + " unsuitable by the test given";
+  return w + ": the subsegments near them could not be split far enough";
+}
+
+void Refiner::improve(const Bad& b) {
+  const Point p = off_centre(b.t);
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return centroid(b);
+  const Cdt::Place at = m_.locate(b.t, p, true);
+  if (at.kind == Cdt::Place::Corner) return centroid(b);
+  // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
+  const Link e = link_to(at.t, at.k);
+  // In a tile: a point on or beyond its fence, or whose cavity would reach past it, is left.
+  if (at.kind != Cdt::Place::Inside && frozen(e)) return;
+  if (at.kind == Cdt::Place::Edge && m_.fixed(e) && !splittable(e)) return centroid(b);
+  const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
+  if (blocked) hit_.assign(1, e);
+  std::vector<Link>& hit = blocked ? hit_ : would_encroach(p, at);
+  if (fence_ != nullptr &&
+      ((!blocked && crosses_fence(p)) || std::any_of(hit.begin(), hit.end(), [&](Link s) { return frozen(s); })))
+    return;
+  std::erase_if(hit, [&](Link s) { return !splittable(s); });
+  for (const Link s : hit)
+    if (b.key >= 0 && terminated(s, b.t)) return split_own(b.t);  // never for a triangle too large
+  if (blocked || !hit.empty()) {
+    if (b.key >= 0 && wedged(b.t, hit)) return;
+    if (b.tries >= 64) return leave(b);
+    if (hit.empty()) return centroid(b);
+    for (const Link s : hit) queue_split(s, true);
+    bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
+    return;
+  }
+  // The triangles whose circles hold p are known (would_encroach's): replaced by a fan
+  // about p where they make a cavity p sees whole, else p added with flips.
+  const VertexId v = m_.insert_cavity(p);
+  added(v != kNoVertex ? v : m_.insert(p, at));
+  // p beyond a subsegment too short to split from t (a triangle far thinner than long): t
+  // stands, tried again, then given its centroid.
+  if (alive(b)) {
+    if (b.tries < 64) return bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
+    leave(b);
+  }
+}
+
+// A bad triangle left by the terminator: its own subsegments split where its apex encroaches
+// them (as a conforming mesh would split them at once), the one way left to mend it.
+void Refiner::split_own(TriangleId t) {
+  for (int k = 0; k < 3; ++k)
+    if (const Link e = link_to(t, k); m_.fixed(e) && encroached(e)) queue_split(e, false);
+}
+
+// Triangle b after 64 tries: one bad for its shape left, and counted for the warning; one too
+// large given its centroid.
+void Refiner::leave(const Bad& b) {
+  if (b.key >= 0) given_up_.push_back(b);
+  centroid(b);
+}
+
+// A triangle too large whose off-centre cannot go in (on a vertex, on the boundary kept whole,
+// or across subsegments too short to split): its centroid, inside it, instead. A triangle bad
+// only for its shape is left.
+void Refiner::centroid(const Bad& b) {
+  if (b.key >= 0) return;
+  const Point &p = m_.pts[b.v[0]], &q = m_.pts[b.v[1]], &r = m_.pts[b.v[2]];
+  const Point c{p.x / 3 + q.x / 3 + r.x / 3, p.y / 3 + q.y / 3 + r.y / 3};
+  const Cdt::Place at = m_.locate(b.t, c, true);
+  if (at.kind == Cdt::Place::Inside || (at.kind == Cdt::Place::Edge && !m_.fixed(link_to(at.t, at.k)))) {
+    if (fenced(c, at)) return;  // a tile's: left for the whole mesh
+    return added(m_.insert(c, at));
+  }
+  given_up_.push_back(b);  // a triangle too thin for its centroid to fall inside it: left, and said
+}
+
 }  // namespace refining
 
-std::string refine(Cdt& m, const Refinement& r) { return refining::Refiner(m, r).run(); }
+std::string refine(Cdt& m, const Refinement& r) { return refining::Refiner(m, r, refine_tiles(m, r)).run(); }
 
 }  // namespace ridt::detail

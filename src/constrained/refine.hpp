@@ -4,6 +4,7 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "constrained/cdt.hpp"
@@ -30,12 +31,31 @@ struct Refinement {
   std::function<bool(const Point&, const Point&, const Point&, double)> unsuitable;
   /// Quality::size at many points of m (scaled), in m's lengths; empty: none.
   std::function<void(std::span<const Point>, std::span<double>)> sizes;
+  /// Threads for the tiles of a large mesh (constrained/tiles.cpp); the mesh is the same for any.
+  unsigned threads = 1;
+  /// Only triangles with an edge longer than this are mended (tiles.cpp's first step); 0: all.
+  double longer_than = 0;
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's
 /// off-centres): encroached subsegments split first, then bad triangles, each at its
 /// off-centre unless that point would encroach a subsegment (then the subsegment is split).
-/// Every boundary edge becomes fixed. Returns a warning where it stopped early, else "".
+/// Every boundary edge becomes fixed. A large mesh is refined first tile by tile, on
+/// r.threads (constrained/tiles.cpp), then as a whole. Returns a warning where it stopped
+/// early, else "".
 std::string refine(Cdt& m, const Refinement& r);
+
+/// What refinement carries from one stage to the next: per vertex, the corners at the ends of
+/// the chain of subsegments it was added on (kNoVertex, kNoVertex for a corner or a vertex on no
+/// chain); per corner, whether two segments meet there below 60 degrees (empty: not yet found).
+struct Chains {
+  std::vector<std::pair<VertexId, VertexId>> ends;
+  std::vector<std::uint8_t> small;
+};
+
+/// The first stage of refine for a large mesh: each tile of a grid over m refined on its own,
+/// on threads, wherever that leaves the tiles' ghosts alone. Returns the chains, which the
+/// whole mesh's refinement goes on from; none where the mesh is too small for tiles.
+Chains refine_tiles(Cdt& m, const Refinement& r);
 
 }  // namespace ridt::detail

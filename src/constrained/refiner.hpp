@@ -17,6 +17,7 @@
 #include "order/order.hpp"
 #include "predicates/predicates.hpp"
 #include "runtime/memory.hpp"
+#include "runtime/parallel.hpp"
 
 namespace ridt::detail::refining {
 
@@ -35,36 +36,49 @@ inline constexpr double kGood = std::numeric_limits<double>::infinity();
 // partners).
 inline constexpr double kOneDistance = 1e-5;
 
+/// A tile's refinement (constrained/tiles.cpp): the mesh is a tile's triangles and, in slots
+/// [ghost_begin, ghost_end), the triangles beside them that are not the tile's (its ghosts),
+/// which no step may change. A point whose cavity would reach a ghost, a subsegment with a ghost
+/// beside it, and a point beyond the tile are left for the whole mesh's refinement after.
+struct Fence {
+  TriangleId ghost_begin = 0, ghost_end = 0;
+  Extent box;  ///< the whole mesh's: the Hilbert keys and the thresholds are the whole mesh's
+};
+
 class Refiner {
  public:
-  Refiner(Cdt& m, const Refinement& r) : m_(m), r_(r) {
+  /// Refines m as r asks, from `chains` (a stage before's: constrained/tiles.cpp) where given;
+  /// `fence`: m is a tile's.
+  Refiner(Cdt& m, const Refinement& r, Chains chains = {}, const Fence* fence = nullptr) : m_(m), r_(r), fence_(fence) {
     const double s = std::sin(r.min_angle * 3.14159265358979323846 / 180);
     sin2_ = s * s;
     half_bound_ = r.min_angle * 3.14159265358979323846 / 360;
     // The off-centre 5 % nearer the edge than where the new triangle's angle would be the
     // bound exactly: then it is not bad again by a rounding (23 % fewer points on a coastline of 10^4 vertices).
     offset_ = r.min_angle > 0 ? 0.475 / std::tan(r.min_angle * 3.14159265358979323846 / 360) : 0;
-    box_ = extent_of(m.pts);
+    box_ = fence != nullptr ? fence->box : extent_of(m.pts);
     diag2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1});
     tiny2_ = diag2_ * 0x1p-80;  // edges below 2^-40 of the diagonal stay
     cells_ = 65535 / std::max(box_.x1 - box_.x0, box_.y1 - box_.y0);  // infinite for one point: see curve()
-    ends_.assign(m.pts.size(), {kNoVertex, kNoVertex});
+    ends_ = std::move(chains.ends);
+    ends_.resize(m.pts.size(), {kNoVertex, kNoVertex});
+    small_ = std::move(chains.small);
   }
 
-  std::string run() {
-    const Link slots = static_cast<Link>(3 * m_.size());
-    for (Link s = 0; s < slots; ++s)
-      if (m_.boundary(s) && !m_.fixed(s)) m_.constrain(s, kUnnamed);
-    // A conforming triangulation splits every encroached subsegment; a constrained one those a
-    // point to be added would encroach (improve's forced splits), those encroached through a
-    // triangle below the angle bound that the bound exempts (beside a small input angle), and
-    // those of a bad triangle the terminator leaves: a subsegment that a vertex encroaches is
-    // no flaw of a constrained Delaunay mesh in itself, and splitting every one added points that
-    // no bound asked for (18 to the 29 triangles of Triangle's example `A` at 1 degree).
-    for (Link s = 0; s < slots; ++s)
-      if (m_.fixed(s) && encroached(s, !r_.conforming)) queue_split(s, false);
+  /// The corners where two segments meet below 60 degrees (per corner: 1 where they do), the
+  /// boundary fixed.
+  std::vector<std::uint8_t> small_angles() {
+    fix_boundary();
     find_small_angles();
-    for (std::uint32_t t = 0; t < m_.size(); ++t) queue_bad(t);
+    return small_;
+  }
+  /// The chains as run() left them.
+  Chains take_chains() { return {std::move(ends_), std::move(small_)}; }
+
+  std::string run() {
+    fix_boundary();
+    if (small_.empty()) find_small_angles();
+    first_queues();
     const std::size_t first = m_.pts.size();
     // Stop before the memory the process has left runs out, rather than be killed for it. A
     // point added costs some 100 bytes (two triangles with their neighbours and flags, the
@@ -97,6 +111,14 @@ class Refiner {
   }
 
  private:
+  void fix_boundary() {
+    const Link slots = static_cast<Link>(3 * m_.size());
+    for (Link s = 0; s < slots; ++s)
+      if (m_.boundary(s) && !m_.fixed(s)) m_.constrain(s, kUnnamed);
+  }
+
+  void first_queues();
+
   struct Split {
     VertexId x, y;
     bool forced;  // split even where no vertex encroaches it (a point to be added would)
@@ -134,31 +156,45 @@ class Refiner {
   };
 
   bool corner(VertexId v) const { return v < r_.corners; }
-  bool boundary(Link s) const { return m_.boundary(s); }
-  // The warning for the triangles refinement gave up on that are still bad: below the angle
-  // after 64 tries (each time the subsegments its point would encroach were split, or its point
-  // went in beyond one, it stood again: in a wedge so thin beside one so wide that the splits
-  // cannot reach it before the subsegments are too short to split), or too large where its
-  // centroid could not go in.
-  std::string left_bad() const {
-    std::vector<std::uint32_t> shape, area, unsuitable;  // still bad: for the angle, the area, the caller's test
-    for (const Bad& b : given_up_)
-      if (const double key = alive(b) ? b.key : kGood; key != kGood)  // the same vertices, the same badness
-        (key >= 0 ? shape : key <= -1 ? area : unsuitable).push_back(b.t);
-    auto count = [](std::vector<std::uint32_t>& v) {
-      std::sort(v.begin(), v.end());
-      return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
-    };
-    const std::size_t below = count(shape), above = count(area), failed = count(unsuitable);
-    if (below + above + failed == 0) return "";
-    auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
-    std::string w = "quality refinement left ";
-    if (below > 0) w += triangles(below) + " below the minimum angle";
-    if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area or size";
-    if (failed > 0)
-      w += std::string(below + above > 0 ? " and " : "") + triangles(failed) + " unsuitable by the test given";
-    return w + ": the subsegments near them could not be split far enough";
+  // Whether an edge of t is longer than r_.longer_than.
+  bool longer(TriangleId t) const {
+    const Point &a = m_.pts[m_.at(t, 0)], &b = m_.pts[m_.at(t, 1)], &c = m_.pts[m_.at(t, 2)];
+    return std::max({dist2(a, b), dist2(b, c), dist2(c, a)}) > r_.longer_than * r_.longer_than;
   }
+
+  // A tile's refinement (Fence): whether t is a ghost; whether edge s has one on either side
+  // (then it cannot change); whether the cavity just found (Cdt::find_cavity, for p) stops at a
+  // ghost whose circle holds p (the whole mesh's cavity would take it in); whether p, to be
+  // added at `at`, would change a ghost so (its cavity found, for would_encroach's list).
+  bool ghost(TriangleId t) const { return fence_ != nullptr && t >= fence_->ghost_begin && t < fence_->ghost_end; }
+  bool frozen(Link s) const { return fence_ != nullptr && (ghost(triangle_of(s)) || ghost(m_.across(s))); }
+  bool crosses_fence(const Point& p) const {
+    const CavityScratch& s = m_.cavity();
+    for (std::size_t i = 0; i < s.edges; ++i)
+      if (const TriangleId g = m_.across(s.boundary[i].inside); g != kNoTriangle && ghost(g) &&
+          incircle(m_.pts[m_.at(g, 0)], m_.pts[m_.at(g, 1)], m_.pts[m_.at(g, 2)], p) > 0)
+        return true;
+    return false;
+  }
+  bool fenced(const Point& p, const Cdt::Place& at) {
+    if (fence_ == nullptr) return false;
+    if (at.kind != Cdt::Place::Inside && frozen(link_to(at.t, at.k))) return true;
+    m_.find_cavity(p, at);
+    return crosses_fence(p);
+  }
+  // Whether p, put on subsegment s, would change a ghost: its cavities on both sides.
+  bool fenced_split(Link s, const Point& p) {
+    if (fence_ == nullptr) return false;
+    if (frozen(s)) return true;
+    for (const Link side : {s, m_.tds.link_at(s)}) {
+      if (side == kNoLink) continue;
+      m_.find_cavity(p, {Cdt::Place::Edge, triangle_of(side), edge_of(side)});
+      if (crosses_fence(p)) return true;
+    }
+    return false;
+  }
+  bool boundary(Link s) const { return m_.boundary(s); }
+  std::string left_bad() const;
 
   bool alive(const Bad& b) const {
     return b.t < m_.size() && m_.at(b.t, 0) == b.v[0] && m_.at(b.t, 1) == b.v[1] && m_.at(b.t, 2) == b.v[2];
@@ -166,6 +202,7 @@ class Refiner {
   // A triangle queued where bad; with a size field, first put aside until the field is asked
   // for the sizes of a batch of them (weigh_sizes).
   void queue_bad(std::uint32_t t) {
+    if (r_.longer_than > 0 && !longer(t)) return;
     if (r_.sizes) return unsized_.push_back({kGood, t, {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)}, 0, 0});
     push_if_bad(t, badness(t));
   }
@@ -350,66 +387,13 @@ class Refiner {
     return dist2(m_.pts[m_.tds.tail(s)], m_.pts[m_.tds.head(s)]) >= 4 * tiny2_;
   }
 
-  void improve(const Bad& b) {
-    const Point p = off_centre(b.t);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return centroid(b);
-    const Cdt::Place at = m_.locate(b.t, p, true);
-    if (at.kind == Cdt::Place::Corner) return centroid(b);
-    // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
-    const Link e = link_to(at.t, at.k);
-    if (at.kind == Cdt::Place::Edge && m_.fixed(e) && !splittable(e)) return centroid(b);
-    const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
-    if (blocked) hit_.assign(1, e);
-    std::vector<Link>& hit = blocked ? hit_ : would_encroach(p, at);
-    std::erase_if(hit, [&](Link s) { return !splittable(s); });
-    for (const Link s : hit)
-      if (b.key >= 0 && terminated(s, b.t)) return split_own(b.t);  // never for a triangle too large
-    if (blocked || !hit.empty()) {
-      if (b.key >= 0 && wedged(b.t, hit)) return;
-      if (b.tries >= 64) return leave(b);
-      if (hit.empty()) return centroid(b);
-      for (const Link s : hit) queue_split(s, true);
-      bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
-      return;
-    }
-    // The triangles whose circles hold p are known (would_encroach's): replaced by a fan
-    // about p where they make a cavity p sees whole, else p added with flips.
-    const VertexId v = m_.insert_cavity(p);
-    added(v != kNoVertex ? v : m_.insert(p, at));
-    // p beyond a subsegment too short to split from t (a triangle far thinner than long): t
-    // stands, tried again, then given its centroid.
-    if (alive(b)) {
-      if (b.tries < 64) return bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
-      leave(b);
-    }
-  }
+  void improve(const Bad& b);
 
-  // A bad triangle left by the terminator: its own subsegments split where its apex encroaches
-  // them (as a conforming mesh would split them at once), the one way left to mend it.
-  void split_own(TriangleId t) {
-    for (int k = 0; k < 3; ++k)
-      if (const Link e = link_to(t, k); m_.fixed(e) && encroached(e)) queue_split(e, false);
-  }
+  void split_own(TriangleId t);
 
-  // Triangle b after 64 tries: one bad for its shape left, and counted for the warning; one too
-  // large given its centroid.
-  void leave(const Bad& b) {
-    if (b.key >= 0) given_up_.push_back(b);
-    centroid(b);
-  }
+  void leave(const Bad& b);
 
-  // A triangle too large whose off-centre cannot go in (on a vertex, on the boundary kept whole,
-  // or across subsegments too short to split): its centroid, inside it, instead. A triangle bad
-  // only for its shape is left.
-  void centroid(const Bad& b) {
-    if (b.key >= 0) return;
-    const Point &p = m_.pts[b.v[0]], &q = m_.pts[b.v[1]], &r = m_.pts[b.v[2]];
-    const Point c{p.x / 3 + q.x / 3 + r.x / 3, p.y / 3 + q.y / 3 + r.y / 3};
-    const Cdt::Place at = m_.locate(b.t, c, true);
-    if (at.kind == Cdt::Place::Inside || (at.kind == Cdt::Place::Edge && !m_.fixed(link_to(at.t, at.k))))
-      return added(m_.insert(c, at));
-    given_up_.push_back(b);  // a triangle too thin for its centroid to fall inside it: left, and said
-  }
+  void centroid(const Bad& b);
 
   // Where subsegment x-y is split: at the power of two nearest half its length from its
   // corner where one end is a corner, or, both ends corners, the one at a small angle; else
@@ -438,6 +422,8 @@ class Refiner {
 
   Cdt& m_;
   const Refinement& r_;
+  const Fence* fence_ = nullptr;
+  bool deferred_ = false;  // split_at left a split to the whole mesh (a tile's fence)
   // Where p lies along the Hilbert curve over the points' box (a point added lies in it); a
   // box too wide or too thin for the scale (an infinite or NaN cell) puts p at an end.
   std::uint32_t curve(const Point& p) const {

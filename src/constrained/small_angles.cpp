@@ -66,6 +66,7 @@ bool Refiner::partner(VertexId x, VertexId y, VertexId z) {
   const Point& po = m_.pts[chain.first == z ? chain.second : chain.first];
   const double f = std::sqrt(dx / dist2(pz, po));
   const VertexId p = split_at(slot, {pz.x + (po.x - pz.x) * f, pz.y + (po.y - pz.y) * f});
+  deferred_ = false;  // (a tile's fence: the triangle is mended otherwise, or left)
   if (p == kNoVertex) return false;
   ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
   ends_[p] = chain;

@@ -84,7 +84,7 @@ void Tds::use_constraints(bool on) {
   constraints_.assign(size, kFree);
 }
 
-void Tds::make_room(TriangleId end) {
+void Tds::make_room(TriangleId end, unsigned threads) {
   const std::size_t need = 3 * std::size_t{end};
   if (need <= vertex_store_.size()) {
     if (!constraints_.empty() && constraints_.size() < need) constraints_.resize(vertex_store_.size(), kFree);
@@ -118,6 +118,11 @@ void Tds::make_room(TriangleId end) {
       }
     }
   }
+  // The new pages made present together (a megabyte or more: runtime/memory.hpp), not faulted
+  // in one by one as the fill below first writes each.
+  auto fresh = [&](auto& v) { make_present(v.data() + v.size(), (need - v.size()) * sizeof(v[0]), threads); };
+  fresh(vertex_store_), fresh(link_store_);
+  if (!constraints_.empty()) fresh(constraints_);
   vertex_store_.resize(need, kNoVertex);
   link_store_.resize(need, kNoLink);
   if (!constraints_.empty()) constraints_.resize(need, kFree);

@@ -310,9 +310,10 @@ class Tds {
     link_[tb] = link_[tb + 1] = link_[tb + 2] = kNoLink;
   }
   /// `count` slots past those in use, for a pool (unset; the arrays grow where growable).
-  TriangleId grow(TriangleId count) {
+  /// (threads: those that make the new pages present where the arrays grow; runtime/memory.hpp)
+  TriangleId grow(TriangleId count, unsigned threads = 1) {
     const TriangleId first = top_;
-    make_room(top_ + count);
+    make_room(top_ + count, threads);
     top_ += count;
     return first;
   }
@@ -343,7 +344,7 @@ class Tds {
   }
 
  private:
-  void make_room(TriangleId end);
+  void make_room(TriangleId end, unsigned threads = 1);
   void keep_constraints(CavityScratch& s) const;
   void set_fan_constraints(const CavityScratch& s);
   void refresh() {
