@@ -88,6 +88,8 @@ class ConstrainedDelaunay:
         `(points, values)` pair (scattered). Refines even without `min_angle`.
     method, threads, seed
         As for ridt.triangulate (the Delaunay triangulation the segments are inserted into).
+        A large mesh is refined on `threads` too, tile by tile: the mesh is the same on any
+        number of them (but with `unsuitable`, `size` or `max_steiner`: serially).
 
     Attributes
     ----------

@@ -138,7 +138,7 @@ TEST(Tiles, NoLargerThanTheMeshRefinedWhole) {
     // (Not the regions: refined whole, the inner square is halved and halved again into
     // triangles just below its bound, a lattice that tiles cut into; nor the small input angles,
     // a mesh of some thousands, tiled in tens.)
-    if (c.name != "coastline" && c.name != "coastline with an area bound") continue;
+    if (c.name.rfind("coastline", 0) != 0) continue;
     SCOPED_TRACE(c.name);
     std::size_t whole = 0, tiled = 0;
     {

@@ -209,7 +209,8 @@ Command add_mesh(CLI::App& app) {
                        " (i, F, l, X and I are ignored: the exact result does not depend on them)");
   mesh->add_option("--method", a->method, choices_help("", Method::Auto));
   mesh->add_option("--threads", a->threads,
-                   "threads of the triangulation and of the output's text (0, the default: all hardware threads)");
+                   "threads of the triangulation, of quality refinement (the same mesh on any number) and of the "
+                   "output's text (0, the default: all hardware threads)");
   CLI::Option* steiner = mesh->get_option("--max-steiner");
   return {mesh, [a, quality, steiner] { return run(*a, switches_of(*a, quality->count() > 0, steiner->count() > 0)); }};
 }
