@@ -328,6 +328,10 @@ def constrained_section(results):
                      n_text(r["triangles"]), angle, f"{float(r['mb_added']):.0f}"])
     process = included(results, "mesh_process.md", "Whole processes: ridt mesh against triangle",
                        "The graph: `ridt_bench_constrained --poly`.", "Machine:")
+    large = included(results, "mesh_process_large.md", "The 10^7-triangle quality mesh on 1 and 2 threads",
+                     "Refinement on threads, the same mesh on any number of them: "
+                     "[constrained.md](constrained.md#refinement-on-threads-the-same-mesh-on-any-number-of-them).",
+                     "Machine:")
     return (
         "## Constrained triangulations and quality meshes against Triangle and CGAL\n\n"
         "`ridt_bench_constrained`: generate_coastline's island with lakes (and, where said, uniform points "
@@ -339,7 +343,7 @@ def constrained_section(results):
         "the run added to its process. How the mesher works: [constrained.md](constrained.md).\n\n"
         + table(["task", "graph", "code", "s", "ratio", "triangles", "min angle", "MB"], body,
                 ["---", "---", "---", "---:", "---:", "---:", "---:", "---:"])
-        + "\n\n" + process.replace("## ", "### ", 1))
+        + "\n\n" + process.replace("## ", "### ", 1) + ("\n" + large.replace("## ", "### ", 1) if large else ""))
 
 
 def included(results, name, heading, footer, skip):

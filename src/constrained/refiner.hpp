@@ -111,10 +111,12 @@ class Refiner {
   }
 
  private:
-  void fix_boundary() {
-    const Link slots = static_cast<Link>(3 * m_.size());
-    for (Link s = 0; s < slots; ++s)
-      if (m_.boundary(s) && !m_.fixed(s)) m_.constrain(s, kUnnamed);
+  void fix_boundary() {  // (on threads for the whole mesh: a boundary edge has one side)
+    parallel_for(3 * std::size_t{m_.size()}, fence_ == nullptr ? r_.threads : 1, 1 << 18,
+                 [&](std::size_t from, std::size_t to) {
+                   for (auto s = static_cast<Link>(from); s < static_cast<Link>(to); ++s)
+                     if (m_.boundary(s) && !m_.fixed(s)) m_.constrain(s, kUnnamed);
+                 });
   }
 
   void first_queues();
@@ -415,6 +417,7 @@ class Refiner {
   void relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right);
   void added(VertexId v);
   void find_small_angles();
+  void find_small_angle(VertexId z);
   bool wedged(TriangleId t, const std::vector<Link>& hit);
   bool partnered(std::uint32_t t);
   bool partner(VertexId x, VertexId y, VertexId z);

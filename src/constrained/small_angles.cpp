@@ -75,29 +75,34 @@ bool Refiner::partner(VertexId x, VertexId y, VertexId z) {
 }
 
 // Each corner's sectors: the angles the domain's triangles make at it between two fixed
-// edges; a corner with one below 60 degrees is the apex of a cluster of segments.
+// edges; a corner with one below 60 degrees is the apex of a cluster of segments. (Each corner
+// apart: on threads for the whole mesh.)
 void Refiner::find_small_angles() {
   small_.assign(r_.corners, 0);
+  parallel_for(r_.corners, fence_ == nullptr ? r_.threads : 1, 65536, [&](std::size_t from, std::size_t to) {
+    for (auto z = static_cast<VertexId>(from); z < to; ++z) find_small_angle(z);
+  });
+}
+
+void Refiner::find_small_angle(VertexId z) {
+  if (m_.corner[z] == kNoTriangle) return;
   auto angle = [&](std::uint32_t t, int i) {
     return turn(m_.pts[m_.at(t, i)], m_.pts[m_.at(t, i + 1)], m_.pts[m_.at(t, i + 2)]);
   };
-  for (VertexId z = 0; z < r_.corners; ++z) {
-    if (m_.corner[z] == kNoTriangle) continue;
-    // From each triangle whose edge (z, u) is fixed, counter-clockwise across the edges (w, z)
-    // that are not, to the next fixed one.
-    m_.around(z, [&](TriangleId first) {
-      if (!m_.fixed(link_to(first, prev3(m_.corner_of(first, z))))) return false;
-      double sector = 0;
-      for (TriangleId t = first;;) {
-        const int i = m_.corner_of(t, z);
-        sector += angle(t, i);
-        if (m_.fixed(link_to(t, next3(i)))) break;
-        t = m_.across(link_to(t, next3(i)));
-      }
-      if (sector < 3.14159265358979323846 / 3) small_[z] = 1;
-      return small_[z] != 0;
-    });
-  }
+  // From each triangle whose edge (z, u) is fixed, counter-clockwise across the edges (w, z)
+  // that are not, to the next fixed one.
+  m_.around(z, [&](TriangleId first) {
+    if (!m_.fixed(link_to(first, prev3(m_.corner_of(first, z))))) return false;
+    double sector = 0;
+    for (TriangleId t = first;;) {
+      const int i = m_.corner_of(t, z);
+      sector += angle(t, i);
+      if (m_.fixed(link_to(t, next3(i)))) break;
+      t = m_.across(link_to(t, next3(i)));
+    }
+    if (sector < 3.14159265358979323846 / 3) small_[z] = 1;
+    return small_[z] != 0;
+  });
 }
 
 // Shewchuk's terminator, simplified: triangle t, with a vertex on a chain that ends at a
