@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what building and testing ridt needs from Debian 12, if it is missing.
 # Usage: scripts/deps.sh [build|test|bench|fuzz|python]
-#   bench: also Qhull, Triangle and node, and delaunator from npm into build/peers/node_modules
+#   bench: also Qhull, Triangle (its library and its command) and node, and delaunator from npm into build/peers/node_modules
 #   (for build/ridt_bench_peers --node-modules build/peers/node_modules). Triangle
 #   (libtriangle-dev) is in Debian's non-free component: where apt has no candidate for it, bench
 #   adds that component in /etc/apt/sources.list.d/ridt-non-free.sources (delete it to undo).
@@ -25,7 +25,7 @@ if [ "${1:-build}" = python ]; then
   packages+=(python3-dev python3-venv python3-pip python3-setuptools python3-wheel pybind11-dev python3-pybind11 python3-numpy)
 fi
 if [ "${1:-build}" = bench ]; then
-  packages+=(libqhull-dev libtriangle-dev)
+  packages+=(libqhull-dev libtriangle-dev triangle-bin)  # the library for the in-process tables, the command for the whole-process ones
   if ! grep -q "Candidate: [0-9]" <<<"$(apt-cache policy libtriangle-dev 2>/dev/null)"; then
     codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
     echo "adding Debian's non-free component for Triangle: /etc/apt/sources.list.d/ridt-non-free.sources"

@@ -56,7 +56,7 @@ if [ "$mode" = quick ]; then
   cdt_extra_args=(--n 10000 --lakes 5 --extra 90000 --reps 3)
   quality_args=(--n 25000 --lakes 10 --angle 30 --reps 3)
   mesh_args=(--cdt 100000:10 --quality 25000:10:30 --size 25000:10:30 --reps 3)
-  mesh_large_args=(--quality 250000:50:30 --reps 1)
+  mesh_large_args=(--cdt "" --quality 250000:50:30 --reps 1)
 else
   serial_args=(--reps 5)
   threads_args=(--n 1000,10000,100000,1000000 --dist uniform,grid --reps 5 --threads 1,2,4)
@@ -73,8 +73,9 @@ else
   cdt_extra_args=(--n 100000 --lakes 10 --extra 900000 --reps 5)
   quality_args=(--n 250000 --lakes 50 --angle 30 --reps 5)
   mesh_args=(--cdt 1000000:100 --quality 250000:50:30 --size 250000:50:30 --reps 5)
-  # The 10^7-triangle quality mesh on 1 and 2 threads beside Triangle's (some 3 minutes).
-  mesh_large_args=(--quality 2500000:100:30 --reps 1)
+  # The 10^7-triangle quality mesh on 1 and 2 threads beside Triangle's, and a size field over the
+  # 10^6-vertex coastline beside the uniform bound of the same mesh size (some 5 minutes).
+  mesh_large_args=(--cdt "" --quality 2500000:100:30 --size 1000000:100:30 --reps 1)
   if [ "$mode" = large ]; then
     ooc_args=(--sizes 10000000,100000000,500000000 --limits 500M,2G,4G)
     python_args=(--sizes 10000,100000,1000000 --big 10000000 --reps 3)
