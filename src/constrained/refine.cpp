@@ -240,6 +240,16 @@ void Refiner::centroid(const Bad& b) {
 
 }  // namespace refining
 
-std::string refine(Cdt& m, const Refinement& r) { return refining::Refiner(m, r, refine_tiles(m, r)).run(); }
+std::string refine(Cdt& m, const Refinement& r) {
+  const std::size_t before = m.pts.size();
+  Chains chains = refine_tiles(m, r);
+  if (r.memory == 0 || m.pts.size() == before) return refining::Refiner(m, r, std::move(chains)).run();
+  // A memory budget given (not read from the system, which counts the tiles' points itself):
+  // what the tiles' points took (as Refiner::run counts them) is spent.
+  Refinement rest = r;
+  const std::size_t spent = (m.pts.size() - before) * 320 / 3 * 4;
+  rest.memory = std::max<std::size_t>(r.memory > spent ? r.memory - spent : 0, 640);  // (room for a point)
+  return refining::Refiner(m, rest, std::move(chains)).run();
+}
 
 }  // namespace ridt::detail
