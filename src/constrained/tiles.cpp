@@ -9,9 +9,10 @@
 // step may change a ghost: a point whose cavity would take in a ghost (one whose circle holds
 // it), a point beyond the fence, a subsegment beside a ghost, are left. Each tile's outcome
 // depends on its own triangles alone, so the threads may take the tiles in any order. The tiles
-// are then put back, in their order (vertex ids and triangle slots numbered tile by tile), and
-// refine goes on over the whole mesh, serially, from the queue of what is still bad: the seams
-// between the tiles and what the fences held back.
+// are then put back, in their order (vertex ids and triangle slots numbered tile by tile). Before
+// the tiles, the bad triangles too long for one are mended serially; after them, a grid shifted
+// by half a tile takes the triangles near the first one's seams, and refine goes on over the
+// whole mesh from the queue of what is still bad: what the fences held back.
 //
 // Two tiles never share a triangle that either may change: a triangle a step changes has all
 // three corners in its tile (a ghost is never changed), and the triangle beyond an edge of the
@@ -106,8 +107,8 @@ Grid grid_for(const Cdt& m, const Refinement& r) {
   return g;
 }
 
-// A tile: its triangles' and ghosts' slots in the whole mesh (each in ascending order), its
-// vertices' ids there (its mesh's vertex i is vertex global[i]; those added come after
+// A tile: its triangles' slots in the whole mesh (ascending) and its ghosts' (as copy_out meets
+// them), its vertices' ids there (its mesh's vertex i is vertex global[i]; those added come after
 // `given`), and its mesh.
 struct Tile {
   std::vector<TriangleId> own, ghosts;
