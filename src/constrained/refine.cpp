@@ -175,10 +175,10 @@ void Refiner::improve(const Bad& b) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return centroid(b);
   const Cdt::Place at = m_.locate(b.t, p, true);
   if (at.kind == Cdt::Place::Corner) return centroid(b);
-  // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
   const Link e = link_to(at.t, at.k);
   // In a tile: a point on or beyond its fence, or whose cavity would reach past it, is left.
   if (at.kind != Cdt::Place::Inside && frozen(e)) return;
+  // On a subsegment that may not be split (the boundary's, asked to keep no new points): left.
   if (at.kind == Cdt::Place::Edge && m_.fixed(e) && !splittable(e)) return centroid(b);
   const bool blocked = at.kind == Cdt::Place::Blocked || at.kind == Cdt::Place::Outside;
   if (blocked) hit_.assign(1, e);

@@ -77,9 +77,10 @@ struct Grid {
   }
 };
 
-// The grid for m, side 0 where tiles do not apply: with the caller's test or a size field (asked
-// on the calling thread; in tiles, whose batches of sizes are smaller, a size field's mesh came
-// out a few per cent larger), a given mesh's regions or a limit on the points added.
+// The grid for m, side 0 where tiles do not apply: with the caller's test or a size field (both
+// asked on the calling thread; and a size field's mesh, whose sizes a tile asks in smaller
+// batches, comes out 1 to 10 % larger in tiles), a given mesh's regions or a limit on the points
+// added.
 Grid grid_for(const Cdt& m, const Refinement& r) {
   Grid g;
   if (r.unsuitable || r.sizes || r.given != nullptr || r.max_steiner > 0) return g;
