@@ -1,0 +1,89 @@
+// The Delaunay triangulation of points on the flat torus (periodic boundary conditions) and
+// its Voronoi cells, decided exactly.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ridt/check.hpp"
+#include "ridt/ridt.hpp"
+
+namespace ridt {
+
+/// The flat torus [x0, x0 + width) x [y0, y0 + height), origin = (x0, y0): each point stands
+/// for all its copies p + (i * width, j * height), i and j integers.
+struct PeriodicDomain {
+  Point origin{0, 0};
+  double width = 1, height = 1;
+};
+
+/// Which copy of a point: p + (dx * width, dy * height).
+struct Offset {
+  std::int32_t dx = 0, dy = 0;
+  friend bool operator==(const Offset&, const Offset&) = default;
+};
+
+/// The periodic Delaunay triangulation: the Delaunay triangulation of all the copies of the
+/// points, which repeats with the domain, given by one triangle of each class of its copies.
+/// With n distinct points it has exactly 2n triangles (the torus's Euler count), every one
+/// with three neighbours.
+struct PeriodicTriangulation {
+  PeriodicDomain domain;
+  /// #T by 3 input indices, counter-clockwise where the offsets place them. Corner 0 is the
+  /// triangle's least index (and of its copies the least offset, x then y), at offset (0, 0);
+  /// a small set may have two corners at copies of one point.
+  std::vector<VertexId> triangles;
+  /// #T by 3: the copy of corner i's point (points[triangles[3t + i]] + offsets[3t + i] scaled
+  /// by the periods is the corner).
+  std::vector<Offset> offsets;
+  /// #T by 3: the triangle across from corner i, and the offset that moves that triangle (as
+  /// its own offsets place it) onto the edge it shares with t.
+  std::vector<std::int32_t> neighbors;
+  std::vector<Offset> neighbor_offsets;
+  /// Points at the same place as another (input indices; the least one is kept).
+  std::vector<Duplicate> duplicates;
+
+  std::size_t size() const { return triangles.size() / 3; }
+};
+
+/// The periodic Delaunay triangulation of `points`, which must lie in the domain (x0 <= x <
+/// x0 + width, the same for y; exactly, not up to rounding). Decided by the exact predicates on
+/// the copies' true coordinates (not their rounded ones), with the symbolic perturbation of
+/// triangulate() (ties, as a lattice's cocircular squares, get one answer): built by
+/// randomized incremental insertion of the points and the copies within a margin of the
+/// domain (on the one mutable triangulation), the margin widened until every triangle's
+/// circle lies where the copies are complete. `threads` (0: the machine's) sort the points.
+/// Throws InputError for no point, a point not finite or outside the domain, or a width or
+/// height that is not positive and finite.
+PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
+                                           unsigned threads = 0);
+
+/// The periodic Voronoi diagram: vertex t the circumcentre of triangle t as its offsets place
+/// it (each coordinate within 2^-44 of the circumradius, and the rounding of the copies'
+/// coordinates), and each point's cell the circumcentres round it counter-clockwise, each
+/// moved by its `cell_shifts` entry so that the cell surrounds the point where it is given.
+/// The cells tile the domain: their areas add up to width * height.
+struct PeriodicVoronoi {
+  std::vector<Point> vertices;
+  /// Point i's cell is cell_vertices[cell_offsets[i] .. cell_offsets[i + 1]) (a duplicate's is
+  /// empty), each vertex moved by the same entry of cell_shifts (times the periods).
+  std::vector<std::uint32_t> cell_offsets;
+  std::vector<std::int32_t> cell_vertices;
+  std::vector<Offset> cell_shifts;
+};
+
+/// The Voronoi cells of the periodic triangulation `t` of `points`. Throws InputError when `t`
+/// does not fit the points.
+PeriodicVoronoi periodic_voronoi(std::span<const Point> points, const PeriodicTriangulation& t);
+
+/// Checks exactly that `triangles` with `offsets` is the periodic Delaunay triangulation of the
+/// points as triangulate_periodic decides it: every triangle counter-clockwise and proper where
+/// its offsets place it, every edge shared by exactly two triangles (copies matched by their
+/// offsets), every edge locally Delaunay under the same perturbation, every vertex's triangles
+/// once round it (so the triangles cover the torus once), 2n triangles, every distinct point a
+/// vertex and no two at one place.
+CheckResult check_periodic(std::span<const Point> points, const PeriodicDomain& domain,
+                           std::span<const VertexId> triangles, std::span<const Offset> offsets);
+
+}  // namespace ridt

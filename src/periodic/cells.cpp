@@ -1,0 +1,145 @@
+// The periodic triangulation's neighbours and its Voronoi cells (ridt/periodic.hpp).
+//
+// A periodic triangle's edge u -> w joins copies of u and w a fixed offset apart (w's offset
+// minus u's); its twin, in the triangle beside it, runs w -> u with that offset negated. The
+// edges are bucketed by their first point, and each twin is found among the few edges out of
+// the far end: linear time, and the same matching serves the validator.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "periodic/periodic.hpp"
+#include "predicates/predicates.hpp"
+#include "predicates/shifted.hpp"
+#include "runtime/parallel.hpp"
+#include "tds/ids.hpp"
+
+namespace ridt::detail {
+
+std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, std::span<const Offset> offsets,
+                                         std::size_t points) {
+  const std::size_t edges = triangles.size();
+  // The edges out of each point: start[u] .. start[u + 1] in `out`.
+  std::vector<std::uint32_t> start(points + 1, 0);
+  for (std::size_t e = 0; e < edges; ++e) ++start[triangles[e - e % 3 + next3(static_cast<int>(e % 3))] + 1];
+  for (std::size_t u = 0; u < points; ++u) start[u + 1] += start[u];
+  std::vector<std::uint32_t> out(edges), fill(start.begin(), start.end() - 1);
+  for (std::size_t e = 0; e < edges; ++e)
+    out[fill[triangles[e - e % 3 + next3(static_cast<int>(e % 3))]]++] = static_cast<std::uint32_t>(e);
+  // Edge e's ends and the offset from its first end to its second.
+  struct Ends {
+    VertexId u, w;
+    std::int32_t dx, dy;
+  };
+  auto ends = [&](std::size_t e) {
+    const std::size_t base = e - e % 3;
+    const std::size_t a = base + next3(static_cast<int>(e % 3)), b = base + prev3(static_cast<int>(e % 3));
+    return Ends{triangles[a], triangles[b], offsets[b].dx - offsets[a].dx, offsets[b].dy - offsets[a].dy};
+  };
+  std::vector<std::int64_t> twin(edges, -1);
+  for (std::size_t e = 0; e < edges; ++e) {
+    const Ends x = ends(e);
+    for (std::uint32_t k = start[x.w]; k < start[x.w + 1]; ++k) {
+      const Ends y = ends(out[k]);
+      if (y.w != x.u || y.dx != -x.dx || y.dy != -x.dy) continue;
+      twin[e] = twin[e] == -1 ? static_cast<std::int64_t>(out[k]) : -2;
+    }
+  }
+  return twin;
+}
+
+bool link_periodic(PeriodicTriangulation& t) {
+  const std::size_t points = t.triangles.empty() ? 0 : 1 + *std::max_element(t.triangles.begin(), t.triangles.end());
+  const std::vector<std::int64_t> twin = periodic_twins(t.triangles, t.offsets, points);
+  t.neighbors.resize(t.triangles.size());
+  t.neighbor_offsets.resize(t.triangles.size());
+  for (std::size_t e = 0; e < twin.size(); ++e) {
+    if (twin[e] < 0) return false;
+    const auto f = static_cast<std::size_t>(twin[e]);
+    t.neighbors[e] = static_cast<std::int32_t>(f / 3);
+    // The twin's first end is this edge's second: the offset that moves it there.
+    const std::size_t here = e - e % 3 + prev3(static_cast<int>(e % 3));
+    const std::size_t there = f - f % 3 + next3(static_cast<int>(f % 3));
+    t.neighbor_offsets[e] = {t.offsets[here].dx - t.offsets[there].dx, t.offsets[here].dy - t.offsets[there].dy};
+  }
+  return true;
+}
+
+bool locally_delaunay(std::span<const Point> points, const PeriodicTriangulation& t) {
+  const Periods l{t.domain.width, t.domain.height};
+  auto at = [&](std::size_t e, Offset s = {}) {
+    return Shifted{points[t.triangles[e]], t.offsets[e].dx + s.dx, t.offsets[e].dy + s.dy};
+  };
+  for (std::size_t e = 0; e < t.triangles.size(); ++e) {
+    const std::size_t u = static_cast<std::size_t>(t.neighbors[e]), b = e - e % 3;
+    if (u * 3 < b) continue;  // each edge once (an edge of a triangle with itself both ways)
+    // The neighbour's corner across the edge: the one that is neither of the edge's copies.
+    const Offset s = t.neighbor_offsets[e];
+    const Shifted p = at(b + next3(static_cast<int>(e % 3))), q = at(b + prev3(static_cast<int>(e % 3)));
+    for (int j = 0; j < 3; ++j) {
+      const Shifted d = at(3 * u + j, s);
+      const bool on_edge = (d.p == p.p && same_shift(d, p)) || (d.p == q.p && same_shift(d, q));
+      if (!on_edge && incircle_shifted(at(b), at(b + 1), at(b + 2), d, l) > 0) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace ridt::detail
+
+namespace ridt {
+
+PeriodicVoronoi periodic_voronoi(std::span<const Point> points, const PeriodicTriangulation& t) {
+  using namespace detail;
+  const std::size_t n = points.size(), triangles = t.size();
+  if (t.offsets.size() != t.triangles.size() || t.neighbors.size() != t.triangles.size() ||
+      t.neighbor_offsets.size() != t.triangles.size())
+    throw InputError("periodic_voronoi: the triangulation's arrays differ in length");
+  for (const VertexId v : t.triangles)
+    if (v >= n)
+      throw InputError("periodic_voronoi: a triangle names point " + std::to_string(v) + " of " + std::to_string(n));
+  const Periods l{t.domain.width, t.domain.height};
+  PeriodicVoronoi out;
+  out.vertices.resize(triangles);
+  for (std::size_t k = 0; k < triangles; ++k) {
+    Point c[3];
+    for (int i = 0; i < 3; ++i) {
+      const Offset o = t.offsets[3 * k + i];
+      c[i] = rounded({points[t.triangles[3 * k + i]], o.dx, o.dy}, l);
+    }
+    out.vertices[k] = circumcentre_bounded(c[0], c[1], c[2]);
+  }
+  // One corner of each point (its first), then round it counter-clockwise: from triangle k,
+  // where the point is corner i, the next is across from corner i + 1.
+  std::vector<std::int64_t> first(n, -1);
+  for (std::size_t e = 0; e < t.triangles.size(); ++e)
+    if (first[t.triangles[e]] < 0) first[t.triangles[e]] = static_cast<std::int64_t>(e);
+  out.cell_offsets.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) {
+    out.cell_offsets[v] = static_cast<std::uint32_t>(out.cell_vertices.size());
+    if (first[v] < 0) continue;
+    auto e = static_cast<std::size_t>(first[v]);
+    Offset at = t.offsets[e];  // the point's copy in the placement walked so far
+    Offset moved{0, 0};  // how far the current triangle is moved from its own offsets
+    do {
+      const std::size_t k = e / 3;
+      out.cell_vertices.push_back(static_cast<std::int32_t>(k));
+      out.cell_shifts.push_back({-t.offsets[e].dx, -t.offsets[e].dy});
+      const std::size_t across = 3 * k + next3(static_cast<int>(e % 3));
+      moved = {moved.dx + t.neighbor_offsets[across].dx, moved.dy + t.neighbor_offsets[across].dy};
+      const std::size_t u = static_cast<std::size_t>(t.neighbors[across]);
+      std::size_t next = 3 * u;
+      for (int i = 0; i < 3; ++i)
+        if (t.triangles[3 * u + i] == v && t.offsets[3 * u + i].dx + moved.dx == at.dx &&
+            t.offsets[3 * u + i].dy + moved.dy == at.dy)
+          next = 3 * u + i;
+      e = next;
+      if (out.cell_vertices.size() - out.cell_offsets[v] > triangles)
+        throw InputError("periodic_voronoi: the triangles round point " + std::to_string(v) + " do not close");
+    } while (e != static_cast<std::size_t>(first[v]) || moved.dx != 0 || moved.dy != 0);
+  }
+  out.cell_offsets[n] = static_cast<std::uint32_t>(out.cell_vertices.size());
+  return out;
+}
+
+}  // namespace ridt

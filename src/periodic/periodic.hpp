@@ -1,0 +1,27 @@
+// What the periodic triangulation's parts share (src/periodic/, src/check/check_periodic.cpp).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ridt/periodic.hpp"
+
+namespace ridt::detail {
+
+/// Each edge's twin: edge slot 3t + i (across from corner i, running corner i + 1 -> i + 2)
+/// and the slot of the edge that runs back between the same copies once the two triangles are
+/// placed side by side (the same two points, the offset between them negated), or -1 where
+/// there is none; -2 where there are several. `points` bounds the indices.
+std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, std::span<const Offset> offsets,
+                                         std::size_t points);
+
+/// t's neighbours and neighbour offsets, from its triangles and offsets; false where an edge
+/// has no twin or several (the neighbours are then not all set).
+bool link_periodic(PeriodicTriangulation& t);
+
+/// Whether every edge of t (linked) is locally Delaunay, exactly and under the perturbation:
+/// the corner across it, placed beside it, outside the triangle's circle.
+bool locally_delaunay(std::span<const Point> points, const PeriodicTriangulation& t);
+
+}  // namespace ridt::detail
