@@ -48,43 +48,6 @@ std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, st
   return twin;
 }
 
-bool link_periodic(PeriodicTriangulation& t) {
-  const std::size_t points = t.triangles.empty() ? 0 : 1 + *std::max_element(t.triangles.begin(), t.triangles.end());
-  const std::vector<std::int64_t> twin = periodic_twins(t.triangles, t.offsets, points);
-  t.neighbors.resize(t.triangles.size());
-  t.neighbor_offsets.resize(t.triangles.size());
-  for (std::size_t e = 0; e < twin.size(); ++e) {
-    if (twin[e] < 0) return false;
-    const auto f = static_cast<std::size_t>(twin[e]);
-    t.neighbors[e] = static_cast<std::int32_t>(f / 3);
-    // The twin's first end is this edge's second: the offset that moves it there.
-    const std::size_t here = e - e % 3 + prev3(static_cast<int>(e % 3));
-    const std::size_t there = f - f % 3 + next3(static_cast<int>(f % 3));
-    t.neighbor_offsets[e] = {t.offsets[here].dx - t.offsets[there].dx, t.offsets[here].dy - t.offsets[there].dy};
-  }
-  return true;
-}
-
-bool locally_delaunay(std::span<const Point> points, const PeriodicTriangulation& t) {
-  const Periods l{t.domain.width, t.domain.height};
-  auto at = [&](std::size_t e, Offset s = {}) {
-    return Shifted{points[t.triangles[e]], t.offsets[e].dx + s.dx, t.offsets[e].dy + s.dy};
-  };
-  for (std::size_t e = 0; e < t.triangles.size(); ++e) {
-    const std::size_t u = static_cast<std::size_t>(t.neighbors[e]), b = e - e % 3;
-    if (u * 3 < b) continue;  // each edge once (an edge of a triangle with itself both ways)
-    // The neighbour's corner across the edge: the one that is neither of the edge's copies.
-    const Offset s = t.neighbor_offsets[e];
-    const Shifted p = at(b + next3(static_cast<int>(e % 3))), q = at(b + prev3(static_cast<int>(e % 3)));
-    for (int j = 0; j < 3; ++j) {
-      const Shifted d = at(3 * u + j, s);
-      const bool on_edge = (d.p == p.p && same_shift(d, p)) || (d.p == q.p && same_shift(d, q));
-      if (!on_edge && incircle_shifted(at(b), at(b + 1), at(b + 2), d, l) > 0) return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace ridt::detail
 
 namespace ridt {

@@ -24,11 +24,14 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <unordered_map>
 
 #include "order/order.hpp"
-#include "periodic/periodic.hpp"
+#include "order/random.hpp"
 #include "predicates/shifted.hpp"
 #include "ridt/periodic.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "tds/delaunay.hpp"
 #include "tds/tds.hpp"
@@ -74,22 +77,16 @@ class Builder {
 
   // One attempt with margin m: true when the triangles kept are the whole periodic
   // triangulation; else `m` is what the next attempt should take.
-  // The circles are measured in rounded arithmetic, so the kept triangles are then checked
-  // exactly: linked edge to edge and every edge locally Delaunay.
   bool attempt(double& m) {
     copy(m);
     insert_all();
-    if (!keep(m)) return false;
-    out_ = {};
-    out_.domain = d_;
-    out_.triangles = std::move(kept_);
-    out_.offsets = std::move(kept_offsets_);
-    if (link_periodic(out_) && locally_delaunay(points_, out_)) return true;
-    m *= 2;
+    if (keep(m) && link()) return true;
+    if (!grown_) m *= 2;
     return false;
   }
 
   PeriodicTriangulation take() {
+    out_.domain = d_;
     for (VertexId i = 0; i < up_.size(); ++i)
       if (const VertexId r = root(up_, i); r != i) out_.duplicates.push_back({i, r});
     return std::move(out_);
@@ -105,22 +102,31 @@ class Builder {
                ky = static_cast<std::int32_t>(std::ceil(m / d_.height));
     lo_ = {d_.origin.x - m, d_.origin.y - m};
     hi_ = {d_.origin.x + d_.width + m, d_.origin.y + d_.height + m};
-    std::vector<Shifted> s;
-    std::vector<VertexId> input;
-    std::vector<Point> at;
-    s.reserve(n + n / 8), input.reserve(n + n / 8), at.reserve(n + n / 8);
+    // Copy k < n is point k as given; the others follow.
+    std::vector<Shifted> more;
+    std::vector<VertexId> of;
     for (VertexId i = 0; i < n; ++i)
       for (std::int32_t dy = -ky; dy <= ky; ++dy)
         for (std::int32_t dx = -kx; dx <= kx; ++dx) {
           const Shifted c{points_[i], dx, dy};
           const Point q = rounded(c, l_);
-          if ((dx != 0 || dy != 0) && (q.x < lo_.x || q.x > hi_.x || q.y < lo_.y || q.y > hi_.y)) continue;
-          s.push_back(c), input.push_back(i), at.push_back(q);
+          if ((dx != 0 || dy != 0) && q.x >= lo_.x && q.x <= hi_.x && q.y >= lo_.y && q.y <= hi_.y)
+            more.push_back(c), of.push_back(i);
         }
-    n_ = static_cast<VertexId>(s.size());
+    n_ = n + static_cast<VertexId>(more.size());
+    std::vector<Point> at;
+    resize_present(at, n_, threads_);
+    std::copy(points_.begin(), points_.end(), at.begin());
+    for (std::size_t k = 0; k < more.size(); ++k) at[n + k] = rounded(more[k], l_);
     const std::vector<std::uint32_t> order = brio_order(at.data(), n_, 0x5eed, threads_);
-    s_.resize(n_ + 3), input_.resize(n_);
-    for (VertexId v = 0; v < n_; ++v) s_[v] = s[order[v]], input_[v] = input[order[v]];
+    resize_present(s_, n_ + 3, threads_), resize_present(input_, n_, threads_);
+    parallel_for(n_, threads_, 65536, [&](std::size_t from, std::size_t to) {
+      for (std::size_t v = from; v < to; ++v) {
+        const std::uint32_t k = order[v];
+        s_[v] = k < n ? Shifted{points_[k], 0, 0} : more[k - n];
+        input_[v] = k < n ? k : of[k - n];
+      }
+    });
     // Far outside: every circle through one of them reaches beyond the margin, so no triangle
     // with one is kept, and none kept is changed by them.
     const double r = 8 * (std::max(d_.width, d_.height) + m);
@@ -144,6 +150,8 @@ class Builder {
     arrays.link[0] = arrays.link[1] = arrays.link[2] = kNoLink;
     tds_ = Tds(std::move(arrays.v), std::move(arrays.link), 1);
     up_.resize(points_.size());
+    given_.assign(points_.size(), kNoVertex);
+    duplicates_ = false;
     std::iota(up_.begin(), up_.end(), VertexId{0});
     TriangleId last = 0;
     CavityScratch scratch;
@@ -151,14 +159,17 @@ class Builder {
       tds_.walk(
           last, [&](VertexId a, VertexId b) { return orient(a, b, v); }, Tds::kAnywhere);
       bool equal = false;
+      VertexId kept = kNoVertex;
       for (int i = 0; i < 3 && !equal; ++i) {
         const VertexId w = tds_.vertex(last, i);
         if (w < n_ && same_shift(s_[w], s_[v]) && s_[w].p == s_[v].p) {
+          kept = w;
           const VertexId a = root(up_, input_[w]), b = root(up_, input_[v]);
           up_[std::max(a, b)] = std::min(a, b);
-          equal = true;
+          equal = duplicates_ = true;
         }
       }
+      if (s_[v].dx == 0 && s_[v].dy == 0) given_[input_[v]] = equal ? kept : v;
       if (equal) continue;
       tds_.find_cavity(
           last, scratch, [&](const VertexId* w) { return in_circle(w, v); }, Tds::kAnywhere, Tds::kNoWall,
@@ -168,54 +179,166 @@ class Builder {
     }
   }
 
-  // The least corner of a triangle: by (group's least input index, dx, dy).
-  struct Key {
-    VertexId index;
-    std::int32_t dx, dy;
-    friend auto operator<=>(const Key&, const Key&) = default;
-  };
-  Key key(VertexId v) { return {root(up_, input_[v]), s_[v].dx, s_[v].dy}; }
-
-  // Whether the circle of triangle (a, b, c) lies inside the grown domain with room for the
-  // rounding of its computation; else how far it would need the margin to reach.
-  double reach(VertexId a, VertexId b, VertexId c) const {
-    const Point pa = rounded(s_[a], l_), pb = rounded(s_[b], l_), pc = rounded(s_[c], l_);
-    const Point o = circumcentre_bounded(pa, pb, pc);
-    const double r = (1 + 0x1p-30) *
-        std::max({std::hypot(pa.x - o.x, pa.y - o.y), std::hypot(pb.x - o.x, pb.y - o.y),
-                  std::hypot(pc.x - o.x, pc.y - o.y)});
-    const double x0 = d_.origin.x, y0 = d_.origin.y;
-    const double out =
-        std::max({x0 - (o.x - r), (o.x + r) - (x0 + d_.width), y0 - (o.y - r), (o.y + r) - (y0 + d_.height)});
-    return std::isfinite(out) ? out : std::numeric_limits<double>::infinity();
-  }
-
-  // The triangles whose least corner is a point as given; false (and the next margin in m)
-  // when a circle reaches too far or their count is not 2n.
+  // The triangles whose least corner is a point as given, in their slots' order (the fans of
+  // successive insertions, near each other), that corner first; false (and the next margin in
+  // m) when a circle reaches too far or their count is not 2n.
   bool keep(double& m) {
-    // The copies' rounding (a few units in the last place of the largest coordinate).
-    const double room = 16 * kEps * (std::fabs(d_.origin.x) + std::fabs(d_.origin.y) + 2 * (d_.width + d_.height + m));
+    // The copies' rounding: two units in the last place of the largest coordinate.
+    const double room =
+        4 * kEps * (std::max(std::fabs(d_.origin.x), std::fabs(d_.origin.y)) + d_.width + d_.height + 2 * m);
     double need = 0;
-    kept_.clear(), kept_offsets_.clear();
+    grown_ = false;
+    id_.clear(), around_.clear();
+    resize_present(id_, tds_.slots(), threads_), resize_present(around_, n_, threads_);
+    std::fill(around_.begin(), around_.end(), kNoTriangle);
+    slot_.clear(), first_.clear();
     for (TriangleId t = 0; t < tds_.slots(); ++t) {
       const VertexId* c = tds_.corners(t);
+      id_[t] = -1;
       if (c[0] >= n_ || c[1] >= n_ || c[2] >= n_) continue;  // a free slot (kNoVertex) or bounding
-      const Key k[3] = {key(c[0]), key(c[1]), key(c[2])};
-      const int low = k[0] < k[1] ? (k[0] < k[2] ? 0 : 2) : (k[1] < k[2] ? 1 : 2);
-      if (k[low].dx != 0 || k[low].dy != 0) continue;
-      need = std::max(need, reach(c[0], c[1], c[2]) + 2 * room);
-      for (int j = 0; j < 3; ++j) {
-        const int i = (low + j) % 3;
-        kept_.push_back(k[i].index), kept_offsets_.push_back({k[i].dx, k[i].dy});
-      }
+      around_[c[0]] = around_[c[1]] = around_[c[2]] = t;
+      const int low = least(c);
+      if (s_[c[low]].dx != 0 || s_[c[low]].dy != 0) continue;
+      need = std::max(need, reach(c[0], c[1], c[2], room));
+      id_[t] = static_cast<std::int32_t>(slot_.size());
+      slot_.push_back(t), first_.push_back(static_cast<std::uint8_t>(low));
     }
     std::size_t distinct = 0;
     for (VertexId i = 0; i < up_.size(); ++i) distinct += root(up_, i) == i;
-    if (need <= m && kept_.size() == 6 * distinct) return true;
-    if (need <= m && kept_.size() > 6 * distinct)
+    if (need <= m && slot_.size() == 2 * distinct) return true;
+    if (need <= m && slot_.size() > 2 * distinct)
       throw std::logic_error("ridt: periodic triangulation: more triangles than the torus holds");
     m = std::max(2 * m, 1.25 * need);
-    return false;
+    return !(grown_ = true);
+  }
+
+  // The kept triangles written out, each with its neighbours: the triangle beside it in the
+  // structure where that one is kept too (then placed by its own offsets it lies there), else
+  // the kept one of that triangle's class, found by its corners (the few that cross the
+  // domain's sides), moved by its least corner's offset. False where a neighbour's class has
+  // no kept triangle (the margin was too narrow after all). The triangles and neighbours are
+  // written over the structure's own arrays (kept triangle k's slot is k or later).
+  bool link() {
+    struct Across {
+      std::size_t edge;
+      std::int32_t triangle;
+      Offset shift;
+    };
+    std::vector<Across> across;  // the neighbours found by their corners, in edge order
+    std::unordered_map<Corners, std::int32_t, CornersHash> crossing;
+    const std::size_t count = slot_.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      const VertexId* c = tds_.corners(slot_[k]);
+      if (!same_shift(s_[c[0]], s_[c[1]]) || !same_shift(s_[c[0]], s_[c[2]]))
+        crossing.emplace(corners(c, first_[k], {0, 0}), static_cast<std::int32_t>(k));
+    }
+    for (std::size_t k = 0; k < count; ++k)
+      for (int j = 0; j < 3; ++j) {
+        const TriangleId u = tds_.neighbour(slot_[k], (first_[k] + j) % 3);
+        if (u == kNoTriangle) return false;
+        if (id_[u] >= 0) continue;
+        const VertexId* c = tds_.corners(u);
+        if (c[0] >= n_ || c[1] >= n_ || c[2] >= n_) return false;
+        const int low = least(c);
+        const Offset shift{s_[c[low]].dx, s_[c[low]].dy};
+        const auto found = crossing.find(corners(c, low, shift));
+        const std::int32_t at = found != crossing.end() ? found->second : unmoved(c, shift);
+        if (at < 0) return false;
+        across.push_back({3 * k + j, at, shift});
+      }
+    out_ = {};
+    resize_present(out_.offsets, 3 * count, threads_);
+    resize_present(out_.neighbor_offsets, 3 * count, threads_);
+    VertexId* v = tds_.vertex_array().data();
+    Link* l = tds_.link_array().data();
+    std::size_t next = 0;  // in `across`
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t t = slot_[k];
+      VertexId w[3];
+      TriangleId u[3];
+      for (int j = 0; j < 3; ++j) {
+        const int i = (first_[k] + j) % 3;
+        w[j] = v[3 * t + i], u[j] = triangle_of(l[3 * t + i]);
+      }
+      for (std::size_t j = 0; j < 3; ++j) {
+        v[3 * k + j] = index(w[j]), out_.offsets[3 * k + j] = {s_[w[j]].dx, s_[w[j]].dy};
+        if (next < across.size() && across[next].edge == 3 * k + j) {
+          l[3 * k + j] = across[next].triangle, out_.neighbor_offsets[3 * k + j] = across[next].shift;
+          ++next;
+        } else {
+          l[3 * k + j] = id_[u[j]];
+        }
+      }
+    }
+    out_.triangles = std::move(tds_.vertex_array());
+    out_.neighbors = std::move(tds_.link_array());
+    out_.triangles.resize(3 * count), out_.neighbors.resize(3 * count);
+    return true;
+  }
+
+  // The kept triangle of the class of triangle c (all of whose corners have offset `shift`)
+  // whose corners are points as given: found round the first one's vertex; or -1.
+  std::int32_t unmoved(const VertexId* c, Offset shift) const {
+    VertexId w[3];
+    for (int j = 0; j < 3; ++j) {
+      if (s_[c[j]].dx != shift.dx || s_[c[j]].dy != shift.dy) return -1;
+      w[j] = given_[input_[c[j]]];
+    }
+    const TriangleId start = around_[w[0]];
+    if (start == kNoTriangle) return -1;
+    TriangleId t = start;
+    do {  // counter-clockwise round w[0]: across the edge after it
+      const int i = tds_.corner_of(t, w[0]);
+      if (tds_.vertex(t, next3(i)) == w[1] && tds_.vertex(t, prev3(i)) == w[2]) return id_[t];
+      t = tds_.neighbour(t, next3(i));
+    } while (t != start && t != kNoTriangle);
+    return -1;
+  }
+
+  // A triangle by its corners' input indices and offsets, from corner `first`, moved back by
+  // `shift`: the key of its class's kept triangle.
+  using Corners = std::array<std::int64_t, 3>;
+  struct CornersHash {
+    std::size_t operator()(const Corners& c) const {
+      return mix64(static_cast<std::uint64_t>(c[0]) ^ mix64(static_cast<std::uint64_t>(c[1]) ^ mix64(c[2])));
+    }
+  };
+  Corners corners(const VertexId* c, int first, Offset shift) {
+    Corners out;
+    for (int j = 0; j < 3; ++j) {
+      const VertexId v = c[(first + j) % 3];
+      out[j] = static_cast<std::int64_t>(index(v)) << 24 ^ std::int64_t{(s_[v].dx - shift.dx) & 0xfff} << 12 ^
+          ((s_[v].dy - shift.dy) & 0xfff);
+    }
+    return out;
+  }
+
+  // A vertex's input index: its group's least where the same point was given more than once.
+  VertexId index(VertexId v) { return duplicates_ ? root(up_, input_[v]) : input_[v]; }
+
+  // The least corner of a triangle, by (input index, dx, dy).
+  int least(const VertexId* c) {
+    auto key = [&](VertexId v) { return std::tuple{index(v), s_[v].dx, s_[v].dy}; };
+    const auto k0 = key(c[0]), k1 = key(c[1]), k2 = key(c[2]);
+    return k0 < k1 ? (k0 < k2 ? 0 : 2) : (k1 < k2 ? 1 : 2);
+  }
+
+  // How far beyond the domain the circle of triangle (a, b, c) reaches, with room for its
+  // rounding: the copies' (room), the circumcentre's, and the circle's dependence on where the
+  // corners are: a corner moved by room moves the centre by some room R / h (circumradius over
+  // the least height; first order, with a factor 2 to spare).
+  double reach(VertexId a, VertexId b, VertexId c, double room) const {
+    const Point pa = rounded(s_[a], l_), pb = rounded(s_[b], l_), pc = rounded(s_[c], l_);
+    const Point o = circumcentre_bounded(pa, pb, pc);
+    auto squared = [](const Point& p, const Point& q) { return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y); };
+    const double r = (1 + 0x1p-30) * std::sqrt(std::max({squared(pa, o), squared(pb, o), squared(pc, o)}));
+    const double edge2 = std::max({squared(pa, pb), squared(pb, pc), squared(pc, pa)});
+    const double twice_area = std::fabs((pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x));
+    const double x0 = d_.origin.x, y0 = d_.origin.y;
+    const double out =
+        std::max({x0 - (o.x - r), (o.x + r) - (x0 + d_.width), y0 - (o.y - r), (o.y + r) - (y0 + d_.height)});
+    const double slack = room * (2 + 2 * r * std::sqrt(edge2) / twice_area);
+    return std::isfinite(out + slack) ? out + slack : std::numeric_limits<double>::infinity();
   }
 
   std::span<const Point> points_;
@@ -227,9 +350,14 @@ class Builder {
   std::vector<Shifted> s_;  // by vertex id: the copy, then the bounding vertices
   std::vector<VertexId> input_;  // by vertex id: its point's input index
   std::vector<VertexId> up_;  // by input index: the union of equal points
+  std::vector<VertexId> given_;  // by input index: the vertex at its place as given (offset 0)
+  std::vector<TriangleId> around_;  // by vertex id: a triangle that has it
+  bool grown_ = false;  // keep() has set the next margin
+  bool duplicates_ = false;
   Tds tds_;
-  std::vector<VertexId> kept_;
-  std::vector<Offset> kept_offsets_;
+  std::vector<std::int32_t> id_;  // by slot: its kept triangle, or -1
+  std::vector<TriangleId> slot_;  // by kept triangle: its slot
+  std::vector<std::uint8_t> first_;  // and the slot's corner that comes first
   PeriodicTriangulation out_;
 };
 

@@ -16,12 +16,4 @@ namespace ridt::detail {
 std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, std::span<const Offset> offsets,
                                          std::size_t points);
 
-/// t's neighbours and neighbour offsets, from its triangles and offsets; false where an edge
-/// has no twin or several (the neighbours are then not all set).
-bool link_periodic(PeriodicTriangulation& t);
-
-/// Whether every edge of t (linked) is locally Delaunay, exactly and under the perturbation:
-/// the corner across it, placed beside it, outside the triangle's circle.
-bool locally_delaunay(std::span<const Point> points, const PeriodicTriangulation& t);
-
 }  // namespace ridt::detail
