@@ -991,5 +991,39 @@ expect 2 "regular: two columns" -- "$ridt" regular <(printf '0 0\n1 0\n0 1\n') -
 expect 2 "regular: a weight that is not finite" -- "$ridt" regular <(printf '0 0 0\n1 0 inf\n0 1 0\n') -o "$dir/inf.ele"
 expect 2 "regular: a .node without attributes" -- "$ridt" regular <(printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n') -o "$dir/na.ele"
 
+# ridt periodic: points on the torus of a domain; triangles with offsets, neighbours, cells
+# whose areas add up to the domain's; points outside refused, nothing written.
+/usr/bin/python3 -c "
+import random
+random.seed(8)
+with open('$dir/torus.txt', 'w') as f:
+    for i in range(2000):
+        f.write(f'{2 + 3 * random.random()} {-1 + 0.5 * random.random()}\\n')
+    f.write('2 -1\\n2 -1\\n')
+"
+expect 0 "periodic on a domain" -- "$ridt" periodic "$dir/torus.txt" --domain 2,-1,5,-0.5 -o "$dir/torus_tri.txt" \
+  --neighbors "$dir/torus_nb.txt" --cells "$dir/torus_cells.txt" --check --threads 2
+stderr_has "the periodic Delaunay triangulation of 2001 distinct points"
+stderr_has "1 duplicate point dropped"
+/usr/bin/python3 -c "
+import sys
+tris = [list(map(int, l.split())) for l in open(sys.argv[1])]
+nbs = [list(map(int, l.split())) for l in open(sys.argv[2])]
+cells = [list(map(float, l.split())) for l in open(sys.argv[3])]
+assert len(tris) == 4002 and len(nbs) == 4002 and len(cells) == 2002, (len(tris), len(nbs), len(cells))
+assert all(len(t) == 9 and t[3] == 0 and t[4] == 0 for t in tris)
+area = 0
+for c in cells:
+    xs, ys = c[0::2], c[1::2]
+    area += sum(xs[i] * ys[(i + 1) % len(xs)] - xs[(i + 1) % len(xs)] * ys[i] for i in range(len(xs))) / 2
+assert abs(area - 1.5) < 1e-9, area
+assert cells[2001] == []
+" "$dir/torus_tri.txt" "$dir/torus_nb.txt" "$dir/torus_cells.txt" && pass || fail "periodic: 2n triangles, cells tile the domain"
+expect 2 "periodic: a point outside the domain" -- "$ridt" periodic <(printf '0.5 0.5\n1 0.5\n') -o "$dir/out.txt"
+stderr_has "outside the domain"
+absent "$dir/out.txt"
+expect 2 "periodic: a domain of three numbers" -- "$ridt" periodic "$dir/torus.txt" --domain 0,0,1 -o "$dir/out.txt"
+absent "$dir/out.txt"
+
 echo "cli: $passes passed, $fails failed"
 [ "$fails" -eq 0 ]

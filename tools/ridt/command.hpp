@@ -35,6 +35,7 @@ Command add_tin(CLI::App& app);
 Command add_dem(CLI::App& app);
 Command add_sphere(CLI::App& app);
 Command add_regular(CLI::App& app);
+Command add_periodic(CLI::App& app);
 
 /// A seed as text: the whole of it a decimal integer that fits 64 bits.
 extern const CLI::Validator kSeed;

@@ -9,6 +9,7 @@
 //   ridt dem INPUT.las|.csv|.gpkg -o DEM.tif --resolution R [--method M] [--max-edge L]
 //   ridt sphere POINTS -o OUT.off [--voronoi CELLS.off] [--areas AREAS.txt] [--check]
 //   ridt regular WEIGHTED -o OUT.ele [--power CELLS.svg] [--hidden FILE] [--check]
+//   ridt periodic POINTS -o OUT.txt [--domain x0,y0,x1,y1] [--neighbors FILE] [--cells FILE] [--check]
 // Exit status: 0 success, 1 an invalid triangulation (check), 2 bad input or usage, 3 an
 // internal error.
 
@@ -94,9 +95,9 @@ int main(int argc, char** argv) {
   CLI::App app{"ridt: exact 2D Delaunay triangulation by randomized incremental insertion"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version());
-  const std::vector<Command> commands = {add_triangulate(app), add_generate(app), add_check(app),  add_voronoi(app),
-                                         add_interpolate(app), add_mesh(app),     add_tin(app),    add_dem(app),
-                                         add_sphere(app),      add_regular(app),  add_formats(app)};
+  const std::vector<Command> commands = {add_triangulate(app), add_generate(app), add_check(app),    add_voronoi(app),
+                                         add_interpolate(app), add_mesh(app),     add_tin(app),      add_dem(app),
+                                         add_sphere(app),      add_regular(app),  add_periodic(app), add_formats(app)};
   if (const std::optional<int> done = parse(app, argc, argv)) return *done;
   return run(commands);
 }
