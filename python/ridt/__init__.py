@@ -26,6 +26,7 @@ from ._interpolate import (CloughTocher2DInterpolator, GradientEstimationWarning
                            NaturalNeighborInterpolator, NearestNDInterpolator, estimate_gradients_2d_global, griddata)
 from ._voronoi import Voronoi
 from ._regular import PowerDiagram, RegularTriangulation
+from ._periodic import PeriodicDelaunay, PeriodicVoronoi
 from . import terrain, triangle
 
 __version__ = "0.1.0"
@@ -43,6 +44,8 @@ __all__ = [
     "LinearNDInterpolator",
     "NaturalNeighborInterpolator",
     "NearestNDInterpolator",
+    "PeriodicDelaunay",
+    "PeriodicVoronoi",
     "PowerDiagram",
     "RefinementWarning",
     "RegularTriangulation",

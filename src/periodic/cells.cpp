@@ -97,7 +97,7 @@ PeriodicVoronoi periodic_voronoi(std::span<const Point> points, const PeriodicTr
             t.offsets[3 * u + i].dy + moved.dy == at.dy)
           next = 3 * u + i;
       e = next;
-      if (out.cell_vertices.size() - out.cell_offsets[v] > triangles)
+      if (out.cell_vertices.size() - out.cell_offsets[v] > 3 * triangles)
         throw InputError("periodic_voronoi: the triangles round point " + std::to_string(v) + " do not close");
     } while (e != static_cast<std::size_t>(first[v]) || moved.dx != 0 || moved.dy != 0);
   }

@@ -147,7 +147,21 @@ TEST(Periodic, TinySetsCoverTheTorus) {
   // One point: its copies are a lattice; two triangles. Up to a handful: copies of one point
   // may be corners of one triangle.
   for (std::size_t n = 1; n <= 6; ++n)
-    for (std::uint64_t seed = 0; seed < 5; ++seed) checked(uniform(n, seed), {});
+    for (std::uint64_t seed = 0; seed < 5; ++seed) {
+      const std::vector<Point> pts = uniform(n, seed);
+      const PeriodicVoronoi v = periodic_voronoi(pts, checked(pts, {}));
+      double area = 0;  // the cells, each round its point, add up to the domain
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::uint32_t k = v.cell_offsets[i]; k < v.cell_offsets[i + 1]; ++k) {
+          const std::uint32_t l = k + 1 < v.cell_offsets[i + 1] ? k + 1 : v.cell_offsets[i];
+          const Point p = v.vertices[static_cast<std::size_t>(v.cell_vertices[k])],
+                      q = v.vertices[static_cast<std::size_t>(v.cell_vertices[l])];
+          const double px = p.x + v.cell_shifts[k].dx - pts[i].x, py = p.y + v.cell_shifts[k].dy - pts[i].y;
+          const double qx = q.x + v.cell_shifts[l].dx - pts[i].x, qy = q.y + v.cell_shifts[l].dy - pts[i].y;
+          area += (px * qy - py * qx) / 2;
+        }
+      EXPECT_NEAR(area, 1.0, 1e-12) << n << " points, seed " << seed;
+    }
   const PeriodicTriangulation one = checked({{0.25, 0.5}}, {});
   EXPECT_EQ(one.size(), 2u);
   checked({{0, 0}}, {{0, 0}, 3, 1});  // a long thin domain
