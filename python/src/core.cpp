@@ -30,7 +30,8 @@ namespace py = pybind11;
 // terrain.cpp, memory.cpp, interpolate.cpp, constrained.cpp
 void bind_terrain(py::module_&m), bind_memory(py::module_&m), bind_interpolation(py::module_&m),
     bind_constrained(py::module_&m), bind_triangle(py::module_&m), bind_triangle_files(py::module_&m),
-    bind_size_field(py::module_&m), bind_hull(py::module_&m), bind_sphere(py::module_&m), bind_regular(py::module_&m), bind_periodic(py::module_&m);
+    bind_size_field(py::module_&m), bind_hull(py::module_&m), bind_sphere(py::module_&m), bind_regular(py::module_&m),
+    bind_periodic(py::module_&m);
 
 namespace {
 
