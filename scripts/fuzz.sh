@@ -19,14 +19,14 @@ build_only=0
 [ "${1:-}" = --build-only ] && build_only=1 && shift
 seconds=${1:-60}
 targets=("${@:2}")
-[ "${#targets[@]}" -gt 0 ] || targets=(readers triangulate terrain sphere regular)
+[ "${#targets[@]}" -gt 0 ] || targets=(readers triangulate terrain sphere regular periodic)
 scripts/deps.sh fuzz
 
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ -DRIDT_BUILD_FUZZ=ON \
   -DRIDT_SANITIZE=address,undefined -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=OFF \
   -DRIDT_BUILD_TOOLS=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target fuzz_readers fuzz_triangulate fuzz_terrain fuzz_sphere fuzz_regular
+cmake --build build-fuzz -j "$(nproc)" --target fuzz_readers fuzz_triangulate fuzz_terrain fuzz_sphere fuzz_regular fuzz_periodic
 [ "$build_only" = 1 ] && exit 0
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
@@ -34,9 +34,9 @@ export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 mkdir -p build-fuzz/findings
 # Inputs: readers up to 4 KiB of file; triangulations up to 256 points (of 256 positions), on the
 # sphere up to 64 (of 120 kinds), weighted up to 64 (of 256 kinds).
-declare -A max_len=([readers]=4096 [triangulate]=257 [terrain]=4096 [sphere]=65 [regular]=65)
+declare -A max_len=([readers]=4096 [triangulate]=257 [terrain]=4096 [sphere]=65 [regular]=65 [periodic]=65)
 for target in "${targets[@]}"; do
-  [ -n "${max_len[$target]:-}" ] || { echo "unknown fuzz target '$target' (readers, triangulate, terrain, sphere or regular)"; exit 2; }
+  [ -n "${max_len[$target]:-}" ] || { echo "unknown fuzz target '$target' (readers, triangulate, terrain, sphere, regular or periodic)"; exit 2; }
   echo "== fuzz_$target for ${seconds}s"
   rm -f build-fuzz/findings/"$target"-*
   mkdir -p "build-fuzz/corpus/$target"

@@ -80,7 +80,7 @@ class Builder {
   bool attempt(double& m) {
     copy(m);
     insert_all();
-    if (keep(m) && link()) return true;
+    if (keep(m) && link() && (!verify_ || check_periodic(points_, d_, out_.triangles, out_.offsets).valid)) return true;
     if (!grown_) m *= 2;
     return false;
   }
@@ -183,11 +183,12 @@ class Builder {
   // successive insertions, near each other), that corner first; false (and the next margin in
   // m) when a circle reaches too far or their count is not 2n.
   bool keep(double& m) {
-    // The copies' rounding: two units in the last place of the largest coordinate.
-    const double room =
+    // Where a copy near the margin's edge is taken or left by its rounded place: two units in
+    // the last place of the largest coordinate.
+    const double edge =
         4 * kEps * (std::max(std::fabs(d_.origin.x), std::fabs(d_.origin.y)) + d_.width + d_.height + 2 * m);
-    double need = 0;
-    grown_ = false;
+    Reach need{0, 0};
+    grown_ = verify_ = false;
     id_.clear(), around_.clear();
     resize_present(id_, tds_.slots(), threads_), resize_present(around_, n_, threads_);
     std::fill(around_.begin(), around_.end(), kNoTriangle);
@@ -199,17 +200,51 @@ class Builder {
       around_[c[0]] = around_[c[1]] = around_[c[2]] = t;
       const int low = least(c);
       if (s_[c[low]].dx != 0 || s_[c[low]].dy != 0) continue;
-      need = std::max(need, reach(c[0], c[1], c[2], room));
+      const Reach r = reach(c);
+      need = {std::max(need.bare, r.bare + edge), std::max(need.sure, r.sure + edge)};
       id_[t] = static_cast<std::int32_t>(slot_.size());
       slot_.push_back(t), first_.push_back(static_cast<std::uint8_t>(low));
     }
     std::size_t distinct = 0;
     for (VertexId i = 0; i < up_.size(); ++i) distinct += root(up_, i) == i;
-    if (need <= m && slot_.size() == 2 * distinct) return true;
-    if (need <= m && slot_.size() > 2 * distinct)
+    if (need.bare <= m && slot_.size() > 2 * distinct)
       throw std::logic_error("ridt: periodic triangulation: more triangles than the torus holds");
-    m = std::max(2 * m, 1.25 * need);
+    if (need.sure <= m && slot_.size() == 2 * distinct) return true;
+    // Circles whose rounding alone leaves them in doubt (slivers with corners at copies whose
+    // coordinates are no doubles): the result is checked exactly instead of the margin grown.
+    if (need.bare <= m && slot_.size() == 2 * distinct) return verify_ = true;
+    m = std::max(2 * m, 1.25 * need.bare);
     return !(grown_ = true);
+  }
+
+  // How far beyond the domain a kept triangle's circle reaches: as computed (bare), and with
+  // room for the rounding of the corners at copies (sure). A corner moved by delta moves the
+  // centre by up to some delta R / h (circumradius over the corner's height; first order, with
+  // a factor 2 to spare); a corner at a point as given is exact.
+  struct Reach {
+    double bare, sure;
+  };
+  Reach reach(const VertexId* c) const {
+    Point p[3];
+    for (int i = 0; i < 3; ++i) p[i] = rounded(s_[c[i]], l_);
+    const Point o = circumcentre_bounded(p[0], p[1], p[2]);
+    auto squared = [](const Point& a, const Point& b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); };
+    const double r = (1 + 0x1p-30) * std::sqrt(std::max({squared(p[0], o), squared(p[1], o), squared(p[2], o)}));
+    const double twice_area = std::fabs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x));
+    double slack = 0;
+    for (int i = 0; i < 3; ++i) {
+      const Shifted& q = s_[c[i]];
+      if (q.dx == 0 && q.dy == 0) continue;
+      const double delta =
+          2 * kEps * (std::fabs(q.dx * l_.width) + std::fabs(q.dy * l_.height) + std::fabs(p[i].x) + std::fabs(p[i].y));
+      slack += delta * (1 + 2 * r * std::sqrt(squared(p[(i + 1) % 3], p[(i + 2) % 3])) / twice_area);
+    }
+    const double x0 = d_.origin.x, y0 = d_.origin.y;
+    const double out =
+        std::max({x0 - (o.x - r), (o.x + r) - (x0 + d_.width), y0 - (o.y - r), (o.y + r) - (y0 + d_.height)});
+    if (!std::isfinite(out + slack))
+      return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    return {out, out + slack};
   }
 
   // The kept triangles written out, each with its neighbours: the triangle beside it in the
@@ -323,24 +358,6 @@ class Builder {
     return k0 < k1 ? (k0 < k2 ? 0 : 2) : (k1 < k2 ? 1 : 2);
   }
 
-  // How far beyond the domain the circle of triangle (a, b, c) reaches, with room for its
-  // rounding: the copies' (room), the circumcentre's, and the circle's dependence on where the
-  // corners are: a corner moved by room moves the centre by some room R / h (circumradius over
-  // the least height; first order, with a factor 2 to spare).
-  double reach(VertexId a, VertexId b, VertexId c, double room) const {
-    const Point pa = rounded(s_[a], l_), pb = rounded(s_[b], l_), pc = rounded(s_[c], l_);
-    const Point o = circumcentre_bounded(pa, pb, pc);
-    auto squared = [](const Point& p, const Point& q) { return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y); };
-    const double r = (1 + 0x1p-30) * std::sqrt(std::max({squared(pa, o), squared(pb, o), squared(pc, o)}));
-    const double edge2 = std::max({squared(pa, pb), squared(pb, pc), squared(pc, pa)});
-    const double twice_area = std::fabs((pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x));
-    const double x0 = d_.origin.x, y0 = d_.origin.y;
-    const double out =
-        std::max({x0 - (o.x - r), (o.x + r) - (x0 + d_.width), y0 - (o.y - r), (o.y + r) - (y0 + d_.height)});
-    const double slack = room * (2 + 2 * r * std::sqrt(edge2) / twice_area);
-    return std::isfinite(out + slack) ? out + slack : std::numeric_limits<double>::infinity();
-  }
-
   std::span<const Point> points_;
   PeriodicDomain d_;
   Periods l_;
@@ -353,6 +370,7 @@ class Builder {
   std::vector<VertexId> given_;  // by input index: the vertex at its place as given (offset 0)
   std::vector<TriangleId> around_;  // by vertex id: a triangle that has it
   bool grown_ = false;  // keep() has set the next margin
+  bool verify_ = false;  // keep() asks for the exact validator
   bool duplicates_ = false;
   Tds tds_;
   std::vector<std::int32_t> id_;  // by slot: its kept triangle, or -1
