@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -15,5 +16,14 @@ namespace ridt::detail {
 /// there is none; -2 where there are several. `points` bounds the indices.
 std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, std::span<const Offset> offsets,
                                          std::size_t points);
+
+/// triangulate_periodic's two ways: the points' own Delaunay triangulation and a band along
+/// the domain's sides (nothing where the points have no triangulation of their own, or the
+/// band would cover much of the domain), and the triangulation of all the points and their
+/// copies near the domain (any points).
+std::optional<PeriodicTriangulation> triangulate_periodic_split(std::span<const Point> points,
+                                                                const PeriodicDomain& domain, unsigned threads);
+PeriodicTriangulation triangulate_periodic_whole(std::span<const Point> points, const PeriodicDomain& domain,
+                                                 unsigned threads);
 
 }  // namespace ridt::detail

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "periodic/periodic.hpp"
 #include "ridt/periodic.hpp"
 #include "ridt/ridt.hpp"
 
@@ -201,6 +202,52 @@ TEST(Periodic, SameOnAnyOrderAndThreadCount) {
     back.insert(face(c));
   }
   EXPECT_EQ(back, base);
+}
+
+// The two ways (the points' triangulation with a band along the sides, and all the copies near
+// the domain) give the same triangles, in any order: both are the periodic triangulation.
+TEST(Periodic, BandAndWholeAgree) {
+  std::mt19937_64 random(21);
+  std::normal_distribution<double> g(0, 0.01);
+  std::vector<std::pair<std::vector<Point>, PeriodicDomain>> cases;
+  cases.emplace_back(uniform(30000, 3), PeriodicDomain{});
+  cases.emplace_back(uniform(8000, 4, {{-5, 7}, 2, 0.5}), PeriodicDomain{{-5, 7}, 2, 0.5});
+  std::vector<Point> lattice;  // every square cocircular; copies exact
+  for (int y = 0; y < 80; ++y)
+    for (int x = 0; x < 64; ++x) lattice.push_back({double(x), double(y)});
+  cases.emplace_back(lattice, PeriodicDomain{{0, 0}, 64, 80});
+  std::vector<Point> clusters = uniform(2000, 6);  // clusters astride the sides, and duplicates
+  for (int i = 0; i < 6000; ++i) {
+    double x = std::fmod(1.0 + g(random), 1.0), y = std::fmod(1.0 + 0.3 * (i % 3) + g(random), 1.0);
+    clusters.push_back({x < 1 ? x : 0, y < 1 ? y : 0});
+  }
+  for (int i = 0; i < 50; ++i) clusters.push_back(clusters[std::size_t(i) * 97]);
+  cases.emplace_back(clusters, PeriodicDomain{});
+  for (const auto& [pts, d] : cases) {
+    const std::optional<PeriodicTriangulation> band = detail::triangulate_periodic_split(pts, d, 2);
+    ASSERT_TRUE(band.has_value()) << pts.size() << " points";
+    const PeriodicTriangulation whole = detail::triangulate_periodic_whole(pts, d, 2);
+    EXPECT_TRUE(check_periodic(pts, d, band->triangles, band->offsets).valid);
+    EXPECT_EQ(faces(*band), faces(whole)) << pts.size() << " points";
+    ASSERT_EQ(band->duplicates.size(), whole.duplicates.size());
+    for (std::size_t k = 0; k < whole.duplicates.size(); ++k) {
+      EXPECT_EQ(band->duplicates[k].dropped, whole.duplicates[k].dropped);
+      EXPECT_EQ(band->duplicates[k].kept, whole.duplicates[k].kept);
+    }
+    // Each neighbour, moved by its offset, has the shared edge's two corners.
+    for (std::size_t e = 0; e < band->triangles.size(); ++e) {
+      const std::size_t u = static_cast<std::size_t>(band->neighbors[e]), b = e - e % 3;
+      const Offset s = band->neighbor_offsets[e];
+      for (const std::size_t c : {b + (e + 1) % 3, b + (e + 2) % 3}) {
+        bool found = false;
+        for (std::size_t j = 0; j < 3; ++j)
+          found = found || (band->triangles[3 * u + j] == band->triangles[c] &&
+                            band->offsets[3 * u + j].dx + s.dx == band->offsets[c].dx &&
+                            band->offsets[3 * u + j].dy + s.dy == band->offsets[c].dy);
+        ASSERT_TRUE(found) << "edge " << e;
+      }
+    }
+  }
 }
 
 TEST(Periodic, DuplicatesKeepTheLeastIndex) {
