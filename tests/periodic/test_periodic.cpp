@@ -241,9 +241,10 @@ TEST(Periodic, BandAndWholeAgree) {
       for (const std::size_t c : {b + (e + 1) % 3, b + (e + 2) % 3}) {
         bool found = false;
         for (std::size_t j = 0; j < 3; ++j)
-          found = found || (band->triangles[3 * u + j] == band->triangles[c] &&
-                            band->offsets[3 * u + j].dx + s.dx == band->offsets[c].dx &&
-                            band->offsets[3 * u + j].dy + s.dy == band->offsets[c].dy);
+          found = found ||
+              (band->triangles[3 * u + j] == band->triangles[c] &&
+               band->offsets[3 * u + j].dx + s.dx == band->offsets[c].dx &&
+               band->offsets[3 * u + j].dy + s.dy == band->offsets[c].dy);
         ASSERT_TRUE(found) << "edge " << e;
       }
     }
