@@ -1,24 +1,28 @@
-// The periodic Delaunay triangulation (ridt/periodic.hpp): the Delaunay triangulation of the
-// points and their copies near the domain, on the one mutable triangulation (tds/tds.hpp),
-// from which one triangle of each class of translates is kept.
+// The periodic Delaunay triangulation (ridt/periodic.hpp), two ways.
 //
 // The copies of the points tile the plane, and their Delaunay triangulation repeats with the
-// domain. Take the copies that lie within a margin m of the domain, S, and triangulate them
-// (inside a finite bounding triangle far away). A triangle of that triangulation whose circle
-// lies inside the domain grown by m is empty of every copy (all copies there are in S), so it
-// is a triangle of the periodic one; and with m at least the largest circle's diameter, every
-// periodic triangle has a copy whose least corner lies in the domain, all of whose corners are
-// in S. So: keep the triangles whose least corner (by input index, then offset) is a point as
-// given (offset 0) — one of each class, since moving a triangle moves its least corner — and
-// check them: when every kept circle lies inside and there are 2n of them (the torus's count),
-// they are the whole periodic triangulation. Otherwise the margin grows and all is built again
-// (uniform points rarely need it: the first margin is some 2.4 times the expected largest
-// empty circle's diameter).
+// domain; one triangle of each class of translates is kept: the one whose least corner (by
+// input index, then offset) is a point as given (periodic/builder.hpp).
 //
-// The predicates are those of the ordinary triangulation on the copies' true coordinates
-// (predicates/shifted.hpp): the lexicographic order that keys the perturbation does not change
-// when all points move together, so translates of a configuration get translated answers, and
-// the kept triangles fit together.
+// The whole way (any set): triangulate every point and its copies within a margin m of the
+// domain on the one mutable triangulation, keep the triangles whose circles lie inside the
+// domain grown by m, and check that there are 2n (the torus's count) and that every edge has its
+// twin; else grow the margin and build again (uniform points rarely need it: the first margin is
+// some 2.4 times the expected largest empty circle's diameter).
+//
+// The split way (from kSplitPoints points on): a triangle whose circle lies inside the domain
+// holds no copy (they all lie outside) and, in the points' own Delaunay triangulation, no
+// point: so that triangulation — triangulate(), the library's fastest, on threads — gives all
+// of those. The rest have circles that cross the domain's sides: at most the largest circle's
+// diameter from them, so they are the whole way's triangles over the points within m of the
+// sides (a band, some 4 m / side of the points) whose circles are not inside and at most m
+// across. One test (circle_inside), on the same arguments, sorts the triangles of both, so each
+// periodic triangle comes once; the two parts are joined by the twins of the edges between
+// them, and checked as the whole way's are.
+//
+// Both stand on exact predicates of the copies' true coordinates (predicates/shifted.hpp);
+// only where a circle lies is measured in rounded arithmetic, with room for its rounding, and
+// where that room alone leaves a circle in doubt the result is checked by the exact validator.
 #include <algorithm>
 #include <cmath>
 #include <optional>
