@@ -191,6 +191,7 @@ std::optional<PeriodicTriangulation> split(std::span<const Point> points, const 
   std::int32_t kept = 0;
   for (std::size_t k = 0; k < count; ++k)
     if (inside[k]) id[k] = kept++;
+  std::vector<Point>().swap(sorted), std::vector<std::uint8_t>().swap(inside);  // memory for the result
   while (4 * m < std::min(d.width, d.height)) {
     std::vector<VertexId> band;
     for (VertexId i = 0; i < points.size(); ++i) {

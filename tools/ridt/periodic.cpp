@@ -26,16 +26,18 @@ PeriodicDomain domain_option(const std::string& text) {
   return {{v[0], v[1]}, v[2] - v[0], v[3] - v[1]};
 }
 
-// Rows of indices (first_index added) and offset pairs, three of each a triangle.
-void write_rows(const std::string& path, std::span<const std::int64_t> indices, std::span<const Offset> offsets) {
+// Rows of indices (`first` added) and offset pairs, three of each a triangle.
+template <class Index>
+void write_rows(const std::string& path, std::span<const Index> indices, std::int64_t first,
+                std::span<const Offset> offsets, unsigned threads) {
   io::Writer out(path);
-  for (std::size_t t = 0; 3 * t < indices.size(); ++t) {
-    for (int i = 0; i < 3; ++i) out.put_int(indices[3 * t + i]), out.put(' ');
-    for (int i = 0; i < 3; ++i) {
-      out.put_int(offsets[3 * t + i].dx), out.put(' '), out.put_int(offsets[3 * t + i].dy);
-      out.put(i < 2 ? ' ' : '\n');
+  out.put_lines(indices.size() / 3, threads, [&](std::size_t t, io::TextPart& line) {
+    for (std::size_t i = 0; i < 3; ++i) line.put_int(indices[3 * t + i] + first), line.put(' ');
+    for (std::size_t i = 0; i < 3; ++i) {
+      line.put_int(offsets[3 * t + i].dx), line.put(' '), line.put_int(offsets[3 * t + i].dy);
+      line.put(i < 2 ? ' ' : '\n');
     }
-  }
+  });
   out.commit();
 }
 
@@ -69,11 +71,9 @@ int run_periodic(const PeriodicArgs& a) {
     std::fprintf(stderr, "ridt: %s\n", r.message.c_str());
     if (!r.valid) status = kExitInvalid;
   }
-  std::vector<std::int64_t> rows(t.triangles.begin(), t.triangles.end());
-  for (std::int64_t& v : rows) v += in.first_index;
-  write_rows(a.output, rows, t.offsets);
+  write_rows(a.output, std::span<const VertexId>(t.triangles), in.first_index, t.offsets, threads);
   if (!a.neighbors.empty())
-    write_rows(a.neighbors, std::vector<std::int64_t>(t.neighbors.begin(), t.neighbors.end()), t.neighbor_offsets);
+    write_rows(a.neighbors, std::span<const std::int32_t>(t.neighbors), 0, t.neighbor_offsets, threads);
   if (!a.cells.empty()) write_cells(a.cells, in.points, t);
   return status;
 }
