@@ -314,6 +314,24 @@ def weighted_section(results):
                 ["---:", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:"]) + "\n")
 
 
+def periodic_section(results):
+    data = rows(results, "periodic.csv")
+    t = [k for k in data[0] if k.startswith("periodic_") and k.endswith("_s") and k != "periodic_1_s"][0]
+    d = [k for k in data[0] if k.startswith("delaunay_") and k.endswith("_s") and k != "delaunay_1_s"][0]
+    body = [[n_text(r["n"]), f"{float(r['periodic_1_s']):.3f}", f"{float(r[t]):.3f}", f"{float(r['cgal_s']):.3f}",
+             f"{float(r['cgal_over_periodic_1']):.2f}", f"{float(r['delaunay_1_s']):.3f}", f"{float(r[d]):.3f}",
+             f"{float(r['periodic_1_over_delaunay_1']):.2f}", f"{float(r[t]) / float(r[d]):.2f}"] for r in data]
+    threads = t.split("_")[1]
+    return (
+        "## Periodic (flat torus) triangulations against CGAL\n\n"
+        "`ridt::triangulate_periodic` against CGAL's `Periodic_2_Delaunay_triangulation_2` (range insert) on "
+        "uniform points of the unit square, the domain, in process, interleaved; the floor: "
+        "`ridt::triangulate` of the same points in the plane (`bench/periodic_table.cpp`).\n\n"
+        + table(["n", "ridt 1 thread s", f"ridt {threads} threads s", "CGAL s", "CGAL / ridt", "plane 1 thread s",
+                 f"plane {threads} threads s", "ridt / plane, 1 thread", f"ridt / plane, {threads} threads"], body,
+                ["---:"] * 9) + "\n")
+
+
 def constrained_section(results):
     """ridt_bench_constrained's rows (constrained.csv) and the whole-process page beside them."""
     data = rows(results, "constrained.csv")
@@ -390,7 +408,7 @@ def main():
     parts = [head, process_section(args.results), peers_section(args.results), serial_section(args.results),
              threads_section(args.results), table3_section(args.results), python_section(args.results),
              interpolate_section(args.results), sphere_section(args.results), weighted_section(args.results),
-             constrained_section(args.results),
+             periodic_section(args.results), constrained_section(args.results),
              terrain_section(args.results),
              out_of_core_section(args.results)]
     parts.append("## Commands\n\nWhat the report ran, in this order:\n\n```\n"

@@ -38,7 +38,7 @@ log "build ($build, Release, with the Python module)"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRIDT_BUILD_TESTS=OFF -DRIDT_BUILD_BENCH=ON \
   -DRIDT_BUILD_PYTHON=ON -DPython_EXECUTABLE="$py" >/dev/null
 ninja -C "$build" ridt_tool ridt_bench_serial ridt_bench_threads ridt_bench_peers ridt_cgal_triangulate ridt_bench_constrained \
-  ridt_bench_weighted ridt_python_package >/dev/null
+  ridt_bench_weighted ridt_bench_periodic ridt_python_package >/dev/null
 
 if [ "$mode" = quick ]; then
   serial_args=(--max-n 100000 --reps 3)
@@ -50,6 +50,7 @@ if [ "$mode" = quick ]; then
   interpolate_args=(--n 100000 --grid 500 --reps 2)
   sphere_args=(--sizes 10000,100000 --reps 2)
   weighted_args=(--sizes 100000 --reps 3)
+  periodic_args=(--sizes 100000 --reps 3)
   terrain_args=(--sizes 100000 --reps 1 --gdal-nearest-max 100000)
   ooc_args=(--sizes 1000000 --limits 100M)
   cdt_args=(--n 100000 --lakes 10 --reps 3)
@@ -67,6 +68,7 @@ else
   interpolate_args=(--n 1000000 --grid 2000 --reps 3)
   sphere_args=(--sizes 10000,100000,1000000 --reps 3)
   weighted_args=(--sizes 100000,1000000 --reps 5)
+  periodic_args=(--sizes 100000,1000000 --reps 5)
   terrain_args=(--sizes 1000000,10000000 --reps 3)
   ooc_args=(--sizes 10000000 --limits 500M)
   cdt_args=(--n 1000000 --lakes 100 --reps 5)
@@ -106,6 +108,7 @@ run interpolate env PYTHONPATH="$build/python" "$py" bench/interpolate_table.py 
 run sphere env PYTHONPATH="$build/python" "$py" bench/sphere_table.py --python "$py" "${sphere_args[@]}" \
   --out "$tmp/sphere.md"
 run weighted "$build/ridt_bench_weighted" "${weighted_args[@]}" --threads 2 --csv "$tmp/weighted.csv"
+run periodic "$build/ridt_bench_periodic" "${periodic_args[@]}" --threads 2 --csv "$tmp/periodic.csv"
 run terrain "$py" bench/terrain_table.py --build "$build" "${terrain_args[@]}" --dir "$tmp/terrain" \
   --out "$tmp/terrain.md"
 rm -rf "$tmp/terrain"
