@@ -20,6 +20,7 @@
 #include "periodic/periodic.hpp"
 #include "predicates/shifted.hpp"
 #include "ridt/periodic.hpp"
+#include "runtime/parallel.hpp"
 #include "tds/ids.hpp"
 
 namespace ridt {
@@ -54,6 +55,7 @@ class PeriodicCheck {
     for (const Offset& o : offs_)  // (their sums and differences must not overflow)
       if (std::abs(o.dx) > (1 << 20) || std::abs(o.dy) > (1 << 20)) return {false, "an offset is out of range", 1};
     vertices();
+    renumber();
     triangles();
     if (p_.count == 0) edges();
     if (p_.count == 0) fans();
@@ -66,7 +68,20 @@ class PeriodicCheck {
   }
 
  private:
-  Shifted at(std::size_t e) const { return {pts_[tris_[e]], offs_[e].dx, offs_[e].dy}; }
+  Shifted at(std::size_t e) const { return {near_[local_[e]], offs_[e].dx, offs_[e].dy}; }
+
+  // The vertices numbered by first use, their points in that order: the triangles' corners are
+  // then read from memory in order (the input's numbering may be any), and so are the edges'.
+  void renumber() {
+    std::vector<VertexId> id(pts_.size(), detail::kNoVertex);
+    local_.resize(tris_.size());
+    for (std::size_t e = 0; e < tris_.size(); ++e) {
+      VertexId& v = id[tris_[e]];
+      if (v == detail::kNoVertex)
+        v = static_cast<VertexId>(near_.size()), near_.push_back(pts_[tris_[e]]), input_.push_back(tris_[e]);
+      local_[e] = v;
+    }
+  }
 
   // Each group of equal points has exactly one of its members as a vertex; 2n triangles.
   void vertices() {
@@ -74,7 +89,7 @@ class PeriodicCheck {
     for (const VertexId v : tris_) used[v] = 1;
     std::vector<VertexId> order(pts_.size());
     std::iota(order.begin(), order.end(), VertexId{0});
-    std::sort(order.begin(), order.end(), [&](VertexId a, VertexId b) {
+    detail::parallel_sort(order.begin(), order.end(), 0, [&](VertexId a, VertexId b) {
       return detail::lex_less(pts_[a], pts_[b]) || (pts_[a] == pts_[b] && a < b);
     });
     for (std::size_t k = 0, g = 0; k < order.size(); k = g) {
@@ -89,42 +104,54 @@ class PeriodicCheck {
   }
 
   void triangles() {
-    for (std::size_t t = 0; 3 * t < tris_.size(); ++t)
-      if (detail::orient_shifted(at(3 * t), at(3 * t + 1), at(3 * t + 2), l_) <= 0)
-        p_.add("triangle ", t, " is not counter-clockwise where its offsets place it");
+    std::vector<std::uint8_t> bad(tris_.size() / 3, 0);
+    detail::parallel_for(bad.size(), 0, 16384, [&](std::size_t from, std::size_t to) {
+      for (std::size_t t = from; t < to; ++t)
+        bad[t] = detail::orient_shifted(at(3 * t), at(3 * t + 1), at(3 * t + 2), l_) <= 0;
+    });
+    for (std::size_t t = 0; t < bad.size(); ++t)
+      if (bad[t]) p_.add("triangle ", t, " is not counter-clockwise where its offsets place it");
   }
 
   // Every edge has one twin, the twin's twin is the edge, and the vertex across the twin lies
   // outside the triangle's circle (placed beside it).
   void edges() {
-    twin_ = detail::periodic_twins(tris_, offs_, pts_.size());
-    for (std::size_t e = 0; e < twin_.size(); ++e) {
-      if (twin_[e] < 0 || twin_[static_cast<std::size_t>(twin_[e])] != static_cast<std::int64_t>(e)) {
-        p_.add("edge ", e % 3, " of triangle ", e / 3, twin_[e] == -2 ? " has several twins" : " has no twin");
-        continue;
+    twin_ = detail::periodic_twins(local_, offs_, near_.size());
+    // 1: no twin or not the twin's; 2: not locally Delaunay.
+    std::vector<std::uint8_t> bad(twin_.size(), 0);
+    detail::parallel_for(twin_.size(), 0, 16384, [&](std::size_t from, std::size_t to) {
+      for (std::size_t e = from; e < to; ++e) {
+        if (twin_[e] < 0 || twin_[static_cast<std::size_t>(twin_[e])] != static_cast<std::int64_t>(e)) {
+          bad[e] = 1;
+          continue;
+        }
+        const auto f = static_cast<std::size_t>(twin_[e]);
+        if (f < e) continue;
+        const std::size_t here = e - e % 3 + prev3(static_cast<int>(e % 3));
+        const std::size_t there = f - f % 3 + next3(static_cast<int>(f % 3));
+        Shifted far = at(f);
+        far.dx += offs_[here].dx - offs_[there].dx, far.dy += offs_[here].dy - offs_[there].dy;
+        const std::size_t b = e - e % 3;
+        bad[e] = detail::incircle_shifted(at(b), at(b + 1), at(b + 2), far, l_) > 0 ? 2 : 0;
       }
-      const auto f = static_cast<std::size_t>(twin_[e]);
-      if (f < e) continue;
-      const std::size_t here = e - e % 3 + prev3(static_cast<int>(e % 3));
-      const std::size_t there = f - f % 3 + next3(static_cast<int>(f % 3));
-      Shifted far = at(f);
-      far.dx += offs_[here].dx - offs_[there].dx, far.dy += offs_[here].dy - offs_[there].dy;
-      const std::size_t b = e - e % 3;
-      if (detail::incircle_shifted(at(b), at(b + 1), at(b + 2), far, l_) > 0)
-        p_.add("edge ", e % 3, " of triangle ", e / 3, " is not locally Delaunay");
+    });
+    for (std::size_t e = 0; e < bad.size(); ++e) {
+      if (bad[e] == 1)
+        p_.add("edge ", e % 3, " of triangle ", e / 3, twin_[e] == -2 ? " has several twins" : " has no twin");
+      if (bad[e] == 2) p_.add("edge ", e % 3, " of triangle ", e / 3, " is not locally Delaunay");
     }
   }
 
   // The triangles round each vertex make one cycle: from one corner of it, across the edge
   // after it, as many steps as it has corners.
   void fans() {
-    std::vector<std::uint32_t> corners(pts_.size(), 0);
-    std::vector<std::int64_t> first(pts_.size(), -1);
-    for (std::size_t e = 0; e < tris_.size(); ++e) {
-      ++corners[tris_[e]];
-      if (first[tris_[e]] < 0) first[tris_[e]] = static_cast<std::int64_t>(e);
+    std::vector<std::uint32_t> corners(near_.size(), 0);
+    std::vector<std::int64_t> first(near_.size(), -1);
+    for (std::size_t e = 0; e < local_.size(); ++e) {
+      ++corners[local_[e]];
+      if (first[local_[e]] < 0) first[local_[e]] = static_cast<std::int64_t>(e);
     }
-    for (std::size_t v = 0; v < pts_.size(); ++v) {
+    for (std::size_t v = 0; v < near_.size(); ++v) {
       if (first[v] < 0) continue;
       auto e = static_cast<std::size_t>(first[v]);
       std::uint32_t steps = 0;
@@ -136,7 +163,7 @@ class PeriodicCheck {
         e = f - f % 3 + next3(static_cast<int>(f % 3));
         ++steps;
       } while (e != static_cast<std::size_t>(first[v]) && steps <= corners[v]);
-      if (steps != corners[v]) p_.add("the triangles round point ", v, " make more than one cycle");
+      if (steps != corners[v]) p_.add("the triangles round point ", input_[v], " make more than one cycle");
     }
   }
 
@@ -161,6 +188,9 @@ class PeriodicCheck {
   std::span<const VertexId> tris_;
   std::span<const Offset> offs_;
   std::vector<std::int64_t> twin_;
+  std::vector<VertexId> local_;  // by corner: its vertex's number by first use
+  std::vector<Point> near_;  // by that number: the point
+  std::vector<VertexId> input_;  // and its input index
   std::size_t distinct_ = 0;
   Problems p_;
 };

@@ -19,32 +19,40 @@ namespace ridt::detail {
 std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, std::span<const Offset> offsets,
                                          std::size_t points) {
   const std::size_t edges = triangles.size();
-  // The edges out of each point: start[u] .. start[u + 1] in `out`.
-  std::vector<std::uint32_t> start(points + 1, 0);
-  for (std::size_t e = 0; e < edges; ++e) ++start[triangles[e - e % 3 + next3(static_cast<int>(e % 3))] + 1];
-  for (std::size_t u = 0; u < points; ++u) start[u + 1] += start[u];
-  std::vector<std::uint32_t> out(edges), fill(start.begin(), start.end() - 1);
-  for (std::size_t e = 0; e < edges; ++e)
-    out[fill[triangles[e - e % 3 + next3(static_cast<int>(e % 3))]]++] = static_cast<std::uint32_t>(e);
-  // Edge e's ends and the offset from its first end to its second.
-  struct Ends {
-    VertexId u, w;
-    std::int32_t dx, dy;
+  // Edge e runs from corner e + 1 to corner e + 2 of its triangle (e's place in it).
+  auto tail = [&](std::size_t e) { return e - e % 3 + next3(static_cast<int>(e % 3)); };
+  auto head = [&](std::size_t e) { return e - e % 3 + prev3(static_cast<int>(e % 3)); };
+  // The edges out of each point, start[u] .. start[u + 1], each with its head's point beside it:
+  // a twin is looked for among a handful of them without reading their triangles.
+  struct Out {
+    VertexId head;
+    std::uint32_t edge;
   };
-  auto ends = [&](std::size_t e) {
-    const std::size_t base = e - e % 3;
-    const std::size_t a = base + next3(static_cast<int>(e % 3)), b = base + prev3(static_cast<int>(e % 3));
-    return Ends{triangles[a], triangles[b], offsets[b].dx - offsets[a].dx, offsets[b].dy - offsets[a].dy};
+  std::vector<std::uint32_t> start(points + 1, 0);
+  for (std::size_t e = 0; e < edges; ++e) ++start[triangles[tail(e)] + 1];
+  for (std::size_t u = 0; u < points; ++u) start[u + 1] += start[u];
+  std::vector<Out> out(edges);
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t e = 0; e < edges; ++e)
+      out[fill[triangles[tail(e)]]++] = {triangles[head(e)], static_cast<std::uint32_t>(e)};
+  }
+  auto offset = [&](std::size_t e) {  // from the edge's tail to its head
+    return Offset{offsets[head(e)].dx - offsets[tail(e)].dx, offsets[head(e)].dy - offsets[tail(e)].dy};
   };
   std::vector<std::int64_t> twin(edges, -1);
-  for (std::size_t e = 0; e < edges; ++e) {
-    const Ends x = ends(e);
-    for (std::uint32_t k = start[x.w]; k < start[x.w + 1]; ++k) {
-      const Ends y = ends(out[k]);
-      if (y.w != x.u || y.dx != -x.dx || y.dy != -x.dy) continue;
-      twin[e] = twin[e] == -1 ? static_cast<std::int64_t>(out[k]) : -2;
+  parallel_for(edges, 0, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t e = from; e < to; ++e) {
+      const VertexId u = triangles[tail(e)], w = triangles[head(e)];
+      const Offset d = offset(e);
+      for (std::uint32_t k = start[w]; k < start[w + 1]; ++k) {
+        if (out[k].head != u) continue;
+        const Offset b = offset(out[k].edge);
+        if (b.dx != -d.dx || b.dy != -d.dy) continue;
+        twin[e] = twin[e] == -1 ? static_cast<std::int64_t>(out[k].edge) : -2;
+      }
     }
-  }
+  });
   return twin;
 }
 
