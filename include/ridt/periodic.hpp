@@ -50,12 +50,13 @@ struct PeriodicTriangulation {
 /// The periodic Delaunay triangulation of `points`, which must lie in the domain (x0 <= x <
 /// x0 + width, the same for y; exactly, not up to rounding). Decided by the exact predicates on
 /// the copies' true coordinates (not their rounded ones), with the symbolic perturbation of
-/// triangulate() (ties, as a lattice's cocircular squares, get one answer): built by
-/// randomized incremental insertion of the points and the copies within a margin of the
-/// domain (on the one mutable triangulation), the margin widened until every triangle's
-/// circle lies where the copies are complete. `threads` (0: the machine's) sort the points.
-/// Throws InputError for no point, a point not finite or outside the domain, or a width or
-/// height that is not positive and finite.
+/// triangulate() (ties, as a lattice's cocircular squares, get one answer, in any input order).
+/// From 4,096 points on: the triangles of the points' own triangulation (triangulate(), on
+/// `threads` threads, 0: the machine's) whose circles lie inside the domain, and the rest from
+/// the points near the domain's sides and their copies, inserted on the one mutable
+/// triangulation; fewer points, or points on one line, all by the latter. Throws InputError
+/// for no point, a point not finite or outside the domain, or a width or height that is not
+/// positive and finite.
 PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
                                            unsigned threads = 0);
 
