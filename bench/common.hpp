@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -29,6 +31,56 @@ inline std::vector<std::string> split(const std::string& list) {
   std::stringstream in(list);
   for (std::string item; std::getline(in, item, ',');) parts.push_back(item);
   return parts;
+}
+
+/// A table of in-process figures by size: `--sizes N,... --reps R --threads T --csv FILE`.
+struct TableArgs {
+  std::vector<std::size_t> sizes = {100000, 1000000};
+  int reps = 5;
+  unsigned threads = 2;
+  std::string csv;
+};
+
+/// Parses the table's arguments into `a` (its defaults kept); false, with the usage on stderr,
+/// for any other.
+inline bool parse_table_args(int argc, char** argv, TableArgs& a) {
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string arg = argv[i];
+    if (arg == "--sizes") {
+      a.sizes.clear();
+      for (const std::string& s : split(argv[i + 1])) a.sizes.push_back(std::stoul(s));
+    } else if (arg == "--reps") {
+      a.reps = std::atoi(argv[i + 1]);
+    } else if (arg == "--csv") {
+      a.csv = argv[i + 1];
+    } else if (arg == "--threads") {
+      a.threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
+    } else {
+      std::fprintf(stderr, "usage: %s [--sizes N,...] [--reps R] [--threads T] [--csv FILE]\n", argv[0]);
+      return false;
+    }
+  }
+  return argc % 2 == 1 || (std::fprintf(stderr, "%s: an option without its value\n", argv[0]), false);
+}
+
+/// Writes the header line and then each row rows() gives (an empty row ends the table with
+/// status 1), to stdout and to the --csv file; the process's exit status.
+inline int write_table(const TableArgs& a, const std::string& header,
+                       const std::function<bool(const std::function<void(const std::string&)>&)>& rows) {
+  FILE* file = a.csv.empty() ? nullptr : std::fopen(a.csv.c_str(), "w");
+  if (!a.csv.empty() && file == nullptr) {
+    std::fprintf(stderr, "cannot write %s\n", a.csv.c_str());
+    return 1;
+  }
+  auto line = [&](const std::string& text) {
+    std::fputs(text.c_str(), stdout);
+    if (file != nullptr) std::fputs(text.c_str(), file);
+    std::fflush(stdout);
+  };
+  line(header);
+  const bool ok = rows(line);
+  if (file != nullptr) std::fclose(file);
+  return ok ? 0 : 1;
 }
 
 }  // namespace ridt::bench

@@ -83,44 +83,19 @@ std::string row(std::size_t n, double scale, int reps, unsigned threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> sizes = {100000, 1000000};
-  int reps = 5;
-  unsigned threads = 2;
-  std::string csv;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    if (a == "--sizes") {
-      sizes.clear();
-      for (const std::string& s : ridt::bench::split(argv[i + 1])) sizes.push_back(std::stoul(s));
-    } else if (a == "--reps") {
-      reps = std::atoi(argv[i + 1]);
-    } else if (a == "--csv") {
-      csv = argv[i + 1];
-    } else if (a == "--threads") {
-      threads = static_cast<unsigned>(std::atoi(argv[i + 1]));
-    } else {
-      std::fprintf(stderr, "usage: %s [--sizes N,...] [--reps R] [--threads T] [--csv FILE]\n", argv[0]);
-      return 2;
-    }
-  }
-  // Each line to stdout, and to FILE where --csv names one.
-  FILE* file = csv.empty() ? nullptr : std::fopen(csv.c_str(), "w");
-  if (!csv.empty() && file == nullptr) {
-    std::fprintf(stderr, "cannot write %s\n", csv.c_str());
-    return 1;
-  }
-  auto line = [&](const std::string& text) {
-    std::fputs(text.c_str(), stdout);
-    if (file != nullptr) std::fputs(text.c_str(), file);
-    std::fflush(stdout);
-  };
-  line("n,weights,hidden,regular_1_s,regular_" + std::to_string(threads) + "_s,cgal_s,delaunay_1_s,delaunay_" +
-       std::to_string(threads) + "_s,cgal_over_regular_1,regular_1_over_delaunay_1\n");
-  for (const std::size_t n : sizes)
-    for (const double scale : {1.0, 40.0}) {
-      const std::string r = row(n, scale, reps, threads);
-      if (r.empty()) return 1;
-      line(r);
-    }
-  if (file != nullptr) std::fclose(file);
+  ridt::bench::TableArgs a;
+  if (!ridt::bench::parse_table_args(argc, argv, a)) return 2;
+  return ridt::bench::write_table(a,
+                                  "n,weights,hidden,regular_1_s,regular_" + std::to_string(a.threads) +
+                                      "_s,cgal_s,delaunay_1_s,delaunay_" + std::to_string(a.threads) +
+                                      "_s,cgal_over_regular_1,regular_1_over_delaunay_1\n",
+                                  [&](const auto& line) {
+                                    for (const std::size_t n : a.sizes)
+                                      for (const double scale : {1.0, 40.0}) {
+                                        const std::string r = row(n, scale, a.reps, a.threads);
+                                        if (r.empty()) return false;
+                                        line(r);
+                                      }
+                                    return true;
+                                  });
 }

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "check/parts.hpp"
 #include "periodic/periodic.hpp"
 #include "predicates/shifted.hpp"
 #include "ridt/periodic.hpp"
@@ -29,18 +30,6 @@ namespace {
 using detail::next3;
 using detail::prev3;
 using detail::Shifted;
-
-struct Problems {
-  std::size_t count = 0;
-  std::string first;
-  template <class... Args>
-  void add(const Args&... args) {
-    if (count++ > 0) return;
-    std::ostringstream s;
-    (s << ... << args);
-    first = s.str();
-  }
-};
 
 class PeriodicCheck {
  public:
@@ -57,14 +46,12 @@ class PeriodicCheck {
     vertices();
     renumber();
     triangles();
-    if (p_.count == 0) edges();
-    if (p_.count == 0) fans();
-    if (p_.count == 0) area();
-    if (p_.count > 0) return {false, p_.first, p_.count};
-    return {true,
-            "valid: " + std::to_string(tris_.size() / 3) + " triangles, the periodic Delaunay triangulation of " +
-                std::to_string(distinct_) + " distinct points",
-            0};
+    if (p_.problems() == 0) edges();
+    if (p_.problems() == 0) fans();
+    if (p_.problems() == 0) area();
+    return p_.result("valid: " + std::to_string(tris_.size() / 3) +
+                     " triangles, the periodic Delaunay triangulation of " + std::to_string(distinct_) +
+                     " distinct points");
   }
 
  private:
@@ -97,10 +84,12 @@ class PeriodicCheck {
       for (g = k; g < order.size() && pts_[order[g]] == pts_[order[k]]; ++g) standing += used[order[g]];
       ++distinct_;
       if (standing != 1)
-        p_.add("point ", order[k], standing == 0 ? " is no vertex" : " is a vertex more than once (a copy of it too)");
+        p_.problem("point ", order[k],
+                   standing == 0 ? " is no vertex" : " is a vertex more than once (a copy of it too)");
     }
     if (tris_.size() != 6 * distinct_)
-      p_.add(tris_.size() / 3, " triangles, where ", distinct_, " distinct points on the torus have ", 2 * distinct_);
+      p_.problem(tris_.size() / 3, " triangles, where ", distinct_, " distinct points on the torus have ",
+                 2 * distinct_);
   }
 
   void triangles() {
@@ -110,7 +99,7 @@ class PeriodicCheck {
         bad[t] = detail::orient_shifted(at(3 * t), at(3 * t + 1), at(3 * t + 2), l_) <= 0;
     });
     for (std::size_t t = 0; t < bad.size(); ++t)
-      if (bad[t]) p_.add("triangle ", t, " is not counter-clockwise where its offsets place it");
+      if (bad[t]) p_.problem("triangle ", t, " is not counter-clockwise where its offsets place it");
   }
 
   // Every edge has one twin, the twin's twin is the edge, and the vertex across the twin lies
@@ -137,8 +126,8 @@ class PeriodicCheck {
     });
     for (std::size_t e = 0; e < bad.size(); ++e) {
       if (bad[e] == 1)
-        p_.add("edge ", e % 3, " of triangle ", e / 3, twin_[e] == -2 ? " has several twins" : " has no twin");
-      if (bad[e] == 2) p_.add("edge ", e % 3, " of triangle ", e / 3, " is not locally Delaunay");
+        p_.problem("edge ", e % 3, " of triangle ", e / 3, twin_[e] == -2 ? " has several twins" : " has no twin");
+      if (bad[e] == 2) p_.problem("edge ", e % 3, " of triangle ", e / 3, " is not locally Delaunay");
     }
   }
 
@@ -163,7 +152,7 @@ class PeriodicCheck {
         e = f - f % 3 + next3(static_cast<int>(f % 3));
         ++steps;
       } while (e != static_cast<std::size_t>(first[v]) && steps <= corners[v]);
-      if (steps != corners[v]) p_.add("the triangles round point ", input_[v], " make more than one cycle");
+      if (steps != corners[v]) p_.problem("the triangles round point ", input_[v], " make more than one cycle");
     }
   }
 
@@ -177,7 +166,7 @@ class PeriodicCheck {
     }
     const double domain = d_.width * d_.height;
     if (!(std::fabs(sum - domain) < 0.5 * domain))
-      p_.add("the triangles cover the torus ", std::lround(sum / domain), " times, not once");
+      p_.problem("the triangles cover the torus ", std::lround(sum / domain), " times, not once");
   }
 
   static Point rounded(const Shifted& s, const detail::Periods& l) { return detail::rounded(s, l); }
@@ -192,7 +181,7 @@ class PeriodicCheck {
   std::vector<Point> near_;  // by that number: the point
   std::vector<VertexId> input_;  // and its input index
   std::size_t distinct_ = 0;
-  Problems p_;
+  detail::Report p_;
 };
 
 }  // namespace
