@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -11,6 +12,14 @@
 #include <vector>
 
 namespace ridt::bench {
+
+/// Wall seconds that body() takes.
+template <class Body>
+double seconds(Body&& body) {
+  const auto start = std::chrono::steady_clock::now();
+  body();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// The median of v (the upper one of an even count); 0 when v is empty.
 inline double median(std::vector<double> v) {

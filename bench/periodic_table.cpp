@@ -23,11 +23,7 @@
 
 namespace {
 
-double seconds(auto&& body) {
-  const auto start = std::chrono::steady_clock::now();
-  body();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using ridt::bench::seconds;
 
 #ifdef RIDT_WITH_CGAL
 // CGAL's own fastest way in: all points at once (spatially sorted, the 9-sheeted cover left as

@@ -22,11 +22,7 @@
 
 namespace {
 
-double seconds(auto&& body) {
-  const auto start = std::chrono::steady_clock::now();
-  body();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using ridt::bench::seconds;
 
 #ifdef RIDT_WITH_CGAL
 double cgal(const std::vector<ridt::Point>& pts, const std::vector<double>& w, std::size_t& faces) {
