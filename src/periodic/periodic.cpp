@@ -130,14 +130,6 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
   return out;
 }
 
-// The periodic triangulation as two parts that do not meet: the triangles of the points' own
-// Delaunay triangulation (triangulate(), on threads) whose circle lies inside the domain — empty
-// of the points, and of every copy, which lie outside the domain — and the periodic triangles
-// whose circle is not inside, from the points within m of the domain's sides and their copies
-// (Builder's band). circle_inside decides for both alike, so each periodic triangle is in one
-// part. Checked as the whole is: 2n triangles, every edge with its twin (then neighbours);
-// nothing (the caller builds the whole) where the points have no triangulation of their own
-// (collinear) or the band would be a quarter of the domain.
 // The points' Delaunay triangulation with vertex i the point input[i]: triangulate() of the
 // points in Hilbert order (BRIO's), so that what reads the triangles' corners reads memory in
 // order; a group of equal points stands as its least input index. The duplicates in `dropped`.
@@ -168,6 +160,14 @@ Triangulation sorted_triangulation(std::span<const Point> points, unsigned threa
   return p;
 }
 
+// The periodic triangulation as two parts that do not meet: the triangles of the points' own
+// Delaunay triangulation (triangulate(), on threads) whose circle lies inside the domain — empty
+// of the points, and of every copy, which lie outside the domain — and the periodic triangles
+// whose circle is not inside, from the points within m of the domain's sides and their copies
+// (Builder's band). circle_inside decides for both alike, so each periodic triangle is in one
+// part. Checked as the whole is: 2n triangles, every edge with its twin (then neighbours);
+// nothing (the caller builds the whole) where the points have no triangulation of their own
+// (collinear) or the band would be a quarter of the domain.
 std::optional<PeriodicTriangulation> split(std::span<const Point> points, const PeriodicDomain& d, double m,
                                            unsigned threads) {
   std::vector<std::uint32_t> input;
