@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <new>
 #include <stdexcept>
 
 #include "predicates/predicates.hpp"
@@ -31,6 +32,31 @@ SlotPool Cdt::fresh(TriangleId count, TriangleId like) {
   SlotPool pool = tds.fresh(count);
   if (!region.empty()) region.resize(tds.slots(), region[like]);
   return pool;
+}
+
+bool Cdt::has_room(std::size_t points) const {
+  const std::size_t slots = tds.slots() + 2 * points;
+  return pts.size() + points <= pts.capacity() && corner.size() + points <= corner.capacity() &&
+      tds.has_room(static_cast<TriangleId>(2 * points)) && (region.empty() || slots <= region.capacity()) &&
+      (mark.empty() || slots <= mark.capacity());
+}
+
+void Cdt::make_room(std::size_t points) {
+  auto grow = [](auto& v, std::size_t n) {
+    if (n <= v.capacity()) return;
+    try {
+      v.reserve(std::max(n, 2 * v.capacity()));
+    } catch (const std::bad_alloc&) {
+      v.reserve(n);
+    }
+  };
+  const std::size_t slots = tds.slots() + 2 * points;
+  tds.reserve(static_cast<TriangleId>(slots));
+  grow(pts, pts.size() + points);
+  grow(corner, corner.size() + points);
+  if (!region.empty()) grow(region, slots);
+  if (!mark.empty()) grow(mark, slots);
+  todo_.reserve(kScratch), spokes_.reserve(kScratch);
 }
 
 VertexId Cdt::add_point(const Point& p) {
@@ -90,7 +116,8 @@ VertexId Cdt::insert(const Point& p, const Place& where) {
     SlotPool pool = fresh(2, t);
     const std::array<TriangleId, 3> made = tds.split_triangle(t, v, pool);
     claim_corners(made);
-    legalize(v, {made[0], made[1], made[2]});
+    todo_.assign({made[0], made[1], made[2]});
+    legalize(v);
     return v;
   }
   if (where.kind != Place::Edge) throw std::logic_error("ridt: a point added where it cannot be");
@@ -104,13 +131,14 @@ VertexId Cdt::insert(const Point& p, const Place& where) {
   }
   const std::array<TriangleId, 4> made = tds.split_edge(e, v, pool);
   claim_corners(made);
-  std::vector<TriangleId> todo{made[0], made[1]};
-  if (u != kNoTriangle) todo.push_back(made[2]), todo.push_back(made[3]);
-  legalize(v, std::move(todo));
+  todo_.assign({made[0], made[1]});
+  if (u != kNoTriangle) todo_.push_back(made[2]), todo_.push_back(made[3]);
+  legalize(v);
   return v;
 }
 
-void Cdt::legalize(VertexId p, std::vector<TriangleId> todo) {
+void Cdt::legalize(VertexId p) {
+  std::vector<TriangleId>& todo = todo_;
   while (!todo.empty()) {
     const TriangleId t = todo.back();
     todo.pop_back();
@@ -187,7 +215,9 @@ VertexId Cdt::insert_cavity(const Point& p) {
   return v;
 }
 
-void Cdt::restore(std::vector<Link> edges) {
+void Cdt::restore(std::vector<Link> edges) { flip_from(edges); }
+
+void Cdt::flip_from(std::vector<Link>& edges) {
   while (!edges.empty()) {
     const Link e = edges.back();
     edges.pop_back();
@@ -205,13 +235,14 @@ VertexId Cdt::insert_on_edge(const Point& p, TriangleId t, int k) {
   const bool on_line = orient2d(pts[at(t, k + 1)], pts[at(t, k + 2)], p) == 0;
   const VertexId v = insert(p, {Place::Edge, t, k});
   if (on_line) return v;
-  std::vector<Link> spokes;
+  std::vector<Link>& spokes = spokes_;
+  spokes.clear();
   around(v, [&](TriangleId u) {
     const int i = corner_of(u, v);
     spokes.push_back(link_to(u, next3(i))), spokes.push_back(link_to(u, prev3(i)));
     return false;
   });
-  restore(std::move(spokes));
+  flip_from(spokes);
   return v;
 }
 

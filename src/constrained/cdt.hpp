@@ -119,6 +119,12 @@ class Cdt {
   /// The edge a-b, as a triangle at a sees it (its slot 3t + k); kNoLink when none.
   Link find_edge(VertexId a, VertexId b) const;
   std::size_t size() const { return tds.slots(); }
+  /// Whether the arrays take `points` more points (each with its corner and two triangles)
+  /// as they are; make_room grows them so (geometrically where memory allows), or throws
+  /// std::bad_alloc with the mesh unchanged. Growth copies an array, so needs the old and the
+  /// new at once: asked for between insertions, a shortage is met with no point half added.
+  bool has_room(std::size_t points) const;
+  void make_room(std::size_t points);
   /// Each vertex's corner set again from the triangles (kNoTriangle for a vertex in none).
   void index_corners();
 
@@ -145,10 +151,17 @@ class Cdt {
       if (t != kNoTriangle)
         for (int k = 0; k < 3; ++k) corner[at(t, k)] = 3 * t + static_cast<TriangleId>(k);
   }
-  void legalize(VertexId p, std::vector<TriangleId> todo);
+  // Lawson's flips about p, from the triangles in todo_.
+  void legalize(VertexId p);
+  void flip_from(std::vector<Link>& edges);  // restore's, on edges kept
   VertexId add_point(const Point& p);
 
   CavityScratch scratch_;
+  // An insertion's lists (legalize's triangles, insert_on_edge's edges), kept between them, so
+  // that where make_room has run an insertion allocates nothing (a few dozen items at most).
+  static constexpr std::size_t kScratch = 256;
+  std::vector<TriangleId> todo_;
+  std::vector<Link> spokes_;
   std::uint32_t marks_ = 0;  // new_mark's last
 };
 

@@ -14,6 +14,8 @@
 // Near small input angles: constrained/small_angles.cpp.
 #include "constrained/refiner.hpp"
 
+#include <new>
+
 namespace ridt::detail {
 namespace refining {
 
@@ -95,6 +97,17 @@ void Refiner::relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std
 }
 
 // After v is added: its triangles queued where bad, its fixed edges where encroached.
+bool Refiner::room_ahead() {
+  if (m_.has_room(kAhead) && m_.pts.size() + kAhead <= ends_.capacity()) return true;
+  try {
+    m_.make_room(std::max(kAhead, m_.pts.size() / 4));
+    ends_.reserve(m_.pts.capacity());
+    return true;
+  } catch (const std::bad_alloc&) {
+    return false;
+  }
+}
+
 void Refiner::added(VertexId v) {
   ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
   m_.around(v, [&](TriangleId t) {
@@ -243,10 +256,11 @@ void Refiner::centroid(const Bad& b) {
 std::string refine(Cdt& m, const Refinement& r) {
   const std::size_t before = m.pts.size();
   Chains chains = refine_tiles(m, r);
-  if (r.memory == 0 || m.pts.size() == before) return refining::Refiner(m, r, std::move(chains)).run();
+  Refinement rest = r;
+  rest.added_from = before;
+  if (r.memory == 0 || m.pts.size() == before) return refining::Refiner(m, rest, std::move(chains)).run();
   // A memory budget given (not read from the system, which counts the tiles' points itself):
   // what the tiles' points took (as Refiner::run counts them) is spent.
-  Refinement rest = r;
   const std::size_t spent = (m.pts.size() - before) * 320 / 3 * 4;
   rest.memory = std::max<std::size_t>(r.memory > spent ? r.memory - spent : 0, 640);  // (room for a point)
   return refining::Refiner(m, rest, std::move(chains)).run();

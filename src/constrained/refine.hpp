@@ -35,6 +35,9 @@ struct Refinement {
   unsigned threads = 1;
   /// Only triangles with an edge longer than this are mended (tiles.cpp's first step); 0: all.
   double longer_than = 0;
+  /// The points added before this run (by tiles) are those from here on, counted in a message
+  /// on the points added; 0: none.
+  std::size_t added_from = 0;
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's

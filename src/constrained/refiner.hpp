@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <string>
 #include <unordered_set>
 #include <utility>
@@ -86,27 +87,37 @@ class Refiner {
     // result's arrays come on top: a whole run peaks at 215 to 265 bytes a point added (ridt
     // mesh and Python's ConstrainedDelaunay, 10^6 and 4 * 10^6 points), so 320 of 3/4 of it.
     const std::size_t room = (r_.memory != 0 ? r_.memory : available_memory()) / 320 * 3 / 4;
-    while (true) {
-      if (r_.max_steiner > 0 && m_.pts.size() - first >= r_.max_steiner)
-        return "quality refinement stopped after " + std::to_string(r_.max_steiner) + " points (the limit asked)";
-      if (room > 0 && m_.pts.size() - first >= room)
-        return "quality refinement stopped after " + std::to_string(room) + " points: the memory left holds no more";
-      if (!segments_.empty()) {
-        const Split w = segments_.back();
-        segments_.pop_back();
-        const Link s = m_.find_edge(w.x, w.y);
-        if (s != kNoLink && m_.fixed(s) && (w.forced || encroached(s))) split(s);
-        continue;
+    auto out_of_memory = [&] {
+      const std::size_t from = r_.added_from != 0 ? std::min(r_.added_from, first) : first;
+      return "quality refinement stopped after " + std::to_string(m_.pts.size() - from) +
+          " points: the memory left holds no more";
+    };
+    // A step's insertion allocates nothing once room_ahead() has made room (Cdt::make_room), so
+    // an allocation refused within a step is the queues' or a search's, with the mesh whole.
+    try {
+      while (true) {
+        if (r_.max_steiner > 0 && m_.pts.size() - first >= r_.max_steiner)
+          return "quality refinement stopped after " + std::to_string(r_.max_steiner) + " points (the limit asked)";
+        if ((room > 0 && m_.pts.size() - first >= room) || !room_ahead()) return out_of_memory();
+        if (!segments_.empty()) {
+          const Split w = segments_.back();
+          segments_.pop_back();
+          const Link s = m_.find_edge(w.x, w.y);
+          if (s != kNoLink && m_.fixed(s) && (w.forced || encroached(s))) split(s);
+          continue;
+        }
+        if (!unsized_.empty() && (bad_.empty() || unsized_.size() >= kSizeBatch)) {
+          weigh_sizes();
+          continue;
+        }
+        if (bad_.empty()) return left_bad();
+        const Bad b = bad_.pop();
+        prefetch_ahead();
+        // A triangle still there has the vertices, so the badness, it was queued with.
+        if (alive(b)) improve(b);
       }
-      if (!unsized_.empty() && (bad_.empty() || unsized_.size() >= kSizeBatch)) {
-        weigh_sizes();
-        continue;
-      }
-      if (bad_.empty()) return left_bad();
-      const Bad b = bad_.pop();
-      prefetch_ahead();
-      // A triangle still there has the vertices, so the badness, it was queued with.
-      if (alive(b)) improve(b);
+    } catch (const std::bad_alloc&) {
+      return out_of_memory();
     }
   }
 
@@ -120,6 +131,13 @@ class Refiner {
   }
 
   void first_queues();
+
+  // Room in the mesh's arrays for the next few points, grown by a quarter or more where there
+  // is none (Cdt::make_room), and in the chains' ends alike; false where memory refuses it.
+  // The share of memory a point is allowed above does not cover that growth, which copies
+  // what the mesh holds already.
+  static constexpr std::size_t kAhead = 64;
+  bool room_ahead();
 
   struct Split {
     VertexId x, y;

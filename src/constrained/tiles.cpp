@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <new>
 
 #include "constrained/refiner.hpp"
 #include "runtime/memory.hpp"
@@ -254,12 +255,24 @@ void put_back(Cdt& m, Tile& tile, VertexId vertices, TriangleId slots,
   tile.mesh.reset();
 }
 
-// v grown to n items of `fill`, with room for an eighth more (the whole mesh's refinement
-// goes on from there), its new pages made present on `threads` together.
+// Room in v for n items, and an eighth more where memory allows (the whole mesh's refinement
+// goes on from there).
+template <class T>
+void room(std::vector<T>& v, std::size_t n) {
+  if (n <= v.capacity()) return;
+  try {
+    v.reserve(n + n / 8);
+  } catch (const std::bad_alloc&) {
+    v.reserve(n);
+  }
+}
+
+// v grown to n items of `fill` (room() made first), its new pages made present on `threads`
+// together.
 template <class T>
 void grow(std::vector<T>& v, std::size_t n, const T& fill, unsigned threads) {
   if (n <= v.size()) return;
-  if (n > v.capacity()) v.reserve(n + n / 8);
+  room(v, n);
   make_present(v.data() + v.size(), (n - v.size()) * sizeof(T), threads);
   v.resize(n, fill);
 }
@@ -279,6 +292,39 @@ void each_tile(std::size_t tiles, unsigned threads, Body&& body) {
   });
   for (const std::exception_ptr& e : error)
     if (e) std::rethrow_exception(e);
+}
+
+// Every tile refined put back into m (put_back), its vertices and triangles numbered tile by
+// tile after m's.
+void put_all_back(Cdt& m, std::vector<Tile>& tile, unsigned threads, std::vector<std::pair<VertexId, VertexId>>& ends) {
+  const std::size_t tiles = tile.size();
+  std::vector<VertexId> vertices(tiles);
+  std::vector<TriangleId> slots(tiles);
+  auto count = static_cast<VertexId>(m.pts.size());
+  TriangleId top = m.tds.slots();
+  for (std::size_t k = 0; k < tiles; ++k) {
+    vertices[k] = count, slots[k] = top;
+    if (const Cdt* s = tile[k].mesh.get()) {
+      count += static_cast<VertexId>(s->pts.size() - tile[k].given);
+      top += static_cast<TriangleId>(s->size() - tile[k].own.size() - tile[k].ghosts.size());
+    }
+  }
+  // All the room first: where memory refuses it, the tiles are dropped and m is as it was.
+  try {
+    room(m.pts, count), room(m.corner, count), room(ends, count);
+    m.tds.reserve(top);
+    if (!m.region.empty()) room(m.region, top);
+  } catch (const std::bad_alloc&) {
+    return;
+  }
+  grow(m.pts, count, Point{}, threads);
+  grow(m.corner, count, kNoTriangle, threads);
+  m.tds.grow(top - m.tds.slots(), threads);
+  if (!m.region.empty()) grow(m.region, top, -1, threads);
+  grow(ends, count, {kNoVertex, kNoVertex}, threads);
+  each_tile(tiles, threads, [&](std::size_t k, unsigned) {
+    if (tile[k].mesh) put_back(m, tile[k], vertices[k], slots[k], ends);
+  });
 }
 
 // One round: each tile of `grid` refined on its own, on threads, and put back; `ends` kept.
@@ -309,32 +355,20 @@ void tile_round(Cdt& m, const Refinement& r, const Grid& grid, const std::vector
                     grid.box, small, ends,  (r.memory != 0 ? r.memory : available_memory()) / (2 * tiles) + 1};
   const unsigned threads = std::min<unsigned>(thread_count(r.threads), static_cast<unsigned>(tiles));
   std::vector<std::vector<VertexId>> local(threads);
+  // A tile memory cannot hold is left as it is, for the whole mesh (which stops with a warning
+  // where it too runs short).
   each_tile(tiles, threads, [&](std::size_t k, unsigned w) {
     if (tile[k].own.empty()) return;
-    local[w].resize(m.pts.size(), kNoVertex);
-    refine_tile(round, static_cast<std::int32_t>(k), local[w], tile[k]);
+    try {
+      local[w].resize(m.pts.size(), kNoVertex);
+      refine_tile(round, static_cast<std::int32_t>(k), local[w], tile[k]);
+    } catch (const std::bad_alloc&) {
+      tile[k].mesh.reset();
+      std::fill(local[w].begin(), local[w].end(), kNoVertex);  // (as copy_out would have left it)
+    }
   });
   local = {};
-  // Room for every tile's vertices and triangles, numbered tile by tile.
-  std::vector<VertexId> vertices(tiles);
-  std::vector<TriangleId> slots(tiles);
-  auto count = static_cast<VertexId>(m.pts.size());
-  TriangleId top = m.tds.slots();
-  for (std::size_t k = 0; k < tiles; ++k) {
-    vertices[k] = count, slots[k] = top;
-    if (const Cdt* s = tile[k].mesh.get()) {
-      count += static_cast<VertexId>(s->pts.size() - tile[k].given);
-      top += static_cast<TriangleId>(s->size() - tile[k].own.size() - tile[k].ghosts.size());
-    }
-  }
-  grow(m.pts, count, Point{}, threads);
-  grow(m.corner, count, kNoTriangle, threads);
-  m.tds.grow(top - m.tds.slots(), threads);
-  if (!m.region.empty()) grow(m.region, top, -1, threads);
-  grow(ends, count, {kNoVertex, kNoVertex}, threads);
-  each_tile(tiles, threads, [&](std::size_t k, unsigned) {
-    if (tile[k].mesh) put_back(m, tile[k], vertices[k], slots[k], ends);
-  });
+  put_all_back(m, tile, threads, ends);
 }
 
 }  // namespace

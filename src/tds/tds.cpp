@@ -2,6 +2,7 @@
 // hot loops of insertion.
 #include "tds/tds.hpp"
 
+#include <new>
 #include <string>
 
 #include "runtime/memory.hpp"
@@ -84,12 +85,8 @@ void Tds::use_constraints(bool on) {
   constraints_.assign(size, kFree);
 }
 
-void Tds::make_room(TriangleId end, unsigned threads) {
+void Tds::reserve(TriangleId end) {
   const std::size_t need = 3 * std::size_t{end};
-  if (need <= vertex_store_.size()) {
-    if (!constraints_.empty() && constraints_.size() < need) constraints_.resize(vertex_store_.size(), kFree);
-    return;
-  }
   if (!growable_) throw std::logic_error("ridt: the triangulation ran out of slots");
   // The slots are added a few at a time, so the capacity grows geometrically; by four, not
   // two: each growth copies the arrays into fresh pages, and refinement, which grows a mesh
@@ -102,22 +99,32 @@ void Tds::make_room(TriangleId end, unsigned threads) {
     return need <= vertex_store_.capacity() && need <= link_store_.capacity() &&
         (constraints_.empty() || need <= constraints_.capacity());
   };
-  if (!roomy()) {  // (asked once a growth: available_memory() reads files)
-    const std::size_t capacity = vertex_store_.capacity();
-    const std::size_t slot_bytes = sizeof(VertexId) + sizeof(Link) + (constraints_.empty() ? 0 : sizeof(Constraint));
-    const std::size_t left = available_memory();  // 0 where it cannot be read
-    const bool ample = left == 0 || 4 * capacity * slot_bytes <= left / 4;
-    for (const std::size_t step : {ample ? 4 : 2, 2, 0}) {
-      if (roomy()) break;
-      try {
-        const std::size_t room = std::max(need, step * capacity);
-        vertex_store_.reserve(room), link_store_.reserve(room);
-        if (!constraints_.empty()) constraints_.reserve(room);
-      } catch (const std::bad_alloc&) {
-        if (step == 0) throw;
-      }
+  if (roomy()) return;
+  const std::size_t capacity = vertex_store_.capacity();
+  const std::size_t slot_bytes = sizeof(VertexId) + sizeof(Link) + (constraints_.empty() ? 0 : sizeof(Constraint));
+  const std::size_t left = available_memory();  // 0 where it cannot be read (asked once a growth: it reads files)
+  const bool ample = left == 0 || 4 * capacity * slot_bytes <= left / 4;
+  for (const std::size_t step : {ample ? 4 : 2, 2, 0}) {
+    if (roomy()) break;
+    try {
+      const std::size_t room = std::max(need, step * capacity);
+      vertex_store_.reserve(room), link_store_.reserve(room);
+      if (!constraints_.empty()) constraints_.reserve(room);
+    } catch (const std::bad_alloc&) {
+      refresh();
+      if (step == 0) throw;
     }
   }
+  refresh();
+}
+
+void Tds::make_room(TriangleId end, unsigned threads) {
+  const std::size_t need = 3 * std::size_t{end};
+  if (need <= vertex_store_.size()) {
+    if (!constraints_.empty() && constraints_.size() < need) constraints_.resize(vertex_store_.size(), kFree);
+    return;
+  }
+  reserve(end);
   // The new pages made present together (a megabyte or more: runtime/memory.hpp), not faulted
   // in one by one as the fill below first writes each.
   auto fresh = [&](auto& v) { make_present(v.data() + v.size(), (need - v.size()) * sizeof(v[0]), threads); };

@@ -317,6 +317,15 @@ class Tds {
     top_ += count;
     return first;
   }
+  /// Whether `count` more slots past those in use fit in the arrays as they are (no copy).
+  bool has_room(TriangleId count) const {
+    const std::size_t need = 3 * (std::size_t{top_} + count);
+    return need <= vertex_store_.capacity() && need <= link_store_.capacity() &&
+        (constraints_.empty() || need <= constraints_.capacity());
+  }
+  /// Capacity for slots up to `end` (geometrically: see tds.cpp), the slots themselves not
+  /// made; throws std::bad_alloc, the triangulation unchanged, where even `end` is refused.
+  void reserve(TriangleId end);
   /// A pool of `count` fresh slots past those in use.
   SlotPool fresh(TriangleId count) {
     SlotPool pool;
