@@ -34,11 +34,13 @@ SlotPool Cdt::fresh(TriangleId count, TriangleId like) {
   return pool;
 }
 
-bool Cdt::has_room(std::size_t points) const {
-  const std::size_t slots = tds.slots() + 2 * points;
-  return pts.size() + points <= pts.capacity() && corner.size() + points <= corner.capacity() &&
-      tds.has_room(static_cast<TriangleId>(2 * points)) && (region.empty() || slots <= region.capacity()) &&
-      (mark.empty() || slots <= mark.capacity());
+std::size_t Cdt::room() const {
+  const std::size_t slots = tds.slots();
+  auto left = [](const auto& v, std::size_t used) { return v.capacity() - std::min(v.capacity(), used); };
+  std::size_t points = std::min({left(pts, pts.size()), left(corner, corner.size()), tds.room() / 2});
+  if (!region.empty()) points = std::min(points, left(region, slots) / 2);
+  if (!mark.empty()) points = std::min(points, left(mark, slots) / 2);
+  return points;
 }
 
 void Cdt::make_room(std::size_t points) {

@@ -119,11 +119,11 @@ class Cdt {
   /// The edge a-b, as a triangle at a sees it (its slot 3t + k); kNoLink when none.
   Link find_edge(VertexId a, VertexId b) const;
   std::size_t size() const { return tds.slots(); }
-  /// Whether the arrays take `points` more points (each with its corner and two triangles)
-  /// as they are; make_room grows them so (geometrically where memory allows), or throws
-  /// std::bad_alloc with the mesh unchanged. Growth copies an array, so needs the old and the
-  /// new at once: asked for between insertions, a shortage is met with no point half added.
-  bool has_room(std::size_t points) const;
+  /// How many more points (each with its corner and two triangles) the arrays take as they are;
+  /// make_room(points) grows them to take that many (geometrically where memory allows), or
+  /// throws std::bad_alloc with the mesh unchanged. Growth copies an array, so needs the old and
+  /// the new at once: asked for between insertions, a shortage is met with no point half added.
+  std::size_t room() const;
   void make_room(std::size_t points);
   /// Each vertex's corner set again from the triangles (kNoTriangle for a vertex in none).
   void index_corners();

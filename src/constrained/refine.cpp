@@ -97,17 +97,41 @@ void Refiner::relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std
 }
 
 // After v is added: its triangles queued where bad, its fixed edges where encroached.
-bool Refiner::room_ahead() {
-  if (m_.has_room(kAhead) && m_.pts.size() + kAhead <= ends_.capacity()) return true;
+bool Refiner::input_angle(TriangleId t, int s, const double (&l)[3], double twice) const {
+  if (!m_.fixed(link_to(t, (s + 1) % 3)) || !m_.fixed(link_to(t, (s + 2) % 3))) return false;
+  const int longest = l[(s + 1) % 3] >= l[(s + 2) % 3] ? (s + 1) % 3 : (s + 2) % 3;
+  const int middle = 3 - s - longest;  // across from the second smallest angle (below 90 degrees)
+  return twice * twice / (l[(middle + 1) % 3] * l[(middle + 2) % 3]) >= sin2_;
+}
+
+Point Refiner::split_point(VertexId x, VertexId y) const {
+  const Point &a = m_.pts[x], &b = m_.pts[y];
+  const Point mid{a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+  const bool sharp_x = corner(x) && small_[x], sharp_y = corner(y) && small_[y];
+  VertexId shells = sharp_x != sharp_y ? (sharp_x ? x : y) : kNoVertex;
+  if (!sharp_x && !sharp_y)
+    if (const auto [z1, z2] = chain(x, y); z1 != kNoVertex && (small_[z1] != 0) != (small_[z2] != 0))
+      shells = small_[z1] ? z1 : z2;
+  if (shells == kNoVertex) return mid;
+  const Point& z = m_.pts[shells];
+  const double dx = std::sqrt(dist2(z, a)), dy = std::sqrt(dist2(z, b));
+  const double near = std::min(dx, dy), far = std::max(dx, dy);
+  const double d = std::exp2(std::round(std::log2((near + far) / 2)));
+  if (!(d > near * 1.0625 && d < far / 1.0625)) return mid;
+  const Point& o = dx > dy ? a : b;
+  return {z.x + (o.x - z.x) * (d / far), z.y + (o.y - z.y) * (d / far)};
+}
+
+bool Refiner::make_room() {
   try {
-    m_.make_room(std::max(kAhead, m_.pts.size() / 4));
+    if (m_.room() < kAhead) m_.make_room(std::max(kAhead, m_.pts.size() / 4));
     ends_.reserve(m_.pts.capacity());
-    return true;
   } catch (const std::bad_alloc&) {
     return false;
   }
+  room_until_ = m_.pts.size() + std::min(m_.room(), ends_.capacity() - m_.pts.size());
+  return true;
 }
-
 void Refiner::added(VertexId v) {
   ends_.resize(m_.pts.size(), {kNoVertex, kNoVertex});
   m_.around(v, [&](TriangleId t) {
@@ -173,14 +197,27 @@ std::string Refiner::left_bad() const {
     return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
   };
   const std::size_t below = count(shape), above = count(area), failed = count(unsuitable);
-  if (below + above + failed == 0) return "";
+  // A conforming triangulation promises every edge Delaunay, which an encroached subsegment too
+  // short to split (two segments at a small angle split each other down to the least length)
+  // breaks: said.
+  std::size_t short_encroached = 0;
+  if (r_.conforming)
+    for (Link s = 0; s < 3 * m_.size(); ++s)
+      if (m_.fixed(s) && m_.at(triangle_of(s), 0) != kNoVertex && (boundary(s) || s < m_.tds.link_at(s)) &&
+          encroached(s) && dist2(m_.pts[m_.tds.tail(s)], m_.pts[m_.tds.head(s)]) < 4 * tiny2_)
+        ++short_encroached;
+  std::string edges;
+  if (short_encroached > 0)
+    edges = std::to_string(short_encroached) + (short_encroached == 1 ? " subsegment" : " subsegments") +
+        " encroached but too short to split (the triangulation may not be Delaunay there)";
+  if (below + above + failed == 0) return edges.empty() ? "" : "conforming refinement left " + edges;
   auto triangles = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " triangle" : " triangles"); };
   std::string w = "quality refinement left ";
   if (below > 0) w += triangles(below) + " below the minimum angle";
   if (above > 0) w += std::string(below > 0 ? " and " : "") + triangles(above) + " above the maximum area or size";
   if (failed > 0)
     w += std::string(below + above > 0 ? " and " : "") + triangles(failed) + " unsuitable by the test given";
-  return w + ": the subsegments near them could not be split far enough";
+  return w + ": the subsegments near them could not be split far enough" + (edges.empty() ? "" : "; and " + edges);
 }
 
 void Refiner::improve(const Bad& b) {

@@ -317,11 +317,11 @@ class Tds {
     top_ += count;
     return first;
   }
-  /// Whether `count` more slots past those in use fit in the arrays as they are (no copy).
-  bool has_room(TriangleId count) const {
-    const std::size_t need = 3 * (std::size_t{top_} + count);
-    return need <= vertex_store_.capacity() && need <= link_store_.capacity() &&
-        (constraints_.empty() || need <= constraints_.capacity());
+  /// How many more slots past those in use fit in the arrays as they are (no copy).
+  std::size_t room() const {
+    std::size_t most = std::min(vertex_store_.capacity(), link_store_.capacity());
+    if (!constraints_.empty()) most = std::min(most, constraints_.capacity());
+    return most / 3 - std::min<std::size_t>(most / 3, top_);
   }
   /// Capacity for slots up to `end` (geometrically: see tds.cpp), the slots themselves not
   /// made; throws std::bad_alloc, the triangulation unchanged, where even `end` is refused.

@@ -154,6 +154,55 @@ TEST(Refine, SmallInputAnglesEnd) {
   mesh(fan, q);
 }
 
+// A triangle whose small angle is an input angle, between two segments, and whose other
+// angles meet the bound is no flaw: no point added could widen that angle. A spike of 10
+// degrees is meshed as it is; one of two small angles (10 and 20 degrees) is refined.
+TEST(Refine, AnInputAngleIsNoFlawOfItsTriangle) {
+  Quality q;
+  q.min_angle = 30;
+  const double half = std::tan(5 * 3.14159265358979323846 / 180);
+  Pslg spike;
+  spike.points = {{0, 0}, {1, -half}, {1, half}};
+  spike.segments = {0, 1, 1, 2, 2, 0};
+  EXPECT_EQ(mesh(spike, q).t.size(), 1u);
+  Pslg two = spike;  // angles of 10, 20 and 150 degrees
+  const double t10 = std::tan(10 * 3.14159265358979323846 / 180), t20 = std::tan(20 * 3.14159265358979323846 / 180);
+  const double x = t20 / (t10 + t20);
+  two.points = {{0, 0}, {1, 0}, {x, x * t10}};
+  EXPECT_GT(mesh(two, q).t.size(), 1u);
+}
+
+// Star polygons with random radii (sharp spikes: small input angles, narrow channels) meshed at
+// Triangle's usual bounds take no more triangles in all than Triangle's meshes of them (its
+// counts: `triangle -pqA` of the same polygons written as .poly, A = 20, 25, 30, 33).
+TEST(Refine, StarPolygonsTakeNoMoreTrianglesThanTriangles) {
+  auto star = [](std::uint64_t seed) {
+    std::uint64_t x = seed;
+    auto next = [&] { return x = x * 6364136223846793005u + 1442695040888963407u; };
+    auto unit = [&] { return static_cast<double>(next() >> 11) * 0x1p-53; };
+    const auto n = static_cast<std::size_t>(8 + next() % 40);
+    std::vector<double> at(n), radius(n);
+    for (double& a : at) a = unit();
+    std::sort(at.begin(), at.end());
+    for (double& r : radius) r = 0.4 + unit();
+    Pslg g;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = 2 * 3.14159265358979323846 * at[i];
+      g.points.push_back({radius[i] * std::cos(a), radius[i] * std::sin(a)});
+      g.segments.push_back(static_cast<VertexId>(i)), g.segments.push_back(static_cast<VertexId>((i + 1) % n));
+    }
+    return g;
+  };
+  const std::pair<double, std::size_t> triangles[] = {{20, 761}, {25, 1005}, {30, 1434}, {33, 1902}};
+  for (const auto& [angle, theirs] : triangles) {
+    Quality q;
+    q.min_angle = angle;
+    std::size_t ours = 0;
+    for (std::uint64_t k = 0; k < 24; ++k) ours += mesh(star(k + 1), q).t.size();
+    EXPECT_LE(ours, theirs) << angle << " degrees";
+  }
+}
+
 // A 20-degree wedge closed by a right angle: refinement leaves below the bound only the
 // triangle at the wedge's apex, whose small angle is the input's; every other triangle, the
 // ones between the shells about the apex included, is split until it meets the bound.
@@ -757,6 +806,19 @@ TEST(Refine, ConformingDelaunayMakesEveryEdgeDelaunay) {
   spec.edges = boundary;
   const CheckResult all = check_mesh(m.all, m.t.triangles, spec);
   EXPECT_TRUE(all.valid) << all.message;
+  EXPECT_EQ(m.t.warning, "");
+}
+
+// A point a hair (10^-14) above a segment, in a conforming triangulation: the segment is split
+// down to the least length refinement splits and stays encroached, which is said.
+TEST(Refine, ConformingSaysWhatItCouldNotSplit) {
+  Pslg g;
+  g.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.3, 1e-14}};
+  g.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  Quality q;
+  q.conforming = true;
+  const Meshed m = mesh(g, q);
+  EXPECT_NE(m.t.warning.find("1 subsegment encroached but too short to split"), std::string::npos) << m.t.warning;
 }
 
 TEST(Refine, BadBoundsAreRefused) {
