@@ -98,7 +98,9 @@ void Refiner::relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std
 
 // After v is added: its triangles queued where bad, its fixed edges where encroached.
 bool Refiner::input_angle(TriangleId t, int s, const double (&l)[3], double twice) const {
-  if (!m_.fixed(link_to(t, (s + 1) % 3)) || !m_.fixed(link_to(t, (s + 2) % 3))) return false;
+  // (In a tile, an edge beside a ghost may be the fence's, not a segment's: not taken.)
+  auto segment = [&](Link e) { return m_.fixed(e) && !frozen(e); };
+  if (!segment(link_to(t, (s + 1) % 3)) || !segment(link_to(t, (s + 2) % 3))) return false;
   const int longest = l[(s + 1) % 3] >= l[(s + 2) % 3] ? (s + 1) % 3 : (s + 2) % 3;
   const int middle = 3 - s - longest;  // across from the second smallest angle (below 90 degrees)
   return twice * twice / (l[(middle + 1) % 3] * l[(middle + 2) % 3]) >= sin2_;
