@@ -20,11 +20,15 @@ inline Point3 cross(const Point3& a, const Point3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 inline double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-// a scaled by a power of two (exactly) to a largest coordinate in [1, 2): its squares and
-// products then neither overflow nor underflow.
+// Coordinates whose squares and products neither overflow nor lose digits to underflow: a
+// largest coordinate m in [2^-400, 2^400] (a difference of two such coordinates, if not 0, is
+// at least m 2^-53, its products above 2^-906).
+inline bool plain(double m) { return m >= 0x1p-400 && m <= 0x1p400; }
+// a, where its largest coordinate m is not plain(), scaled by a power of two (exactly) to m in
+// [1, 2).
 inline Point3 scaled(const Point3& a) {
   const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)});
-  if (!(m > 0) || !std::isfinite(m)) return a;
+  if (plain(m) || !(m > 0) || !std::isfinite(m)) return a;
   const int e = std::ilogb(m);
   return {std::ldexp(a.x, -e), std::ldexp(a.y, -e), std::ldexp(a.z, -e)};
 }
@@ -45,19 +49,31 @@ inline double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
 
 // The unit outward normal of triangle (a, b, c), counter-clockwise seen from outside: where its
 // circle on the sphere is centred. Its components, (b - a) x (c - a), are the triangle's doubled
-// areas in the planes yz, zx and xy, each within a relative 2^-50 of the exact one
-// (doubled_area: exactly where the filter cannot vouch), so the direction carries a bounded
-// error however thin the triangle (two corners an ulp apart leave a cross product of rounded
-// sides nothing right). The corners are first scaled by one power of two, so that no area
-// overflows.
+// areas in the planes yz, zx and xy, each within 2^-50 of the exact normal's largest component
+// (the orientation filter's bounds; exactly, doubled_area_exact, where a bound is larger), so
+// the direction carries an error below 2^-48 however thin the triangle (two corners an ulp
+// apart leave a cross product of rounded sides nothing right). A component near 0 beside a
+// large one, which a bound relative to itself would send to the exact path, needs nothing more.
+// Corners beyond plain() are first scaled by one power of two, so that no area overflows.
 inline Point3 unit_normal(const Point3& a, const Point3& b, const Point3& c) {
   const double m = std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(a.z), std::fabs(b.x), std::fabs(b.y),
                              std::fabs(b.z), std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)});
-  const int e = m > 0 ? std::ilogb(m) : 0;
-  auto at = [&](const Point3& p) { return Point3{std::ldexp(p.x, -e), std::ldexp(p.y, -e), std::ldexp(p.z, -e)}; };
+  const int e = plain(m) || !(m > 0) ? 0 : std::ilogb(m);
+  auto at = [&](const Point3& p) {
+    return e == 0 ? p : Point3{std::ldexp(p.x, -e), std::ldexp(p.y, -e), std::ldexp(p.z, -e)};
+  };
   const Point3 u = at(a), v = at(b), w = at(c);
-  return unit({doubled_area({u.y, u.z}, {v.y, v.z}, {w.y, w.z}), doubled_area({u.z, u.x}, {v.z, v.x}, {w.z, w.x}),
-               doubled_area({u.x, u.y}, {v.x, v.y}, {w.x, w.y})});
+  const Point yz[3] = {{u.y, u.z}, {v.y, v.z}, {w.y, w.z}}, zx[3] = {{u.z, u.x}, {v.z, v.x}, {w.z, w.x}},
+              xy[3] = {{u.x, u.y}, {v.x, v.y}, {w.x, w.y}};
+  const BoundedArea d[3] = {bounded_area(yz[0], yz[1], yz[2]), bounded_area(zx[0], zx[1], zx[2]),
+                            bounded_area(xy[0], xy[1], xy[2])};
+  const double largest = std::max({std::fabs(d[0].value), std::fabs(d[1].value), std::fabs(d[2].value)});
+  // (Each bound below 2^-51 of the largest approximate component: the exact largest is then
+  // within 2^-51 of it, so each error is below 2^-50 of the exact one.)
+  if (std::max({d[0].bound, d[1].bound, d[2].bound}) <= 0x1p-51 * largest)
+    return unit({d[0].value, d[1].value, d[2].value});
+  return unit(
+      {doubled_area(yz[0], yz[1], yz[2]), doubled_area(zx[0], zx[1], zx[2]), doubled_area(xy[0], xy[1], xy[2])});
 }
 
 /// The linear weights of direction q (from `centre`) in triangle (a, b, c): the barycentric

@@ -43,8 +43,12 @@ inline Tetrahedron fat_tetrahedron(std::span<const Point3> points, std::span<con
   double largest = 0;
   for (const VertexId v : ids)
     largest = std::max({largest, std::fabs(points[v].x), std::fabs(points[v].y), std::fabs(points[v].z)});
-  const int e = largest > 0 ? std::ilogb(largest) : 0;
+  // (Coordinates up to 2^400 and down to 2^-400 are taken as they are: neither their squares
+  // nor their cross products overflow or underflow, and the scaling's calls cost more than the
+  // scores.)
+  const int e = largest > 0 && !(largest >= 0x1p-400 && largest <= 0x1p400) ? std::ilogb(largest) : 0;
   auto at = [&](VertexId v) {
+    if (e == 0) return points[v];
     return Point3{std::ldexp(points[v].x, -e), std::ldexp(points[v].y, -e), std::ldexp(points[v].z, -e)};
   };
   auto best = [&](auto&& score) {

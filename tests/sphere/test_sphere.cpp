@@ -261,6 +261,65 @@ TEST(SphericalVoronoiCells, CirclesCellsAndAreas) {
   for (const double a : v.areas) EXPECT_NEAR(a, 4 * kPi * 3 / 8, 1e-12);
 }
 
+// The circle centres' directions (sphere/geometry.hpp's unit_normal) within their bound, 2^-48,
+// of the normal computed in long double from exactly subtracted sides: on caps of three points
+// an ulp to 10^-3 apart, about each axis (a normal along an axis leaves two components near 0,
+// which a bound relative to each would send to the exact path), and at scales from 2^-600 to
+// 2^600 (scaled there by a power of two).
+TEST(SphericalVoronoiCells, CircleCentresWithinTheirBound) {
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int tried = 0;
+  for (const double scale : {0x1p-600, 1e-3, 1.0, 7e5, 0x1p600})
+    for (const double spread : {1e-3, 1e-8, 1e-13})
+      for (int axis = 0; axis < 4; ++axis)
+        for (int k = 0; k < 20; ++k) {
+          // A cap about an axis (or a random direction), three points within `spread` of its centre.
+          Point3 centre = axis == 0 ? Point3{1, 0, 0}
+              : axis == 1           ? Point3{0, 1, 0}
+              : axis == 2           ? Point3{0, 0, 1}
+                                    : Point3{u(random), u(random), u(random)};
+          std::vector<Point3> pts;
+          for (int i = 0; i < 3; ++i) {
+            const Point3 p{centre.x + spread * u(random), centre.y + spread * u(random), centre.z + spread * u(random)};
+            const double l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+            pts.push_back({p.x / l * scale, p.y / l * scale, p.z / l * scale});
+          }
+          pts.push_back({-centre.x * scale, -centre.y * scale, -centre.z * scale});  // a fourth, far off
+          if (orientation(pts[0], pts[1], pts[2], pts[3]) == 0) continue;
+          const SphericalTriangulation t = triangulate_sphere(pts);
+          const SphericalVoronoi v = spherical_voronoi(t, pts, {}, 1);
+          for (std::size_t f = 0; f < t.size(); ++f) {
+            // From the corner across the longest side (from another, a needle's two long sides
+            // nearly parallel would cancel the products' digits), sides exact in long double,
+            // scaled to keep the products in range.
+            const Point3* q[3] = {&pts[t.triangles[3 * f]], &pts[t.triangles[3 * f + 1]], &pts[t.triangles[3 * f + 2]]};
+            auto length = [&](int i) {
+              const Point3 &x = *q[(i + 1) % 3], &y = *q[(i + 2) % 3];
+              return std::hypot(x.x / scale - y.x / scale, x.y / scale - y.y / scale, x.z / scale - y.z / scale);
+            };
+            const int o = length(0) >= length(1) && length(0) >= length(2) ? 0 : length(1) >= length(2) ? 1 : 2;
+            const Point3 &a = *q[o], &b = *q[(o + 1) % 3], &c = *q[(o + 2) % 3];
+            const long double s = 1 / static_cast<long double>(scale);
+            const long double bx = (static_cast<long double>(b.x) - a.x) * s,
+                              by = (static_cast<long double>(b.y) - a.y) * s,
+                              bz = (static_cast<long double>(b.z) - a.z) * s;
+            const long double cx = (static_cast<long double>(c.x) - a.x) * s,
+                              cy = (static_cast<long double>(c.y) - a.y) * s,
+                              cz = (static_cast<long double>(c.z) - a.z) * s;
+            const long double nx = by * cz - bz * cy, ny = bz * cx - bx * cz, nz = bx * cy - by * cx;
+            const long double l = std::sqrt(nx * nx + ny * ny + nz * nz);
+            const Point3& got = v.vertices[f];
+            const long double error =
+                std::sqrt((got.x - nx / l) * (got.x - nx / l) + (got.y - ny / l) * (got.y - ny / l) +
+                          (got.z - nz / l) * (got.z - nz / l));
+            EXPECT_LT(static_cast<double>(error), 0x1p-48) << scale << " " << spread << " " << axis;
+            ++tried;
+          }
+        }
+  EXPECT_GT(tried, 1000);
+}
+
 TEST(SphereInterpolation, LinearOnTheSphere) {
   const Point3 c{1, -2, 3};
   const std::vector<Point3> pts = on_sphere(20000, 12, 2, c);
