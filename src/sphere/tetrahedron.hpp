@@ -28,8 +28,9 @@ struct Tetrahedron {
 
 /// Among points[ids[0 .. ids.size())] (distinct, at least four): the first, the farthest from
 /// it, the farthest from their line, the farthest from their plane, each scored in double
-/// precision on the points scaled by one power of two (so that no square overflows or
-/// underflows) and confirmed exactly, or found by an exact search where the scores are all 0.
+/// precision on the points scaled by one power of two where their largest coordinate lies
+/// beyond 2^-400 to 2^400 (so that no square overflows or underflows; within, they need none)
+/// and confirmed exactly, or found by an exact search where the scores are all 0.
 inline Tetrahedron fat_tetrahedron(std::span<const Point3> points, std::span<const VertexId> ids) {
   auto cross = [](const Point3& a, const Point3& b) {
     return Point3{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
@@ -43,13 +44,10 @@ inline Tetrahedron fat_tetrahedron(std::span<const Point3> points, std::span<con
   double largest = 0;
   for (const VertexId v : ids)
     largest = std::max({largest, std::fabs(points[v].x), std::fabs(points[v].y), std::fabs(points[v].z)});
-  // (Coordinates up to 2^400 and down to 2^-400 are taken as they are: neither their squares
-  // nor their cross products overflow or underflow, and the scaling's calls cost more than the
-  // scores.)
   const int e = largest > 0 && !(largest >= 0x1p-400 && largest <= 0x1p400) ? std::ilogb(largest) : 0;
   auto at = [&](VertexId v) {
-    if (e == 0) return points[v];
-    return Point3{std::ldexp(points[v].x, -e), std::ldexp(points[v].y, -e), std::ldexp(points[v].z, -e)};
+    return e == 0 ? points[v]
+                  : Point3{std::ldexp(points[v].x, -e), std::ldexp(points[v].y, -e), std::ldexp(points[v].z, -e)};
   };
   auto best = [&](auto&& score) {
     VertexId arg = kNoVertex;
