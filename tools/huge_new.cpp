@@ -8,10 +8,16 @@
 // large arrays miss the TLB less too. Where the system gives no huge pages, nothing changes but
 // the rounding.
 //
+// Under a limit on address space (ulimit -v, as batch systems set it) allocations are malloc's
+// as they were: the alignment and the rounding map up to 4 MiB more an array, and what the
+// limit leaves is the room the library counts on (for a refinement's growth, for the threads'
+// stacks).
+//
 // The memory comes from aligned_alloc, so every operator delete (the standard library's: free)
 // gives it back; the other forms of operator new call this one (new[], nothrow) or keep their own
 // (aligned). Sanitizers' builds leave it out (CMakeLists.txt): they count on their own.
 #include <sys/mman.h>
+#include <sys/resource.h>
 
 #include <cstddef>
 #include <cstdlib>
@@ -22,8 +28,14 @@ namespace {
 constexpr std::size_t kHugePage = std::size_t{1} << 21;
 constexpr std::size_t kLarge = 2 * kHugePage;  // smaller ones as malloc gives them
 
+// (Asked at each large allocation, a system call: the limit may be set at any time.)
+bool address_space_limited() {
+  rlimit r{};
+  return getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY;
+}
+
 void* allocate(std::size_t bytes) {
-  if (bytes < kLarge) return std::malloc(bytes != 0 ? bytes : 1);
+  if (bytes < kLarge || address_space_limited()) return std::malloc(bytes != 0 ? bytes : 1);
   const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
   if (rounded < bytes) return nullptr;  // (a size near the largest: refused, as malloc would)
   void* p = std::aligned_alloc(kHugePage, rounded);
