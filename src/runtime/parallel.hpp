@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <exception>
 #include <memory>
+#include <new>
+#include <system_error>
 #include <thread>
 #include <type_traits>
 #include <vector>
@@ -56,19 +58,32 @@ void on_threads(unsigned count, Body&& body) {
 }  // the pool joins on leaving
 
 /// Runs body(first, last) over [0, count) in up to `threads` parts (0: the hardware's threads)
-/// of at least `grain` each; the first exception of any part is rethrown once all ended.
+/// of at least `grain` each; the first exception of any part is rethrown once all ended. The
+/// parts are independent: where a thread cannot be started (the process's limit on threads or
+/// on address space, which its stack must fit in), the caller runs the parts no thread ran.
 template <class Body>
 void parallel_for(std::size_t count, unsigned threads, std::size_t grain, Body&& body) {
   const auto parts =
       static_cast<unsigned>(std::clamp<std::size_t>(count / std::max<std::size_t>(grain, 1), 1, thread_count(threads)));
   std::vector<std::exception_ptr> failed(parts);
-  on_threads(parts, [&](unsigned p) {
+  std::vector<std::uint8_t> ran(parts, 0);  // (each part's own byte)
+  auto part = [&](unsigned p) {
+    ran[p] = 1;
     try {
       body(count * p / parts, count * (p + 1) / parts);
     } catch (...) {
       failed[p] = std::current_exception();
     }
-  });
+  };
+  try {
+    on_threads(parts, part);
+  } catch (const std::system_error&) {  // (the threads started have ended: joined on the way)
+    for (unsigned p = 0; p < parts; ++p)
+      if (!ran[p]) part(p);
+  } catch (const std::bad_alloc&) {
+    for (unsigned p = 0; p < parts; ++p)
+      if (!ran[p]) part(p);
+  }
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
 }

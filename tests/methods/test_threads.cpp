@@ -9,11 +9,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <mutex>
 #include <span>
 #include <string>
+#include <system_error>
 #include <thread>
+#include <vector>
 
 #include "helpers.hpp"
 #include "methods/partition.hpp"
@@ -638,6 +641,58 @@ TEST(ParkedThreads, AForkedChildParksItsOwn) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
 }
+
+// Where no thread can be started (a child of fork(), with no parked threads, under a limit on
+// address space that leaves no room for a thread's stack), parallel_for runs every part on the
+// caller, each once, and says nothing: the validator of a mesh refinement stopped for memory
+// failed so ("Resource temporarily unavailable"). Not under the sanitizers, whose shadow
+// memory an address-space limit would starve.
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+TEST(ParkedThreads, PartsRunOnTheCallerWhereNoThreadStarts) {
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::alarm(60);
+    constexpr std::size_t kCount = 1 << 16;
+    std::vector<std::uint8_t> seen(kCount, 0);  // allocated before the limit
+    std::mutex hold;
+    hold.lock();
+    std::vector<std::thread> holders;
+    holders.reserve(4096);
+    long pages = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    rlimit limit{};
+    ::getrlimit(RLIMIT_AS, &limit);
+    limit.rlim_cur = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + (1 << 20);
+    if (pages == 0 || ::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(2);
+    // Threads that hold the stacks the C library keeps for reuse (those of the parent's threads
+    // among them), until a new thread would need a new one, which the limit refuses.
+    bool thread_refused = false;
+    while (!thread_refused && holders.size() < 4096) try {
+        holders.emplace_back([&] { const std::lock_guard<std::mutex> wait(hold); });
+      } catch (const std::system_error&) {
+        thread_refused = true;
+      }
+    bool once = false;
+    try {
+      detail::parallel_for(kCount, 4, 1024, [&](std::size_t from, std::size_t to) {
+        for (std::size_t i = from; i < to; ++i) ++seen[i];
+      });
+      once = std::all_of(seen.begin(), seen.end(), [](std::uint8_t c) { return c == 1; });
+    } catch (...) {}
+    hold.unlock();
+    for (std::thread& t : holders) t.join();
+    ::_exit(!thread_refused ? 3 : once ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "2: no limit set; 3: a thread started under the limit; 1: parts lost";
+}
+#endif
 
 }  // namespace
 }  // namespace ridt::test
