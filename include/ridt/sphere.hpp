@@ -31,7 +31,7 @@ struct SphericalTriangulation {
 /// The convex hull of `points` in space, by an exact orientation test with a symbolic
 /// perturbation (four points on one circle of the sphere get one answer, whatever their order
 /// in the input), built by randomized incremental insertion; `threads` (0: the machine's) sort
-/// the points and write the result. Throws InputError for a point that is not finite, for fewer
+/// the points, insert them and write the result, the same on any number. Throws InputError for a point that is not finite, for fewer
 /// than four distinct points, where all are coplanar, and where they are so nearly coplanar
 /// that no double lies strictly inside the fattest tetrahedron of them ("too nearly coplanar":
 /// a few units in the last place from flat).

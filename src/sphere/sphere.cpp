@@ -80,6 +80,13 @@ Distinct distinct_points(std::span<const Point3> points, unsigned threads) {
   return d;
 }
 
+// A round of insertions is shared among the threads where it has at least kMinCutRound points
+// and each thread gets at least kMinPart; a smaller one meets a hull so small that most of its
+// points would be put off.
+constexpr VertexId kMinCutRound = 4096, kMinPart = 256;
+// A thread tries this many of its first points for a triangle to start from.
+constexpr VertexId kStartTries = 64;
+
 class Builder {
  public:
   Builder(const std::vector<Point3>& p, unsigned threads) : p_(p), threads_(threads) {}
@@ -95,9 +102,19 @@ class Builder {
     rank_.assign(first.begin(), first.end());
     rank_.insert(rank_.end(), order.begin(), order.end());
     q_.resize(n);
-    for (VertexId v = 0; v < n; ++v) q_[v] = p_[rank_[v]];
+    key_.resize(n);
+    parallel_for(n, threads_, 65536, [&](std::size_t from, std::size_t to) {
+      for (std::size_t v = from; v < to; ++v) q_[v] = p_[rank_[v]], key_[v] = curve_[rank_[v]];
+    });
     start();
-    for (VertexId v = 4; v < n; ++v) insert(v);
+    for (std::size_t r = 0; r + 1 < rounds_.size(); ++r) {
+      const VertexId b = 4 + rounds_[r], e = 4 + rounds_[r + 1];
+      if (threads_ > 1 && e - b >= kMinCutRound && e - b >= kMinPart * threads_) {
+        insert_round(b, e);
+      } else {
+        for (VertexId v = b; v < e; ++v) insert(v);
+      }
+    }
   }
 
   const Tds& tds() const { return tds_; }
@@ -179,12 +196,14 @@ class Builder {
     std::vector<std::pair<std::uint64_t, VertexId>> keyed(order.size());
     for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {curve_[order[i]], order[i]};
     std::size_t end = keyed.size();
+    rounds_.assign(1, static_cast<VertexId>(end));
     while (end > 0) {
       const std::size_t begin = end > 64 ? end / 2 : 0;
       parallel_sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin),
                     keyed.begin() + static_cast<std::ptrdiff_t>(end), threads_, std::less<>());
-      end = begin;
+      rounds_.push_back(static_cast<VertexId>(end = begin));
     }
+    std::reverse(rounds_.begin(), rounds_.end());
     for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
     return order;
   }
@@ -251,6 +270,127 @@ class Builder {
     free_.resize(pool.listed);
   }
 
+  // The threads' share of a round. Its points are sorted along the curve: each thread takes a
+  // stretch of them, and the stretch's keys make its region, which every vertex whose key lies
+  // in it (old or new) belongs to. A thread inserts a point only where the triangle its walk
+  // ends in and every triangle of the cavity have all three corners in its region, and puts it
+  // off else (inserted afterwards on one thread). Its walk crosses only edges with an end in its
+  // region, and its cavity grows only by triangles that share an edge with one of its own:
+  //   - a triangle a thread replaces is its own, and so are the new ones (the point and the
+  //     cavity's boundary), so no two threads write one triangle;
+  //   - a triangle with a corner in a thread's region is that thread's, or has corners in two
+  //     regions and none changes it: that thread reads it racing with nothing;
+  //   - the links a thread rewrites are those of edges with both ends in its region, which
+  //     only it reads.
+  // (methods/partition.hpp shares the plane's rounds the same way.) The hull is unique, so the
+  // triangles are the same whichever thread inserted which point.
+  struct Part {
+    VertexId a = 0, b = 0;  // its points
+    std::uint64_t from = 0, to = 0;  // its region: the keys in [from, to)
+    // Where its walks start: at the first point of each face of the cube (the curve jumps
+    // between faces), a triangle with a corner in its region found before the threads start
+    // (kNoTriangle where none was).
+    std::vector<std::pair<VertexId, TriangleId>> starts;
+    TriangleId last = kNoTriangle;  // where its last walk ended
+    SlotPool pool;  // two slots a point
+    std::vector<VertexId> put_off;
+    std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
+    bool holds(VertexId v) const { return key_of(v) >= from && key_of(v) < to; }
+    const std::vector<std::uint64_t>* key = nullptr;
+    std::uint64_t key_of(VertexId v) const { return (*key)[v]; }
+  };
+
+  void insert_round(VertexId b, VertexId e) {
+    const unsigned threads = threads_;
+    std::vector<Part> parts(threads);
+    std::vector<VertexId> cut(threads + 1);
+    cut[0] = b, cut[threads] = e;
+    for (unsigned i = 1; i < threads; ++i) {  // equal stretches, cut where the key changes
+      VertexId c = std::max(cut[i - 1], b + static_cast<VertexId>(std::uint64_t{e - b} * i / threads));
+      while (c > b && c < e && key_[c] == key_[c - 1]) ++c;
+      cut[i] = c;
+    }
+    const TriangleId base = tds_.grow(2 * (e - b));
+    for (unsigned i = 0; i < threads; ++i) {
+      Part& p = parts[i];
+      p.a = cut[i], p.b = cut[i + 1], p.key = &key_;
+      p.from = i == 0 ? 0 : cut[i] < e ? key_[cut[i]] : ~std::uint64_t{0};
+      if (i > 0) parts[i - 1].to = p.from;
+      p.pool = {nullptr, 0, base + 2 * (p.a - b), base + 2 * (p.b - b)};
+      p.epoch = epoch_ + i + 1 - threads;
+    }
+    parts[threads - 1].to = ~std::uint64_t{0};
+    for (Part& p : parts) find_starts(p);
+    if (scratches_.size() < threads) scratches_.resize(threads);
+    walk_limit_ = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
+    parallel_for(threads, threads, 1, [&](std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) insert_part(parts[i], scratches_[i]);
+    });
+    for (Part& p : parts) {  // the slots left become free; then the points put off
+      epoch_ = std::max(epoch_, p.epoch);
+      for (; p.pool.next < p.pool.end; ++p.pool.next) tds_.free_slot(p.pool.next), free_.push_back(p.pool.next);
+      if (p.last != kNoTriangle) last_ = p.last;
+    }
+    for (const Part& p : parts)
+      for (const VertexId v : p.put_off) insert(v);
+  }
+
+  // The part's starts, with the hull at rest.
+  void find_starts(Part& p) {
+    for (VertexId v = p.a; v < p.b; ++v) {
+      if (v > p.a && key_[v] >> 32 == key_[v - 1] >> 32) continue;
+      TriangleId start = kNoTriangle;
+      for (VertexId u = v; u < p.b && u < v + kStartTries && start == kNoTriangle; ++u)
+        if (const TriangleId t = locate(u); has_corner_in(t, p)) start = t;
+      p.starts.push_back({v, start});
+    }
+  }
+
+  bool has_corner_in(TriangleId t, const Part& p) const {
+    const VertexId* c = tds_.corners(t);
+    return p.holds(c[0]) || p.holds(c[1]) || p.holds(c[2]);
+  }
+
+  void insert_part(Part& p, CavityScratch& s) {
+    TriangleId t = kNoTriangle;
+    std::size_t next = 0;
+    for (VertexId v = p.a; v < p.b; ++v) {
+      if (next < p.starts.size() && p.starts[next].first == v) t = p.starts[next++].second;
+      if (t == kNoTriangle || !insert_in(p, s, v, t)) p.put_off.push_back(v);
+    }
+    p.last = t;
+  }
+
+  // insert() on a thread of a round, from triangle t (left where the walk ended, or at the
+  // new fan); false, with nothing changed, where the point is put off.
+  bool insert_in(Part& p, CavityScratch& s, VertexId v, TriangleId& t) {
+    std::size_t steps = 0;
+    TriangleId at = t;
+    const Walked w = tds_.walk(
+        at, [&](VertexId a, VertexId b) { return side(a, b, v); },
+        [&](VertexId a, VertexId b) {
+          return (p.holds(a) || p.holds(b)) && ++steps < walk_limit_ ? Step::Cross : Step::Stop;
+        });
+    if (!w) return false;
+    t = at;
+    const VertexId* c = tds_.corners(at);
+    if (!sees(c, v)) return hidden_[v] = 1, true;
+    if (!p.holds(c[0]) || !p.holds(c[1]) || !p.holds(c[2]) || p.pool.size() < 2) return false;
+    const std::uint32_t epoch = p.epoch += threads_;
+    stamp_[at] = epoch;
+    const bool whole = tds_.find_cavity(
+        at, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return p.holds(tds_.opposite(l)); },
+        Tds::kNoWall,
+        [&](TriangleId u, const TriangleId*, std::size_t) {
+          if (stamp_[u] == epoch) return true;
+          stamp_[u] = epoch;
+          return false;
+        });
+    if (!whole || s.revisited) return false;  // a vertex covered: left to insert()
+    t = tds_.fill_cavity(v, s, p.pool);
+    return true;
+  }
+
   const std::vector<Point3>& p_;  // by rank
   unsigned threads_;
   std::vector<Point3> q_;  // by vertex id
@@ -265,7 +405,44 @@ class Builder {
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
   std::vector<std::uint64_t> curve_;
+  std::vector<std::uint64_t> key_;  // by vertex id: curve_ of its rank
+  std::vector<VertexId> rounds_;  // the insertion order's rounds: [rounds_[r], rounds_[r + 1])
+  std::vector<CavityScratch> scratches_;  // a thread's each
+  std::size_t walk_limit_ = 0;
 };
+
+// The corner of t with the least vertex id (its place in the insertion order), where the output
+// starts the triangle.
+int least_corner(const Tds& tds, TriangleId t) {
+  const VertexId* c = tds.corners(t);
+  return c[0] < c[1] ? (c[0] < c[2] ? 0 : 2) : (c[1] < c[2] ? 1 : 2);
+}
+
+// The triangles of one key (round one vertex, or the vertices of one cell of the curve) put in
+// the order of their corners' vertex ids, each from its least: their slots depend on which
+// thread inserted which point, the ids do not, so that the output is the same on any number of
+// threads.
+void in_own_order(const Tds& tds, std::vector<std::pair<std::uint64_t, TriangleId>>& live, unsigned threads) {
+  auto corners = [&](TriangleId t) {
+    const int c = least_corner(tds, t);
+    return std::array<VertexId, 3>{tds.vertex(t, c), tds.vertex(t, next3(c)), tds.vertex(t, prev3(c))};
+  };
+  const std::size_t n = live.size();
+  auto within = [&](std::size_t k) { return k > 0 && k < n && live[k].first == live[k - 1].first; };
+  // Parts that start where a key does, cut before any thread writes.
+  const unsigned parts = std::max(1u, std::min(threads, static_cast<unsigned>(n / 65536)));
+  std::vector<std::size_t> cut(parts + 1, n);
+  for (unsigned p = 0; p < parts; ++p)
+    for (cut[p] = std::max(n * p / parts, p > 0 ? cut[p - 1] : 0); within(cut[p]);) ++cut[p];
+  parallel_for(parts, parts, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = cut[first], end; k < cut[last]; k = end) {
+      for (end = k + 1; end < cut[last] && within(end);) ++end;
+      if (end - k > 1)
+        std::sort(live.begin() + static_cast<std::ptrdiff_t>(k), live.begin() + static_cast<std::ptrdiff_t>(end),
+                  [&](const auto& x, const auto& y) { return corners(x.second) < corners(y.second); });
+    }
+  });
+}
 
 }  // namespace
 }  // namespace detail
@@ -288,17 +465,21 @@ SphericalTriangulation triangulate_sphere(std::span<const Point3> points, unsign
       live.push_back(
           {std::min({key[rank[tds.vertex(t, 0)]], key[rank[tds.vertex(t, 1)]], key[rank[tds.vertex(t, 2)]]}), t});
   parallel_sort(live.begin(), live.end(), threads, std::less<>());
+  in_own_order(tds, live, threads);
   SphericalTriangulation out;
   std::vector<std::int32_t> id(tds.slots(), -1);
   for (std::size_t k = 0; k < live.size(); ++k) id[live[k].second] = static_cast<std::int32_t>(k);
   resize_present(out.triangles, 3 * live.size(), threads);
   resize_present(out.neighbors, 3 * live.size(), threads);
   parallel_for(live.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k)
-      for (int i = 0; i < 3; ++i) {
-        out.triangles[3 * k + i] = d.input[rank[tds.vertex(live[k].second, i)]];
-        out.neighbors[3 * k + i] = id[triangle_of(tds.link(live[k].second, i))];
+    for (std::size_t k = from; k < to; ++k) {
+      const TriangleId t = live[k].second;
+      const int first = least_corner(tds, t);
+      for (int i = 0, c = first; i < 3; ++i, c = next3(c)) {
+        out.triangles[3 * k + i] = d.input[rank[tds.vertex(t, c)]];
+        out.neighbors[3 * k + i] = id[triangle_of(tds.link(t, c))];
       }
+    }
   });
   for (VertexId v = 0; v < d.points.size(); ++v)
     if (builder.hidden()[v]) out.hidden.push_back(d.input[rank[v]]);

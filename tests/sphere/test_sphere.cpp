@@ -164,6 +164,55 @@ TEST(Sphere, PointsInsideAreHiddenAndCopiesDropped) {
   expect_valid(ball);
 }
 
+// The rounds of 4096 points or more are shared among the threads, each inserting in a region
+// of its own and putting off the points whose walk or cavity leaves it: the same triangles, in
+// the same order, on any number of threads (the hull is unique, the output's order the
+// triangles' own), on points far apart, in clusters, full of cocircular quadruples, with
+// copies, and mostly inside (points hidden, vertices covered as the hull grows).
+TEST(Sphere, SameOutputOnAnyNumberOfThreads) {
+  std::mt19937_64 random(21);
+  std::vector<std::vector<Point3>> inputs;
+  inputs.push_back(on_sphere(60000, 9, 3e2, {-4e5, 1e5, 7}));
+  std::vector<Point3> clusters;
+  std::normal_distribution<double> near(0, 1e-2);
+  const std::vector<Point3> centres = on_sphere(8, 10);
+  for (int i = 0; i < 40000; ++i) {
+    const Point3& c = centres[i % 8];
+    const Point3 p{c.x + near(random), c.y + near(random), c.z + near(random)};
+    const double l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    clusters.push_back({p.x / l, p.y / l, p.z / l});
+  }
+  inputs.push_back(clusters);
+  std::vector<Point3> grid{{0, 0, 1}, {0, 0, -1}};
+  for (int i = 1; i < 120; ++i)
+    for (int j = 0; j < 240; ++j) {
+      const double lat = kPi * i / 120 - kPi / 2, lon = 2 * kPi * j / 240;
+      grid.push_back({std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)});
+    }
+  inputs.push_back(grid);
+  std::vector<Point3> copies = on_sphere(20000, 12);
+  for (int i = 0; i < 2000; ++i) copies.push_back(copies[(i * 7919) % 20000]);
+  inputs.push_back(copies);
+  std::vector<Point3> ball = on_sphere(10000, 13);
+  std::uniform_real_distribution<double> w(-1, 1);
+  while (ball.size() < 40000)
+    if (const Point3 p{w(random), w(random), w(random)}; p.x * p.x + p.y * p.y + p.z * p.z <= 1) ball.push_back(p);
+  std::shuffle(ball.begin(), ball.end(), random);
+  inputs.push_back(ball);
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const SphericalTriangulation one = triangulate_sphere(inputs[k], 1);
+    const CheckResult r = check_sphere(inputs[k], one.triangles);
+    EXPECT_TRUE(r.valid) << "input " << k << ": " << r.message;
+    for (const unsigned threads : {2u, 3u, 8u}) {
+      const SphericalTriangulation t = triangulate_sphere(inputs[k], threads);
+      EXPECT_EQ(t.triangles, one.triangles) << "input " << k << ", " << threads << " threads";
+      EXPECT_EQ(t.neighbors, one.neighbors) << "input " << k << ", " << threads << " threads";
+      EXPECT_EQ(t.hidden, one.hidden) << "input " << k << ", " << threads << " threads";
+      EXPECT_EQ(t.duplicates.size(), one.duplicates.size()) << "input " << k << ", " << threads << " threads";
+    }
+  }
+}
+
 TEST(Sphere, BadInputIsRefused) {
   EXPECT_THROW(triangulate_sphere(std::vector<Point3>{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}), InputError);
   EXPECT_THROW(triangulate_sphere(std::vector<Point3>{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {1, 0, 0}}), InputError);
