@@ -137,6 +137,8 @@ void sort_by_key(std::uint64_t* a, std::uint64_t* b, std::uint32_t count) {
   }
 }
 
+}  // namespace
+
 // The same on up to `threads` threads, for a large round: in each pass each thread counts the
 // digits of its own stretch of the pairs, then writes its pairs after those of the same digit
 // from the stretches before its own. The sort stays stable: the same result on any number of
@@ -169,6 +171,8 @@ void sort_by_key(std::uint64_t* a, std::uint64_t* b, std::uint32_t count, unsign
     std::swap(a, b);  // three passes: the last one wrote the caller's b
   }
 }
+
+namespace {
 
 // ids[0 .. count) sorted by key[id], stably, as pairs.
 std::vector<std::uint64_t> sorted_pairs(const std::uint32_t* key, const std::uint32_t* ids, std::uint32_t count) {
@@ -355,7 +359,7 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
   const std::uint32_t large = threads > 1 ? std::max<std::uint32_t>(n / threads, 1u << 18) : UINT32_MAX;
   auto sort_round = [&](std::size_t r, unsigned on) {
     const std::uint32_t b = first[r], count = first[r + 1] - b;
-    sort_by_key(pairs + b, sorted + b, count, on);
+    detail::sort_by_key(pairs + b, sorted + b, count, on);
     refine(points, sorted + b, count, order.data() + b, key_out != nullptr ? key_out + b : nullptr, on);
   };
   for (std::size_t r = 0; r + 1 < first.size(); ++r)
@@ -380,7 +384,7 @@ Block<std::uint64_t> sorted_words(const std::uint32_t* key, std::uint32_t n, uns
   parallel_for(n, threads, 1 << 16, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) a[i] = std::uint64_t{key[i]} << 32 | i;
   });
-  sort_by_key(a.get(), b.get(), n, threads);
+  detail::sort_by_key(a.get(), b.get(), n, threads);
   return b;
 }
 

@@ -69,6 +69,11 @@ std::vector<std::uint32_t> brio_order(const Point* points, std::uint32_t n, std:
                                       std::vector<std::uint32_t>* keys = nullptr, OrderScratch scratch = {},
                                       const Extent* extent = nullptr);
 
+/// Sorts the words (key << 32 | id) a[0 .. count) by key, stably, into b (a is overwritten): a
+/// radix sort, least significant digit first, on up to `threads` threads; the same result on
+/// any number.
+void sort_by_key(std::uint64_t* a, std::uint64_t* b, std::uint32_t count, unsigned threads);
+
 /// The indices 0 .. n-1 of `points` sorted along a Hilbert curve over their bounding box
 /// (hilbert_sort).
 std::vector<std::uint32_t> hilbert_order(const Point* points, std::uint32_t n);

@@ -47,6 +47,19 @@ inline double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
   return 2 * std::atan2(triple, below);
 }
 
+// Whether d, a - b rounded, is a - b exactly (Knuth's two-sum: the error of the difference,
+// itself exact, is 0).
+inline bool exact_difference(double a, double b, double d) {
+  const double back = d - a;
+  return (a - (d - back)) + (-b - back) == 0;
+}
+// ab - cd within 2^-52 of itself (2 units of rounding): cd's rounding error, exact by a fused
+// multiply-add, put back into ab - cd rounded once.
+inline double product_difference(double a, double b, double c, double d) {
+  const double cd = c * d;
+  return std::fma(a, b, -cd) + std::fma(-c, d, cd);
+}
+
 // The unit outward normal of triangle (a, b, c), counter-clockwise seen from outside: where its
 // circle on the sphere is centred. Its components, (b - a) x (c - a), are the triangle's doubled
 // areas in the planes yz, zx and xy, each within 2^-50 of the exact normal's largest component
@@ -63,6 +76,18 @@ inline Point3 unit_normal(const Point3& a, const Point3& b, const Point3& c) {
     return e == 0 ? p : Point3{std::ldexp(p.x, -e), std::ldexp(p.y, -e), std::ldexp(p.z, -e)};
   };
   const Point3 u = at(a), v = at(b), w = at(c);
+  // Where the sides' differences are exact (as between close coordinates of one sign), each
+  // component is a difference of two exact products, which Kahan's way with a fused
+  // multiply-add gives within 2^-52 of itself (Jeannerod, Louvet and Muller, 2013), so long as
+  // no product underflows: a component of 2^-900 or more leaves room for what an underflow
+  // loses (below 2^-1070) in every other.
+  const Point3 p = minus(u, w), q = minus(v, w);
+  if (exact_difference(u.x, w.x, p.x) && exact_difference(u.y, w.y, p.y) && exact_difference(u.z, w.z, p.z) &&
+      exact_difference(v.x, w.x, q.x) && exact_difference(v.y, w.y, q.y) && exact_difference(v.z, w.z, q.z)) {
+    const Point3 n{product_difference(p.y, q.z, p.z, q.y), product_difference(p.z, q.x, p.x, q.z),
+                   product_difference(p.x, q.y, p.y, q.x)};
+    if (std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)}) >= 0x1p-900) return unit(n);
+  }
   const Point yz[3] = {{u.y, u.z}, {v.y, v.z}, {w.y, w.z}}, zx[3] = {{u.z, u.x}, {v.z, v.x}, {w.z, w.x}},
               xy[3] = {{u.x, u.y}, {v.x, v.y}, {w.x, w.y}};
   const BoundedArea d[3] = {bounded_area(yz[0], yz[1], yz[2]), bounded_area(zx[0], zx[1], zx[2]),

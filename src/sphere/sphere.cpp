@@ -16,6 +16,7 @@
 // point given a rounding below the sphere among close neighbours, now covered) makes that
 // vertex hidden.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <numeric>
@@ -23,11 +24,13 @@
 #include <string>
 
 #include "order/order.hpp"
+#include "order/runs.hpp"
 #include "predicates/orient3d.hpp"
 #include "predicates/predicates.hpp"
 #include "ridt/sphere.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
+#include "sphere/distinct.hpp"
 #include "sphere/tetrahedron.hpp"
 #include "tds/cover.hpp"
 #include "tds/delaunay.hpp"
@@ -37,53 +40,12 @@ namespace ridt {
 namespace detail {
 namespace {
 
-bool lex_less3(const Point3& a, const Point3& b) {
-  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
-}
-
-// The distinct points in lexicographic order (their ranks are their vertex ids), the input
-// index of each, and the copies dropped.
-struct Distinct {
-  std::vector<Point3> points;
-  std::vector<VertexId> input;
-  std::vector<Duplicate> duplicates;
-};
-
-Distinct distinct_points(std::span<const Point3> points, unsigned threads) {
-  if (points.size() >= kMaxSlotPoints) throw InputError("triangulate_sphere: too many points");
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
-      throw InputError("triangulate_sphere: point " + std::to_string(i) + " is not finite");
-  // The points sorted with their indices beside them (each comparison reads what it sorts).
-  struct Indexed {
-    Point3 p;
-    VertexId i;
-  };
-  std::vector<Indexed> sorted(points.size());
-  parallel_for(points.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) sorted[i] = {points[i], static_cast<VertexId>(i)};
-  });
-  parallel_sort(sorted.begin(), sorted.end(), threads,
-                [](const Indexed& a, const Indexed& b) { return lex_less3(a.p, b.p) || (a.p == b.p && a.i < b.i); });
-  Distinct d;
-  d.points.reserve(points.size()), d.input.reserve(points.size());
-  for (const Indexed& e : sorted) {
-    if (!d.input.empty() && d.points.back() == e.p) {
-      d.duplicates.push_back({e.i, d.input.back()});
-      continue;
-    }
-    d.input.push_back(e.i);
-    d.points.push_back(e.p);
-  }
-  std::sort(d.duplicates.begin(), d.duplicates.end(),
-            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
-  return d;
-}
-
 // A round of insertions is shared among the threads where it has at least kMinCutRound points
 // and each thread gets at least kMinPart; a smaller one meets a hull so small that most of its
 // points would be put off.
 constexpr VertexId kMinCutRound = 4096, kMinPart = 256;
+// The key that sorts free slots after every triangle (a curve's key is below 6 * 2^29).
+constexpr std::uint32_t kFreeSlot = ~std::uint32_t{0};
 // A thread tries this many of its first points for a triangle to start from.
 constexpr VertexId kStartTries = 64;
 
@@ -121,8 +83,8 @@ class Builder {
   /// Per vertex id: its rank (the points' lexicographic order), whether it is hidden.
   const std::vector<VertexId>& rank() const { return rank_; }
   const std::vector<std::uint8_t>& hidden() const { return hidden_; }
-  /// Each point's place along the curve insertion_order sorts by.
-  const std::vector<std::uint64_t>& curve() const { return curve_; }
+  /// Per vertex id: its place along the curve insertion_order sorts by.
+  const std::vector<std::uint32_t>& key() const { return key_; }
 
  private:
   // Four points far from coplanar (fat_tetrahedron), and the inner point inside them.
@@ -186,25 +148,32 @@ class Builder {
         if (std::fabs(d[k]) > std::fabs(d[axis])) axis = k;
       const double scale = d[axis] != 0 ? 32767.5 / std::fabs(d[axis]) : 0;
       auto cell = [&](double x) { return static_cast<std::uint32_t>(std::clamp(x * scale + 32767.5, 0.0, 65535.0)); };
-      const std::uint64_t face = 2 * static_cast<std::uint64_t>(axis) + (d[axis] < 0);
-      return face << 32 | hilbert_key(cell(d[(axis + 1) % 3]), cell(d[(axis + 2) % 3]));
+      // The face in the top three bits, the curve's place on it in 29 (cells 2^-14.5 of the
+      // face wide): 32 bits, below 6 * 2^29.
+      const std::uint32_t face = 2 * static_cast<std::uint32_t>(axis) + (d[axis] < 0);
+      return face << 29 | hilbert_key(cell(d[(axis + 1) % 3]), cell(d[(axis + 2) % 3])) >> 3;
     };
     curve_.resize(p_.size());
     parallel_for(p_.size(), threads_, 65536, [&](std::size_t from, std::size_t to) {
       for (std::size_t v = from; v < to; ++v) curve_[v] = key(static_cast<VertexId>(v));
     });
-    std::vector<std::pair<std::uint64_t, VertexId>> keyed(order.size());
-    for (std::size_t i = 0; i < order.size(); ++i) keyed[i] = {curve_[order[i]], order[i]};
-    std::size_t end = keyed.size();
-    rounds_.assign(1, static_cast<VertexId>(end));
+    // Each round sorted by key, stably (a radix sort): ties in the random order.
+    const auto m = static_cast<std::uint32_t>(order.size());
+    std::vector<std::uint64_t> words(m), sorted(m);
+    parallel_for(m, threads_, 65536, [&](std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) words[i] = std::uint64_t{curve_[order[i]]} << 32 | order[i];
+    });
+    std::uint32_t end = m;
+    rounds_.assign(1, end);
     while (end > 0) {
-      const std::size_t begin = end > 64 ? end / 2 : 0;
-      parallel_sort(keyed.begin() + static_cast<std::ptrdiff_t>(begin),
-                    keyed.begin() + static_cast<std::ptrdiff_t>(end), threads_, std::less<>());
-      rounds_.push_back(static_cast<VertexId>(end = begin));
+      const std::uint32_t begin = end > 64 ? end / 2 : 0;
+      sort_by_key(words.data() + begin, sorted.data() + begin, end - begin, threads_);
+      rounds_.push_back(end = begin);
     }
     std::reverse(rounds_.begin(), rounds_.end());
-    for (std::size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
+    parallel_for(m, threads_, 65536, [&](std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) order[i] = static_cast<VertexId>(sorted[i]);
+    });
     return order;
   }
 
@@ -296,7 +265,7 @@ class Builder {
     std::vector<VertexId> put_off;
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
     bool holds(VertexId v) const { return key_of(v) >= from && key_of(v) < to; }
-    const std::vector<std::uint64_t>* key = nullptr;
+    const std::vector<std::uint32_t>* key = nullptr;
     std::uint64_t key_of(VertexId v) const { return (*key)[v]; }
   };
 
@@ -338,7 +307,7 @@ class Builder {
   // The part's starts, with the hull at rest.
   void find_starts(Part& p) {
     for (VertexId v = p.a; v < p.b; ++v) {
-      if (v > p.a && key_[v] >> 32 == key_[v - 1] >> 32) continue;
+      if (v > p.a && key_[v] >> 29 == key_[v - 1] >> 29) continue;
       TriangleId start = kNoTriangle;
       for (VertexId u = v; u < p.b && u < v + kStartTries && start == kNoTriangle; ++u)
         if (const TriangleId t = locate(u); has_corner_in(t, p)) start = t;
@@ -404,8 +373,8 @@ class Builder {
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
-  std::vector<std::uint64_t> curve_;
-  std::vector<std::uint64_t> key_;  // by vertex id: curve_ of its rank
+  std::vector<std::uint32_t> curve_;
+  std::vector<std::uint32_t> key_;  // by vertex id: curve_ of its rank
   std::vector<VertexId> rounds_;  // the insertion order's rounds: [rounds_[r], rounds_[r + 1])
   std::vector<CavityScratch> scratches_;  // a thread's each
   std::size_t walk_limit_ = 0;
@@ -422,26 +391,45 @@ int least_corner(const Tds& tds, TriangleId t) {
 // the order of their corners' vertex ids, each from its least: their slots depend on which
 // thread inserted which point, the ids do not, so that the output is the same on any number of
 // threads.
-void in_own_order(const Tds& tds, std::vector<std::pair<std::uint64_t, TriangleId>>& live, unsigned threads) {
+void in_own_order(const Tds& tds, std::vector<std::uint64_t>& live, unsigned threads) {
   auto corners = [&](TriangleId t) {
     const int c = least_corner(tds, t);
     return std::array<VertexId, 3>{tds.vertex(t, c), tds.vertex(t, next3(c)), tds.vertex(t, prev3(c))};
   };
-  const std::size_t n = live.size();
-  auto within = [&](std::size_t k) { return k > 0 && k < n && live[k].first == live[k - 1].first; };
-  // Parts that start where a key does, cut before any thread writes.
-  const unsigned parts = std::max(1u, std::min(threads, static_cast<unsigned>(n / 65536)));
-  std::vector<std::size_t> cut(parts + 1, n);
-  for (unsigned p = 0; p < parts; ++p)
-    for (cut[p] = std::max(n * p / parts, p > 0 ? cut[p - 1] : 0); within(cut[p]);) ++cut[p];
-  parallel_for(parts, parts, 1, [&](std::size_t first, std::size_t last) {
-    for (std::size_t k = cut[first], end; k < cut[last]; k = end) {
-      for (end = k + 1; end < cut[last] && within(end);) ++end;
-      if (end - k > 1)
-        std::sort(live.begin() + static_cast<std::ptrdiff_t>(k), live.begin() + static_cast<std::ptrdiff_t>(end),
-                  [&](const auto& x, const auto& y) { return corners(x.second) < corners(y.second); });
+  sort_runs(live, threads, [&](TriangleId x, TriangleId y) { return corners(x) < corners(y); });
+}
+
+// The output: the triangles in the order of `live`, each from its least corner, with their
+// neighbours, as input indices; the hidden points and the copies.
+SphericalTriangulation written(const Tds& tds, const std::vector<std::uint64_t>& live, const Builder& builder,
+                               Distinct& d, unsigned threads) {
+  const std::vector<VertexId>& rank = builder.rank();
+  std::vector<VertexId> input(rank.size());  // by vertex id
+  std::vector<std::int32_t> id(tds.slots(), -1);  // by slot: its place in the output
+  parallel_for(rank.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t v = from; v < to; ++v) input[v] = d.input[rank[v]];
+  });
+  parallel_for(live.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) id[static_cast<TriangleId>(live[k])] = static_cast<std::int32_t>(k);
+  });
+  SphericalTriangulation out;
+  resize_present(out.triangles, 3 * live.size(), threads);
+  resize_present(out.neighbors, 3 * live.size(), threads);
+  parallel_for(live.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      const auto t = static_cast<TriangleId>(live[k]);
+      const int first = least_corner(tds, t);
+      for (int i = 0, c = first; i < 3; ++i, c = next3(c)) {
+        out.triangles[3 * k + i] = input[tds.vertex(t, c)];
+        out.neighbors[3 * k + i] = id[triangle_of(tds.link(t, c))];
+      }
     }
   });
+  for (VertexId v = 0; v < rank.size(); ++v)
+    if (builder.hidden()[v]) out.hidden.push_back(input[v]);
+  std::sort(out.hidden.begin(), out.hidden.end());
+  out.duplicates = std::move(d.duplicates);
+  return out;
 }
 
 }  // namespace
@@ -455,37 +443,22 @@ SphericalTriangulation triangulate_sphere(std::span<const Point3> points, unsign
   builder.run();
   const Tds& tds = builder.tds();
   // The triangles in the curve's order of their least corner: a point's triangles then lie close
-  // together in the arrays, and a walk round each (its Voronoi cell) stays in the cache.
-  std::vector<std::pair<std::uint64_t, TriangleId>> live;
-  live.reserve(tds.slots());
-  const std::vector<std::uint64_t>& key = builder.curve();
-  const std::vector<VertexId>& rank = builder.rank();
-  for (TriangleId t = 0; t < tds.slots(); ++t)
-    if (tds.vertex(t, 0) != kNoVertex)
-      live.push_back(
-          {std::min({key[rank[tds.vertex(t, 0)]], key[rank[tds.vertex(t, 1)]], key[rank[tds.vertex(t, 2)]]}), t});
-  parallel_sort(live.begin(), live.end(), threads, std::less<>());
-  in_own_order(tds, live, threads);
-  SphericalTriangulation out;
-  std::vector<std::int32_t> id(tds.slots(), -1);
-  for (std::size_t k = 0; k < live.size(); ++k) id[live[k].second] = static_cast<std::int32_t>(k);
-  resize_present(out.triangles, 3 * live.size(), threads);
-  resize_present(out.neighbors, 3 * live.size(), threads);
-  parallel_for(live.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) {
-      const TriangleId t = live[k].second;
-      const int first = least_corner(tds, t);
-      for (int i = 0, c = first; i < 3; ++i, c = next3(c)) {
-        out.triangles[3 * k + i] = d.input[rank[tds.vertex(t, c)]];
-        out.neighbors[3 * k + i] = id[triangle_of(tds.link(t, c))];
-      }
+  // together in the arrays, and a walk round each (its Voronoi cell) stays in the cache. (Free
+  // slots sort last, and are cut off.)
+  const std::vector<std::uint32_t>& key = builder.key();
+  const TriangleId slots = tds.slots();
+  std::vector<std::uint64_t> words(slots), live(slots);  // (key << 32 | slot), then sorted
+  parallel_for(slots, threads, 65536, [&](std::size_t from, std::size_t to) {
+    for (std::size_t t = from; t < to; ++t) {
+      const VertexId* c = tds.corners(static_cast<TriangleId>(t));
+      const std::uint32_t least = c[0] == kNoVertex ? kFreeSlot : std::min({key[c[0]], key[c[1]], key[c[2]]});
+      words[t] = std::uint64_t{least} << 32 | t;
     }
   });
-  for (VertexId v = 0; v < d.points.size(); ++v)
-    if (builder.hidden()[v]) out.hidden.push_back(d.input[rank[v]]);
-  std::sort(out.hidden.begin(), out.hidden.end());
-  out.duplicates = std::move(d.duplicates);
-  return out;
+  sort_by_key(words.data(), live.data(), slots, threads);
+  live.erase(std::lower_bound(live.begin(), live.end(), std::uint64_t{kFreeSlot} << 32), live.end());
+  in_own_order(tds, live, threads);
+  return written(tds, live, builder, d, threads);
 }
 
 }  // namespace ridt

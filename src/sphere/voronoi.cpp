@@ -19,6 +19,9 @@ using detail::sphere::solid_angle;
 using detail::sphere::unit;
 using detail::sphere::unit_normal;
 
+// How many corners ahead the cells' loop asks for a point's arrays.
+constexpr std::size_t kAhead = 32;
+
 // A triangle's circle on the sphere is centred where its outward normal points (unit_normal:
 // within a bound however thin the triangle). `normals` (where not empty) gets the unit normals.
 void circle_centres(const SphericalTriangulation& t, std::span<const Point3> points, const Point3& centre,
@@ -62,6 +65,17 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
   // The points in the triangles' order (where they lie close together), not the input's.
   detail::parallel_for(3 * m, threads, 4096, [&](std::size_t from, std::size_t to) {
     for (std::size_t corner = from; corner < to; ++corner) {
+      // The points come in the triangles' order, their arrays in the input's: what a corner
+      // ahead will read, asked for now, arrives while this one's cell is walked.
+      if (corner + kAhead < to) {
+        const VertexId h = t.triangles[corner + kAhead];
+        __builtin_prefetch(&one[h]), __builtin_prefetch(&out.region_start[h]);
+        if (areas) __builtin_prefetch(&points[h]), __builtin_prefetch(&out.areas[h], 1);
+      }
+      if (corner + kAhead / 2 < to) {  // then where the cell goes, its start arrived by now
+        const VertexId h = t.triangles[corner + kAhead / 2];
+        if (one[h] == corner + kAhead / 2) __builtin_prefetch(out.regions.data() + out.region_start[h], 1);
+      }
       const VertexId g = t.triangles[corner];
       if (one[g] != corner) continue;
       std::uint32_t* cell = out.regions.data() + out.region_start[g];

@@ -213,6 +213,22 @@ TEST(Sphere, SameOutputOnAnyNumberOfThreads) {
   }
 }
 
+// Copies found whatever the signs of zeros and however close the points: -0 and 0 are one
+// coordinate, and points whose x differ in the last bits only are told apart.
+TEST(Sphere, CopiesOfZeroAndNeighboursInTheLastBits) {
+  std::vector<Point3> pts = {{0.0, 0.0, 1}, {-0.0, 0.0, 1}, {0.0, -0.0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                             {0, -1, 0},    {0, 0, -1},     {-0.0, 0, -1}};
+  const double x = std::nextafter(0.6, 1.0), y = std::sqrt(1 - x * x);
+  pts.push_back({0.6, 0.8, 0});
+  pts.push_back({x, y, 0});
+  pts.push_back({x, y, 0});
+  const SphericalTriangulation t = expect_valid(pts);
+  ASSERT_EQ(t.duplicates.size(), 4u);
+  const std::pair<VertexId, VertexId> want[4] = {{1, 0}, {2, 0}, {8, 7}, {11, 10}};
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ(std::make_pair(t.duplicates[i].dropped, t.duplicates[i].kept), want[i]) << i;
+}
+
 TEST(Sphere, BadInputIsRefused) {
   EXPECT_THROW(triangulate_sphere(std::vector<Point3>{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}}), InputError);
   EXPECT_THROW(triangulate_sphere(std::vector<Point3>{{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {1, 0, 0}}), InputError);
