@@ -46,7 +46,8 @@ struct SphericalVoronoi {
   std::vector<std::uint32_t> region_start;  ///< #points + 1: cell i is regions[start[i], start[i + 1])
   std::vector<std::uint32_t> regions;
   /// With `areas`: each cell's area, from the solid angles of the triangles it fans into (Van
-  /// Oosterom and Strackee's formula, with the triple product taken of differences). Where all
+  /// Oosterom and Strackee's formula, with the triple product taken of differences; summed as
+  /// the argument of a product of complex numbers, one arc tangent a cell). Where all
   /// the points lie on one great circle (within rounding) the cells are lunes whose corners are
   /// antipodal, and their areas are not computed reliably (Python's SphericalVoronoi refuses
   /// such points, as scipy's does).
@@ -55,6 +56,12 @@ struct SphericalVoronoi {
 
 SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<const Point3> points,
                                    const Point3& centre, double radius, bool areas = true, unsigned threads = 0);
+
+/// The length of the shortest edge of `t`: the distance between the closest two of the points
+/// it joins (the closest pair of distinct points of a sphere is a Delaunay edge); HUGE_VAL
+/// where there is none. Correctly rounded squares where they neither underflow nor overflow,
+/// else the lengths themselves (std::hypot).
+double shortest_edge(const SphericalTriangulation& t, std::span<const Point3> points, unsigned threads = 0);
 
 /// Linear interpolation on the sphere: each query's direction from `centre` is located in the
 /// triangle whose cone from the centre holds it (a walk from the last query's), and its value

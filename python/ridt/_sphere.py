@@ -70,7 +70,7 @@ class SphericalVoronoi:
         if radius is None:
             raise ValueError("`radius` is `None`. Please provide a floating point number (i.e. `radius=1`).")
         self.radius = float(radius)
-        self.points = np.array(points).astype(np.double)
+        self.points = np.array(points, dtype=np.double)
         if self.points.ndim != 2:
             raise ValueError("points must have shape (npoints, ndim)")
         self._dim = self.points.shape[1]
@@ -129,17 +129,16 @@ class SphericalVoronoi:
 
     def _on_sphere(self, threshold: float) -> None:
         try:
-            tris, nbrs, duplicates, hidden = _core.triangulate_sphere(self.points, self._threads)
+            tris, nbrs, duplicates, hidden, shortest, vertices, self._start, self._flat, areas = \
+                _core.spherical_voronoi_of(self.points, self.center.reshape(1, 3), self.radius, self._threads)
         except _core.InputError as e:  # coplanar beyond the rank test's tolerance
             raise ValueError(f"Rank of input points must be at least 3 ({e})") from None
-        self._too_close(_core.shortest_edge(self.points, tris), threshold, duplicates)
+        self._too_close(shortest, threshold, duplicates)
         self.hidden = hidden.astype(np.intp)
         self._hidden_apart(threshold)
-        vertices, self._start, self._flat, areas = _core.spherical_voronoi(
-            self.points, tris, nbrs, self.center.reshape(1, 3), self.radius, True, self._threads)
         self.vertices = vertices
         self._areas = areas
-        self.triangles = tris.astype(np.int32)
+        self.triangles = tris.view(np.int32)  # (fewer than 2^31 points)
         self.neighbors = nbrs
 
     def _on_circle(self, threshold: float) -> None:

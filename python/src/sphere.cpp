@@ -37,6 +37,16 @@ ridt::SphericalTriangulation as_triangulation(std::size_t points, const Indices&
   return t;
 }
 
+// (triangles, neighbors, duplicates, hidden), the arrays adopted.
+py::tuple as_tuple(ridt::SphericalTriangulation&& t) {
+  const auto size = static_cast<py::ssize_t>(t.size());
+  std::vector<std::uint32_t> copies;
+  for (const ridt::Duplicate& d : t.duplicates) copies.insert(copies.end(), {d.dropped, d.kept});
+  const auto dups = static_cast<py::ssize_t>(t.duplicates.size()), hidden = static_cast<py::ssize_t>(t.hidden.size());
+  return py::make_tuple(adopt(std::move(t.triangles), {size, 3}), adopt(std::move(t.neighbors), {size, 3}),
+                        adopt(std::move(copies), {dups, 2}), adopt(std::move(t.hidden), {hidden}));
+}
+
 py::tuple triangulate(const Points& points, unsigned threads) {
   const auto pts = as_points3(points, "points");
   ridt::SphericalTriangulation t;
@@ -44,12 +54,7 @@ py::tuple triangulate(const Points& points, unsigned threads) {
     py::gil_scoped_release nogil;
     t = ridt::triangulate_sphere(pts, threads);
   }
-  const auto size = static_cast<py::ssize_t>(t.size());
-  std::vector<std::uint32_t> copies;
-  for (const ridt::Duplicate& d : t.duplicates) copies.insert(copies.end(), {d.dropped, d.kept});
-  const auto dups = static_cast<py::ssize_t>(t.duplicates.size()), hidden = static_cast<py::ssize_t>(t.hidden.size());
-  return py::make_tuple(adopt(std::move(t.triangles), {size, 3}), adopt(std::move(t.neighbors), {size, 3}),
-                        adopt(std::move(copies), {dups, 2}), adopt(std::move(t.hidden), {hidden}));
+  return as_tuple(std::move(t));
 }
 
 py::tuple voronoi(const Points& points, const Indices& triangles, const Links& neighbors, const Points& center,
@@ -70,31 +75,39 @@ py::tuple voronoi(const Points& points, const Indices& triangles, const Links& n
                         adopt(std::move(v.areas), {na}));
 }
 
-double shortest_edge(const Points& points, const Indices& triangles) {
+double shortest_edge(const Points& points, const Indices& triangles, unsigned threads) {
   const auto pts = as_points3(points, "points");
-  const std::uint32_t* t = triangles.data();
-  const auto size = static_cast<std::size_t>(triangles.size());
-  for (std::size_t k = 0; k < size; ++k)
-    if (t[k] >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
-  double shortest = HUGE_VAL;  // squared
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3)
+    throw py::value_error("triangles must have shape (ntriangles, 3)");
+  ridt::SphericalTriangulation t;
+  t.triangles.assign(triangles.data(), triangles.data() + triangles.size());
+  for (const ridt::VertexId v : t.triangles)
+    if (v >= pts.size()) throw py::value_error("a triangle's corner is not a point's index");
   py::gil_scoped_release nogil;
-  for (std::size_t k = 0; k + 2 < size; k += 3)
-    for (int i = 0; i < 3; ++i) {
-      const ridt::Point3 &a = pts[t[k + i]], &b = pts[t[k + (i + 1) % 3]];
-      const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
-      shortest = std::min(shortest, dx * dx + dy * dy + dz * dz);
-    }
-  // A square that underflows or overflows: the length itself, where it matters.
-  if (shortest < 0x1p-1000 || shortest > 0x1p1000) {
-    shortest = HUGE_VAL;
-    for (std::size_t k = 0; k + 2 < size; k += 3)
-      for (int i = 0; i < 3; ++i) {
-        const ridt::Point3 &a = pts[t[k + i]], &b = pts[t[k + (i + 1) % 3]];
-        shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y, a.z - b.z));
-      }
-    return shortest;
+  return ridt::shortest_edge(t, pts, threads);
+}
+
+// triangulate(), shortest_edge() and voronoi() at once: the triangulation goes to the cells as
+// it is, not through Python and back.
+py::tuple voronoi_of(const Points& points, const Points& center, double radius, unsigned threads) {
+  const auto pts = as_points3(points, "points");
+  const auto c = as_points3(center, "center");
+  if (c.size() != 1) throw py::value_error("center must have shape (1, 3)");
+  ridt::SphericalTriangulation t;
+  ridt::SphericalVoronoi v;
+  double shortest = 0;
+  {
+    py::gil_scoped_release nogil;
+    t = ridt::triangulate_sphere(pts, threads);
+    shortest = ridt::shortest_edge(t, pts, threads);
+    v = ridt::spherical_voronoi(t, pts, c[0], radius, true, threads);
   }
-  return std::sqrt(shortest);
+  const py::tuple hull = as_tuple(std::move(t));
+  const auto nv = static_cast<py::ssize_t>(v.vertices.size()), n = static_cast<py::ssize_t>(pts.size()),
+             nr = static_cast<py::ssize_t>(v.regions.size()), na = static_cast<py::ssize_t>(v.areas.size());
+  return py::make_tuple(
+      hull[0], hull[1], hull[2], hull[3], shortest, adopt<ridt::Point3, double>(std::move(v.vertices), {nv, 3}),
+      adopt(std::move(v.region_start), {n + 1}), adopt(std::move(v.regions), {nr}), adopt(std::move(v.areas), {na}));
 }
 
 py::tuple check(const Points& points, const Indices& triangles) {
@@ -142,7 +155,11 @@ void bind_sphere(py::module_& m) {
   m.def("spherical_voronoi", &voronoi, py::arg("points"), py::arg("triangles"), py::arg("neighbors"), py::arg("center"),
         py::arg("radius"), py::arg("areas") = true, py::arg("threads") = 0,
         "(vertices, region_start, regions, areas): the Voronoi diagram on the sphere of a triangulate_sphere result");
-  m.def("shortest_edge", &shortest_edge, py::arg("points"), py::arg("triangles"),
+  m.def("shortest_edge", &shortest_edge, py::arg("points"), py::arg("triangles"), py::arg("threads") = 0,
         "the length of the triangles' shortest edge");
+  m.def("spherical_voronoi_of", &voronoi_of, py::arg("points"), py::arg("center"), py::arg("radius"),
+        py::arg("threads") = 0,
+        "(triangles, neighbors, duplicates, hidden, shortest edge, vertices, region_start, regions, areas): "
+        "triangulate_sphere, shortest_edge and spherical_voronoi at once");
   m.def("check_sphere", &check, py::arg("points"), py::arg("triangles"));
 }

@@ -14,6 +14,8 @@
 namespace ridt {
 namespace {
 
+using detail::sphere::cross;
+using detail::sphere::dot;
 using detail::sphere::minus;
 using detail::sphere::solid_angle;
 using detail::sphere::unit;
@@ -35,6 +37,31 @@ void circle_centres(const SphericalTriangulation& t, std::span<const Point3> poi
       if (!normals.empty()) normals[f] = normal;
     }
   });
+}
+
+// The solid angle of the cell of unit vector p whose corners are normals[cell[0 .. size)],
+// counter-clockwise: the sum of the fan's solid angles 2 atan2(t_k, b_k) (solid_angle), taken
+// as twice the argument of the product of the complex numbers b_k + i t_k, one atan2 a cell
+// in place of one a corner. Round a point of the sphere the t_k are positive, so the product's
+// parts add terms of one sign and keep a relative error of some `size` roundings. Where the
+// product turns past a quarter (a cell over half the sphere, or a fan triangle facing back)
+// the angles are summed one by one. A power of two keeps the product's size in range.
+double cell_area(const Point3& p, const std::vector<Point3>& normals, const std::uint32_t* cell, std::size_t size) {
+  double re = 1, im = 0;
+  for (std::size_t k = 0; k < size; ++k) {
+    const Point3 &b = normals[cell[k]], &c = normals[cell[k + 1 < size ? k + 1 : 0]];
+    const double t = dot(p, cross(minus(b, p), minus(c, p))), u = 1 + dot(p, b) + dot(b, c) + dot(c, p);
+    const double r = re * u - im * t;
+    im = re * t + im * u, re = r;
+    if (!(re > 0)) {
+      double sum = 0;
+      for (std::size_t j = 0; j < size; ++j)
+        sum += solid_angle(p, normals[cell[j]], normals[cell[j + 1 < size ? j + 1 : 0]]);
+      return sum;
+    }
+    if (re > 0x1p500) re = std::ldexp(re, -500), im = std::ldexp(im, -500);
+  }
+  return 2 * std::atan2(im, re);
 }
 
 }  // namespace
@@ -89,15 +116,34 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
         i = t.triangles[3 * std::size_t{f}] == g ? 0 : t.triangles[3 * std::size_t{f} + 1] == g ? 1 : 2;
       }
       if (!areas) continue;
-      const Point3 p = unit(minus(points[g], centre));
-      double sum = 0;
-      for (std::size_t k = 0; k < size; ++k) {
-        sum += solid_angle(p, normals[cell[k]], normals[cell[k + 1 < size ? k + 1 : 0]]);
-      }
-      out.areas[g] = sum * radius * radius;
+      out.areas[g] = cell_area(unit(minus(points[g], centre)), normals, cell, size) * radius * radius;
     }
   });
   return out;
+}
+
+double shortest_edge(const SphericalTriangulation& t, std::span<const Point3> points, unsigned threads) {
+  threads = detail::thread_count(threads);
+  const std::size_t m = t.size();
+  // Each part's least, by the edges' squares, then by their lengths where a square is lost.
+  auto least = [&](auto length) {
+    const unsigned parts = static_cast<unsigned>(std::clamp<std::size_t>(m / 65536, 1, threads));
+    std::vector<double> part(parts, HUGE_VAL);
+    detail::parallel_for(parts, parts, 1, [&](std::size_t first, std::size_t last) {
+      for (std::size_t p = first; p < last; ++p)
+        for (std::size_t f = m * p / parts; f < m * (p + 1) / parts; ++f)
+          for (int i = 0; i < 3; ++i)
+            part[p] =
+                std::min(part[p], length(points[t.triangles[3 * f + i]], points[t.triangles[3 * f + (i + 1) % 3]]));
+    });
+    return *std::min_element(part.begin(), part.end());
+  };
+  const double square = least([](const Point3& a, const Point3& b) {
+    const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+    return dx * dx + dy * dy + dz * dz;
+  });
+  if (m == 0 || (square >= 0x1p-1000 && square <= 0x1p1000)) return std::sqrt(square);
+  return least([](const Point3& a, const Point3& b) { return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z); });
 }
 
 }  // namespace ridt

@@ -216,8 +216,8 @@ TEST(Sphere, SameOutputOnAnyNumberOfThreads) {
 // Copies found whatever the signs of zeros and however close the points: -0 and 0 are one
 // coordinate, and points whose x differ in the last bits only are told apart.
 TEST(Sphere, CopiesOfZeroAndNeighboursInTheLastBits) {
-  std::vector<Point3> pts = {{0.0, 0.0, 1}, {-0.0, 0.0, 1}, {0.0, -0.0, 1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                             {0, -1, 0},    {0, 0, -1},     {-0.0, 0, -1}};
+  std::vector<Point3> pts = {{0.0, 0.0, 1}, {-0.0, 0.0, 1}, {0.0, -0.0, 1}, {1, 0, 0},    {-1, 0, 0},
+                             {0, 1, 0},     {0, -1, 0},     {0, 0, -1},     {-0.0, 0, -1}};
   const double x = std::nextafter(0.6, 1.0), y = std::sqrt(1 - x * x);
   pts.push_back({0.6, 0.8, 0});
   pts.push_back({x, y, 0});
@@ -225,8 +225,22 @@ TEST(Sphere, CopiesOfZeroAndNeighboursInTheLastBits) {
   const SphericalTriangulation t = expect_valid(pts);
   ASSERT_EQ(t.duplicates.size(), 4u);
   const std::pair<VertexId, VertexId> want[4] = {{1, 0}, {2, 0}, {8, 7}, {11, 10}};
-  for (int i = 0; i < 4; ++i)
-    EXPECT_EQ(std::make_pair(t.duplicates[i].dropped, t.duplicates[i].kept), want[i]) << i;
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(std::make_pair(t.duplicates[i].dropped, t.duplicates[i].kept), want[i]) << i;
+}
+
+// The shortest edge is the closest pair (brute force), at scales whose squares underflow or
+// overflow too, on 1 and 2 threads.
+TEST(Sphere, ShortestEdgeIsTheClosestPair) {
+  for (const double radius : {1.0, 1e-300, 1e300}) {
+    const std::vector<Point3> pts = on_sphere(3000, 14, radius, {radius, 0, 0});
+    double closest = HUGE_VAL;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        closest = std::min(closest, std::hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y, pts[i].z - pts[j].z));
+    const SphericalTriangulation t = triangulate_sphere(pts);
+    for (const unsigned threads : {1u, 2u})
+      EXPECT_NEAR(shortest_edge(t, pts, threads), closest, 1e-15 * closest) << radius;
+  }
 }
 
 TEST(Sphere, BadInputIsRefused) {
