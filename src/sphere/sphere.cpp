@@ -253,7 +253,7 @@ class Builder {
   //     only it reads.
   // (methods/partition.hpp shares the plane's rounds the same way.) The hull is unique, so the
   // triangles are the same whichever thread inserted which point.
-  struct Part {
+  struct alignas(64) Part {  // (a line of its own: its thread writes it at each point)
     VertexId a = 0, b = 0;  // its points
     std::uint64_t from = 0, to = 0;  // its region: the keys in [from, to)
     // Where its walks start: at the first point of each face of the cube (the curve jumps
