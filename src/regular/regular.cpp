@@ -30,6 +30,7 @@
 #include "order/random.hpp"
 #include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
+#include "regular/settle.hpp"
 #include "ridt/regular.hpp"
 #include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
@@ -246,82 +247,6 @@ class Builder {
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
 };
-
-// The hull, counter-clockwise from its lexicographically least vertex: each wall (p, q, inf)
-// runs p -> q, so the hull runs q -> p.
-std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const Point> points,
-                              const std::vector<VertexId>& input) {
-  std::vector<std::pair<VertexId, VertexId>> next;  // (q, p)
-  for (TriangleId t = 0; t < tds.slots(); ++t)
-    for (int k = 0; k < 3; ++k)
-      if (tds.vertex(t, k) == infinite) next.emplace_back(tds.vertex(t, prev3(k)), tds.vertex(t, next3(k)));
-  std::sort(next.begin(), next.end());
-  VertexId from = next[0].first;
-  for (const auto& e : next)
-    if (lex_less(points[input[e.first]], points[input[from]])) from = e.first;
-  std::vector<VertexId> hull;
-  for (VertexId v = from; hull.size() < next.size();) {
-    hull.push_back(input[v]);
-    v = std::lower_bound(next.begin(), next.end(), std::make_pair(v, VertexId{0}))->second;
-    if (v == from) break;
-  }
-  return hull;
-}
-
-// Copies found at insertion (a point at a vertex's place with its weight) and hidden points
-// that are copies of each other (a copy of a point hidden before it came): each group of equal
-// weighted points among them, found by a hash of their values and then compared, keeps its
-// least input index, the vertex's (relabelled) or a hidden point's; the others are duplicates.
-struct Settled {
-  std::vector<Duplicate> duplicates;
-  std::vector<VertexId> hidden;
-};
-
-Settled settle(std::span<const Point> points, std::span<const double> weights,
-               const std::vector<std::pair<VertexId, VertexId>>& copies, const std::vector<std::uint8_t>& is_hidden,
-               std::vector<VertexId>& input, unsigned threads) {
-  auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x); };
-  auto hash = [&](VertexId i) { return mix64(bits(points[i].x) ^ mix64(bits(points[i].y) ^ mix64(bits(weights[i])))); };
-  std::vector<std::pair<std::uint64_t, VertexId>> keyed;
-  std::vector<std::uint8_t> hidden(points.size(), 0);  // by input index: the list comes out sorted
-  std::size_t count = 0;
-  for (VertexId v = 0; v < is_hidden.size(); ++v) count += is_hidden[v];
-  keyed.reserve(2 * copies.size() + count);
-  for (const auto& [c, w] : copies)
-    keyed.emplace_back(hash(input[c]), input[c]), keyed.emplace_back(hash(input[w]), input[w]);
-  for (VertexId v = 0; v < is_hidden.size(); ++v)
-    if (is_hidden[v]) keyed.emplace_back(hash(input[v]), input[v]), hidden[input[v]] = 1;
-  Settled out;
-  parallel_sort(keyed.begin(), keyed.end(), threads, std::less<>());
-  keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
-  std::vector<std::pair<VertexId, VertexId>> least;  // (index, its group's least), where they differ
-  auto same = [&](VertexId a, VertexId b) { return points[a] == points[b] && weights[a] == weights[b]; };
-  for (std::size_t k = 0, g = 0; k < keyed.size(); k = g) {
-    for (g = k; g < keyed.size() && keyed[g].first == keyed[k].first;) ++g;
-    for (std::size_t a = k; a < g; ++a) {  // (a run is a group but for a collision of the hash)
-      VertexId low = keyed[a].second;
-      for (std::size_t b = k; b < g; ++b)
-        if (same(keyed[a].second, keyed[b].second)) low = std::min(low, keyed[b].second);
-      if (low != keyed[a].second)
-        least.emplace_back(keyed[a].second, low), out.duplicates.push_back({keyed[a].second, low});
-    }
-  }
-  std::sort(least.begin(), least.end());
-  auto dropped = [&](VertexId i) {
-    const auto it = std::lower_bound(least.begin(), least.end(), std::make_pair(i, VertexId{0}));
-    return it != least.end() && it->first == i ? it->second : i;
-  };
-  for (const auto& [c, w] : copies) input[w] = dropped(input[w]);
-  // A group with a hidden member is hidden (a vertex hidden after its copies came), as its least.
-  for (const auto& [i, low] : least)
-    if (hidden[i]) hidden[i] = 0, hidden[low] = 1;
-  out.hidden.reserve(count);
-  for (VertexId i = 0; i < hidden.size(); ++i)
-    if (hidden[i]) out.hidden.push_back(i);
-  std::sort(out.duplicates.begin(), out.duplicates.end(),
-            [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
-  return out;
-}
 
 }  // namespace
 }  // namespace detail
