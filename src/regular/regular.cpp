@@ -28,6 +28,7 @@
 
 #include "order/order.hpp"
 #include "order/random.hpp"
+#include "order/runs.hpp"
 #include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
 #include "regular/settle.hpp"
@@ -55,6 +56,13 @@ void check_input(std::span<const Point> points, std::span<const double> weights)
   }
 }
 
+// A round of insertions is shared among the threads where it has at least kMinCutRound points
+// and each thread gets at least kMinPart (as the sphere's, sphere/sphere.cpp); a thread tries
+// this many of its first points for a face to start from.
+constexpr VertexId kMinCutRound = 4096, kMinPart = 256, kStartTries = 64;
+// A thread's walks may start anew at a face found before the round every this many points.
+constexpr VertexId kEvery = 256;
+
 class Builder {
  public:
   Builder(std::span<const Point> points, std::span<const double> weights, unsigned threads)
@@ -70,18 +78,35 @@ class Builder {
   void run() {
     const std::array<VertexId, 3> first = first_triangle();
     // A biased randomized insertion order along the Hilbert curve (brio_order, the kernel's).
-    const std::vector<std::uint32_t> order = brio_order(points_.data(), n_, 0x5eed, threads_);
+    std::vector<std::uint32_t> keys;  // along each round, never decreasing
+    const std::vector<std::uint32_t> order = brio_order(points_.data(), n_, 0x5eed, threads_, &keys);
     input_.assign(first.begin(), first.end());
     input_.reserve(n_);
-    for (const std::uint32_t i : order)
-      if (i != first[0] && i != first[1] && i != first[2]) input_.push_back(i);
+    key_.assign(3, 0);
+    key_.reserve(n_);
+    for (VertexId k = 0; k < n_; ++k) {
+      const auto f = std::find(first.begin(), first.end(), order[k]);
+      if (f == first.end())
+        input_.push_back(order[k]), key_.push_back(keys[k]);
+      else
+        key_[static_cast<std::size_t>(f - first.begin())] = keys[k];
+    }
     q_.resize(n_);
     parallel_for(n_, threads_, 65536, [&](std::size_t from, std::size_t to) {
       for (std::size_t v = from; v < to; ++v) q_[v] = {points_[input_[v]], weights_[input_[v]]};
     });
     hidden_.assign(n_, 0);
     start();
-    for (VertexId v = 3; v < n_; ++v) insert(v);
+    // The rounds (where the keys fall back), each shared among the threads where it is large.
+    for (VertexId b = 3, e; b < n_; b = e) {
+      for (e = b + 1; e < n_ && key_[e] >= key_[e - 1];) ++e;
+      if (threads_ > 1 && e - b >= kMinCutRound && e - b >= kMinPart * threads_) {
+        insert_round(b, e);
+      } else {
+        for (VertexId v = b; v < e; ++v) insert(v);
+      }
+    }
+    std::sort(copies_.begin(), copies_.end());
   }
 
   Tds& tds() { return tds_; }
@@ -231,6 +256,140 @@ class Builder {
     free_.resize(pool.listed);
   }
 
+  // The threads' share of a round, as the sphere's (sphere/sphere.cpp) and the plane's partition
+  // method's: each thread takes a stretch of the round's points along the curve, whose keys make
+  // its region (the vertex at infinity in none); it inserts a point only where the face its
+  // walk ends in and every face of the cavity have all three corners in its region, its walk
+  // crossing only edges with an end there and stopping at the walls, and puts it off else. So no
+  // two threads change one face, a face a thread reads is its own or one no thread changes, and
+  // the links a thread rewrites only it reads. The triangulation is unique, so the faces are
+  // the same whichever thread inserted which point.
+  struct alignas(64) Part {  // (a line of its own: its thread writes it at each point)
+    VertexId a = 0, b = 0;  // its points
+    std::uint64_t from = 0, to = 0;  // its region: the keys in [from, to)
+    TriangleId start = kNoTriangle;  // where its last walk ended
+    // Faces with a corner in its region found before the threads start, one every kEvery of its
+    // points (kNoTriangle where none was): where a walk from the last one leaves the region (which
+    // is not convex), the point is looked for again from there.
+    std::vector<TriangleId> starts;
+    SlotPool pool;  // two slots a point
+    std::vector<VertexId> put_off;
+    std::vector<std::pair<VertexId, VertexId>> copies;
+    std::vector<TriangleId> freed;  // the slots of faces dropped round covered vertices
+    CoverScratch cover;
+    std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
+  };
+
+  bool holds(const Part& p, VertexId v) const { return v != infinite_ && key_[v] >= p.from && key_[v] < p.to; }
+
+  void insert_round(VertexId b, VertexId e) {
+    const unsigned threads = threads_;
+    std::vector<Part> parts(threads);
+    std::vector<VertexId> cut(threads + 1);
+    cut[0] = b, cut[threads] = e;
+    for (unsigned i = 1; i < threads; ++i) {  // equal stretches, cut where the key changes
+      VertexId c = std::max(cut[i - 1], b + static_cast<VertexId>(std::uint64_t{e - b} * i / threads));
+      while (c > b && c < e && key_[c] == key_[c - 1]) ++c;
+      cut[i] = c;
+    }
+    const TriangleId base = tds_.grow(2 * (e - b));
+    for (unsigned i = 0; i < threads; ++i) {
+      Part& p = parts[i];
+      p.a = cut[i], p.b = cut[i + 1];
+      p.from = i == 0 ? 0 : cut[i] < e ? key_[cut[i]] : std::uint64_t{1} << 32;
+      if (i > 0) parts[i - 1].to = p.from;
+      p.pool = {nullptr, 0, base + 2 * (p.a - b), base + 2 * (p.b - b)};
+      p.epoch = epoch_ + i + 1 - threads;
+    }
+    parts[threads - 1].to = std::uint64_t{1} << 32;
+    for (Part& p : parts) find_starts(p);  // with the triangulation at rest
+    if (scratches_.size() < threads) scratches_.resize(threads);
+    walk_limit_ = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
+    parallel_for(threads, threads, 1, [&](std::size_t from, std::size_t to) {
+      for (std::size_t i = from; i < to; ++i) insert_part(parts[i], scratches_[i]);
+    });
+    for (Part& p : parts) {  // the slots left become free; then the points put off
+      epoch_ = std::max(epoch_, p.epoch);
+      for (; p.pool.next < p.pool.end; ++p.pool.next) tds_.free_slot(p.pool.next), free_.push_back(p.pool.next);
+      if (p.start != kNoTriangle) last_ = p.start;
+      copies_.insert(copies_.end(), p.copies.begin(), p.copies.end());
+      free_.insert(free_.end(), p.freed.begin(), p.freed.end());
+    }
+    for (const Part& p : parts)
+      for (const VertexId v : p.put_off) insert(v);
+  }
+
+  void find_starts(Part& p) {
+    for (VertexId a = p.a; a < p.b; a += kEvery) {
+      TriangleId start = kNoTriangle;
+      for (VertexId v = a; v < std::min(p.b, a + kStartTries) && start == kNoTriangle; ++v) {
+        bool outside = false;
+        const TriangleId t = last_ = locate(v, outside);  // (the next walk from here)
+        const VertexId* c = tds_.corners(t);
+        if (!outside && (holds(p, c[0]) || holds(p, c[1]) || holds(p, c[2]))) start = t;
+      }
+      p.starts.push_back(start);
+    }
+    p.start = p.starts.empty() ? kNoTriangle : p.starts[0];
+  }
+
+  void insert_part(Part& p, CavityScratch& s) {
+    for (VertexId v = p.a; v < p.b; ++v)
+      if (!insert_in(p, s, v)) p.put_off.push_back(v);
+  }
+
+  // Walks to v from t within the part's region (crossing only edges with an end there, never into
+  // a wall); t is left where it ended.
+  bool walk_in(const Part& p, TriangleId& t, VertexId v) const {
+    std::size_t steps = 0;
+    const Point q = q_[v].p;
+    const Walked w = tds_.walk(
+        t, [&](VertexId a, VertexId b) { return orient2d(q_[a].p, q_[b].p, q); },
+        [&](VertexId a, VertexId b) {
+          if (!(holds(p, a) || holds(p, b)) || ++steps >= walk_limit_) return Step::Stop;
+          const VertexId* c = tds_.corners(t);  // (the face across shares a or b: it may be read)
+          const int i = c[0] != a && c[0] != b ? 0 : c[1] != a && c[1] != b ? 1 : 2;
+          return infinite_corner(tds_.corners(triangle_of(tds_.link(t, i)))) >= 0 ? Step::Stop : Step::Cross;
+        });
+    return static_cast<bool>(w);
+  }
+
+  // insert() on a thread of a round, from p.start (left where the walk ended, or at the new
+  // fan); false, with nothing changed, where the point is put off.
+  bool insert_in(Part& p, CavityScratch& s, VertexId v) {
+    TriangleId t = p.start;
+    if (t == kNoTriangle || !walk_in(p, t, v)) {
+      t = p.starts[(v - p.a) / kEvery];  // (its slot may have been freed round a covered vertex since)
+      if (t == kNoTriangle || tds_.vertex(t, 0) == kNoVertex || !walk_in(p, t, v)) return false;
+    }
+    p.start = t;
+    const VertexId* c = tds_.corners(t);
+    for (int i = 0; i < 3; ++i)
+      if (q_[c[i]] == q_[v]) return p.copies.emplace_back(v, c[i]), true;
+    if (!sees(c, v)) return hidden_[v] = 1, true;
+    if (!holds(p, c[0]) || !holds(p, c[1]) || !holds(p, c[2]) || p.pool.size() < 2) return false;
+    const std::uint32_t epoch = p.epoch += threads_;
+    stamp_[t] = epoch;
+    const bool whole = tds_.find_cavity(
+        t, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return holds(p, tds_.opposite(l)); },
+        Tds::kNoWall,
+        [&](TriangleId u, const TriangleId*, std::size_t) {
+          if (stamp_[u] == epoch) return true;
+          stamp_[u] = epoch;
+          return false;
+        });
+    if (!whole) return false;
+    if (s.revisited)  // vertices covered: inside faces of the thread's own (the stamps only it writes)
+      cover_cavity(
+          tds_, s, [&](TriangleId u) { return stamp_[u] == epoch; },
+          [&](VertexId u) {
+            if (u < n_) hidden_[u] = 1;
+          },
+          p.freed, p.cover);
+    p.start = tds_.fill_cavity(v, s, p.pool);
+    return true;
+  }
+
   std::span<const Point> points_;
   std::span<const double> weights_;
   VertexId n_, infinite_;
@@ -246,6 +405,9 @@ class Builder {
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
+  std::vector<std::uint32_t> key_;  // by vertex id: its point's key along the curve
+  std::vector<CavityScratch> scratches_;  // a thread's each
+  std::size_t walk_limit_ = 0;
 };
 
 }  // namespace
@@ -266,30 +428,8 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
   out.duplicates = std::move(settled.duplicates);
   out.hidden = std::move(settled.hidden);
   out.hull = hull_of(tds, inf, points, input);
-  // The finite faces in their slots' order (the fans of successive insertions, near each
-  // other), written over the structure's own arrays: face k of slot t >= k, so each slot is
-  // read before a later one is written over it.
-  std::vector<std::int32_t> id(tds.slots(), -1);
-  std::int32_t count = 0;
-  for (TriangleId t = 0; t < tds.slots(); ++t) {
-    const VertexId* c = tds.corners(t);
-    if (c[0] != kNoVertex && c[0] != inf && c[1] != inf && c[2] != inf) id[t] = count++;
-  }
-  VertexId* v = tds.vertex_array().data();
-  Link* link = tds.link_array().data();
-  for (std::size_t t = 0; t < tds.slots(); ++t) {
-    if (id[t] < 0) continue;
-    const std::size_t k = static_cast<std::size_t>(id[t]);
-    for (std::size_t i = 0; i < 3; ++i) {
-      v[3 * k + i] = input[v[3 * t + i]];
-      link[3 * k + i] = id[triangle_of(link[3 * t + i])];
-    }
-  }
-  out.triangles = std::move(tds.vertex_array());
-  out.neighbors = std::move(tds.link_array());
-  out.triangles.resize(3 * std::size_t(count));
-  out.neighbors.resize(3 * std::size_t(count));
-  out.stats.threads = 1;
+  written_in_place(tds, inf, input, out);
+  out.stats.threads = threads;
   out.stats.points = points.size();
   out.stats.duplicates = out.duplicates.size();
   out.stats.distinct = points.size() - out.duplicates.size();

@@ -1,4 +1,4 @@
-// The regular triangulation's hull, copies and hidden points (regular/settle.hpp).
+// The regular triangulation's hull, copies and hidden points, and its output (regular/settle.hpp).
 #include "regular/settle.hpp"
 
 #include <algorithm>
@@ -73,6 +73,32 @@ Settled settle(std::span<const Point> points, std::span<const double> weights,
   std::sort(out.duplicates.begin(), out.duplicates.end(),
             [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
   return out;
+}
+
+// The finite faces in their slots' order (the fans of successive insertions, near
+// each other), written over the structure's own arrays: face k of slot t >= k, so each slot is
+// read before a later one is written over it.
+void written_in_place(Tds& tds, VertexId inf, const std::vector<VertexId>& input, RegularTriangulation& out) {
+  std::vector<std::int32_t> id(tds.slots(), -1);
+  std::int32_t count = 0;
+  for (TriangleId t = 0; t < tds.slots(); ++t) {
+    const VertexId* c = tds.corners(t);
+    if (c[0] != kNoVertex && c[0] != inf && c[1] != inf && c[2] != inf) id[t] = count++;
+  }
+  VertexId* v = tds.vertex_array().data();
+  Link* link = tds.link_array().data();
+  for (std::size_t t = 0; t < tds.slots(); ++t) {
+    if (id[t] < 0) continue;
+    const std::size_t k = static_cast<std::size_t>(id[t]);
+    for (std::size_t i = 0; i < 3; ++i) {
+      v[3 * k + i] = input[v[3 * t + i]];
+      link[3 * k + i] = id[triangle_of(link[3 * t + i])];
+    }
+  }
+  out.triangles = std::move(tds.vertex_array());
+  out.neighbors = std::move(tds.link_array());
+  out.triangles.resize(3 * std::size_t(count));
+  out.neighbors.resize(3 * std::size_t(count));
 }
 
 }  // namespace ridt::detail

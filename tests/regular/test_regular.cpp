@@ -125,6 +125,51 @@ TEST(Regular, TiesOnALatticeWithWeightsAreDecidedInAnyOrder) {
   }
 }
 
+// Rounds of 4096 points or more are shared among the threads, each inserting in a region of
+// its own and putting off what leaves it: the same triangles, hidden points, hull and copies on
+// any number of threads, and on one number the same arrays from run to run (what a thread
+// reads is its own or what no thread changes, so its choices do not hang on timing), on light
+TEST(Regular, SameOutputOnAnyNumberOfThreads) {
+  std::vector<Weighted> inputs = {random_weighted(60000, 21), random_weighted(40000, 22, 0.2)};
+  Weighted lattice;
+  for (int i = 0; i < 150; ++i)
+    for (int j = 0; j < 150; ++j)
+      lattice.points.push_back({double(i), double(j)}), lattice.weights.push_back((i * 7 + j * 3) % 3);
+  inputs.push_back(lattice);
+  std::mt19937_64 random(23);
+  std::normal_distribution<double> near(0, 1e-3);
+  Weighted clusters;
+  for (int i = 0; i < 40000; ++i)
+    clusters.points.push_back({(i % 5) + near(random), (i % 7) + near(random)}), clusters.weights.push_back(0);
+  inputs.push_back(clusters);
+  Weighted copies = random_weighted(20000, 24);
+  for (int i = 0; i < 3000; ++i) {
+    const std::size_t k = (std::size_t(i) * 7919) % 20000;
+    copies.points.push_back(copies.points[k]),
+        copies.weights.push_back(copies.weights[k] + (i % 3 - 1) * 1e-3 * (i % 2));
+  }
+  inputs.push_back(copies);
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const RegularTriangulation one = triangulate_regular(inputs[k].points, inputs[k].weights, 1);
+    const CheckResult r = check_regular(inputs[k].points, inputs[k].weights, one.triangles);
+    EXPECT_TRUE(r.valid) << "input " << k << ": " << r.message;
+    for (const unsigned threads : {2u, 3u, 8u}) {
+      const RegularTriangulation t = triangulate_regular(inputs[k].points, inputs[k].weights, threads);
+      EXPECT_EQ(faces(inputs[k].points, t.triangles), faces(inputs[k].points, one.triangles))
+          << "input " << k << ", " << threads << " threads";
+      const RegularTriangulation again = triangulate_regular(inputs[k].points, inputs[k].weights, threads);
+      EXPECT_EQ(again.triangles, t.triangles) << "input " << k << ", " << threads << " threads";
+      EXPECT_EQ(again.neighbors, t.neighbors) << "input " << k << ", " << threads << " threads";
+      EXPECT_EQ(t.hidden, one.hidden) << "input " << k << ", " << threads << " threads";
+      EXPECT_EQ(t.hull, one.hull) << "input " << k << ", " << threads << " threads";
+      ASSERT_EQ(t.duplicates.size(), one.duplicates.size()) << "input " << k << ", " << threads << " threads";
+      for (std::size_t i = 0; i < t.duplicates.size(); ++i)
+        EXPECT_TRUE(t.duplicates[i].dropped == one.duplicates[i].dropped &&
+                    t.duplicates[i].kept == one.duplicates[i].kept);
+    }
+  }
+}
+
 TEST(Regular, CopiesAndPointsAtOnePlace) {
   Weighted in = random_weighted(200, 13);
   in.points.push_back(in.points[5]), in.weights.push_back(in.weights[5]);  // a copy
