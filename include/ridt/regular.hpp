@@ -27,7 +27,9 @@ struct RegularTriangulation : Triangulation {
 /// points on one orthogonal circle, get one answer in any input order: with equal weights
 /// triangulate()'s), built by randomized incremental insertion on the one mutable triangulation
 /// (a vertex at infinity closes it), in a biased randomized order along a Hilbert curve;
-/// `threads` (0: the machine's) sort the points and write the result. Points with the same
+/// `threads` (0: the machine's) sort the points, insert them (rounds of 4096 points or more
+/// shared among them) and write the result: the same triangles on any number, the same arrays
+/// from run to run on one number. Points with the same
 /// coordinates but different weights: the lighter is hidden. Throws InputError for a point or
 /// weight that is not finite, `weights` not one a point, fewer than three distinct points, or
 /// all of them collinear.
