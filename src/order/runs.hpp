@@ -1,4 +1,5 @@
-// Ties after a sort by key: the runs of equal keys put in an order of their own.
+// Runs of keys: the ties after a sort by key put in an order of their own, and a sorted round
+// cut among threads.
 #pragma once
 
 #include <algorithm>
@@ -31,6 +32,30 @@ void sort_runs(std::vector<std::uint64_t>& words, unsigned threads, Less less) {
                   });
     }
   });
+}
+
+/// A stretch of a round and its keys [from, to).
+struct Stretch {
+  std::uint32_t a = 0, b = 0;
+  std::uint64_t from = 0, to = 0;
+};
+
+/// The round [b, e) of ids whose keys (key[id], 32 bits) never decrease, cut into `parts`
+/// stretches of about equal size where the key changes (equal keys stay in one), with their
+/// keys: the first from 0, the last to 2^32, each the next one's from (an empty stretch at the
+/// end from 2^32).
+inline std::vector<Stretch> cut_round(const std::uint32_t* key, std::uint32_t b, std::uint32_t e, unsigned parts) {
+  std::vector<Stretch> s(parts);
+  for (unsigned i = 0; i < parts; ++i) {
+    std::uint32_t c =
+        i == 0 ? b : std::max(s[i - 1].a, b + static_cast<std::uint32_t>(std::uint64_t{e - b} * i / parts));
+    while (c > b && c < e && key[c] == key[c - 1]) ++c;
+    s[i].a = c;
+    s[i].from = i == 0 ? 0 : c < e ? key[c] : std::uint64_t{1} << 32;
+    if (i > 0) s[i - 1].b = c, s[i - 1].to = s[i].from;
+  }
+  s[parts - 1].b = e, s[parts - 1].to = std::uint64_t{1} << 32;
+  return s;
 }
 
 }  // namespace ridt::detail

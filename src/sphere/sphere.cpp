@@ -34,6 +34,7 @@
 #include "sphere/tetrahedron.hpp"
 #include "tds/cover.hpp"
 #include "tds/delaunay.hpp"
+#include "tds/rounds.hpp"
 #include "tds/tds.hpp"
 
 namespace ridt {
@@ -270,34 +271,13 @@ class Builder {
   };
 
   void insert_round(VertexId b, VertexId e) {
-    const unsigned threads = threads_;
-    std::vector<Part> parts(threads);
-    std::vector<VertexId> cut(threads + 1);
-    cut[0] = b, cut[threads] = e;
-    for (unsigned i = 1; i < threads; ++i) {  // equal stretches, cut where the key changes
-      VertexId c = std::max(cut[i - 1], b + static_cast<VertexId>(std::uint64_t{e - b} * i / threads));
-      while (c > b && c < e && key_[c] == key_[c - 1]) ++c;
-      cut[i] = c;
-    }
-    const TriangleId base = tds_.grow(2 * (e - b));
-    for (unsigned i = 0; i < threads; ++i) {
-      Part& p = parts[i];
-      p.a = cut[i], p.b = cut[i + 1], p.key = &key_;
-      p.from = i == 0 ? 0 : cut[i] < e ? key_[cut[i]] : ~std::uint64_t{0};
-      if (i > 0) parts[i - 1].to = p.from;
-      p.pool = {nullptr, 0, base + 2 * (p.a - b), base + 2 * (p.b - b)};
-      p.epoch = epoch_ + i + 1 - threads;
-    }
-    parts[threads - 1].to = ~std::uint64_t{0};
+    std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
+    for (Part& p : parts) p.key = &key_;
     for (Part& p : parts) find_starts(p);
-    if (scratches_.size() < threads) scratches_.resize(threads);
-    walk_limit_ = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
-    parallel_for(threads, threads, 1, [&](std::size_t from, std::size_t to) {
-      for (std::size_t i = from; i < to; ++i) insert_part(parts[i], scratches_[i]);
-    });
-    for (Part& p : parts) {  // the slots left become free; then the points put off
-      epoch_ = std::max(epoch_, p.epoch);
-      for (; p.pool.next < p.pool.end; ++p.pool.next) tds_.free_slot(p.pool.next), free_.push_back(p.pool.next);
+    walk_limit_ = walk_limit(tds_);
+    run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
+    epoch_ = round_left(tds_, parts, free_, epoch_);
+    for (Part& p : parts) {  // what the parts found; then the points put off
       if (p.last != kNoTriangle) last_ = p.last;
     }
     for (const Part& p : parts)
