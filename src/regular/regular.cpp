@@ -28,7 +28,6 @@
 
 #include "order/order.hpp"
 #include "order/random.hpp"
-#include "order/runs.hpp"
 #include "predicates/power.hpp"
 #include "predicates/predicates.hpp"
 #include "regular/settle.hpp"
@@ -57,10 +56,6 @@ void check_input(std::span<const Point> points, std::span<const double> weights)
   }
 }
 
-// A round of insertions is shared among the threads where it has at least kMinCutRound points
-// and each thread gets at least kMinPart (as the sphere's, sphere/sphere.cpp); a thread tries
-// this many of its first points for a face to start from.
-constexpr VertexId kMinCutRound = 4096, kMinPart = 256, kStartTries = 64;
 // A thread's walks may start anew at a face found before the round every this many points.
 constexpr VertexId kEvery = 256;
 
@@ -101,13 +96,12 @@ class Builder {
     // The rounds (where the keys fall back), each shared among the threads where it is large.
     for (VertexId b = 3, e; b < n_; b = e) {
       for (e = b + 1; e < n_ && key_[e] >= key_[e - 1];) ++e;
-      if (threads_ > 1 && e - b >= kMinCutRound && e - b >= kMinPart * threads_) {
+      if (shared_round(e - b, threads_)) {
         insert_round(b, e);
       } else {
         for (VertexId v = b; v < e; ++v) insert(v);
       }
     }
-    std::sort(copies_.begin(), copies_.end());
   }
 
   Tds& tds() { return tds_; }
@@ -196,7 +190,7 @@ class Builder {
     if (const int k = infinite_corner(tds_.corners(t)); k >= 0) t = triangle_of(tds_.link(t, k));
     const Point q = q_[v].p;
     std::size_t steps = 0;
-    const std::size_t limit = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
+    const std::size_t limit = walk_limit(tds_);
     bool wall = false;
     const Walked w = tds_.walk(
         t, [&](VertexId a, VertexId b) { return orient2d(q_[a].p, q_[b].p, q); },
@@ -235,11 +229,7 @@ class Builder {
     stamp_[t] = epoch_;
     tds_.find_cavity(
         t, scratch_, [&](const VertexId* w) { return sees(w, v); }, Tds::kAnywhere, Tds::kNoWall,
-        [&](TriangleId u, const TriangleId*, std::size_t) {
-          if (stamp_[u] == epoch_) return true;
-          stamp_[u] = epoch_;
-          return false;
-        });
+        stamped(stamp_, epoch_));
     if (scratch_.revisited)
       cover_cavity(
           tds_, scratch_, [&](TriangleId u) { return stamp_[u] == epoch_; },
@@ -281,7 +271,7 @@ class Builder {
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
   };
 
-  bool holds(const Part& p, VertexId v) const { return v != infinite_ && key_[v] >= p.from && key_[v] < p.to; }
+  bool owns(const Part& p, VertexId v) const { return v != infinite_ && key_[v] >= p.from && key_[v] < p.to; }
 
   void insert_round(VertexId b, VertexId e) {
     std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
@@ -305,7 +295,7 @@ class Builder {
         bool outside = false;
         const TriangleId t = last_ = locate(v, outside);  // (the next walk from here)
         const VertexId* c = tds_.corners(t);
-        if (!outside && (holds(p, c[0]) || holds(p, c[1]) || holds(p, c[2]))) start = t;
+        if (!outside && (owns(p, c[0]) || owns(p, c[1]) || owns(p, c[2]))) start = t;
       }
       p.starts.push_back(start);
     }
@@ -325,7 +315,7 @@ class Builder {
     const Walked w = tds_.walk(
         t, [&](VertexId a, VertexId b) { return orient2d(q_[a].p, q_[b].p, q); },
         [&](VertexId a, VertexId b) {
-          if (!(holds(p, a) || holds(p, b)) || ++steps >= walk_limit_) return Step::Stop;
+          if (!(owns(p, a) || owns(p, b)) || ++steps >= walk_limit_) return Step::Stop;
           const VertexId* c = tds_.corners(t);  // (the face across shares a or b: it may be read)
           const int i = c[0] != a && c[0] != b ? 0 : c[1] != a && c[1] != b ? 1 : 2;
           return infinite_corner(tds_.corners(triangle_of(tds_.link(t, i)))) >= 0 ? Step::Stop : Step::Cross;
@@ -346,17 +336,12 @@ class Builder {
     for (int i = 0; i < 3; ++i)
       if (q_[c[i]] == q_[v]) return p.copies.emplace_back(v, c[i]), true;
     if (!sees(c, v)) return hidden_[v] = 1, true;
-    if (!holds(p, c[0]) || !holds(p, c[1]) || !holds(p, c[2]) || p.pool.size() < 2) return false;
+    if (!owns(p, c[0]) || !owns(p, c[1]) || !owns(p, c[2]) || p.pool.size() < 2) return false;
     const std::uint32_t epoch = p.epoch += threads_;
     stamp_[t] = epoch;
     const bool whole = tds_.find_cavity(
-        t, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return holds(p, tds_.opposite(l)); },
-        Tds::kNoWall,
-        [&](TriangleId u, const TriangleId*, std::size_t) {
-          if (stamp_[u] == epoch) return true;
-          stamp_[u] = epoch;
-          return false;
-        });
+        t, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return owns(p, tds_.opposite(l)); },
+        Tds::kNoWall, stamped(stamp_, epoch));
     if (!whole) return false;
     if (s.revisited)  // vertices covered: inside faces of the thread's own (the stamps only it writes)
       cover_cavity(

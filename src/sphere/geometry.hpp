@@ -41,10 +41,16 @@ inline Point3 unit(const Point3& given) {
 // The signed solid angle of the spherical triangle of unit vectors a, b, c (Van Oosterom and
 // Strackee): its triple product taken of b - a and c - a, which keeps its digits where the
 // three are close (a small cell's triangles).
+// The angle is twice the argument of below + i triple (solid_angle_parts).
+struct SolidAngleParts {
+  double triple, below;
+};
+inline SolidAngleParts solid_angle_parts(const Point3& a, const Point3& b, const Point3& c) {
+  return {dot(a, cross(minus(b, a), minus(c, a))), 1 + dot(a, b) + dot(b, c) + dot(c, a)};
+}
 inline double solid_angle(const Point3& a, const Point3& b, const Point3& c) {
-  const double triple = dot(a, cross(minus(b, a), minus(c, a)));
-  const double below = 1 + dot(a, b) + dot(b, c) + dot(c, a);
-  return 2 * std::atan2(triple, below);
+  const SolidAngleParts s = solid_angle_parts(a, b, c);
+  return 2 * std::atan2(s.triple, s.below);
 }
 
 // Whether d, a - b rounded, is a - b exactly (Knuth's two-sum: the error of the difference,

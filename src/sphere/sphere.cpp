@@ -41,14 +41,8 @@ namespace ridt {
 namespace detail {
 namespace {
 
-// A round of insertions is shared among the threads where it has at least kMinCutRound points
-// and each thread gets at least kMinPart; a smaller one meets a hull so small that most of its
-// points would be put off.
-constexpr VertexId kMinCutRound = 4096, kMinPart = 256;
 // The key that sorts free slots after every triangle (a curve's key is below 6 * 2^29).
 constexpr std::uint32_t kFreeSlot = ~std::uint32_t{0};
-// A thread tries this many of its first points for a triangle to start from.
-constexpr VertexId kStartTries = 64;
 
 class Builder {
  public:
@@ -72,7 +66,7 @@ class Builder {
     start();
     for (std::size_t r = 0; r + 1 < rounds_.size(); ++r) {
       const VertexId b = 4 + rounds_[r], e = 4 + rounds_[r + 1];
-      if (threads_ > 1 && e - b >= kMinCutRound && e - b >= kMinPart * threads_) {
+      if (shared_round(e - b, threads_)) {
         insert_round(b, e);
       } else {
         for (VertexId v = b; v < e; ++v) insert(v);
@@ -201,7 +195,7 @@ class Builder {
   TriangleId locate(VertexId v) {
     TriangleId t = last_;
     std::size_t steps = 0;
-    const std::size_t limit = 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds_.slots())));
+    const std::size_t limit = walk_limit(tds_);
     const Walked w = tds_.walk(
         t, [&](VertexId a, VertexId b) { return side(a, b, v); },
         [&](Link) { return ++steps < limit ? Step::Cross : Step::Stop; });
@@ -221,11 +215,7 @@ class Builder {
     stamp_[t] = epoch_;
     tds_.find_cavity(
         t, scratch_, [&](const VertexId* w) { return sees(w, v); }, Tds::kAnywhere, Tds::kNoWall,
-        [&](TriangleId u, const TriangleId*, std::size_t) {
-          if (stamp_[u] == epoch_) return true;
-          stamp_[u] = epoch_;
-          return false;
-        });
+        stamped(stamp_, epoch_));
     if (scratch_.revisited)
       cover_cavity(
           tds_, scratch_, [&](TriangleId u) { return stamp_[u] == epoch_; }, [&](VertexId u) { hidden_[u] = 1; }, free_,
@@ -265,14 +255,12 @@ class Builder {
     SlotPool pool;  // two slots a point
     std::vector<VertexId> put_off;
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
-    bool holds(VertexId v) const { return key_of(v) >= from && key_of(v) < to; }
-    const std::vector<std::uint32_t>* key = nullptr;
-    std::uint64_t key_of(VertexId v) const { return (*key)[v]; }
   };
+
+  bool owns(const Part& p, VertexId v) const { return key_[v] >= p.from && key_[v] < p.to; }
 
   void insert_round(VertexId b, VertexId e) {
     std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
-    for (Part& p : parts) p.key = &key_;
     for (Part& p : parts) find_starts(p);
     walk_limit_ = walk_limit(tds_);
     run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
@@ -297,7 +285,7 @@ class Builder {
 
   bool has_corner_in(TriangleId t, const Part& p) const {
     const VertexId* c = tds_.corners(t);
-    return p.holds(c[0]) || p.holds(c[1]) || p.holds(c[2]);
+    return owns(p, c[0]) || owns(p, c[1]) || owns(p, c[2]);
   }
 
   void insert_part(Part& p, CavityScratch& s) {
@@ -318,23 +306,18 @@ class Builder {
     const Walked w = tds_.walk(
         at, [&](VertexId a, VertexId b) { return side(a, b, v); },
         [&](VertexId a, VertexId b) {
-          return (p.holds(a) || p.holds(b)) && ++steps < walk_limit_ ? Step::Cross : Step::Stop;
+          return (owns(p, a) || owns(p, b)) && ++steps < walk_limit_ ? Step::Cross : Step::Stop;
         });
     if (!w) return false;
     t = at;
     const VertexId* c = tds_.corners(at);
     if (!sees(c, v)) return hidden_[v] = 1, true;
-    if (!p.holds(c[0]) || !p.holds(c[1]) || !p.holds(c[2]) || p.pool.size() < 2) return false;
+    if (!owns(p, c[0]) || !owns(p, c[1]) || !owns(p, c[2]) || p.pool.size() < 2) return false;
     const std::uint32_t epoch = p.epoch += threads_;
     stamp_[at] = epoch;
     const bool whole = tds_.find_cavity(
-        at, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return p.holds(tds_.opposite(l)); },
-        Tds::kNoWall,
-        [&](TriangleId u, const TriangleId*, std::size_t) {
-          if (stamp_[u] == epoch) return true;
-          stamp_[u] = epoch;
-          return false;
-        });
+        at, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return owns(p, tds_.opposite(l)); },
+        Tds::kNoWall, stamped(stamp_, epoch));
     if (!whole || s.revisited) return false;  // a vertex covered: left to insert()
     t = tds_.fill_cavity(v, s, p.pool);
     return true;

@@ -14,10 +14,9 @@
 namespace ridt {
 namespace {
 
-using detail::sphere::cross;
-using detail::sphere::dot;
 using detail::sphere::minus;
 using detail::sphere::solid_angle;
+using detail::sphere::solid_angle_parts;
 using detail::sphere::unit;
 using detail::sphere::unit_normal;
 
@@ -44,13 +43,13 @@ void circle_centres(const SphericalTriangulation& t, std::span<const Point3> poi
 // as twice the argument of the product of the complex numbers b_k + i t_k, one atan2 a cell
 // in place of one a corner. Round a point of the sphere the t_k are positive, so the product's
 // parts add terms of one sign and keep a relative error of some `size` roundings. Where the
-// product turns past a quarter (a cell over half the sphere, or a fan triangle facing back)
-// the angles are summed one by one. A power of two keeps the product's size in range.
+// product turns past a quarter turn (a cell over a quarter of the sphere, or a fan triangle
+// facing back) the angles are summed one by one. A power of two keeps the product's size in range.
 double cell_area(const Point3& p, const std::vector<Point3>& normals, const std::uint32_t* cell, std::size_t size) {
   double re = 1, im = 0;
   for (std::size_t k = 0; k < size; ++k) {
     const Point3 &b = normals[cell[k]], &c = normals[cell[k + 1 < size ? k + 1 : 0]];
-    const double t = dot(p, cross(minus(b, p), minus(c, p))), u = 1 + dot(p, b) + dot(b, c) + dot(c, p);
+    const auto [t, u] = solid_angle_parts(p, b, c);
     const double r = re * u - im * t;
     im = re * t + im * u, re = r;
     if (!(re > 0)) {

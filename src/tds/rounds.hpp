@@ -15,6 +15,14 @@
 
 namespace ridt::detail {
 
+/// A round is shared among the threads where it has at least kMinCutRound points and each
+/// thread gets at least kMinPart (a smaller one meets a triangulation so small that most of its
+/// points would be put off); a thread tries up to kStartTries points for a face to start from.
+inline constexpr VertexId kMinCutRound = 4096, kMinPart = 256, kStartTries = 64;
+constexpr bool shared_round(VertexId points, unsigned threads) {
+  return threads > 1 && points >= kMinCutRound && points >= std::uint64_t{kMinPart} * threads;
+}
+
 /// A part for each of `threads` threads of the round [b, e) of vertex ids, whose keys never
 /// decrease: its stretch [a, b) and region of keys [from, to) (cut_round), two fresh slots for
 /// each of its points in `pool`, and its stamps' epochs: epoch + i + 1, then steps of `threads`
@@ -45,8 +53,9 @@ void run_parts(std::vector<Part>& parts, std::vector<CavityScratch>& scratches, 
   });
 }
 
-/// How many steps a walk of a round may take before its point is put off (a walk through cones
-/// or over faces that are not a Delaunay triangulation's may cycle).
+/// How many steps a walk may take before it gives up (a walk through cones or over faces that
+/// are not a Delaunay triangulation's may cycle): a round's point is then put off, a point
+/// inserted alone looked for by a scan.
 inline std::size_t walk_limit(const Tds& tds) {
   return 256 + 4 * static_cast<std::size_t>(std::sqrt(static_cast<double>(tds.slots())));
 }
