@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <string>
 
@@ -216,9 +217,9 @@ Triangulation run_dag(detail::Block<Point> pts, std::uint32_t n, const std::vect
 
 // The walking kernel and the method that drives it (`keys`: each vertex's Hilbert key, in
 // insertion order, where the method asked for them).
-Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
+Triangulation run_walking(detail::Block<Point>& pts, std::uint32_t n, const std::vector<std::uint32_t>& order,
                           std::vector<std::uint32_t> keys, detail::SlotArrays arrays, const Plan& plan,
-                          const Options& options, Stats& stats, bool links) {
+                          const Options& options, Stats& stats, bool links, bool keep_points) {
   detail::DelaunayTds tds(detail::Vertices(pts.get(), n, plan.symbolic), std::move(arrays));
   std::vector<detail::DuplicateHit> duplicates;
   detail::Progress progress(options.progress, n);
@@ -227,7 +228,7 @@ Triangulation run_walking(detail::Block<Point> pts, std::uint32_t n, const std::
   stats.time_insert_s = since(t0);
   if (options.progress) options.progress(1.0);
   const auto t1 = Clock::now();
-  if (plan.symbolic) pts.reset();  // the finish reads no point: the copy goes before it
+  if (plan.symbolic && !keep_points) pts.reset();  // the finish reads no point: the copy goes before it
   Triangulation out = detail::finish_walking(tds, order, duplicates, options, plan.threads, links);
   stats.time_finish_s = since(t1);
   return out;
@@ -255,6 +256,30 @@ std::vector<std::uint32_t> insertion_order(std::span<const Point> points, const 
   return order;
 }
 
+// 0, 1, ..., n - 1.
+std::vector<std::uint32_t> places_of(std::uint32_t n, unsigned threads) {
+  std::vector<std::uint32_t> places;
+  detail::resize_present(places, n, threads);
+  detail::parallel_for(n, threads, 65536, [&](std::size_t first, std::size_t last) {
+    std::iota(places.begin() + static_cast<std::ptrdiff_t>(first), places.begin() + static_cast<std::ptrdiff_t>(last),
+              static_cast<std::uint32_t>(first));
+  });
+  return places;
+}
+
+// The insertion order and the points in it: the kernel's copy `pts` where it is the points as
+// given, else (scaled; or taken by the DAG's kernel) a copy made here.
+detail::InOrder in_order_of(std::span<const Point> points, std::vector<std::uint32_t> order, detail::Block<Point> pts,
+                            int scale, unsigned threads) {
+  if (!pts || scale != 0) {
+    pts = detail::allocate_huge<Point>(points.size() + 3);
+    detail::parallel_for(points.size(), threads, 65536, [&](std::size_t first, std::size_t last) {
+      for (std::size_t v = first; v < last; ++v) pts[v] = points[order[v]];
+    });
+  }
+  return {std::move(order), std::move(pts)};
+}
+
 // The insertion's stats in the result, with the counts that the finish made.
 void merge_stats(Triangulation& out, Stats stats) {
   if (stats.per_thread.empty()) stats.per_thread.push_back({"worker", out.stats.points, stats.time_insert_s, 0, 0, 0});
@@ -265,8 +290,11 @@ void merge_stats(Triangulation& out, Stats stats) {
   out.stats = std::move(stats);
 }
 
-// triangulate(), its neighbours links where `links` asks and the walking kernel can (`linked`).
-Triangulation run(std::span<const Point> points, const Options& options, bool links, bool& linked) {
+// triangulate(), its neighbours links where `links` asks and the walking kernel can (`linked`);
+// with `in_order`, the vertices numbered by their places in the insertion order, which comes
+// back in it with the points in that order.
+Triangulation run(std::span<const Point> points, const Options& options, bool links, bool& linked,
+                  detail::InOrder* in_order = nullptr) {
   const auto t0 = Clock::now();
   const Plan p = plan(points.size(), options);
   check_memory(p, points.size(), options);
@@ -286,7 +314,11 @@ Triangulation run(std::span<const Point> points, const Options& options, bool li
   if (p.walk) slots.emplace(n, p.threads);
   lap(stats.time_mesh_s);
   std::vector<std::uint32_t> keys;
-  const std::vector<std::uint32_t> order = insertion_order(points, extent, p, options, keys, slots ? &*slots : nullptr);
+  std::vector<std::uint32_t> order = insertion_order(points, extent, p, options, keys, slots ? &*slots : nullptr);
+  // The finish writes each vertex as ids[v]: its input index, or its place.
+  const std::vector<std::uint32_t> places =
+      in_order != nullptr ? places_of(n, p.threads) : std::vector<std::uint32_t>{};
+  const std::vector<std::uint32_t>& ids = in_order != nullptr ? places : order;
   lap(stats.time_order_s);
   detail::Block<Point> pts = copy_in_order(points, order, scale, p.threads);
   if (!p.symbolic) place_finite_bounding(pts.get(), n, order, options.experiment.k);
@@ -298,8 +330,9 @@ Triangulation run(std::span<const Point> points, const Options& options, bool li
   stats.memory_estimate = estimate(p, n);
   linked = links && p.walk && !options.canonical_order;
   Triangulation out = p.walk
-      ? run_walking(std::move(pts), n, order, std::move(keys), std::move(*slots), p, options, stats, linked)
-      : run_dag(std::move(pts), n, order, p, options, stats);
+      ? run_walking(pts, n, ids, std::move(keys), std::move(*slots), p, options, stats, linked, in_order != nullptr)
+      : run_dag(std::move(pts), n, ids, p, options, stats);
+  if (in_order != nullptr) *in_order = in_order_of(points, std::move(order), std::move(pts), scale, p.threads);
   // After the kernel is gone, so that the sort's copies do not raise the peak.
   phase = Clock::now();
   detail::apply_output_options(out, options, p.threads);
@@ -315,6 +348,11 @@ namespace detail {
 
 Triangulation triangulate_linked(std::span<const Point> points, const Options& options, bool& linked) {
   return run(points, options, true, linked);
+}
+
+Triangulation triangulate_in_order(std::span<const Point> points, const Options& options, InOrder& order) {
+  bool linked = false;
+  return run(points, options, false, linked, &order);
 }
 
 }  // namespace detail

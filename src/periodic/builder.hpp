@@ -42,16 +42,38 @@
 
 namespace ridt::detail {
 
-/// Whether the circle of triangle (a, b, c) (points as given, exact; a the least index) lies
-/// inside the domain, clear of its sides by the rounding of the test. The same test, on the
-/// same arguments, decides for the Delaunay triangles of the points and the band's alike.
-inline bool circle_inside(const Point& a, const Point& b, const Point& c, const PeriodicDomain& d) {
+/// Whether the circle of triangle (a, b, c) (points as given, exact) lies inside the domain,
+/// clear of its sides by the rounding of the test. The same test decides for the Delaunay
+/// triangles of the points and the band's alike: it takes the corners from the least in
+/// lexicographic order (a rotation: the answer does not depend on where a triangle starts).
+///
+/// Most triangles lie far from the sides, and for them a test without a division decides: the
+/// circle lies within its diameter 2R of a, and (2R)^2 = |ab|^2 |ac|^2 |bc|^2 / det^2, so it is
+/// inside where a is farther than that from every side; with room for the rounding of each
+/// step (a relative 2^-40 on the lengths' product, the orientation filter's bound on det), and
+/// only where no product can overflow or underflow. Else the circumcentre and radius decide.
+inline bool circle_inside_from(const Point& a, const Point& b, const Point& c, const PeriodicDomain& d) {
+  const double room = 4 * kEps * (std::max(std::fabs(d.origin.x), std::fabs(d.origin.y)) + d.width + d.height);
+  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y, ex = c.x - b.x, ey = c.y - b.y;
+  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, e2 = ex * ex + ey * ey;
+  const double l = bx * cy, r = by * cx, det = std::fabs(l - r) - 5 * kEps * (std::fabs(l) + std::fabs(r));
+  const double side =
+      std::min({a.x - d.origin.x, d.origin.x + d.width - a.x, a.y - d.origin.y, d.origin.y + d.height - a.y}) - room;
+  constexpr double kLow = 0x1p-300, kHigh = 0x1p300;
+  if (std::min({b2, c2, e2}) > kLow && std::max({b2, c2, e2}) < kHigh && side > 0x1p-150 && side < 0x1p150 &&
+      det > 0x1p-600 && b2 * c2 * e2 * (1 + 0x1p-40) < side * side * det * det)
+    return true;
   const Point o = circumcentre_bounded(a, b, c);
   auto squared = [](const Point& p, const Point& q) { return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y); };
-  const double r = (1 + 0x1p-30) * std::sqrt(std::max({squared(a, o), squared(b, o), squared(c, o)}));
-  const double room = 4 * kEps * (std::max(std::fabs(d.origin.x), std::fabs(d.origin.y)) + d.width + d.height);
-  return o.x - r > d.origin.x + room && o.x + r < d.origin.x + d.width - room && o.y - r > d.origin.y + room &&
-      o.y + r < d.origin.y + d.height - room;
+  const double radius = (1 + 0x1p-30) * std::sqrt(std::max({squared(a, o), squared(b, o), squared(c, o)}));
+  return o.x - radius > d.origin.x + room && o.x + radius < d.origin.x + d.width - room &&
+      o.y - radius > d.origin.y + room && o.y + radius < d.origin.y + d.height - room;
+}
+
+inline bool circle_inside(const Point& a, const Point& b, const Point& c, const PeriodicDomain& d) {
+  if (lex_less(b, a) && !lex_less(c, b)) return circle_inside_from(b, c, a, d);
+  if (lex_less(c, a) && lex_less(c, b)) return circle_inside_from(c, a, b, d);
+  return circle_inside_from(a, b, c, d);
 }
 
 // The least of a group of equal points: a union of input indices by their least.
@@ -213,7 +235,7 @@ class Builder {
       around_[c[0]] = around_[c[1]] = around_[c[2]] = t;
       const int low = least(c);
       if (s_[c[low]].dx != 0 || s_[c[low]].dy != 0) continue;
-      if (band && unmoved_inside(c, low)) continue;  // the caller's, from the points' triangulation
+      if (band && unmoved_inside(c)) continue;  // the caller's, from the points' triangulation
       const Reach r = reach(c, band);
       need = {std::max(need.bare, r.bare + edge), std::max(need.sure, r.sure + edge)};
       id_[t] = static_cast<std::int32_t>(slot_.size());
@@ -369,12 +391,12 @@ class Builder {
     return out;
   }
 
-  // Whether triangle c's corners are all points as given (c[low] is) and its circle lies inside
-  // the domain, as circle_inside decides from the least index's corner.
-  bool unmoved_inside(const VertexId* c, int low) {
+  // Whether triangle c's corners are all points as given and its circle lies inside the domain
+  // (circle_inside).
+  bool unmoved_inside(const VertexId* c) {
     for (int j = 0; j < 3; ++j)
       if (s_[c[j]].dx != 0 || s_[c[j]].dy != 0) return false;
-    return circle_inside(s_[c[low]].p, s_[c[(low + 1) % 3]].p, s_[c[(low + 2) % 3]].p, d_);
+    return circle_inside(s_[c[0]].p, s_[c[1]].p, s_[c[2]].p, d_);
   }
 
   // A vertex's input index: its group's least where the same point was given more than once.

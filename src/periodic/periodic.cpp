@@ -24,6 +24,7 @@
 // only where a circle lies is measured in rounded arithmetic, with room for its rounding, and
 // where that room alone leaves a circle in doubt the result is checked by the exact validator.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -78,34 +79,48 @@ struct EdgeKeyHash {
   }
 };
 
-// The two parts as one: first the triangles of `p` whose id is not -1 (their least corner
-// first, at offset 0; neighbours from p's where those are kept too), then the rim's. Every
-// other neighbour is found through its edge's twin; nothing where one has none, or several.
+// The two parts as one, over p's arrays (made for the 2n + 1 slots of n points): the triangles
+// of `p` that are `inside` keep their places (their least corner first, at offset 0; their
+// neighbours p's where those are inside too), the rim's fill the others' places, then follow.
+// Every other neighbour is found through its edge's twin; nothing where one has none, or
+// several.
 std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<std::uint32_t>& input,
-                                          const std::vector<std::uint8_t>& first, const std::vector<std::int32_t>& id,
-                                          std::size_t inner, PeriodicTriangulation rim, unsigned threads) {
-  const std::size_t total = inner + rim.size(), count = id.size();
+                                          const std::vector<std::uint8_t>& inside, PeriodicTriangulation rim,
+                                          unsigned threads) {
+  const std::size_t count = inside.size();
+  std::vector<std::size_t> place;  // rim triangle r's
+  for (std::size_t k = 0; k < count; ++k)
+    if (!inside[k]) place.push_back(k);
+  // (the points' own triangulation has 2n - h - 2 triangles, h >= 3 on its hull: the rim has more)
+  if (rim.size() < place.size()) return std::nullopt;
+  const std::size_t holes = place.size(), total = count + rim.size() - holes;
+  while (place.size() < rim.size()) place.push_back(count + place.size() - holes);
   PeriodicTriangulation out;
   out.domain = rim.domain;
-  // Written over p's arrays (kept triangle id[k] <= k), made for the 2n + 1 slots of n points.
   out.triangles = std::move(p.triangles), out.neighbors = std::move(p.neighbors);
-  for (std::size_t k = 0; k < count; ++k) {
-    if (id[k] < 0) continue;
-    const auto g = static_cast<std::size_t>(id[k]);
-    VertexId t[3];
-    std::int32_t u[3];
-    for (std::size_t j = 0; j < 3; ++j) {
-      const std::size_t i = 3 * k + (first[k] + j) % 3;
-      t[j] = input[out.triangles[i]],
-      u[j] = out.neighbors[i] >= 0 ? id[static_cast<std::size_t>(out.neighbors[i])] : -1;
+  parallel_for(count, threads, 16384, [&](std::size_t from, std::size_t to) {
+    constexpr std::size_t kAhead = 8;
+    for (std::size_t k = from; k < to; ++k) {
+      if (k + kAhead < to)
+        for (std::size_t j = 0; j < 3; ++j) __builtin_prefetch(&input[out.triangles[3 * (k + kAhead) + j]]);
+      if (!inside[k]) continue;
+      VertexId* t = &out.triangles[3 * k];
+      std::int32_t* u = &out.neighbors[3 * k];
+      const VertexId a = input[t[0]], b = input[t[1]], c = input[t[2]];
+      const std::size_t low = a < b ? (a < c ? 0 : 2) : (b < c ? 1 : 2);
+      const VertexId w[3] = {a, b, c};
+      std::int32_t v[3];
+      for (std::size_t j = 0; j < 3; ++j) v[j] = u[j] >= 0 && inside[static_cast<std::size_t>(u[j])] ? u[j] : -1;
+      for (std::size_t j = 0; j < 3; ++j) t[j] = w[(low + j) % 3], u[j] = v[(low + j) % 3];
     }
-    for (std::size_t j = 0; j < 3; ++j) out.triangles[3 * g + j] = t[j], out.neighbors[3 * g + j] = u[j];
-  }
+  });
   out.triangles.resize(3 * total), out.neighbors.resize(3 * total);
   resize_present(out.offsets, 3 * total, threads), resize_present(out.neighbor_offsets, 3 * total, threads);
-  std::copy(rim.triangles.begin(), rim.triangles.end(), out.triangles.begin() + 3 * inner);
-  std::copy(rim.offsets.begin(), rim.offsets.end(), out.offsets.begin() + 3 * inner);
-  std::fill(out.neighbors.begin() + 3 * inner, out.neighbors.end(), -1);
+  for (std::size_t r = 0; r < rim.size(); ++r)
+    for (std::size_t j = 0; j < 3; ++j) {
+      const std::size_t e = 3 * place[r] + j;
+      out.triangles[e] = rim.triangles[3 * r + j], out.offsets[e] = rim.offsets[3 * r + j], out.neighbors[e] = -1;
+    }
   // The edges without a neighbour yet, and their table.
   auto key = [&](std::size_t e) {
     const std::size_t b = e - e % 3, t = b + (e + 1) % 3, h = b + (e + 2) % 3;
@@ -130,20 +145,16 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
   return out;
 }
 
-// The points' Delaunay triangulation with vertex i the point input[i]: triangulate() of the
-// points in Hilbert order (BRIO's), so that what reads the triangles' corners reads memory in
-// order; a group of equal points stands as its least input index. The duplicates in `dropped`.
-Triangulation sorted_triangulation(std::span<const Point> points, unsigned threads, std::vector<std::uint32_t>& input,
-                                   std::vector<Point>& sorted, std::vector<Duplicate>& dropped) {
-  const auto n = static_cast<VertexId>(points.size());
-  input = brio_order(points.data(), n, 0x5eed, threads);
-  resize_present(sorted, n, threads);
-  parallel_for(n, threads, 65536, [&](std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i < to; ++i) sorted[i] = points[input[i]];
-  });
+// The points' Delaunay triangulation with vertex v the point in.order[v] (in.points[v]):
+// triangulate() numbering the vertices in its insertion order (BRIO's, along the Hilbert
+// curve), so that what reads the triangles' corners reads memory in order; a group of equal
+// points stands as its least input index. The duplicates in `dropped`.
+Triangulation sorted_triangulation(std::span<const Point> points, unsigned threads, InOrder& in,
+                                   std::vector<Duplicate>& dropped) {
   Options options;
   options.threads = threads;
-  Triangulation p = triangulate(sorted, options);
+  Triangulation p = triangulate_in_order(points, options, in);
+  std::vector<std::uint32_t>& input = in.order;
   // Each group (by the place that stands for it) and its members' input indices.
   std::vector<std::pair<VertexId, VertexId>> groups;
   for (const Duplicate& d : p.duplicates)
@@ -160,58 +171,73 @@ Triangulation sorted_triangulation(std::span<const Point> points, unsigned threa
   return p;
 }
 
+// The band's triangles with margin m (Builder::band), whether they want the exact validator;
+// none, with m grown, where m was too narrow.
+struct Band {
+  std::optional<PeriodicTriangulation> rim;
+  bool verify = false;
+};
+Band band_part(std::span<const Point> points, const PeriodicDomain& d, double& m, unsigned threads) {
+  std::vector<VertexId> band;
+  for (VertexId i = 0; i < points.size(); ++i) {
+    const double x = points[i].x - d.origin.x, y = points[i].y - d.origin.y, reach = m * (1 + 0x1p-20);
+    if (x < reach || d.width - x < reach || y < reach || d.height - y < reach) band.push_back(i);
+  }
+  Builder b(points, d, threads, band);
+  if (!b.band(m)) return {};
+  return {b.take(), b.verify()};
+}
+
 // The periodic triangulation as two parts that do not meet: the triangles of the points' own
 // Delaunay triangulation (triangulate(), on threads) whose circle lies inside the domain — empty
 // of the points, and of every copy, which lie outside the domain — and the periodic triangles
 // whose circle is not inside, from the points within m of the domain's sides and their copies
-// (Builder's band). circle_inside decides for both alike, so each periodic triangle is in one
-// part. Checked as the whole is: 2n triangles, every edge with its twin (then neighbours);
-// nothing (the caller builds the whole) where the points have no triangulation of their own
-// (collinear) or the band would be a quarter of the domain.
+// (Builder's band, its first try on one thread while the others test the circles). circle_inside
+// decides for both alike, so each periodic triangle is in one part. Checked as the whole is:
+// 2n triangles, every edge with its twin (then neighbours); nothing (the caller builds the
+// whole) where the points have no triangulation of their own (collinear) or the band would be
+// a quarter of the domain.
 std::optional<PeriodicTriangulation> split(std::span<const Point> points, const PeriodicDomain& d, double m,
                                            unsigned threads) {
-  std::vector<std::uint32_t> input;
-  std::vector<Point> sorted;
+  if (!(4 * m < std::min(d.width, d.height))) return std::nullopt;
+  InOrder in;
   std::vector<Duplicate> dropped;
-  Triangulation p = sorted_triangulation(points, threads, input, sorted, dropped);
+  Triangulation p = sorted_triangulation(points, threads, in, dropped);
   if (p.size() == 0) return std::nullopt;
   const std::size_t count = p.size(), distinct = points.size() - dropped.size();
-  // Each triangle's least corner (its rotation) and whether its circle is inside: on threads.
-  std::vector<std::uint8_t> first(count), inside(count);
-  parallel_for(count, threads, 16384, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) {
-      const VertexId* t = &p.triangles[3 * k];
-      const VertexId a = input[t[0]], b = input[t[1]], c = input[t[2]];
-      const int low = a < b ? (a < c ? 0 : 2) : (b < c ? 1 : 2);
-      first[k] = static_cast<std::uint8_t>(low);
-      inside[k] = circle_inside(sorted[t[low]], sorted[t[(low + 1) % 3]], sorted[t[(low + 2) % 3]], d);
-    }
+  // Whether each triangle's circle is inside, in stretches that the threads take in turn; the
+  // first thread makes the band's first try before it takes any.
+  std::vector<std::uint8_t> inside(count);
+  std::atomic<std::size_t> next{0};
+  Band band;
+  parallel_for(threads, threads, 1, [&](std::size_t w, std::size_t) {
+    if (w == 0) band = band_part(points, d, m, 1);
+    constexpr std::size_t kStretch = 16384, kAhead = 8;  // (the corners some triangles on asked for ahead)
+    for (std::size_t a; (a = next.fetch_add(kStretch)) < count;)
+      for (std::size_t k = a, e = std::min(count, a + kStretch); k < e; ++k) {
+        if (k + kAhead < e)
+          for (std::size_t j = 0; j < 3; ++j) __builtin_prefetch(&in.points[p.triangles[3 * (k + kAhead) + j]]);
+        const VertexId* t = &p.triangles[3 * k];
+        inside[k] = circle_inside(in.points[t[0]], in.points[t[1]], in.points[t[2]], d);
+      }
   });
-  std::vector<std::int32_t> id(count, -1);
-  std::int32_t kept = 0;
-  for (std::size_t k = 0; k < count; ++k)
-    if (inside[k]) id[k] = kept++;
-  std::vector<Point>().swap(sorted), std::vector<std::uint8_t>().swap(inside);  // memory for the result
-  while (4 * m < std::min(d.width, d.height)) {
-    std::vector<VertexId> band;
-    for (VertexId i = 0; i < points.size(); ++i) {
-      const double x = points[i].x - d.origin.x, y = points[i].y - d.origin.y, reach = m * (1 + 0x1p-20);
-      if (x < reach || d.width - x < reach || y < reach || d.height - y < reach) band.push_back(i);
+  const auto kept = static_cast<std::size_t>(std::count(inside.begin(), inside.end(), std::uint8_t{1}));
+  in.points.reset();  // memory for the result
+  for (;;) {
+    if (band.rim) {
+      if (kept + band.rim->size() == 2 * distinct) {
+        // (join takes p's arrays: whatever it finds, there is no second try)
+        std::optional<PeriodicTriangulation> out = join(p, in.order, inside, std::move(*band.rim), threads);
+        if (!out || (band.verify && !check_periodic(points, d, out->triangles, out->offsets).valid))
+          return std::nullopt;
+        out->duplicates = std::move(dropped);
+        return out;
+      }
+      m *= 2;
     }
-    Builder b(points, d, threads, band);
-    if (!b.band(m)) continue;  // m grown
-    PeriodicTriangulation rim = b.take();
-    if (static_cast<std::size_t>(kept) + rim.size() == 2 * distinct) {
-      // (join takes p's arrays: whatever it finds, there is no second try)
-      std::optional<PeriodicTriangulation> out =
-          join(p, input, first, id, static_cast<std::size_t>(kept), std::move(rim), threads);
-      if (!out || (b.verify() && !check_periodic(points, d, out->triangles, out->offsets).valid)) return std::nullopt;
-      out->duplicates = std::move(dropped);
-      return out;
-    }
-    m *= 2;
+    if (!(4 * m < std::min(d.width, d.height))) return std::nullopt;
+    band = band_part(points, d, m, threads);
   }
-  return std::nullopt;
 }
 
 // Some 2.4 times the diameter of the largest empty circle among n uniform points.

@@ -20,6 +20,7 @@
 #include "output/output.hpp"
 #include "predicates/symbolic.hpp"
 #include "ridt/ridt.hpp"
+#include "runtime/memory.hpp"
 #include "tds/tds.hpp"
 
 namespace ridt::detail {
@@ -116,5 +117,16 @@ Triangulation finish_walking(DelaunayTds& tds, const std::vector<std::uint32_t>&
 /// (the library's own callers then make a Tds without searching each neighbour's edge). Else
 /// they are triangle ids, as triangulate() gives them.
 Triangulation triangulate_linked(std::span<const Point> points, const Options& options, bool& linked);
+
+/// triangulate() (src/triangulate.cpp) with each vertex numbered by its place in the insertion
+/// order: vertex v is input point order.order[v], and order.points[v] that point (the three
+/// after the n points are not points). The duplicates are places too (the least place of a
+/// group standing for it). For a caller that reads the triangles' points: in that order, points
+/// of nearby triangles lie near each other.
+struct InOrder {
+  std::vector<std::uint32_t> order;
+  Block<Point> points;
+};
+Triangulation triangulate_in_order(std::span<const Point> points, const Options& options, InOrder& order);
 
 }  // namespace ridt::detail

@@ -17,6 +17,7 @@
 #include "periodic/periodic.hpp"
 #include "ridt/periodic.hpp"
 #include "ridt/ridt.hpp"
+#include "tds/delaunay.hpp"
 
 namespace ridt {
 namespace {
@@ -261,6 +262,50 @@ TEST(Periodic, DuplicatesKeepTheLeastIndex) {
   EXPECT_EQ(t.duplicates[1].dropped, 501u);
   EXPECT_EQ(t.duplicates[1].kept, 3u);
   EXPECT_EQ(t.duplicates[2].kept, 7u);
+}
+
+// The split way's first step: triangulate() numbering the vertices by their places in the
+// insertion order, with the points in that order (the kernel's copy, or a copy where the kernel
+// scaled them: 2^-1000); the same triangles as triangulate()'s once mapped back, duplicates too.
+TEST(Periodic, PointsTriangulatedInInsertionOrder) {
+  for (const double scale : {1.0, 0x1p-1000})
+    for (const unsigned threads : {1u, 2u}) {
+      std::vector<Point> pts = uniform(20000, 9);
+      for (std::size_t i = 0; i < 300; ++i) pts.push_back(pts[(i * 37) % 20000]);
+      for (Point& p : pts) p = {p.x * scale, p.y * scale};
+      Options options;
+      options.threads = threads;
+      detail::InOrder in;
+      const Triangulation t = detail::triangulate_in_order(pts, options, in);
+      const Triangulation plain = triangulate(pts, options);
+      ASSERT_EQ(in.order.size(), pts.size());
+      std::vector<VertexId> sorted = in.order;
+      std::sort(sorted.begin(), sorted.end());
+      for (VertexId i = 0; i < pts.size(); ++i) ASSERT_EQ(sorted[i], i);
+      for (VertexId v = 0; v < pts.size(); ++v) ASSERT_EQ(in.points[v], pts[in.order[v]]);
+      ASSERT_EQ(t.duplicates.size(), plain.duplicates.size());
+      std::vector<VertexId> least(pts.size());
+      std::iota(least.begin(), least.end(), VertexId{0});
+      for (const Duplicate& d : plain.duplicates) least[d.dropped] = d.kept;
+      for (const Duplicate& d : t.duplicates) {  // places, the least place of a group standing
+        EXPECT_LT(d.kept, d.dropped);
+        EXPECT_EQ(least[in.order[d.dropped]], least[in.order[d.kept]]);
+      }
+      auto triples = [&](const Triangulation& x, bool places) {
+        std::set<std::array<VertexId, 3>> out;
+        for (std::size_t f = 0; f < x.size(); ++f) {
+          std::array<VertexId, 3> c;
+          for (int i = 0; i < 3; ++i) {
+            const VertexId v = x.triangles[3 * f + i];
+            c[i] = places ? least[in.order[v]] : v;
+          }
+          std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+          out.insert(c);
+        }
+        return out;
+      };
+      EXPECT_EQ(triples(t, true), triples(plain, false)) << "scale " << scale << ", threads " << threads;
+    }
 }
 
 TEST(Periodic, BadInputIsRefused) {
