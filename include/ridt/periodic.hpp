@@ -60,6 +60,16 @@ struct PeriodicTriangulation {
 PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
                                            unsigned threads = 0);
 
+/// The choices of a periodic triangulation; the triangles are the same whichever is made.
+struct PeriodicOptions {
+  unsigned threads = 0;  ///< 0: the machine's hardware threads
+  /// Fill `neighbors` and `neighbor_offsets`. Off, they are left empty: a caller that needs only
+  /// the triangles (a file of them, say) spares their memory (a third of the result's).
+  bool neighbors = true;
+};
+PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
+                                           const PeriodicOptions& options);
+
 /// The periodic Voronoi diagram: vertex t the circumcentre of triangle t as its offsets place
 /// it (each coordinate within 2^-44 of the circumradius, and the rounding of the copies'
 /// coordinates), and each point's cell the circumcentres round it counter-clockwise, each

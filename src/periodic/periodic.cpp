@@ -86,7 +86,7 @@ struct EdgeKeyHash {
 // several.
 std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<std::uint32_t>& input,
                                           const std::vector<std::uint8_t>& inside, PeriodicTriangulation rim,
-                                          unsigned threads) {
+                                          unsigned threads, bool neighbors) {
   const std::size_t count = inside.size();
   std::vector<std::size_t> place;  // rim triangle r's
   for (std::size_t k = 0; k < count; ++k)
@@ -115,7 +115,8 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
     }
   });
   out.triangles.resize(3 * total), out.neighbors.resize(3 * total);
-  resize_present(out.offsets, 3 * total, threads), resize_present(out.neighbor_offsets, 3 * total, threads);
+  resize_present(out.offsets, 3 * total, threads);
+  if (neighbors) resize_present(out.neighbor_offsets, 3 * total, threads);
   for (std::size_t r = 0; r < rim.size(); ++r)
     for (std::size_t j = 0; j < 3; ++j) {
       const std::size_t e = 3 * place[r] + j;
@@ -139,8 +140,9 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
     if (found == table.end()) return std::nullopt;
     const std::size_t f = found->second, head = e - e % 3 + (e + 2) % 3, tail = f - f % 3 + (f + 1) % 3;
     out.neighbors[e] = static_cast<std::int32_t>(f / 3);
-    out.neighbor_offsets[e] = {out.offsets[head].dx - out.offsets[tail].dx,
-                               out.offsets[head].dy - out.offsets[tail].dy};
+    if (neighbors)
+      out.neighbor_offsets[e] = {out.offsets[head].dx - out.offsets[tail].dx,
+                                 out.offsets[head].dy - out.offsets[tail].dy};
   }
   return out;
 }
@@ -198,7 +200,7 @@ Band band_part(std::span<const Point> points, const PeriodicDomain& d, double& m
 // whole) where the points have no triangulation of their own (collinear) or the band would be
 // a quarter of the domain.
 std::optional<PeriodicTriangulation> split(std::span<const Point> points, const PeriodicDomain& d, double m,
-                                           unsigned threads) {
+                                           unsigned threads, bool neighbors) {
   if (!(4 * m < std::min(d.width, d.height))) return std::nullopt;
   InOrder in;
   std::vector<Duplicate> dropped;
@@ -227,7 +229,7 @@ std::optional<PeriodicTriangulation> split(std::span<const Point> points, const 
     if (band.rim) {
       if (kept + band.rim->size() == 2 * distinct) {
         // (join takes p's arrays: whatever it finds, there is no second try)
-        std::optional<PeriodicTriangulation> out = join(p, in.order, inside, std::move(*band.rim), threads);
+        std::optional<PeriodicTriangulation> out = join(p, in.order, inside, std::move(*band.rim), threads, neighbors);
         if (!out || (band.verify && !check_periodic(points, d, out->triangles, out->offsets).valid))
           return std::nullopt;
         out->duplicates = std::move(dropped);
@@ -249,9 +251,10 @@ double first_margin(std::size_t points, const PeriodicDomain& d) {
 }  // namespace
 
 std::optional<PeriodicTriangulation> triangulate_periodic_split(std::span<const Point> points,
-                                                                const PeriodicDomain& domain, unsigned threads) {
+                                                                const PeriodicDomain& domain, unsigned threads,
+                                                                bool neighbors) {
   check_input(points, domain);
-  return split(points, domain, first_margin(points.size(), domain), thread_count(threads));
+  return split(points, domain, first_margin(points.size(), domain), thread_count(threads), neighbors);
 }
 
 PeriodicTriangulation triangulate_periodic_whole(std::span<const Point> points, const PeriodicDomain& domain,
@@ -268,12 +271,19 @@ PeriodicTriangulation triangulate_periodic_whole(std::span<const Point> points, 
 }  // namespace detail
 
 PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
-                                           unsigned threads) {
+                                           const PeriodicOptions& options) {
   using namespace detail;
-  if (points.size() >= kSplitPoints)
-    if (std::optional<PeriodicTriangulation> t = triangulate_periodic_split(points, domain, threads))
-      return std::move(*t);
-  return triangulate_periodic_whole(points, domain, threads);
+  std::optional<PeriodicTriangulation> t;
+  if (points.size() >= kSplitPoints) t = triangulate_periodic_split(points, domain, options.threads, options.neighbors);
+  if (!t) t = triangulate_periodic_whole(points, domain, options.threads);
+  if (!options.neighbors)
+    std::vector<std::int32_t>().swap(t->neighbors), std::vector<Offset>().swap(t->neighbor_offsets);
+  return std::move(*t);
+}
+
+PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
+                                           unsigned threads) {
+  return triangulate_periodic(points, domain, PeriodicOptions{threads, true});
 }
 
 }  // namespace ridt

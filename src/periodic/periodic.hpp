@@ -21,8 +21,10 @@ std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, st
 /// the domain's sides (nothing where the points have no triangulation of their own, or the
 /// band would cover much of the domain), and the triangulation of all the points and their
 /// copies near the domain (any points).
+/// Without `neighbors`, the split way leaves neighbor_offsets empty (the neighbours found still).
 std::optional<PeriodicTriangulation> triangulate_periodic_split(std::span<const Point> points,
-                                                                const PeriodicDomain& domain, unsigned threads);
+                                                                const PeriodicDomain& domain, unsigned threads,
+                                                                bool neighbors = true);
 PeriodicTriangulation triangulate_periodic_whole(std::span<const Point> points, const PeriodicDomain& domain,
                                                  unsigned threads);
 

@@ -61,7 +61,9 @@ int run_periodic(const PeriodicArgs& a) {
   const unsigned threads = thread_count(a.threads);
   const PeriodicDomain domain = domain_option(a.domain);
   const io::PointFile in = io::read_points(a.input, threads);
-  const PeriodicTriangulation t = triangulate_periodic(in.points, domain, threads);
+  // (neighbours only where they are written, or make the cells)
+  const PeriodicTriangulation t =
+      triangulate_periodic(in.points, domain, PeriodicOptions{threads, !a.neighbors.empty() || !a.cells.empty()});
   if (!t.duplicates.empty())
     std::fprintf(stderr, "ridt: %zu duplicate point%s dropped (the first of equal points stands for them)\n",
                  t.duplicates.size(), t.duplicates.size() == 1 ? "" : "s");
