@@ -79,6 +79,34 @@ struct EdgeKeyHash {
   }
 };
 
+// Every edge of `out` without a neighbour yet linked to its twin (its neighbour offset too,
+// where `neighbors` asks for them); false where one has none, or several.
+bool link_open_edges(PeriodicTriangulation& out, bool neighbors) {
+  // The edges without a neighbour, and their table.
+  auto key = [&](std::size_t e) {
+    const std::size_t b = e - e % 3, t = b + (e + 1) % 3, h = b + (e + 2) % 3;
+    return EdgeKey{out.triangles[t], out.triangles[h], out.offsets[h].dx - out.offsets[t].dx,
+                   out.offsets[h].dy - out.offsets[t].dy};
+  };
+  std::vector<std::size_t> open;
+  for (std::size_t e = 0; e < out.triangles.size(); ++e)
+    if (out.neighbors[e] < 0) open.push_back(e);
+  std::unordered_map<EdgeKey, std::size_t, EdgeKeyHash> table(2 * open.size());
+  for (const std::size_t e : open)
+    if (!table.emplace(key(e), e).second) return false;
+  for (const std::size_t e : open) {
+    const EdgeKey k = key(e);
+    const auto found = table.find({k.head, k.tail, -k.dx, -k.dy});
+    if (found == table.end()) return false;
+    const std::size_t f = found->second, head = e - e % 3 + (e + 2) % 3, tail = f - f % 3 + (f + 1) % 3;
+    out.neighbors[e] = static_cast<std::int32_t>(f / 3);
+    if (neighbors)
+      out.neighbor_offsets[e] = {out.offsets[head].dx - out.offsets[tail].dx,
+                                 out.offsets[head].dy - out.offsets[tail].dy};
+  }
+  return true;
+}
+
 // The two parts as one, over p's arrays (made for the 2n + 1 slots of n points): the triangles
 // of `p` that are `inside` keep their places (their least corner first, at offset 0; their
 // neighbours p's where those are inside too), the rim's fill the others' places, then follow.
@@ -122,28 +150,7 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
       const std::size_t e = 3 * place[r] + j;
       out.triangles[e] = rim.triangles[3 * r + j], out.offsets[e] = rim.offsets[3 * r + j], out.neighbors[e] = -1;
     }
-  // The edges without a neighbour yet, and their table.
-  auto key = [&](std::size_t e) {
-    const std::size_t b = e - e % 3, t = b + (e + 1) % 3, h = b + (e + 2) % 3;
-    return EdgeKey{out.triangles[t], out.triangles[h], out.offsets[h].dx - out.offsets[t].dx,
-                   out.offsets[h].dy - out.offsets[t].dy};
-  };
-  std::vector<std::size_t> open;
-  for (std::size_t e = 0; e < 3 * total; ++e)
-    if (out.neighbors[e] < 0) open.push_back(e);
-  std::unordered_map<EdgeKey, std::size_t, EdgeKeyHash> table(2 * open.size());
-  for (const std::size_t e : open)
-    if (!table.emplace(key(e), e).second) return std::nullopt;
-  for (const std::size_t e : open) {
-    const EdgeKey k = key(e);
-    const auto found = table.find({k.head, k.tail, -k.dx, -k.dy});
-    if (found == table.end()) return std::nullopt;
-    const std::size_t f = found->second, head = e - e % 3 + (e + 2) % 3, tail = f - f % 3 + (f + 1) % 3;
-    out.neighbors[e] = static_cast<std::int32_t>(f / 3);
-    if (neighbors)
-      out.neighbor_offsets[e] = {out.offsets[head].dx - out.offsets[tail].dx,
-                                 out.offsets[head].dy - out.offsets[tail].dy};
-  }
+  if (!link_open_edges(out, neighbors)) return std::nullopt;
   return out;
 }
 
