@@ -107,14 +107,35 @@ bool link_open_edges(PeriodicTriangulation& out, bool neighbors) {
   return true;
 }
 
-// The two parts as one, over p's arrays (made for the 2n + 1 slots of n points): the triangles
-// of `p` that are `inside` keep their places (their least corner first, at offset 0; their
-// neighbours p's where those are inside too), the rim's fill the others' places, then follow.
-// Every other neighbour is found through its edge's twin; nothing where one has none, or
-// several.
-std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<std::uint32_t>& input,
-                                          const std::vector<std::uint8_t>& inside, PeriodicTriangulation rim,
-                                          unsigned threads, bool neighbors) {
+// Triangles [from, to) of p: whether each one's circle is inside (`inside`); those that are
+// written in output terms in place: input indices, the least first (their neighbours turned with
+// them, still p's ids).
+void sort_out(Triangulation& p, const InOrder& in, const PeriodicDomain& d, std::vector<std::uint8_t>& inside,
+              std::size_t from, std::size_t to) {
+  constexpr std::size_t kAhead = 8;  // (the corners of a triangle some way on asked for ahead)
+  for (std::size_t k = from; k < to; ++k) {
+    if (k + kAhead < to)
+      for (std::size_t j = 0; j < 3; ++j) {
+        const VertexId v = p.triangles[3 * (k + kAhead) + j];
+        __builtin_prefetch(&in.points[v]), __builtin_prefetch(&in.order[v]);
+      }
+    VertexId* t = &p.triangles[3 * k];
+    inside[k] = circle_inside(in.points[t[0]], in.points[t[1]], in.points[t[2]], d);
+    if (!inside[k]) continue;
+    std::int32_t* u = &p.neighbors[3 * k];
+    const VertexId w[3] = {in.order[t[0]], in.order[t[1]], in.order[t[2]]};
+    const std::int32_t v[3] = {u[0], u[1], u[2]};
+    const int low = w[0] < w[1] ? (w[0] < w[2] ? 0 : 2) : (w[1] < w[2] ? 1 : 2);
+    for (int j = 0, i = low; j < 3; ++j, i = i == 2 ? 0 : i + 1) t[j] = w[i], u[j] = v[i];
+  }
+}
+
+// The two parts as one, over p's arrays (made for the 2n + 1 slots of n points), p's triangles
+// sorted out (sort_out): those `inside` keep their places and their neighbours where those are
+// inside too, the rim's fill the others' places, then follow. Every other neighbour is found
+// through its edge's twin; nothing where one has none, or several.
+std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<std::uint8_t>& inside,
+                                          PeriodicTriangulation rim, unsigned threads, bool neighbors) {
   const std::size_t count = inside.size();
   std::vector<std::size_t> place;  // rim triangle r's
   for (std::size_t k = 0; k < count; ++k)
@@ -122,26 +143,17 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
   // (the points' own triangulation has 2n - h - 2 triangles, h >= 3 on its hull: the rim has more)
   if (rim.size() < place.size()) return std::nullopt;
   const std::size_t holes = place.size(), total = count + rim.size() - holes;
+  for (std::size_t h = 0; h < holes; ++h)  // the links into the triangles left out cut
+    for (std::size_t j = 0; j < 3; ++j)
+      if (const std::int32_t u = p.neighbors[3 * place[h] + j]; u >= 0 && inside[static_cast<std::size_t>(u)])
+        for (std::size_t i = 0; i < 3; ++i)
+          if (std::int32_t& back = p.neighbors[3 * static_cast<std::size_t>(u) + i];
+              back == static_cast<std::int32_t>(place[h]))
+            back = -1;
   while (place.size() < rim.size()) place.push_back(count + place.size() - holes);
   PeriodicTriangulation out;
   out.domain = rim.domain;
   out.triangles = std::move(p.triangles), out.neighbors = std::move(p.neighbors);
-  parallel_for(count, threads, 16384, [&](std::size_t from, std::size_t to) {
-    constexpr std::size_t kAhead = 8;
-    for (std::size_t k = from; k < to; ++k) {
-      if (k + kAhead < to)
-        for (std::size_t j = 0; j < 3; ++j) __builtin_prefetch(&input[out.triangles[3 * (k + kAhead) + j]]);
-      if (!inside[k]) continue;
-      VertexId* t = &out.triangles[3 * k];
-      std::int32_t* u = &out.neighbors[3 * k];
-      const VertexId a = input[t[0]], b = input[t[1]], c = input[t[2]];
-      const std::size_t low = a < b ? (a < c ? 0 : 2) : (b < c ? 1 : 2);
-      const VertexId w[3] = {a, b, c};
-      std::int32_t v[3];
-      for (std::size_t j = 0; j < 3; ++j) v[j] = u[j] >= 0 && inside[static_cast<std::size_t>(u[j])] ? u[j] : -1;
-      for (std::size_t j = 0; j < 3; ++j) t[j] = w[(low + j) % 3], u[j] = v[(low + j) % 3];
-    }
-  });
   out.triangles.resize(3 * total), out.neighbors.resize(3 * total);
   resize_present(out.offsets, 3 * total, threads);
   if (neighbors) resize_present(out.neighbor_offsets, 3 * total, threads);
@@ -161,6 +173,7 @@ std::optional<PeriodicTriangulation> join(Triangulation& p, const std::vector<st
 Triangulation sorted_triangulation(std::span<const Point> points, unsigned threads, InOrder& in,
                                    std::vector<Duplicate>& dropped) {
   Options options;
+  options.method = Method::Auto;  // (the partition method on several threads)
   options.threads = threads;
   Triangulation p = triangulate_in_order(points, options, in);
   std::vector<std::uint32_t>& input = in.order;
@@ -214,29 +227,24 @@ std::optional<PeriodicTriangulation> split(std::span<const Point> points, const 
   Triangulation p = sorted_triangulation(points, threads, in, dropped);
   if (p.size() == 0) return std::nullopt;
   const std::size_t count = p.size(), distinct = points.size() - dropped.size();
-  // Whether each triangle's circle is inside, in stretches that the threads take in turn; the
-  // first thread makes the band's first try before it takes any.
+  // Whether each triangle's circle is inside (sort_out), in stretches that the threads take in
+  // turn; the first thread makes the band's first try before it takes any.
   std::vector<std::uint8_t> inside(count);
   std::atomic<std::size_t> next{0};
   Band band;
   parallel_for(threads, threads, 1, [&](std::size_t w, std::size_t) {
     if (w == 0) band = band_part(points, d, m, 1);
-    constexpr std::size_t kStretch = 16384, kAhead = 8;  // (the corners some triangles on asked for ahead)
+    constexpr std::size_t kStretch = 16384;
     for (std::size_t a; (a = next.fetch_add(kStretch)) < count;)
-      for (std::size_t k = a, e = std::min(count, a + kStretch); k < e; ++k) {
-        if (k + kAhead < e)
-          for (std::size_t j = 0; j < 3; ++j) __builtin_prefetch(&in.points[p.triangles[3 * (k + kAhead) + j]]);
-        const VertexId* t = &p.triangles[3 * k];
-        inside[k] = circle_inside(in.points[t[0]], in.points[t[1]], in.points[t[2]], d);
-      }
+      sort_out(p, in, d, inside, a, std::min(count, a + kStretch));
   });
   const auto kept = static_cast<std::size_t>(std::count(inside.begin(), inside.end(), std::uint8_t{1}));
-  in.points.reset();  // memory for the result
+  in.points.reset(), std::vector<std::uint32_t>().swap(in.order);  // memory for the result
   for (;;) {
     if (band.rim) {
       if (kept + band.rim->size() == 2 * distinct) {
         // (join takes p's arrays: whatever it finds, there is no second try)
-        std::optional<PeriodicTriangulation> out = join(p, in.order, inside, std::move(*band.rim), threads, neighbors);
+        std::optional<PeriodicTriangulation> out = join(p, inside, std::move(*band.rim), threads, neighbors);
         if (!out || (band.verify && !check_periodic(points, d, out->triangles, out->offsets).valid))
           return std::nullopt;
         out->duplicates = std::move(dropped);

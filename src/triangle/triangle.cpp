@@ -95,7 +95,7 @@ void carry_attributes(const Input& in, const ConstrainedTriangulation& t, const 
   out.vertex_attributes = in.vertex_attributes;
   if (count == 0 || t.steiner.empty()) return;
   Options plain;
-  plain.threads = o.threads;
+  plain.method = Method::Auto, plain.threads = o.threads;
   const Triangulation d = triangulate(in.vertices, plain);
   std::vector<double> added = interpolate_linear(in.vertices, d, {in.vertex_attributes, count}, t.steiner,
                                                  std::numeric_limits<double>::quiet_NaN(), o.threads);
