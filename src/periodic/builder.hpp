@@ -9,10 +9,11 @@
 // its least corner.
 //
 // Two uses. Whole: every point and the copies within a margin m of the domain; every circle kept
-// must lie inside the domain grown by m, and their count be 2n (the torus's). Band: only the
-// points within m of the domain's sides and their copies; kept are the triangles whose circle
-// is not inside the domain (`inside`), each circle at most m across (so that it lies where the
-// band's copies are complete: within m of the sides); the caller adds the triangles inside.
+// must lie inside the domain grown by m, and their count be 2n (the torus's). Strip: the copies
+// of some points within m of the line of one side of the domain (x = x0 or y = y0), along the
+// whole side and m beyond its ends; kept is every triangle whose circle lies in the strip (where
+// its copies are complete), moved so that its least corner is a point as given, unless its
+// circle is inside the domain (`inside`: the caller has those).
 //
 // The predicates are those of the ordinary triangulation on the copies' true coordinates
 // (predicates/shifted.hpp): the lexicographic order that keys the perturbation does not change
@@ -44,7 +45,7 @@ namespace ridt::detail {
 
 /// Whether the circle of triangle (a, b, c) (points as given, exact) lies inside the domain,
 /// clear of its sides by the rounding of the test. The same test decides for the Delaunay
-/// triangles of the points and the band's alike: it takes the corners from the least in
+/// triangles of the points and the strips' alike: it takes the corners from the least in
 /// lexicographic order (a rotation: the answer does not depend on where a triangle starts).
 ///
 /// Most triangles lie far from the sides, and for them a test without a division decides: the
@@ -84,7 +85,7 @@ VertexId root(std::vector<VertexId>& up, VertexId i) {
 
 class Builder {
  public:
-  /// The whole: every point; a band: the points `subset` names.
+  /// The whole: every point; a strip: the points `subset` names.
   Builder(std::span<const Point> points, const PeriodicDomain& d, unsigned threads,
           std::span<const VertexId> subset = {})
       : points_(points), subset_(subset), d_(d), l_{d.width, d.height}, threads_(threads) {}
@@ -92,30 +93,40 @@ class Builder {
   // One attempt with margin m: true when the triangles kept are the whole periodic
   // triangulation; else `m` is what the next attempt should take.
   bool attempt(double& m) {
-    copy(m);
+    copy({d_.origin.x - m, d_.origin.y - m}, {d_.origin.x + d_.width + m, d_.origin.y + d_.height + m}, m, true);
     insert_all();
-    if (keep(m, false) && link() && (!verify_ || check_periodic(points_, d_, out_.triangles, out_.offsets).valid))
-      return true;
+    if (keep(m) && link() && (!verify_ || check_periodic(points_, d_, out_.triangles, out_.offsets).valid)) return true;
     if (!grown_) m *= 2;
     return false;
   }
 
-  /// The band's triangles with m: true with them in take()'s triangles and offsets (no
-  /// neighbours), and whether they want the exact validator in verify(); else `m` is what the
-  /// next attempt should take.
-  bool band(double& m) {
-    copy(m);
+  /// The strip of half-width m across the side x = x0 (`across_x`) or y = y0: its triangles in
+  /// take()'s triangles and offsets (no neighbours), their least corner first at offset 0, and
+  /// whether they want the exact validator in verify(). A triangle may come more than once.
+  void strip(double m, bool across_x) {
+    const Point o = d_.origin;
+    const Point lo{o.x - m, o.y - m},
+        hi{across_x ? o.x + m : o.x + d_.width + m, across_x ? o.y + d_.height + m : o.y + m};
+    copy(lo, hi, m, false);
     insert_all();
-    if (!keep(m, true)) return false;
-    const std::size_t count = slot_.size();
-    out_ = {};
-    out_.triangles.resize(3 * count), out_.offsets.resize(3 * count);
-    for (std::size_t k = 0; k < count; ++k)
+    const double edge = 4 * kEps * (std::max(std::fabs(o.x), std::fabs(o.y)) + d_.width + d_.height + 2 * m);
+    out_ = {}, verify_ = false;
+    for (TriangleId t = 0; t < tds_.slots(); ++t) {
+      const VertexId* c = tds_.corners(t);
+      if (c[0] >= n_ || c[1] >= n_ || c[2] >= n_) continue;  // a free slot (kNoVertex) or bounding
+      const Reach r = reach(c, lo, hi);
+      if (!(r.bare < -edge)) continue;  // beyond the strip, or in doubt
+      verify_ = verify_ || !(r.sure < -edge);
+      const int low = least(c);
+      const Offset shift{s_[c[low]].dx, s_[c[low]].dy};
+      if (same_shift(s_[c[0]], s_[c[1]]) && same_shift(s_[c[0]], s_[c[2]]) &&
+          circle_inside(s_[c[0]].p, s_[c[1]].p, s_[c[2]].p, d_))
+        continue;  // the caller's, from the points' triangulation
       for (int j = 0; j < 3; ++j) {
-        const VertexId v = tds_.vertex(slot_[k], (first_[k] + j) % 3);
-        out_.triangles[3 * k + j] = index(v), out_.offsets[3 * k + j] = {s_[v].dx, s_[v].dy};
+        const VertexId v = c[(low + j) % 3];
+        out_.triangles.push_back(index(v)), out_.offsets.push_back({s_[v].dx - shift.dx, s_[v].dy - shift.dy});
       }
-    return true;
+    }
   }
   bool verify() const { return verify_; }
 
@@ -127,25 +138,26 @@ class Builder {
   }
 
  private:
-  // S: every copy of every point that lies within m of the domain (by its rounded place: the
-  // circles kept stay clear of the margin's edge by more than that rounding), then the three
-  // bounding vertices; vertex ids in a biased randomized order along the Hilbert curve.
-  void copy(double m) {
-    const auto n = static_cast<VertexId>(subset_.empty() ? points_.size() : subset_.size());
+  // S: every copy of the points that lies in [lo, hi] (by its rounded place: the circles kept
+  // stay clear of the edge by more than that rounding), every point as given too where `given`,
+  // then the three bounding vertices; vertex ids in a biased randomized order along the Hilbert
+  // curve. [lo, hi] reaches at most m beyond the domain.
+  void copy(Point lo, Point hi, double m, bool given) {
+    const auto all = static_cast<VertexId>(subset_.empty() ? points_.size() : subset_.size());
     auto point = [&](VertexId k) { return subset_.empty() ? k : subset_[k]; };  // copy k < n's input index
     const auto kx = static_cast<std::int32_t>(std::ceil(m / d_.width)),
                ky = static_cast<std::int32_t>(std::ceil(m / d_.height));
-    lo_ = {d_.origin.x - m, d_.origin.y - m};
-    hi_ = {d_.origin.x + d_.width + m, d_.origin.y + d_.height + m};
+    lo_ = lo, hi_ = hi;
     // Copy k < n is point k (of the subset) as given; the others follow.
+    const VertexId n = given ? all : 0;
     std::vector<Shifted> more;
     std::vector<VertexId> of;
-    for (VertexId k = 0; k < n; ++k)
+    for (VertexId k = 0; k < all; ++k)
       for (std::int32_t dy = -ky; dy <= ky; ++dy)
         for (std::int32_t dx = -kx; dx <= kx; ++dx) {
           const Shifted c{points_[point(k)], dx, dy};
           const Point q = rounded(c, l_);
-          if ((dx != 0 || dy != 0) && q.x >= lo_.x && q.x <= hi_.x && q.y >= lo_.y && q.y <= hi_.y)
+          if ((dx != 0 || dy != 0 || !given) && q.x >= lo_.x && q.x <= hi_.x && q.y >= lo_.y && q.y <= hi_.y)
             more.push_back(c), of.push_back(point(k));
         }
     n_ = n + static_cast<VertexId>(more.size());
@@ -217,7 +229,7 @@ class Builder {
   // The triangles whose least corner is a point as given, in their slots' order (the fans of
   // successive insertions, near each other), that corner first; false (and the next margin in
   // m) when a circle reaches too far or their count is not 2n.
-  bool keep(double& m, bool band) {
+  bool keep(double& m) {
     // Where a copy near the margin's edge is taken or left by its rounded place: two units in
     // the last place of the largest coordinate.
     const double edge =
@@ -228,6 +240,7 @@ class Builder {
     resize_present(id_, tds_.slots(), threads_), resize_present(around_, n_, threads_);
     std::fill(around_.begin(), around_.end(), kNoTriangle);
     slot_.clear(), first_.clear();
+    const Point end{d_.origin.x + d_.width, d_.origin.y + d_.height};
     for (TriangleId t = 0; t < tds_.slots(); ++t) {
       const VertexId* c = tds_.corners(t);
       id_[t] = -1;
@@ -235,17 +248,10 @@ class Builder {
       around_[c[0]] = around_[c[1]] = around_[c[2]] = t;
       const int low = least(c);
       if (s_[c[low]].dx != 0 || s_[c[low]].dy != 0) continue;
-      if (band && unmoved_inside(c)) continue;  // the caller's, from the points' triangulation
-      const Reach r = reach(c, band);
+      const Reach r = reach(c, d_.origin, end);
       need = {std::max(need.bare, r.bare + edge), std::max(need.sure, r.sure + edge)};
       id_[t] = static_cast<std::int32_t>(slot_.size());
       slot_.push_back(t), first_.push_back(static_cast<std::uint8_t>(low));
-    }
-    if (band) {
-      if (need.sure <= m) return true;
-      if (need.bare <= m) return verify_ = true;
-      m = std::max(2 * m, 1.25 * need.bare);
-      return !(grown_ = true);
     }
     std::size_t distinct = 0;
     for (VertexId i = 0; i < up_.size(); ++i) distinct += root(up_, i) == i;
@@ -259,14 +265,14 @@ class Builder {
     return !(grown_ = true);
   }
 
-  // How far beyond the domain a kept triangle's circle reaches: as computed (bare), and with
+  // How far beyond the rectangle [lo, hi] a triangle's circle reaches: as computed (bare), and with
   // room for the rounding of the corners at copies (sure). A corner moved by delta moves the
   // centre by up to some delta R / h (circumradius over the corner's height; first order, with
   // a factor 2 to spare); a corner at a point as given is exact.
   struct Reach {
     double bare, sure;
   };
-  Reach reach(const VertexId* c, bool band) const {
+  Reach reach(const VertexId* c, Point lo, Point hi) const {
     Point p[3];
     for (int i = 0; i < 3; ++i) p[i] = rounded(s_[c[i]], l_);
     const Point o = circumcentre_bounded(p[0], p[1], p[2]);
@@ -281,10 +287,7 @@ class Builder {
           2 * kEps * (std::fabs(q.dx * l_.width) + std::fabs(q.dy * l_.height) + std::fabs(p[i].x) + std::fabs(p[i].y));
       slack += delta * (1 + 2 * r * std::sqrt(squared(p[(i + 1) % 3], p[(i + 2) % 3])) / twice_area);
     }
-    if (band) return {2 * r, 2 * r + slack};  // across: the band's copies are complete within m of a side
-    const double x0 = d_.origin.x, y0 = d_.origin.y;
-    const double out =
-        std::max({x0 - (o.x - r), (o.x + r) - (x0 + d_.width), y0 - (o.y - r), (o.y + r) - (y0 + d_.height)});
+    const double out = std::max({lo.x - (o.x - r), (o.x + r) - hi.x, lo.y - (o.y - r), (o.y + r) - hi.y});
     if (!std::isfinite(out + slack))
       return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     return {out, out + slack};
@@ -389,14 +392,6 @@ class Builder {
           ((s_[v].dy - shift.dy) & 0xfff);
     }
     return out;
-  }
-
-  // Whether triangle c's corners are all points as given and its circle lies inside the domain
-  // (circle_inside).
-  bool unmoved_inside(const VertexId* c) {
-    for (int j = 0; j < 3; ++j)
-      if (s_[c[j]].dx != 0 || s_[c[j]].dy != 0) return false;
-    return circle_inside(s_[c[0]].p, s_[c[1]].p, s_[c[2]].p, d_);
   }
 
   // A vertex's input index: its group's least where the same point was given more than once.

@@ -13,17 +13,21 @@
 // The split way (from kSplitPoints points on): a triangle whose circle lies inside the domain
 // holds no copy (they all lie outside) and, in the points' own Delaunay triangulation, no
 // point: so that triangulation — triangulate(), the library's fastest, on threads — gives all
-// of those. The rest have circles that cross the domain's sides: at most the largest circle's
-// diameter from them, so they are the whole way's triangles over the points within m of the
-// sides (a band, some 4 m / side of the points) whose circles are not inside and at most m
-// across. One test (circle_inside), on the same arguments, sorts the triangles of both, so each
-// periodic triangle comes once; the two parts are joined by the twins of the edges between
-// them, and checked as the whole way's are.
+// of those. The rest have circles that cross the domain's sides (or come within the rounding of
+// them): a translate of each lies across the side x = x0 or the side y = y0 (the opposite sides
+// are the same on the torus), within its diameter of it. So they are the triangles of two
+// strips, each the copies within m of one of those sides (some 2 m / side of the points, along
+// the side and m beyond its ends) on the one mutable triangulation, whose circles lie in the
+// strip and are not inside: complete where no such circle is more than m across. One test
+// (circle_inside), on the same arguments, sorts the triangles of both parts, so each periodic
+// triangle comes once; the two parts are joined by the twins of the edges between them, and
+// checked as the whole way's are.
 //
 // Both stand on exact predicates of the copies' true coordinates (predicates/shifted.hpp);
 // only where a circle lies is measured in rounded arithmetic, with room for its rounding, and
 // where that room alone leaves a circle in doubt the result is checked by the exact validator.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <optional>
@@ -62,7 +66,7 @@ void check_input(std::span<const Point> points, const PeriodicDomain& d) {
   }
 }
 
-// From this many points on, the Delaunay triangulation of the points and a band (split).
+// From this many points on, the Delaunay triangulation of the points and two strips (split).
 constexpr std::size_t kSplitPoints = 4096;
 
 // The ends of a directed edge and the offset from its tail to its head: the key its twin is
@@ -193,32 +197,64 @@ Triangulation sorted_triangulation(std::span<const Point> points, unsigned threa
   return p;
 }
 
-// The band's triangles with margin m (Builder::band), whether they want the exact validator;
-// none, with m grown, where m was too narrow.
-struct Band {
-  std::optional<PeriodicTriangulation> rim;
+// The strip of half-width m across the side x = x0 (`across_x`) or y = y0 (Builder::strip): the
+// points within m of that side or the opposite one, their copies there.
+struct Strip {
+  PeriodicTriangulation rim;
   bool verify = false;
 };
-Band band_part(std::span<const Point> points, const PeriodicDomain& d, double& m, unsigned threads) {
-  std::vector<VertexId> band;
+Strip strip(std::span<const Point> points, const PeriodicDomain& d, double m, bool across_x) {
+  std::vector<VertexId> near;
+  const double reach = m * (1 + 0x1p-20);
   for (VertexId i = 0; i < points.size(); ++i) {
-    const double x = points[i].x - d.origin.x, y = points[i].y - d.origin.y, reach = m * (1 + 0x1p-20);
-    if (x < reach || d.width - x < reach || y < reach || d.height - y < reach) band.push_back(i);
+    const double t = across_x ? points[i].x - d.origin.x : points[i].y - d.origin.y;
+    if (t < reach || (across_x ? d.width : d.height) - t < reach) near.push_back(i);
   }
-  Builder b(points, d, threads, band);
-  if (!b.band(m)) return {};
+  Builder b(points, d, 1, near);
+  b.strip(m, across_x);
   return {b.take(), b.verify()};
+}
+
+// The rim: the periodic triangles whose circle is not inside, from the two strips (each one's
+// triangles moved so that their least corner is at offset 0, so those found twice are equal):
+// each once, in the order of their corners. Complete where every such circle is at most m
+// across less the rounding: it then lies in one of the strips (where its copies are complete).
+PeriodicTriangulation rim_of(Strip a, Strip b) {
+  PeriodicTriangulation& r = a.rim;
+  r.triangles.insert(r.triangles.end(), b.rim.triangles.begin(), b.rim.triangles.end());
+  r.offsets.insert(r.offsets.end(), b.rim.offsets.begin(), b.rim.offsets.end());
+  using Key = std::array<std::uint64_t, 3>;  // each corner: its index and offset
+  std::vector<std::pair<Key, std::size_t>> keys(r.size());
+  for (std::size_t t = 0; t < r.size(); ++t) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      const Offset o = r.offsets[3 * t + j];
+      keys[t].first[j] = std::uint64_t{r.triangles[3 * t + j]} << 32 ^ (std::uint64_t{std::uint16_t(o.dx)} << 16) ^
+          std::uint16_t(o.dy);
+    }
+    keys[t].second = t;
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+             keys.end());
+  PeriodicTriangulation out;
+  out.domain = r.domain;
+  out.triangles.resize(3 * keys.size()), out.offsets.resize(3 * keys.size());
+  for (std::size_t t = 0; t < keys.size(); ++t)
+    for (std::size_t j = 0; j < 3; ++j) {
+      out.triangles[3 * t + j] = r.triangles[3 * keys[t].second + j];
+      out.offsets[3 * t + j] = r.offsets[3 * keys[t].second + j];
+    }
+  return out;
 }
 
 // The periodic triangulation as two parts that do not meet: the triangles of the points' own
 // Delaunay triangulation (triangulate(), on threads) whose circle lies inside the domain — empty
 // of the points, and of every copy, which lie outside the domain — and the periodic triangles
-// whose circle is not inside, from the points within m of the domain's sides and their copies
-// (Builder's band, its first try on one thread while the others test the circles). circle_inside
-// decides for both alike, so each periodic triangle is in one part. Checked as the whole is:
-// 2n triangles, every edge with its twin (then neighbours); nothing (the caller builds the
-// whole) where the points have no triangulation of their own (collinear) or the band would be
-// a quarter of the domain.
+// whose circle is not inside, from two strips across the domain's sides (rim_of; made on two
+// threads while the others test the circles). circle_inside decides for both alike, so each
+// periodic triangle is in one part. Checked as the whole is: 2n triangles, every edge with its
+// twin (then neighbours); nothing (the caller builds the whole) where the points have no
+// triangulation of their own (collinear) or the strips would be a quarter of the domain wide.
 std::optional<PeriodicTriangulation> split(std::span<const Point> points, const PeriodicDomain& d, double m,
                                            unsigned threads, bool neighbors) {
   if (!(4 * m < std::min(d.width, d.height))) return std::nullopt;
@@ -228,12 +264,13 @@ std::optional<PeriodicTriangulation> split(std::span<const Point> points, const 
   if (p.size() == 0) return std::nullopt;
   const std::size_t count = p.size(), distinct = points.size() - dropped.size();
   // Whether each triangle's circle is inside (sort_out), in stretches that the threads take in
-  // turn; the first thread makes the band's first try before it takes any.
+  // turn; the first two threads make the strips first (the first both, alone).
   std::vector<std::uint8_t> inside(count);
   std::atomic<std::size_t> next{0};
-  Band band;
+  Strip across_x, across_y;
   parallel_for(threads, threads, 1, [&](std::size_t w, std::size_t) {
-    if (w == 0) band = band_part(points, d, m, 1);
+    if (w == 0) across_x = strip(points, d, m, true);
+    if (w == (threads > 1 ? 1 : 0)) across_y = strip(points, d, m, false);
     constexpr std::size_t kStretch = 16384;
     for (std::size_t a; (a = next.fetch_add(kStretch)) < count;)
       sort_out(p, in, d, inside, a, std::min(count, a + kStretch));
@@ -241,19 +278,18 @@ std::optional<PeriodicTriangulation> split(std::span<const Point> points, const 
   const auto kept = static_cast<std::size_t>(std::count(inside.begin(), inside.end(), std::uint8_t{1}));
   in.points.reset(), std::vector<std::uint32_t>().swap(in.order);  // memory for the result
   for (;;) {
-    if (band.rim) {
-      if (kept + band.rim->size() == 2 * distinct) {
-        // (join takes p's arrays: whatever it finds, there is no second try)
-        std::optional<PeriodicTriangulation> out = join(p, inside, std::move(*band.rim), threads, neighbors);
-        if (!out || (band.verify && !check_periodic(points, d, out->triangles, out->offsets).valid))
-          return std::nullopt;
-        out->duplicates = std::move(dropped);
-        return out;
-      }
-      m *= 2;
+    const bool verify = across_x.verify || across_y.verify;
+    PeriodicTriangulation rim = rim_of(std::move(across_x), std::move(across_y));
+    if (kept + rim.size() == 2 * distinct) {
+      // (join takes p's arrays: whatever it finds, there is no second try)
+      std::optional<PeriodicTriangulation> out = join(p, inside, std::move(rim), threads, neighbors);
+      if (!out || (verify && !check_periodic(points, d, out->triangles, out->offsets).valid)) return std::nullopt;
+      out->duplicates = std::move(dropped);
+      return out;
     }
+    m *= 2;
     if (!(4 * m < std::min(d.width, d.height))) return std::nullopt;
-    band = band_part(points, d, m, threads);
+    across_x = strip(points, d, m, true), across_y = strip(points, d, m, false);
   }
 }
 
