@@ -73,9 +73,12 @@ class Builder {
   // vertex at infinity is n_.
   void run() {
     const std::array<VertexId, 3> first = first_triangle();
-    // A biased randomized insertion order along the Hilbert curve (brio_order, the kernel's).
+    // A biased randomized insertion order along the Hilbert curve (brio_order, the kernel's),
+    // made in the memory of the structure's arrays, made first (no fresh pages for its work).
+    SlotArrays arrays(n_, threads_);
     std::vector<std::uint32_t> keys;  // along each round, never decreasing
-    const std::vector<std::uint32_t> order = brio_order(points_.data(), n_, 0x5eed, threads_, &keys);
+    const std::vector<std::uint32_t> order =
+        brio_order(points_.data(), n_, 0x5eed, threads_, &keys, {arrays.words(), arrays.numbers()});
     input_.assign(first.begin(), first.end());
     input_.reserve(n_);
     key_.assign(3, 0);
@@ -87,12 +90,17 @@ class Builder {
       else
         key_[static_cast<std::size_t>(f - first.begin())] = keys[k];
     }
-    q_.resize(n_);
+    resize_present(q_, n_, threads_);
     parallel_for(n_, threads_, 65536, [&](std::size_t from, std::size_t to) {
-      for (std::size_t v = from; v < to; ++v) q_[v] = {points_[input_[v]], weights_[input_[v]]};
+      constexpr std::size_t kAhead = 16;  // (read at random: the misses overlap)
+      for (std::size_t v = from; v < to; ++v) {
+        if (v + kAhead < to)
+          __builtin_prefetch(&points_[input_[v + kAhead]]), __builtin_prefetch(&weights_[input_[v + kAhead]]);
+        q_[v] = {points_[input_[v]], weights_[input_[v]]};
+      }
     });
-    hidden_.assign(n_, 0);
-    start();
+    resize_present(hidden_, n_, threads_);
+    start(std::move(arrays));
     // The rounds (where the keys fall back), each shared among the threads where it is large.
     for (VertexId b = 3, e; b < n_; b = e) {
       for (e = b + 1; e < n_ && key_[e] >= key_[e - 1];) ++e;
@@ -148,10 +156,9 @@ class Builder {
   // The first triangle (0, 1, 2) and its three walls, linked, in arrays with room for every
   // face of n points (at most 2n - 2; a fan takes its cavity's slots and two more, freed ones
   // first).
-  void start() {
+  void start(SlotArrays arrays) {
     const VertexId inf = infinite_;
     const VertexId faces[4][3] = {{0, 1, 2}, {1, 0, inf}, {2, 1, inf}, {0, 2, inf}};
-    SlotArrays arrays(n_, threads_);
     for (int f = 0; f < 4; ++f)
       for (int i = 0; i < 3; ++i) arrays.v[3 * f + i] = faces[f][i];
     for (int f = 0; f < 4; ++f)
@@ -161,7 +168,7 @@ class Builder {
             if (faces[g][next3(j)] == faces[f][prev3(i)] && faces[g][prev3(j)] == faces[f][next3(i)])
               arrays.link[3 * f + i] = static_cast<Link>(3 * g + j);
     tds_ = Tds(std::move(arrays.v), std::move(arrays.link), 4);
-    stamp_.assign(2 * std::size_t{n_} + 2, 0);
+    resize_present(stamp_, 2 * std::size_t{n_} + 2, threads_);
   }
 
   // The corner of face w that is the vertex at infinity, or -1.
