@@ -399,7 +399,7 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
   out.duplicates = std::move(settled.duplicates);
   out.hidden = std::move(settled.hidden);
   out.hull = hull_of(tds, inf, points, input);
-  written_in_place(tds, inf, input, out);
+  finish_in_place(tds, inf, input, threads, out.triangles, out.neighbors);  // (inf: the number of points)
   out.stats.threads = threads;
   out.stats.points = points.size();
   out.stats.duplicates = out.duplicates.size();

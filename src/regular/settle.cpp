@@ -34,15 +34,27 @@ Settled settle(std::span<const Point> points, std::span<const double> weights,
                std::vector<VertexId>& input, unsigned threads) {
   auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x); };
   auto hash = [&](VertexId i) { return mix64(bits(points[i].x) ^ mix64(bits(points[i].y) ^ mix64(bits(weights[i])))); };
-  std::vector<std::pair<std::uint64_t, VertexId>> keyed;
   std::vector<std::uint8_t> hidden(points.size(), 0);  // by input index: the list comes out sorted
-  std::size_t count = 0;
-  for (VertexId v = 0; v < is_hidden.size(); ++v) count += is_hidden[v];
-  keyed.reserve(2 * copies.size() + count);
-  for (const auto& [c, w] : copies)
-    keyed.emplace_back(hash(input[c]), input[c]), keyed.emplace_back(hash(input[w]), input[w]);
+  std::vector<VertexId> of;  // the hidden points' vertex ids
   for (VertexId v = 0; v < is_hidden.size(); ++v)
-    if (is_hidden[v]) keyed.emplace_back(hash(input[v]), input[v]), hidden[input[v]] = 1;
+    if (is_hidden[v]) of.push_back(v), hidden[input[v]] = 1;
+  const std::size_t count = of.size();
+  std::vector<std::pair<std::uint64_t, VertexId>> keyed(2 * copies.size() + count);
+  for (std::size_t k = 0; k < copies.size(); ++k) {
+    const auto [c, w] = copies[k];
+    keyed[2 * k] = {hash(input[c]), input[c]}, keyed[2 * k + 1] = {hash(input[w]), input[w]};
+  }
+  parallel_for(count, threads, 16384, [&](std::size_t from, std::size_t to) {
+    constexpr std::size_t kAhead = 16;  // (read at random: the misses overlap)
+    for (std::size_t k = from; k < to; ++k) {
+      if (k + kAhead < to) {
+        const VertexId i = input[of[k + kAhead]];
+        __builtin_prefetch(&points[i]), __builtin_prefetch(&weights[i]);
+      }
+      const VertexId i = input[of[k]];
+      keyed[2 * copies.size() + k] = {hash(i), i};
+    }
+  });
   Settled out;
   parallel_sort(keyed.begin(), keyed.end(), threads, std::less<>());
   keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
@@ -73,32 +85,6 @@ Settled settle(std::span<const Point> points, std::span<const double> weights,
   std::sort(out.duplicates.begin(), out.duplicates.end(),
             [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
   return out;
-}
-
-// The finite faces in their slots' order (the fans of successive insertions, near
-// each other), written over the structure's own arrays: face k of slot t >= k, so each slot is
-// read before a later one is written over it.
-void written_in_place(Tds& tds, VertexId inf, const std::vector<VertexId>& input, RegularTriangulation& out) {
-  std::vector<std::int32_t> id(tds.slots(), -1);
-  std::int32_t count = 0;
-  for (TriangleId t = 0; t < tds.slots(); ++t) {
-    const VertexId* c = tds.corners(t);
-    if (c[0] != kNoVertex && c[0] != inf && c[1] != inf && c[2] != inf) id[t] = count++;
-  }
-  VertexId* v = tds.vertex_array().data();
-  Link* link = tds.link_array().data();
-  for (std::size_t t = 0; t < tds.slots(); ++t) {
-    if (id[t] < 0) continue;
-    const std::size_t k = static_cast<std::size_t>(id[t]);
-    for (std::size_t i = 0; i < 3; ++i) {
-      v[3 * k + i] = input[v[3 * t + i]];
-      link[3 * k + i] = id[triangle_of(link[3 * t + i])];
-    }
-  }
-  out.triangles = std::move(tds.vertex_array());
-  out.neighbors = std::move(tds.link_array());
-  out.triangles.resize(3 * std::size_t(count));
-  out.neighbors.resize(3 * std::size_t(count));
 }
 
 }  // namespace ridt::detail

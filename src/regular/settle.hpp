@@ -1,5 +1,5 @@
 // What the regular triangulation (regular/regular.cpp) settles once its points are inserted:
-// the hull, the copies and hidden points grouped, and the faces written.
+// the hull, and the copies and hidden points grouped.
 #pragma once
 
 #include <span>
@@ -28,9 +28,5 @@ struct Settled {
 Settled settle(std::span<const Point> points, std::span<const double> weights,
                const std::vector<std::pair<VertexId, VertexId>>& copies, const std::vector<std::uint8_t>& is_hidden,
                std::vector<VertexId>& input, unsigned threads);
-
-/// The finite faces (`input`: each vertex id's input index) into out.triangles and
-/// out.neighbors in their slots' order, written over the structure's own arrays.
-void written_in_place(Tds& tds, VertexId inf, const std::vector<VertexId>& input, RegularTriangulation& out);
 
 }  // namespace ridt::detail

@@ -112,6 +112,12 @@ Triangulation finish_walking(DelaunayTds& tds, const std::vector<std::uint32_t>&
                              const std::vector<DuplicateHit>& duplicates, const Options& options, unsigned threads,
                              bool links = false);
 
+/// The same for a structure of other faces (the regular triangulation's): the slots whose
+/// three vertices are below n (not at infinity, not free) become `triangles` and `neighbors`
+/// (-1 across from a corner where the face beside is not kept), in place and on threads.
+void finish_in_place(Tds& tds, std::uint32_t n, const std::vector<std::uint32_t>& input_index, unsigned threads,
+                     std::vector<VertexId>& triangles, std::vector<std::int32_t>& neighbors);
+
 /// triangulate() (src/triangulate.cpp), its result's neighbours given as links (3u + j) where
 /// `linked` comes back true: where the walking kernel made it and no canonical order was asked
 /// (the library's own callers then make a Tds without searching each neighbour's edge). Else

@@ -45,6 +45,8 @@ class KeptSlots {
     for (std::size_t k = count_ / 64; k < words_; ++k)
       for (std::uint64_t kept = bits_[k]; kept != 0; kept &= kept - 1)
         if (const auto t = static_cast<TriangleId>(64 * k + std::countr_zero(kept)); t >= count_) movers_.push_back(t);
+    to_.resize(slots - count_);
+    for (std::size_t i = 0; i < movers_.size(); ++i) to_[movers_[i] - count_] = gaps_[i];
   }
 
   TriangleId count() const { return count_; }
@@ -54,11 +56,7 @@ class KeptSlots {
   /// The same from a copy of bits().
   static bool kept(const std::uint64_t* bits, std::size_t t) { return (bits[t >> 6] >> (t & 63)) & 1; }
   // Kept slot u's output id.
-  std::int32_t new_id(TriangleId u) const {
-    if (u < count_) return static_cast<std::int32_t>(u);
-    const auto it = std::lower_bound(movers_.begin(), movers_.end(), u);
-    return static_cast<std::int32_t>(gaps_[static_cast<std::size_t>(it - movers_.begin())]);
-  }
+  std::int32_t new_id(TriangleId u) const { return static_cast<std::int32_t>(u < count_ ? u : to_[u - count_]); }
   const std::vector<TriangleId>& gaps() const { return gaps_; }
   const std::vector<TriangleId>& movers() const { return movers_; }
   // Worker w's part of [0, total).
@@ -72,13 +70,14 @@ class KeptSlots {
   std::vector<std::uint64_t> bits_;
   TriangleId count_ = 0;
   std::vector<TriangleId> gaps_, movers_;
+  std::vector<TriangleId> to_;  // slot count() + i's output id, where it is a mover
 };
 
 // Unlinks the kept triangles from the dropped ones (the gaps below count(), and the slots at
 // or above it that are not movers: as many as there are bounding triangles and free slots): a
 // kept triangle's edge that a dropped one shares becomes a hull edge (kNoLink), so the
 // conversion needs no test of a neighbour's slot. Free slots link nowhere.
-void unlink_dropped(DelaunayTds& tds, const KeptSlots& kept) {
+void unlink_dropped(Tds& tds, const KeptSlots& kept) {
   Link* link = tds.link_array().data();
   auto unlink = [link](TriangleId u) {
     for (int j = 0; j < 3; ++j)
@@ -99,7 +98,7 @@ void unlink_dropped(DelaunayTds& tds, const KeptSlots& kept) {
 // (31 before).
 class Converter {
  public:
-  Converter(DelaunayTds& tds, const KeptSlots& kept, const Standing& standing, bool links)
+  Converter(Tds& tds, const KeptSlots& kept, const Standing& standing, bool links)
       : v_(tds.vertex_array().data()),
         link_(tds.link_array().data()),
         bits_(kept.bits()),
@@ -150,11 +149,11 @@ class Converter {
 };
 
 // Converts every kept slot, on the kept slots' workers. Returns the hull's edges.
-std::vector<std::pair<VertexId, VertexId>> convert_in_place(DelaunayTds& tds, const KeptSlots& kept,
+std::vector<std::pair<VertexId, VertexId>> convert_in_place(Tds& tds, std::uint32_t n, const KeptSlots& kept,
                                                             const Standing& standing, bool links) {
   const Converter proto(tds, kept, standing, links);
-  const std::uint32_t n = tds.vertices().n();
   std::vector<std::vector<std::pair<VertexId, VertexId>>> hull_parts(kept.workers());
+  std::vector<std::vector<std::pair<VertexId, VertexId>>> mover_parts(kept.workers());
   on_threads(kept.workers(), [&hull_parts, &kept, proto, n](unsigned w) {
     Converter convert = proto;
     const auto [first, last] = kept.share(w, kept.count());
@@ -167,10 +166,16 @@ std::vector<std::pair<VertexId, VertexId>> convert_in_place(DelaunayTds& tds, co
     }
     hull_parts[w] = std::move(convert.hull);
   });
-  // The movers last: their slots lie at or above count(), which no worker wrote.
-  Converter convert = proto;
-  for (std::size_t i = 0; i < kept.movers().size(); ++i) convert(kept.movers()[i], kept.gaps()[i]);
-  std::vector<std::pair<VertexId, VertexId>> hull_edges = std::move(convert.hull);
+  // The movers after: their slots lie at or above count(), which no worker wrote, and each
+  // goes to a gap of its own.
+  on_threads(kept.workers(), [&mover_parts, &kept, proto](unsigned w) {
+    Converter convert = proto;
+    const auto [first, last] = kept.share(w, kept.movers().size());
+    for (std::size_t i = first; i < last; ++i) convert(kept.movers()[i], kept.gaps()[i]);
+    mover_parts[w] = std::move(convert.hull);
+  });
+  std::vector<std::pair<VertexId, VertexId>> hull_edges;
+  for (auto& part : mover_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
   for (auto& part : hull_parts) hull_edges.insert(hull_edges.end(), part.begin(), part.end());
   return hull_edges;
 }
@@ -185,7 +190,7 @@ Triangulation finish_walking(DelaunayTds& tds, const std::vector<std::uint32_t>&
   const Standing standing = resolve_duplicates(input_index, duplicates, out.duplicates);
   const KeptSlots kept(tds.vertex_array().data(), n, tds.slots(), threads);
   unlink_dropped(tds, kept);
-  std::vector<std::pair<VertexId, VertexId>> hull_edges = convert_in_place(tds, kept, standing, links);
+  std::vector<std::pair<VertexId, VertexId>> hull_edges = convert_in_place(tds, n, kept, standing, links);
   tds.vertex_array().resize(3 * std::size_t{kept.count()});
   tds.link_array().resize(3 * std::size_t{kept.count()});
   out.triangles = std::move(tds.vertex_array());
@@ -195,6 +200,18 @@ Triangulation finish_walking(DelaunayTds& tds, const std::vector<std::uint32_t>&
     for (VertexId u = 0; u < n; ++u) pts[input_index[u]] = tds.vertices()[u];
   });
   return out;
+}
+
+void finish_in_place(Tds& tds, std::uint32_t n, const std::vector<std::uint32_t>& input_index, unsigned threads,
+                     std::vector<VertexId>& triangles, std::vector<std::int32_t>& neighbors) {
+  const Standing standing(input_index);
+  const KeptSlots kept(tds.vertex_array().data(), n, tds.slots(), threads);
+  unlink_dropped(tds, kept);
+  convert_in_place(tds, n, kept, standing, false);
+  tds.vertex_array().resize(3 * std::size_t{kept.count()});
+  tds.link_array().resize(3 * std::size_t{kept.count()});
+  triangles = std::move(tds.vertex_array());
+  neighbors = std::move(tds.link_array());
 }
 
 }  // namespace ridt::detail
