@@ -79,14 +79,12 @@ class Builder {
     std::vector<std::uint32_t> keys;  // along each round, never decreasing
     const std::vector<std::uint32_t> order =
         brio_order(points_.data(), n_, 0x5eed, threads_, &keys, {arrays.words(), arrays.numbers()});
-    input_.assign(first.begin(), first.end());
-    input_.reserve(n_);
-    key_.assign(3, 0);
-    key_.reserve(n_);
-    for (VertexId k = 0; k < n_; ++k) {
+    resize_present(input_, n_, threads_), resize_present(key_, n_, threads_);
+    std::copy(first.begin(), first.end(), input_.begin());
+    for (VertexId k = 0, v = 3; k < n_; ++k) {
       const auto f = std::find(first.begin(), first.end(), order[k]);
       if (f == first.end())
-        input_.push_back(order[k]), key_.push_back(keys[k]);
+        input_[v] = order[k], key_[v++] = keys[k];
       else
         key_[static_cast<std::size_t>(f - first.begin())] = keys[k];
     }
