@@ -13,6 +13,7 @@
 #include "order/order.hpp"
 #include "order/runs.hpp"
 #include "ridt/sphere.hpp"
+#include "runtime/memory.hpp"
 #include "runtime/parallel.hpp"
 #include "tds/ids.hpp"
 
@@ -38,7 +39,8 @@ inline Distinct distinct_points(std::span<const Point3> points, unsigned threads
   // The indices sorted by x (a radix sort on its order-keeping bits' upper half, -0 made 0),
   // then each run of one key by x, y, z and index.
   const auto n = static_cast<std::uint32_t>(points.size());
-  std::vector<std::uint64_t> words(n), sorted(n);
+  std::vector<std::uint64_t> words, sorted;
+  resize_present(words, n, threads), resize_present(sorted, n, threads);
   parallel_for(n, threads, 65536, [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from; i < to; ++i) {
       const auto bits = std::bit_cast<std::uint64_t>(points[i].x + 0.0);
@@ -50,7 +52,7 @@ inline Distinct distinct_points(std::span<const Point3> points, unsigned threads
     return lex_less3(points[a], points[b]) || (points[a] == points[b] && a < b);
   });
   Distinct d;
-  d.points.resize(n), d.input.resize(n);
+  resize_present(d.points, n, threads), resize_present(d.input, n, threads);
   parallel_for(n, threads, 65536, [&](std::size_t from, std::size_t to) {
     for (std::size_t k = from; k < to; ++k)
       d.input[k] = static_cast<VertexId>(sorted[k]), d.points[k] = points[d.input[k]];

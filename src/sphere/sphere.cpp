@@ -53,13 +53,15 @@ class Builder {
   // inserted one after another lie together in memory; rank_ maps them back.
   void run() {
     const VertexId n = static_cast<VertexId>(p_.size());
-    hidden_.assign(n, 0);
+    // (every large array made present on the threads first: on huge pages, not faulted in one
+    // small page at a time)
+    resize_present(hidden_, n, threads_);
     const std::array<VertexId, 4> first = tetrahedron();
     const std::vector<VertexId> order = insertion_order(first);
-    rank_.assign(first.begin(), first.end());
-    rank_.insert(rank_.end(), order.begin(), order.end());
-    q_.resize(n);
-    key_.resize(n);
+    resize_present(rank_, n, threads_);
+    std::copy(first.begin(), first.end(), rank_.begin());
+    std::copy(order.begin(), order.end(), rank_.begin() + 4);
+    resize_present(q_, n, threads_), resize_present(key_, n, threads_);
     parallel_for(n, threads_, 65536, [&](std::size_t from, std::size_t to) {
       for (std::size_t v = from; v < to; ++v) q_[v] = p_[rank_[v]], key_[v] = curve_[rank_[v]];
     });
@@ -86,7 +88,8 @@ class Builder {
   std::array<VertexId, 4> tetrahedron() {
     const VertexId n = static_cast<VertexId>(p_.size());
     if (n < 4) throw InputError("triangulate_sphere: fewer than four distinct points");
-    std::vector<VertexId> all(n);
+    std::vector<VertexId> all;
+    resize_present(all, n, threads_);
     std::iota(all.begin(), all.end(), VertexId{0});
     const Tetrahedron t = fat_tetrahedron(p_, all);
     if (t.flat != nullptr) throw InputError(std::string("triangulate_sphere: all points are ") + t.flat);
@@ -115,7 +118,7 @@ class Builder {
             if (faces[g][next3(j)] == y && faces[g][prev3(j)] == x) link[3 * f + i] = static_cast<Link>(3 * g + j);
       }
     tds_ = Tds(std::move(v), std::move(link), 4);
-    stamp_.assign(2 * p_.size() + 1, 0);
+    resize_present(stamp_, 2 * p_.size() + 1, threads_);
   }
 
   // The points but the first four: a random permutation (seeded: the same every run) in rounds
@@ -123,9 +126,9 @@ class Builder {
   // over the directions from the middle (key, below).
   std::vector<VertexId> insertion_order(const std::array<VertexId, 4>& first) {
     std::vector<VertexId> order;
-    order.reserve(p_.size());
-    for (VertexId v = 0; v < p_.size(); ++v)
-      if (std::find(first.begin(), first.end(), v) == first.end()) order.push_back(v);
+    resize_present(order, p_.size() - 4, threads_);
+    for (VertexId v = 0, k = 0; v < p_.size(); ++v)
+      if (std::find(first.begin(), first.end(), v) == first.end()) order[k++] = v;
     std::mt19937_64 random(0x5eed);
     std::shuffle(order.begin(), order.end(), random);
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -148,13 +151,14 @@ class Builder {
       const std::uint32_t face = 2 * static_cast<std::uint32_t>(axis) + (d[axis] < 0);
       return face << 29 | hilbert_key(cell(d[(axis + 1) % 3]), cell(d[(axis + 2) % 3])) >> 3;
     };
-    curve_.resize(p_.size());
+    resize_present(curve_, p_.size(), threads_);
     parallel_for(p_.size(), threads_, 65536, [&](std::size_t from, std::size_t to) {
       for (std::size_t v = from; v < to; ++v) curve_[v] = key(static_cast<VertexId>(v));
     });
     // Each round sorted by key, stably (a radix sort): ties in the random order.
     const auto m = static_cast<std::uint32_t>(order.size());
-    std::vector<std::uint64_t> words(m), sorted(m);
+    std::vector<std::uint64_t> words, sorted;
+    resize_present(words, m, threads_), resize_present(sorted, m, threads_);
     parallel_for(m, threads_, 65536, [&](std::size_t from, std::size_t to) {
       for (std::size_t i = from; i < to; ++i) words[i] = std::uint64_t{curve_[order[i]]} << 32 | order[i];
     });
@@ -367,8 +371,9 @@ void in_own_order(const Tds& tds, std::vector<std::uint64_t>& live, unsigned thr
 SphericalTriangulation written(const Tds& tds, const std::vector<std::uint64_t>& live, const Builder& builder,
                                Distinct& d, unsigned threads) {
   const std::vector<VertexId>& rank = builder.rank();
-  std::vector<VertexId> input(rank.size());  // by vertex id
-  std::vector<std::int32_t> id(tds.slots(), -1);  // by slot: its place in the output
+  std::vector<VertexId> input;  // by vertex id
+  std::vector<std::int32_t> id;  // by slot: its place in the output (every face's neighbours are faces)
+  resize_present(input, rank.size(), threads), resize_present(id, tds.slots(), threads);
   parallel_for(rank.size(), threads, 65536, [&](std::size_t from, std::size_t to) {
     for (std::size_t v = from; v < to; ++v) input[v] = d.input[rank[v]];
   });
@@ -410,7 +415,8 @@ SphericalTriangulation triangulate_sphere(std::span<const Point3> points, unsign
   // slots sort last, and are cut off.)
   const std::vector<std::uint32_t>& key = builder.key();
   const TriangleId slots = tds.slots();
-  std::vector<std::uint64_t> words(slots), live(slots);  // (key << 32 | slot), then sorted
+  std::vector<std::uint64_t> words, live;  // (key << 32 | slot), then sorted
+  resize_present(words, slots, threads), resize_present(live, slots, threads);
   parallel_for(slots, threads, 65536, [&](std::size_t from, std::size_t to) {
     for (std::size_t t = from; t < to; ++t) {
       const VertexId* c = tds.corners(static_cast<TriangleId>(t));

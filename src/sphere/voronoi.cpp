@@ -77,8 +77,9 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
   circle_centres(t, points, centre, radius, out.vertices, normals, threads);
   // Each point's cell: one triangle of it, then round it. In triangle (g, b, c) the next
   // triangle counter-clockwise round g is the one across g-c, from b.
-  std::vector<std::uint32_t> one(n, 0xffffffffu);
-  out.region_start.assign(n + 1, 0);
+  std::vector<std::uint32_t> one;
+  detail::resize_present(one, n, threads), detail::resize_present(out.region_start, n + 1, threads);
+  std::fill(one.begin(), one.end(), 0xffffffffu);
   for (std::size_t f = 0; f < m; ++f)
     for (int i = 0; i < 3; ++i) {
       const VertexId g = t.triangles[3 * f + i];
@@ -87,7 +88,7 @@ SphericalVoronoi spherical_voronoi(const SphericalTriangulation& t, std::span<co
     }
   for (std::size_t i = 0; i < n; ++i) out.region_start[i + 1] += out.region_start[i];
   detail::resize_present(out.regions, out.region_start[n], threads);
-  if (areas) out.areas.assign(n, 0);
+  if (areas) detail::resize_present(out.areas, n, threads);
   // The points in the triangles' order (where they lie close together), not the input's.
   detail::parallel_for(3 * m, threads, 4096, [&](std::size_t from, std::size_t to) {
     for (std::size_t corner = from; corner < to; ++corner) {
