@@ -17,10 +17,10 @@ namespace ridt::detail {
 std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, std::span<const Offset> offsets,
                                          std::size_t points);
 
-/// triangulate_periodic's two ways: the points' own Delaunay triangulation and a band along
+/// triangulate_periodic's two ways: the points' own Delaunay triangulation and two strips across
 /// the domain's sides (nothing where the points have no triangulation of their own, or the
-/// band would cover much of the domain), and the triangulation of all the points and their
-/// copies near the domain (any points).
+/// strips would be a quarter of the domain wide), and the triangulation of all the points and
+/// their copies near the domain (any points).
 /// Without `neighbors`, the split way leaves neighbor_offsets empty (the neighbours found still).
 std::optional<PeriodicTriangulation> triangulate_periodic_split(std::span<const Point> points,
                                                                 const PeriodicDomain& domain, unsigned threads,
