@@ -210,6 +210,7 @@ Strip strip(std::span<const Point> points, const PeriodicDomain& d, double m, bo
     const double t = across_x ? points[i].x - d.origin.x : points[i].y - d.origin.y;
     if (t < reach || (across_x ? d.width : d.height) - t < reach) near.push_back(i);
   }
+  if (near.empty()) return {};  // (no copy in the strip: no triangle; a Builder takes none as all)
   Builder b(points, d, 1, near);
   b.strip(m, across_x);
   return {b.take(), b.verify()};

@@ -157,6 +157,7 @@ class Builder {
   void start(SlotArrays arrays) {
     const VertexId inf = infinite_;
     const VertexId faces[4][3] = {{0, 1, 2}, {1, 0, inf}, {2, 1, inf}, {0, 2, inf}};
+    arrays.vertices_again();  // (the order's work was done in their memory)
     for (int f = 0; f < 4; ++f)
       for (int i = 0; i < 3; ++i) arrays.v[3 * f + i] = faces[f][i];
     for (int f = 0; f < 4; ++f)

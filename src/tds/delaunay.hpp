@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -38,6 +39,8 @@ struct SlotArrays {
   /// The vertex array's memory as 3n + 1 words, and the link array's as 6n + 3 unsigned
   /// numbers, for work done before the kernel is made; what is written there is lost.
   std::span<std::uint64_t> words();
+  /// After words(): the vertex numbers begin their lifetime again (their values unspecified).
+  void vertices_again() { std::uninitialized_default_construct_n(v.data(), v.size()); }
   std::span<std::uint32_t> numbers() {
     // An unsigned view of signed numbers is an allowed alias.
     return {reinterpret_cast<std::uint32_t*>(link.data()), link.size()};

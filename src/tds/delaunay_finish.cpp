@@ -1,6 +1,8 @@
 // The walking kernel's finish (tds/delaunay.hpp): its arrays become the output's, in place.
 // The triangles of the bounding vertices and the free slots are dropped, the kept slots above
-// the output's count move into the gaps below it, and links become neighbour ids.
+// the output's count move into the gaps below it, and links become neighbour ids. The regular
+// triangulation's faces are written the same way (finish_in_place): there the dropped ones are
+// the walls at the vertex at infinity, whose number n is the bounding vertices' first.
 #include <algorithm>
 #include <bit>
 #include <numeric>
@@ -13,10 +15,11 @@ namespace ridt::detail {
 
 namespace {
 
-// The slots of the walking kernel that hold output triangles (no bounding vertex), a bit each,
-// and where the output puts them: the output is the kernel's own arrays, so a kept slot below
-// count() keeps its place, and the i-th kept slot at or above count() moves into the i-th gap
-// below it (a slot of the bounding vertices, or a free one).
+// The slots of the walking kernel that hold output triangles (no vertex numbered n or more: a
+// bounding vertex, the vertex at infinity, a free slot's), a bit each, and where the output
+// puts them: the output is the kernel's own arrays, so a kept slot below count() keeps its
+// place, and the i-th kept slot at or above count() moves into the i-th gap below it (a
+// dropped slot).
 class KeptSlots {
  public:
   KeptSlots(const VertexId* v, std::uint32_t n, TriangleId slots, unsigned threads)
@@ -74,8 +77,8 @@ class KeptSlots {
 };
 
 // Unlinks the kept triangles from the dropped ones (the gaps below count(), and the slots at
-// or above it that are not movers: as many as there are bounding triangles and free slots): a
-// kept triangle's edge that a dropped one shares becomes a hull edge (kNoLink), so the
+// or above it that are not movers: as many as there are bounding triangles, walls and free
+// slots): a kept triangle's edge that a dropped one shares becomes a hull edge (kNoLink), so the
 // conversion needs no test of a neighbour's slot. Free slots link nowhere.
 void unlink_dropped(Tds& tds, const KeptSlots& kept) {
   Link* link = tds.link_array().data();
