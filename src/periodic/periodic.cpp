@@ -224,7 +224,7 @@ PeriodicTriangulation rim_of(Strip a, Strip b) {
   PeriodicTriangulation& r = a.rim;
   r.triangles.insert(r.triangles.end(), b.rim.triangles.begin(), b.rim.triangles.end());
   r.offsets.insert(r.offsets.end(), b.rim.offsets.begin(), b.rim.offsets.end());
-  using Key = std::array<std::uint64_t, 3>;  // each corner: its index and offset
+  using Key = std::array<std::uint64_t, 3>;  // each corner: its index and offset (a period or two)
   std::vector<std::pair<Key, std::size_t>> keys(r.size());
   for (std::size_t t = 0; t < r.size(); ++t) {
     for (std::size_t j = 0; j < 3; ++j) {
