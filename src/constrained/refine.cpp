@@ -114,7 +114,10 @@ Point Refiner::split_point(VertexId x, VertexId y) const {
   if (!sharp_x && !sharp_y)
     if (const auto [z1, z2] = chain(x, y); z1 != kNoVertex && (small_[z1] != 0) != (small_[z2] != 0))
       shells = small_[z1] ? z1 : z2;
-  if (shells == kNoVertex) return mid;
+  if (shells == kNoVertex) {
+    Point at;
+    return matched(x, y, at) || matched(y, x, at) ? at : mid;
+  }
   const Point& z = m_.pts[shells];
   const double dx = std::sqrt(dist2(z, a)), dy = std::sqrt(dist2(z, b));
   const double near = std::min(dx, dy), far = std::max(dx, dy);
@@ -122,6 +125,42 @@ Point Refiner::split_point(VertexId x, VertexId y) const {
   if (!(d > near * 1.0625 && d < far / 1.0625)) return mid;
   const Point& o = dx > dy ? a : b;
   return {z.x + (o.x - z.x) * (d / far), z.y + (o.y - z.y) * (d / far)};
+}
+
+// Where subsegment z-y, at corner z, is split when its corner's triangle keeps failing the bound.
+// Between z-y and another segment's piece z-w at an angle from 60 degrees to 180 less twice the
+// bound, the triangle z-y-w is good only where its two sides at z are about as long (an isosceles
+// one has (180 - angle) / 2 at y and w). Split at midpoints, the two sides keep their segments'
+// ratio of lengths, halved in turn, and where that ratio is far from a power of two the corner's
+// triangle stays bad at every scale: refinement splits the two sides in turn towards z, without
+// end (a corner of 100 degrees between segments 5.5 times as long as each other took 1,281
+// triangles at 33 degrees, the smallest 10^-23 in area, where 255 do). So once z-y is down to a
+// quarter of its segment, and from 1.25 to 2 times as long as such a z-w, it is split at z-w's
+// length from z (the two sides then equal); else (false) as before.
+bool Refiner::matched(VertexId z, VertexId y, Point& at) const {
+  if (!corner(z) || sin2_ <= 0 || m_.corner[z] == kNoTriangle) return false;
+  const Point &a = m_.pts[z], &b = m_.pts[y];
+  const double long2 = dist2(a, b);
+  if (const auto [z1, z2] = chain(z, y); z1 == kNoVertex || long2 * 16 > dist2(m_.pts[z1], m_.pts[z2])) return false;
+  double best = 0;
+  m_.around(z, [&](TriangleId t) {
+    const int i = m_.corner_of(t, z);
+    for (const int k : {next3(i), prev3(i)}) {
+      const Link e = link_to(t, k);
+      if (!m_.fixed(e) || frozen(e)) continue;  // (a tile's fence is no segment)
+      const VertexId w = m_.tds.tail(e) == z ? m_.tds.head(e) : m_.tds.tail(e);
+      const double short2 = dist2(a, m_.pts[w]);
+      if (w == y || !(short2 * 1.5625 < long2 && short2 * 4 > long2)) continue;
+      const double angle = std::fabs(turn(a, m_.pts[y], m_.pts[w]));
+      if (angle > 3.14159265358979323846 / 3 && angle < 3.14159265358979323846 - 4 * half_bound_)
+        best = std::max(best, short2);
+    }
+    return false;
+  });
+  if (best == 0) return false;
+  const double f = std::sqrt(best / long2);
+  at = {a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f};
+  return true;
 }
 
 bool Refiner::make_room() {
@@ -204,7 +243,7 @@ std::string Refiner::left_bad() const {
   // breaks: said.
   std::size_t short_encroached = 0;
   if (r_.conforming)
-    for (Link s = 0; s < 3 * m_.size(); ++s)
+    for (Link s = 0; static_cast<std::size_t>(s) < 3 * m_.size(); ++s)
       if (m_.fixed(s) && m_.at(triangle_of(s), 0) != kNoVertex && (boundary(s) || s < m_.tds.link_at(s)) &&
           encroached(s) && dist2(m_.pts[m_.tds.tail(s)], m_.pts[m_.tds.head(s)]) < 4 * tiny2_)
         ++short_encroached;

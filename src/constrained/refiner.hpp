@@ -435,6 +435,7 @@ class Refiner {
   // midpoint. Shells about corners with no small angle cut the segments unevenly for nothing
   // (docs/constrained.md: spiky star polygons took a sixth more triangles with them).
   Point split_point(VertexId x, VertexId y) const;
+  bool matched(VertexId z, VertexId y, Point& at) const;
 
   void split(Link s);
   VertexId split_at(Link s, const Point& given);

@@ -203,6 +203,29 @@ TEST(Refine, StarPolygonsTakeNoMoreTrianglesThanTriangles) {
   }
 }
 
+// A corner of 100 degrees between segments 1 and 5.5 long: at 33 and 34 degrees its triangle
+// is good only with its two sides at the corner about as long, which midpoint splits never
+// make of 1 and 5.5; refinement split them in turn down to edges 10^-11 long (990 and 1,324
+// triangles; Triangle takes 15). The pieces at the corner are matched: a few dozen triangles.
+TEST(Refine, ACornerBetweenUnevenSegmentsIsNotSplitWithoutEnd) {
+  const double c = std::cos(100 * 3.14159265358979323846 / 180), s = std::sin(100 * 3.14159265358979323846 / 180);
+  Pslg g;
+  g.points = {{0, 0}, {5.5, 0}, {5.5, 3}, {2 * c, 3}, {c, s}};
+  for (VertexId i = 0; i < 5; ++i) g.segments.push_back(i), g.segments.push_back((i + 1) % 5);
+  for (const double angle : {33.0, 34.0}) {
+    Quality q;
+    q.min_angle = angle;
+    const Meshed m = mesh(g, q);
+    EXPECT_LT(m.t.size(), 100u) << angle << " degrees";
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < m.t.triangles.size(); ++k) {
+      const Point &a = m.all[m.t.triangles[k]], &b = m.all[m.t.triangles[k % 3 == 2 ? k - 2 : k + 1]];
+      shortest = std::min(shortest, std::hypot(a.x - b.x, a.y - b.y));
+    }
+    EXPECT_GT(shortest, 0.2) << angle << " degrees";
+  }
+}
+
 // A 20-degree wedge closed by a right angle: refinement leaves below the bound only the
 // triangle at the wedge's apex, whose small angle is the input's; every other triangle, the
 // ones between the shells about the apex included, is split until it meets the bound.
