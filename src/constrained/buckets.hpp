@@ -51,14 +51,16 @@ class Buckets {
   }
 
  private:
-  // Negative keys first (the most negative first), then the rest, each by quarter octaves.
+  // Keys from 0 up first, then the negative ones (the most negative first), each by quarter
+  // octaves: refinement splits the triangles bad for their shape before those too large, whose
+  // splits the shapes' own points mostly make (docs/constrained.md).
   static std::size_t bucket(double key) {
     constexpr int kSpan = 4 * 2200;  // quarter octaves of every double's exponent
     int e = 0;
     const double f = std::frexp(std::fabs(key), &e);  // |key| = f 2^e, f in [0.5, 1)
     const int quarter = 4 * (e + 1100) + static_cast<int>((f - 0.5) * 8);  // f's quarters of [0.5, 1)
     const int q = std::clamp(quarter, 0, kSpan - 1);
-    return static_cast<std::size_t>(key < 0 ? kSpan - 1 - q : kSpan + q);
+    return static_cast<std::size_t>(key < 0 ? 2 * kSpan - 1 - q : q);
   }
 
   // Bucket b's items, or its items since those in order, sorted by the first bits of `where`

@@ -338,13 +338,13 @@ class Refiner {
     return bound;
   }
 
-  // Where triangle t stands in the queue of bad triangles, kGood where it is good: one too large
-  // (whatever its angles) by minus its area over its bound, or its longest edge's squared length
-  // over the squared `size` (the largest first: -1 or below),
-  // then one the caller's test finds unsuitable, refined as one too large is (the largest first,
-  // from -1/3 to 0), one with a small
-  // angle by its shortest edge's squared length (the smallest first: the sizes then grade out
-  // from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex coastline).
+  // Where triangle t stands in the queue of bad triangles, kGood where it is good: one with a
+  // small angle by its shortest edge's squared length (the smallest first: the sizes then grade
+  // out from the boundary, with 29 % fewer points than worst shaped first on a 10^4-vertex
+  // coastline); after all of those (the queue takes negative keys last) one too large (whatever
+  // its angles) by minus its area over its bound, or its longest edge's squared length over the
+  // squared `size` (the largest first: -1 or below), then one the caller's test finds unsuitable,
+  // refined as one too large is (the largest first, from -1/3 to 0).
   double badness(std::uint32_t t, double size = kGood) const {
     const VertexId v[3] = {m_.at(t, 0), m_.at(t, 1), m_.at(t, 2)};
     const Point &a = m_.pts[v[0]], &b = m_.pts[v[1]], &c = m_.pts[v[2]];

@@ -16,12 +16,15 @@ struct Item {
   int id;
 };
 
+// Keys from 0 up first, smaller first, then the negative ones, the most negative first (the
+// shapes' keys, then the sizes').
 TEST(Buckets, SmallerKeysFirstAndTheLastPushedFirstWithinABucket) {
   detail::Buckets<Item> q;
   q.push({4, 0, 0}), q.push({1, 0, 1}), q.push({-2, 0, 2}), q.push({1.01, 0, 3}), q.push({16, 0, 4});
+  q.push({-8, 0, 5}), q.push({0.5, 0, 6});
   std::vector<int> order;
   while (!q.empty()) order.push_back(q.pop().id);
-  EXPECT_EQ(order, (std::vector<int>{2, 3, 1, 0, 4}));  // 1 and 1.01 share a quarter octave
+  EXPECT_EQ(order, (std::vector<int>{6, 3, 1, 0, 4, 5, 2}));  // 1 and 1.01 share a quarter octave
 }
 
 TEST(Buckets, ABucketLeftAndComeBackToIsNotSortedWholeEachTime) {
