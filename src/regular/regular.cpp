@@ -115,6 +115,7 @@ class Builder {
   /// Per vertex id: its input index (the least of its copies'), whether it is hidden.
   const std::vector<VertexId>& input() const { return input_; }
   const std::vector<std::uint8_t>& hidden() const { return hidden_; }
+  const std::vector<Weighted>& weighted() const { return q_; }
   /// Copies found: (the copy's vertex id, the vertex id it coincides with).
   const std::vector<std::pair<VertexId, VertexId>>& copies() const { return copies_; }
 
@@ -394,7 +395,7 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
   const VertexId inf = builder.infinite();
   std::vector<VertexId> input = builder.input();
   RegularTriangulation out;
-  Settled settled = settle(points, weights, builder.copies(), builder.hidden(), input, threads);
+  Settled settled = settle(points, weights, builder.weighted(), builder.copies(), builder.hidden(), input, threads);
   out.duplicates = std::move(settled.duplicates);
   out.hidden = std::move(settled.hidden);
   out.hull = hull_of(tds, inf, points, input);

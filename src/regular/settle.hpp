@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "predicates/power.hpp"
 #include "ridt/regular.hpp"
 #include "tds/tds.hpp"
 
@@ -20,12 +21,12 @@ std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const
 /// that are copies of each other (a copy of a point hidden before it came): each group of equal
 /// weighted points among them, found by a hash of their values and then compared, keeps its
 /// least input index, the vertex's (relabelled in `input`) or a hidden point's; the others are
-/// duplicates.
+/// duplicates. `q`: the weighted points by vertex id (hashed in that order, not read at random).
 struct Settled {
   std::vector<Duplicate> duplicates;
   std::vector<VertexId> hidden;
 };
-Settled settle(std::span<const Point> points, std::span<const double> weights,
+Settled settle(std::span<const Point> points, std::span<const double> weights, std::span<const Weighted> q,
                const std::vector<std::pair<VertexId, VertexId>>& copies, const std::vector<std::uint8_t>& is_hidden,
                std::vector<VertexId>& input, unsigned threads);
 
