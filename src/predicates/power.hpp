@@ -48,16 +48,14 @@ int power_exact(const Weighted& a, const Weighted& b, const Weighted& c, const W
   const double alift = asq - aw, blift = bsq - bw, clift = csq - cw;
   const double bc = bdx * cdy - cdx * bdy, ca = cdx * ady - adx * cdy, ab = adx * bdy - bdx * ady;
   const double det = alift * bc + blift * ca + clift * ab;
-  // First a cheap bound: with m the largest difference and v the largest weight difference,
-  // each minor's products sum to at most 2 m^2 and each lift's terms to 2 m^2 + v, so the
-  // permanent below is at most 6 m^2 (2 m^2 + v); 1.01 covers the roundings of this bound.
-  const double m =
-      std::max(std::max(std::max(std::fabs(adx), std::fabs(ady)), std::max(std::fabs(bdx), std::fabs(bdy))),
-               std::max(std::fabs(cdx), std::fabs(cdy)));
-  const double v = std::max(std::max(std::fabs(aw), std::fabs(bw)), std::fabs(cw));
-  const double m2 = m * m;
-  const double rough = 1.01 * (11.0 + 128.0 * kEps) * kEps * (6 * m2 * (2 * m2 + v));
-  if (rough >= 0x1p-800 && rough <= 0x1p1000) {
+  // First a cheap bound from sums the determinant needs anyway (as incircle_filter's): with A,
+  // B, C the lifts' magnitudes asq + |aw|, ..., |bdx cdy| + |cdx bdy| <= sqrt(bsq csq) <=
+  // (B + C) / 2 (Cauchy-Schwarz), so the permanent below is at most A B + B C + C A <= S^2 / 3,
+  // S = A + B + C; 0.34 over 1/3 covers the twenty roundings of S and the products. (Trusted
+  // between 2^-800, far above what an underflow loses, and 2^960, where no product overflows.)
+  const double s = (asq + bsq + csq) + (std::fabs(aw) + std::fabs(bw) + std::fabs(cw));
+  const double rough = (11.0 + 128.0 * kEps) * kEps * (0.34 * s * s);
+  if (rough >= 0x1p-800 && rough <= 0x1p960) {
     if (det > rough) return 1;
     if (det < -rough) return -1;
   }

@@ -344,7 +344,21 @@ TEST(PowerPredicates, FilterAgreesWithExactAndCentresWithinTheirBound) {
     const detail::Weighted e{d.p, r * r - pa};  // exactly on it, but for rounding
     for (const detail::Weighted* q : {&d, &e}) {
       const int f = detail::power_filter(a, b, c, *q);
-      if (f != 0) EXPECT_EQ(f, detail::power_exact(a, b, c, *q));
+      if (f != 0) {
+        EXPECT_EQ(f, detail::power_exact(a, b, c, *q));
+      }
+      // Scaled by a power of two (the weights by its square: the same sign), up to where the
+      // products near overflow and down to where they near underflow: the filter's bounds
+      // either hold or give no answer.
+      for (const int e2 : {-520, -300, 240, 250, 255, 300}) {
+        auto scaled = [e2](const detail::Weighted& w) {
+          return detail::Weighted{{std::ldexp(w.p.x, e2), std::ldexp(w.p.y, e2)}, std::ldexp(w.w, 2 * e2)};
+        };
+        const int g = detail::power_filter(scaled(a), scaled(b), scaled(c), scaled(*q));
+        if (g != 0) {
+          EXPECT_EQ(g, detail::power_exact(scaled(a), scaled(b), scaled(c), scaled(*q))) << e2;
+        }
+      }
     }
     const Point x = detail::power_centre_exact(a, b, c);
     const double far = std::hypot(o.x - a.p.x, o.y - a.p.y);
