@@ -205,6 +205,22 @@ TEST(Regular, CopiesOfHiddenPointsAreDuplicatesTheLeastIndexKept) {
   EXPECT_EQ(vertices.size() + t.hidden.size() + t.duplicates.size(), n + 42);
 }
 
+// 200,000 copies of one point, hidden by a heavy point beside it (some taken as copies of its
+// vertex before it was covered, the rest hidden one by one): one group, the least index kept.
+// Their hashes are one: the group is sorted whole, not pair by pair.
+TEST(Regular, ManyCopiesOfAHiddenPointAreOneGroup) {
+  Weighted in = random_weighted(2000, 37, 0.0001);
+  const auto n = static_cast<VertexId>(in.points.size());
+  for (int i = 0; i < 200000; ++i) in.points.push_back({0.25, 0.75}), in.weights.push_back(0);
+  in.points.push_back({0.25, 0.7501}), in.weights.push_back(0.01);
+  const RegularTriangulation t = checked(in);
+  ASSERT_EQ(t.duplicates.size(), 199999u);
+  std::size_t kept_first = 0;
+  for (const Duplicate& d : t.duplicates) kept_first += d.kept == n;
+  EXPECT_EQ(kept_first, 199999u);
+  EXPECT_TRUE(std::binary_search(t.hidden.begin(), t.hidden.end(), n));
+}
+
 TEST(Regular, CollinearHullPointsAndHiddenOnesOnTheHull) {
   // A square's sides full of points; some of those on the bottom side made light enough that
   // their neighbours on the side hide them.
