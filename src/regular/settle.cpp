@@ -32,25 +32,29 @@ std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const
 
 namespace {
 
-using Keyed = std::pair<std::uint64_t, VertexId>;  // (a hash of the weighted point, its input index)
-
-// Sorts pairs whose hashes are uniform: placed by their hashes' first bits (a counting sort into
-// about as many buckets as pairs), then each bucket, which holds one or two but where points
-// are copies of each other (one hash), sorted on its own (835,000 hidden points: 10 ms where
-// std::sort of them all took 80).
-void sort_hashed(std::vector<Keyed>& keyed, unsigned threads) {
-  const std::size_t n = keyed.size();
-  if (n < 2) return;
-  const int bits = std::clamp(static_cast<int>(std::bit_width(n)), 1, 24);
-  std::vector<std::uint32_t> end((std::size_t{1} << bits) + 1, 0);  // of bucket b - 1, once placed
-  for (const Keyed& k : keyed) ++end[(k.first >> (64 - bits)) + 1];
+// The items 0 to m - 1 (vertex ids, item(k)) as pairs (hash, input index), sorted: placed by the
+// hash's first bits (a counting sort into about as many buckets as items, each hashed twice
+// rather than placed through a second array: fewer fresh pages), then each bucket, which holds
+// one or two but where points are copies of each other (one hash), sorted on its own. With
+// 835,000 hidden points, 0.05 s on one thread where reading the input at random and std::sort
+// took 0.18-0.25 s.
+template <class Item, class Hash>
+std::vector<std::pair<std::uint64_t, VertexId>> sorted_by_hash(std::size_t m, Item&& item, Hash&& hash,
+                                                               const std::vector<VertexId>& input, unsigned threads) {
+  const int shift = 64 - std::clamp(static_cast<int>(std::bit_width(m)), 1, 24);
+  std::vector<std::uint32_t> end((std::size_t{1} << (64 - shift)) + 1, 0);  // bucket b - 1's end, once placed
+  for (std::size_t k = 0; k < m; ++k) ++end[(hash(item(k)) >> shift) + 1];
   for (std::size_t b = 1; b < end.size(); ++b) end[b] += end[b - 1];
-  std::vector<Keyed> placed;
-  resize_present(placed, n, threads);
-  for (const Keyed& k : keyed) placed[end[k.first >> (64 - bits)]++] = k;
+  std::vector<std::pair<std::uint64_t, VertexId>> keyed;
+  resize_present(keyed, m, threads);
+  for (std::size_t k = 0; k < m; ++k) {
+    const VertexId v = item(k);
+    const std::uint64_t h = hash(v);
+    keyed[end[h >> shift]++] = {h, input[v]};
+  }
   for (std::size_t b = 0, from = 0; b + 1 < end.size(); from = end[b++])
-    if (end[b] - from > 1) std::sort(placed.begin() + from, placed.begin() + end[b]);
-  keyed.swap(placed);
+    if (end[b] - from > 1) std::sort(keyed.begin() + from, keyed.begin() + end[b]);
+  return keyed;
 }
 
 }  // namespace
@@ -65,18 +69,13 @@ Settled settle(std::span<const Point> points, std::span<const double> weights, s
   of.reserve(static_cast<std::size_t>(std::count(is_hidden.begin(), is_hidden.end(), std::uint8_t{1})));
   for (VertexId v = 0; v < is_hidden.size(); ++v)
     if (is_hidden[v]) of.push_back(v), hidden[input[v]] = 1;
-  const std::size_t count = of.size();
-  std::vector<Keyed> keyed;
-  resize_present(keyed, 2 * copies.size() + count, threads);
-  for (std::size_t k = 0; k < copies.size(); ++k) {
-    const auto [c, w] = copies[k];
-    keyed[2 * k] = {hash(c), input[c]}, keyed[2 * k + 1] = {hash(w), input[w]};
-  }
-  parallel_for(count, threads, 16384, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) keyed[2 * copies.size() + k] = {hash(of[k]), input[of[k]]};
-  });
+  const std::size_t m = 2 * copies.size() + of.size();
+  auto item = [&](std::size_t k) {
+    return k < 2 * copies.size() ? (k % 2 == 0 ? copies[k / 2].first : copies[k / 2].second)
+                                 : of[k - 2 * copies.size()];
+  };
+  std::vector<std::pair<std::uint64_t, VertexId>> keyed = sorted_by_hash(m, item, hash, input, threads);
   Settled out;
-  sort_hashed(keyed, threads);
   keyed.erase(std::unique(keyed.begin(), keyed.end()), keyed.end());
   std::vector<std::pair<VertexId, VertexId>> least;  // (index, its group's least), where they differ
   auto same = [&](VertexId a, VertexId b) { return points[a] == points[b] && weights[a] == weights[b]; };
@@ -105,7 +104,7 @@ Settled settle(std::span<const Point> points, std::span<const double> weights, s
   // A group with a hidden member is hidden (a vertex hidden after its copies came), as its least.
   for (const auto& [i, low] : least)
     if (hidden[i]) hidden[i] = 0, hidden[low] = 1;
-  out.hidden.reserve(count);
+  out.hidden.reserve(of.size());
   for (VertexId i = 0; i < hidden.size(); ++i)
     if (hidden[i]) out.hidden.push_back(i);
   std::sort(out.duplicates.begin(), out.duplicates.end(),
