@@ -24,6 +24,7 @@ WeightedPoints read_weighted(const std::string& path, unsigned threads) {
     io::Pslg g = io::read_pslg(path, threads);
     if (g.vertex_attributes == 0) throw IoError(path + ": no attribute to take the weights from");
     w.points = std::move(g.points);
+    w.weights.reserve(w.points.size());
     for (std::size_t i = 0; i < w.points.size(); ++i) w.weights.push_back(g.point_attributes[i * g.vertex_attributes]);
     w.first_index = g.first_index;
     return w;
@@ -31,6 +32,7 @@ WeightedPoints read_weighted(const std::string& path, unsigned threads) {
   std::size_t columns = 3;
   const std::vector<double> rows = io::read_values(path, columns);
   if (columns != 3) throw IoError(path + ": a weighted point is three numbers, x y w, not " + std::to_string(columns));
+  w.points.reserve(rows.size() / 3), w.weights.reserve(rows.size() / 3);  // (no copies as they grow)
   for (std::size_t k = 0; k + 2 < rows.size(); k += 3)
     w.points.push_back({rows[k], rows[k + 1]}), w.weights.push_back(rows[k + 2]);
   return w;
