@@ -7,7 +7,6 @@
 #include "order/random.hpp"
 #include "predicates/predicates.hpp"
 #include "runtime/memory.hpp"
-#include "runtime/parallel.hpp"
 
 namespace ridt::detail {
 
