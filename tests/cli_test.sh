@@ -455,7 +455,7 @@ for _, a, b, m in rows(".edge"):
     assert int(m) == want, (a, b, m, want)
     seen.add(want)
 assert seen == {0, 1, 7, 9}, seen
-assert open(sys.argv[1] + ".node").readline().split() == ["23", "2", "2", "1"]
+assert open(sys.argv[1] + ".node").readline().split() == [str(len(xy)), "2", "2", "1"]
 for _, x, y, a1, a2, m in rows(".node"):
     x, y = float(x), float(y)
     want = 3 if x == y == 0 else 7 if y == 0 else 9 if y == 10 else 1 if x in (0, 10) else 0

@@ -163,6 +163,32 @@ bool Refiner::matched(VertexId z, VertexId y, Point& at) const {
   return true;
 }
 
+// The fixed edges that p, added in `at`, would see strictly inside their diametral circles:
+// those bounding the cavity of p (the triangles whose circles hold p, linked without crossing
+// a fixed edge: Cdt::find_cavity, which insert_cavity then fills).
+std::vector<Link>& Refiner::would_encroach(const Point& p, const Cdt::Place& at) {
+  m_.find_cavity(p, at);
+  const CavityScratch& s = m_.cavity();
+  hit_.clear();
+  for (std::size_t i = 0; i < s.edges; ++i)
+    if (const Link e = s.boundary[i].inside; m_.fixed(e) && in_lens(m_.pts[m_.tds.tail(e)], m_.pts[m_.tds.head(e)], p))
+      hit_.push_back(e);
+  return hit_;
+}
+
+// Whether p, where a point is meant to go, encroaches subsegment a-b: p sees a-b at more
+// than 180 degrees less twice the lens angle, max(bound, 30 degrees): inside Shewchuk's
+// diametral lens, or, in a conforming triangulation, inside the diametral circle (above 90
+// degrees). A point in the circle but outside the lens makes with a-b a triangle whose angles
+// at a and b keep the bound where it stands over the middle, and that its own point mends
+// where not; the circle turned such points into splits that graded the mesh down to the
+// segment (docs/constrained.md: a coastline of 250,000 vertices at 33 degrees, 5 % fewer
+// triangles).
+bool Refiner::in_lens(const Point& a, const Point& b, const Point& p) const {
+  const double d = dot(a, b, p);  // |pa| |pb| cos(angle a-p-b)
+  return d < 0 && (r_.conforming || d * d > lens2_ * dist2(a, p) * dist2(b, p));
+}
+
 bool Refiner::make_room() {
   try {
     if (m_.room() < kAhead) m_.make_room(std::max(kAhead, m_.pts.size() / 4));
