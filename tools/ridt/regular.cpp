@@ -29,12 +29,7 @@ WeightedPoints read_weighted(const std::string& path, unsigned threads) {
     w.first_index = g.first_index;
     return w;
   }
-  std::size_t columns = 3;
-  const std::vector<double> rows = io::read_values(path, columns);
-  if (columns != 3) throw IoError(path + ": a weighted point is three numbers, x y w, not " + std::to_string(columns));
-  w.points.reserve(rows.size() / 3), w.weights.reserve(rows.size() / 3);  // (no copies as they grow)
-  for (std::size_t k = 0; k + 2 < rows.size(); k += 3)
-    w.points.push_back({rows[k], rows[k + 1]}), w.weights.push_back(rows[k + 2]);
+  io::read_weighted(path, w.points, w.weights);
   return w;
 }
 

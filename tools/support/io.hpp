@@ -332,6 +332,10 @@ void write_voronoi(const std::string& path, std::span<const Point> points, const
 /// decides it (text) or 1 (.bin). Returns the numbers and sets `components`.
 std::vector<double> read_values(const std::string& path, std::size_t& components);
 
+/// Reads weighted points, rows x y w as read_values reads them, into `points` and `weights`
+/// (IoError where a row has not three numbers).
+void read_weighted(const std::string& path, std::vector<Point>& points, std::vector<double>& weights);
+
 /// Writes values at queries: .csv ("x,y,v1,...", a header line first), .bin (float64 values,
 /// row by row) or, for a grid of nx by ny (nx, ny > 0) of one component, .png (a colour map
 /// from the smallest to the largest finite value, transparent where there is none).

@@ -62,36 +62,74 @@ std::string detail::png_bytes(const std::string& path, const unsigned char* pixe
 #endif
 }
 
-std::vector<double> read_values(const std::string& path, std::size_t& components) {
-  const std::string data = detail::read_file_whole(path);
-  std::vector<double> out;
+namespace {
+
+// Calls row(numbers) for each row of `components` numbers in `data`, the bytes of `path`, as
+// read_values reads them (setting `components` where it is 0).
+template <class Row>
+void for_each_row(std::string_view data, const std::string& path, std::size_t& components, Row&& row) {
+  std::vector<double> r;
   if (detail::extension_of(path) == ".bin") {
     if (components == 0) components = 1;
     if (data.size() % (8 * components) != 0)
       detail::fail_file(path,
                         "size " + std::to_string(data.size()) + " bytes is not a multiple of " +
                             std::to_string(8 * components) + " (rows of float64)");
-    out.resize(data.size() / 8);
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = detail::load_f64_le(data.data() + 8 * i);
-    return out;
+    r.resize(components);
+    for (std::size_t at = 0; at < data.size(); at += 8 * components) {
+      for (std::size_t k = 0; k < components; ++k) r[k] = detail::load_f64_le(data.data() + at + 8 * k);
+      row(r.data());
+    }
+    return;
   }
   detail::for_each_line(data, [&](std::size_t line_no, std::string_view line) {
     detail::Fields f{line, true};
-    std::size_t count = 0;
-    for (std::string_view field; f.next(field); ++count) {
+    r.clear();
+    for (std::string_view field; f.next(field);) {
       double v = 0;
       if (detail::parse_double(field, v) != detail::Parse::Ok)
         detail::fail_line(path, line_no, "value " + detail::quoted(field) + " is not a number");
-      out.push_back(v);
+      r.push_back(v);
     }
     if (f.bad) detail::fail_line(path, line_no, "a misplaced comma in " + detail::quoted(line));
-    if (components == 0) components = count;
-    if (count != components)
+    if (components == 0) components = r.size();
+    if (r.size() != components)
       detail::fail_line(path, line_no,
-                        "expected " + std::to_string(components) + " values, got " + std::to_string(count));
+                        "expected " + std::to_string(components) + " values, got " + std::to_string(r.size()));
+    row(r.data());
   });
   if (components == 0) components = 1;
-  return out;
+}
+
+// The rows `data` may hold: exactly those of a .bin, at most its lines for text.
+std::size_t rows_in(std::string_view data, const std::string& path, std::size_t components) {
+  if (detail::extension_of(path) == ".bin") return data.size() / (8 * std::max<std::size_t>(components, 1));
+  return static_cast<std::size_t>(std::count(data.begin(), data.end(), '\n')) + 1;
+}
+
+}  // namespace
+
+// (The file mapped, not copied: a copy of 10^6 rows of three numbers is 24 MB of fresh pages.)
+std::vector<double> read_values(const std::string& path, std::size_t& components) {
+  return detail::FileText(path).parse([&](std::string_view data) {
+    std::vector<double> out;
+    if (detail::extension_of(path) == ".bin") out.reserve(data.size() / 8);
+    for_each_row(data, path, components, [&](const double* r) { out.insert(out.end(), r, r + components); });
+    return out;
+  });
+}
+
+void read_weighted(const std::string& path, std::vector<Point>& points, std::vector<double>& weights) {
+  std::size_t components = 3;
+  detail::FileText(path).parse([&](std::string_view data) {
+    const std::size_t most = rows_in(data, path, components);
+    points.clear(), weights.clear();
+    points.reserve(most), weights.reserve(most);
+    for_each_row(data, path, components, [&](const double* r) {
+      points.push_back({r[0], r[1]}), weights.push_back(r[2]);
+    });
+    return 0;
+  });
 }
 
 namespace detail {
