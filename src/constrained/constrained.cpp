@@ -64,8 +64,11 @@ void check_refinable(const detail::Extent& e) {
     std::snprintf(text, sizeof text, "%.3Lg", v);
     return std::string(text);
   };
-  if (!std::isfinite(w * w + h * h))
-    throw InputError("quality meshing needs the points' box below about 1e154 across (it is " +
+  // The angle tests square a triangle's doubled area and multiply squared lengths: products of
+  // degree 4 in the coordinates, finite while the box's half diagonal is below 2^255.
+  const double d2 = w * w + h * h;
+  if (!std::isfinite(d2 * d2))
+    throw InputError("quality meshing needs the points' box below about 1e76 across (it is " +
                      g(static_cast<long double>(e.x1) - e.x0) + " by " + g(static_cast<long double>(e.y1) - e.y0) +
                      ", and coordinates as small as " + g(e.smallest) + " keep it from being scaled exactly)");
 }

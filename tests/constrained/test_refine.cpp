@@ -581,6 +581,28 @@ TEST(Refine, AGraphFarWiderThanItsDetails) {
   EXPECT_EQ(m.t.crossings, 2u);
 }
 
+// A graph 10^100 wide with a coordinate of 10^-300 cannot be refined on its own coordinates
+// (no power of two scales both exactly, and the angle tests' products of degree 4 overflow):
+// refused, where it was taken and left with every triangle as it was, bad or not; with 0 for
+// 10^-300 it is scaled and refined. 10^70 wide it is refined as it is, as its scaled copy is.
+TEST(Refine, AGraphTooWideForTheAngleTestsIsRefused) {
+  Quality q;
+  q.min_angle = 30;
+  auto graph = [](double wide, double tiny) {
+    Pslg g;
+    g.points = {{0, 0}, {wide, 0}, {wide, wide / 5}, {tiny, wide * 0.4}};
+    g.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+    return g;
+  };
+  const Pslg refused = graph(1e100, 1e-300);
+  EXPECT_THROW(triangulate_constrained(refused.points, refused.segments, {}, {}, q), InputError);
+  EXPECT_GT(mesh(graph(1e100, 0), q).t.steiner.size(), 0u);
+  const Meshed unscaled = mesh(graph(1e70, 1e-300), q), scaled = mesh(graph(1e70, 0), q);
+  EXPECT_TRUE(unscaled.t.warning.empty()) << unscaled.t.warning;
+  EXPECT_GT(unscaled.t.steiner.size(), 0u);
+  EXPECT_EQ(unscaled.t.size(), scaled.t.size());
+}
+
 // Below the least normal double roundings are absolute steps: points added on the segment
 // along y = 3 * 2^-1074 across a square land a step off it, and check_mesh still takes them as
 // on it (on a scale of their own coordinates, a step is a quarter of them).
