@@ -56,7 +56,7 @@ struct Domain {
 };
 
 /// Delaunay refinement of the triangulation (Triangle's -q, -a, -Y): points added at
-/// off-centres of bad triangles and on segments their circles encroach, the boundary's edges
+/// off-centres of bad triangles and on the segments those would encroach, the boundary's edges
 /// treated as segments. Every triangle ends with no angle below `min_angle` and no area above
 /// its bound, except the triangles at a small angle between two segments, which no point can
 /// mend (check_quality names them).

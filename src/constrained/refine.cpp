@@ -4,7 +4,8 @@
 // when a vertex it sees (not one added on another subsegment, but for a conforming
 // triangulation) lies strictly inside its diametral circle. A conforming triangulation splits
 // each as it is found; a constrained one where it is encroached through a triangle that the
-// angle bound exempts, or where a point to be added would encroach it (Refiner::run says why).
+// angle bound exempts, or where a point to be added would lie inside its diametral lens
+// (in_lens; Refiner::run says why).
 // A split falls at the midpoint, or, where one end is a corner, at a power-of-two distance from
 // it, so that splits near a small input angle fall on concentric shells and stop. Each bad
 // triangle (a smallest angle below the bound, or an area above it) gets a point at its
@@ -163,8 +164,8 @@ bool Refiner::matched(VertexId z, VertexId y, Point& at) const {
   return true;
 }
 
-// The fixed edges that p, added in `at`, would see strictly inside their diametral circles:
-// those bounding the cavity of p (the triangles whose circles hold p, linked without crossing
+// The fixed edges that p, added in `at`, would encroach (in_lens), among those bounding the
+// cavity of p (the triangles whose circles hold p, linked without crossing
 // a fixed edge: Cdt::find_cavity, which insert_cavity then fills).
 std::vector<Link>& Refiner::would_encroach(const Point& p, const Cdt::Place& at) {
   m_.find_cavity(p, at);
@@ -185,8 +186,10 @@ std::vector<Link>& Refiner::would_encroach(const Point& p, const Cdt::Place& at)
 // segment (docs/constrained.md: a coastline of 250,000 vertices at 33 degrees, 5 % fewer
 // triangles).
 bool Refiner::in_lens(const Point& a, const Point& b, const Point& p) const {
+  // (Of degree 2 in the coordinates, as dot: squared again, the two sides overflowed for
+  // subsegments longer than about 10^77, which a box up to 10^154 wide may hold.)
   const double d = dot(a, b, p);  // |pa| |pb| cos(angle a-p-b)
-  return d < 0 && (r_.conforming || d * d > lens2_ * dist2(a, p) * dist2(b, p));
+  return d < 0 && (r_.conforming || d < -lens_ * std::sqrt(dist2(a, p)) * std::sqrt(dist2(b, p)));
 }
 
 bool Refiner::make_room() {

@@ -58,7 +58,7 @@ class Refiner {
     // bound exactly: then it is not bad again by a rounding (23 % fewer points on a coastline of 10^4 vertices).
     offset_ = r.min_angle > 0 ? 0.475 / std::tan(r.min_angle * 3.14159265358979323846 / 360) : 0;
     const double lens = std::sin(std::max(r.min_angle, 30.0) * 3.14159265358979323846 / 180);
-    lens2_ = (1 - 2 * lens * lens) * (1 - 2 * lens * lens);  // cos^2 of twice the lens angle (in_lens)
+    lens_ = 1 - 2 * lens * lens;  // the cosine of twice the lens angle (in_lens)
     box_ = fence != nullptr ? fence->box : extent_of(m.pts);
     diag2_ = dist2({box_.x0, box_.y0}, {box_.x1, box_.y1});
     tiny2_ = diag2_ * 0x1p-80;  // edges below 2^-40 of the diagonal stay
@@ -454,7 +454,7 @@ class Refiner {
     return hilbert_key(cell(p.x, box_.x0), cell(p.y, box_.y0));
   }
 
-  double sin2_ = 0, half_bound_ = 0, lens2_ = 0, offset_ = 0, diag2_ = 0, tiny2_ = 0, cells_ = 0;
+  double sin2_ = 0, half_bound_ = 0, lens_ = 0, offset_ = 0, diag2_ = 0, tiny2_ = 0, cells_ = 0;
   Extent box_;
   std::vector<std::pair<VertexId, VertexId>> ends_;  // per vertex on a chain: its corners
   std::vector<std::uint8_t> small_;  // per corner: two of its segments meet at less than 60 degrees

@@ -101,10 +101,11 @@ void for_each_row(std::string_view data, const std::string& path, std::size_t& c
   if (components == 0) components = 1;
 }
 
-// The rows `data` may hold: exactly those of a .bin, at most its lines for text.
+// The rows `data` may hold: exactly those of a .bin; for text at most its lines, and at most
+// one in six bytes (the shortest row: "0 0 0\n").
 std::size_t rows_in(std::string_view data, const std::string& path, std::size_t components) {
   if (detail::extension_of(path) == ".bin") return data.size() / (8 * std::max<std::size_t>(components, 1));
-  return static_cast<std::size_t>(std::count(data.begin(), data.end(), '\n')) + 1;
+  return std::min(static_cast<std::size_t>(std::count(data.begin(), data.end(), '\n')) + 1, data.size() / 6 + 1);
 }
 
 }  // namespace
