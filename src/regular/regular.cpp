@@ -22,6 +22,7 @@
 #include <bit>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <string>
@@ -88,7 +89,9 @@ class Builder {
       else
         key_[static_cast<std::size_t>(f - first.begin())] = keys[k];
     }
-    resize_present(q_, n_, threads_);
+    resize_present(q_, n_ + 1, threads_);
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    q_[infinite_] = {{kNaN, kNaN}, kNaN};  // (see sees)
     parallel_for(n_, threads_, 65536, [&](std::size_t from, std::size_t to) {
       constexpr std::size_t kAhead = 16;  // (read at random: the misses overlap)
       for (std::size_t v = from; v < to; ++v) {
@@ -178,8 +181,14 @@ class Builder {
   bool power_sees(VertexId a, VertexId b, VertexId c, VertexId v) const {
     return power_sos(q_[a], q_[b], q_[c], q_[v]) > 0;
   }
-  // Whether face w (a slot's corners) sees point v: see the file's comment.
-  bool sees(const VertexId* w, VertexId v) const {
+  // Whether face w (a slot's corners) sees point v: see the file's comment. The vertex at
+  // infinity's weighted point is NaN, so a wall's test fails the filter as an unsure one does,
+  // and only then are the corners looked at, off the common path.
+  [[gnu::always_inline]] bool sees(const VertexId* w, VertexId v) const {
+    if (const int s = power_filter(q_[w[0]], q_[w[1]], q_[w[2]], q_[v]); s != 0) return s > 0;
+    return sees_unsure(w, v);
+  }
+  [[gnu::noinline]] bool sees_unsure(const VertexId* w, VertexId v) const {
     const int k = infinite_corner(w);
     if (k < 0) return power_sees(w[0], w[1], w[2], v);
     const VertexId p = w[next3(k)], q = w[prev3(k)];
@@ -365,7 +374,7 @@ class Builder {
   std::span<const double> weights_;
   VertexId n_, infinite_;
   unsigned threads_;
-  std::vector<Weighted> q_;  // by vertex id
+  std::vector<Weighted> q_;  // by vertex id, the vertex at infinity's NaN
   std::vector<VertexId> input_;
   std::vector<std::pair<VertexId, VertexId>> copies_;
   Tds tds_;
