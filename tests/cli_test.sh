@@ -990,6 +990,31 @@ absent "$dir/col.ele"
 expect 2 "regular: two columns" -- "$ridt" regular <(printf '0 0\n1 0\n0 1\n') -o "$dir/two.ele"
 expect 2 "regular: a weight that is not finite" -- "$ridt" regular <(printf '0 0 0\n1 0 inf\n0 1 0\n') -o "$dir/inf.ele"
 expect 2 "regular: a .node without attributes" -- "$ridt" regular <(printf '3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n') -o "$dir/na.ele"
+# The same from files (read mapped, not through a pipe): the line or the size named, nothing
+# written; rows of float64, a last line without its newline, and CRLF lines read.
+printf '0 0 0\n1 0 0\n0 1\n1 1 0\n' >"$dir/w_short.txt"
+expect 2 "regular: a short row in a file" -- "$ridt" regular "$dir/w_short.txt" -o "$dir/w_short.ele"
+stderr_has "w_short.txt:3: expected 3 values, got 2"
+absent "$dir/w_short.ele"
+printf '0 0 0\n1 0 x\n0 1 0.1\n' >"$dir/w_word.txt"
+expect 2 "regular: a word in a file" -- "$ridt" regular "$dir/w_word.txt" -o "$dir/w_word.ele"
+stderr_has 'w_word.txt:2: value "x" is not a number'
+: >"$dir/w_empty.txt"
+expect 2 "regular: an empty file" -- "$ridt" regular "$dir/w_empty.txt" -o "$dir/w_empty.ele"
+absent "$dir/w_empty.ele"
+/usr/bin/python3 -c "
+import struct, sys
+open(sys.argv[1], 'wb').write(struct.pack('<12d', 0, 0, 0, 4, 0, 0, 0, 4, 0, 1, 1, -9))
+open(sys.argv[2], 'wb').write(struct.pack('<8d', 0, 0, 0, 1, 0, 0, 0, 1))
+" "$dir/w_rows.bin" "$dir/w_odd.bin"
+expect 0 "regular of rows of float64" -- "$ridt" regular "$dir/w_rows.bin" -o "$dir/w_rows.ele" --check
+stderr_has "3 vertices of 4 points (1 hidden), exactly regular"
+expect 2 "regular: float64 rows cut short" -- "$ridt" regular "$dir/w_odd.bin" -o "$dir/w_odd.ele"
+stderr_has "size 64 bytes is not a multiple of 24"
+absent "$dir/w_odd.ele"
+printf '0 0 0\r\n1 0 0\r\n0 1 0.1' >"$dir/w_crlf.txt"
+expect 0 "regular: CRLF lines, the last without its end" -- "$ridt" regular "$dir/w_crlf.txt" -o "$dir/w_crlf.ele" --check
+stderr_has "exactly regular"
 
 # ridt periodic: points on the torus of a domain; triangles with offsets, neighbours, cells
 # whose areas add up to the domain's; points outside refused, nothing written.
