@@ -185,7 +185,8 @@ class Builder {
   // infinity's weighted point is NaN, so a wall's test fails the filter as an unsure one does,
   // and only then are the corners looked at, off the common path.
   [[gnu::always_inline]] bool sees(const VertexId* w, VertexId v) const {
-    if (const int s = power_filter(q_[w[0]], q_[w[1]], q_[w[2]], q_[v]); s != 0) return s > 0;
+    const Weighted* q = q_.data();  // (read once: a store to the cavity's bytes could change q_)
+    if (const int s = power_filter(q[w[0]], q[w[1]], q[w[2]], q[v]); s != 0) return s > 0;
     return sees_unsure(w, v);
   }
   [[gnu::noinline]] bool sees_unsure(const VertexId* w, VertexId v) const {
@@ -211,7 +212,7 @@ class Builder {
     const Walked w = tds_.walk(
         t, [&](VertexId a, VertexId b) { return orient2d(q_[a].p, q_[b].p, q); },
         [&](Link l) {
-          wall = infinite_corner(tds_.corners(triangle_of(l))) >= 0;
+          wall = tds_.opposite(l) == infinite_;  // (a wall's one finite edge is the one crossed)
           return !wall && ++steps < limit ? Step::Cross : Step::Stop;
         });
     outside = !w && wall;
@@ -334,7 +335,7 @@ class Builder {
           if (!(owns(p, a) || owns(p, b)) || ++steps >= walk_limit_) return Step::Stop;
           const VertexId* c = tds_.corners(t);  // (the face across shares a or b: it may be read)
           const int i = c[0] != a && c[0] != b ? 0 : c[1] != a && c[1] != b ? 1 : 2;
-          return infinite_corner(tds_.corners(triangle_of(tds_.link(t, i)))) >= 0 ? Step::Stop : Step::Cross;
+          return tds_.opposite(tds_.link(t, i)) == infinite_ ? Step::Stop : Step::Cross;
         });
     return static_cast<bool>(w);
   }
