@@ -221,6 +221,21 @@ TEST(Regular, ManyCopiesOfAHiddenPointAreOneGroup) {
   EXPECT_TRUE(std::binary_search(t.hidden.begin(), t.hidden.end(), n));
 }
 
+// Zeros of either sign are one value, in the coordinates and in the weight: hidden copies that
+// differ only there are one group; a point at the same place with another weight is not of it.
+TEST(Regular, HiddenCopiesWithSignedZerosAreOneGroup) {
+  Weighted in;  // lifts -1 at the corners, 0 and 1 in the middle: the middle ones hidden
+  in.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, 0}, {-0.0, 0}, {0, -0.0}, {0, 0}};
+  in.weights = {3, 3, 3, 3, 0, -0.0, 0, -1};
+  const RegularTriangulation t = checked(in);
+  EXPECT_EQ(t.hidden, (std::vector<VertexId>{4, 7}));
+  ASSERT_EQ(t.duplicates.size(), 2u);
+  EXPECT_EQ(t.duplicates[0].dropped, 5u);
+  EXPECT_EQ(t.duplicates[0].kept, 4u);
+  EXPECT_EQ(t.duplicates[1].dropped, 6u);
+  EXPECT_EQ(t.duplicates[1].kept, 4u);
+}
+
 TEST(Regular, CollinearHullPointsAndHiddenOnesOnTheHull) {
   // A square's sides full of points; some of those on the bottom side made light enough that
   // their neighbours on the side hide them.
