@@ -106,7 +106,7 @@ struct GridField {
     for (std::size_t k = 0; k < points.size(); ++k) {
       const auto [i, fx] = along(points[k].x, x0, x1, nx);
       const auto [j, fy] = along(points[k].y, y0, y1, ny);
-      auto value = [&](std::size_t di, std::size_t dj) {
+      auto value = [&, i = i, j = j](std::size_t di, std::size_t dj) {  // (bindings captured by copy: clang 14)
         return h[std::min(j + dj, ny - 1) * nx + std::min(i + di, nx - 1)];
       };
       const double low = value(0, 0) + fx * (value(1, 0) - value(0, 0));
