@@ -144,8 +144,12 @@ class Builder {
       int axis = 0;
       for (int k = 1; k < 3; ++k)
         if (std::fabs(d[k]) > std::fabs(d[axis])) axis = k;
-      const double scale = d[axis] != 0 ? 32767.5 / std::fabs(d[axis]) : 0;
-      auto cell = [&](double x) { return static_cast<std::uint32_t>(std::clamp(x * scale + 32767.5, 0.0, 65535.0)); };
+      // The other two coordinates over the largest's magnitude, in [-1, 1] at any scale (a factor
+      // 32767.5 / |d| taken first is infinite for a difference below 2^-1009, and 0 times it NaN).
+      const double m = std::fabs(d[axis]);
+      auto cell = [&](double x) {
+        return m > 0 ? static_cast<std::uint32_t>(std::clamp(x / m * 32767.5 + 32767.5, 0.0, 65535.0)) : 32767u;
+      };
       // The face in the top three bits, the curve's place on it in 29 (cells 2^-14.5 of the
       // face wide): 32 bits, below 6 * 2^29.
       const std::uint32_t face = 2 * static_cast<std::uint32_t>(axis) + (d[axis] < 0);

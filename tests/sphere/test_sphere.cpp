@@ -228,6 +228,17 @@ TEST(Sphere, CopiesOfZeroAndNeighboursInTheLastBits) {
   for (int i = 0; i < 4; ++i) EXPECT_EQ(std::make_pair(t.duplicates[i].dropped, t.duplicates[i].kept), want[i]) << i;
 }
 
+// A point whose difference from the points' box's centre is subnormal (the insertion order's key
+// divided by it once, and multiplied 0 by the infinite quotient: NaN, cast to an integer), among
+// an octahedron of radius 1e-300: a point inside, hidden.
+TEST(Sphere, APointASubnormalFromTheCentre) {
+  std::vector<Point3> pts = {{1e-300, 0, 0}, {-1e-300, 0, 0}, {0, 1e-300, 0}, {0, -1e-300, 0},
+                             {0, 0, 1e-300}, {0, 0, -1e-300}, {1e-320, 0, 0}};
+  const SphericalTriangulation t = expect_valid(pts);
+  EXPECT_EQ(t.size(), 8u);
+  EXPECT_EQ(t.hidden, (std::vector<VertexId>{6}));
+}
+
 // The shortest edge is the closest pair (brute force), at scales whose squares underflow or
 // overflow too, on 1 and 2 threads.
 TEST(Sphere, ShortestEdgeIsTheClosestPair) {
