@@ -186,8 +186,7 @@ std::vector<Link>& Refiner::would_encroach(const Point& p, const Cdt::Place& at)
 // segment (docs/constrained.md: a coastline of 250,000 vertices at 33 degrees, 5 % fewer
 // triangles).
 bool Refiner::in_lens(const Point& a, const Point& b, const Point& p) const {
-  // (Of degree 2 in the coordinates, as dot: squared again, the two sides overflowed for
-  // subsegments longer than about 10^77, which a box up to 10^154 wide may hold.)
+  // (Of degree 2 in the coordinates, as dot is: squared, both sides would be of degree 4.)
   const double d = dot(a, b, p);  // |pa| |pb| cos(angle a-p-b)
   return d < 0 && (r_.conforming || d < -lens_ * std::sqrt(dist2(a, p)) * std::sqrt(dist2(b, p)));
 }
