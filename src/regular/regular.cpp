@@ -100,7 +100,7 @@ class Builder {
         q_[v] = {points_[input_[v]], weights_[input_[v]]};
       }
     });
-    resize_present(hidden_, n_, threads_);
+    resize_present(hidden_, n_, threads_), resize_present(cover_at_, n_ + 1, threads_);
     start(std::move(arrays));
     // The rounds (where the keys fall back), each shared among the threads where it is large.
     for (VertexId b = 3, e; b < n_; b = e) {
@@ -253,7 +253,7 @@ class Builder {
           [&](VertexId u) {
             if (u < n_) hidden_[u] = 1;
           },
-          free_, cover_);
+          free_, cover_, cover_at_);
     SlotPool pool;
     if (free_.size() >= 2) {
       pool.list = free_.data(), pool.listed = free_.size();
@@ -366,7 +366,7 @@ class Builder {
           [&](VertexId u) {
             if (u < n_) hidden_[u] = 1;
           },
-          p.freed, p.cover);
+          p.freed, p.cover, cover_at_);
     p.start = tds_.fill_cavity(v, s, p.pool);
     return true;
   }
@@ -386,6 +386,9 @@ class Builder {
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
+  // cover_cavity's entries, by vertex id (the vertex at infinity's too): a thread writes those
+  // of its cavities' vertices, which are all in its region.
+  std::vector<std::uint32_t> cover_at_;
   std::vector<std::uint32_t> key_;  // by vertex id: its point's key along the curve
   std::vector<CavityScratch> scratches_;  // a thread's each
   std::size_t walk_limit_ = 0;

@@ -224,10 +224,12 @@ class Builder {
     tds_.find_cavity(
         t, scratch_, [&](const VertexId* w) { return sees(w, v); }, Tds::kAnywhere, Tds::kNoWall,
         stamped(stamp_, epoch_));
-    if (scratch_.revisited)
+    if (scratch_.revisited) {
+      cover_at_.resize(p_.size());  // (made at the first: few sets have points inside their hull)
       cover_cavity(
           tds_, scratch_, [&](TriangleId u) { return stamp_[u] == epoch_; }, [&](VertexId u) { hidden_[u] = 1; }, free_,
-          cover_);
+          cover_, cover_at_);
+    }
     SlotPool pool;
     if (free_.size() >= 2) {
       pool.list = free_.data(), pool.listed = free_.size();
@@ -344,6 +346,7 @@ class Builder {
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
+  std::vector<std::uint32_t> cover_at_;  // cover_cavity's, by vertex id
   std::vector<std::uint32_t> curve_;
   std::vector<std::uint32_t> key_;  // by vertex id: curve_ of its rank
   std::vector<VertexId> rounds_;  // the insertion order's rounds: [rounds_[r], rounds_[r + 1])
