@@ -80,7 +80,7 @@ class Builder {
     std::vector<std::uint32_t> keys;  // along each round, never decreasing
     const std::vector<std::uint32_t> order =
         brio_order(points_.data(), n_, 0x5eed, threads_, &keys, {arrays.words(), arrays.numbers()});
-    resize_present(input_, n_, threads_), resize_present(key_, n_, threads_);
+    resize_present(input_, n_, threads_), key_ = HugeArray<std::uint32_t>(n_, threads_);
     std::copy(first.begin(), first.end(), input_.begin());
     for (VertexId k = 0, v = 3; k < n_; ++k) {
       const auto f = std::find(first.begin(), first.end(), order[k]);
@@ -89,7 +89,7 @@ class Builder {
       else
         key_[static_cast<std::size_t>(f - first.begin())] = keys[k];
     }
-    resize_present(q_, n_ + 1, threads_);
+    q_ = HugeArray<Weighted>(n_ + 1, threads_);
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     q_[infinite_] = {{kNaN, kNaN}, kNaN};  // (see sees)
     parallel_for(n_, threads_, 65536, [&](std::size_t from, std::size_t to) {
@@ -100,7 +100,8 @@ class Builder {
         q_[v] = {points_[input_[v]], weights_[input_[v]]};
       }
     });
-    resize_present(hidden_, n_, threads_), resize_present(cover_at_, n_ + 1, threads_);
+    resize_present(hidden_, n_, threads_);
+    cover_at_ = zeros(n_ + 1);
     start(std::move(arrays));
     // The rounds (where the keys fall back), each shared among the threads where it is large.
     for (VertexId b = 3, e; b < n_; b = e) {
@@ -116,9 +117,9 @@ class Builder {
   Tds& tds() { return tds_; }
   VertexId infinite() const { return infinite_; }
   /// Per vertex id: its input index (the least of its copies'), whether it is hidden.
-  const std::vector<VertexId>& input() const { return input_; }
+  std::vector<VertexId>& input() { return input_; }
   const std::vector<std::uint8_t>& hidden() const { return hidden_; }
-  const std::vector<Weighted>& weighted() const { return q_; }
+  std::span<const Weighted> weighted() const { return q_; }
   /// Copies found: (the copy's vertex id, the vertex id it coincides with).
   const std::vector<std::pair<VertexId, VertexId>>& copies() const { return copies_; }
 
@@ -155,6 +156,15 @@ class Builder {
     return orient2d(points_[a], points_[b], points_[c]) > 0 ? std::array{a, b, c} : std::array{a, c, b};
   }
 
+  // An array of `size` zeros (HugeArray: kept for the next triangulation in the process).
+  HugeArray<std::uint32_t> zeros(std::size_t size) const {
+    HugeArray<std::uint32_t> a(size, threads_);
+    parallel_for(size, threads_, 1 << 18, [&](std::size_t from, std::size_t to) {
+      std::fill(a.data() + from, a.data() + to, std::uint32_t{0});
+    });
+    return a;
+  }
+
   // The first triangle (0, 1, 2) and its three walls, linked, in arrays with room for every
   // face of n points (at most 2n - 2; a fan takes its cavity's slots and two more, freed ones
   // first).
@@ -171,7 +181,7 @@ class Builder {
             if (faces[g][next3(j)] == faces[f][prev3(i)] && faces[g][prev3(j)] == faces[f][next3(i)])
               arrays.link[3 * f + i] = static_cast<Link>(3 * g + j);
     tds_ = Tds(std::move(arrays.v), std::move(arrays.link), 4);
-    resize_present(stamp_, 2 * std::size_t{n_} + 2, threads_);
+    stamp_ = zeros(2 * std::size_t{n_} + 2);
   }
 
   // The corner of face w that is the vertex at infinity, or -1.
@@ -375,21 +385,21 @@ class Builder {
   std::span<const double> weights_;
   VertexId n_, infinite_;
   unsigned threads_;
-  std::vector<Weighted> q_;  // by vertex id, the vertex at infinity's NaN
+  HugeArray<Weighted> q_;  // by vertex id, the vertex at infinity's NaN
   std::vector<VertexId> input_;
   std::vector<std::pair<VertexId, VertexId>> copies_;
   Tds tds_;
   TriangleId last_ = 0;
   CavityScratch scratch_;
   std::vector<TriangleId> free_;
-  std::vector<std::uint32_t> stamp_;
+  HugeArray<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
   std::vector<std::uint8_t> hidden_;
   CoverScratch cover_;
   // cover_cavity's entries, by vertex id (the vertex at infinity's too): a thread writes those
   // of its cavities' vertices, which are all in its region.
-  std::vector<std::uint32_t> cover_at_;
-  std::vector<std::uint32_t> key_;  // by vertex id: its point's key along the curve
+  HugeArray<std::uint32_t> cover_at_;
+  HugeArray<std::uint32_t> key_;  // by vertex id: its point's key along the curve
   std::vector<CavityScratch> scratches_;  // a thread's each
   std::size_t walk_limit_ = 0;
 };
@@ -406,7 +416,7 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
   builder.run();
   Tds& tds = builder.tds();
   const VertexId inf = builder.infinite();
-  std::vector<VertexId> input = builder.input();
+  std::vector<VertexId> input = std::move(builder.input());
   RegularTriangulation out;
   Settled settled = settle(points, weights, builder.weighted(), builder.copies(), builder.hidden(), input, threads);
   out.duplicates = std::move(settled.duplicates);

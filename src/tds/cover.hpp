@@ -13,8 +13,8 @@ namespace ridt::detail {
 
 /// find_cavity's `seen` for the triangulations whose cavities may meet a face twice: a face
 /// is among those met where its stamp is this insertion's epoch, and is stamped as it is met.
-inline auto stamped(std::vector<std::uint32_t>& stamp, std::uint32_t epoch) {
-  return [&stamp, epoch](TriangleId u, const TriangleId*, std::size_t) {
+inline auto stamped(std::span<std::uint32_t> stamp, std::uint32_t epoch) {
+  return [stamp, epoch](TriangleId u, const TriangleId*, std::size_t) {
     if (stamp[u] == epoch) return true;
     stamp[u] = epoch;
     return false;

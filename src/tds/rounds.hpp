@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "order/runs.hpp"
@@ -28,7 +29,7 @@ constexpr bool shared_round(VertexId points, unsigned threads) {
 /// each of its points in `pool`, and its stamps' epochs: epoch + i + 1, then steps of `threads`
 /// (Part::epoch the one before its first). Part needs those members.
 template <class Part>
-std::vector<Part> round_parts(Tds& tds, const std::vector<std::uint32_t>& key, VertexId b, VertexId e, unsigned threads,
+std::vector<Part> round_parts(Tds& tds, std::span<const std::uint32_t> key, VertexId b, VertexId e, unsigned threads,
                               std::uint32_t epoch) {
   std::vector<Part> parts(threads);
   const std::vector<Stretch> cut = cut_round(key.data(), b, e, threads);
