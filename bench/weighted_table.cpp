@@ -1,7 +1,7 @@
 // The regular (weighted Delaunay) triangulation beside CGAL's Regular_triangulation_2 and
 // beside ridt's own unweighted triangulation of the same points (the floor), in one run: the
 // kernels in process, interleaved, each figure the median of --reps. Weights are uniform in
-// [0, scale / n): `light` (scale 1, few points hidden) and `heavy` (scale 40, about a fifth).
+// [0, scale / n): `light` (scale 1, few points hidden) and `heavy` (scale 40, some 84 % hidden).
 //
 //   ridt_bench_weighted [--sizes 100000,1000000] [--reps 5] [--threads 2] [--csv FILE]
 #include <chrono>
