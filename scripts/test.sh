@@ -60,7 +60,7 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer (at ${SECONDS} s)"
 # -O1, as the sanitizers' authors advise: it compiles in three quarters of -O2's time, and the
 # tests then run about as long.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
-  -DRIDT_SANITIZE=address,undefined \
+  -DRIDT_SANITIZE=address,undefined,float-cast-overflow \
   -DRIDT_BUILD_TESTS=ON -DRIDT_BUILD_TOOLS=ON -DRIDT_BUILD_BENCH=OFF -DRIDT_BUILD_MPI=OFF \
   -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=ON >/dev/null
 cmake --build build-asan -j "$jobs"

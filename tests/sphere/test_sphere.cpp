@@ -230,9 +230,9 @@ TEST(Sphere, CopiesOfZeroAndNeighboursInTheLastBits) {
 
 // A point whose difference from the points' box's centre is subnormal, among an octahedron of
 // radius 1e-300: a point inside, hidden. Its insertion order's key once cast NaN to an integer
-// (32767.5 over the difference, infinite, times 0), which only clang's UBSan reports
-// (scripts/fuzz.sh; gcc's -fsanitize=undefined leaves float-cast-overflow out): here the
-// triangulation is checked, and the fuzz corpus keeps the input that found it.
+// (32767.5 over the difference, infinite, times 0): the sanitizer suite's float-cast-overflow
+// (which gcc's -fsanitize=undefined leaves out) reports it here, the triangulation is checked,
+// and the fuzz corpus keeps the input that found it.
 TEST(Sphere, APointASubnormalFromTheCentre) {
   std::vector<Point3> pts = {{1e-300, 0, 0}, {-1e-300, 0, 0}, {0, 1e-300, 0}, {0, -1e-300, 0},
                              {0, 0, 1e-300}, {0, 0, -1e-300}, {1e-320, 0, 0}};
