@@ -105,7 +105,7 @@ class Refiner {
           const Split w = segments_.back();
           segments_.pop_back();
           const Link s = m_.find_edge(w.x, w.y);
-          if (s != kNoLink && m_.fixed(s) && (w.forced || encroached(s))) split(s);
+          if (s != kNoLink && m_.fixed(s) && (w.forced || to_split(s))) split(s);
           continue;
         }
         if (!unsized_.empty() && (bad_.empty() || unsized_.size() >= kSizeBatch)) {
@@ -145,7 +145,7 @@ class Refiner {
 
   struct Split {
     VertexId x, y;
-    bool forced;  // split even where no vertex encroaches it (a point to be added would)
+    bool forced;  // split though no flaw (to_split): a point to be added, or its bad triangle (split_own), asks
   };
   void queue_split(Link s, bool forced) { segments_.push_back({m_.tds.tail(s), m_.tds.head(s), forced}); }
 
@@ -248,6 +248,10 @@ class Refiner {
     unsized_.clear();
   }
 
+  // Whether subsegment s is to be split before any bad triangle (refine.cpp).
+  bool to_split(Link s) const;
+  // Whether vertex v may encroach a subsegment (encroached says why).
+  bool counts(VertexId v) const { return r_.conforming || corner(v) || ends_[v].first == kNoVertex; }
   // The subsegment in slot s has a vertex strictly inside its diametral circle: the apex of its
   // triangle or of the one across. A point added on another subsegment counts only for a
   // conforming triangulation: two segments near each other (at a small angle, or side by side)
@@ -256,9 +260,7 @@ class Refiner {
   // With `sharp_only`, only through a triangle below the angle bound that the bound exempts.
   bool encroached(Link s, bool sharp_only = false) const {
     const Point &a = m_.pts[m_.tds.tail(s)], &b = m_.pts[m_.tds.head(s)];
-    auto inside = [&](VertexId v) {
-      return (r_.conforming || corner(v) || ends_[v].first == kNoVertex) && dot(a, b, m_.pts[v]) < 0;
-    };
+    auto inside = [&](VertexId v) { return counts(v) && dot(a, b, m_.pts[v]) < 0; };
     auto through = [&](Link e) { return !sharp_only || exempt_sharp(triangle_of(e)); };
     if (inside(m_.tds.vertex_at(s)) && through(s)) return true;
     const VertexId across = m_.apex_across(s);
