@@ -219,6 +219,66 @@ VertexId Cdt::insert_cavity(const Point& p) {
 
 void Cdt::restore(std::vector<Link> edges) { flip_from(edges); }
 
+bool Cdt::remove_free(VertexId v) {
+  std::vector<TriangleId> star = ring(v);
+  for (const TriangleId t : star) {
+    const int i = corner_of(t, v);
+    if (boundary(link_to(t, next3(i))) || fixed(link_to(t, next3(i))) || fixed(link_to(t, prev3(i)))) return false;
+  }
+  std::vector<std::pair<VertexId, VertexId>> made;  // the edges the flips made (their slots move)
+  auto restore_made = [&] {
+    std::vector<Link> edges;
+    for (const auto& [a, b] : made)
+      if (const Link e = find_edge(a, b); e != kNoLink) edges.push_back(e);
+    flip_from(edges);
+  };
+  // Edge v-w of t = (v, a, w) flips to a-b (u = (v, w, b) beyond it) where a, w, b turn left and
+  // so do b, v, a: both new triangles are counter-clockwise.
+  while (star.size() > 3) {
+    const auto flips = std::find_if(star.begin(), star.end(), [&](TriangleId t) {
+      const int i = corner_of(t, v);
+      const VertexId a = at(t, i + 1), w = at(t, i + 2), b = tds.opposite(tds.link(t, next3(i)));
+      return orient2d(pts[a], pts[w], pts[b]) > 0 && orient2d(pts[b], pts[v], pts[a]) > 0;
+    });
+    if (flips == star.end()) {
+      restore_made();
+      return false;
+    }
+    const int i = corner_of(*flips, v);
+    made.emplace_back(at(*flips, i + 1), tds.opposite(tds.link(*flips, next3(i))));
+    flip(link_to(*flips, next3(i)));
+    star = ring(v);
+  }
+  merge_three(v, star);
+  restore_made();  // (the ring's edges were locally Delaunay from outside, so are still)
+  return true;
+}
+
+void Cdt::merge_three(VertexId v, const std::vector<TriangleId>& star) {
+  // (v, a, b), (v, b, c), (v, c, a) become (a, b, c) in the first's slot.
+  const TriangleId t0 = star[0];
+  VertexId corners[3] = {at(t0, corner_of(t0, v) + 1), at(t0, corner_of(t0, v) + 2), kNoVertex};
+  Link outer[3];
+  Constraint inner[3];
+  for (const TriangleId t : star) {
+    const int i = corner_of(t, v);
+    const VertexId x = at(t, i + 1);
+    const int k = x == corners[0] ? 2 : x == corners[1] ? 0 : 1;  // the new corner across from that edge
+    if (k == 0) corners[2] = at(t, i + 2);
+    outer[k] = tds.link(t, i), inner[k] = tds.constraint(link_to(t, i));
+  }
+  for (int k = 0; k < 3; ++k) {
+    tds.set_vertex(t0, k, corners[k]);
+    tds.set_link(link_to(t0, k), outer[k]);
+    if (outer[k] != kNoLink) tds.set_link(outer[k], link_to(t0, k));
+    tds.set_constraint(link_to(t0, k), inner[k]);
+  }
+  for (const TriangleId t : star)
+    if (t != t0) tds.free_slot(t), freed.push_back(t);
+  claim_corners(std::array<TriangleId, 1>{t0});
+  corner[v] = kNoTriangle;
+}
+
 void Cdt::flip_from(std::vector<Link>& edges) {
   while (!edges.empty()) {
     const Link e = edges.back();
@@ -231,6 +291,48 @@ void Cdt::flip_from(std::vector<Link>& edges) {
     claim_corners(std::array<TriangleId, 2>{t, u});
     edges.insert(edges.end(), {link_to(t, 0), link_to(t, 2), link_to(u, 0), link_to(u, 1)});
   }
+}
+
+void Cdt::compact(std::vector<VertexId> dead) {
+  if (dead.empty() && freed.empty()) return;
+  if (!dead.empty()) {
+    std::sort(dead.begin(), dead.end());
+    const VertexId first = dead[0];
+    std::vector<VertexId> id(pts.size() - first);
+    for (VertexId v = first, to = first, k = 0; v < pts.size(); ++v)
+      if (k < dead.size() && dead[k] == v)
+        id[v - first] = kNoVertex, ++k;
+      else
+        pts[to] = pts[v], id[v - first] = to++;
+    pts.resize(pts.size() - dead.size());
+    VertexId* w = tds.vertex_array().data();
+    for (std::size_t k = 0; k < 3 * std::size_t{tds.slots()}; ++k)
+      if (w[k] != kNoVertex && w[k] >= first) w[k] = id[w[k] - first];
+  }
+  if (!freed.empty()) {
+    const std::size_t nt = tds.slots();
+    std::vector<TriangleId> id(nt, 0);
+    for (const TriangleId t : freed) id[t] = kNoTriangle;
+    TriangleId kept = 0;
+    for (std::size_t t = 0; t < nt; ++t)
+      if (id[t] != kNoTriangle) id[t] = kept++;
+    for (TriangleId t = 0; t < nt; ++t) {
+      if (id[t] == kNoTriangle) continue;
+      const TriangleId to = id[t];
+      for (int j = 0; j < 3; ++j) {
+        const Link l = tds.link(t, j);
+        tds.set_vertex(to, j, tds.vertex(t, j));
+        tds.set_constraint(link_to(to, j), tds.constraint(link_to(t, j)));
+        tds.set_link(link_to(to, j), l == kNoLink ? kNoLink : link_to(id[triangle_of(l)], edge_of(l)));
+      }
+      if (!region.empty()) region[to] = region[t];
+    }
+    tds.truncate(kept);
+    if (!region.empty()) region.resize(kept);
+    if (!mark.empty()) mark.assign(kept, 0);
+    freed.clear();
+  }
+  index_corners();
 }
 
 VertexId Cdt::insert_on_edge(const Point& p, TriangleId t, int k) {

@@ -77,6 +77,18 @@ class Cdt {
   /// Delaunay flipped, the four around it then checked in turn.
   void restore(std::vector<Link> edges);
 
+  /// Vertex v taken out where it is free (every edge about it free, none on the boundary): the
+  /// edges about it flipped away (each flip that keeps the triangles counter-clockwise) down to
+  /// three triangles, merged into one, then Lawson's flips from the edges made; the two slots
+  /// freed are listed in `freed`, v's corner set to kNoTriangle. False, nothing changed, where v
+  /// is not free; also where no flip is left (a point on a line of its neighbours), the mesh then
+  /// restored to constrained Delaunay with v in it.
+  bool remove_free(VertexId v);
+  std::vector<TriangleId> freed;
+  /// The vertices `dead` (taken out by remove_free) and the slots `freed` dropped: the points
+  /// after them and the triangles renumbered in their order, the corners indexed again.
+  void compact(std::vector<VertexId> dead);
+
   /// The triangles around vertex v, in order (around a boundary vertex, from one side).
   std::vector<TriangleId> ring(VertexId v) const;
   /// visit(t) for the triangles around v, in ring()'s order, until it returns true; returns
@@ -155,6 +167,8 @@ class Cdt {
   void legalize(VertexId p);
   void flip_from(std::vector<Link>& edges);  // restore's, on edges kept
   VertexId add_point(const Point& p);
+  // remove_free's last step: v's three triangles (`star`) made one.
+  void merge_three(VertexId v, const std::vector<TriangleId>& star);
 
   CavityScratch scratch_;
   // An insertion's lists (legalize's triangles, insert_on_edge's edges), kept between them, so

@@ -233,6 +233,55 @@ void Refiner::added(VertexId v) {
   });
 }
 
+// Subsegment s, to be split for a point refused beside it (w: its ends), first cleared as Chew's
+// second algorithm clears it: the free vertices (added inside the domain, on no segment) strictly
+// inside its diametral circle taken out, so that points put there before the split, graded to
+// a mesh without it, give way to those the split's sizes ask for. Returns s as found again.
+// Not in a tile, whose fence the clearing could cross.
+Link Refiner::clear_circle(Link s, const Split& w) {
+  if (!r_.clear || fence_ != nullptr || r_.conforming) return s;
+  if (const auto [z1, z2] = chain(w.x, w.y); z1 != kNoVertex && (small_[z1] || small_[z2])) return s;
+  const Point a = m_.pts[w.x], b = m_.pts[w.y], c{(a.x + b.x) / 2, (a.y + b.y) / 2};
+  const double r2 = dist2(a, b) / 4;
+  // Whether edge p-q meets the circle's inside: c's distance from it below the radius.
+  auto meets = [&](const Point& p, const Point& q) {
+    const double dx = q.x - p.x, dy = q.y - p.y, len2 = dx * dx + dy * dy;
+    double f = len2 > 0 ? ((c.x - p.x) * dx + (c.y - p.y) * dy) / len2 : 0;
+    f = std::clamp(f, 0.0, 1.0);
+    return dist2(c, {p.x + f * dx, p.y + f * dy}) < r2;
+  };
+  std::vector<TriangleId> todo{triangle_of(s)}, seen{triangle_of(s)};
+  if (const TriangleId u = m_.across(s); u != kNoTriangle) todo.push_back(u), seen.push_back(u);
+  std::vector<VertexId> inside, near;
+  while (!todo.empty() && seen.size() < 256) {
+    const TriangleId t = todo.back();
+    todo.pop_back();
+    for (int k = 0; k < 3; ++k) {
+      const VertexId v = m_.at(t, k);
+      if (!corner(v) && ends_[v].first == kNoVertex && dot(a, b, m_.pts[v]) < 0 &&
+          std::find(inside.begin(), inside.end(), v) == inside.end())
+        inside.push_back(v);
+      const Link e = link_to(t, k);
+      const TriangleId n = m_.across(e);
+      if (n == kNoTriangle || m_.fixed(e) || std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
+      if (meets(m_.pts[m_.at(t, k + 1)], m_.pts[m_.at(t, k + 2)])) todo.push_back(n), seen.push_back(n);
+    }
+  }
+  if (inside.empty()) return s;
+  for (const VertexId v : inside)
+    m_.around(v, [&](TriangleId t) {
+      for (int k = 0; k < 3; ++k) near.push_back(m_.at(t, k));
+      return false;
+    });
+  for (const VertexId v : inside)
+    if (m_.remove_free(v)) removed_.push_back(v);
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+  for (const VertexId u : near)
+    if (m_.corner[u] != kNoTriangle) added(u);
+  return m_.find_edge(w.x, w.y);
+}
+
 // The queues to begin with. A conforming triangulation splits every encroached subsegment; a
 // constrained one those a point to be added would encroach (improve's forced splits), those
 // encroached through a triangle below the angle bound that the bound exempts (beside a small
@@ -334,7 +383,7 @@ void Refiner::improve(const Bad& b) {
     if (b.key >= 0 && wedged(b.t, hit)) return;
     if (b.tries >= 64) return leave(b);
     if (hit.empty()) return centroid(b);
-    for (const Link s : hit) queue_split(s, true);
+    for (const Link s : hit) queue_split(s, true, true);
     bad_.push({b.key, b.t, {b.v[0], b.v[1], b.v[2]}, b.tries + 1, b.where});
     return;
   }
@@ -386,12 +435,19 @@ std::string refine(Cdt& m, const Refinement& r) {
   Chains chains = refine_tiles(m, r);
   Refinement rest = r;
   rest.added_from = before;
-  if (r.memory == 0 || m.pts.size() == before) return refining::Refiner(m, rest, std::move(chains)).run();
+  auto run = [&](Refinement how) {
+    how.clear = true;
+    refining::Refiner refiner(m, how, std::move(chains));
+    std::string warning = refiner.run();
+    m.compact(refiner.removed());
+    return warning;
+  };
+  if (r.memory == 0 || m.pts.size() == before) return run(rest);
   // A memory budget given (not read from the system, which counts the tiles' points itself):
   // what the tiles' points took (as Refiner::run counts them) is spent.
   const std::size_t spent = (m.pts.size() - before) * 320 / 3 * 4;
   rest.memory = std::max<std::size_t>(r.memory > spent ? r.memory - spent : 0, 640);  // (room for a point)
-  return refining::Refiner(m, rest, std::move(chains)).run();
+  return run(rest);
 }
 
 }  // namespace ridt::detail

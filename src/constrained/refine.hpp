@@ -38,6 +38,10 @@ struct Refinement {
   /// The points added before this run (by tiles) are those from here on, counted in a message
   /// on the points added; 0: none.
   std::size_t added_from = 0;
+  /// Free vertices near a subsegment split for a point refused beside it taken out first
+  /// (Refiner::clear_circle): the last, whole-mesh run's (refine() sets it), whose mesh is
+  /// then compacted.
+  bool clear = false;
 };
 
 /// Refines m (Ruppert's algorithm with Shewchuk's concentric shells and Üngör's

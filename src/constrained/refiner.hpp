@@ -75,6 +75,7 @@ class Refiner {
     find_small_angles();
     return small_;
   }
+  std::vector<VertexId> removed() { return std::move(removed_); }  ///< those run() took out (for Cdt::compact)
   /// The chains as run() left them.
   Chains take_chains() { return {std::move(ends_), std::move(small_)}; }
 
@@ -98,14 +99,14 @@ class Refiner {
     // an allocation refused within a step is the queues' or a search's, with the mesh whole.
     try {
       while (true) {
-        if (r_.max_steiner > 0 && m_.pts.size() - first >= r_.max_steiner)
+        if (r_.max_steiner > 0 && m_.pts.size() - removed_.size() - first >= r_.max_steiner)
           return "quality refinement stopped after " + std::to_string(r_.max_steiner) + " points (the limit asked)";
         if ((room > 0 && m_.pts.size() - first >= room) || !room_ahead()) return out_of_memory();
         if (!segments_.empty()) {
           const Split w = segments_.back();
           segments_.pop_back();
           const Link s = m_.find_edge(w.x, w.y);
-          if (s != kNoLink && m_.fixed(s) && (w.forced || to_split(s))) split(s);
+          if (s != kNoLink && m_.fixed(s) && (w.forced || to_split(s))) split(w.clear ? clear_circle(s, w) : s);
           continue;
         }
         if (!unsized_.empty() && (bad_.empty() || unsized_.size() >= kSizeBatch)) {
@@ -146,8 +147,11 @@ class Refiner {
   struct Split {
     VertexId x, y;
     bool forced;  // split though no flaw (to_split): a point to be added, or its bad triangle (split_own), asks
+    bool clear = false;  // for a point refused beside it: clear_circle first
   };
-  void queue_split(Link s, bool forced) { segments_.push_back({m_.tds.tail(s), m_.tds.head(s), forced}); }
+  void queue_split(Link s, bool forced, bool clear = false) {
+    segments_.push_back({m_.tds.tail(s), m_.tds.head(s), forced, clear});
+  }
 
   // Most queued triangles are gone by their turn (four in five on a coastline), and those
   // still there, with their neighbours, lie anywhere in memory: what the next pops will read is
@@ -435,6 +439,8 @@ class Refiner {
   VertexId split_at(Link s, const Point& given);
   void relabel(VertexId v, VertexId x, VertexId y, std::int32_t left, std::int32_t right);
   void added(VertexId v);
+  Link clear_circle(Link s, const Split& w);
+  std::vector<VertexId> removed_;  // free vertices taken out (clear_circle)
   void find_small_angles();
   void find_small_angle(VertexId z);
   bool wedged(TriangleId t, const std::vector<Link>& hit);

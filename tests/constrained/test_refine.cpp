@@ -208,7 +208,8 @@ TEST(Refine, StarPolygonsTakeNoMoreTrianglesThanTriangles) {
 // split before the bad triangles: left for the points refused beside them, they came late, from
 // a mesh already fine there, and the fine sizes spread over the whole hull (7,861, 10,508 and
 // 15,598 triangles at 30, 32.5 and 34 degrees). Triangle's totals (-Qq, the same points)
-// within 1 %.
+// within 1 % (at 34 degrees, with Chew's clearing, 11,969 against 12,233). Every point output
+// is a vertex: those cleared are gone from the output, not left unused.
 TEST(Refine, RandomPointSetsTakeAboutAsManyTrianglesAsTriangles) {
   auto points = [](std::uint64_t seed) {
     std::uint64_t x = seed;
@@ -237,6 +238,9 @@ TEST(Refine, RandomPointSetsTakeAboutAsManyTrianglesAsTriangles) {
       spec.min_angle = angle;
       const CheckResult r = check_mesh(all, t.triangles, spec);
       EXPECT_TRUE(r.valid && t.warning.empty()) << r.message << t.warning;
+      std::vector<bool> used(all.size(), false);  // points taken out again (Chew's clearing) are not output
+      for (const VertexId v : t.triangles) used[v] = true;
+      EXPECT_EQ(std::count(used.begin(), used.end(), false), 0) << k;
       ours += t.size();
     }
     EXPECT_LE(ours, theirs + theirs / 100) << angle << " degrees";
