@@ -220,14 +220,15 @@ VertexId Cdt::insert_cavity(const Point& p) {
 void Cdt::restore(std::vector<Link> edges) { flip_from(edges); }
 
 bool Cdt::remove_free(VertexId v) {
-  std::vector<TriangleId> star = ring(v);
+  std::vector<TriangleId> star = ring(v);  // (what may allocate does so before any change)
+  std::vector<std::pair<VertexId, VertexId>> made;  // the edges the flips made (their slots move)
+  std::vector<Link> edges;  // Lawson's from those: at most some k^2 flips in a polygon of k sides
+  made.reserve(star.size()), freed.reserve(freed.size() + 2), edges.reserve(4 * star.size() * star.size() + 8);
   for (const TriangleId t : star) {
     const int i = corner_of(t, v);
     if (boundary(link_to(t, next3(i))) || fixed(link_to(t, next3(i))) || fixed(link_to(t, prev3(i)))) return false;
   }
-  std::vector<std::pair<VertexId, VertexId>> made;  // the edges the flips made (their slots move)
   auto restore_made = [&] {
-    std::vector<Link> edges;
     for (const auto& [a, b] : made)
       if (const Link e = find_edge(a, b); e != kNoLink) edges.push_back(e);
     flip_from(edges);
@@ -247,7 +248,8 @@ bool Cdt::remove_free(VertexId v) {
     const int i = corner_of(*flips, v);
     made.emplace_back(at(*flips, i + 1), tds.opposite(tds.link(*flips, next3(i))));
     flip(link_to(*flips, next3(i)));
-    star = ring(v);
+    star.clear();  // (one fewer: no allocation)
+    around(v, [&](TriangleId t) { return star.push_back(t), false; });
   }
   merge_three(v, star);
   restore_made();  // (the ring's edges were locally Delaunay from outside, so are still)

@@ -273,6 +273,7 @@ Link Refiner::clear_circle(Link s, const Split& w) {
       for (int k = 0; k < 3; ++k) near.push_back(m_.at(t, k));
       return false;
     });
+  removed_.reserve(removed_.size() + inside.size());  // (no allocation once vertices go)
   for (const VertexId v : inside)
     if (m_.remove_free(v)) removed_.push_back(v);
   std::sort(near.begin(), near.end());
