@@ -295,6 +295,30 @@ void Cdt::flip_from(std::vector<Link>& edges) {
   }
 }
 
+void Cdt::drop_slots(const std::vector<std::uint8_t>& gone) {
+  const std::size_t nt = size();
+  std::vector<TriangleId> id(nt, kNoTriangle);
+  TriangleId kept = 0;
+  for (std::size_t t = 0; t < nt; ++t)
+    if (!gone[t]) id[t] = kept++;
+  for (TriangleId t = 0; t < nt; ++t) {
+    if (gone[t]) continue;
+    const TriangleId to = id[t];
+    for (int j = 0; j < 3; ++j) {
+      const Link l = tds.link(t, j);
+      const TriangleId n = l == kNoLink ? kNoTriangle : id[triangle_of(l)];
+      tds.set_vertex(to, j, tds.vertex(t, j));
+      tds.set_constraint(link_to(to, j), tds.constraint(link_to(t, j)));
+      tds.set_link(link_to(to, j), n == kNoTriangle ? kNoLink : link_to(n, edge_of(l)));
+    }
+    if (!region.empty()) region[to] = region[t];
+  }
+  tds.truncate(kept);
+  if (!region.empty()) region.resize(kept);
+  if (!mark.empty()) mark.assign(kept, 0);
+  index_corners();
+}
+
 void Cdt::compact(std::vector<VertexId> dead) {
   if (dead.empty() && freed.empty()) return;
   if (!dead.empty()) {
@@ -312,27 +336,10 @@ void Cdt::compact(std::vector<VertexId> dead) {
       if (w[k] != kNoVertex && w[k] >= first) w[k] = id[w[k] - first];
   }
   if (!freed.empty()) {
-    const std::size_t nt = tds.slots();
-    std::vector<TriangleId> id(nt, 0);
-    for (const TriangleId t : freed) id[t] = kNoTriangle;
-    TriangleId kept = 0;
-    for (std::size_t t = 0; t < nt; ++t)
-      if (id[t] != kNoTriangle) id[t] = kept++;
-    for (TriangleId t = 0; t < nt; ++t) {
-      if (id[t] == kNoTriangle) continue;
-      const TriangleId to = id[t];
-      for (int j = 0; j < 3; ++j) {
-        const Link l = tds.link(t, j);
-        tds.set_vertex(to, j, tds.vertex(t, j));
-        tds.set_constraint(link_to(to, j), tds.constraint(link_to(t, j)));
-        tds.set_link(link_to(to, j), l == kNoLink ? kNoLink : link_to(id[triangle_of(l)], edge_of(l)));
-      }
-      if (!region.empty()) region[to] = region[t];
-    }
-    tds.truncate(kept);
-    if (!region.empty()) region.resize(kept);
-    if (!mark.empty()) mark.assign(kept, 0);
+    std::vector<std::uint8_t> gone(tds.slots(), 0);
+    for (const TriangleId t : freed) gone[t] = 1;
     freed.clear();
+    return drop_slots(gone);
   }
   index_corners();
 }

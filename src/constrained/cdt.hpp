@@ -88,6 +88,9 @@ class Cdt {
   /// The vertices `dead` (taken out by remove_free) and the slots `freed` dropped: the points
   /// after them and the triangles renumbered in their order, the corners indexed again.
   void compact(std::vector<VertexId> dead);
+  /// The triangles whose `gone` is set dropped (links to them become the boundary), the rest
+  /// renumbered in their order with their constraints and regions, the corners indexed again.
+  void drop_slots(const std::vector<std::uint8_t>& gone);
 
   /// The triangles around vertex v, in order (around a boundary vertex, from one side).
   std::vector<TriangleId> ring(VertexId v) const;

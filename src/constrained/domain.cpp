@@ -70,33 +70,6 @@ void flood(const Cdt& m, TriangleId seed, std::vector<T>& label, T mark) {
   }
 }
 
-// Triangles whose `gone` is set removed; the rest renumbered in order, the vertices' corners set
-// again (where `corners` asks it, else left unset).
-void remove(Cdt& m, const std::vector<std::uint8_t>& gone, bool corners) {
-  const std::size_t nt = m.size();
-  std::vector<TriangleId> id(nt, kNoTriangle);
-  TriangleId kept = 0;
-  for (std::size_t t = 0; t < nt; ++t)
-    if (!gone[t]) id[t] = kept++;
-  Tds& tds = m.tds;
-  for (TriangleId t = 0; t < nt; ++t) {
-    if (gone[t]) continue;
-    const TriangleId to = id[t];
-    for (int j = 0; j < 3; ++j) {
-      const Link l = tds.link(t, j);
-      const TriangleId n = l == kNoLink ? kNoTriangle : id[triangle_of(l)];
-      tds.set_vertex(to, j, tds.vertex(t, j));
-      tds.set_constraint(link_to(to, j), tds.constraint(link_to(t, j)));
-      tds.set_link(link_to(to, j), n == kNoTriangle ? kNoLink : link_to(n, edge_of(l)));
-    }
-  }
-  tds.truncate(kept);
-  if (corners)
-    m.index_corners();
-  else
-    std::fill(m.corner.begin(), m.corner.end(), kNoTriangle);
-}
-
 }  // namespace
 
 std::vector<std::uint8_t> carve(Cdt& m, const std::vector<Point>& holes, const std::vector<Region>& regions,
@@ -111,7 +84,7 @@ std::vector<std::uint8_t> carve(Cdt& m, const std::vector<Point>& holes, const s
     for (const TriangleId t : holding_all(m, h, from)) flood<std::uint8_t>(m, t, gone, 1);
   const bool removed = std::find(gone.begin(), gone.end(), 1) != gone.end();
   if (!removed) gone.clear();
-  if (removed && compact) remove(m, gone, true), gone.clear();
+  if (removed && compact) m.drop_slots(gone), gone.clear();
   if (!regions.empty()) {
     // A seed in a triangle marked gone (not removed) marks it, and its mark goes with it.
     m.region.assign(m.size(), -1);

@@ -237,9 +237,9 @@ void Refiner::added(VertexId v) {
 // second algorithm clears it: the free vertices (added inside the domain, on no segment) strictly
 // inside its diametral circle taken out, so that points put there before the split, graded to
 // a mesh without it, give way to those the split's sizes ask for. Returns s as found again.
-// Not in a tile, whose fence the clearing could cross.
+// Only where r_.clear asks it: never in a tile, whose fence the clearing could cross.
 Link Refiner::clear_circle(Link s, const Split& w) {
-  if (!r_.clear || fence_ != nullptr || r_.conforming) return s;
+  if (!r_.clear || r_.conforming) return s;
   if (const auto [z1, z2] = chain(w.x, w.y); z1 != kNoVertex && (small_[z1] || small_[z2])) return s;
   const Point a = m_.pts[w.x], b = m_.pts[w.y], c{(a.x + b.x) / 2, (a.y + b.y) / 2};
   const double r2 = dist2(a, b) / 4;

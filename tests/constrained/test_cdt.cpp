@@ -76,7 +76,9 @@ TEST(Cdt, RemovingFreeVerticesLeavesTheDelaunayTriangulationOfTheRest) {
     for (TriangleId u = 0; u < m.size(); ++u)
       for (int k = 0; k < 3; ++k) {  // links that lead back, corners that hold their vertex
         const detail::Link l = m.tds.link(u, k);
-        if (l != detail::kNoLink) EXPECT_EQ(m.tds.link_at(l), detail::link_to(u, k));
+        if (l != detail::kNoLink) {
+          EXPECT_EQ(m.tds.link_at(l), detail::link_to(u, k));
+        }
         EXPECT_EQ(m.at(m.corner[m.at(u, k)] / 3, m.corner[m.at(u, k)] % 3), m.at(u, k));
       }
   }
