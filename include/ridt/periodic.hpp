@@ -18,11 +18,15 @@ struct PeriodicDomain {
   double width = 1, height = 1;
 };
 
-/// Which copy of a point: p + (dx * width, dy * height).
+/// Which copy of a point: p + (dx * width, dy * height). A triangle's offsets are a period or
+/// two apart where the points are many; with few points in a long, narrow domain they can be
+/// more, up to kMaxOffset (two bytes each: the offsets are a third of a large result's memory).
 struct Offset {
-  std::int32_t dx = 0, dy = 0;
+  std::int16_t dx = 0, dy = 0;
   friend bool operator==(const Offset&, const Offset&) = default;
 };
+/// The largest offset triangulate_periodic gives (it refuses a domain that would need more).
+inline constexpr int kMaxOffset = 1000;
 
 /// The periodic Delaunay triangulation: the Delaunay triangulation of all the copies of the
 /// points, which repeats with the domain, given by one triangle of each class of its copies.
@@ -55,8 +59,9 @@ struct PeriodicTriangulation {
 /// `threads` threads, 0: the machine's) whose circles lie inside the domain, and the rest from
 /// the points near the domain's sides and their copies, inserted on the one mutable
 /// triangulation; fewer points, or points on one line, all by the latter. Throws InputError
-/// for no point, a point not finite or outside the domain, or a width or height that is not
-/// positive and finite.
+/// for no point, a point not finite or outside the domain, a width or height that is not
+/// positive and finite, or points too few for a domain so long and narrow that copies more than
+/// kMaxOffset periods away would be needed.
 PeriodicTriangulation triangulate_periodic(std::span<const Point> points, const PeriodicDomain& domain,
                                            unsigned threads = 0);
 

@@ -17,10 +17,18 @@ using Ints = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast
 
 ridt::PeriodicDomain domain_of(double x0, double y0, double width, double height) { return {{x0, y0}, width, height}; }
 
-std::span<const ridt::Offset> as_offsets(const Ints& a, std::size_t corners, const char* name) {
+std::vector<ridt::Offset> as_offsets(const Ints& a, std::size_t corners, const char* name) {
   if (static_cast<std::size_t>(a.size()) != 2 * corners)
     throw py::value_error(std::string(name) + " must have shape (ntriangles, 3, 2)");
-  return {reinterpret_cast<const ridt::Offset*>(a.data()), corners};
+  std::vector<ridt::Offset> out(corners);
+  const std::int32_t* v = a.data();
+  for (std::size_t k = 0; k < corners; ++k) {
+    if (std::abs(v[2 * k]) > ridt::kMaxOffset || std::abs(v[2 * k + 1]) > ridt::kMaxOffset)
+      throw py::value_error(std::string(name) + ": an offset is more than " + std::to_string(ridt::kMaxOffset) +
+                            " periods");
+    out[k] = {static_cast<std::int16_t>(v[2 * k]), static_cast<std::int16_t>(v[2 * k + 1])};
+  }
+  return out;
 }
 
 py::tuple triangulate(const Points& points, double x0, double y0, double width, double height, unsigned threads) {
@@ -35,9 +43,9 @@ py::tuple triangulate(const Points& points, double x0, double y0, double width, 
   for (const ridt::Duplicate& d : t.duplicates) dup.push_back(d.dropped), dup.push_back(d.kept);
   const auto copies = static_cast<py::ssize_t>(t.duplicates.size());
   return py::make_tuple(
-      adopt(std::move(t.triangles), {n, 3}), adopt<ridt::Offset, std::int32_t>(std::move(t.offsets), {n, 3, 2}),
+      adopt(std::move(t.triangles), {n, 3}), adopt<ridt::Offset, std::int16_t>(std::move(t.offsets), {n, 3, 2}),
       adopt(std::move(t.neighbors), {n, 3}),
-      adopt<ridt::Offset, std::int32_t>(std::move(t.neighbor_offsets), {n, 3, 2}), adopt(std::move(dup), {copies, 2}));
+      adopt<ridt::Offset, std::int16_t>(std::move(t.neighbor_offsets), {n, 3, 2}), adopt(std::move(dup), {copies, 2}));
 }
 
 py::tuple voronoi(const Points& points, double x0, double y0, double width, double height, const Indices& triangles,
@@ -49,9 +57,8 @@ py::tuple voronoi(const Points& points, double x0, double y0, double width, doub
   if (static_cast<std::size_t>(neighbors.size()) != corners)
     throw py::value_error("neighbors must have the shape of the triangles");
   t.triangles.assign(triangles.data(), triangles.data() + corners);
-  const auto o = as_offsets(offsets, corners, "offsets"),
-             no = as_offsets(neighbor_offsets, corners, "neighbor_offsets");
-  t.offsets.assign(o.begin(), o.end()), t.neighbor_offsets.assign(no.begin(), no.end());
+  t.offsets = as_offsets(offsets, corners, "offsets");
+  t.neighbor_offsets = as_offsets(neighbor_offsets, corners, "neighbor_offsets");
   t.neighbors.assign(neighbors.data(), neighbors.data() + corners);
   ridt::PeriodicVoronoi v;
   {
@@ -62,7 +69,7 @@ py::tuple voronoi(const Points& points, double x0, double y0, double width, doub
   const py::ssize_t vertices = size(v.vertices), offs = size(v.cell_offsets), cells = size(v.cell_vertices);
   return py::make_tuple(adopt<ridt::Point, double>(std::move(v.vertices), {vertices, 2}),
                         adopt(std::move(v.cell_offsets), {offs}), adopt(std::move(v.cell_vertices), {cells}),
-                        adopt<ridt::Offset, std::int32_t>(std::move(v.cell_shifts), {cells, 2}));
+                        adopt<ridt::Offset, std::int16_t>(std::move(v.cell_shifts), {cells, 2}));
 }
 
 py::tuple check(const Points& points, double x0, double y0, double width, double height, const Indices& triangles,
@@ -70,7 +77,7 @@ py::tuple check(const Points& points, double x0, double y0, double width, double
   const auto pts = as_points(points, "points");
   const auto corners = static_cast<std::size_t>(triangles.size());
   const std::span<const ridt::VertexId> tris(triangles.data(), corners);
-  const auto offs = as_offsets(offsets, corners, "offsets");
+  const std::vector<ridt::Offset> offs = as_offsets(offsets, corners, "offsets");
   ridt::CheckResult r;
   {
     py::gil_scoped_release nogil;

@@ -136,3 +136,13 @@ def test_small_grids_cover_the_torus(cells):
 def test_bad_input(points, kwargs):
     with pytest.raises(ValueError):
         ridt.PeriodicDelaunay(points, **kwargs)
+
+
+def test_offsets_out_of_range_are_refused():
+    t = ridt.PeriodicDelaunay(np.random.default_rng(3).random((50, 2)))
+    assert t.check()[0]
+    t.offsets[0, 0, 0] = 40000  # beyond what an offset may be: refused, not wrapped round
+    with pytest.raises(ValueError, match="more than 1000 periods"):
+        t.check()
+    with pytest.raises(ValueError, match="more than 1000 periods"):
+        t.voronoi()

@@ -41,8 +41,9 @@ class PeriodicCheck {
     if (tris_.size() % 3 != 0 || offs_.size() != tris_.size()) return {false, "the arrays are not #T by 3 each", 1};
     for (std::size_t e = 0; e < tris_.size(); ++e)
       if (tris_[e] >= pts_.size()) return {false, "triangle " + std::to_string(e / 3) + " names no point", 1};
-    for (const Offset& o : offs_)  // (their sums and differences must not overflow)
-      if (std::abs(o.dx) > (1 << 20) || std::abs(o.dy) > (1 << 20)) return {false, "an offset is out of range", 1};
+    for (const Offset& o : offs_)  // (their sums and differences must stay in range)
+      if (std::abs(o.dx) > kMaxOffset || std::abs(o.dy) > kMaxOffset)
+        return {false, "an offset is more than " + std::to_string(kMaxOffset) + " periods", 1};
     vertices();
     renumber();
     triangles();

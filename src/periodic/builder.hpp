@@ -27,6 +27,7 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 #include <vector>
@@ -45,15 +46,16 @@ namespace ridt::detail {
 
 /// Whether the circle of triangle (a, b, c) (points as given, exact) lies inside the domain,
 /// clear of its sides by the rounding of the test. The same test decides for the Delaunay
-/// triangles of the points and the strips' alike: it takes the corners from the least in
-/// lexicographic order (a rotation: the answer does not depend on where a triangle starts).
+/// triangles of the points and the strips' alike: the callers start a triangle at its corner
+/// of least input index (a rotation: the answer does not depend on where a triangle starts,
+/// and the output is written from that corner anyway).
 ///
 /// Most triangles lie far from the sides, and for them a test without a division decides: the
 /// circle lies within its diameter 2R of a, and (2R)^2 = |ab|^2 |ac|^2 |bc|^2 / det^2, so it is
 /// inside where a is farther than that from every side; with room for the rounding of each
 /// step (a relative 2^-40 on the lengths' product, the orientation filter's bound on det), and
 /// only where no product can overflow or underflow. Else the circumcentre and radius decide.
-inline bool circle_inside_from(const Point& a, const Point& b, const Point& c, const PeriodicDomain& d) {
+inline bool circle_inside(const Point& a, const Point& b, const Point& c, const PeriodicDomain& d) {
   const double room = 4 * kEps * (std::max(std::fabs(d.origin.x), std::fabs(d.origin.y)) + d.width + d.height);
   const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y, ex = c.x - b.x, ey = c.y - b.y;
   const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy, e2 = ex * ex + ey * ey;
@@ -69,12 +71,6 @@ inline bool circle_inside_from(const Point& a, const Point& b, const Point& c, c
   const double radius = (1 + 0x1p-30) * std::sqrt(std::max({squared(a, o), squared(b, o), squared(c, o)}));
   return o.x - radius > d.origin.x + room && o.x + radius < d.origin.x + d.width - room &&
       o.y - radius > d.origin.y + room && o.y + radius < d.origin.y + d.height - room;
-}
-
-inline bool circle_inside(const Point& a, const Point& b, const Point& c, const PeriodicDomain& d) {
-  if (lex_less(b, a) && !lex_less(c, b)) return circle_inside_from(b, c, a, d);
-  if (lex_less(c, a) && lex_less(c, b)) return circle_inside_from(c, a, b, d);
-  return circle_inside_from(a, b, c, d);
 }
 
 // The least of a group of equal points: a union of input indices by their least.
@@ -118,13 +114,15 @@ class Builder {
       if (!(r.bare < -edge)) continue;  // beyond the strip, or in doubt
       verify_ = verify_ || !(r.sure < -edge);
       const int low = least(c);
-      const Offset shift{s_[c[low]].dx, s_[c[low]].dy};
+      check_reach(c, low);
+      const Offset shift = make_offset(s_[c[low]].dx, s_[c[low]].dy);
       if (same_shift(s_[c[0]], s_[c[1]]) && same_shift(s_[c[0]], s_[c[2]]) &&
-          circle_inside(s_[c[0]].p, s_[c[1]].p, s_[c[2]].p, d_))
+          circle_inside(s_[c[low]].p, s_[c[next3(low)]].p, s_[c[prev3(low)]].p, d_))
         continue;  // the caller's, from the points' triangulation
       for (int j = 0; j < 3; ++j) {
         const VertexId v = c[(low + j) % 3];
-        out_.triangles.push_back(index(v)), out_.offsets.push_back({s_[v].dx - shift.dx, s_[v].dy - shift.dy});
+        out_.triangles.push_back(index(v)),
+            out_.offsets.push_back(make_offset(s_[v].dx - shift.dx, s_[v].dy - shift.dy));
       }
     }
   }
@@ -248,6 +246,7 @@ class Builder {
       around_[c[0]] = around_[c[1]] = around_[c[2]] = t;
       const int low = least(c);
       if (s_[c[low]].dx != 0 || s_[c[low]].dy != 0) continue;
+      check_reach(c, low);
       const Reach r = reach(c, d_.origin, end);
       need = {std::max(need.bare, r.bare + edge), std::max(need.sure, r.sure + edge)};
       id_[t] = static_cast<std::int32_t>(slot_.size());
@@ -321,7 +320,7 @@ class Builder {
         const VertexId* c = tds_.corners(u);
         if (c[0] >= n_ || c[1] >= n_ || c[2] >= n_) return false;
         const int low = least(c);
-        const Offset shift{s_[c[low]].dx, s_[c[low]].dy};
+        const Offset shift = make_offset(s_[c[low]].dx, s_[c[low]].dy);
         const auto found = crossing.find(corners(c, low, shift));
         const std::int32_t at = found != crossing.end() ? found->second : unmoved(c, shift);
         if (at < 0) return false;
@@ -342,7 +341,7 @@ class Builder {
         w[j] = v[3 * t + i], u[j] = triangle_of(l[3 * t + i]);
       }
       for (std::size_t j = 0; j < 3; ++j) {
-        v[3 * k + j] = index(w[j]), out_.offsets[3 * k + j] = {s_[w[j]].dx, s_[w[j]].dy};
+        v[3 * k + j] = index(w[j]), out_.offsets[3 * k + j] = make_offset(s_[w[j]].dx, s_[w[j]].dy);
         if (next < across.size() && across[next].edge == 3 * k + j) {
           l[3 * k + j] = across[next].triangle, out_.neighbor_offsets[3 * k + j] = across[next].shift;
           ++next;
@@ -392,6 +391,17 @@ class Builder {
           ((s_[v].dy - shift.dy) & 0xfff);
     }
     return out;
+  }
+
+  // Refuses a triangle kept with a corner more than kMaxOffset periods from its least one (few
+  // points in a long, narrow domain), which Offset cannot hold.
+  void check_reach(const VertexId* c, int low) const {
+    for (int j = 0; j < 3; ++j)
+      if (std::abs(s_[c[j]].dx - s_[c[low]].dx) > kMaxOffset || std::abs(s_[c[j]].dy - s_[c[low]].dy) > kMaxOffset)
+        throw InputError(
+            "triangulate_periodic: too few points for a domain this long and narrow (a triangle spans "
+            "more than " +
+            std::to_string(kMaxOffset) + " periods)");
   }
 
   // A vertex's input index: its group's least where the same point was given more than once.

@@ -37,18 +37,18 @@ std::vector<std::int64_t> periodic_twins(std::span<const VertexId> triangles, st
     for (std::size_t e = 0; e < edges; ++e)
       out[fill[triangles[tail(e)]]++] = {triangles[head(e)], static_cast<std::uint32_t>(e)};
   }
-  auto offset = [&](std::size_t e) {  // from the edge's tail to its head
-    return Offset{offsets[head(e)].dx - offsets[tail(e)].dx, offsets[head(e)].dy - offsets[tail(e)].dy};
+  auto offset = [&](std::size_t e) {  // from the edge's tail to its head (in int: any offsets)
+    return std::pair{offsets[head(e)].dx - offsets[tail(e)].dx, offsets[head(e)].dy - offsets[tail(e)].dy};
   };
   std::vector<std::int64_t> twin(edges, -1);
   parallel_for(edges, 0, 65536, [&](std::size_t from, std::size_t to) {
     for (std::size_t e = from; e < to; ++e) {
       const VertexId u = triangles[tail(e)], w = triangles[head(e)];
-      const Offset d = offset(e);
+      const auto d = offset(e);
       for (std::uint32_t k = start[w]; k < start[w + 1]; ++k) {
         if (out[k].head != u) continue;
-        const Offset b = offset(out[k].edge);
-        if (b.dx != -d.dx || b.dy != -d.dy) continue;
+        const auto b = offset(out[k].edge);
+        if (b.first != -d.first || b.second != -d.second) continue;
         twin[e] = twin[e] == -1 ? static_cast<std::int64_t>(out[k].edge) : -2;
       }
     }
@@ -95,9 +95,9 @@ PeriodicVoronoi periodic_voronoi(std::span<const Point> points, const PeriodicTr
     do {
       const std::size_t k = e / 3;
       out.cell_vertices.push_back(static_cast<std::int32_t>(k));
-      out.cell_shifts.push_back({-t.offsets[e].dx, -t.offsets[e].dy});
+      out.cell_shifts.push_back(make_offset(-t.offsets[e].dx, -t.offsets[e].dy));
       const std::size_t across = 3 * k + next3(static_cast<int>(e % 3));
-      moved = {moved.dx + t.neighbor_offsets[across].dx, moved.dy + t.neighbor_offsets[across].dy};
+      moved = make_offset(moved.dx + t.neighbor_offsets[across].dx, moved.dy + t.neighbor_offsets[across].dy);
       const std::size_t u = static_cast<std::size_t>(t.neighbors[across]);
       std::size_t next = 3 * u;
       for (int i = 0; i < 3; ++i)

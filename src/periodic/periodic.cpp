@@ -105,8 +105,8 @@ bool link_open_edges(PeriodicTriangulation& out, bool neighbors) {
     const std::size_t f = found->second, head = e - e % 3 + (e + 2) % 3, tail = f - f % 3 + (f + 1) % 3;
     out.neighbors[e] = static_cast<std::int32_t>(f / 3);
     if (neighbors)
-      out.neighbor_offsets[e] = {out.offsets[head].dx - out.offsets[tail].dx,
-                                 out.offsets[head].dy - out.offsets[tail].dy};
+      out.neighbor_offsets[e] =
+          make_offset(out.offsets[head].dx - out.offsets[tail].dx, out.offsets[head].dy - out.offsets[tail].dy);
   }
   return true;
 }
@@ -124,12 +124,12 @@ void sort_out(Triangulation& p, const InOrder& in, const PeriodicDomain& d, std:
         __builtin_prefetch(&in.points[v]), __builtin_prefetch(&in.order[v]);
       }
     VertexId* t = &p.triangles[3 * k];
-    inside[k] = circle_inside(in.points[t[0]], in.points[t[1]], in.points[t[2]], d);
+    const VertexId w[3] = {in.order[t[0]], in.order[t[1]], in.order[t[2]]};
+    const int low = w[0] < w[1] ? (w[0] < w[2] ? 0 : 2) : (w[1] < w[2] ? 1 : 2);
+    inside[k] = circle_inside(in.points[t[low]], in.points[t[next3(low)]], in.points[t[prev3(low)]], d);
     if (!inside[k]) continue;
     std::int32_t* u = &p.neighbors[3 * k];
-    const VertexId w[3] = {in.order[t[0]], in.order[t[1]], in.order[t[2]]};
     const std::int32_t v[3] = {u[0], u[1], u[2]};
-    const int low = w[0] < w[1] ? (w[0] < w[2] ? 0 : 2) : (w[1] < w[2] ? 1 : 2);
     for (int j = 0, i = low; j < 3; ++j, i = i == 2 ? 0 : i + 1) t[j] = w[i], u[j] = v[i];
   }
 }

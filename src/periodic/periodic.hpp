@@ -10,6 +10,10 @@
 
 namespace ridt::detail {
 
+/// The offset (dx, dy), computed in int from offsets: in range wherever those are a periodic
+/// triangulation's (sums and differences of a few of at most kMaxOffset).
+inline Offset make_offset(int dx, int dy) { return {static_cast<std::int16_t>(dx), static_cast<std::int16_t>(dy)}; }
+
 /// Each edge's twin: edge slot 3t + i (across from corner i, running corner i + 1 -> i + 2)
 /// and the slot of the edge that runs back between the same copies once the two triangles are
 /// placed side by side (the same two points, the offset between them negated), or -1 where

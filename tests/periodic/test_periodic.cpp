@@ -345,6 +345,13 @@ TEST(Periodic, ValidatorRefusesWrongTriangulations) {
     offs[4].dx += 1;
     refuses(t.triangles, offs);
   }
+  {  // a triangle moved farther than an offset may be (its sums could leave the type's range)
+    std::vector<Offset> offs = t.offsets;
+    for (int k = 0; k < 3; ++k) offs[k].dx = static_cast<std::int16_t>(kMaxOffset + 1);
+    const CheckResult r = check_periodic(pts, {}, t.triangles, offs);
+    EXPECT_FALSE(r.valid);
+    EXPECT_EQ(r.message, "an offset is more than 1000 periods");
+  }
   {  // two corners swapped: clockwise
     std::vector<VertexId> tris = t.triangles;
     std::vector<Offset> offs = t.offsets;
@@ -370,7 +377,7 @@ TEST(Periodic, ValidatorRefusesWrongTriangulations) {
       ++j;
     const VertexId p = t.triangles[0], a = t.triangles[1], b = t.triangles[2], dv = t.triangles[3 * u + j];
     const Offset op = t.offsets[0], oa = t.offsets[1], ob = t.offsets[2];
-    const Offset od{t.offsets[3 * u + j].dx + s.dx, t.offsets[3 * u + j].dy + s.dy};
+    const Offset od = detail::make_offset(t.offsets[3 * u + j].dx + s.dx, t.offsets[3 * u + j].dy + s.dy);
     tris[0] = p, tris[1] = a, tris[2] = dv, offs[0] = op, offs[1] = oa, offs[2] = od;
     tris[3 * u] = p, tris[3 * u + 1] = dv, tris[3 * u + 2] = b, offs[3 * u] = op, offs[3 * u + 1] = od,
              offs[3 * u + 2] = ob;
