@@ -210,10 +210,10 @@ class Builder {
   }
 
   // Where v lies: a finite face whose closure holds it (outside = false), or a wall beyond whose
-  // edge it lies (outside = true). A walk from last_ (it cannot cycle in a regular
-  // triangulation), and behind it, should it go on too long, a look at every face.
-  TriangleId locate(VertexId v, bool& outside) {
-    TriangleId t = last_;
+  // edge it lies (outside = true). A walk from face `from` (it cannot cycle in a regular
+  // triangulation), and behind it, should it go on too long, a look at every face. Reads only.
+  TriangleId locate(TriangleId from, VertexId v, bool& outside) const {
+    TriangleId t = from;
     if (const int k = infinite_corner(tds_.corners(t)); k >= 0) t = triangle_of(tds_.link(t, k));
     const Point q = q_[v].p;
     std::size_t steps = 0;
@@ -238,12 +238,12 @@ class Builder {
     for (TriangleId u = 0; u < tds_.slots(); ++u)
       if (const VertexId* c = tds_.corners(u); c[0] != kNoVertex && infinite_corner(c) >= 0 && sees(c, v))
         return outside = true, u;
-    return last_;  // unreachable: the faces cover the plane
+    return from;  // unreachable: the faces cover the plane
   }
 
   void insert(VertexId v) {
     bool outside = false;
-    const TriangleId t = locate(v, outside);
+    const TriangleId t = locate(last_, v, outside);
     if (!outside)
       for (int i = 0; i < 3; ++i)
         if (const VertexId w = tds_.vertex(t, i); q_[w] == q_[v]) return copies_.emplace_back(v, w), void();
@@ -302,8 +302,9 @@ class Builder {
 
   void insert_round(VertexId b, VertexId e) {
     std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
-    for (Part& p : parts) find_starts(p);  // with the triangulation at rest
     walk_limit_ = walk_limit(tds_);
+    // With the triangulation at rest (the walks only read it), each part's on a thread.
+    run_parts(parts, scratches_, [&](Part& p, CavityScratch&) { find_starts(p, last_); });
     run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
     epoch_ = round_left(tds_, parts, free_, epoch_);
     for (Part& p : parts) {  // what the parts found; then the points put off
@@ -315,12 +316,14 @@ class Builder {
       for (const VertexId v : p.put_off) insert(v);
   }
 
-  void find_starts(Part& p) {
+  // The part's starts (Part::starts), by walks each from where the one before ended, the first
+  // from `from`. Reads only: the parts' run side by side, before any inserts.
+  void find_starts(Part& p, TriangleId from) const {
     for (VertexId a = p.a; a < p.b; a += kEvery) {
       TriangleId start = kNoTriangle;
       for (VertexId v = a; v < std::min(p.b, a + kStartTries) && start == kNoTriangle; ++v) {
         bool outside = false;
-        const TriangleId t = last_ = locate(v, outside);  // (the next walk from here)
+        const TriangleId t = from = locate(from, v, outside);  // (the next walk from here)
         const VertexId* c = tds_.corners(t);
         if (!outside && (owns(p, c[0]) || owns(p, c[1]) || owns(p, c[2]))) start = t;
       }
