@@ -434,6 +434,13 @@ expect 0 "mesh quality" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q.ele" --switche
 [ "$(head -1 "$dir/q.node" | cut -d' ' -f1)" -gt 8 ] && pass || fail "-q added no points"
 expect 0 "check the mesh" -- "$ridt" check "$dir/q.node" "$dir/q.ele" --poly "$dir/sq.poly" --edges "$dir/q.edge" --min-angle 30 --max-area 2
 expect 1 "check the mesh, a tighter bound" -- "$ridt" check "$dir/q.node" "$dir/q.ele" --poly "$dir/sq.poly" --edges "$dir/q.edge" --max-area 0.5
+# A quality mesh of bare points (its hull the boundary, split) checked without its segments is
+# no Delaunay triangulation of its points: refused, with the way to check it as a mesh.
+"$ridt" generate -n 300 --seed 3 -o "$dir/s300.node" >/dev/null
+expect 0 "mesh bare points" -- "$ridt" mesh "$dir/s300.node" -o "$dir/s300m.ele" --switches q30
+expect 1 "check the points' mesh as a triangulation" -- "$ridt" check "$dir/s300m.node" "$dir/s300m.ele"
+stderr_has "give its segments: --edges $dir/s300m.edge"
+expect 0 "check the points' mesh with its edges" -- "$ridt" check "$dir/s300m.node" "$dir/s300m.ele" --edges "$dir/s300m.edge" --min-angle 30
 expect 0 "mesh long options" -- "$ridt" mesh "$dir/sq.poly" -o "$dir/q2.ele" --quality 33 --max-area 1 --neighbours
 [ -s "$dir/q2.neigh" ] && pass || fail "--neighbours wrote no .neigh"
 expect 0 "check the mesh at 33" -- "$ridt" check "$dir/q2.node" "$dir/q2.ele" --poly "$dir/sq.poly" --edges "$dir/q2.edge" --min-angle 33 --max-area 1
