@@ -1,5 +1,7 @@
 // ridt generate, ridt check, ridt voronoi and ridt formats: the small subcommands.
 #include <cstdio>
+#include <filesystem>
+#include <string>
 
 #include "command.hpp"
 #include "ridt/check.hpp"
@@ -108,16 +110,13 @@ int run_check(const CheckArgs& a) {
   std::printf("%s\n", r.message.c_str());
   // A mesh checked as a plain triangulation fails on its fixed boundary: say how to check it
   // as a mesh where ridt mesh's OUT.edge lies beside its OUT.ele.
-  std::fflush(stdout);
-  if (!r.valid && !a.mesh() && io::extension(a.triangles) == ".ele") {
-    const std::string edges = a.triangles.substr(0, a.triangles.size() - 4) + ".edge";
-    if (std::FILE* f = std::fopen(edges.c_str(), "r")) {
-      std::fclose(f);
-      std::fprintf(stderr,
-                   "ridt check: checked as a Delaunay triangulation of its points; for a mesh (ridt mesh's "
-                   "output) give its segments: --edges %s, or its input with --poly\n",
-                   edges.c_str());
-    }
+  if (const std::string edges = a.triangles.substr(0, a.triangles.size() - 4) + ".edge";
+      !r.valid && !a.mesh() && io::extension(a.triangles) == ".ele" && std::filesystem::exists(edges)) {
+    std::fflush(stdout);
+    std::fprintf(stderr,
+                 "ridt check: checked as a Delaunay triangulation of its points; for a mesh (ridt mesh's output) "
+                 "give its segments: --edges %s, or its input with --poly\n",
+                 edges.c_str());
   }
   return r.valid ? 0 : kExitInvalid;
 }
