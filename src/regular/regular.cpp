@@ -241,9 +241,11 @@ class Builder {
     return from;  // unreachable: the faces cover the plane
   }
 
-  void insert(VertexId v) {
+  // Inserts v, walking from `near` where it is a face, else from where the last point was.
+  void insert(VertexId v, TriangleId near = kNoTriangle) {
     bool outside = false;
-    const TriangleId t = locate(last_, v, outside);
+    const TriangleId from = near != kNoTriangle && tds_.vertex(near, 0) != kNoVertex ? near : last_;
+    const TriangleId t = locate(from, v, outside);
     if (!outside)
       for (int i = 0; i < 3; ++i)
         if (const VertexId w = tds_.vertex(t, i); q_[w] == q_[v]) return copies_.emplace_back(v, w), void();
@@ -290,10 +292,10 @@ class Builder {
     // points (kNoTriangle where none was): where a walk from the last one leaves the region (which
     // is not convex), the point is looked for again from there.
     std::vector<TriangleId> starts;
-    SlotPool pool;  // two slots a point
-    std::vector<VertexId> put_off;
+    SlotPool pool;  // (RoundSlots)
+    std::vector<std::pair<VertexId, TriangleId>> put_off;  // each with a face near it
     std::vector<std::pair<VertexId, VertexId>> copies;
-    std::vector<TriangleId> freed;  // the slots of faces dropped round covered vertices
+    std::vector<TriangleId> freed;  // slots made free: of faces dropped round covered vertices
     CoverScratch cover;
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
   };
@@ -301,19 +303,19 @@ class Builder {
   bool owns(const Part& p, VertexId v) const { return v != infinite_ && key_[v] >= p.from && key_[v] < p.to; }
 
   void insert_round(VertexId b, VertexId e) {
-    std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
+    RoundSlots slots(tds_, free_, b, e, threads_);
+    std::vector<Part> parts = round_parts<Part>(key_, b, e, threads_, epoch_, slots);
     walk_limit_ = walk_limit(tds_);
     // With the triangulation at rest (the walks only read it), each part's on a thread.
     run_parts(parts, scratches_, [&](Part& p, CavityScratch&) { find_starts(p, last_); });
     run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
-    epoch_ = round_left(tds_, parts, free_, epoch_);
+    epoch_ = round_left(slots, parts, epoch_);
     for (Part& p : parts) {  // what the parts found; then the points put off
       if (p.start != kNoTriangle) last_ = p.start;
       copies_.insert(copies_.end(), p.copies.begin(), p.copies.end());
-      free_.insert(free_.end(), p.freed.begin(), p.freed.end());
     }
     for (const Part& p : parts)
-      for (const VertexId v : p.put_off) insert(v);
+      for (const auto& [v, near] : p.put_off) insert(v, near);
   }
 
   // The part's starts (Part::starts), by walks each from where the one before ended, the first
@@ -334,7 +336,7 @@ class Builder {
 
   void insert_part(Part& p, CavityScratch& s) {
     for (VertexId v = p.a; v < p.b; ++v)
-      if (!insert_in(p, s, v)) p.put_off.push_back(v);
+      if (TriangleId near = kNoTriangle; !insert_in(p, s, v, near)) p.put_off.emplace_back(v, near);
   }
 
   // Walks to v from t within the part's region (crossing only edges with an end there, never into
@@ -354,25 +356,29 @@ class Builder {
   }
 
   // insert() on a thread of a round, from p.start (left where the walk ended, or at the new
-  // fan); false, with nothing changed, where the point is put off.
-  bool insert_in(Part& p, CavityScratch& s, VertexId v) {
+  // fan); false, with nothing changed, where the point is put off (`near` then where its walk
+  // stopped, or kNoTriangle).
+  bool insert_in(Part& p, CavityScratch& s, VertexId v, TriangleId& near) {
     TriangleId t = p.start;
     if (t == kNoTriangle || !walk_in(p, t, v)) {
-      t = p.starts[(v - p.a) / kEvery];  // (its slot may have been freed round a covered vertex since)
-      if (t == kNoTriangle || tds_.vertex(t, 0) == kNoVertex || !walk_in(p, t, v)) return false;
+      const TriangleId from = p.starts[(v - p.a) / kEvery];
+      // (its slot may have been freed round a covered vertex since)
+      if (from == kNoTriangle || tds_.vertex(from, 0) == kNoVertex) return near = t, false;
+      t = from;
+      if (!walk_in(p, t, v)) return near = t, false;
     }
     p.start = t;
     const VertexId* c = tds_.corners(t);
     for (int i = 0; i < 3; ++i)
       if (q_[c[i]] == q_[v]) return p.copies.emplace_back(v, c[i]), true;
     if (!sees(c, v)) return hidden_[v] = 1, true;
-    if (!owns(p, c[0]) || !owns(p, c[1]) || !owns(p, c[2]) || p.pool.size() < 2) return false;
+    if (!owns(p, c[0]) || !owns(p, c[1]) || !owns(p, c[2]) || p.pool.size() < 2) return near = t, false;
     const std::uint32_t epoch = p.epoch += threads_;
     stamp_[t] = epoch;
     const bool whole = tds_.find_cavity(
         t, s, [&](const VertexId* u) { return sees(u, v); }, [&](Link l) { return owns(p, tds_.opposite(l)); },
         Tds::kNoWall, stamped(stamp_, epoch));
-    if (!whole) return false;
+    if (!whole) return near = t, false;
     if (s.revisited)  // vertices covered: inside faces of the thread's own (the stamps only it writes)
       cover_cavity(
           tds_, s, [&](TriangleId u) { return stamp_[u] == epoch; },
