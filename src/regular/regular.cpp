@@ -69,26 +69,15 @@ class Builder {
         infinite_(n_),
         threads_(threads) {}
 
-  // Vertex ids are places in the insertion order (the first triangle's three first), so that
-  // points inserted one after another lie together in memory; input_ maps them back, and the
-  // vertex at infinity is n_.
+  // Vertex ids are places in the insertion order, so that points inserted one after another lie
+  // together in memory; input_ maps them back, and the vertex at infinity is n_. The first
+  // triangle's three (first_) are passed over where their places come.
   void run() {
     const std::array<VertexId, 3> first = first_triangle();
     // A biased randomized insertion order along the Hilbert curve (brio_order, the kernel's),
     // made in the memory of the structure's arrays, made first (no fresh pages for its work).
     SlotArrays arrays(n_, threads_);
-    std::vector<std::uint32_t> keys;  // along each round, never decreasing
-    const std::vector<std::uint32_t> order =
-        brio_order(points_.data(), n_, 0x5eed, threads_, &keys, {arrays.words(), arrays.numbers()});
-    resize_present(input_, n_, threads_), key_ = HugeArray<std::uint32_t>(n_, threads_);
-    std::copy(first.begin(), first.end(), input_.begin());
-    for (VertexId k = 0, v = 3; k < n_; ++k) {
-      const auto f = std::find(first.begin(), first.end(), order[k]);
-      if (f == first.end())
-        input_[v] = order[k], key_[v++] = keys[k];
-      else
-        key_[static_cast<std::size_t>(f - first.begin())] = keys[k];
-    }
+    input_ = brio_order(points_.data(), n_, 0x5eed, threads_, &key_, {arrays.words(), arrays.numbers()});
     q_ = HugeArray<Weighted>(n_ + 1, threads_);
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
     q_[infinite_] = {{kNaN, kNaN}, kNaN};  // (see sees)
@@ -97,19 +86,23 @@ class Builder {
       for (std::size_t v = from; v < to; ++v) {
         if (v + kAhead < to)
           __builtin_prefetch(&points_[input_[v + kAhead]]), __builtin_prefetch(&weights_[input_[v + kAhead]]);
-        q_[v] = {points_[input_[v]], weights_[input_[v]]};
+        const VertexId i = input_[v];
+        q_[v] = {points_[i], weights_[i]};
+        if (i == first[0] || i == first[1] || i == first[2])  // (one v each)
+          first_[i == first[0] ? 0 : i == first[1] ? 1 : 2] = static_cast<VertexId>(v);
       }
     });
     resize_present(hidden_, n_, threads_);
     cover_at_ = zeros(n_ + 1);
     start(std::move(arrays));
     // The rounds (where the keys fall back), each shared among the threads where it is large.
-    for (VertexId b = 3, e; b < n_; b = e) {
+    for (VertexId b = 0, e; b < n_; b = e) {
       for (e = b + 1; e < n_ && key_[e] >= key_[e - 1];) ++e;
       if (shared_round(e - b, threads_)) {
         insert_round(b, e);
       } else {
-        for (VertexId v = b; v < e; ++v) insert(v);
+        for (VertexId v = b; v < e; ++v)
+          if (!is_first(v)) insert(v);
       }
     }
   }
@@ -129,16 +122,29 @@ class Builder {
   // found by an exact search where the scores miss).
   std::array<VertexId, 3> first_triangle() const {
     if (n_ < 3) throw InputError("triangulate_regular: fewer than three distinct points");
-    double largest = 0;
-    for (const Point& q : points_) largest = std::max({largest, std::fabs(q.x), std::fabs(q.y)});
+    // Each on threads: every part's best, then the best of those (the first where they tie).
+    const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(n_ / 65536, 1, threads_));
+    std::vector<std::pair<double, VertexId>> tops(parts);
+    auto best_of = [&](auto&& score) {
+      parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
+        for (std::size_t p = from; p < to; ++p) {
+          std::pair<double, VertexId> top{-1, 0};
+          for (auto v = static_cast<VertexId>(n_ * p / parts); v < n_ * (p + 1) / parts; ++v)
+            if (const double s = score(v); s > top.first) top = {s, v};
+          tops[p] = top;
+        }
+      });
+      std::pair<double, VertexId> top = tops[0];
+      for (const auto& t : tops)
+        if (t.first > top.first) top = t;
+      return top;
+    };
+    const double largest =
+        best_of([&](VertexId v) { return std::max(std::fabs(points_[v].x), std::fabs(points_[v].y)); }).first;
     // Scaled by a power of two to at most 1: no square overflows (one that underflows scores 0).
     const double f = largest > 0 ? std::ldexp(1.0, -std::ilogb(largest) - 1) : 1.0;
     auto best = [&](auto&& score) {
-      VertexId arg = 0;
-      double top = -1;
-      for (VertexId v = 0; v < n_; ++v)
-        if (const double s = score(f * points_[v].x, f * points_[v].y); s > top) top = s, arg = v;
-      return arg;
+      return best_of([&](VertexId v) { return score(f * points_[v].x, f * points_[v].y); }).second;
     };
     const VertexId a = 0;
     const double ax = f * points_[a].x, ay = f * points_[a].y;
@@ -169,8 +175,8 @@ class Builder {
   // face of n points (at most 2n - 2; a fan takes its cavity's slots and two more, freed ones
   // first).
   void start(SlotArrays arrays) {
-    const VertexId inf = infinite_;
-    const VertexId faces[4][3] = {{0, 1, 2}, {1, 0, inf}, {2, 1, inf}, {0, 2, inf}};
+    const VertexId a = first_[0], b = first_[1], c = first_[2], inf = infinite_;
+    const VertexId faces[4][3] = {{a, b, c}, {b, a, inf}, {c, b, inf}, {a, c, inf}};
     arrays.vertices_again();  // (the order's work was done in their memory)
     for (int f = 0; f < 4; ++f)
       for (int i = 0; i < 3; ++i) arrays.v[3 * f + i] = faces[f][i];
@@ -183,6 +189,8 @@ class Builder {
     tds_ = Tds(std::move(arrays.v), std::move(arrays.link), 4);
     stamp_ = zeros(2 * std::size_t{n_} + 2);
   }
+
+  bool is_first(VertexId v) const { return v == first_[0] || v == first_[1] || v == first_[2]; }
 
   // The corner of face w that is the vertex at infinity, or -1.
   int infinite_corner(const VertexId* w) const {
@@ -292,10 +300,10 @@ class Builder {
     // points (kNoTriangle where none was): where a walk from the last one leaves the region (which
     // is not convex), the point is looked for again from there.
     std::vector<TriangleId> starts;
-    SlotPool pool;  // (RoundSlots)
+    SlotPool pool;  // two slots a point
     std::vector<std::pair<VertexId, TriangleId>> put_off;  // each with a face near it
     std::vector<std::pair<VertexId, VertexId>> copies;
-    std::vector<TriangleId> freed;  // slots made free: of faces dropped round covered vertices
+    std::vector<TriangleId> freed;  // the slots of faces dropped round covered vertices
     CoverScratch cover;
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
   };
@@ -303,16 +311,16 @@ class Builder {
   bool owns(const Part& p, VertexId v) const { return v != infinite_ && key_[v] >= p.from && key_[v] < p.to; }
 
   void insert_round(VertexId b, VertexId e) {
-    RoundSlots slots(tds_, free_, b, e, threads_);
-    std::vector<Part> parts = round_parts<Part>(key_, b, e, threads_, epoch_, slots);
+    std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
     walk_limit_ = walk_limit(tds_);
     // With the triangulation at rest (the walks only read it), each part's on a thread.
     run_parts(parts, scratches_, [&](Part& p, CavityScratch&) { find_starts(p, last_); });
     run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
-    epoch_ = round_left(slots, parts, epoch_);
+    epoch_ = round_left(tds_, parts, free_, epoch_);
     for (Part& p : parts) {  // what the parts found; then the points put off
       if (p.start != kNoTriangle) last_ = p.start;
       copies_.insert(copies_.end(), p.copies.begin(), p.copies.end());
+      free_.insert(free_.end(), p.freed.begin(), p.freed.end());
     }
     for (const Part& p : parts)
       for (const auto& [v, near] : p.put_off) insert(v, near);
@@ -336,7 +344,7 @@ class Builder {
 
   void insert_part(Part& p, CavityScratch& s) {
     for (VertexId v = p.a; v < p.b; ++v)
-      if (TriangleId near = kNoTriangle; !insert_in(p, s, v, near)) p.put_off.emplace_back(v, near);
+      if (TriangleId near = kNoTriangle; !is_first(v) && !insert_in(p, s, v, near)) p.put_off.emplace_back(v, near);
   }
 
   // Walks to v from t within the part's region (crossing only edges with an end there, never into
@@ -396,6 +404,7 @@ class Builder {
   unsigned threads_;
   HugeArray<Weighted> q_;  // by vertex id, the vertex at infinity's NaN
   std::vector<VertexId> input_;
+  std::array<VertexId, 3> first_{};  // the first triangle's vertices, counter-clockwise
   std::vector<std::pair<VertexId, VertexId>> copies_;
   Tds tds_;
   TriangleId last_ = 0;
@@ -408,7 +417,7 @@ class Builder {
   // cover_cavity's entries, by vertex id (the vertex at infinity's too): a thread writes those
   // of its cavities' vertices, which are all in its region.
   HugeArray<std::uint32_t> cover_at_;
-  HugeArray<std::uint32_t> key_;  // by vertex id: its point's key along the curve
+  std::vector<std::uint32_t> key_;  // by vertex id: its point's key along the curve
   std::vector<CavityScratch> scratches_;  // a thread's each
   std::size_t walk_limit_ = 0;
 };
@@ -430,7 +439,7 @@ RegularTriangulation triangulate_regular(std::span<const Point> points, std::spa
   Settled settled = settle(points, weights, builder.weighted(), builder.copies(), builder.hidden(), input, threads);
   out.duplicates = std::move(settled.duplicates);
   out.hidden = std::move(settled.hidden);
-  out.hull = hull_of(tds, inf, points, input);
+  out.hull = hull_of(tds, inf, points, input, threads);
   finish_in_place(tds, inf, input, threads, out.triangles, out.neighbors);  // (inf: the number of points)
   out.stats.threads = threads;
   out.stats.points = points.size();

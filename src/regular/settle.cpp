@@ -12,26 +12,25 @@
 
 namespace ridt::detail {
 
-std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const Point> points,
-                              const std::vector<VertexId>& input) {
-  std::vector<std::pair<VertexId, VertexId>> next;  // (q, p)
-  for (TriangleId t = 0; t < tds.slots(); ++t)
-    for (int k = 0; k < 3; ++k)
-      if (tds.vertex(t, k) == infinite) next.emplace_back(tds.vertex(t, prev3(k)), tds.vertex(t, next3(k)));
-  std::sort(next.begin(), next.end());
-  VertexId from = next[0].first;
-  for (const auto& e : next)
-    if (lex_less(points[input[e.first]], points[input[from]])) from = e.first;
-  std::vector<VertexId> hull;
-  for (VertexId v = from; hull.size() < next.size();) {
-    hull.push_back(input[v]);
-    v = std::lower_bound(next.begin(), next.end(), std::make_pair(v, VertexId{0}))->second;
-    if (v == from) break;
-  }
-  return hull;
-}
-
 namespace {
+
+// The indices i in [0, count) where keep(i), in order: the parts on threads, then joined.
+template <class Keep>
+std::vector<VertexId> indices_where(std::size_t count, unsigned threads, Keep&& keep) {
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
+  std::vector<std::vector<VertexId>> found(parts);
+  parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
+    for (std::size_t p = from; p < to; ++p)
+      for (std::size_t i = count * p / parts; i < count * (p + 1) / parts; ++i)
+        if (keep(i)) found[p].push_back(static_cast<VertexId>(i));
+  });
+  std::size_t total = 0;
+  for (const auto& f : found) total += f.size();
+  std::vector<VertexId> all;
+  all.reserve(total);
+  for (const auto& f : found) all.insert(all.end(), f.begin(), f.end());
+  return all;
+}
 
 // The items 0 to m - 1 (vertex ids, item(k)) as words (the hash's first 32 bits << 32 | input
 // index), hashed on threads and sorted by the hash (the insertion order's radix sort, on
@@ -66,16 +65,43 @@ std::vector<std::uint64_t> grouped(std::size_t m, Item&& item, Hash&& hash, Less
 
 }  // namespace
 
+std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const Point> points,
+                              const std::vector<VertexId>& input, unsigned threads) {
+  const std::vector<VertexId> walls = indices_where(tds.slots(), threads, [&](std::size_t t) {
+    const VertexId* c = tds.corners(static_cast<TriangleId>(t));
+    return c[0] == infinite || c[1] == infinite || c[2] == infinite;
+  });
+  std::vector<std::pair<VertexId, VertexId>> next;  // (q, p)
+  next.reserve(walls.size());
+  for (const TriangleId t : walls)
+    for (int k = 0; k < 3; ++k)
+      if (tds.vertex(t, k) == infinite) next.emplace_back(tds.vertex(t, prev3(k)), tds.vertex(t, next3(k)));
+  std::sort(next.begin(), next.end());
+  VertexId from = next[0].first;
+  for (const auto& e : next)
+    if (lex_less(points[input[e.first]], points[input[from]])) from = e.first;
+  std::vector<VertexId> hull;
+  for (VertexId v = from; hull.size() < next.size();) {
+    hull.push_back(input[v]);
+    v = std::lower_bound(next.begin(), next.end(), std::make_pair(v, VertexId{0}))->second;
+    if (v == from) break;
+  }
+  return hull;
+}
+
 Settled settle(std::span<const Point> points, std::span<const double> weights, std::span<const Weighted> q,
                const std::vector<std::pair<VertexId, VertexId>>& copies, const std::vector<std::uint8_t>& is_hidden,
                std::vector<VertexId>& input, unsigned threads) {
   auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x); };
   auto hash = [&](VertexId v) { return mix64(bits(q[v].p.x) ^ mix64(bits(q[v].p.y) ^ mix64(bits(q[v].w)))); };
-  std::vector<std::uint8_t> hidden(points.size(), 0);  // by input index: the list comes out sorted
-  std::vector<VertexId> of;  // the hidden points' vertex ids
-  of.reserve(static_cast<std::size_t>(std::count(is_hidden.begin(), is_hidden.end(), std::uint8_t{1})));
-  for (VertexId v = 0; v < is_hidden.size(); ++v)
-    if (is_hidden[v]) of.push_back(v), hidden[input[v]] = 1;
+  std::vector<std::uint8_t> hidden;  // by input index: the list comes out sorted
+  resize_present(hidden, points.size(), threads);
+  // The hidden points' vertex ids; each marked at its input index (input: one vertex each).
+  const std::vector<VertexId> of = indices_where(is_hidden.size(), threads, [&](std::size_t v) {
+    if (!is_hidden[v]) return false;
+    hidden[input[v]] = 1;
+    return true;
+  });
   const std::size_t m = 2 * copies.size() + of.size();
   auto item = [&](std::size_t k) {
     return k < 2 * copies.size() ? (k % 2 == 0 ? copies[k / 2].first : copies[k / 2].second)
@@ -104,9 +130,7 @@ Settled settle(std::span<const Point> points, std::span<const double> weights, s
   // A group with a hidden member is hidden (a vertex hidden after its copies came), as its least.
   for (const auto& [i, low] : least)
     if (hidden[i]) hidden[i] = 0, hidden[low] = 1;
-  out.hidden.reserve(of.size());
-  for (VertexId i = 0; i < hidden.size(); ++i)
-    if (hidden[i]) out.hidden.push_back(i);
+  out.hidden = indices_where(hidden.size(), threads, [&](std::size_t i) { return hidden[i] != 0; });
   std::sort(out.duplicates.begin(), out.duplicates.end(),
             [](const Duplicate& a, const Duplicate& b) { return a.dropped < b.dropped; });
   return out;

@@ -13,9 +13,9 @@
 namespace ridt::detail {
 
 /// The hull, counter-clockwise from its lexicographically least vertex, as input indices: each
-/// wall (p, q, infinity) runs p -> q, so the hull runs q -> p.
+/// wall (p, q, infinity) runs p -> q, so the hull runs q -> p. The walls found on `threads`.
 std::vector<VertexId> hull_of(const Tds& tds, VertexId infinite, std::span<const Point> points,
-                              const std::vector<VertexId>& input);
+                              const std::vector<VertexId>& input, unsigned threads);
 
 /// Copies found at insertion (a point at a vertex's place with its weight) and hidden points
 /// that are copies of each other (a copy of a point hidden before it came): each group of equal

@@ -262,8 +262,7 @@ class Builder {
     // (kNoTriangle where none was).
     std::vector<std::pair<VertexId, TriangleId>> starts;
     TriangleId last = kNoTriangle;  // where its last walk ended
-    SlotPool pool;  // (RoundSlots)
-    std::vector<TriangleId> freed;  // (none: a cavity that covers a vertex is left to insert())
+    SlotPool pool;  // two slots a point
     std::vector<VertexId> put_off;
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
   };
@@ -271,12 +270,11 @@ class Builder {
   bool owns(const Part& p, VertexId v) const { return key_[v] >= p.from && key_[v] < p.to; }
 
   void insert_round(VertexId b, VertexId e) {
-    RoundSlots slots(tds_, free_, b, e, threads_);
-    std::vector<Part> parts = round_parts<Part>(key_, b, e, threads_, epoch_, slots);
+    std::vector<Part> parts = round_parts<Part>(tds_, key_, b, e, threads_, epoch_);
     for (Part& p : parts) find_starts(p);
     walk_limit_ = walk_limit(tds_);
     run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
-    epoch_ = round_left(slots, parts, epoch_);
+    epoch_ = round_left(tds_, parts, free_, epoch_);
     for (Part& p : parts) {  // what the parts found; then the points put off
       if (p.last != kNoTriangle) last_ = p.last;
     }
