@@ -100,7 +100,7 @@ Command add_periodic(CLI::App& app) {
                   "Voronoi cells, a line a point: the corners x y counter-clockwise round the point (empty for a "
                   "duplicate)");
   cmd->add_flag("--check", a->check, "check the triangulation with the exact validator (exit 1 if invalid)");
-  cmd->add_option("--threads", a->threads, "threads for reading and sorting (0: every hardware thread)");
+  cmd->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {cmd, [a] { return run_periodic(*a); }};
 }
 

@@ -89,7 +89,7 @@ Command add_regular(CLI::App& app) {
                   "x0,y0,x1,y1: the box --power's .svg and .off clip to (default: the points' box and 10 % around)");
   cmd->add_option("--hidden", a->hidden, "the hidden points' indices, one a line (points whose power cell is empty)");
   cmd->add_flag("--check", a->check, "check the triangulation with the exact validator (exit 1 if invalid)");
-  cmd->add_option("--threads", a->threads, "threads for sorting and writing (0: every hardware thread)");
+  cmd->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {cmd, [a] { return run_regular(*a); }};
 }
 

@@ -190,7 +190,7 @@ Command add_sphere(CLI::App& app) {
                   "else the points' mean distance from the centre)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--check", a->check, "check the triangulation with the exact validator (exit 1 if invalid)");
-  cmd->add_option("--threads", a->threads, "threads for sorting, writing and the cells (0: every hardware thread)");
+  cmd->add_option("--threads", a->threads, "threads (0, the default: all hardware threads)");
   return {cmd, [a] { return run_sphere(*a); }};
 }
 
