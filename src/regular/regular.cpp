@@ -57,8 +57,11 @@ void check_input(std::span<const Point> points, std::span<const double> weights)
   }
 }
 
-// A thread's walks may start anew at a face found before the round every this many points.
-constexpr VertexId kEvery = 256;
+// A thread's walks may start anew at a face found before the round every this many points, each
+// found by a walk (at 10^6 points on two threads, against every 256: every 1,024 took 2.4 to 2.9
+// % less time in all, every 4,096 3.8 % less, every 16,384 17 % more: walks that leave the region
+// start too far away).
+constexpr VertexId kEvery = 1024;
 
 class Builder {
  public:
