@@ -167,9 +167,6 @@ class Partition {
   // The region of keys [lo, lo + len) round the circle.
   KeyRange region(std::uint32_t lo, std::uint64_t len) const { return {key_, n_, lo, len}; }
 
-  // Whether slot t holds a triangle (kNoTriangle: no).
-  bool live(TriangleId t) const { return t < tds_.slots() && tds_.vertex(t, 0) != kNoVertex; }
-
   // Whether triangle t has all three vertices in region r (tested together, without a branch
   // between them: the answers are hard to predict). R: KeyRange (the first pass) or CellRange
   // (the second), here and below.

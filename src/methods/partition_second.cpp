@@ -80,7 +80,7 @@ auto Partition<kLattice>::second_pass(std::vector<PutOff> left) -> std::vector<P
   for (PutOff x : left) {
     Task& t = tasks_[owner_[static_cast<std::size_t>(grid.cell(v[x.p]))]];
     // A hint the region does not own may change under another thread: read it now or never.
-    if (!live(x.near) || !owns(t.range, x.near)) x.near = kNoTriangle;
+    if (!tds_.live(x.near) || !owns(t.range, x.near)) x.near = kNoTriangle;
     t.todo.push_back(x);
   }
   // Before the threads start: each region's start, and slots for all its points.
@@ -151,7 +151,7 @@ void Partition<kLattice>::insert_alone(const std::vector<PutOff>& list) {
   pool.end = pool.next + static_cast<TriangleId>(grown);
   for (const auto [p, near] : list) {
     progress_(done_++);
-    last_ = nearer(last_, {p, live(near) ? near : kNoTriangle});
+    last_ = nearer(last_, {p, tds_.live(near) ? near : kNoTriangle});
     if (const VertexId hit = tds_.insert<kLattice>(p, last_, w.scratch, pool); hit != kNoVertex)
       w.duplicates.push_back({p, hit});
     else

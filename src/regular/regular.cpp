@@ -255,7 +255,7 @@ class Builder {
   // Inserts v, walking from `near` where it is a face, else from where the last point was.
   void insert(VertexId v, TriangleId near = kNoTriangle) {
     bool outside = false;
-    const TriangleId from = near != kNoTriangle && tds_.vertex(near, 0) != kNoVertex ? near : last_;
+    const TriangleId from = tds_.live(near) ? near : last_;
     const TriangleId t = locate(from, v, outside);
     if (!outside)
       for (int i = 0; i < 3; ++i)
@@ -374,7 +374,7 @@ class Builder {
     if (t == kNoTriangle || !walk_in(p, t, v)) {
       const TriangleId from = p.starts[(v - p.a) / kEvery];
       // (its slot may have been freed round a covered vertex since)
-      if (from == kNoTriangle || tds_.vertex(from, 0) == kNoVertex) return near = t, false;
+      if (!tds_.live(from)) return near = t, false;
       t = from;
       if (!walk_in(p, t, v)) return near = t, false;
     }

@@ -209,7 +209,7 @@ class Builder {
         [&](Link) { return ++steps < limit ? Step::Cross : Step::Stop; });
     if (w) return t;
     for (TriangleId u = 0; u < tds_.slots(); ++u)
-      if (tds_.vertex(u, 0) != kNoVertex && holds(u, v)) return u;
+      if (tds_.live(u) && holds(u, v)) return u;
     return last_;  // unreachable: the cones part space
   }
 

@@ -303,6 +303,8 @@ class Tds {
   /// kNoTriangle for those two where there is no u).
   std::array<TriangleId, 4> split_edge(Link e, VertexId p, SlotPool& pool);
 
+  /// Whether slot t holds a triangle (kNoTriangle, a free slot, one past those in use: no).
+  bool live(TriangleId t) const { return t < top_ && v_[3 * std::size_t{t}] != kNoVertex; }
   /// Marks slot t free (no triangle): the finish leaves it out.
   void free_slot(TriangleId t) {
     const std::size_t tb = 3 * std::size_t{t};

@@ -51,7 +51,7 @@ struct IncrementalTriangulation::State {
 
   detail::Vertices vertices() const { return detail::Vertices(pts.data(), n, true); }
   bool finite(TriangleId t) const { return tds->vertex(t, 0) < n && tds->vertex(t, 1) < n && tds->vertex(t, 2) < n; }
-  bool alive(TriangleId t) const { return tds->vertex(t, 0) != kNoVertex; }
+  bool alive(TriangleId t) const { return tds->live(t); }
 
   // The bounding triangle alone.
   void root() {
