@@ -220,6 +220,16 @@ class Builder {
     return power_sees(q, p, tds_.opposite(tds_.link(t, k)), v);
   }
 
+  // orient2d(a, b, q) for a walk: the filter in line, the rest out of line (orient2d whole is
+  // not inlined: a call at each step of a walk).
+  [[gnu::always_inline]] int side(VertexId a, VertexId b, const Point& q) const {
+    if (const int s = orient2d_filter(q_[a].p, q_[b].p, q); s != 0) return s;
+    return side_unsure(a, b, q);
+  }
+  [[gnu::noinline]] int side_unsure(VertexId a, VertexId b, const Point& q) const {
+    return orient2d(q_[a].p, q_[b].p, q);
+  }
+
   // Where v lies: a finite face whose closure holds it (outside = false), or a wall beyond whose
   // edge it lies (outside = true). A walk from face `from` (it cannot cycle in a regular
   // triangulation), and behind it, should it go on too long, a look at every face. Reads only.
@@ -231,7 +241,7 @@ class Builder {
     const std::size_t limit = walk_limit(tds_);
     bool wall = false;
     const Walked w = tds_.walk(
-        t, [&](VertexId a, VertexId b) { return orient2d(q_[a].p, q_[b].p, q); },
+        t, [&](VertexId a, VertexId b) { return side(a, b, q); },
         [&](Link l) {
           wall = tds_.opposite(l) == infinite_;  // (a wall's one finite edge is the one crossed)
           return !wall && ++steps < limit ? Step::Cross : Step::Stop;
@@ -356,7 +366,7 @@ class Builder {
     std::size_t steps = 0;
     const Point q = q_[v].p;
     const Walked w = tds_.walk(
-        t, [&](VertexId a, VertexId b) { return orient2d(q_[a].p, q_[b].p, q); },
+        t, [&](VertexId a, VertexId b) { return side(a, b, q); },
         [&](VertexId a, VertexId b) {
           if (!(owns(p, a) || owns(p, b)) || ++steps >= walk_limit_) return Step::Stop;
           const VertexId* c = tds_.corners(t);  // (the face across shares a or b: it may be read)
