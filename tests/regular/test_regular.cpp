@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <random>
 #include <set>
@@ -219,6 +220,45 @@ TEST(Regular, ManyCopiesOfAHiddenPointAreOneGroup) {
   for (const Duplicate& d : t.duplicates) kept_first += d.kept == n;
   EXPECT_EQ(kept_first, 199999u);
   EXPECT_TRUE(std::binary_search(t.hidden.begin(), t.hidden.end(), n));
+}
+
+// Many groups of copies among many hidden points (heavy weights: most points hidden), copies
+// of vertices and of hidden points, before and after them, with points at the same place and
+// another weight: on 1 and 2 threads, the duplicates are exactly the groups of equal weighted
+// points found by a map, each dropped index kept as its group's least, and every index is a
+// vertex, hidden or dropped, one of them.
+TEST(Regular, CopiesAmongManyHiddenPointsAreTheGroupsOfEqualValues) {
+  Weighted in = random_weighted(40000, 41, 0.004);  // some 80 % hidden
+  std::mt19937_64 random(42);
+  for (int i = 0; i < 20000; ++i) {
+    const std::size_t k = random() % in.points.size();
+    const std::size_t at = random() % (in.points.size() + 1);
+    const double w = random() % 4 == 0 ? in.weights[k] * 0.5 : in.weights[k];  // (some at one place only)
+    in.points.insert(in.points.begin() + static_cast<std::ptrdiff_t>(at), in.points[k]);
+    in.weights.insert(in.weights.begin() + static_cast<std::ptrdiff_t>(at), w);
+  }
+  const std::size_t n = in.points.size();
+  std::map<std::array<double, 3>, VertexId> least;
+  constexpr VertexId kNone = ~VertexId{0};
+  std::vector<VertexId> expected(n, kNone);  // the index each one's group keeps, where it is dropped
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [it, first] = least.try_emplace({in.points[i].x, in.points[i].y, in.weights[i]}, VertexId(i));
+    if (!first) expected[i] = it->second;
+  }
+  for (const unsigned threads : {1u, 2u}) {
+    const RegularTriangulation t = triangulate_regular(in.points, in.weights, threads);
+    EXPECT_TRUE(check_regular(in.points, in.weights, t.triangles).valid);
+    EXPECT_GT(t.hidden.size(), n / 2);
+    std::vector<VertexId> got(n, kNone);
+    for (const Duplicate& d : t.duplicates) got[d.dropped] = d.kept;
+    EXPECT_EQ(got, expected) << threads << " threads";
+    EXPECT_TRUE(std::is_sorted(t.hidden.begin(), t.hidden.end()));
+    std::vector<int> roles(n, 0);
+    for (const VertexId v : t.triangles) roles[v] = 1;
+    for (const VertexId v : t.hidden) roles[v] += 2;
+    for (const Duplicate& d : t.duplicates) roles[d.dropped] += 4;
+    for (std::size_t i = 0; i < n; ++i) ASSERT_TRUE(roles[i] == 1 || roles[i] == 2 || roles[i] == 4) << i;
+  }
 }
 
 // Zeros of either sign are one value, in the coordinates and in the weight: hidden copies that
