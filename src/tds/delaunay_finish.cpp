@@ -171,10 +171,14 @@ std::vector<std::pair<VertexId, VertexId>> convert_in_place(Tds& tds, std::uint3
   });
   // The movers after: their slots lie at or above count(), which no worker wrote, and each
   // goes to a gap of its own.
-  on_threads(kept.workers(), [&mover_parts, &kept, proto](unsigned w) {
+  on_threads(kept.workers(), [&mover_parts, &kept, proto, n](unsigned w) {
     Converter convert = proto;
     const auto [first, last] = kept.share(w, kept.movers().size());
-    for (std::size_t i = first; i < last; ++i) convert(kept.movers()[i], kept.gaps()[i]);
+    constexpr std::size_t kAhead = 16;  // (as above)
+    for (std::size_t i = first; i < last; ++i) {
+      if (i + kAhead < last) convert.prefetch(kept.movers()[i + kAhead], n);
+      convert(kept.movers()[i], kept.gaps()[i]);
+    }
     mover_parts[w] = std::move(convert.hull);
   });
   std::vector<std::pair<VertexId, VertexId>> hull_edges;
