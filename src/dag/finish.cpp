@@ -61,6 +61,7 @@ class KeptRecords {
     for_each_block([&](unsigned w, std::size_t b) {
       const auto [begin, end] = range(b);
       TriangleId to = begin;
+      std::uint64_t count = 0;  // (here, not in made[w], whose line the other workers write)
       // The input indices of the vertices are read at random: those of a record kAhead on are
       // prefetched, so the misses overlap.
       constexpr TriangleId kAhead = 16;
@@ -72,7 +73,7 @@ class KeptRecords {
             for (const VertexId v : tris[t + kAhead].v) __builtin_prefetch(&standing.input_index[v]);
           if (unused(t)) continue;
           const Triangle& r = tris[t];
-          made[w] += r.v[0] != kNoVertex;
+          count += r.v[0] != kNoVertex;
           if (!kept(r)) continue;
           bits |= std::uint64_t{1} << (t & 63);
           tris[to++] = Triangle{{standing(r.v[0]), standing(r.v[1]), standing(r.v[2])}, {r.n[0], r.n[1], r.n[2]}, 0};
@@ -80,6 +81,7 @@ class KeptRecords {
         bits_[k] = bits;
         rank_before_[k + 1] = static_cast<std::uint32_t>(ones(bits));
       }
+      made[w] += count;
     });
     std::partial_sum(rank_before_.begin(), rank_before_.end(), rank_before_.begin());
     return std::accumulate(made.begin(), made.end(), std::uint64_t{0});

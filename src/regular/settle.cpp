@@ -41,8 +41,11 @@ std::vector<T> gathered(std::size_t count, unsigned threads, Keep&& keep, Value&
   const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
   std::vector<std::size_t> at(parts + 1, 0);
   parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
-    for (std::size_t p = from; p < to; ++p)
-      for (std::size_t i = count * p / parts; i < count * (p + 1) / parts; ++i) at[p + 1] += keep(i) ? 1 : 0;
+    for (std::size_t p = from; p < to; ++p) {
+      std::size_t k = 0;  // (here, not in at[p + 1], whose line the other parts write)
+      for (std::size_t i = count * p / parts; i < count * (p + 1) / parts; ++i) k += keep(i) ? 1 : 0;
+      at[p + 1] = k;
+    }
   });
   for (unsigned p = 0; p < parts; ++p) at[p + 1] += at[p];
   std::vector<T> all;
