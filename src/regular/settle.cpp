@@ -71,7 +71,8 @@ std::vector<std::uint64_t> meeting(const std::vector<std::uint64_t>& words, unsi
   auto slot = [&](std::uint64_t word) { return word >> (64 - bits); };
   const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(words.size() / 65536, 1, std::max(threads, 1u)));
   parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
-    const std::uint64_t low = size * 64 * from / parts, high = size * 64 * to / parts;
+    // (whole table words: a word cut between two threads would be written by both)
+    const std::uint64_t low = 64 * (size * from / parts), high = 64 * (size * to / parts);
     for (const std::uint64_t word : words)
       if (const std::uint64_t h = slot(word); h >= low && h < high) {
         const std::uint64_t bit = std::uint64_t{1} << (h & 63);
