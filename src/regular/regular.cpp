@@ -316,7 +316,9 @@ class Builder {
     SlotPool pool;  // two slots a point
     std::vector<std::pair<VertexId, TriangleId>> put_off;  // each with a face near it
     std::vector<std::pair<VertexId, VertexId>> copies;
-    std::vector<TriangleId> freed;  // the slots of faces dropped round covered vertices
+    // Free slots, taken before its pool's: its share of those free before the round, then those
+    // of faces dropped round covered vertices.
+    std::vector<TriangleId> freed;
     CoverScratch cover;
     std::uint32_t epoch = 0;  // its stamps: each insertion's epoch its last plus the thread count
   };
@@ -328,6 +330,11 @@ class Builder {
     walk_limit_ = walk_limit(tds_);
     // With the triangulation at rest (the walks only read it), each part's on a thread.
     run_parts(parts, scratches_, [&](Part& p, CavityScratch&) { find_starts(p, last_); });
+    // The free slots shared among the parts, each taking its own first (then its pool's).
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      parts[i].freed.assign(free_.begin() + static_cast<std::ptrdiff_t>(free_.size() * i / parts.size()),
+                            free_.begin() + static_cast<std::ptrdiff_t>(free_.size() * (i + 1) / parts.size()));
+    free_.clear();
     run_parts(parts, scratches_, [&](Part& p, CavityScratch& s) { insert_part(p, s); });
     epoch_ = round_left(tds_, parts, free_, epoch_);
     for (Part& p : parts) {  // what the parts found; then the points put off
@@ -393,7 +400,8 @@ class Builder {
     for (int i = 0; i < 3; ++i)
       if (q_[c[i]] == q_[v]) return p.copies.emplace_back(v, c[i]), true;
     if (!sees(c, v)) return hidden_[v] = 1, true;
-    if (!owns(p, c[0]) || !owns(p, c[1]) || !owns(p, c[2]) || p.pool.size() < 2) return near = t, false;
+    if (!owns(p, c[0]) || !owns(p, c[1]) || !owns(p, c[2]) || p.freed.size() + p.pool.size() < 2)
+      return near = t, false;
     const std::uint32_t epoch = p.epoch += threads_;
     stamp_[t] = epoch;
     const bool whole = tds_.find_cavity(
@@ -407,7 +415,10 @@ class Builder {
             if (u < n_) hidden_[u] = 1;
           },
           p.freed, p.cover, cover_at_);
+    p.pool.list = p.freed.data(), p.pool.listed = p.freed.size();
     p.start = tds_.fill_cavity(v, s, p.pool);
+    p.freed.resize(p.pool.listed);
+    p.pool.list = nullptr, p.pool.listed = 0;
     return true;
   }
 
