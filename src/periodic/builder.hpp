@@ -130,8 +130,9 @@ class Builder {
 
   PeriodicTriangulation take() {
     out_.domain = d_;
-    for (VertexId i = 0; i < up_.size(); ++i)
-      if (const VertexId r = root(up_, i); r != i) out_.duplicates.push_back({i, r});
+    if (duplicates_)
+      for (VertexId i = 0; i < up_.size(); ++i)
+        if (const VertexId r = root(up_, i); r != i) out_.duplicates.push_back({input_of(i), input_of(r)});
     return std::move(out_);
   }
 
@@ -194,8 +195,10 @@ class Builder {
     arrays.v[0] = n_, arrays.v[1] = n_ + 1, arrays.v[2] = n_ + 2;
     arrays.link[0] = arrays.link[1] = arrays.link[2] = kNoLink;
     tds_ = Tds(std::move(arrays.v), std::move(arrays.link), 1);
-    up_.resize(points_.size());
-    given_.assign(points_.size(), kNoVertex);
+    // (by place among the points copied: a strip's few, not every point's)
+    const std::size_t places = subset_.empty() ? points_.size() : subset_.size();
+    up_.resize(places);
+    given_.assign(places, kNoVertex);
     duplicates_ = false;
     std::iota(up_.begin(), up_.end(), VertexId{0});
     TriangleId last = 0;
@@ -209,12 +212,12 @@ class Builder {
         const VertexId w = tds_.vertex(last, i);
         if (w < n_ && same_shift(s_[w], s_[v]) && s_[w].p == s_[v].p) {
           kept = w;
-          const VertexId a = root(up_, input_[w]), b = root(up_, input_[v]);
+          const VertexId a = root(up_, place(input_[w])), b = root(up_, place(input_[v]));
           up_[std::max(a, b)] = std::min(a, b);
           equal = duplicates_ = true;
         }
       }
-      if (s_[v].dx == 0 && s_[v].dy == 0) given_[input_[v]] = equal ? kept : v;
+      if (s_[v].dx == 0 && s_[v].dy == 0) given_[place(input_[v])] = equal ? kept : v;
       if (equal) continue;
       tds_.find_cavity(
           last, scratch, [&](const VertexId* w) { return in_circle(w, v); }, Tds::kAnywhere, Tds::kNoWall,
@@ -362,7 +365,7 @@ class Builder {
     VertexId w[3];
     for (int j = 0; j < 3; ++j) {
       if (s_[c[j]].dx != shift.dx || s_[c[j]].dy != shift.dy) return -1;
-      w[j] = given_[input_[c[j]]];
+      w[j] = given_[place(input_[c[j]])];
     }
     const TriangleId start = around_[w[0]];
     if (start == kNoTriangle) return -1;
@@ -405,7 +408,16 @@ class Builder {
   }
 
   // A vertex's input index: its group's least where the same point was given more than once.
-  VertexId index(VertexId v) { return duplicates_ ? root(up_, input_[v]) : input_[v]; }
+  VertexId index(VertexId v) { return duplicates_ ? input_of(root(up_, place(input_[v]))) : input_[v]; }
+
+  // Input index k's place among the points copied (subset_, ascending; k itself where every
+  // point is), and back.
+  VertexId place(VertexId k) const {
+    return subset_.empty()
+        ? k
+        : static_cast<VertexId>(std::lower_bound(subset_.begin(), subset_.end(), k) - subset_.begin());
+  }
+  VertexId input_of(VertexId place) const { return subset_.empty() ? place : subset_[place]; }
 
   // The least corner of a triangle, by (input index, dx, dy).
   int least(const VertexId* c) {
@@ -423,8 +435,8 @@ class Builder {
   VertexId n_ = 0;  // copies in S
   std::vector<Shifted> s_;  // by vertex id: the copy, then the bounding vertices
   std::vector<VertexId> input_;  // by vertex id: its point's input index
-  std::vector<VertexId> up_;  // by input index: the union of equal points
-  std::vector<VertexId> given_;  // by input index: the vertex at its place as given (offset 0)
+  std::vector<VertexId> up_;  // by place (below): the union of equal points
+  std::vector<VertexId> given_;  // by place: the vertex at its point as given (offset 0)
   std::vector<TriangleId> around_;  // by vertex id: a triangle that has it
   bool grown_ = false;  // keep() has set the next margin
   bool verify_ = false;  // keep() asks for the exact validator
