@@ -392,3 +392,63 @@ def test_the_packages_documented_scripts_run_with_only_the_import_changed(tmp_pa
         assert first == "20" and int(second) >= 20  # at least one Voronoi edge per point
     else:
         assert int(second) > int(first) and third == "True"  # refined: more triangles, the vertices kept
+
+
+def _circle(n, radius):
+    i = np.arange(n)
+    theta = i * 2 * np.pi / n
+    return np.stack([np.cos(theta), np.sin(theta)], axis=1) * radius, np.stack([i, i + 1], axis=1) % n
+
+
+def _boxes():
+    vertices, segments, regions = [], [], []
+    for x, y, w, h, attribute in [(0, 0, 5, 5, 1), (1, 1, 3, 1, 2), (1, 3, 1, 1, 3), (3, 3, 1, 1, 4)]:
+        i = len(vertices)
+        vertices += [[x, y], [x + w, y], [x + w, y + h], [x, y + h]]
+        segments += [(i, i + 1), (i + 1, i + 2), (i + 2, i + 3), (i + 3, i)]
+        regions.append([x + 0.5 * w, y + 0.5 * h, attribute, 0])
+    return dict(vertices=vertices, segments=segments, regions=regions)
+
+
+def _annulus():
+    outer, outer_segments = _circle(30, 1.4)
+    inner, inner_segments = _circle(16, 0.6)
+    return dict(vertices=np.vstack([outer, inner]), segments=np.vstack([outer_segments, inner_segments + 30]),
+                holes=[[0, 0]])
+
+
+UNIT_SQUARE = dict(vertices=np.array(((0, 0), (1, 0), (1, 1), (0, 1)), dtype=float))
+THIRTY_TWO_GON = dict(vertices=np.vstack((np.cos(np.linspace(0, 2 * np.pi, 33)[:-1]),
+                                          np.sin(np.linspace(0, 2 * np.pi, 33)[:-1]))).T)
+# The package's documented examples with their data in the script (its simple examples: a square,
+# a 32-gon's points, an annulus with a hole, boxes with regional attributes), each with the
+# smallest angle and the largest area its switches ask, and Triangle's triangle count for the
+# same input and switches (`triangle -Q...` of it written as .node or .poly).
+DOCUMENTED = [
+    ("square q", UNIT_SQUARE, "q", 20, 0, 2),
+    ("square qa0.1", UNIT_SQUARE, "qa0.1", 20, 0.1, 16),
+    ("square qa0.01", UNIT_SQUARE, "qa0.01", 20, 0.01, 150),
+    ("32-gon q", THIRTY_TWO_GON, "q", 20, 0, 56),
+    ("32-gon qa0.05", THIRTY_TWO_GON, "qa0.05", 20, 0.05, 102),
+    ("annulus qpa0.05", _annulus(), "qpa0.05", 20, 0.05, 170),
+    ("boxes pA", _boxes(), "pA", 0, 0, 26),
+]
+
+
+@pytest.mark.parametrize("name, data, switches, angle, area, theirs", DOCUMENTED, ids=[d[0] for d in DOCUMENTED])
+def test_the_packages_documented_examples_take_no_more_triangles_than_triangle(name, data, switches, angle, area,
+                                                                             theirs):
+    t = tr.triangulate(data, switches)
+    p = t["vertices"][t["triangles"]]
+    u, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]
+    doubled = u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]
+    assert (doubled > 0).all()
+    if area:
+        assert doubled.max() / 2 <= area
+    smallest = 180.0
+    for i in range(3):
+        u, w = p[:, (i + 1) % 3] - p[:, i], p[:, (i + 2) % 3] - p[:, i]
+        smallest = min(smallest, float(np.degrees(np.arctan2(np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]),
+                                                                (u * w).sum(axis=1))).min()))
+    assert smallest >= angle - 1e-9  # no input angle below the bound in these
+    assert len(t["triangles"]) <= 1.03 * theirs, (len(t["triangles"]), theirs)

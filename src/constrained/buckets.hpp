@@ -12,13 +12,16 @@ namespace ridt::detail {
 
 // A priority queue of items with a `key` (smaller first), in buckets of a quarter octave of
 // it, last in first out within one: the order refinement needs within a few per cent, without a
-// heap's misses. A bucket is put in order along the Hilbert curve (by `where`, in 1024 stretches)
-// when the queue comes to it and more than a few of its items came since: then one pop's triangle
-// lies near the last one's in the plane, and the slots they free and take, near in memory. The
-// whole bucket where its new items are at least as many as those in order, else its new items
-// alone: each sort then costs at most twice the items that came since the last, where sorting
-// every item each time took time quadratic in a bucket the queue kept leaving and coming back to
-// (a bucket of 350,000 sorted 503 times: 3 s for a mesh of 5000 points added).
+// heap's misses. Where a bucket holds kExact items or fewer and its keys are from 0 up (the
+// shapes'), it pops its smallest key exactly, the latest of equal ones: a small mesh's size hangs
+// on the order of its few bad triangles, and the scan costs little beside a point's insertion
+// (docs/constrained.md). A bucket is put in order along the Hilbert curve (by `where`, in 1024
+// stretches) when the queue comes to it and more than a few of its items came since: then one
+// pop's triangle lies near the last one's in the plane, and the slots they free and take, near in
+// memory. The whole bucket where its new items are at least as many as those in order, else its
+// new items alone: each sort then costs at most twice the items that came since the last, where
+// sorting every item each time took time quadratic in a bucket the queue kept leaving and coming
+// back to (a bucket of 350,000 sorted 503 times: 3 s for a mesh of 5000 points added).
 template <class Item>
 class Buckets {
  public:
@@ -35,15 +38,21 @@ class Buckets {
     if (lowest_ != current_ && lists_[lowest_].size() > ordered_[lowest_] + 64) along_curve(lowest_);
     current_ = lowest_;
     std::vector<Item>& l = lists_[lowest_];
-    const Item item = l.back();
-    l.pop_back();
-    ordered_[lowest_] = std::min(ordered_[lowest_], l.size());
+    std::size_t at = l.size() - 1;
+    if (l.size() <= kExact && l[at].key >= 0)
+      for (std::size_t k = at; k-- > 0;)
+        if (l[k].key < l[at].key) at = k;
+    const Item item = l[at];
+    l.erase(l.begin() + static_cast<std::ptrdiff_t>(at));
+    std::size_t& ordered = ordered_[lowest_];
+    ordered = std::min(at < ordered ? ordered - 1 : ordered, l.size());  // (what stays keeps its order)
     --size_;
     return item;
   }
   /// The items put in curve order so far, counted once each time a sort moves them.
   std::size_t sorted() const { return sorted_; }
-  // The item that would come k pops after the next, in the lowest bucket, or null.
+  // The item that would come k pops after the next, in the lowest bucket, or null (a guess in
+  // a bucket of kExact items or fewer, which pops by key).
   const Item* ahead(std::size_t k) const {
     if (size_ == 0 || lowest_ >= lists_.size()) return nullptr;
     const std::vector<Item>& l = lists_[lowest_];
@@ -51,6 +60,7 @@ class Buckets {
   }
 
  private:
+  static constexpr std::size_t kExact = 64;
   // Keys from 0 up first, then the negative ones (the most negative first), each by quarter
   // octaves: refinement splits the triangles bad for their shape before those too large, whose
   // splits the shapes' own points mostly make (docs/constrained.md).

@@ -1,5 +1,6 @@
 // The queue of bad triangles (constrained/buckets.hpp): smaller keys first, last in first out
-// within a bucket, and the work of putting a bucket in curve order linear in the items pushed.
+// within a large bucket, by key within a small one, and the work of putting a bucket in curve
+// order linear in the items pushed.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -17,14 +18,31 @@ struct Item {
 };
 
 // Keys from 0 up first, smaller first, then the negative ones, the most negative first (the
-// shapes' keys, then the sizes').
-TEST(Buckets, SmallerKeysFirstAndTheLastPushedFirstWithinABucket) {
+// shapes' keys, then the sizes'). Within a bucket of a few items, the shapes' smallest key first
+// (the latest of equal ones), the sizes' last pushed first.
+TEST(Buckets, SmallerKeysFirstExactlyInASmallBucket) {
   detail::Buckets<Item> q;
   q.push({4, 0, 0}), q.push({1, 0, 1}), q.push({-2, 0, 2}), q.push({1.01, 0, 3}), q.push({16, 0, 4});
-  q.push({-8, 0, 5}), q.push({0.5, 0, 6});
+  q.push({-8, 0, 5}), q.push({0.5, 0, 6}), q.push({1, 0, 7}), q.push({-2.1, 0, 8}), q.push({-2.05, 0, 9});
   std::vector<int> order;
   while (!q.empty()) order.push_back(q.pop().id);
-  EXPECT_EQ(order, (std::vector<int>{6, 3, 1, 0, 4, 5, 2}));  // 1 and 1.01 share a quarter octave
+  // 1 and 1.01 share a quarter octave, as do -2, -2.05 and -2.1
+  EXPECT_EQ(order, (std::vector<int>{6, 7, 1, 3, 0, 4, 5, 9, 8, 2}));
+}
+
+// A bucket of more than a few items pops the last pushed first (after a sort along the curve, by
+// `where`); once down to a few, by key.
+TEST(Buckets, ALargeBucketPopsTheLastPushedFirst) {
+  detail::Buckets<Item> q;
+  for (int k = 0; k < 200; ++k) q.push({1 + (k % 7) * 0.01, 7, k});  // one quarter octave, one stretch
+  std::vector<int> order;
+  while (!q.empty()) order.push_back(q.pop().id);
+  for (int k = 0; k + 64 < 200; ++k) EXPECT_EQ(order[k], 199 - k);
+  // the last 64 (ids 0 to 63) by key, the latest of equal keys first
+  for (std::size_t k = 137; k < 200; ++k) {
+    const int a = order[k - 1], b = order[k];
+    EXPECT_TRUE(a % 7 < b % 7 || (a % 7 == b % 7 && a > b)) << k;
+  }
 }
 
 TEST(Buckets, ABucketLeftAndComeBackToIsNotSortedWholeEachTime) {
