@@ -14,25 +14,6 @@ namespace ridt::detail {
 
 namespace {
 
-// The indices i in [0, count) where keep(i), in order: the parts on threads, then joined. For
-// few indices (the hull's walls) among many.
-template <class Keep>
-std::vector<VertexId> indices_where(std::size_t count, unsigned threads, Keep&& keep) {
-  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, std::max(threads, 1u)));
-  std::vector<std::vector<VertexId>> found(parts);
-  parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
-    for (std::size_t p = from; p < to; ++p)
-      for (std::size_t i = count * p / parts; i < count * (p + 1) / parts; ++i)
-        if (keep(i)) found[p].push_back(static_cast<VertexId>(i));
-  });
-  std::size_t total = 0;
-  for (const auto& f : found) total += f.size();
-  std::vector<VertexId> all;
-  all.reserve(total);
-  for (const auto& f : found) all.insert(all.end(), f.begin(), f.end());
-  return all;
-}
-
 // value(i) for each i in [0, count) where keep(i), in order: on threads, the kept counted in
 // each part, then each part's values written after those of the parts before (no list grown
 // and copied). value(i) is called once for each kept i.

@@ -1,9 +1,11 @@
 // The library's two parallel loops: a body on each of a few threads, and a range cut into
-// parts, one a thread. The caller's thread always takes part 0.
+// parts, one a thread (the caller's thread always takes part 0); and the indices of a range that
+// a test keeps, found on threads.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <new>
@@ -101,6 +103,25 @@ void parallel_sort(It first, It last, unsigned threads, Less less) {
   for (unsigned width = 1; width < parts; width *= 2)
     for (unsigned p = 0; p + width < parts; p += 2 * width)
       std::inplace_merge(at(p), at(p + width), at(std::min(p + 2 * width, parts)), less);
+}
+
+/// The indices i in [0, count) (below 2^32) where keep(i), in order: the parts on threads, then
+/// joined. For few indices among many.
+template <class Keep>
+std::vector<std::uint32_t> indices_where(std::size_t count, unsigned threads, Keep&& keep) {
+  const auto parts = static_cast<unsigned>(std::clamp<std::size_t>(count / 65536, 1, thread_count(threads)));
+  std::vector<std::vector<std::uint32_t>> found(parts);
+  parallel_for(parts, parts, 1, [&](std::size_t from, std::size_t to) {
+    for (std::size_t p = from; p < to; ++p)
+      for (std::size_t i = count * p / parts; i < count * (p + 1) / parts; ++i)
+        if (keep(i)) found[p].push_back(static_cast<std::uint32_t>(i));
+  });
+  std::size_t total = 0;
+  for (const auto& f : found) total += f.size();
+  std::vector<std::uint32_t> all;
+  all.reserve(total);
+  for (const auto& f : found) all.insert(all.end(), f.begin(), f.end());
+  return all;
 }
 
 }  // namespace ridt::detail

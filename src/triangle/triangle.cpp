@@ -7,8 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ridt/interpolate.hpp"
+#include "runtime/parallel.hpp"
 
 namespace ridt::triangle {
 namespace {
@@ -59,18 +62,28 @@ ConstrainedTriangulation run(const Input& in, const Switches& w, const Options& 
 // Triangle's markers: a piece's, its segment's where not 0, else 1 on the boundary, 0 inside;
 // a vertex's, the input's where not 0, else that of the last marked segment it ends a piece of,
 // else 1 on the boundary, 0 inside.
-void mark(const Input& in, const ConstrainedTriangulation& t, Output& out) {
+void mark(const Input& in, const ConstrainedTriangulation& t, unsigned threads, Output& out) {
   const std::size_t pieces = t.edges.size() / 2;
   out.vertex_markers.assign(out.vertices.size(), 0);
   out.segment_markers.assign(pieces, 0);
+  // The boundary's sides (those with no triangle across) and their pieces found on threads (a
+  // binary search each), then marked.
   const EdgeIndex index(t.edges);
-  for (std::size_t s = 0; s < 3 * t.size(); ++s)
-    if (t.neighbors[s] < 0) {
-      const std::size_t first = s - s % 3;
-      const VertexId a = t.triangles[first + (s + 1) % 3], b = t.triangles[first + (s + 2) % 3];
-      out.vertex_markers[a] = out.vertex_markers[b] = 1;
-      if (const std::size_t k = index.find(a, b); k < pieces) out.segment_markers[k] = 1;
-    }
+  const std::vector<std::uint32_t> sides =
+      detail::indices_where(3 * t.size(), threads, [&](std::size_t s) { return t.neighbors[s] < 0; });
+  auto ends = [&](std::size_t s) {
+    const std::size_t first = s - s % 3;
+    return std::pair{t.triangles[first + (s + 1) % 3], t.triangles[first + (s + 2) % 3]};
+  };
+  std::vector<std::size_t> piece(sides.size());
+  detail::parallel_for(sides.size(), threads, 4096, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) piece[k] = index.find(ends(sides[k]).first, ends(sides[k]).second);
+  });
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const auto [a, b] = ends(sides[k]);
+    out.vertex_markers[a] = out.vertex_markers[b] = 1;
+    if (piece[k] < pieces) out.segment_markers[piece[k]] = 1;
+  }
   std::vector<std::int32_t> by(out.vertices.size(), -1);  // the marked segment that marks each vertex
   for (std::size_t k = 0; k < pieces; ++k) {
     const std::int32_t s = t.edge_segments[k];
@@ -135,7 +148,7 @@ Output triangulate(const Input& in, const Switches& w, const Options& options) {
   out.crossings = t.crossings;
   out.warning = t.warning;
   out.duplicates = t.duplicates;
-  mark(in, t, out);
+  mark(in, t, o.threads, out);
   carry_attributes(in, t, o, out);
   if (w.check) out.check = checked(in, w, t, out);
   if (w.attributes || (w.refine && !in.triangle_attributes.empty())) out.triangle_attributes = std::move(t.attributes);
