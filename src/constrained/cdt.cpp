@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <functional>
 #include <new>
 #include <stdexcept>
 
@@ -320,28 +321,39 @@ void Cdt::drop_slots(const std::vector<std::uint8_t>& gone) {
 }
 
 void Cdt::compact(std::vector<VertexId> dead) {
-  if (dead.empty() && freed.empty()) return;
-  if (!dead.empty()) {
-    std::sort(dead.begin(), dead.end());
-    const VertexId first = dead[0];
-    std::vector<VertexId> id(pts.size() - first);
-    for (VertexId v = first, to = first, k = 0; v < pts.size(); ++v)
-      if (k < dead.size() && dead[k] == v)
-        id[v - first] = kNoVertex, ++k;
-      else
-        pts[to] = pts[v], id[v - first] = to++;
-    pts.resize(pts.size() - dead.size());
-    VertexId* w = tds.vertex_array().data();
-    for (std::size_t k = 0; k < 3 * std::size_t{tds.slots()}; ++k)
-      if (w[k] != kNoVertex && w[k] >= first) w[k] = id[w[k] - first];
+  // Each dead vertex's place taken by the last vertex, the largest first (so the last is alive),
+  // its triangles and corner told; each freed slot's by the last slot, its neighbours and its
+  // corners told. A few dozen moves, where renumbering every vertex and slot after the first
+  // gap in order rewrote the whole mesh (0.3 s at 10^7 triangles, on one thread).
+  std::sort(dead.begin(), dead.end(), std::greater<>());
+  for (const VertexId d : dead) {
+    const auto last = static_cast<VertexId>(pts.size() - 1);
+    if (d != last) {
+      if (corner[last] != kNoTriangle)
+        for (const TriangleId t : ring(last)) tds.set_vertex(t, corner_of(t, last), d);
+      pts[d] = pts[last], corner[d] = corner[last];
+    }
+    pts.pop_back(), corner.pop_back();
   }
-  if (!freed.empty()) {
-    std::vector<std::uint8_t> gone(tds.slots(), 0);
-    for (const TriangleId t : freed) gone[t] = 1;
-    freed.clear();
-    return drop_slots(gone);
+  std::sort(freed.begin(), freed.end(), std::greater<>());
+  for (const TriangleId f : freed) {
+    const TriangleId last = size() - 1;
+    if (f != last) {
+      for (int j = 0; j < 3; ++j) {
+        const Link l = tds.link(last, j);
+        tds.set_vertex(f, j, tds.vertex(last, j));
+        tds.set_constraint(link_to(f, j), tds.constraint(link_to(last, j)));
+        tds.set_link(link_to(f, j), l);
+        if (l != kNoLink) tds.set_link(l, link_to(f, j));
+        if (corner[tds.vertex(f, j)] / 3 == last) corner[tds.vertex(f, j)] = 3 * f + static_cast<TriangleId>(j);
+      }
+      if (!region.empty()) region[f] = region[last];
+    }
+    tds.truncate(last);
   }
-  index_corners();
+  if (!region.empty()) region.resize(size());
+  if (!mark.empty()) mark.assign(size(), 0);
+  freed.clear();
 }
 
 VertexId Cdt::insert_on_edge(const Point& p, TriangleId t, int k) {

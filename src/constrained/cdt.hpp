@@ -85,8 +85,8 @@ class Cdt {
   /// restored to constrained Delaunay with v in it.
   bool remove_free(VertexId v);
   std::vector<TriangleId> freed;
-  /// The vertices `dead` (taken out by remove_free) and the slots `freed` dropped: the points
-  /// after them and the triangles renumbered in their order, the corners indexed again.
+  /// The vertices `dead` (taken out by remove_free) and the slots `freed` dropped: the last
+  /// vertex moved into each dead one's place, the last triangle into each freed slot.
   void compact(std::vector<VertexId> dead);
   /// The triangles whose `gone` is set dropped (links to them become the boundary), the rest
   /// renumbered in their order with their constraints and regions, the corners indexed again.
