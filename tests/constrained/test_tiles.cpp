@@ -5,6 +5,7 @@
 // default ones; and no larger than the mesh refined whole, but for a few per cent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -13,6 +14,7 @@
 #include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
+#include "ridt/triangle.hpp"
 
 namespace ridt::test {
 namespace {
@@ -171,6 +173,35 @@ TEST(Tiles, DefaultTilesGiveOneMeshOnAnyThreads) {
   for (const unsigned threads : {2u, 8u}) {
     SCOPED_TRACE(threads);
     expect_same(mesh(c, threads), one);
+  }
+}
+
+// Through Triangle's semantics (ridt::triangle): the same mesh and the same markers on one, two
+// and eight threads, where the boundary's markers are found on threads and the whole mesh's
+// pass after the tiles looks at its triangles on threads (a mesh of some 90,000 triangles).
+TEST(Tiles, TrianglesMarkersAreTheSameOnAnyThreads) {
+  const Pslg g = generate_coastline(4000, 4, 5);
+  triangle::Input in;
+  in.vertices = g.points, in.segments = g.segments, in.holes = g.holes;
+  in.segment_markers.assign(g.segments.size() / 2, 0);
+  for (std::size_t k = 0; k < in.segment_markers.size(); k += 7)
+    in.segment_markers[k] = static_cast<std::int64_t>(k % 5);
+  auto run = [&](unsigned threads) {
+    Options o;
+    o.threads = threads;
+    return triangle::triangulate(in, "pq28a4e-5", o);
+  };
+  const triangle::Output one = run(1);
+  EXPECT_GT(one.triangles.size() / 3, 70000u);
+  EXPECT_GT(std::count(one.vertex_markers.begin(), one.vertex_markers.end(), 1), 1000);
+  for (const unsigned threads : {2u, 8u}) {
+    SCOPED_TRACE(threads);
+    const triangle::Output many = run(threads);
+    EXPECT_EQ(many.vertices, one.vertices);
+    EXPECT_EQ(many.triangles, one.triangles);
+    EXPECT_EQ(many.vertex_markers, one.vertex_markers);
+    EXPECT_EQ(many.segments, one.segments);
+    EXPECT_EQ(many.segment_markers, one.segment_markers);
   }
 }
 
