@@ -309,26 +309,16 @@ void Refiner::first_queues() {
       if (!ghost(t)) queue_bad(t);
     return;
   }
-  // Each block's subsegments to split and bad triangles (after the tiles, one triangle in two
-  // hundred), found on threads, then queued block by block: in the order of the slots.
-  constexpr std::size_t kBlock = 16384;
-  const std::size_t blocks = (m_.size() + kBlock - 1) / kBlock;
-  std::vector<std::vector<Link>> splits(blocks);
-  std::vector<std::vector<std::pair<std::uint32_t, double>>> bad(blocks);
-  parallel_for(blocks, r_.threads, 1, [&](std::size_t from, std::size_t to) {
-    for (std::size_t b = from; b < to; ++b)
-      for (auto t = static_cast<std::uint32_t>(b * kBlock); t < std::min<std::size_t>(m_.size(), (b + 1) * kBlock);
-           ++t) {
-        for (auto k = static_cast<Link>(3 * t); k < static_cast<Link>(3 * t + 3); ++k)
-          if (split_first(k)) splits[b].push_back(k);
-        if (r_.longer_than > 0 && !longer(t)) continue;
-        if (const double key = badness(t); key != kGood) bad[b].emplace_back(t, key);
-      }
-  });
-  for (const std::vector<Link>& block : splits)
-    for (const Link s : block) queue_split(s, false);
-  for (const auto& block : bad)
-    for (const auto& [t, key] : block) push_if_bad(t, key);
+  // The subsegments to split and the bad triangles (after the tiles, one triangle in two
+  // hundred) found on threads, in the order of the slots; the few found weighed again here.
+  for (const std::uint32_t s :
+       indices_where(slots, r_.threads, [&](std::size_t s) { return split_first(static_cast<Link>(s)); }))
+    queue_split(static_cast<Link>(s), false);
+  auto bad = [&](std::size_t t) {
+    return (r_.longer_than == 0 || longer(static_cast<TriangleId>(t))) &&
+        badness(static_cast<std::uint32_t>(t)) != kGood;
+  };
+  for (const std::uint32_t t : indices_where(m_.size(), r_.threads, bad)) push_if_bad(t, badness(t));
 }
 
 // The warning for the triangles refinement gave up on that are still bad: below the angle

@@ -77,7 +77,10 @@ void mark(const Input& in, const ConstrainedTriangulation& t, unsigned threads, 
   };
   std::vector<std::size_t> piece(sides.size());
   detail::parallel_for(sides.size(), threads, 4096, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) piece[k] = index.find(ends(sides[k]).first, ends(sides[k]).second);
+    for (std::size_t k = from; k < to; ++k) {
+      const auto [a, b] = ends(sides[k]);
+      piece[k] = index.find(a, b);
+    }
   });
   for (std::size_t k = 0; k < sides.size(); ++k) {
     const auto [a, b] = ends(sides[k]);
