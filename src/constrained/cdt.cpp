@@ -14,12 +14,12 @@
 
 namespace ridt::detail {
 
-Cdt::Cdt(std::vector<Point> points, Triangulation& t, bool linked)
+Cdt::Cdt(std::vector<Point> points, Triangulation& t, bool linked, unsigned threads)
     : tds(linked ? Tds::from_links(std::move(t.triangles), std::move(t.neighbors))
-                 : Tds::from_neighbours(std::move(t.triangles), std::move(t.neighbors))),
+                 : Tds::from_neighbours(std::move(t.triangles), std::move(t.neighbors), threads)),
       pts(std::move(points)) {
   t.triangles = {}, t.neighbors = {};
-  tds.use_constraints(true);
+  tds.use_constraints(true, threads);
   index_corners();
 }
 
@@ -44,9 +44,12 @@ std::size_t Cdt::room() const {
   return points;
 }
 
-void Cdt::make_room(std::size_t points) {
-  auto grow = [](auto& v, std::size_t n) {
-    if (n <= v.capacity()) return;
+void Cdt::make_room(std::size_t points, std::size_t least) {
+  least = std::min(least, points);
+  // v, with `used` items, grown to take n where it cannot take `least` points more (k items a
+  // point).
+  auto grow = [&](auto& v, std::size_t used, std::size_t n, std::size_t k) {
+    if (used + k * least <= v.capacity() || n <= v.capacity()) return;
     try {
       v.reserve(std::max(n, 2 * v.capacity()));
     } catch (const std::bad_alloc&) {
@@ -54,11 +57,11 @@ void Cdt::make_room(std::size_t points) {
     }
   };
   const std::size_t slots = tds.slots() + 2 * points;
-  tds.reserve(static_cast<TriangleId>(slots));
-  grow(pts, pts.size() + points);
-  grow(corner, corner.size() + points);
-  if (!region.empty()) grow(region, slots);
-  if (!mark.empty()) grow(mark, slots);
+  if (tds.room() < 2 * least) tds.reserve(static_cast<TriangleId>(slots));
+  grow(pts, pts.size(), pts.size() + points, 1);
+  grow(corner, corner.size(), corner.size() + points, 1);
+  if (!region.empty()) grow(region, tds.slots(), slots, 2);
+  if (!mark.empty()) grow(mark, tds.slots(), slots, 2);
   todo_.reserve(kScratch), spokes_.reserve(kScratch);
 }
 

@@ -18,8 +18,9 @@ namespace ridt::detail {
 class Cdt {
  public:
   /// Takes t's triangles and neighbours (each edge free), the neighbours triangle ids or, where
-  /// `linked`, links (detail::triangulate_linked); `points` are the points the predicates see.
-  Cdt(std::vector<Point> points, Triangulation& t, bool linked = false);
+  /// `linked`, links (detail::triangulate_linked), made links on up to `threads` threads (0:
+  /// the hardware's); `points` are the points the predicates see.
+  Cdt(std::vector<Point> points, Triangulation& t, bool linked = false, unsigned threads = 1);
 
   /// Where a point lies: in triangle t, on its edge k (across from corner k), at its corner k,
   /// or (the walk stopped) beyond its edge k, a fixed one (Blocked) or the boundary (Outside).
@@ -135,11 +136,13 @@ class Cdt {
   Link find_edge(VertexId a, VertexId b) const;
   std::size_t size() const { return tds.slots(); }
   /// How many more points (each with its corner and two triangles) the arrays take as they are;
-  /// make_room(points) grows them to take that many (geometrically where memory allows), or
-  /// throws std::bad_alloc with the mesh unchanged. Growth copies an array, so needs the old and
-  /// the new at once: asked for between insertions, a shortage is met with no point half added.
+  /// make_room(points, least) grows those that cannot take `least` more to take `points` more
+  /// (geometrically where memory allows), or throws std::bad_alloc with the mesh unchanged.
+  /// Growth copies an array, so needs the old and the new at once: asked for between
+  /// insertions, a shortage is met with no point half added; and an array with room enough is
+  /// not copied for another's shortage.
   std::size_t room() const;
-  void make_room(std::size_t points);
+  void make_room(std::size_t points, std::size_t least = SIZE_MAX);
   /// Each vertex's corner set again from the triangles (kNoTriangle for a vertex in none).
   void index_corners();
 

@@ -20,6 +20,7 @@
 #include "predicates/predicates.hpp"
 #include "ridt/constrained.hpp"
 #include "runtime/memory.hpp"
+#include "runtime/parallel.hpp"
 #include "tds/delaunay.hpp"
 
 namespace ridt {
@@ -100,58 +101,66 @@ std::size_t room_left(const Options& options, const detail::Cdt& m) {
 
 // The fixed edges of the first `size` triangles of m (whose neighbours are ids by now:
 // to_output), pairs (a, b) with a < b, sorted, into out.edges, and each one's input segment
-// into out.edge_segments. Each is taken once (from the side where it runs a -> b, or the only
-// side), counted, then collected in a pass that appends without a branch: a third of the slots
-// are fixed, at random, and a branch on each mispredicted often. Then counted by a, and each
-// a's few sorted.
-void fixed_edges(const detail::Cdt& m, std::size_t size, ConstrainedTriangulation& out) {
-  const std::size_t slots = 3 * size;
+// into out.edge_segments, on up to `threads` threads. Each is taken once (from the side where it
+// runs a -> b, or the only side): found in the order of the slots, placed by a (a counting
+// sort, stable), then each a's few sorted by b.
+void fixed_edges(const detail::Cdt& m, std::size_t size, ConstrainedTriangulation& out, unsigned threads) {
   const VertexId* v = m.tds.vertex_array().data();
   const std::int32_t* neighbour = m.tds.link_array().data();
   const detail::Constraint* constraint = m.tds.constraint_array().data();
-  auto taken = [&](std::size_t s, VertexId a, VertexId b) {
-    return static_cast<std::uint32_t>((constraint[s] != detail::kFree) & ((a < b) | (neighbour[s] < 0)));
+  auto ends = [&](std::size_t s) {
+    const std::size_t t = s - s % 3;
+    const auto j = static_cast<int>(s % 3);
+    return std::pair{v[t + detail::next3(j)], v[t + detail::prev3(j)]};
   };
-  // Counted by their first (smaller) end, then placed: two passes over the slots, and no list
-  // of the edges in between.
-  std::vector<std::uint32_t> start(m.pts.size() + 2, 0);
-  for (std::size_t s = 0; s < slots; s += 3)
-    for (int j = 0; j < 3; ++j) {
-      const VertexId a = v[s + detail::next3(j)], b = v[s + detail::prev3(j)];
-      start[std::min(a, b) + 1] += taken(s + j, a, b);
+  const std::vector<std::uint32_t> slot = detail::indices_where(3 * size, threads, [&](std::size_t s) {
+    const auto [a, b] = ends(s);
+    return constraint[s] != detail::kFree && (a < b || neighbour[s] < 0);
+  });
+  const std::size_t count = slot.size();
+  std::vector<std::uint32_t> place(count);  // each edge's smaller end, then its place
+  detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      const auto [a, b] = ends(slot[k]);
+      place[k] = std::min(a, b);
     }
-  for (std::size_t w = 1; w < start.size(); ++w) start[w] += start[w - 1];
-  const std::size_t count = start[m.pts.size()];
+  });
+  detail::places_by_key(place.data(), count, m.pts.size(), threads);
   std::vector<VertexId>& edges = out.edges;
   std::vector<std::int32_t>& segment = out.edge_segments;
-  edges.resize(2 * count + 2);  // one more edge: where a slot not taken writes
-  segment.resize(count + 1);
-  std::vector<std::uint32_t> next(start.begin(), start.end() - 2);
-  for (std::size_t s = 0; s < slots; s += 3)
-    for (int j = 0; j < 3; ++j) {
-      const VertexId a = v[s + detail::next3(j)], b = v[s + detail::prev3(j)], lo = std::min(a, b);
-      const std::uint32_t take = taken(s + j, a, b), at = take != 0 ? next[lo] : static_cast<std::uint32_t>(count);
-      next[lo] += take;
-      const detail::Constraint c = constraint[s + j];
-      edges[2 * std::size_t{at}] = lo, edges[2 * std::size_t{at} + 1] = std::max(a, b);
-      segment[at] = c < detail::kUnnamed ? static_cast<std::int32_t>(c) : -1;
-    }
   edges.resize(2 * count), segment.resize(count);
-  std::vector<std::pair<VertexId, std::int32_t>> many;
-  for (VertexId a = 0; a < m.pts.size(); ++a) {  // each a's edges by b: mostly a few, by insertion
-    const std::uint32_t first = start[a], last = start[a + 1];
-    if (last - first <= 16) {
-      for (std::uint32_t k = first + 1; k < last; ++k)
-        for (std::uint32_t i = k; i > first && edges[2 * i - 1] > edges[2 * i + 1]; --i)
-          std::swap(edges[2 * i - 1], edges[2 * i + 1]), std::swap(segment[i - 1], segment[i]);
-      continue;
+  detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      const auto [a, b] = ends(slot[k]);
+      const detail::Constraint c = constraint[slot[k]];
+      edges[2 * std::size_t{place[k]}] = std::min(a, b), edges[2 * std::size_t{place[k]} + 1] = std::max(a, b);
+      segment[place[k]] = c < detail::kUnnamed ? static_cast<std::int32_t>(c) : -1;
     }
-    many.clear();
-    for (std::uint32_t k = first; k < last; ++k) many.push_back({edges[2 * k + 1], segment[k]});
-    std::sort(many.begin(), many.end());
-    for (std::uint32_t k = first; k < last; ++k)
-      edges[2 * k + 1] = many[k - first].first, segment[k] = many[k - first].second;
-  }
+  });
+  // Each run of one a sorted by b (mostly a few, by insertion), the runs that begin in a part
+  // sorted by that part.
+  auto first_of_run = [&](std::size_t k) { return k == 0 || edges[2 * k] != edges[2 * k - 2]; };
+  detail::parallel_for(count, threads, 1 << 16, [&](std::size_t from, std::size_t to) {
+    std::vector<std::pair<VertexId, std::int32_t>> many;
+    std::size_t first = from;
+    while (first < to && !first_of_run(first)) ++first;
+    while (first < to) {
+      std::size_t last = first + 1;
+      while (last < count && !first_of_run(last)) ++last;
+      if (last - first <= 16) {
+        for (std::size_t k = first + 1; k < last; ++k)
+          for (std::size_t i = k; i > first && edges[2 * i - 1] > edges[2 * i + 1]; --i)
+            std::swap(edges[2 * i - 1], edges[2 * i + 1]), std::swap(segment[i - 1], segment[i]);
+      } else {
+        many.clear();
+        for (std::size_t k = first; k < last; ++k) many.push_back({edges[2 * k + 1], segment[k]});
+        std::sort(many.begin(), many.end());
+        for (std::size_t k = first; k < last; ++k)
+          edges[2 * k + 1] = many[k - first].first, segment[k] = many[k - first].second;
+      }
+      first = last;
+    }
+  });
 }
 
 // Triangles put in canonical order, their attributes following them.
@@ -205,9 +214,9 @@ std::size_t to_output(detail::Cdt& m, const std::vector<std::uint8_t>& gone) {
 // The constrained triangulation's arrays into `out` (whose duplicates, stats and warning the
 // Delaunay step set), but the triangles `gone` marks.
 void collect(detail::Cdt& m, ConstrainedTriangulation& out, const Domain& domain, std::size_t n, int scale,
-             bool reshaped, const std::vector<std::uint8_t>& gone = {}) {
+             unsigned threads, bool reshaped, const std::vector<std::uint8_t>& gone = {}) {
   const std::size_t size = to_output(m, gone);
-  fixed_edges(m, size, out);
+  fixed_edges(m, size, out, threads);
   out.neighbors = std::move(m.tds.link_array());
   out.neighbors.resize(3 * size);
   out.triangles = std::move(m.tds.vertex_array());
@@ -361,7 +370,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   std::vector<Point> pts(points.begin(), points.end());
   if (scale != 0)
     for (Point& p : pts) p = scaled(p, scale);
-  detail::Cdt m(std::move(pts), out, linked);
+  detail::Cdt m(std::move(pts), out, linked, options.threads);
   detail::insert_segments(m, segments, kept);
   out.crossings = m.pts.size() - points.size();
   std::vector<Point> holes = domain.holes;
@@ -371,7 +380,7 @@ ConstrainedTriangulation triangulate_constrained(std::span<const Point> points, 
   const std::vector<std::uint8_t> gone = detail::carve(m, holes, regions, domain.convex_hull, refined);
   const bool carved = refined || !gone.empty();
   if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size() + out.crossings), scale);
-  collect(m, out, domain, points.size(), scale, carved, gone);
+  collect(m, out, domain, points.size(), scale, options.threads, carved, gone);
   if (options.canonical_order) canonical(out, options);
   if (!options.neighbors) out.neighbors = {};
   return out;
@@ -398,7 +407,7 @@ ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<co
   const std::vector<std::int32_t> neighbours = mesh_links(pts, triangles, segments, segment_slots);
   out.neighbors = neighbours;
   out.stats.points = out.stats.distinct = points.size();
-  detail::Cdt m(std::move(pts), out);
+  detail::Cdt m(std::move(pts), out, false, options.threads);
   detail::check_fans(m);
   Options layer = options;  // the boundary's triangulation within what the mesh leaves of the limit
   layer.memory_limit = room_left(options, m);
@@ -408,7 +417,7 @@ ConstrainedTriangulation refine_mesh(std::span<const Point> points, std::span<co
   if (refined) refine(m, out, options, quality, domain, static_cast<VertexId>(points.size()), scale, &given);
   if (!m.region.empty())
     for (TriangleId t = 0; t < m.size(); ++t) m.region[t] = given.region_of(m, t);
-  collect(m, out, domain, points.size(), scale, true);
+  collect(m, out, domain, points.size(), scale, options.threads, true);
   if (attributes.empty()) out.attributes.clear();
   if (options.canonical_order) canonical(out, options);
   if (!options.neighbors) out.neighbors = {};

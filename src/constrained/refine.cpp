@@ -192,7 +192,7 @@ bool Refiner::in_lens(const Point& a, const Point& b, const Point& p) const {
 
 bool Refiner::make_room() {
   try {
-    if (m_.room() < kAhead) m_.make_room(std::max(kAhead, m_.pts.size() / 4));
+    if (m_.room() < kAhead) m_.make_room(std::max(kAhead, m_.pts.size() / 4), kAhead);
     ends_.reserve(m_.pts.capacity());
   } catch (const std::bad_alloc&) {
     return false;

@@ -51,30 +51,32 @@ struct Grid {
   int side = 0;
   bool shifted = false;
   int cells() const { return side + (shifted ? 1 : 0); }
-  int tile(const Point& p) const {
-    const double shift = shifted ? 0.5 : 0.0;
-    auto cell = [&](double v, double from, double to) {
-      const double c = (v - from) / (to - from) * side + shift;
-      return c >= 0 ? std::min(cells() - 1, static_cast<int>(c)) : 0;  // (NaN: 0)
-    };
-    return cell(p.x, box.x0, box.x1) + cells() * cell(p.y, box.y0, box.y1);
-  }
   // Where p lies in the unshifted grid, in tiles (x and y).
   std::pair<double, double> at(const Point& p) const {
     return {(p.x - box.x0) / (box.x1 - box.x0) * side, (p.y - box.y0) / (box.y1 - box.y0) * side};
   }
-  // Whether triangle (a, b, c) lies astride a seam of the unshifted grid, or a corner of it near
-  // one (within kBand of a tile): the shifted grid's tiles take those alone.
-  bool near_seam(const Point& a, const Point& b, const Point& c) const {
+  // The tile that owns triangle (a, b, c): the one its three corners lie in (in the shifted
+  // grid, only for a triangle astride a seam of the unshifted one, or a corner of it near one:
+  // within kBand of a tile); -1 where none does.
+  int owner(const Point& a, const Point& b, const Point& c) const {
     const auto [ax, ay] = at(a);
     const auto [bx, by] = at(b);
     const auto [cx, cy] = at(c);
+    const double shift = shifted ? 0.5 : 0.0;
+    auto cell = [&](double f) {
+      f += shift;
+      return f >= 0 ? std::min(cells() - 1, static_cast<int>(f)) : 0;  // (NaN: 0)
+    };
+    const int k = cell(ax) + cells() * cell(ay);
+    if (cell(bx) + cells() * cell(by) != k || cell(cx) + cells() * cell(cy) != k) return -1;
+    if (!shifted) return k;
     auto near = [](double f) { return std::fabs(f - std::round(f)) < kBand; };
     auto astride = [](double f, double g, double h) {
       return std::floor(f) != std::floor(g) || std::floor(f) != std::floor(h);
     };
-    return near(ax) || near(ay) || near(bx) || near(by) || near(cx) || near(cy) || astride(ax, bx, cx) ||
+    const bool seam = near(ax) || near(ay) || near(bx) || near(by) || near(cx) || near(cy) || astride(ax, bx, cx) ||
         astride(ay, by, cy);
+    return seam ? k : -1;
   }
 };
 
@@ -85,18 +87,27 @@ struct Grid {
 Grid grid_for(const Cdt& m, const Refinement& r) {
   Grid g;
   if (r.unsuitable || r.sizes || r.given != nullptr || r.max_steiner > 0) return g;
-  // The mesh's size: its triangles, or, where more, twice its area over its area bounds.
+  // The mesh's size: its triangles, or, where more, twice its area over its area bounds, on
+  // threads: summed in blocks of a fixed size, then the blocks in order (the same sum, so the
+  // same grid, on any number of threads).
+  constexpr std::size_t kBlock = 1 << 16;
+  std::vector<std::pair<double, double>> part((m.size() + kBlock - 1) / kBlock);
+  parallel_for(part.size(), r.threads, 1, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k)
+      for (std::size_t t = k * kBlock; t < std::min<std::size_t>(m.size(), (k + 1) * kBlock); ++t) {
+        const auto u = static_cast<TriangleId>(t);
+        if (m.at(u, 0) == kNoVertex) continue;
+        ++part[k].first;
+        double bound = r.max_area;
+        if (!m.region.empty() && m.region[t] >= 0)
+          if (const double own = r.region_area[static_cast<std::size_t>(m.region[t])]; own > 0)
+            bound = bound > 0 ? std::min(bound, own) : own;
+        const Point &a = m.pts[m.at(u, 0)], &b = m.pts[m.at(u, 1)], &c = m.pts[m.at(u, 2)];
+        if (bound > 0) part[k].second += ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / bound;
+      }
+  });
   double triangles = 0, bounded = 0;
-  for (TriangleId t = 0; t < m.size(); ++t) {
-    if (m.at(t, 0) == kNoVertex) continue;
-    ++triangles;
-    double bound = r.max_area;
-    if (!m.region.empty() && m.region[t] >= 0)
-      if (const double own = r.region_area[static_cast<std::size_t>(m.region[t])]; own > 0)
-        bound = bound > 0 ? std::min(bound, own) : own;
-    const Point &a = m.pts[m.at(t, 0)], &b = m.pts[m.at(t, 1)], &c = m.pts[m.at(t, 2)];
-    if (bound > 0) bounded += ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / bound;
-  }
+  for (const auto& [count, area] : part) triangles += count, bounded += area;
   const double estimate = std::max(triangles, bounded);
   // RIDT_TILE_TRIANGLES sets the tiles' size (the tests run small meshes in tiny tiles).
   const char* size = std::getenv("RIDT_TILE_TRIANGLES");
@@ -339,8 +350,7 @@ void tile_round(Cdt& m, const Refinement& r, const Grid& grid, const std::vector
       const auto u = static_cast<TriangleId>(t);
       if (m.at(u, 0) == kNoVertex) continue;
       const Point &a = m.pts[m.at(u, 0)], &b = m.pts[m.at(u, 1)], &c = m.pts[m.at(u, 2)];
-      const int k = grid.tile(a);
-      if (grid.tile(b) == k && grid.tile(c) == k && (!grid.shifted || grid.near_seam(a, b, c))) owner[t] = k;
+      owner[t] = grid.owner(a, b, c);
     }
   });
   std::vector<Tile> tile(tiles);

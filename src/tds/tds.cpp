@@ -6,6 +6,7 @@
 #include <string>
 
 #include "runtime/memory.hpp"
+#include "runtime/parallel.hpp"
 
 namespace ridt::detail {
 
@@ -38,32 +39,34 @@ Tds Tds::copy() const {
   return out;
 }
 
-Tds Tds::from_neighbours(std::vector<VertexId> triangles, std::vector<std::int32_t> neighbours) {
+Tds Tds::from_neighbours(std::vector<VertexId> triangles, std::vector<std::int32_t> neighbours, unsigned threads) {
   if (neighbours.size() != triangles.size() || triangles.size() % 3 != 0)
     throw std::logic_error("ridt: triangles and neighbours of unequal sizes");
-  // In place: slot s's neighbour is read only to write its link. Edge i of t runs x -> y; the
-  // neighbour runs it y -> x, as its edge j (found by the vertices, not by its neighbours,
-  // which may be links by now). The neighbours' vertices lie anywhere: those some slots on are
-  // asked for ahead, so that the misses overlap.
+  // In place: slot s's neighbour is read only to write its link (so the slots may be taken in
+  // parts side by side). Edge i of t runs x -> y; the neighbour runs it y -> x, as its edge j
+  // (found by the vertices, not by its neighbours, which may be links by now). The
+  // neighbours' vertices lie anywhere: those some slots on are asked for ahead, so that the
+  // misses overlap.
   constexpr std::size_t kAhead = 24;
   std::vector<Link>& links = neighbours;
-  const std::size_t size = triangles.size();
-  for (std::size_t s = 0; s < size; ++s) {
-    if (s + kAhead < size && neighbours[s + kAhead] >= 0)
-      __builtin_prefetch(&triangles[3 * static_cast<std::size_t>(neighbours[s + kAhead])]);
-    const std::int32_t n = neighbours[s];
-    if (n < 0) {
+  parallel_for(triangles.size(), threads, std::size_t{1} << 18, [&](std::size_t from, std::size_t to) {
+    for (std::size_t s = from; s < to; ++s) {
+      if (s + kAhead < to && neighbours[s + kAhead] >= 0)
+        __builtin_prefetch(&triangles[3 * static_cast<std::size_t>(neighbours[s + kAhead])]);
+      const std::int32_t n = neighbours[s];
+      if (n < 0) {
+        links[s] = kNoLink;
+        continue;
+      }
+      const std::size_t t = s / 3, i = s % 3;
+      const VertexId x = triangles[3 * t + (i + 1) % 3], y = triangles[3 * t + (i + 2) % 3];
+      const std::size_t nb = 3 * static_cast<std::size_t>(n);
       links[s] = kNoLink;
-      continue;
+      for (int j = 0; j < 3; ++j)
+        if (triangles[nb + next3(j)] == y && triangles[nb + prev3(j)] == x) links[s] = static_cast<Link>(nb + j);
+      if (links[s] == kNoLink) throw std::logic_error("ridt: neighbours that share no edge");
     }
-    const std::size_t t = s / 3, i = s % 3;
-    const VertexId x = triangles[3 * t + (i + 1) % 3], y = triangles[3 * t + (i + 2) % 3];
-    const std::size_t nb = 3 * static_cast<std::size_t>(n);
-    links[s] = kNoLink;
-    for (int j = 0; j < 3; ++j)
-      if (triangles[nb + next3(j)] == y && triangles[nb + prev3(j)] == x) links[s] = static_cast<Link>(nb + j);
-    if (links[s] == kNoLink) throw std::logic_error("ridt: neighbours that share no edge");
-  }
+  });
   return from_links(std::move(triangles), std::move(links));
 }
 
@@ -74,14 +77,14 @@ Tds Tds::from_links(std::vector<VertexId> triangles, std::vector<Link> links) {
   return tds;
 }
 
-void Tds::use_constraints(bool on) {
+void Tds::use_constraints(bool on, unsigned threads) {
   constraints_.clear();
   if (!on) return constraints_.shrink_to_fit();
   // Fresh pages made present together (runtime/memory.hpp), not faulted in one by one as the
   // fill first writes each.
   const std::size_t size = 3 * std::size_t{top_};
   constraints_.reserve(size);
-  make_present(constraints_.data(), size * sizeof(Constraint), 2);
+  make_present(constraints_.data(), size * sizeof(Constraint), threads);
   constraints_.assign(size, kFree);
 }
 

@@ -110,8 +110,9 @@ class Tds {
   /// them in use, the rest room for grow().
   Tds(std::vector<VertexId> v, std::vector<Link> link, TriangleId slots);
   /// The arrays of a triangulation whose neighbours are triangle ids (Triangulation's: -1
-  /// where there is none), made links; growable.
-  static Tds from_neighbours(std::vector<VertexId> triangles, std::vector<std::int32_t> neighbours);
+  /// where there is none), made links on up to `threads` threads; growable.
+  static Tds from_neighbours(std::vector<VertexId> triangles, std::vector<std::int32_t> neighbours,
+                             unsigned threads = 1);
   /// The arrays of a triangulation whose neighbours are links already; growable.
   static Tds from_links(std::vector<VertexId> triangles, std::vector<Link> links);
   Tds(Tds&& o) noexcept { *this = std::move(o); }
@@ -149,8 +150,9 @@ class Tds {
     if (b != kNoLink) link_[static_cast<std::uint32_t>(b)] = a;
   }
 
-  /// Per-edge constraints: on (each edge kFree) or off (no array at all, the default).
-  void use_constraints(bool on);
+  /// Per-edge constraints: on (each edge kFree; its pages made present by up to `threads`
+  /// threads) or off (no array at all, the default).
+  void use_constraints(bool on, unsigned threads = 2);
   bool has_constraints() const { return !constraints_.empty(); }
   Constraint constraint(Link e) const { return constraints_[static_cast<std::uint32_t>(e)]; }
   bool fixed(Link e) const { return constraints_[static_cast<std::uint32_t>(e)] != kFree; }

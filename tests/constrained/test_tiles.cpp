@@ -14,6 +14,7 @@
 #include "ridt/check.hpp"
 #include "ridt/constrained.hpp"
 #include "ridt/generate.hpp"
+#include "ridt/predicates.hpp"
 #include "ridt/triangle.hpp"
 
 namespace ridt::test {
@@ -129,6 +130,42 @@ TEST(Tiles, TinyTilesGiveOneMeshOnAnyThreads) {
       SCOPED_TRACE(threads);
       expect_same(mesh(c, threads), one);
     }
+  }
+}
+
+// The passes over the whole constrained triangulation that run on threads (its links made from
+// the Delaunay step's neighbours, the fixed edges found, sorted and matched with their segments)
+// give the same arrays on any number of threads: a coastline of 150,000 vertices and its lakes
+// (some 225,000 triangles, 150,000 fixed edges), every edge listed once, sorted, each a
+// segment's piece (the segment's ends on its line).
+TEST(Tiles, ConstrainedArraysAreTheSameOnAnyThreads) {
+  Case c{"coastline", generate_coastline(150000, 20, 3), {}, {}};
+  c.d.holes = c.g.holes;
+  const ConstrainedTriangulation one = mesh(c, 1);
+  EXPECT_GT(one.size(), 200000u);
+  expect_valid(c, one);
+  ASSERT_EQ(one.edges.size(), 2 * one.edge_segments.size());
+  EXPECT_GE(one.edge_segments.size(), c.g.segments.size() / 2);
+  for (std::size_t k = 0; k < one.edge_segments.size(); ++k) {
+    const VertexId a = one.edges[2 * k], b = one.edges[2 * k + 1];
+    ASSERT_LT(a, b);
+    if (k > 0) {
+      ASSERT_TRUE(std::pair(one.edges[2 * k - 2], one.edges[2 * k - 1]) < std::pair(a, b)) << k;
+    }
+    const std::int32_t s = one.edge_segments[k];
+    ASSERT_GE(s, 0);
+    auto at = [&](VertexId v) { return v < c.g.points.size() ? c.g.points[v] : one.steiner[v - c.g.points.size()]; };
+    const Point p = at(a), q = at(b);
+    const Point &u = c.g.points[c.g.segments[2 * static_cast<std::size_t>(s)]],
+                &w = c.g.points[c.g.segments[2 * static_cast<std::size_t>(s) + 1]];
+    EXPECT_EQ(orientation(u, w, p), 0) << k;
+    EXPECT_EQ(orientation(u, w, q), 0) << k;
+  }
+  for (const unsigned threads : {2u, 3u, 8u}) {
+    SCOPED_TRACE(threads);
+    const ConstrainedTriangulation many = mesh(c, threads);
+    expect_same(many, one);
+    EXPECT_EQ(many.neighbors, one.neighbors);
   }
 }
 
