@@ -142,6 +142,49 @@ TEST_F(IoTest, LargeTriangleFilesComeBackInOrder) {
     }
 }
 
+// Triangle's group of files written in two lanes on threads (the triangles' files beside the
+// points' and the edges'): every file the same, byte for byte, on any number of threads; and
+// where one of them cannot be written, none that was not there before is left, on threads too.
+TEST_F(IoTest, MeshFilesTheSameOnAnyThreads) {
+  const std::size_t count = 3 * 65536 + 77, n = 150000;
+  std::uint64_t state = 11;
+  auto next = [&] { return state = state * 6364136223846793005u + 1442695040888963407u, state >> 33; };
+  std::vector<Point> points(n);
+  for (Point& p : points) p = {static_cast<double>(next()) / 7.0, -static_cast<double>(next()) / 3.0};
+  std::vector<VertexId> triangles(3 * count), edges(2 * (n / 2));
+  std::vector<std::int32_t> neighbors(3 * count);
+  for (VertexId& v : triangles) v = static_cast<VertexId>(next() % n);
+  for (std::int32_t& t : neighbors) t = static_cast<std::int32_t>(next() % (count + 1)) - 1;
+  for (VertexId& v : edges) v = static_cast<VertexId>(next() % n);
+  std::vector<std::int64_t> point_markers(n), edge_markers(edges.size() / 2);
+  for (std::int64_t& m : point_markers) m = static_cast<std::int64_t>(next() % 3);
+  for (std::int64_t& m : edge_markers) m = static_cast<std::int64_t>(next() % 5);
+  MeshFiles m;
+  m.files.neighbors = m.files.off = true;
+  m.points = points, m.triangles = triangles, m.edges = edges, m.neighbors = neighbors;
+  m.point_markers = point_markers, m.edge_markers = edge_markers;
+  m.edge_count = edges.size() / 2;
+  m.first_index = 1;
+  write_mesh_files(path("one.ele"), m, 1);
+  for (const unsigned threads : {2u, 3u, 5u}) {
+    const std::string name = std::to_string(threads) + "threads";
+    write_mesh_files(path(name + ".ele"), m, threads);
+    for (const std::string ext : {".ele", ".node", ".edge", ".neigh", ".off"})
+      EXPECT_EQ(read_file(name + ext), read_file("one" + ext)) << ext << " " << threads;
+  }
+  fs::create_directory(path("in_way.edge"));
+  const std::vector<std::string> before = listing();
+  EXPECT_TRUE(Has(error_of([&] { write_mesh_files(path("in_way.ele"), m, 2); }), "in_way.edge"));
+  EXPECT_EQ(listing(), before);
+  // A point that cannot be written fails the points' lane while the triangles' goes on: neither
+  // file is left, nor a temporary one.
+  points[n / 2].x = std::numeric_limits<double>::infinity();
+  for (const unsigned threads : {1u, 2u}) {
+    EXPECT_TRUE(Has(error_of([&] { write_mesh_files(path("bad.ele"), m, threads); }), "bad.node")) << threads;
+    EXPECT_EQ(listing(), before) << threads;
+  }
+}
+
 TEST_F(IoTest, PointRoundTripEveryFormat) {
   const std::vector<Point> pts = tricky_points();
   for (const char* name : {"p.txt", "p.xy", "p.pts", "p.dat", "p.csv", "p.node", "p.bin", "noextension"}) {
