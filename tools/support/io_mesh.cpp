@@ -3,10 +3,9 @@
 // dual's .v.node and .v.edge, written whole or not at all.
 #include "io_common.hpp"
 
-#include <exception>
 #include <functional>
-#include <system_error>
-#include <thread>
+
+#include "lines.hpp"
 
 namespace ridt::io::detail {
 
@@ -69,31 +68,6 @@ void put_edges(detail::Writer& out, std::span<const VertexId> edges, int first_i
     if (column) line.put(' '), line.put_int(markers.empty() ? 1 : markers[k]);
     line.put('\n');
   });
-}
-
-// The tasks of `first` in order beside those of `second` in order: on a thread of its own where
-// there are threads, else before them. The first exception, `first`'s before `second`'s, is
-// rethrown once both lanes have ended.
-void run_lanes(const std::vector<std::function<void()>>& first, const std::vector<std::function<void()>>& second,
-               unsigned threads) {
-  auto run = [](const std::vector<std::function<void()>>& lane, std::exception_ptr& failed) {
-    try {
-      for (const auto& task : lane) task();
-    } catch (...) {
-      failed = std::current_exception();
-    }
-  };
-  std::exception_ptr failed[2];
-  std::thread beside;
-  if (threads > 1 && !first.empty() && !second.empty()) try {
-      beside = std::thread([&] { run(first, failed[0]); });
-    } catch (const std::system_error&) {  // no thread to be had: one lane after the other
-    }
-  if (!beside.joinable()) run(first, failed[0]);
-  run(second, failed[1]);
-  if (beside.joinable()) beside.join();
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
 }
 
 // Renames the closed writers' files onto their targets; where one fails, the files that this
@@ -185,34 +159,40 @@ void write_mesh_files(const std::string& ele, const MeshFiles& m, unsigned threa
   // 10^7 triangles), so the triangles' file goes on its own while the points' is formatted and
   // written beside it. Each lane formats on the threads given.
   std::size_t next = 0;
-  std::vector<std::function<void()>> first, second;
+  std::vector<std::function<void()>> lanes[2];  // the triangles', the others'
   if (set.ele)
-    first.push_back([&, w = out[next++].get()] {
+    lanes[0].push_back([&, w = out[next++].get()] {
       detail::write_ele(*w, m.triangles, m.first_index, m.attributes, threads, m.nodes);
     });
   if (set.node)
-    second.push_back([&, w = out[next++].get()] {
+    lanes[1].push_back([&, w = out[next++].get()] {
       detail::write_node(*w, m.points, m.first_index, threads,
                          m.markers ? m.point_markers : std::span<const std::int64_t>{},
                          {m.point_attributes, m.point_attribute_count});
     });
-  second.push_back(
+  lanes[1].push_back(
       [&, w = out[next++].get()] { put_edges(*w, m.edges, m.first_index, threads, m.edge_markers, m.markers); });
   if (set.neighbors)
-    first.push_back([&, w = out[next++].get()] { detail::write_neigh(*w, m.neighbors, m.first_index, threads); });
+    lanes[0].push_back([&, w = out[next++].get()] { detail::write_neigh(*w, m.neighbors, m.first_index, threads); });
   if (set.off)
-    second.push_back(
+    lanes[1].push_back(
         [&, w = out[next++].get()] { detail::write_off(*w, m.points, corners(m.triangles, m.nodes), m.edge_count); });
   if (set.voronoi) {
-    second.push_back([&, w = out[next++].get()] {
+    lanes[1].push_back([&, w = out[next++].get()] {
       detail::write_node(*w, m.voronoi_vertices, m.first_index, threads, {},
                          {m.voronoi_attributes, m.point_attribute_count});
     });
-    second.push_back([&, w = out[next++].get()] {
+    lanes[1].push_back([&, w = out[next++].get()] {
       put_dual_edges(*w, m.voronoi_edges, m.voronoi_directions, m.first_index, threads);
     });
   }
-  run_lanes(first, second, threads);
+  auto lane = [&](std::size_t k) {
+    for (const auto& task : lanes[k]) task();
+  };
+  if (threads > 1)
+    detail::on_pieces(2, lane);
+  else
+    lane(0), lane(1);
   for (const auto& w : out) w->close();
   commit_all(out);
 }
