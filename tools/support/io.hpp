@@ -71,6 +71,14 @@ class PointFile {
   std::span<const Point> points;
   int first_index = 0;  ///< numbering of a .node file (0 or 1); 0 for other formats
 
+  /// The points in a vector: the parsed one itself (`points` then empty), or a copy of a
+  /// mapping's.
+  std::vector<Point> vector() && {
+    if (parsed_.empty() || parsed_.data() != points.data()) return {points.begin(), points.end()};
+    points = {};
+    return std::move(parsed_);
+  }
+
  private:
   std::vector<Point> parsed_;  // moving a vector keeps its storage: `points` stays valid
   std::shared_ptr<const void> owner_;

@@ -91,7 +91,7 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
     p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);
     declared(h, lines[0].number, std::span(lines).subspan(1, static_cast<std::size_t>(n)), path);
   }
-  g.points.assign(p.points.begin(), p.points.end());
+  g.points = std::move(p).vector();
   g.first_index = p.first_index;
   return n == 0 ? 1 : 1 + static_cast<std::size_t>(n);
 }
