@@ -121,8 +121,7 @@ int run(const Args& a) {
   if (!a.grid.empty())
     w = grid_nodes(a.grid, p.points, components, limit);
   else {
-    const io::PointFile q = io::read_points(a.queries, thread_count(a.threads));
-    w.queries.assign(q.points.begin(), q.points.end());
+    w.queries = io::read_points(a.queries, thread_count(a.threads)).vector();
   }
   Options o;
   o.method = Method::Auto;
