@@ -28,23 +28,31 @@ class Buckets {
   bool empty() const { return size_ == 0; }
   void push(const Item& item) {
     const std::size_t b = bucket(item.key);
-    if (b >= lists_.size()) lists_.resize(b + 1), ordered_.resize(b + 1, 0);
-    lists_[b].push_back(item);
+    cover(b);
+    list(b).push_back(item);
     lowest_ = std::min(lowest_, b);
     ++size_;
   }
   Item pop() {
-    while (lists_[lowest_].empty()) ++lowest_;
-    if (lowest_ != current_ && lists_[lowest_].size() > ordered_[lowest_] + 64) along_curve(lowest_);
+    while (true) {  // the lowest bucket that holds an item, across the gap between the windows
+      const Window& w = window(lowest_);
+      if (lowest_ < w.base + w.lists.size()) {
+        if (!w.lists[lowest_ - w.base].empty()) break;
+        ++lowest_;
+      } else {
+        lowest_ = std::max(kSpan, windows_[1].base);  // (only the negative keys' window is left)
+      }
+    }
+    std::vector<Item>& l = list(lowest_);
+    std::size_t& ordered = in_order(lowest_);
+    if (lowest_ != current_ && l.size() > ordered + 64) along_curve(lowest_);
     current_ = lowest_;
-    std::vector<Item>& l = lists_[lowest_];
     std::size_t at = l.size() - 1;
     if (l.size() <= kExact && l[at].key >= 0)
       for (std::size_t k = at; k-- > 0;)
         if (l[k].key < l[at].key) at = k;
     const Item item = l[at];
     l.erase(l.begin() + static_cast<std::ptrdiff_t>(at));
-    std::size_t& ordered = ordered_[lowest_];
     ordered = std::min(at < ordered ? ordered - 1 : ordered, l.size());  // (what stays keeps its order)
     --size_;
     return item;
@@ -54,8 +62,10 @@ class Buckets {
   // The item that would come k pops after the next, in the lowest bucket, or null (a guess in
   // a bucket of kExact items or fewer, which pops by key).
   const Item* ahead(std::size_t k) const {
-    if (size_ == 0 || lowest_ >= lists_.size()) return nullptr;
-    const std::vector<Item>& l = lists_[lowest_];
+    if (size_ == 0) return nullptr;
+    const Window& w = window(lowest_);
+    if (lowest_ < w.base || lowest_ >= w.base + w.lists.size()) return nullptr;
+    const std::vector<Item>& l = w.lists[lowest_ - w.base];
     return l.size() > k ? &l[l.size() - 1 - k] : nullptr;
   }
 
@@ -64,20 +74,21 @@ class Buckets {
   // Keys from 0 up first, then the negative ones (the most negative first), each by quarter
   // octaves: refinement splits the triangles bad for their shape before those too large, whose
   // splits the shapes' own points mostly make (docs/constrained.md).
+  static constexpr std::size_t kSpan = 4 * 2200;  // quarter octaves of every double's exponent
   static std::size_t bucket(double key) {
-    constexpr int kSpan = 4 * 2200;  // quarter octaves of every double's exponent
     int e = 0;
     const double f = std::frexp(std::fabs(key), &e);  // |key| = f 2^e, f in [0.5, 1)
     const int quarter = 4 * (e + 1100) + static_cast<int>((f - 0.5) * 8);  // f's quarters of [0.5, 1)
-    const int q = std::clamp(quarter, 0, kSpan - 1);
-    return static_cast<std::size_t>(key < 0 ? 2 * kSpan - 1 - q : q);
+    const auto q = static_cast<std::size_t>(std::clamp(quarter, 0, static_cast<int>(kSpan) - 1));
+    return key < 0 ? 2 * kSpan - 1 - q : q;
   }
 
   // Bucket b's items, or its items since those in order, sorted by the first bits of `where`
   // (a counting sort: stable, linear).
   void along_curve(std::size_t b) {
-    std::vector<Item>& l = lists_[b];
-    const std::size_t first = l.size() - ordered_[b] >= ordered_[b] ? 0 : ordered_[b];
+    std::vector<Item>& l = list(b);
+    std::size_t& ordered = in_order(b);
+    const std::size_t first = l.size() - ordered >= ordered ? 0 : ordered;
     constexpr int kBits = 10;
     std::vector<std::uint32_t> at((1u << kBits) + 1, 0);
     for (std::size_t k = first; k < l.size(); ++k) ++at[(l[k].where >> (32 - kBits)) + 1];
@@ -89,11 +100,36 @@ class Buckets {
       l.swap(sorted);  // the old array freed, none of its spare room kept
     else
       std::copy(sorted.begin(), sorted.end(), l.begin() + static_cast<std::ptrdiff_t>(first));
-    ordered_[b] = l.size();
+    ordered = l.size();
   }
 
-  std::vector<std::vector<Item>> lists_;
-  std::vector<std::size_t> ordered_;  // per bucket: how many of its first items were put in curve order
+  // The buckets that a run's keys reach, for each sign apart (a few dozen octaves of each, far
+  // apart in bucket()'s numbering, which spans every double's): window w holds buckets
+  // [base, base + lists.size()). A refinement of a tile makes a queue of its own, so a queue
+  // costs what its keys span, not 17,600 empty buckets.
+  struct Window {
+    std::size_t base = 0;
+    std::vector<std::vector<Item>> lists;
+    std::vector<std::size_t> ordered;  // per bucket: how many of its first items were put in curve order
+  };
+  const Window& window(std::size_t b) const { return windows_[b >= kSpan ? 1 : 0]; }
+  Window& window(std::size_t b) { return windows_[b >= kSpan ? 1 : 0]; }
+  std::vector<Item>& list(std::size_t b) { return window(b).lists[b - window(b).base]; }
+  std::size_t& in_order(std::size_t b) { return window(b).ordered[b - window(b).base]; }
+  // Bucket b's window grown to hold it.
+  void cover(std::size_t b) {
+    Window& w = window(b);
+    if (w.lists.empty()) w.base = b;
+    if (b < w.base) {
+      w.lists.insert(w.lists.begin(), w.base - b, {});
+      w.ordered.insert(w.ordered.begin(), w.base - b, 0);
+      w.base = b;
+    } else if (b - w.base >= w.lists.size()) {
+      w.lists.resize(b - w.base + 1), w.ordered.resize(b - w.base + 1, 0);
+    }
+  }
+
+  Window windows_[2];  // the keys from 0 up, and the negative ones
   std::size_t lowest_ = std::numeric_limits<std::size_t>::max(), current_ = lowest_, size_ = 0;
   std::size_t sorted_ = 0;
 };
