@@ -3,7 +3,10 @@
 // order linear in the items pushed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "constrained/buckets.hpp"
@@ -61,6 +64,47 @@ TEST(Buckets, ABucketLeftAndComeBackToIsNotSortedWholeEachTime) {
   }
   EXPECT_LE(q.sorted(), 2 * pushed);
   EXPECT_GT(q.sorted(), 500u * 100u);  // every return did sort
+}
+
+// Keys of both signs from 10^-300 to 10^300, some in a bucket below every one queued before,
+// pushed between pops: every item comes out once, and each pop's key comes no later in the
+// order (the shapes' keys from 0 up, then the sizes' from the most negative) than any key left,
+// within the quarter octave that shares a bucket.
+TEST(Buckets, KeysOfEverySizeAndBothSignsComeOutInOrder) {
+  detail::Buckets<Item> q;
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> exponent(-300, 300), unit(0, 1);
+  std::vector<Item> queued;  // what is in q
+  // Whether a may come out before b: it is the same sign's, and no more than a quarter octave
+  // later in its order, or a shape's key before a size's.
+  auto not_after = [](double a, double b) {
+    if ((a >= 0) != (b >= 0)) return a >= 0;
+    return a >= 0 ? a <= b * 1.3 : -a * 1.3 >= -b;  // (a bucket's keys are within 1.25 times)
+  };
+  // One pop, checked against what is left.
+  auto take = [&] {
+    const Item out = q.pop();
+    const auto at = std::find_if(queued.begin(), queued.end(), [&](const Item& i) { return i.id == out.id; });
+    ASSERT_NE(at, queued.end()) << out.id;
+    queued.erase(at);
+    for (const Item& left : queued) EXPECT_TRUE(not_after(out.key, left.key)) << out.key << " before " << left.key;
+  };
+  int id = 0;
+  for (int round = 0; round < 400; ++round) {
+    const int pushes = 2 + static_cast<int>(unit(random) * 12);
+    for (int k = 0; k < pushes; ++k) {
+      // a shape's key that shrinks and a size's that grows from round to round (each most often
+      // in a bucket below every one before, as a mesh's shortest edges shrink), the rest anywhere
+      const double key = k == 0 ? std::pow(10.0, 250 - round)
+          : k == 1              ? -std::pow(10.0, -250 + round)
+                                : (unit(random) < 0.5 ? 1 : -1) * std::pow(10.0, exponent(random));
+      const Item item{key, static_cast<std::uint32_t>(random()), id++};
+      q.push(item), queued.push_back(item);
+    }
+    for (int k = 0; k < pushes - 1; ++k) take();
+  }
+  while (!q.empty()) take();
+  EXPECT_TRUE(queued.empty());
 }
 
 }  // namespace
