@@ -91,8 +91,8 @@ std::size_t read_vertices(const std::string& path, const std::vector<Line>& line
     p = read_node_lines(path, std::span(lines).first(1 + static_cast<std::size_t>(n)), threads);
     declared(h, lines[0].number, std::span(lines).subspan(1, static_cast<std::size_t>(n)), path);
   }
-  g.points = std::move(p).vector();
   g.first_index = p.first_index;
+  g.points = std::move(p).vector();
   return n == 0 ? 1 : 1 + static_cast<std::size_t>(n);
 }
 
